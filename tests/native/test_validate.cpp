@@ -1,0 +1,212 @@
+// Target validation on the shared corpus (all good) and on bad meshes made from the sphere.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "mesh/validate.hpp"
+#include "test_support.hpp"
+
+using namespace billow;
+
+namespace {
+
+const MeshIssue* findIssue(const ValidationReport& r, const std::string& code) {
+  auto it = std::find_if(r.issues.begin(), r.issues.end(), [&](const MeshIssue& i) { return i.code == code; });
+  return it == r.issues.end() ? nullptr : &*it;
+}
+
+TriMesh withTriangles(const TriMesh& m, const Triangles& F) {
+  TriMesh out = m;
+  out.F = F;
+  return out;
+}
+
+}  // namespace
+
+class CorpusValidation : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(CorpusValidation, SharedMeshIsAUsableGenusZeroTarget) {
+  TriMesh m = test::loadShared(GetParam());
+  const ValidationReport r = validateTarget(m);
+  EXPECT_TRUE(r.ok) << toJson(r);
+  EXPECT_FALSE(r.modified);
+  EXPECT_EQ(r.stats.genus, 0);
+  EXPECT_EQ(r.stats.components, 1);
+  EXPECT_EQ(r.stats.boundaryEdges, 0);
+  EXPECT_GT(r.stats.volume, 0);
+  // Euler: a closed triangle mesh has E = 3F/2.
+  EXPECT_EQ(2 * r.stats.edges, 3 * r.stats.triangles);
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, CorpusValidation,
+                         ::testing::Values("sphere.obj", "spot.obj", "bunny.obj", "blub.obj", "penguin.obj",
+                                           "stuffedtoy.obj", "elephant.obj", "koala.obj", "goathead.obj",
+                                           "cat.obj", "octopus.obj", "hand.obj"));
+
+TEST(Validation, SphereStatisticsMatchTheGeometry) {
+  TriMesh m = test::loadShared("sphere.obj");
+  const ValidationReport r = validateTarget(m);
+  // An icosphere inscribed in the unit sphere: slightly less area and volume than the round one.
+  EXPECT_NEAR(r.stats.area, 4 * M_PI, 0.05 * 4 * M_PI);
+  EXPECT_NEAR(r.stats.volume, 4.153, 0.001);
+  EXPECT_LT(r.stats.volume, 4.0 / 3.0 * M_PI);
+  EXPECT_NEAR(r.stats.bboxMax.x(), 1.0, 1e-6);
+}
+
+TEST(Validation, HoleIsReportedWithItsLocation) {
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  // Remove the triangles touching the topmost vertex: one hole at the top.
+  int top = 0;
+  for (int v = 0; v < sphere.numVertices(); ++v)
+    if (sphere.V(v, 1) > sphere.V(top, 1)) top = v;
+  std::vector<int> keep;
+  for (int f = 0; f < sphere.numTriangles(); ++f)
+    if (sphere.F(f, 0) != top && sphere.F(f, 1) != top && sphere.F(f, 2) != top) keep.push_back(f);
+  Triangles F(keep.size(), 3);
+  for (size_t k = 0; k < keep.size(); ++k) F.row(k) = sphere.F.row(keep[k]);
+  TriMesh m = withTriangles(sphere, F);
+  const ValidationReport r = validateTarget(m);
+  EXPECT_FALSE(r.ok);
+  const MeshIssue* open = findIssue(r, "mesh.open");
+  ASSERT_NE(open, nullptr);
+  EXPECT_EQ(r.stats.holes, 1);
+  EXPECT_EQ(r.stats.boundaryEdges, sphere.numTriangles() - static_cast<int>(keep.size()));
+  EXPECT_NE(open->message.find("near the top"), std::string::npos) << open->message;
+  EXPECT_EQ(r.stats.genus, -1);
+}
+
+TEST(Validation, NonManifoldEdgeIsAnError) {
+  TriMesh m = test::loadShared("sphere.obj");
+  // A fin: a third triangle on the edge (F00, F01), to a new vertex.
+  m.V.conservativeResize(m.numVertices() + 1, 3);
+  m.V.row(m.numVertices() - 1) = Eigen::RowVector3d(3, 3, 3);
+  m.F.conservativeResize(m.numTriangles() + 1, 3);
+  m.F.row(m.numTriangles() - 1) << m.F(0, 0), m.F(0, 1), m.numVertices() - 1;
+  const ValidationReport r = validateTarget(m);
+  EXPECT_FALSE(r.ok);
+  const MeshIssue* bad = findIssue(r, "mesh.non-manifold-edge");
+  ASSERT_NE(bad, nullptr);
+  EXPECT_EQ(bad->count, 1);
+  EXPECT_TRUE(bad->hasLocation);
+}
+
+TEST(Validation, NonManifoldVertexIsAnError) {
+  // Two tetrahedra sharing one vertex only.
+  TriMesh m;
+  m.V.resize(7, 3);
+  m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1;
+  m.F.resize(8, 3);
+  m.F << 0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3, 0, 4, 5, 0, 6, 4, 0, 5, 6, 4, 6, 5;
+  const ValidationReport r = validateTarget(m);
+  EXPECT_FALSE(r.ok);
+  ASSERT_NE(findIssue(r, "mesh.non-manifold-vertex"), nullptr) << toJson(r);
+  EXPECT_EQ(findIssue(r, "mesh.non-manifold-vertex")->count, 1);
+}
+
+TEST(Validation, FlippedTriangleIsTurnedAroundWithANotice) {
+  TriMesh m = test::loadShared("sphere.obj");
+  const Triangles original = m.F;
+  std::swap(m.F(17, 1), m.F(17, 2));
+  const ValidationReport r = validateTarget(m);
+  EXPECT_TRUE(r.ok) << toJson(r);
+  EXPECT_TRUE(r.modified);
+  const MeshIssue* notice = findIssue(r, "mesh.reoriented");
+  ASSERT_NE(notice, nullptr);
+  EXPECT_EQ(notice->severity, "notice");
+  EXPECT_EQ(notice->count, 1);
+  EXPECT_EQ(m.F, original);
+}
+
+TEST(Validation, InsideOutMeshIsFlipped) {
+  TriMesh m = test::loadShared("blub.obj");
+  for (int f = 0; f < m.numTriangles(); ++f) std::swap(m.F(f, 1), m.F(f, 2));
+  const ValidationReport r = validateTarget(m);
+  EXPECT_TRUE(r.ok);
+  EXPECT_NE(findIssue(r, "mesh.inside-out"), nullptr);
+  EXPECT_GT(r.stats.volume, 0);
+  // Validating the fixed mesh again finds nothing to fix.
+  const ValidationReport again = validateTarget(m);
+  EXPECT_FALSE(again.modified);
+}
+
+TEST(Validation, TwoComponentsAreAnError) {
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  TriMesh m;
+  const int n = sphere.numVertices();
+  m.V.resize(2 * n, 3);
+  m.V.topRows(n) = sphere.V;
+  m.V.bottomRows(n) = sphere.V.rowwise() + Eigen::RowVector3d(5, 0, 0);
+  m.F.resize(2 * sphere.numTriangles(), 3);
+  m.F.topRows(sphere.numTriangles()) = sphere.F;
+  m.F.bottomRows(sphere.numTriangles()) = sphere.F.array() + n;
+  const ValidationReport r = validateTarget(m);
+  EXPECT_FALSE(r.ok);
+  ASSERT_NE(findIssue(r, "mesh.components"), nullptr);
+  EXPECT_EQ(r.stats.components, 2);
+  EXPECT_EQ(r.stats.genus, -1);
+}
+
+TEST(Validation, DegenerateTriangleIsAnError) {
+  TriMesh m = test::loadShared("sphere.obj");
+  // Move one corner onto the midpoint of the opposite edge: that triangle loses its area.
+  const int a = m.F(5, 0), b = m.F(5, 1), c = m.F(5, 2);
+  m.V.row(c) = 0.5 * (m.V.row(a) + m.V.row(b));
+  const ValidationReport r = validateTarget(m);
+  EXPECT_FALSE(r.ok);
+  ASSERT_NE(findIssue(r, "mesh.degenerate"), nullptr);
+  EXPECT_GE(findIssue(r, "mesh.degenerate")->count, 1);
+}
+
+TEST(Validation, DuplicateTriangleAndBadNumbers) {
+  TriMesh dup = test::loadShared("sphere.obj");
+  dup.F.conservativeResize(dup.numTriangles() + 1, 3);
+  dup.F.row(dup.numTriangles() - 1) = dup.F.row(0);
+  EXPECT_NE(findIssue(validateTarget(dup), "mesh.duplicate"), nullptr);
+
+  TriMesh nan = test::loadShared("sphere.obj");
+  nan.V(3, 1) = std::nan("");
+  const ValidationReport r = validateTarget(nan);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(findIssue(r, "mesh.not-finite"), nullptr);
+
+  TriMesh idx = test::loadShared("sphere.obj");
+  idx.F(0, 0) = 100000;
+  EXPECT_NE(findIssue(validateTarget(idx), "mesh.bad-index"), nullptr);
+}
+
+TEST(Validation, TooLargeAndEmptyMeshesGetAMessage) {
+  TriMesh m = test::loadShared("sphere.obj");
+  ValidationOptions tight;
+  tight.maxTriangles = 1000;
+  const ValidationReport r = validateTarget(m, tight);
+  EXPECT_FALSE(r.ok);
+  ASSERT_NE(findIssue(r, "mesh.too-large"), nullptr);
+  EXPECT_NE(findIssue(r, "mesh.too-large")->message.find("1280"), std::string::npos);
+  TriMesh empty;
+  EXPECT_NE(findIssue(validateTarget(empty), "mesh.empty"), nullptr);
+}
+
+TEST(Validation, TorusHasGenusOneWithAWarning) {
+  // A coarse torus: 8 x 6 quads split into triangles.
+  const int nu = 8, nv = 6;
+  TriMesh m;
+  m.V.resize(nu * nv, 3);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * M_PI * i / nu, v = 2 * M_PI * j / nv;
+      m.V.row(i * nv + j) << (2 + std::cos(v)) * std::cos(u), std::sin(v), (2 + std::cos(v)) * std::sin(u);
+    }
+  m.F.resize(2 * nu * nv, 3);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const int a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
+                d = i * nv + (j + 1) % nv;
+      m.F.row(2 * (i * nv + j)) << a, c, b;
+      m.F.row(2 * (i * nv + j) + 1) << a, d, c;
+    }
+  const ValidationReport r = validateTarget(m);
+  EXPECT_TRUE(r.ok) << toJson(r);
+  EXPECT_EQ(r.stats.genus, 1);
+  ASSERT_NE(findIssue(r, "mesh.genus"), nullptr);
+  EXPECT_EQ(findIssue(r, "mesh.genus")->severity, "warning");
+}

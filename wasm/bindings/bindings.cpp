@@ -1,0 +1,60 @@
+// The only file that knows embind. Bulk data crosses as pointers into the wasm heap that the JS layer
+// (web/src/worker/solver-api.js) fills from typed arrays; results return as JSON text plus heap arrays.
+// Every entry point catches errors and returns {"status":"error","code","message"}: no exception
+// ever escapes to JS as a bare number.
+#include <emscripten/bind.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "mesh/validate.hpp"
+#include "util/error.hpp"
+
+namespace {
+
+using nlohmann::json;
+
+template <class Fn>
+std::string guarded(Fn fn) {
+  try {
+    return "{\"status\":\"ok\",\"result\":" + fn() + "}";
+  } catch (const billow::Error& e) {
+    return json({{"status", "error"}, {"code", e.code}, {"message", e.what()}}).dump();
+  } catch (const std::bad_alloc&) {
+    return json({{"status", "error"},
+                 {"code", "memory"},
+                 {"message", "Billow ran out of memory. Try a coarser resolution or a smaller mesh."}})
+        .dump();
+  } catch (const std::exception& e) {
+    return json({{"status", "error"}, {"code", "internal"}, {"message", std::string("Internal error: ") + e.what()}})
+        .dump();
+  }
+}
+
+// positions: #V*3 doubles, indices: #F*3 int32 (rewritten in place when the orientation is fixed).
+std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles) {
+  return guarded([&] {
+    billow::TriMesh mesh;
+    mesh.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
+    auto* corners = reinterpret_cast<int*>(indices);
+    mesh.F = Eigen::Map<const billow::Triangles>(corners, numTriangles, 3);
+    const billow::ValidationReport report = billow::validateTarget(mesh);
+    if (report.modified) Eigen::Map<billow::Triangles>(corners, numTriangles, 3) = mesh.F;
+    return billow::toJson(report);
+  });
+}
+
+// Deliberately traps the module: the worker's crash recovery is tested with it.
+void crashForTesting() { std::abort(); }
+
+std::string version() { return "0.1.0"; }
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(billow) {
+  emscripten::function("validateTarget", &validateTarget);
+  emscripten::function("crashForTesting", &crashForTesting);
+  emscripten::function("version", &version);
+}

@@ -1,0 +1,45 @@
+#include "cli/commands.hpp"
+
+#include <algorithm>
+
+#include "util/error.hpp"
+
+namespace billow::cli {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> list = {
+      {"check", "validate a target mesh (closed, manifold, oriented, one piece)", checkCommand},
+  };
+  return list;
+}
+
+bool Args::has(const std::string& name) const {
+  return std::any_of(options.begin(), options.end(), [&](const auto& o) { return o.first == name; });
+}
+
+std::string Args::get(const std::string& name, const std::string& fallback) const {
+  for (const auto& o : options)
+    if (o.first == name) return o.second;
+  return fallback;
+}
+
+Args parseArgs(const std::vector<std::string>& args, const std::vector<std::string>& flagsWithValue) {
+  Args out;
+  for (size_t i = 0; i < args.size(); ++i) {
+    const std::string& a = args[i];
+    if (a.size() > 2 && a.compare(0, 2, "--") == 0) {
+      const bool takesValue = std::find(flagsWithValue.begin(), flagsWithValue.end(), a) != flagsWithValue.end();
+      if (takesValue) {
+        if (i + 1 >= args.size()) throw Error("cli.usage", "the option " + a + " needs a value");
+        out.options.push_back({a, args[++i]});
+      } else {
+        out.options.push_back({a, ""});
+      }
+    } else {
+      out.positional.push_back(a);
+    }
+  }
+  return out;
+}
+
+}  // namespace billow::cli

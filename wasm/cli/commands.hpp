@@ -1,0 +1,27 @@
+#pragma once
+#include <string>
+#include <vector>
+
+namespace billow::cli {
+
+struct Command {
+  const char* name;
+  const char* summary;
+  int (*run)(const std::vector<std::string>& args);  // exit code: 0 ok, 1 input rejected, 2 usage
+};
+
+const std::vector<Command>& commands();
+
+// Shared argument helpers: `--name value` options and positional arguments.
+struct Args {
+  std::vector<std::string> positional;
+  std::vector<std::pair<std::string, std::string>> options;  // "--out" -> "x.json"; flags map to ""
+  bool has(const std::string& name) const;
+  std::string get(const std::string& name, const std::string& fallback = "") const;
+};
+// flagsWithValue lists the options that take a value; anything else starting with -- is a flag.
+Args parseArgs(const std::vector<std::string>& args, const std::vector<std::string>& flagsWithValue);
+
+int checkCommand(const std::vector<std::string>& args);
+
+}  // namespace billow::cli

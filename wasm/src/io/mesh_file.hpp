@@ -1,0 +1,16 @@
+// Reading a target mesh from a file's bytes, by its name's extension (OBJ; STL and PLY when present).
+#pragma once
+#include <string>
+#include <string_view>
+
+#include "io/obj_reader.hpp"
+
+namespace billow {
+
+// Reads the whole file; throws billow::Error("io.cannot-read") with the path when it cannot.
+std::string readFileBytes(const std::string& path, size_t maxBytes = size_t{1} << 30);
+
+// Parses bytes named `fileName` (its extension picks the format).
+TriMesh readMeshBytes(std::string_view bytes, const std::string& fileName, const MeshReadOptions& options = {});
+
+}  // namespace billow

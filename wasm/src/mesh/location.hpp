@@ -1,0 +1,11 @@
+// Where on a shape a point is, in words a designer can follow ("near the top left front").
+#pragma once
+#include <Eigen/Core>
+#include <string>
+
+namespace billow {
+
+// Describes p relative to the box [lo, hi] (y up, x right, z towards the viewer, as in the target pane).
+std::string describeLocation(const Eigen::Vector3d& p, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi);
+
+}  // namespace billow
