@@ -1,0 +1,12 @@
+#!/usr/bin/env bash
+# npm run bench: native and wasm (Node) benchmark figures.
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+bash "$ROOT/scripts/setup.sh"
+bash "$ROOT/scripts/build.sh" native
+bash "$ROOT/scripts/build.sh" wasm
+log "native"
+"$NATIVE_DIR/billow_bench" "$@"
+if [ -f "$ROOT/bench/bench-wasm.mjs" ]; then
+  log "wasm (node)"
+  node "$ROOT/bench/bench-wasm.mjs" "$@"
+fi

@@ -1,0 +1,48 @@
+#!/usr/bin/env bash
+# npm test: install what is missing, build, then run every suite: native GoogleTest (ctest), the same
+# GoogleTest suite compiled to wasm (ctest under node), the wasm module through the JS layer in Node
+# (node:test), and the app end to end in headless Chromium (node:test + playwright-core).
+source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
+bash "$ROOT/scripts/setup.sh"
+bash "$ROOT/scripts/build.sh" all
+
+passed=0
+failed=0
+status=0
+out="$ROOT/build/test-logs"
+mkdir -p "$out"
+
+# Runs a suite, shows its output, and adds its counts (parsed with the given kind) to the totals.
+suite() {
+  local name="$1" kind="$2"
+  shift 2
+  log "suite: $name"
+  local log_file="$out/$name.log" rc=0
+  "$@" 2>&1 | tee "$log_file" || rc=$?
+  [ "$rc" -eq 0 ] || status=1
+  local p=0 f=0
+  if [ "$kind" = ctest ]; then
+    local line
+    line=$(grep -E 'tests passed, [0-9]+ tests failed out of [0-9]+' "$log_file" | tail -1 || true)
+    if [ -n "$line" ]; then
+      f=$(sed -E 's/.* ([0-9]+) tests failed out of ([0-9]+).*/\1/' <<<"$line")
+      p=$(( $(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$line") - f ))
+    fi
+  else
+    p=$(grep -E '^# pass [0-9]+' "$log_file" | tail -1 | awk '{print $3}')
+    f=$(grep -E '^# fail [0-9]+' "$log_file" | tail -1 | awk '{print $3}')
+  fi
+  p=${p:-0}; f=${f:-0}
+  if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; fi  # a crashed runner counts as a failure
+  passed=$((passed + p)); failed=$((failed + f))
+  log "$name: $p passed, $f failed"
+}
+
+suite native ctest ctest --test-dir "$NATIVE_DIR" --output-on-failure -j2
+suite wasm ctest ctest --test-dir "$WASM_DIR" --output-on-failure -j2
+suite node node node --test --test-timeout=120000 "$ROOT/tests/node/"
+suite e2e node node --test --test-concurrency=1 --test-timeout=180000 "$ROOT/tests/e2e/"
+
+echo
+echo "all suites: $passed passed, $failed failed"
+exit $status

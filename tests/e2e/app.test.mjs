@@ -1,0 +1,176 @@
+// The app in headless Chromium: loads, renders, opens files (picker and drop), reports bad meshes,
+// resizes, autosaves, and survives a worker crash. Every page fails on any console error.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { serve, launch, openPage, screenshot, paintedFraction, MESHES } from './harness.mjs';
+
+let server;
+let context;
+before(async () => {
+  server = await serve();
+  context = await launch();
+});
+after(async () => {
+  await context?.close();
+  await server?.close();
+});
+
+const stat = (page, name) => page.textContent(`#target-stats dd[data-stat="${name}"]`);
+
+// A page with no autosaved design: the app starts on its default example.
+async function fresh() {
+  const page = await openPage(context, server.url);
+  await page.evaluate(
+    () => new Promise((resolve, reject) => {
+      const request = indexedDB.deleteDatabase('billow');
+      request.onsuccess = resolve;
+      request.onerror = () => reject(request.error);
+    }),
+  );
+  await page.reload();
+  await page.waitForSelector('body[data-ready="true"]');
+  return page;
+}
+
+function assertNoErrors(page) {
+  assert.deepEqual(page.errors, [], 'no console errors');
+}
+
+test('the app opens on an example target, renders it and shows its statistics', async () => {
+  const page = await fresh();
+  for (const pane of ['target', 'inflated', 'pattern']) assert.ok(await page.isVisible(`#pane-${pane}`), pane);
+  assert.equal(await stat(page, 'triangles'), '5,856');
+  assert.equal(await stat(page, 'genus'), '0');
+  assert.match(await stat(page, 'size'), /60\.0 cm/);
+  await page.waitForTimeout(200);
+  const painted = await paintedFraction(page, '#pane-target .pane-body');
+  assert.ok(painted > 0.05, `the target is drawn (${(painted * 100).toFixed(1)} % of the pane)`);
+  await screenshot(page, 'app-start');
+  assertNoErrors(page);
+  await page.close();
+});
+
+test('a mesh with a hole, opened with the file picker, gets a clear message and changes nothing', async () => {
+  const page = await fresh();
+  const lines = readFileSync(`${MESHES}/sphere.obj`, 'utf8').split('\n');
+  lines.splice(lines.findIndex((l) => l.startsWith('f ')), 1);
+  await page.setInputFiles('#file-input', { name: 'holey.obj', mimeType: 'text/plain', buffer: Buffer.from(lines.join('\n')) });
+  const message = page.locator('.message.error');
+  await message.waitFor();
+  const text = await message.textContent();
+  assert.match(text, /holey\.obj" cannot be used/);
+  assert.match(text, /must be closed/);
+  assert.match(text, /largest hole is near/);
+  assert.equal(await stat(page, 'triangles'), '5,856', 'the previous target stays');
+  await screenshot(page, 'app-open-error');
+  // Garbage with a mesh extension, and an unsupported extension.
+  await page.setInputFiles('#file-input', { name: 'noise.stl', mimeType: 'model/stl', buffer: Buffer.from([1, 2, 3, 4, 5]) });
+  await page.locator('.message.error >> nth=1').waitFor();
+  await page.setInputFiles('#file-input', { name: 'photo.jpg', mimeType: 'image/jpeg', buffer: Buffer.from('xx') });
+  await page.locator('.message.error >> nth=2').waitFor();
+  assert.match(await page.locator('.message.error >> nth=2').textContent(), /OBJ, STL or PLY/);
+  assertNoErrors(page);
+  await page.close();
+});
+
+test('opening a file and dropping a file both replace the target', async () => {
+  const page = await fresh();
+  await page.setInputFiles('#file-input', { name: 'blub.obj', mimeType: 'text/plain', buffer: readFileSync(`${MESHES}/blub.obj`) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="triangles"]')?.textContent === '1,886');
+  assert.equal(await stat(page, 'file'), 'blub.obj');
+  // Drop an STL made in the page from the sphere (binary STL, welded back into 642 vertices).
+  const sphere = readFileSync(`${MESHES}/sphere.obj`, 'utf8');
+  await page.evaluate((objText) => {
+    const v = [];
+    const f = [];
+    for (const line of objText.split('\n')) {
+      const p = line.trim().split(/\s+/);
+      if (p[0] === 'v') v.push([+p[1], +p[2], +p[3]]);
+      if (p[0] === 'f') f.push([+p[1] - 1, +p[2] - 1, +p[3] - 1]);
+    }
+    const buffer = new ArrayBuffer(84 + 50 * f.length);
+    const view = new DataView(buffer);
+    view.setUint32(80, f.length, true);
+    f.forEach((tri, i) => tri.forEach((k, c) => v[k].forEach((x, d) => view.setFloat32(84 + 50 * i + 12 + 12 * c + 4 * d, x, true))));
+    const data = new DataTransfer();
+    data.items.add(new File([buffer], 'sphere.stl'));
+    window.dispatchEvent(new DragEvent('dragenter', { dataTransfer: data }));
+    window.dispatchEvent(new DragEvent('drop', { dataTransfer: data }));
+  }, sphere);
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'sphere.stl');
+  assert.equal(await stat(page, 'vertices'), '642');
+  assert.equal(await stat(page, 'triangles'), '1,280');
+  assert.ok(await page.isHidden('#drop-overlay'));
+  assertNoErrors(page);
+  await page.close();
+});
+
+test('examples menu, real size, and autosave across a reload', async () => {
+  const page = await fresh();
+  await page.selectOption('#example-select', 'sphere');
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'sphere.obj');
+  await page.fill('#height-input', '0.9');
+  await page.press('#height-input', 'Enter');
+  await page.waitForFunction(() => /90\.0 cm/.test(document.querySelector('#target-stats dd[data-stat="size"]')?.textContent));
+  await page.waitForTimeout(300); // autosave is asynchronous
+  await page.reload();
+  await page.waitForSelector('body[data-ready="true"]');
+  assert.equal(await stat(page, 'triangles'), '1,280', 'the example came back');
+  assert.match(await stat(page, 'size'), /90\.0 cm/, 'the height came back');
+  assert.equal(await page.inputValue('#height-input'), '0.9');
+  assertNoErrors(page);
+  await page.close();
+});
+
+test('a file target is autosaved with its mesh and restored', async () => {
+  const page = await fresh();
+  await page.setInputFiles('#file-input', { name: 'blub.obj', mimeType: 'text/plain', buffer: readFileSync(`${MESHES}/blub.obj`) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'blub.obj');
+  await page.waitForTimeout(300);
+  await page.reload();
+  await page.waitForSelector('body[data-ready="true"]');
+  assert.equal(await stat(page, 'file'), 'blub.obj');
+  assert.equal(await stat(page, 'triangles'), '1,886');
+  assertNoErrors(page);
+  await page.close();
+});
+
+test('panes resize with the window and the pattern pane pans and zooms', async () => {
+  const page = await fresh();
+  const before = await page.locator('#pane-target').boundingBox();
+  await page.setViewportSize({ width: 1000, height: 700 });
+  await page.waitForTimeout(200);
+  const afterBox = await page.locator('#pane-target').boundingBox();
+  assert.ok(afterBox.width < before.width - 100, 'the target pane narrowed');
+  assert.ok((await paintedFraction(page, '#pane-target .pane-body')) > 0.05, 'still drawn after resize');
+  const pattern = page.locator('#pane-pattern .pane-body');
+  const box = await pattern.boundingBox();
+  const zoom0 = await page.evaluate(() => window.billow.app.panes.pattern.camera.zoom);
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.wheel(0, -400);
+  await page.waitForTimeout(100);
+  const zoom1 = await page.evaluate(() => window.billow.app.panes.pattern.camera.zoom);
+  assert.ok(zoom1 > zoom0, `zoomed in (${zoom0} -> ${zoom1})`);
+  const x0 = await page.evaluate(() => window.billow.app.panes.pattern.camera.position.x);
+  await page.mouse.down();
+  await page.mouse.move(box.x + box.width / 2 + 120, box.y + box.height / 2, { steps: 5 });
+  await page.mouse.up();
+  const x1 = await page.evaluate(() => window.billow.app.panes.pattern.camera.position.x);
+  assert.ok(x1 < x0, 'dragging right moves the view left');
+  await screenshot(page, 'app-resized');
+  assertNoErrors(page);
+  await page.close();
+});
+
+test('a crashed solver is replaced, the designer is told, and work goes on', async () => {
+  const page = await fresh();
+  const code = await page.evaluate(() => window.billow.client.request('crashForTesting').catch((e) => e.code));
+  assert.equal(code, 'worker.crashed');
+  await page.locator('.message.warning', { hasText: 'restarted' }).waitFor();
+  await page.selectOption('#example-select', 'blub');
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="triangles"]')?.textContent === '1,886');
+  // The trap itself is logged by the dying worker; anything else is an error.
+  assert.deepEqual(page.errors.filter((e) => !/Aborted|RuntimeError|unreachable/.test(e)), []);
+  await page.close();
+});

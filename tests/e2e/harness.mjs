@@ -1,0 +1,97 @@
+// End-to-end harness: serves the built site (web/dist) with a plain static server on a free loopback
+// port, and drives Debian's Chromium through playwright-core. Every page fails its test on any console
+// error or uncaught exception.
+import { createServer } from 'node:http';
+import { readFile, mkdtemp, mkdir } from 'node:fs/promises';
+import { existsSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join, extname, normalize, dirname } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { chromium } from 'playwright-core';
+
+export const ROOT = fileURLToPath(new URL('../..', import.meta.url));
+export const DIST = join(ROOT, 'web/dist');
+export const SHOTS = join(ROOT, 'build/screenshots');
+export const MESHES = join(ROOT, '../shared/meshes');
+
+const TYPES = {
+  '.html': 'text/html; charset=utf-8', '.js': 'text/javascript', '.mjs': 'text/javascript', '.css': 'text/css',
+  '.wasm': 'application/wasm', '.json': 'application/json', '.obj': 'text/plain', '.md': 'text/markdown',
+  '.png': 'image/png', '.svg': 'image/svg+xml',
+};
+
+// A static file server for DIST, optionally under a sub-path (e.g. '/billow/').
+export async function serve({ base = '/' } = {}) {
+  const server = createServer(async (req, res) => {
+    try {
+      let path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+      if (!path.startsWith(base)) throw new Error('outside');
+      path = normalize(path.slice(base.length));
+      if (path.startsWith('..')) throw new Error('outside');
+      if (path === '.' || path.endsWith('/')) path = join(path, 'index.html');
+      const body = await readFile(join(DIST, path));
+      res.writeHead(200, { 'content-type': TYPES[extname(path)] || 'application/octet-stream' });
+      res.end(body);
+    } catch {
+      res.writeHead(404).end('not found');
+    }
+  });
+  await new Promise((resolve) => server.listen(0, '127.0.0.1', resolve));
+  const url = `http://127.0.0.1:${server.address().port}${base}`;
+  return { url, close: () => new Promise((r) => server.close(r)) };
+}
+
+export async function launch() {
+  if (!existsSync(join(DIST, 'index.html'))) throw new Error('web/dist is missing: run npm run build first');
+  const profile = await mkdtemp(join(tmpdir(), 'billow-chromium-'));
+  return chromium.launchPersistentContext(profile, {
+    executablePath: '/usr/bin/chromium',
+    headless: true,
+    viewport: { width: 1400, height: 900 },
+    args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
+      '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader'],
+  });
+}
+
+// Opens url in a new page of context and collects console errors; assertNoErrors() fails on any.
+export async function openPage(context, url) {
+  const page = await context.newPage();
+  const errors = [];
+  page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
+  page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
+  page.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
+  page.errors = errors;
+  await page.goto(url);
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  return page;
+}
+
+export async function screenshot(page, name) {
+  await mkdir(SHOTS, { recursive: true });
+  const path = join(SHOTS, `${name}.png`);
+  await page.screenshot({ path });
+  return path;
+}
+
+// Fraction of pixels in the element's box that differ from its background color, from a screenshot.
+export async function paintedFraction(page, selector) {
+  return page.evaluate(async (sel) => {
+    const el = document.querySelector(sel);
+    const r = el.getBoundingClientRect();
+    const canvas = document.getElementById('viewport');
+    const c = canvas.getBoundingClientRect();
+    const scale = canvas.width / c.width;
+    const gl = canvas.getContext('webgl2');
+    const w = Math.floor(r.width * scale), h = Math.floor(r.height * scale);
+    const x = Math.floor((r.left - c.left) * scale), y = Math.floor((c.bottom - r.bottom) * scale);
+    const pixels = new Uint8Array(w * h * 4);
+    gl.readPixels(x, y, w, h, gl.RGBA, gl.UNSIGNED_BYTE, pixels);
+    const bg = pixels.slice(0, 3); // a corner pixel: the pane's clear color
+    let differ = 0;
+    for (let i = 0; i < pixels.length; i += 4)
+      if (Math.abs(pixels[i] - bg[0]) + Math.abs(pixels[i + 1] - bg[1]) + Math.abs(pixels[i + 2] - bg[2]) > 24) differ++;
+    return differ / (w * h);
+  }, selector);
+}
+
+export { dirname };

@@ -1,0 +1,87 @@
+// The wasm module in Node: target validation through the same JS layer the worker uses, compared with
+// the native CLI's report (`billow check --json`): native and wasm must agree.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { execFileSync } from 'node:child_process';
+import { fileURLToPath } from 'node:url';
+import { loadApi } from './load-module.mjs';
+import { readObjText } from './obj.mjs';
+
+const MESHES = fileURLToPath(new URL('../../../shared/meshes', import.meta.url));
+const CLI = fileURLToPath(new URL('../../build/native/billow', import.meta.url));
+const api = await loadApi();
+
+function nativeReport(path) {
+  try {
+    return JSON.parse(execFileSync(CLI, ['check', '--json', path], { encoding: 'utf8' }));
+  } catch (error) {
+    if (error.status === 1) return JSON.parse(error.stdout); // "not usable" exits 1 with the report
+    throw error;
+  }
+}
+
+// Numbers equal to 12 significant digits (summation order may differ between SIMD and scalar builds).
+function assertSameReport(a, b, path = 'report') {
+  if (typeof a === 'number' && typeof b === 'number') {
+    assert.ok(Math.abs(a - b) <= 1e-12 * Math.max(1, Math.abs(a), Math.abs(b)), `${path}: ${a} vs ${b}`);
+  } else if (Array.isArray(a)) {
+    assert.equal(a.length, b.length, `${path}.length`);
+    a.forEach((v, i) => assertSameReport(v, b[i], `${path}[${i}]`));
+  } else if (a && typeof a === 'object') {
+    assert.deepEqual(Object.keys(a).sort(), Object.keys(b).sort(), path);
+    for (const k of Object.keys(a)) assertSameReport(a[k], b[k], `${path}.${k}`);
+  } else {
+    assert.equal(a, b, path);
+  }
+}
+
+for (const name of ['sphere.obj', 'spot.obj', 'blub.obj', 'octopus.obj']) {
+  test(`${name}: wasm and native reports are identical and the target is usable`, () => {
+    const path = `${MESHES}/${name}`;
+    const { positions, indices } = readObjText(readFileSync(path, 'utf8'));
+    const { report } = api.validateTarget(positions, indices);
+    assert.equal(report.ok, true);
+    assert.equal(report.stats.genus, 0);
+    assertSameReport(report, nativeReport(path));
+  });
+}
+
+test('an open mesh is reported identically by wasm and native, with the hole located', async (t) => {
+  const { positions, indices } = readObjText(readFileSync(`${MESHES}/sphere.obj`, 'utf8'));
+  const open = indices.slice(3); // drop the first triangle
+  const { report } = api.validateTarget(positions, open);
+  assert.equal(report.ok, false);
+  const issue = report.issues.find((i) => i.code === 'mesh.open');
+  assert.ok(issue, 'mesh.open reported');
+  assert.equal(report.stats.boundary_edges, 3);
+  assert.match(issue.message, /must be closed/);
+  assert.equal(issue.location.length, 3);
+  // The same mesh through the CLI.
+  const { writeFileSync, mkdtempSync } = await import('node:fs');
+  const dir = mkdtempSync('/tmp/billow-node-');
+  const lines = [];
+  for (let v = 0; v < positions.length; v += 3) lines.push(`v ${positions[v]} ${positions[v + 1]} ${positions[v + 2]}`);
+  for (let f = 0; f < open.length; f += 3) lines.push(`f ${open[f] + 1} ${open[f + 1] + 1} ${open[f + 2] + 1}`);
+  writeFileSync(`${dir}/open.obj`, lines.join('\n'));
+  assertSameReport(report, nativeReport(`${dir}/open.obj`));
+});
+
+test('an inside-out mesh comes back flipped with a notice', () => {
+  const { positions, indices } = readObjText(readFileSync(`${MESHES}/blub.obj`, 'utf8'));
+  const flipped = indices.slice();
+  for (let f = 0; f < flipped.length; f += 3) [flipped[f + 1], flipped[f + 2]] = [flipped[f + 2], flipped[f + 1]];
+  const result = api.validateTarget(positions, flipped);
+  assert.equal(result.report.ok, true);
+  assert.equal(result.report.modified, true);
+  assert.ok(result.report.issues.some((i) => i.code === 'mesh.inside-out' && i.severity === 'notice'));
+  assert.deepEqual(Array.from(result.indices), Array.from(indices));
+});
+
+test('no heap growth over repeated validations', () => {
+  const { positions, indices } = readObjText(readFileSync(`${MESHES}/spot.obj`, 'utf8'));
+  api.validateTarget(positions, indices);
+  const before = api.module.HEAPU8.length;
+  for (let i = 0; i < 30; i++) api.validateTarget(positions, indices);
+  assert.equal(api.module.HEAPU8.length, before);
+});

@@ -1,0 +1,116 @@
+// The worker protocol end to end in Node: the real SolverClient, Runner and handlers over the wasm
+// module, with an in-process stand-in for the Web Worker (same message passing, asynchronous).
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { fileURLToPath } from 'node:url';
+import { loadApi } from './load-module.mjs';
+import { SolverClient } from '../../web/src/worker/client.js';
+import { Runner } from '../../web/src/worker/runner.js';
+import { createHandlers } from '../../web/src/worker/handlers.js';
+import { Op, ErrorCode } from '../../web/src/worker/protocol.js';
+
+const MESHES = fileURLToPath(new URL('../../../shared/meshes', import.meta.url));
+const bytesOf = (name) => {
+  const b = readFileSync(`${MESHES}/${name}`);
+  return b.buffer.slice(b.byteOffset, b.byteOffset + b.byteLength);
+};
+
+// A Worker look-alike: structured-clone messages both ways, a fresh wasm module per instance.
+class InProcessWorker {
+  static started = 0;
+  constructor() {
+    InProcessWorker.started += 1;
+    this.terminated = false;
+    this.early = [];
+    loadApi().then((api) => {
+      this.runner = new Runner(createHandlers(api), (message) => {
+        const copy = structuredClone(message);
+        queueMicrotask(() => !this.terminated && this.onmessage?.({ data: copy }));
+      });
+      this.onmessage?.({ data: { kind: 'ready', version: api.version() } });
+      for (const m of this.early.splice(0)) this.runner.receive(m);
+    });
+  }
+  postMessage(message) {
+    const copy = structuredClone(message);
+    queueMicrotask(() => (this.runner ? this.runner.receive(copy) : this.early.push(copy)));
+  }
+  terminate() {
+    this.terminated = true;
+  }
+}
+
+function newClient(hooks = {}) {
+  return new SolverClient(() => new InProcessWorker(), hooks);
+}
+
+test('loadTarget replies to its request id with the welded, validated mesh and reports progress', async () => {
+  const client = newClient();
+  const stages = [];
+  const { promise, id } = client.call(Op.loadTarget, { fileName: 'spot.obj', bytes: bytesOf('spot.obj') }, {
+    onProgress: (p) => {
+      assert.equal(p.id, id);
+      stages.push(p.stage);
+    },
+  });
+  const result = await promise;
+  assert.equal(result.report.ok, true);
+  assert.equal(result.report.stats.triangles, 5856);
+  assert.equal(result.indices.length, 5856 * 3);
+  assert.equal(result.positions.length, 2930 * 3);
+  assert.deepEqual(stages, ['reading the file', 'welding vertices', 'checking the mesh']);
+});
+
+test('a broken file is rejected with a designer-facing message and its report', async () => {
+  const client = newClient();
+  const text = readFileSync(`${MESHES}/sphere.obj`, 'utf8').split('\n');
+  const firstFace = text.findIndex((l) => l.startsWith('f '));
+  text.splice(firstFace, 1); // one triangle fewer: a hole
+  const bytes = new TextEncoder().encode(text.join('\n')).buffer;
+  await assert.rejects(client.request(Op.loadTarget, { fileName: 'holey.obj', bytes }), (error) => {
+    assert.equal(error.code, 'target.invalid');
+    assert.match(error.message, /must be closed/);
+    assert.ok(error.details.report.issues.some((i) => i.code === 'mesh.open'));
+    return true;
+  });
+  await assert.rejects(
+    client.request(Op.loadTarget, { fileName: 'notes.txt', bytes: new TextEncoder().encode('hello').buffer }),
+    /OBJ, STL or PLY/,
+  );
+  await assert.rejects(
+    client.request(Op.loadTarget, { fileName: 'garbage.obj', bytes: new Uint8Array([0, 1, 2, 255]).buffer }),
+    (e) => e.code === 'mesh.unreadable',
+  );
+});
+
+test('cancel stops a request between steps', async () => {
+  const client = newClient();
+  await client.ready;
+  const { promise, cancel } = client.call(Op.loadTarget, { fileName: 'spot.obj', bytes: bytesOf('spot.obj') }, {
+    onProgress: () => cancel(),
+  });
+  await assert.rejects(promise, (e) => e.code === ErrorCode.cancelled);
+  // The worker still answers afterwards.
+  const ok = await client.request(Op.loadTarget, { fileName: 'sphere.obj', bytes: bytesOf('sphere.obj') });
+  assert.equal(ok.report.ok, true);
+});
+
+test('a crashed worker is replaced, the target replayed, and the crash loop is bounded', async () => {
+  const crashes = [];
+  const client = newClient({ onCrash: (c) => crashes.push(c) });
+  const loaded = await client.request(Op.loadTarget, { fileName: 'sphere.obj', bytes: bytesOf('sphere.obj') });
+  client.remember(Op.setTarget, { positions: loaded.positions, indices: loaded.indices });
+  const started = InProcessWorker.started;
+  await assert.rejects(client.request(Op.crashForTesting), (e) => e.code === ErrorCode.crashed);
+  assert.equal(crashes.length, 1);
+  assert.equal(InProcessWorker.started, started + 1, 'a fresh worker was started');
+  await crashes[0].replayed;
+  // The new worker has the target again and serves requests.
+  const again = await client.request(Op.setTarget, { positions: loaded.positions, indices: loaded.indices });
+  assert.equal(again.report.stats.triangles, 1280);
+  // Crash after crash with no success in between: the client gives up instead of looping.
+  for (let i = 0; i < 4; i++) await client.request(Op.crashForTesting).catch(() => {});
+  assert.equal(client.broken, true);
+  await assert.rejects(client.request(Op.setTarget, {}), /Reload the page/);
+});

@@ -1,0 +1,13 @@
+// Built-in example targets (files in web/public/examples, credits in web/public/examples/CREDITS.md).
+export const EXAMPLES = [
+  { id: 'spot', name: 'Spot the cow', file: 'spot.obj', height: 0.6, credit: 'Keenan Crane, public domain (CC0)' },
+  { id: 'blub', name: 'Blub the fish', file: 'blub.obj', height: 0.5, credit: 'Keenan Crane, public domain' },
+  { id: 'sphere', name: 'Sphere', file: 'sphere.obj', height: 0.5, credit: 'Oded Stein, CC BY 4.0' },
+  { id: 'penguin', name: 'Penguin', file: 'penguin.obj', height: 0.9, credit: 'Oded Stein, CC BY 4.0' },
+];
+
+export const DEFAULT_EXAMPLE = 'spot';
+
+export function findExample(id) {
+  return EXAMPLES.find((e) => e.id === id) ?? null;
+}

@@ -1,0 +1,76 @@
+// Entry point: builds the panes, the worker client and the app, and wires the page's controls.
+import { Viewport } from './views/viewport.js';
+import { TargetPane } from './views/target-pane.js';
+import { Pane3D } from './views/pane3d.js';
+import { PatternPane } from './views/pattern-pane.js';
+import { SolverClient } from './worker/client.js';
+import { Messages } from './app/messages.js';
+import { App } from './app/app.js';
+
+const $ = (id) => document.getElementById(id);
+const body = (id) => $(id).querySelector('.pane-body');
+
+const viewport = new Viewport($('viewport'));
+const panes = {
+  target: new TargetPane(body('pane-target'), viewport),
+  inflated: new Pane3D(body('pane-inflated'), viewport),
+  pattern: new PatternPane(body('pane-pattern'), viewport),
+};
+const messages = new Messages($('messages'));
+
+const client = new SolverClient(
+  () => new Worker(new URL('./worker/solver.worker.js', import.meta.url), { type: 'module' }),
+  {
+    onCrash: ({ broken }) => {
+      if (broken) messages.show('error', 'The solver keeps stopping, so Billow stopped restarting it. Your design is safe: reload the page.');
+      else messages.show('warning', 'The solver stopped unexpectedly and was restarted. Your design is safe.');
+    },
+  },
+);
+
+const app = new App({
+  client,
+  panes,
+  messages,
+  baseUrl: document.baseURI,
+  elements: {
+    status: $('status'),
+    stats: $('target-stats'),
+    exampleSelect: $('example-select'),
+    heightInput: $('height-input'),
+  },
+});
+
+$('open-button').addEventListener('click', () => $('file-input').click());
+$('file-input').addEventListener('change', (event) => {
+  const file = event.target.files?.[0];
+  if (file) app.openFile(file);
+  event.target.value = '';
+});
+$('example-select').addEventListener('change', (event) => event.target.value && app.loadExample(event.target.value));
+$('height-input').addEventListener('change', (event) => app.setHeight(Number(event.target.value)));
+
+// Drag and drop anywhere on the page.
+const overlay = $('drop-overlay');
+let dragDepth = 0;
+window.addEventListener('dragenter', (e) => {
+  e.preventDefault();
+  dragDepth += 1;
+  overlay.hidden = false;
+});
+window.addEventListener('dragleave', () => {
+  dragDepth = Math.max(0, dragDepth - 1);
+  if (dragDepth === 0) overlay.hidden = true;
+});
+window.addEventListener('dragover', (e) => e.preventDefault());
+window.addEventListener('drop', (e) => {
+  e.preventDefault();
+  dragDepth = 0;
+  overlay.hidden = true;
+  const file = e.dataTransfer?.files?.[0];
+  if (file) app.openFile(file);
+});
+
+// For the end-to-end tests and the curious: the app and its solver client.
+window.billow = { app, client, viewport };
+app.start().then(() => document.body.setAttribute('data-ready', 'true'));

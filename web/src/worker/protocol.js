@@ -1,0 +1,50 @@
+// The worker protocol, in one place. Every request carries an id; every reply and progress event echoes it.
+//
+//   main -> worker   { kind: 'request', id, op, args }      start an operation (ops below)
+//                    { kind: 'cancel', id }                 cooperative cancel: checked between steps
+//   worker -> main   { kind: 'ready', version }             the wasm module is loaded
+//                    { kind: 'progress', id, stage, done, total, detail }
+//                    { kind: 'reply', id, ok: true, result } | { kind: 'reply', id, ok: false, error: { code, message } }
+//                    { kind: 'crashed', message }           the module trapped; the client replaces the worker
+//
+// The worker's state is a pure function of the replayable requests it received (the target, later the
+// design), so a crashed worker is replaced and those requests are sent again.
+
+export const Op = Object.freeze({
+  // { fileName, bytes: ArrayBuffer } -> { report, positions: Float32Array, indices: Uint32Array }
+  // Parses OBJ/STL/PLY, welds, validates (orientation fixed in place) and makes this mesh the target.
+  loadTarget: 'loadTarget',
+  // Re-installs a target that was already loaded: { positions, indices } -> same as loadTarget.
+  setTarget: 'setTarget',
+  // Traps the wasm module on purpose (tests of crash recovery).
+  crashForTesting: 'crashForTesting',
+  // { pattern: object } -> inflated result (see solver-api.js); stepped, with progress and cancel.
+  inflatePattern: 'inflatePattern',
+});
+
+// Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
+export const REPLAYED_OPS = new Set([Op.setTarget]);
+
+export const ErrorCode = Object.freeze({
+  cancelled: 'cancelled',
+  crashed: 'worker.crashed',
+  unknownOp: 'worker.unknown-op',
+  internal: 'internal',
+});
+
+export class SolverError extends Error {
+  constructor(code, message, details = undefined) {
+    super(message);
+    this.name = 'SolverError';
+    this.code = code;
+    this.details = details; // e.g. { report } for a target that failed validation
+  }
+}
+
+// Typed arrays inside a result, to transfer instead of copy.
+export function transferables(value, out = []) {
+  if (ArrayBuffer.isView(value)) out.push(value.buffer);
+  else if (value instanceof ArrayBuffer) out.push(value);
+  else if (value && typeof value === 'object') for (const v of Object.values(value)) transferables(v, out);
+  return out;
+}

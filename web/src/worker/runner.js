@@ -1,0 +1,67 @@
+// Runs operations for the worker: each handler is a generator that yields progress between steps of work.
+// A step should take at most a few tens of milliseconds (long solvers step with a time budget); between
+// steps the runner yields to the event loop so a { kind: 'cancel' } message can arrive, and a cancelled
+// operation stops at its next step.
+import { ErrorCode, SolverError, transferables } from './protocol.js';
+
+const tick = () =>
+  new Promise((resolve) => {
+    const channel = new MessageChannel();
+    channel.port1.onmessage = () => {
+      channel.port1.close(); // an open port would keep a Node process alive
+      resolve();
+    };
+    channel.port2.postMessage(0);
+  });
+
+export class Runner {
+  // handlers: { [op]: function* (args, context) -> result }, post: (message, transfer) => void
+  constructor(handlers, post) {
+    this.handlers = handlers;
+    this.post = post;
+    this.cancelled = new Set();
+    this.queue = Promise.resolve();
+  }
+
+  receive(message) {
+    if (message.kind === 'cancel') {
+      this.cancelled.add(message.id);
+      return;
+    }
+    if (message.kind !== 'request') return;
+    // One operation at a time, in order: the worker's state changes only between operations.
+    this.queue = this.queue.then(() => this.run(message));
+  }
+
+  async run({ id, op, args }) {
+    const handler = this.handlers[op];
+    if (!handler) {
+      this.post({ kind: 'reply', id, ok: false, error: { code: ErrorCode.unknownOp, message: `Unknown operation ${op}` } });
+      return;
+    }
+    try {
+      const steps = handler(args, { id });
+      for (;;) {
+        // Yield to the event loop before each step, so that a cancel sent meanwhile is seen.
+        await tick();
+        if (this.cancelled.has(id)) throw new SolverError(ErrorCode.cancelled, 'Cancelled.');
+        const { value, done } = steps.next();
+        if (done) {
+          this.post({ kind: 'reply', id, ok: true, result: value }, transferables(value));
+          break;
+        }
+        if (value) this.post({ kind: 'progress', id, ...value });
+      }
+    } catch (error) {
+      if (error instanceof SolverError) {
+        const { code, message, details } = error;
+        this.post({ kind: 'reply', id, ok: false, error: { code, message, details } });
+      } else {
+        // A trap in wasm (abort, out of bounds, unreachable) leaves the module unusable: ask for a new worker.
+        this.post({ kind: 'crashed', message: String(error?.message || error) });
+      }
+    } finally {
+      this.cancelled.delete(id);
+    }
+  }
+}

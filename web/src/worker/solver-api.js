@@ -1,0 +1,71 @@
+// A small JS layer over the embind module with friendly names. Bulk data is copied into the wasm heap
+// from typed arrays and copied out at once (heap views detach when memory grows). Used by the worker
+// and, unchanged, by the Node tests.
+import { SolverError } from './protocol.js';
+
+const HEAP_BY_TYPE = new Map([
+  [Float64Array, 'HEAPF64'],
+  [Float32Array, 'HEAPF32'],
+  [Int32Array, 'HEAP32'],
+  [Uint32Array, 'HEAPU32'],
+]);
+
+export class SolverApi {
+  constructor(module) {
+    this.module = module;
+  }
+
+  version() {
+    return this.module.version();
+  }
+
+  // Copies a typed array into a fresh heap allocation; returns the pointer (caller frees).
+  toHeap(array) {
+    const heap = HEAP_BY_TYPE.get(array.constructor);
+    if (!heap) throw new TypeError(`unsupported array type ${array.constructor.name}`);
+    const ptr = this.module._malloc(Math.max(array.byteLength, 8));
+    if (!ptr) throw new SolverError('memory', 'Billow ran out of memory for this mesh.');
+    this.module[heap].set(array, ptr / array.BYTES_PER_ELEMENT);
+    return ptr;
+  }
+
+  // A copy of count elements of type Type at ptr.
+  fromHeap(Type, ptr, count) {
+    const heap = this.module[HEAP_BY_TYPE.get(Type)];
+    return heap.slice(ptr / Type.BYTES_PER_ELEMENT, ptr / Type.BYTES_PER_ELEMENT + count);
+  }
+
+  // Runs fn with the arrays copied into the heap; frees them whatever happens.
+  withHeap(arrays, fn) {
+    const pointers = [];
+    try {
+      for (const a of arrays) pointers.push(this.toHeap(a));
+      return fn(...pointers);
+    } finally {
+      for (const p of pointers) this.module._free(p);
+    }
+  }
+
+  // Parses the {"status": ...} JSON that every binding returns; throws SolverError on "error".
+  static unwrap(text) {
+    const reply = JSON.parse(text);
+    if (reply.status !== 'ok') throw new SolverError(reply.code || 'internal', reply.message || 'Unknown solver error');
+    return reply.result;
+  }
+
+  // positions: #V*3 numbers, indices: #F*3 integers. Returns { report, indices } where indices is a new
+  // Uint32Array with any orientation fix applied (report.modified tells).
+  validateTarget(positions, indices) {
+    const pos = positions instanceof Float64Array ? positions : Float64Array.from(positions);
+    const idx = indices instanceof Int32Array ? indices : Int32Array.from(indices);
+    return this.withHeap([pos, idx], (pPos, pIdx) => {
+      const report = SolverApi.unwrap(this.module.validateTarget(pPos, pos.length / 3, pIdx, idx.length / 3));
+      const fixed = report.modified ? new Uint32Array(this.fromHeap(Int32Array, pIdx, idx.length).buffer) : null;
+      return { report, indices: fixed ?? Uint32Array.from(idx) };
+    });
+  }
+
+  crashForTesting() {
+    this.module.crashForTesting();
+  }
+}
