@@ -1,8 +1,8 @@
 // Entry point: builds the panes, the worker client and the app, and wires the page's controls.
 import { Viewport } from './views/viewport.js';
 import { TargetPane } from './views/target-pane.js';
-import { Pane3D } from './views/pane3d.js';
 import { PatternPane } from './views/pattern-pane.js';
+import { InflatedPane } from './views/inflated-pane.js';
 import { SolverClient } from './worker/client.js';
 import { Messages } from './app/messages.js';
 import { App } from './app/app.js';
@@ -13,7 +13,7 @@ const body = (id) => $(id).querySelector('.pane-body');
 const viewport = new Viewport($('viewport'));
 const panes = {
   target: new TargetPane(body('pane-target'), viewport),
-  inflated: new Pane3D(body('pane-inflated'), viewport),
+  inflated: new InflatedPane(body('pane-inflated'), viewport),
   pattern: new PatternPane(body('pane-pattern'), viewport),
 };
 const messages = new Messages($('messages'));
@@ -36,8 +36,11 @@ const app = new App({
   elements: {
     status: $('status'),
     stats: $('target-stats'),
+    inflatedStats: $('inflated-stats'),
     exampleSelect: $('example-select'),
     heightInput: $('height-input'),
+    undoButton: $('undo-button'),
+    redoButton: $('redo-button'),
   },
 });
 
@@ -47,8 +50,26 @@ $('file-input').addEventListener('change', (event) => {
   if (file) app.openFile(file);
   event.target.value = '';
 });
-$('example-select').addEventListener('change', (event) => event.target.value && app.loadExample(event.target.value));
+$('example-select').addEventListener('change', (event) => event.target.value && app.openExample(event.target.value));
 $('height-input').addEventListener('change', (event) => app.setHeight(Number(event.target.value)));
+$('undo-button').addEventListener('click', () => app.undo());
+$('redo-button').addEventListener('click', () => app.redo());
+$('save-button').addEventListener('click', () => app.saveDesignFile());
+$('share-button').addEventListener('click', () => app.shareLink());
+window.addEventListener('hashchange', () => app.openFromLink(location.hash));
+
+// Keyboard shortcuts (not while typing in a field).
+window.addEventListener('keydown', (e) => {
+  if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+  const mod = e.ctrlKey || e.metaKey;
+  const key = e.key.toLowerCase();
+  if (mod && key === 'z' && !e.shiftKey) app.undo();
+  else if (mod && ((key === 'z' && e.shiftKey) || key === 'y')) app.redo();
+  else if (mod && key === 's') app.saveDesignFile();
+  else if (mod && key === 'o') $('file-input').click();
+  else return;
+  e.preventDefault();
+});
 
 // Drag and drop anywhere on the page.
 const overlay = $('drop-overlay');

@@ -1,9 +1,20 @@
-// The application controller: owns the design document, talks to the worker, updates the panes.
+// The application controller: owns the design document (through its undo history), talks to the
+// worker, updates the panes, autosaves, and shares designs by link or file.
 import { Op } from '../worker/protocol.js';
 import { EXAMPLES, findExample } from './examples.js';
 import { newDesign, parseDesign, clampHeight } from './design.js';
 import { autosave } from './autosave.js';
-import { formatLength, formatArea, formatVolume } from './units.js';
+import { History } from './history.js';
+import { encodeDesign, decodeDesign } from './share.js';
+import { PatternSession } from './pattern-session.js';
+import { renderTargetStats } from './target-stats.js';
+
+// Example patterns computed by the solver (wasm/src/simulate/example_patterns.cpp).
+export const PATTERN_EXAMPLES = [
+  { id: 'mylar', name: 'Mylar balloon (two discs)' },
+  { id: 'pillow', name: 'Pillow (two squares)' },
+  { id: 'sphere3', name: 'Sphere (three gores)' },
+];
 
 const AUTOSAVE_KEY = 'current';
 
@@ -14,23 +25,33 @@ export class App {
     this.messages = messages;
     this.el = elements;
     this.baseUrl = baseUrl;
-    this.design = newDesign();
+    this.history = new History(newDesign());
     this.target = null; // { positions, indices, report, fileName }
     this.busy = 0;
     this.loadCounter = 0;
+    this.patterns = new PatternSession({
+      client,
+      panes,
+      messages,
+      status: (text) => this.setStatus(text),
+      stats: elements.inflatedStats,
+    });
+  }
+
+  get design() {
+    return this.history.present;
   }
 
   async start() {
     this.populateExamples();
+    if (await this.openFromLink(location.hash)) return;
     const saved = await autosave.load(AUTOSAVE_KEY).catch(() => null);
     if (saved?.design) {
       try {
         const { design, warnings } = parseDesign(saved.design);
         for (const w of warnings) this.messages.show('warning', w);
-        if (design.target.example) await this.loadExample(design.target.example, design);
-        else if (saved.mesh) await this.installSavedMesh(design, saved.mesh);
-        else await this.loadExample(newDesign().target.example);
-        return;
+        if (design.target.example) return await this.loadExample(design.target.example, design);
+        if (saved.mesh) return await this.installSavedMesh(design, saved.mesh);
       } catch (error) {
         this.messages.show('warning', `The autosaved design could not be restored: ${error.message}`);
       }
@@ -38,12 +59,39 @@ export class App {
     await this.loadExample(this.design.target.example);
   }
 
+  // A shared link (#design=...): true when it held a design that was opened.
+  async openFromLink(hash) {
+    let decoded;
+    try {
+      decoded = await decodeDesign(hash);
+    } catch (error) {
+      this.messages.show('error', `${error.message} Billow opened your last design instead.`);
+      history.replaceState(null, '', location.pathname + location.search);
+      return false;
+    }
+    if (!decoded) return false;
+    for (const w of decoded.warnings) this.messages.show('warning', w);
+    history.replaceState(null, '', location.pathname + location.search); // the design is autosaved from now on
+    if (!decoded.design.target.example) {
+      this.messages.show('warning', `The link refers to the file "${decoded.design.target.file}", which is not in the link. Open that file to continue.`);
+      await this.loadExample(newDesign().target.example);
+      return true;
+    }
+    await this.loadExample(decoded.design.target.example, decoded.design);
+    return true;
+  }
+
   populateExamples() {
     const select = this.el.exampleSelect;
     select.replaceChildren();
-    const placeholder = new Option('Choose…', '');
-    select.append(placeholder);
-    for (const e of EXAMPLES) select.append(new Option(e.name, e.id));
+    select.append(new Option('Choose…', ''));
+    const targets = document.createElement('optgroup');
+    targets.label = 'Targets';
+    for (const e of EXAMPLES) targets.append(new Option(e.name, e.id));
+    const patterns = document.createElement('optgroup');
+    patterns.label = 'Patterns to inflate';
+    for (const e of PATTERN_EXAMPLES) patterns.append(new Option(e.name, `pattern:${e.id}`));
+    select.append(targets, patterns);
   }
 
   setStatus(text) {
@@ -57,8 +105,13 @@ export class App {
       return await fn();
     } finally {
       this.busy -= 1;
-      if (this.busy === 0) this.setStatus(this.target ? 'Ready' : '');
     }
+  }
+
+  // An example from the menu: a target ("spot") or a pattern ("pattern:mylar").
+  async openExample(value) {
+    if (value.startsWith('pattern:')) return this.patterns.openExample(value.slice('pattern:'.length));
+    return this.loadExample(value);
   }
 
   async loadExample(id, design = null) {
@@ -68,16 +121,38 @@ export class App {
     const response = await fetch(new URL(`examples/${example.file}`, this.baseUrl));
     if (!response.ok) return this.messages.show('error', `The example "${example.name}" could not be loaded.`);
     const bytes = await response.arrayBuffer();
-    const next = design ?? { ...newDesign(id) };
-    return this.loadTargetBytes(example.file, bytes, next, { quiet: true });
+    return this.loadTargetBytes(example.file, bytes, design ?? newDesign(id), { quiet: true });
   }
 
-  // A file the designer picked or dropped.
+  // A file the designer picked or dropped: a mesh becomes the target; a .json is a design or a pattern.
   async openFile(file) {
+    if (/\.json$/i.test(file.name)) return this.openJsonFile(file);
     const bytes = await file.arrayBuffer();
     const design = { ...newDesign(), target: { file: file.name }, size: { height: this.design.size.height } };
     this.el.exampleSelect.value = '';
     return this.loadTargetBytes(file.name, bytes, design, { quiet: false });
+  }
+
+  async openJsonFile(file) {
+    const text = await file.text();
+    let format = null;
+    try {
+      format = JSON.parse(text)?.format;
+    } catch {
+      return this.messages.show('error', `"${file.name}" is not a valid JSON file.`);
+    }
+    if (format === 'billow-pattern') return this.patterns.open(file.name, text);
+    if (format !== 'billow-design')
+      return this.messages.show('error', `"${file.name}" is neither a Billow design nor a Billow pattern.`);
+    try {
+      const { design, warnings } = parseDesign(JSON.parse(text));
+      for (const w of warnings) this.messages.show('warning', w);
+      if (design.target.example) return this.loadExample(design.target.example, design);
+      if (this.target && design.target.file === this.target.fileName) return this.commitDesign(design, { reset: true });
+      return this.messages.show('warning', `This design uses the target file "${design.target.file}": open that mesh first, then the design.`);
+    } catch (error) {
+      return this.messages.show('error', `"${file.name}" cannot be opened: ${error.message}`);
+    }
   }
 
   async loadTargetBytes(fileName, bytes, design, { quiet }) {
@@ -95,7 +170,6 @@ export class App {
       this.setStatus('Ready');
       const shown = result.report.issues.filter((i) => i.severity !== 'error');
       for (const issue of shown) if (!quiet || issue.severity !== 'notice') this.messages.show(issue.severity, issue.message);
-      this.save();
     } catch (error) {
       const report = error.details?.report;
       const items = report ? report.issues.filter((i) => i.severity === 'error').map((i) => i.message) : [];
@@ -103,28 +177,46 @@ export class App {
         ? `"${fileName}" cannot be used as a target. Your current design is unchanged.`
         : `${error.message}${this.target ? ' Your current design is unchanged.' : ''}`;
       this.messages.show('error', text, items);
+      if (!this.target) this.setStatus('');
     }
   }
 
   async installSavedMesh(design, mesh) {
     const result = await this.client.request(Op.setTarget, mesh);
+    this.client.remember(Op.setTarget, mesh);
     this.installTarget(design.target.file, result, design);
+    this.setStatus('Ready');
   }
 
   installTarget(fileName, result, design) {
-    this.design = design;
     this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
-    this.el.heightInput.value = String(this.design.size.height);
-    this.panes.target.setTarget(this.target, this.scale());
-    this.renderStats();
+    this.panes.target.setTarget(this.target, this.scaleFor(design));
+    this.commitDesign(design, { reset: true });
   }
 
   // Mesh files carry no units: the design's height (m) fixes the scale of the target's own units.
-  scale() {
+  scaleFor(design) {
     const st = this.target?.report.stats;
     if (!st) return 1;
     const height = st.bbox_max[1] - st.bbox_min[1];
-    return height > 0 ? this.design.size.height / height : 1;
+    return height > 0 ? design.size.height / height : 1;
+  }
+
+  // Every change of the design goes through here: history, views, autosave.
+  commitDesign(design, { reset = false, mergeKey = null } = {}) {
+    if (reset) this.history.reset(design);
+    else this.history.apply(() => design, { mergeKey });
+    this.showDesign();
+    this.save();
+  }
+
+  showDesign() {
+    const design = this.design;
+    this.el.heightInput.value = String(design.size.height);
+    this.panes.target.setScale(this.scaleFor(design));
+    renderTargetStats(this.el.stats, this.target, this.scaleFor(design));
+    this.el.undoButton.disabled = !this.history.canUndo;
+    this.el.redoButton.disabled = !this.history.canRedo;
   }
 
   setHeight(meters) {
@@ -133,39 +225,54 @@ export class App {
       this.el.heightInput.value = String(this.design.size.height);
       return;
     }
-    this.design = { ...this.design, size: { ...this.design.size, height: clampHeight(meters) } };
-    this.el.heightInput.value = String(this.design.size.height);
-    this.panes.target.setScale(this.scale());
-    this.renderStats();
+    const height = clampHeight(meters);
+    if (height === this.design.size.height) return;
+    this.commitDesign({ ...this.design, size: { ...this.design.size, height } }, { mergeKey: 'height' });
+  }
+
+  undo() {
+    this.history.undo();
+    this.showDesign();
     this.save();
   }
 
-  renderStats() {
-    const st = this.target.report.stats;
-    const s = this.scale();
-    const size = [0, 1, 2].map((k) => (st.bbox_max[k] - st.bbox_min[k]) * s);
-    const rows = [
-      ['File', this.target.fileName],
-      ['Vertices', st.vertices.toLocaleString('en')],
-      ['Triangles', st.triangles.toLocaleString('en')],
-      ['Genus', String(st.genus)],
-      ['Size (W × H × D)', size.map(formatLength).join(' × ')],
-      ['Surface', formatArea(st.area * s * s)],
-      ['Volume', formatVolume(st.volume * s * s * s)],
-    ];
-    const dl = document.createElement('dl');
-    for (const [k, v] of rows) {
-      const dt = document.createElement('dt');
-      dt.textContent = k;
-      const dd = document.createElement('dd');
-      dd.textContent = v;
-      dd.dataset.stat = k.toLowerCase().split(' ')[0];
-      dl.append(dt, dd);
+  redo() {
+    this.history.redo();
+    this.showDesign();
+    this.save();
+  }
+
+  // Puts the design into the page's link and copies it; files cannot travel in a link yet.
+  async shareLink() {
+    if (!this.design.target.example) {
+      this.messages.show('warning', 'This design uses your own mesh file, which a link cannot carry yet. Use "Save design" and send the file with your mesh.');
+      return null;
     }
-    this.el.stats.replaceChildren(dl);
+    try {
+      const fragment = await encodeDesign(this.design);
+      const url = `${location.origin}${location.pathname}${location.search}#${fragment}`;
+      await navigator.clipboard?.writeText(url).catch(() => {});
+      this.messages.show('notice', 'A link to this design was copied to the clipboard.');
+      return url;
+    } catch (error) {
+      this.messages.show('warning', error.message);
+      return null;
+    }
+  }
+
+  // Downloads the design document as a .json file.
+  saveDesignFile() {
+    const blob = new Blob([JSON.stringify(this.design, null, 2)], { type: 'application/json' });
+    const link = document.createElement('a');
+    link.href = URL.createObjectURL(blob);
+    const base = (this.design.target.example ?? this.target?.fileName ?? 'design').replace(/\.[^.]+$/, '');
+    link.download = `${base}.billow.json`;
+    link.click();
+    setTimeout(() => URL.revokeObjectURL(link.href), 1000);
   }
 
   save() {
+    if (!this.target) return;
     const mesh = this.design.target.example ? undefined : { positions: this.target.positions, indices: this.target.indices };
     autosave.save(AUTOSAVE_KEY, { design: this.design, mesh }).catch((error) =>
       this.messages.show('warning', `Autosave failed (${error?.message || error}); save your design to a file.`),

@@ -1,6 +1,11 @@
 // The pattern pane: flat panels seen from above with pan and zoom (no rotation).
-import { OrthographicCamera, Scene, GridHelper, Box3, Vector3 } from 'three';
+import {
+  OrthographicCamera, Scene, GridHelper, Box3, Vector3, Group, BufferGeometry, Float32BufferAttribute, Mesh,
+  MeshBasicMaterial, LineSegments, LineBasicMaterial, DoubleSide,
+} from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { layoutPattern } from './pattern-layout.js';
+import { panelTint, seamColor } from './palette.js';
 
 export class PatternPane {
   constructor(element, viewport) {
@@ -19,7 +24,64 @@ export class PatternPane {
     this.controls.mouseButtons = { LEFT: 2, MIDDLE: 1, RIGHT: 2 }; // PAN, DOLLY, PAN
     this.controls.touches = { ONE: 1, TWO: 2 }; // PAN, DOLLY_PAN
     this.controls.addEventListener('change', () => viewport.requestRender());
+    this.content = new Group();
+    this.scene.add(this.content);
+    this.labels = document.createElement('div');
+    this.labels.className = 'pane-labels';
+    element.parentElement.append(this.labels);
+    this.labelAnchors = [];
     viewport.add(this);
+  }
+
+  // pattern: panels in meters (see docs/formats.md). Panels are laid out side by side; each seam has one
+  // color on both panels it joins; labels name the panels.
+  setPattern(pattern) {
+    this.clear();
+    const layout = layoutPattern(pattern);
+    const seamIds = new Map();
+    const seamIndex = (a, b) => {
+      const k = a < b ? `${a}-${b}` : `${b}-${a}`;
+      if (!seamIds.has(k)) seamIds.set(k, seamIds.size);
+      return seamIds.get(k);
+    };
+    pattern.panels.forEach((panel, i) => {
+      const { offset, boundary, centroid } = layout[i];
+      const xy = (v) => [panel.vertices[v][0] + offset[0], panel.vertices[v][1] + offset[1], 0];
+      const fill = new BufferGeometry();
+      fill.setAttribute('position', new Float32BufferAttribute(panel.triangles.flat().flatMap(xy), 3));
+      const material = new MeshBasicMaterial({ color: panelTint(i), side: DoubleSide, transparent: panel.internal, opacity: 0.6 });
+      this.content.add(new Mesh(fill, material));
+      const points = [];
+      const colors = [];
+      for (const [a, b, partner] of boundary) {
+        const color = partner < 0 ? seamColor(7) : seamColor(seamIndex(i, partner));
+        points.push(...xy(a), ...xy(b));
+        colors.push(color.r, color.g, color.b, color.r, color.g, color.b);
+      }
+      const outline = new BufferGeometry();
+      outline.setAttribute('position', new Float32BufferAttribute(points, 3));
+      outline.setAttribute('color', new Float32BufferAttribute(colors, 3));
+      const line = new LineSegments(outline, new LineBasicMaterial({ vertexColors: true }));
+      line.position.z = 0.001;
+      this.content.add(line);
+      const label = document.createElement('div');
+      label.className = 'panel-label';
+      label.textContent = `${i + 1} ${panel.name ?? ''}`.trim();
+      this.labels.append(label);
+      this.labelAnchors.push({ label, at: new Vector3(centroid[0], centroid[1], 0) });
+    });
+    this.element.parentElement.querySelector('.hint')?.setAttribute('hidden', '');
+    this.frame(this.content);
+  }
+
+  clear() {
+    for (const child of [...this.content.children]) {
+      this.content.remove(child);
+      child.geometry.dispose();
+      child.material.dispose();
+    }
+    this.labels.replaceChildren();
+    this.labelAnchors = [];
   }
 
   frame(object) {
@@ -47,5 +109,17 @@ export class PatternPane {
       this.camera.updateProjectionMatrix();
     }
     renderer.render(this.scene, this.camera);
+    this.placeLabels();
+  }
+
+  placeLabels() {
+    const r = this.element.getBoundingClientRect();
+    const top = this.element.offsetTop;
+    const p = new Vector3();
+    for (const { label, at } of this.labelAnchors) {
+      p.copy(at).project(this.camera);
+      label.style.left = `${((p.x + 1) / 2) * r.width}px`;
+      label.style.top = `${top + ((1 - p.y) / 2) * r.height}px`;
+    }
   }
 }

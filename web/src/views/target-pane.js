@@ -23,12 +23,13 @@ export class TargetPane extends Pane3D {
     geometry.computeVertexNormals();
     geometry.computeBoundingBox();
     this.mesh = new Mesh(geometry, this.material);
+    this.mesh.scale.setScalar(0); // forces setScale to place and frame it
     this.group.add(this.mesh);
     this.setScale(scale);
   }
 
   setScale(scale) {
-    if (!this.mesh) return;
+    if (!this.mesh || this.mesh.scale.x === scale) return;
     const box = this.mesh.geometry.boundingBox;
     this.mesh.scale.setScalar(scale);
     this.mesh.position.set(

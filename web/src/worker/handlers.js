@@ -2,6 +2,10 @@
 import { Op, SolverError } from './protocol.js';
 import { parseMesh } from '../io/mesh-loaders.js';
 
+const STEP_ITERATIONS = 1000; // a step ends on time, not on count
+const STEP_MILLIS = 30; // short steps keep cancel responsive
+const PREVIEW_MILLIS = 120; // how often the inflating shape is streamed to the page
+
 export function createHandlers(api) {
   const state = { target: null };
 
@@ -25,6 +29,33 @@ export function createHandlers(api) {
     },
     *[Op.setTarget]({ positions, indices }) {
       return yield* installTarget(positions, indices);
+    },
+    // { patternText, options } -> snapshot (see Inflation.snapshot). Streams the shape while it inflates.
+    *[Op.inflatePattern]({ patternText, options = {} }) {
+      const inflation = api.inflation();
+      try {
+        yield { stage: 'reading the pattern' };
+        const info = inflation.load(patternText, options);
+        yield { stage: 'inflating', iteration: 0, warnings: info.warnings, ...inflation.mesh(), positions: inflation.positions() };
+        let lastPreview = performance.now();
+        for (;;) {
+          const status = inflation.step(STEP_ITERATIONS, STEP_MILLIS);
+          if (status.state === 'failed') throw new SolverError('inflate.failed', status.message);
+          if (status.state === 'converged') break;
+          const progress = { stage: 'inflating', iteration: status.iteration, residual: status.residual };
+          if (performance.now() - lastPreview > PREVIEW_MILLIS) {
+            lastPreview = performance.now();
+            progress.positions = new Float32Array(inflation.positions());
+          }
+          yield progress;
+        }
+        return { ...inflation.snapshot(), warnings: info.warnings };
+      } finally {
+        inflation.delete();
+      }
+    },
+    *[Op.examplePattern]({ name, triangles }) {
+      return { patternText: JSON.stringify(api.examplePattern(name, triangles)) };
     },
     *[Op.crashForTesting]() {
       api.crashForTesting();

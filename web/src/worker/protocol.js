@@ -18,8 +18,11 @@ export const Op = Object.freeze({
   setTarget: 'setTarget',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
-  // { pattern: object } -> inflated result (see solver-api.js); stepped, with progress and cancel.
+  // { patternText, options } -> inflated result (Inflation.snapshot in solver-api.js); stepped, with
+  // progress events that carry the sewn mesh first and then streamed positions; cancellable.
   inflatePattern: 'inflatePattern',
+  // { name, triangles } -> { patternText }: a built-in example pattern (mylar, pillow, sphere3).
+  examplePattern: 'examplePattern',
 });
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.

@@ -39,8 +39,9 @@ export class Runner {
       this.post({ kind: 'reply', id, ok: false, error: { code: ErrorCode.unknownOp, message: `Unknown operation ${op}` } });
       return;
     }
+    let steps = null;
     try {
-      const steps = handler(args, { id });
+      steps = handler(args, { id });
       for (;;) {
         // Yield to the event loop before each step, so that a cancel sent meanwhile is seen.
         await tick();
@@ -50,7 +51,7 @@ export class Runner {
           this.post({ kind: 'reply', id, ok: true, result: value }, transferables(value));
           break;
         }
-        if (value) this.post({ kind: 'progress', id, ...value });
+        if (value) this.post({ kind: 'progress', id, ...value }, transferables(value));
       }
     } catch (error) {
       if (error instanceof SolverError) {
@@ -62,6 +63,11 @@ export class Runner {
       }
     } finally {
       this.cancelled.delete(id);
+      try {
+        steps?.return(); // runs the handler's finally blocks (frees wasm objects) on cancel and error
+      } catch {
+        // the module may be dead after a trap
+      }
     }
   }
 }

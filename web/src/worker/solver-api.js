@@ -68,4 +68,76 @@ export class SolverApi {
   crashForTesting() {
     this.module.crashForTesting();
   }
+
+  inflation() {
+    return new Inflation(this);
+  }
+
+  // A built-in example pattern (mylar, pillow, sphere3) as billow-pattern JSON text.
+  examplePattern(name, triangles = 3000) {
+    return SolverApi.unwrap(this.module.examplePattern(name, triangles));
+  }
+}
+
+// A stepped inflation of a sewn pattern (wasm InflationSession). Call delete() when done.
+export class Inflation {
+  constructor(api) {
+    this.api = api;
+    this.session = new api.module.InflationSession();
+  }
+
+  // patternText: billow-pattern JSON text; options: { pressure, tolerance, maxIterations }.
+  load(patternText, options = {}) {
+    this.info = SolverApi.unwrap(this.session.load(patternText, JSON.stringify(options)));
+    return this.info;
+  }
+
+  // Restarts from given simulation-vertex positions (#V*3).
+  setStart(positions) {
+    const p = Float64Array.from(positions);
+    this.api.withHeap([p], (ptr) => SolverApi.unwrap(this.session.setStart(ptr, p.length / 3)));
+  }
+
+  // Runs Newton iterations for at most maxIterations or maxMillis: { state, iteration, residual, volume, ... }.
+  step(maxIterations, maxMillis) {
+    return SolverApi.unwrap(this.session.step(maxIterations, maxMillis));
+  }
+
+  // The sewn mesh's triangles (#F*3, outward) and outer flags (#F).
+  mesh() {
+    const s = this.session;
+    const F = s.numTriangles();
+    return {
+      triangles: this.api.fromHeap(Int32Array, s.trianglesPtr(), F * 3),
+      outer: this.api.fromHeap(Int32Array, s.outerPtr(), F),
+    };
+  }
+
+  positions() {
+    return this.api.fromHeap(Float64Array, this.session.positionsPtr(), this.session.numVertices() * 3);
+  }
+
+  // Everything the panes need, copied out of the heap at once.
+  snapshot() {
+    const s = this.session;
+    const fields = SolverApi.unwrap(s.updateFields());
+    const F = s.numTriangles();
+    const panels = this.info.panels;
+    return {
+      ...SolverApi.unwrap(s.result()),
+      ...fields,
+      positions: this.positions(),
+      triangles: this.api.fromHeap(Int32Array, s.trianglesPtr(), F * 3),
+      outer: this.api.fromHeap(Int32Array, s.outerPtr(), F),
+      compression: this.api.fromHeap(Float64Array, s.compressionPtr(), F * 4),
+      stress: this.api.fromHeap(Float64Array, s.stressPtr(), F * 2),
+      regime: this.api.fromHeap(Int32Array, s.regimePtr(), F),
+      panelVertexStart: this.api.fromHeap(Int32Array, s.panelVertexStartPtr(), panels + 1),
+      panelVertexMap: this.api.fromHeap(Int32Array, s.panelVertexMapPtr(), this.info.panelVertices),
+    };
+  }
+
+  delete() {
+    this.session.delete();
+  }
 }

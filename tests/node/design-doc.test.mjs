@@ -1,0 +1,76 @@
+// The design document's pure modules: parse-with-defaults, undo/redo history, URL sharing.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { newDesign, parseDesign } from '../../web/src/app/design.js';
+import { History } from '../../web/src/app/history.js';
+import { encodeDesign, decodeDesign, MAX_LINK_CHARS } from '../../web/src/app/share.js';
+
+test('parseDesign keeps good fields and unknown ones, defaults bad ones with a warning', () => {
+  const good = { ...newDesign('sphere'), size: { height: 0.8 }, extra: { keep: [1, 2] } };
+  const { design, warnings } = parseDesign(good);
+  assert.deepEqual(warnings, []);
+  assert.equal(design.target.example, 'sphere');
+  assert.equal(design.size.height, 0.8);
+  assert.deepEqual(design.extra, { keep: [1, 2] });
+  const bad = parseDesign({ format: 'billow-design', version: 1, target: { example: 'nope' }, size: { height: -3 }, seams: 'x' });
+  assert.equal(bad.design.target.example, 'spot');
+  assert.equal(bad.design.size.height, 0.6);
+  assert.deepEqual(bad.design.seams, []);
+  assert.equal(bad.warnings.length, 2);
+});
+
+test('parseDesign refuses what is not a design, and newer versions, with a message', () => {
+  assert.throws(() => parseDesign(null), /not a Billow design/);
+  assert.throws(() => parseDesign({ format: 'billow-pattern', version: 1 }), /not a Billow design/);
+  assert.throws(() => parseDesign({ format: 'billow-design', version: 99 }), /newer Billow/);
+  assert.throws(() => parseDesign({ format: 'billow-design', version: 'one' }), /version/);
+});
+
+test('history: undo and redo step through snapshots; merged edits are one step', () => {
+  const h = new History({ n: 0 });
+  const add = (k) => (doc) => ({ n: doc.n + k });
+  h.apply(add(1));
+  h.apply(add(10), { mergeKey: 'slider', now: 1000 });
+  h.apply(add(10), { mergeKey: 'slider', now: 1200 });
+  h.apply(add(10), { mergeKey: 'slider', now: 1400 });
+  assert.equal(h.present.n, 31);
+  assert.equal(h.undo().n, 1, 'the three slider moves undo as one');
+  assert.equal(h.undo().n, 0);
+  assert.equal(h.canUndo, false);
+  assert.equal(h.redo().n, 1);
+  assert.equal(h.redo().n, 31);
+  assert.equal(h.canRedo, false);
+  h.undo();
+  h.apply(add(5));
+  assert.equal(h.canRedo, false, 'a new edit drops the redo branch');
+  assert.equal(h.present.n, 6);
+  const same = h.present;
+  assert.equal(h.apply((d) => d), same, 'a no-op command adds no step');
+  assert.equal(h.past.length, 2);
+});
+
+test('a design survives the URL hash round trip', async () => {
+  const design = {
+    ...newDesign('blub'),
+    seams: [{ name: 'belly <img src=x onerror=alert(1)>', closed: true, weight: 2, points: [{ face: 12, bary: [0.2, 0.3, 0.5] }] }],
+  };
+  const fragment = await encodeDesign(design);
+  assert.match(fragment, /^design=[A-Za-z0-9_-]+$/);
+  const back = await decodeDesign(`#${fragment}`);
+  assert.deepEqual(back.design, parseDesign(design).design);
+  assert.equal(back.design.seams[0].name, design.seams[0].name, 'markup stays plain text data');
+});
+
+test('damaged, foreign and oversized links get a message, and no hash means no design', async () => {
+  assert.equal(await decodeDesign(''), null);
+  assert.equal(await decodeDesign('#view=3'), null);
+  await assert.rejects(decodeDesign('#design=%%%'), /readable Billow design/);
+  await assert.rejects(decodeDesign('#design=AAAAAAAA'), /readable Billow design/);
+  const fragment = await encodeDesign(newDesign());
+  await assert.rejects(decodeDesign(`#${fragment.slice(0, fragment.length - 6)}`), /readable|cut short/);
+  const notDesign = await encodeDesign({ format: 'something-else' }).catch(() => null);
+  await assert.rejects(decodeDesign(`#${notDesign}`), /not a Billow design/);
+  const huge = { ...newDesign(), seams: Array.from({ length: 4000 }, (_, i) => ({ points: [{ face: i, bary: [Math.random(), Math.random(), Math.random()] }] })) };
+  await assert.rejects(encodeDesign(huge), new RegExp(`too large for a link`));
+  assert.ok(MAX_LINK_CHARS > 1000);
+});

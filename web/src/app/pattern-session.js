@@ -1,0 +1,105 @@
+// Importing a sewn pattern (billow-pattern JSON): the worker inflates it while the inflated pane shows
+// each streamed iterate and the pattern pane shows the panels. A new pattern cancels the running one.
+import { Op, ErrorCode } from '../worker/protocol.js';
+import { formatVolume } from './units.js';
+
+const UNIT_SCALE = { m: 1, cm: 0.01, mm: 0.001 };
+
+// The panels in meters, for display. Throws Error with a designer-facing message for a non-pattern.
+export function patternForDisplay(text, fileName) {
+  let value;
+  try {
+    value = JSON.parse(text);
+  } catch {
+    throw new Error(`"${fileName}" is not a valid JSON file.`);
+  }
+  if (value?.format !== 'billow-pattern') throw new Error(`"${fileName}" is not a Billow pattern (its "format" is not "billow-pattern").`);
+  const scale = UNIT_SCALE[value.units ?? 'm'];
+  if (!scale) throw new Error(`"${fileName}" uses the unknown unit "${value.units}"; use m, cm or mm.`);
+  if (!Array.isArray(value.panels)) throw new Error(`"${fileName}" has no panels.`);
+  return {
+    ...value,
+    panels: value.panels.map((p) => ({ ...p, vertices: p.vertices.map(([x, y]) => [x * scale, y * scale]) })),
+  };
+}
+
+export class PatternSession {
+  constructor({ client, panes, messages, status, stats }) {
+    this.client = client;
+    this.panes = panes;
+    this.messages = messages;
+    this.status = status; // (text) => void
+    this.stats = stats; // element for the inflated shape's figures
+    this.running = null;
+    this.last = null; // the last good result
+  }
+
+  async openExample(name, triangles = 3000) {
+    const { patternText } = await this.client.request(Op.examplePattern, { name, triangles });
+    return this.open(`${name} pattern`, patternText);
+  }
+
+  async open(fileName, text) {
+    let display;
+    try {
+      display = patternForDisplay(text, fileName);
+    } catch (error) {
+      this.messages.show('error', error.message);
+      return null;
+    }
+    this.running?.cancel();
+    const started = performance.now();
+    let shown = false;
+    const call = this.client.call(Op.inflatePattern, { patternText: text }, {
+      onProgress: (p) => {
+        if (p.triangles) {
+          this.panes.pattern.setPattern(display);
+          this.panes.inflated.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer });
+          shown = true;
+          for (const w of p.warnings ?? []) this.messages.show('warning', w.message);
+        } else if (p.positions && shown) {
+          this.panes.inflated.updatePositions(p.positions);
+        }
+        this.status(p.iteration !== undefined ? `Inflating ${fileName}: step ${p.iteration}…` : `Inflating ${fileName}: ${p.stage}…`);
+      },
+    });
+    this.running = call;
+    try {
+      const result = await call.promise;
+      this.panes.inflated.setResult(result, { frame: !shown });
+      this.last = result;
+      const seconds = ((performance.now() - started) / 1000).toFixed(1);
+      this.status(`Inflated ${fileName} in ${seconds} s (${result.iterations} steps)`);
+      this.renderStats(result);
+      return result;
+    } catch (error) {
+      if (error.code === ErrorCode.cancelled) return null;
+      this.messages.show('error', `The pattern "${fileName}" could not be inflated: ${error.message}`);
+      this.status(this.last ? 'The last good result is shown.' : '');
+      if (this.last) this.panes.inflated.setResult(this.last, { frame: false });
+      return null;
+    } finally {
+      if (this.running === call) this.running = null;
+    }
+  }
+
+  renderStats(result) {
+    const rows = [
+      ['Volume', formatVolume(result.volume)],
+      ['Pressure', `${(result.pressure / 1000).toFixed(2)} kPa`],
+      ['Max wrinkling', `${(100 * result.maxCompression).toFixed(1)} %`],
+      ['Max stress', `${(result.maxStress / 1e6).toFixed(1)} MPa`],
+      ['Solver steps', String(result.iterations)],
+    ];
+    const dl = document.createElement('dl');
+    for (const [k, v] of rows) {
+      const dt = document.createElement('dt');
+      dt.textContent = k;
+      const dd = document.createElement('dd');
+      dd.textContent = v;
+      dd.dataset.stat = k.toLowerCase().replace(/\s+/g, '-');
+      dl.append(dt, dd);
+    }
+    this.stats.replaceChildren(dl);
+  }
+}
