@@ -1,0 +1,316 @@
+// Initial flattening (paper Sec. 5.2, Eq. 14): derivatives by finite differences, exact unrolling of
+// developable segments, curved segments of the shared corpus, and the errors a designer can meet.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <numeric>
+#include <random>
+
+#include "flatten/flatten.hpp"
+#include "test_support.hpp"
+#include "util/error.hpp"
+
+using namespace billow;
+
+namespace {
+
+// A (nu x nv) quad grid mapped by P(s, t), s, t in [0, 1], two triangles per quad, CCW when dP/ds x dP/dt
+// points outside.
+TriMesh gridMesh(int nu, int nv, const std::function<Eigen::Vector3d(double, double)>& P) {
+  TriMesh m;
+  m.V.resize((nu + 1) * (nv + 1), 3);
+  for (int i = 0; i <= nu; ++i)
+    for (int j = 0; j <= nv; ++j) m.V.row(i * (nv + 1) + j) = P(double(i) / nu, double(j) / nv);
+  m.F.resize(2 * nu * nv, 3);
+  for (int i = 0, f = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const int a = i * (nv + 1) + j, b = a + nv + 1;
+      m.F.row(f++) << a, b, b + 1;
+      m.F.row(f++) << a, b + 1, a + 1;
+    }
+  return m;
+}
+
+TriMesh cylinderPatch(int nu, int nv) {  // radius 0.5, 150 degrees, height 0.8
+  return gridMesh(nu, nv, [](double s, double t) {
+    const double u = 2.6 * s;
+    return Eigen::Vector3d(0.5 * std::cos(u), 0.5 * std::sin(u), 0.8 * t);
+  });
+}
+
+TriMesh conePatch(int nu, int nv) {  // half-angle 35 degrees, 200 degrees around, rulings from 0.3 to 1.2
+  const double beta = 35 * M_PI / 180;
+  return gridMesh(nu, nv, [beta](double s, double t) {
+    const double u = 3.5 * s, r = 0.3 + 0.9 * t;
+    return Eigen::Vector3d(r * std::sin(beta) * std::cos(u), r * std::sin(beta) * std::sin(u), r * std::cos(beta));
+  });
+}
+
+// The triangles passing keep, with their vertices renumbered; then the largest edge-connected piece.
+TriMesh subMesh(const TriMesh& m, const std::function<bool(const Eigen::Vector3d&)>& keep) {
+  std::vector<int> faces;
+  for (int f = 0; f < m.numTriangles(); ++f) {
+    const Eigen::Vector3d c = (m.V.row(m.F(f, 0)) + m.V.row(m.F(f, 1)) + m.V.row(m.F(f, 2))) / 3;
+    if (keep(c)) faces.push_back(f);
+  }
+  // Union-find over faces sharing an edge.
+  std::vector<int> parent(faces.size());
+  std::iota(parent.begin(), parent.end(), 0);
+  std::function<int(int)> root = [&](int x) { return parent[x] == x ? x : parent[x] = root(parent[x]); };
+  std::map<std::pair<int, int>, int> edgeFace;
+  for (int k = 0; k < int(faces.size()); ++k)
+    for (int c = 0; c < 3; ++c) {
+      int a = m.F(faces[k], c), b = m.F(faces[k], (c + 1) % 3);
+      auto [it, inserted] = edgeFace.emplace(std::minmax(a, b), k);
+      if (!inserted) parent[root(k)] = root(it->second);
+    }
+  std::map<int, int> size;
+  for (int k = 0; k < int(faces.size()); ++k) ++size[root(k)];
+  const int big =
+      std::max_element(size.begin(), size.end(), [](auto& a, auto& b) { return a.second < b.second; })->first;
+  TriMesh out;
+  std::vector<int> index(m.numVertices(), -1);
+  std::vector<int> kept;
+  for (int k = 0; k < int(faces.size()); ++k)
+    if (root(k) == big) kept.push_back(faces[k]);
+  out.F.resize(kept.size(), 3);
+  int nv = 0;
+  for (int k = 0; k < int(kept.size()); ++k)
+    for (int c = 0; c < 3; ++c) {
+      int& v = index[m.F(kept[k], c)];
+      if (v < 0) v = nv++;
+      out.F(k, c) = v;
+    }
+  out.V.resize(nv, 3);
+  for (int v = 0; v < m.numVertices(); ++v)
+    if (index[v] >= 0) out.V.row(index[v]) = m.V.row(v);
+  return out;
+}
+
+// Max relative difference between 2D and 3D lengths over all edges of the mesh.
+double maxEdgeLengthError(const TriMesh& m, const FlattenResult& r) {
+  double e = 0;
+  for (int f = 0; f < m.numTriangles(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int a = m.F(f, c), b = m.F(f, (c + 1) % 3);
+      const double l3 = (m.V.row(a) - m.V.row(b)).norm(), l2 = (r.uv.row(a) - r.uv.row(b)).norm();
+      e = std::max(e, std::abs(l2 - l3) / l3);
+    }
+  return e;
+}
+
+int countCw(const TriMesh& m, const FlattenResult& r) {
+  int n = 0;
+  for (int f = 0; f < m.numTriangles(); ++f) {
+    const Eigen::RowVector2d a = r.uv.row(m.F(f, 0)), b = r.uv.row(m.F(f, 1)), c = r.uv.row(m.F(f, 2));
+    if (!((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x() > 0)) ++n;
+  }
+  return n;
+}
+
+Points2 boundaryPolygon(const FlattenResult& r) {
+  Points2 Q(r.boundary.size(), 2);
+  for (int j = 0; j < int(r.boundary.size()); ++j) Q.row(j) = r.uv.row(r.boundary[j]);
+  return Q;
+}
+
+void expectValidPanel(const TriMesh& m, const FlattenResult& r) {
+  EXPECT_EQ(r.flippedTriangles, 0);
+  EXPECT_EQ(countCw(m, r), 0);
+  EXPECT_TRUE(isSimpleCcwPolygon(boundaryPolygon(r)));
+  EXPECT_TRUE(r.uv.allFinite());
+  EXPECT_LT(r.uv.colwise().mean().norm(), 0.5 * (r.uv.colwise().maxCoeff() - r.uv.colwise().minCoeff()).norm());
+}
+
+}  // namespace
+
+TEST(FlattenEnergy, GradientAndHessianMatchFiniteDifferences) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1, 1);
+  const int n = 9;
+  BoundaryTargets t{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  Points2 Q(n, 2);
+  for (int j = 0; j < n; ++j) {
+    const double phi = 2 * M_PI * j / n;
+    Q.row(j) << std::cos(phi) + 0.15 * u(rng), 0.7 * std::sin(phi) + 0.15 * u(rng);
+    t.length[j] = 0.7 + 0.2 * u(rng);
+    t.angle[j] = M_PI * (1 - 2.0 / n) + 0.3 * u(rng);
+  }
+  Eigen::VectorXd g;
+  Eigen::SparseMatrix<double> H;
+  boundaryEnergy(Q, t, &g, &H);
+  const Eigen::MatrixXd Hd = H;
+  EXPECT_LT((Hd - Hd.transpose()).norm(), 1e-12 * Hd.norm());
+  const double h = 1e-6;
+  for (int k = 0; k < 2 * n; ++k) {
+    Points2 Qp = Q, Qm = Q;
+    Qp(k / 2, k % 2) += h;
+    Qm(k / 2, k % 2) -= h;
+    const double fd = (boundaryEnergy(Qp, t) - boundaryEnergy(Qm, t)) / (2 * h);
+    EXPECT_NEAR(g[k], fd, 1e-6 * (1 + std::abs(fd))) << "gradient " << k;
+    Eigen::VectorXd gp, gm;
+    boundaryEnergy(Qp, t, &gp);
+    boundaryEnergy(Qm, t, &gm);
+    const Eigen::VectorXd col = (gp - gm) / (2 * h);
+    EXPECT_LT((Hd.col(k) - col).norm(), 1e-5 * (1 + col.norm())) << "Hessian column " << k;
+  }
+}
+
+TEST(FlattenEnergy, PolygonAnglesOfACcwSquare) {
+  Points2 Q(4, 2);
+  Q << 0, 0, 1, 0, 1, 1, 0, 1;
+  EXPECT_TRUE(isSimpleCcwPolygon(Q));
+  EXPECT_NEAR((polygonAngles(Q).array() - M_PI / 2).abs().maxCoeff(), 0, 1e-14);
+  EXPECT_FALSE(isSimpleCcwPolygon(Q.colwise().reverse()));
+  Points2 bowtie(4, 2);
+  bowtie << 0, 0, 1, 1, 1, 0, 0, 1;
+  EXPECT_FALSE(isSimpleCcwPolygon(bowtie));
+}
+
+TEST(Flatten, CylinderPatchUnrollsExactly) {
+  const TriMesh m = cylinderPatch(30, 12);
+  const FlattenResult r = flattenSegment(m);
+  expectValidPanel(m, r);
+  EXPECT_LT(r.maxBoundaryLengthError, 5e-3);
+  EXPECT_LT(maxEdgeLengthError(m, r), 5e-3);
+  EXPECT_NEAR(r.areaRatio, 1, 5e-3);
+  EXPECT_EQ(r.interior, "cotangent");
+  EXPECT_LT(r.boundaryEnergy, 1e-12);
+  // Principal axis along x: the unrolled 1.3 x 0.8 rectangle lies with its long side along x.
+  const Eigen::RowVector2d extent = r.uv.colwise().maxCoeff() - r.uv.colwise().minCoeff();
+  EXPECT_GT(extent.x(), extent.y());
+}
+
+TEST(Flatten, ConePatchUnrollsExactly) {
+  const TriMesh m = conePatch(40, 12);
+  const FlattenResult r = flattenSegment(m);
+  expectValidPanel(m, r);
+  EXPECT_LT(r.maxBoundaryLengthError, 5e-3);
+  EXPECT_LT(maxEdgeLengthError(m, r), 5e-3);
+  EXPECT_NEAR(r.areaRatio, 1, 5e-3);
+}
+
+TEST(Flatten, NonConvexPlanarSegmentKeepsItsShape) {
+  // An L-shaped flat piece, bent in space would be the same: the panel must be congruent to it.
+  TriMesh grid = gridMesh(12, 12, [](double s, double t) { return Eigen::Vector3d(s, t, 0); });
+  const TriMesh m = subMesh(grid, [](const Eigen::Vector3d& c) { return c.x() < 0.4 || c.y() < 0.4; });
+  const FlattenResult r = flattenSegment(m);
+  expectValidPanel(m, r);
+  EXPECT_LT(maxEdgeLengthError(m, r), 1e-6);
+  EXPECT_NEAR(r.areaRatio, 1, 1e-6);
+}
+
+TEST(Flatten, HemisphereKeepsItsBoundaryLengths) {
+  const TriMesh m = subMesh(test::loadShared("sphere.obj"), [](const Eigen::Vector3d& c) { return c.z() > 0; });
+  const FlattenResult r = flattenSegment(m);
+  expectValidPanel(m, r);
+  EXPECT_LT(r.maxBoundaryLengthError, 0.03);
+  // A hemisphere cannot unroll: its panel is smaller than the dome but not absurdly so.
+  // A hemisphere cannot unroll: a disk with its rim's length has half its area.
+  EXPECT_GT(r.areaRatio, 0.4);
+  EXPECT_LT(r.areaRatio, 0.65);
+  std::printf("hemisphere: %d tris, boundary %zu, length error %.4f, area ratio %.3f, Newton %d, %s\n",
+              m.numTriangles(), r.boundary.size(), r.maxBoundaryLengthError, r.areaRatio, r.newtonIterations,
+              r.interior.c_str());
+}
+
+TEST(Flatten, SphericalCapKeepsItsBoundaryLengths) {
+  const TriMesh m = subMesh(test::loadShared("sphere.obj"), [](const Eigen::Vector3d& c) { return c.z() > 0.5; });
+  const FlattenResult r = flattenSegment(m);
+  expectValidPanel(m, r);
+  EXPECT_LT(r.maxBoundaryLengthError, 0.03);
+  // Nor can a cap of half-angle 60 degrees: a disk with its rim's length has 3/4 of its area.
+  EXPECT_GT(r.areaRatio, 0.6);
+  EXPECT_LT(r.areaRatio, 0.9);
+  std::printf("cap: %d tris, length error %.4f, area ratio %.3f, Newton %d\n", m.numTriangles(),
+              r.maxBoundaryLengthError, r.areaRatio, r.newtonIterations);
+}
+
+class FlattenCorpusQuarter : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FlattenCorpusQuarter, HasNoFlippedTriangle) {
+  const TriMesh target = test::loadShared(GetParam());
+  const Eigen::RowVector3d mid = 0.5 * (target.V.colwise().minCoeff() + target.V.colwise().maxCoeff());
+  const TriMesh m = subMesh(target, [&](const Eigen::Vector3d& c) { return c.x() > mid.x() && c.y() > mid.y(); });
+  ASSERT_GT(m.numTriangles(), 100);
+  const FlattenResult r = flattenSegment(m);
+  expectValidPanel(m, r);
+  EXPECT_LT(r.maxBoundaryLengthError, 0.1);
+  std::printf("%s quarter: %d tris, boundary %zu, length error %.4f, area ratio %.3f, Newton %d, %s\n", GetParam(),
+              m.numTriangles(), r.boundary.size(), r.maxBoundaryLengthError, r.areaRatio, r.newtonIterations,
+              r.interior.c_str());
+}
+
+INSTANTIATE_TEST_SUITE_P(Meshes, FlattenCorpusQuarter, ::testing::Values("spot.obj", "bunny.obj", "blub.obj"));
+
+TEST(Flatten, RepairMovesAFoldedVertexBack) {
+  const TriMesh m = gridMesh(4, 4, [](double s, double t) { return Eigen::Vector3d(s, t, 0); });
+  Points2 uv = m.V.leftCols<2>();
+  std::vector<char> isBoundary(m.numVertices(), 0);
+  for (int v = 0; v < m.numVertices(); ++v)
+    isBoundary[v] = uv(v, 0) == 0 || uv(v, 0) == 1 || uv(v, 1) == 0 || uv(v, 1) == 1;
+  uv.row(6) << 0.9, 0.95;  // the interior vertex at (0.25, 0.25) thrown across its neighbours
+  ASSERT_GT(countFlipped(m.F, uv), 0);
+  EXPECT_EQ(untangle(m.F, isBoundary, 10, uv), 0);
+}
+
+TEST(Flatten, AnnulusIsNotADisk) {
+  const TriMesh m =
+      subMesh(test::loadShared("sphere.obj"), [](const Eigen::Vector3d& c) { return std::abs(c.z()) < 0.4; });
+  try {
+    flattenSegment(m);
+    FAIL() << "an annulus was flattened";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "flatten.not-disk");
+    EXPECT_NE(std::string(e.what()).find("2 boundary loops"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("add seams"), std::string::npos) << e.what();
+  }
+}
+
+TEST(Flatten, ClosedSphereIsNotADisk) {
+  try {
+    flattenSegment(test::loadShared("sphere.obj"));
+    FAIL() << "a closed sphere was flattened";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "flatten.not-disk");
+  }
+}
+
+TEST(Flatten, InconsistentOrientationIsReported) {
+  TriMesh m = cylinderPatch(4, 2);
+  std::swap(m.F(3, 1), m.F(3, 2));
+  EXPECT_THROW(flattenSegment(m), Error);
+}
+
+TEST(Flatten, TenThousandTrianglesAreFast) {
+  const TriMesh m = gridMesh(100, 50, [](double s, double t) {
+    return Eigen::Vector3d(2 * s, t, 0.15 * std::sin(3 * s) * std::cos(4 * t));  // a gently curved sheet
+  });
+  ASSERT_EQ(m.numTriangles(), 10000);
+  const auto start = std::chrono::steady_clock::now();
+  const FlattenResult r = flattenSegment(m);
+  const double ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  expectValidPanel(m, r);
+  EXPECT_LT(r.maxBoundaryLengthError, 0.02);
+  std::printf("10k triangles: %.1f ms, length error %.4f, area ratio %.4f, Newton %d\n", ms, r.maxBoundaryLengthError,
+              r.areaRatio, r.newtonIterations);
+  EXPECT_LT(ms, 1000);  // loose for wasm and slow machines; natively well under 100 ms
+}
+
+TEST(Flatten, ConcaveBoundaryIsRepairedWithoutFlips) {
+  // This quarter of spot (below the middle in z and x) has a concave boundary where neither Laplacian solve is
+  // flip-free: the repair must untangle it.
+  const TriMesh target = test::loadShared("spot.obj");
+  const Eigen::RowVector3d mid = 0.5 * (target.V.colwise().minCoeff() + target.V.colwise().maxCoeff());
+  const TriMesh m = subMesh(target, [&](const Eigen::Vector3d& c) { return c.z() <= mid.z() && c.x() <= mid.x(); });
+  FlattenOptions noRepair;
+  noRepair.untangleSweeps = 0;
+  EXPECT_GT(flattenSegment(m, noRepair).flippedTriangles, 0);
+  const FlattenResult r = flattenSegment(m);
+  expectValidPanel(m, r);
+  EXPECT_NE(r.interior.find("+repair"), std::string::npos);
+}

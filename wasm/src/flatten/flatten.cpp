@@ -1,0 +1,112 @@
+// flattenSegment: Skouras et al. 2014, Sec. 5.2 (Eq. 14, after Wang 2008) end to end.
+#include "flatten/flatten.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "flatten/segment_boundary.hpp"
+
+namespace billow {
+namespace {
+
+double area3(const TriMesh& m) {
+  double a = 0;
+  for (int f = 0; f < m.numTriangles(); ++f)
+    a += 0.5 * (m.V.row(m.F(f, 1)) - m.V.row(m.F(f, 0))).cross(m.V.row(m.F(f, 2)) - m.V.row(m.F(f, 0))).norm();
+  return a;
+}
+
+// Signed triangle areas and centroids of the panel.
+void panelMoments(const Triangles& F, const Points2& uv, double& area, Eigen::Vector2d& centroid,
+                  Eigen::Matrix2d& second) {
+  area = 0;
+  centroid.setZero();
+  second.setZero();
+  for (int f = 0; f < F.rows(); ++f) {
+    const Eigen::Vector2d a = uv.row(F(f, 0)), b = uv.row(F(f, 1)), c = uv.row(F(f, 2));
+    const Eigen::Vector2d e = b - a, g = c - a;
+    const double s = 0.5 * (e.x() * g.y() - e.y() * g.x());
+    const Eigen::Vector2d m = (a + b + c) / 3;
+    area += s;
+    centroid += s * m;
+    // Exact second moment of a triangle about the origin: (A / 12) (sum p p^T + 9 m m^T).
+    second += s / 12 * (a * a.transpose() + b * b.transpose() + c * c.transpose() + 9 * m * m.transpose());
+  }
+  if (area != 0) centroid /= area;
+}
+
+// Centre at the area centroid and turn the principal (largest-variance) axis onto x. A rotation, so
+// CCW triangles stay CCW.
+void placeOnPrincipalAxis(const Triangles& F, Points2& uv) {
+  double area;
+  Eigen::Vector2d c;
+  Eigen::Matrix2d S;
+  panelMoments(F, uv, area, c, S);
+  if (!(area > 0)) return;
+  const Eigen::Matrix2d cov = S / area - c * c.transpose();
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix2d> eig(cov);
+  Eigen::Vector2d x = eig.eigenvectors().col(1);  // eigenvalues ascending
+  if (x.x() < 0 || (x.x() == 0 && x.y() < 0)) x = -x;
+  const Eigen::Vector2d y(-x.y(), x.x());
+  for (int v = 0; v < uv.rows(); ++v) {
+    const Eigen::Vector2d p = uv.row(v).transpose() - c;
+    uv.row(v) << p.dot(x), p.dot(y);
+  }
+}
+
+// Interior by one Laplacian solve; falls back to uniform weights, then to the local repair.
+void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, const FlattenOptions& o,
+                   FlattenResult& r) {
+  r.interior = o.weights == LaplacianWeights::Cotangent ? "cotangent" : "uniform";
+  solveInterior(segment, isBoundary, o.weights, o.cotangentClamp, r.uv);
+  r.flippedTriangles = countFlipped(segment.F, r.uv);
+  if (r.flippedTriangles > 0 && o.weights == LaplacianWeights::Cotangent) {
+    Points2 uniform = r.uv;
+    solveInterior(segment, isBoundary, LaplacianWeights::Uniform, 0, uniform);
+    const int flips = countFlipped(segment.F, uniform);
+    if (flips < r.flippedTriangles) {
+      r.uv = uniform;
+      r.flippedTriangles = flips;
+      r.interior = "uniform";
+    }
+  }
+  if (r.flippedTriangles > 0 && o.untangleSweeps > 0) {
+    r.flippedTriangles = untangle(segment.F, isBoundary, o.untangleSweeps, r.uv);
+    r.interior += "+repair";
+  }
+}
+
+}  // namespace
+
+FlattenResult flattenSegment(const TriMesh& segment, const FlattenOptions& options) {
+  FlattenResult r;
+  r.boundary = findBoundaryLoop(segment);
+  const BoundaryTargets targets = measureBoundary(segment, r.boundary);
+  const BoundaryFlattening b = flattenBoundary(targets, options.newton);
+  r.newtonIterations = b.iterations;
+  r.boundaryEnergy = b.energy;
+
+  const int nb = static_cast<int>(r.boundary.size());
+  r.uv = Points2::Zero(segment.numVertices(), 2);
+  std::vector<char> isBoundary(segment.numVertices(), 0);
+  for (int j = 0; j < nb; ++j) {
+    r.uv.row(r.boundary[j]) = b.Q.row(j);
+    isBoundary[r.boundary[j]] = 1;
+  }
+  for (int j = 0; j < nb; ++j) {
+    const double L = (b.Q.row((j + 1) % nb) - b.Q.row(j)).norm();
+    r.maxBoundaryLengthError = std::max(r.maxBoundaryLengthError, std::abs(L - targets.length[j]) / targets.length[j]);
+  }
+  placeInterior(segment, isBoundary, options, r);
+  if (options.placeOnPrincipalAxis) placeOnPrincipalAxis(segment.F, r.uv);
+
+  double area2 = 0;
+  Eigen::Vector2d c;
+  Eigen::Matrix2d S;
+  panelMoments(segment.F, r.uv, area2, c, S);
+  r.areaRatio = area2 / area3(segment);
+  return r;
+}
+
+}  // namespace billow

@@ -1,0 +1,162 @@
+// Laplacian interior solve and flip repair for the initial flattening (Skouras et al. 2014, Sec. 5.2).
+// Positive weights with a convex boundary give an embedding (Tutte; Floater 2003); the cotangent weights are
+// clamped to stay positive, and uniform weights are the fallback. A non-convex boundary can still force
+// flips: those are repaired locally, vertex by vertex, by raising the smallest signed area of its triangles.
+#include "flatten/interior_map.hpp"
+
+#include <Eigen/LU>
+#include <Eigen/SparseCholesky>
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace billow {
+namespace {
+
+using Vec2 = Eigen::Vector2d;
+using Triplet = Eigen::Triplet<double>;
+
+double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
+
+double signedArea2(const Points2& uv, int a, int b, int c) {
+  return cross((uv.row(b) - uv.row(a)).transpose(), (uv.row(c) - uv.row(a)).transpose());
+}
+
+// Symmetric edge weights w_ij (#V by #V): 1 per edge, or (cot alpha + cot beta) / 2 measured in 3D.
+Eigen::SparseMatrix<double> edgeWeights(const TriMesh& m, LaplacianWeights weights, double clamp) {
+  std::vector<Triplet> t;
+  t.reserve(6 * m.numTriangles());
+  for (int f = 0; f < m.numTriangles(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int i = m.F(f, (c + 1) % 3), j = m.F(f, (c + 2) % 3), k = m.F(f, c);
+      double w = 0.5;  // uniform: each interior edge is seen by two triangles
+      if (weights == LaplacianWeights::Cotangent) {
+        const Eigen::Vector3d a = m.V.row(i) - m.V.row(k), b = m.V.row(j) - m.V.row(k);
+        w = 0.5 * a.dot(b) / std::max(a.cross(b).norm(), 1e-300);
+      }
+      t.emplace_back(i, j, w);
+      t.emplace_back(j, i, w);
+    }
+  Eigen::SparseMatrix<double> W(m.numVertices(), m.numVertices());
+  W.setFromTriplets(t.begin(), t.end());
+  if (weights == LaplacianWeights::Cotangent) {
+    const double floor = clamp * W.coeffs().cwiseAbs().mean();
+    for (double& w : W.coeffs()) w = std::isfinite(w) ? std::max(w, floor) : floor;
+  }
+  return W;
+}
+
+// Untangling after Freitag and Plassmann: the position p of a vertex that maximizes the smallest signed area
+// of its triangles, a small linear program in (p, t): max t s.t. cross(b - a, p - a) >= t for every link
+// edge (a, b). For an interior vertex the link is closed, so t is bounded and the optimum is a vertex where
+// three constraints are active: try every triple.
+bool maxMinAreaPosition(const std::vector<std::pair<int, int>>& link, const Points2& uv, Vec2& best, double& bestT) {
+  const int k = static_cast<int>(link.size());
+  std::vector<Eigen::Vector3d> rows(k);  // constraint: n . p - c >= t, as (n.x, n.y, c)
+  for (int e = 0; e < k; ++e) {
+    const Vec2 a = uv.row(link[e].first).transpose(), b = uv.row(link[e].second).transpose();
+    const Vec2 normal(-(b - a).y(), (b - a).x());
+    rows[e] << normal, normal.dot(a);
+  }
+  bool found = false;
+  for (int i = 0; i < k; ++i)
+    for (int j = i + 1; j < k; ++j)
+      for (int l = j + 1; l < k; ++l) {
+        Eigen::Matrix3d M;
+        Eigen::Vector3d rhs;
+        int r = 0;
+        for (int e : {i, j, l}) {
+          M.row(r) << rows[e].x(), rows[e].y(), -1;
+          rhs[r++] = rows[e].z();
+        }
+        const Eigen::FullPivLU<Eigen::Matrix3d> lu(M);
+        if (!lu.isInvertible()) continue;
+        const Eigen::Vector3d x = lu.solve(rhs);  // (p, t)
+        if (found && x.z() <= bestT) continue;
+        bool feasible = true;
+        for (int e = 0; e < k && feasible; ++e)
+          feasible = rows[e].head<2>().dot(x.head<2>()) - rows[e].z() >= x.z() - 1e-12 * (1 + std::abs(x.z()));
+        if (!feasible) continue;
+        best = x.head<2>();
+        bestT = x.z();
+        found = true;
+      }
+  return found;
+}
+
+// Moves v when that raises the smallest signed area of its triangles.
+void untangleVertex(const std::vector<std::pair<int, int>>& link, Points2& uv, int v) {
+  double current = std::numeric_limits<double>::infinity();
+  for (auto [a, b] : link) current = std::min(current, signedArea2(uv, v, a, b));
+  Vec2 p;
+  double t;
+  if (maxMinAreaPosition(link, uv, p, t) && t > current) uv.row(v) = p.transpose();
+}
+
+}  // namespace
+
+void solveInterior(const TriMesh& segment, const std::vector<char>& isBoundary, LaplacianWeights weights, double clamp,
+                   Points2& uv) {
+  const int n = segment.numVertices();
+  std::vector<int> index(n, -1);
+  int m = 0;
+  for (int v = 0; v < n; ++v)
+    if (!isBoundary[v]) index[v] = m++;
+  if (m == 0) return;
+  const Eigen::SparseMatrix<double> W = edgeWeights(segment, weights, clamp);
+  std::vector<Triplet> t;
+  t.reserve(W.nonZeros() + m);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 2);
+  for (int j = 0; j < W.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(W, j); it; ++it) {
+      const int i = static_cast<int>(it.row());
+      if (index[i] < 0) continue;
+      t.emplace_back(index[i], index[i], it.value());
+      if (index[j] >= 0)
+        t.emplace_back(index[i], index[j], -it.value());
+      else
+        rhs.row(index[i]) += it.value() * uv.row(j);
+    }
+  Eigen::SparseMatrix<double> A(m, m);
+  A.setFromTriplets(t.begin(), t.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+  const Eigen::MatrixXd x = ldlt.solve(rhs);
+  for (int v = 0; v < n; ++v)
+    if (index[v] >= 0) uv.row(v) = x.row(index[v]);
+}
+
+int countFlipped(const Triangles& F, const Points2& uv) {
+  int flipped = 0;
+  for (int f = 0; f < F.rows(); ++f)
+    if (!(signedArea2(uv, F(f, 0), F(f, 1), F(f, 2)) > 0)) ++flipped;
+  return flipped;
+}
+
+int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps, Points2& uv) {
+  const int n = static_cast<int>(uv.rows());
+  std::vector<std::vector<std::pair<int, int>>> link(n);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) link[F(f, c)].emplace_back(F(f, (c + 1) % 3), F(f, (c + 2) % 3));
+  int flipped = countFlipped(F, uv);
+  for (int s = 0; s < sweeps && flipped > 0; ++s) {
+    // The vertices of flipped triangles and, as sweeps go by, more rings around them: moving a neighbour often
+    // makes room for a vertex that cannot be untangled on its own.
+    std::vector<char> active(n, 0);
+    for (int f = 0; f < F.rows(); ++f)
+      if (!(signedArea2(uv, F(f, 0), F(f, 1), F(f, 2)) > 0))
+        for (int c = 0; c < 3; ++c) active[F(f, c)] = 1;
+    for (int ring = 0; ring < std::min(1 + s / 3, 8); ++ring) {
+      std::vector<char> grown = active;
+      for (int v = 0; v < n; ++v)
+        if (active[v])
+          for (auto [a, b] : link[v]) grown[a] = grown[b] = 1;
+      active.swap(grown);
+    }
+    for (int v = 0; v < n; ++v)
+      if (active[v] && !isBoundary[v]) untangleVertex(link[v], uv, v);
+    flipped = countFlipped(F, uv);
+  }
+  return flipped;
+}
+
+}  // namespace billow

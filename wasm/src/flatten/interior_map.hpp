@@ -1,0 +1,31 @@
+// Interior of a panel with its boundary fixed: one Laplacian solve (Skouras et al. 2014, Sec. 5.2), then a
+// check for flipped triangles and a local repair when the boundary is not convex.
+#pragma once
+#include <vector>
+
+#include "flatten/boundary_energy.hpp"
+#include "mesh/tri_mesh.hpp"
+
+namespace billow {
+
+enum class LaplacianWeights {
+  Cotangent,  // from the 3D segment; exact on a developable segment; clamped from below to stay positive
+  Uniform,    // Tutte: flip-free whenever the boundary polygon is convex
+};
+
+// uv (#V by 2) with the rows of the boundary vertices given; the others are overwritten by the solution of
+// the Laplace equation (a sparse SPD system, SimplicialLDLT). clamp: cotangent weights below
+// clamp * (mean weight) are raised to it, so every weight is positive.
+void solveInterior(const TriMesh& segment, const std::vector<char>& isBoundary, LaplacianWeights weights, double clamp,
+                   Points2& uv);
+
+// Triangles whose 2D signed area is not positive (CW or degenerate).
+int countFlipped(const Triangles& F, const Points2& uv);
+
+// Repair of flipped triangles with the boundary fixed: sweeps over the interior vertices near flipped triangles
+// (more rings each few sweeps), each moved to where the smallest signed area of its triangles is largest (a
+// small LP); a move never lowers that smallest area. Returns the flips left (some configurations, e.g. a
+// triangle with three boundary vertices on a concave stretch, cannot be repaired with the boundary fixed).
+int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps, Points2& uv);
+
+}  // namespace billow
