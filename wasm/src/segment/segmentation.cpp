@@ -1,0 +1,140 @@
+// Segmentation and its problem report (see segmentation.hpp).
+#include "segment/segmentation.hpp"
+
+#include <set>
+
+#include "mesh/location.hpp"
+#include "segment/segment_topology.hpp"
+
+namespace billow {
+
+namespace {
+
+struct Box {
+  Eigen::Vector3d lo, hi;
+  std::string where(const Eigen::Vector3d& p) const { return describeLocation(p, lo, hi); }
+};
+
+// A representative point of a segment: the centroid of its triangle nearest to its area centroid.
+Eigen::Vector3d segmentPoint(const TriMesh& m, const Segment& s) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  auto centroid = [&](int t) {
+    return ((m.V.row(m.F(t, 0)) + m.V.row(m.F(t, 1)) + m.V.row(m.F(t, 2))) / 3.0).transpose().eval();
+  };
+  for (int t : s.triangles) c += centroid(t) / static_cast<double>(s.triangles.size());
+  Eigen::Vector3d best = centroid(s.triangles.front());
+  for (int t : s.triangles)
+    if ((centroid(t) - c).squaredNorm() < (best - c).squaredNorm()) best = centroid(t);
+  return best;
+}
+
+void junctions(const CutMesh& cut, Segmentation& out) {
+  const int nv = out.mesh.numVertices();
+  std::vector<int> degree(nv, 0);
+  for (const auto& [key, seam] : cut.seamEdge) ++degree[key >> 32], ++degree[key & 0xffffffffu];
+  std::vector<std::set<int>> around(nv);
+  for (int t = 0; t < out.mesh.numTriangles(); ++t)
+    for (int k = 0; k < 3; ++k)
+      if (degree[out.mesh.F(t, k)] > 0) around[out.mesh.F(t, k)].insert(out.faceSegment[t]);
+  for (int v = 0; v < nv; ++v) {
+    const int segments = static_cast<int>(around[v].size());
+    if (degree[v] == 0 || (degree[v] == 2 && segments < 3)) continue;
+    out.junctions.push_back({v, out.mesh.V.row(v).transpose(), segments, degree[v]});
+  }
+}
+
+std::string plural(int n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
+
+void segmentProblems(const Box& box, double totalArea, const SegmentationOptions& options, Segmentation& out) {
+  for (int s = 0; s < static_cast<int>(out.segments.size()); ++s) {
+    const Segment& seg = out.segments[s];
+    SegmentationProblem p;
+    p.segment = s, p.location = segmentPoint(out.mesh, seg);
+    const std::string where = box.where(p.location);
+    const int loops = static_cast<int>(seg.loops.size());
+    if (!seg.isDisk) {
+      p.code = "segment.not-disk", p.severity = "error";
+      if (loops == 0)
+        p.message = "The segment " + where +
+                    " has no seam around it yet: draw a closed seam to cut the shape into "
+                    "panels.";
+      else if (seg.genus > 0)
+        p.message = "The segment " + where + " wraps around a handle: add a seam across it so it can be cut open.";
+      else if (loops == 2)
+        p.message = "The segment " + where +
+                    " wraps around a limb like a tube: add a seam along it so it can be "
+                    "cut open.";
+      else
+        p.message = "The segment " + where + " has " + plural(loops - 1, "hole") +
+                    ": connect its inner seams to its outer seam so it can be flattened.";
+      out.problems.push_back(p);
+    }
+    if (seg.area < options.minSegmentAreaRatio * totalArea) {
+      p.code = "segment.sliver", p.severity = "warning";
+      p.message = "The segment " + where + " is tiny: move its seams apart or remove one of them.";
+      out.problems.push_back(p);
+    }
+  }
+}
+
+void seamProblems(const Box& box, const CutMesh& cut, Segmentation& out) {
+  std::set<int> reported;
+  for (const SeamJunction& j : out.junctions) {
+    if (j.seamEdges != 1) continue;
+    // which seam ends here
+    int seam = -1;
+    for (size_t s = 0; s < cut.seamVertices.size() && seam < 0; ++s)
+      if (!cut.seamVertices[s].empty() &&
+          (cut.seamVertices[s].front() == j.vertex || cut.seamVertices[s].back() == j.vertex))
+        seam = static_cast<int>(s);
+    if (seam < 0 || !reported.insert(seam).second) continue;  // TODO: stray degree-1 seam vertices (see report)
+    SegmentationProblem p;
+    p.code = "seam.dangling", p.severity = "warning", p.seam = seam, p.location = j.position;
+    p.message = "A seam ends in the middle of a segment " + box.where(j.position) +
+                "; it will be cut as a slit. Extend it to another seam to close the region.";
+    out.problems.push_back(p);
+  }
+  std::set<int> crossed;
+  for (const auto& c : cut.selfCrossings) {
+    if (!crossed.insert(c.seam).second) continue;
+    SegmentationProblem p;
+    p.code = "seam.self-crossing", p.severity = "warning", p.seam = c.seam, p.location = c.position;
+    p.message = "A seam crosses itself " + box.where(c.position) + ": move its points so it does not loop over itself.";
+    out.problems.push_back(p);
+  }
+  if (cut.unrecoveredPieces > 0) {
+    SegmentationProblem p;
+    p.code = "seam.not-cut", p.severity = "error";
+    p.message = "Part of a seam could not be cut into the shape (" + plural(cut.unrecoveredPieces, "piece") +
+                "): move its points slightly.";
+    out.problems.push_back(p);
+  }
+}
+
+}  // namespace
+
+bool Segmentation::ok() const {
+  for (const SegmentationProblem& p : problems)
+    if (p.severity == "error") return false;
+  return true;
+}
+
+Segmentation segmentTarget(const TriMesh& target, const MeshTopology& topo, const std::vector<SeamCurve>& seams,
+                           const SegmentationOptions& options) {
+  CutMesh cut = cutAlongSeams(target, topo, seams, options.tolerance);
+  Segmentation out;
+  out.mesh = std::move(cut.mesh);
+  out.vertexOrigin = std::move(cut.vertexOrigin);
+  out.faceOrigin = std::move(cut.faceOrigin);
+  out.seamVertices = cut.seamVertices;
+  labelSegments(cut, out);
+  junctions(cut, out);
+  const Box box{target.V.colwise().minCoeff().transpose(), target.V.colwise().maxCoeff().transpose()};
+  double area = 0;
+  for (const Segment& s : out.segments) area += s.area;
+  segmentProblems(box, area, options, out);
+  seamProblems(box, cut, out);
+  return out;
+}
+
+}  // namespace billow
