@@ -6,6 +6,8 @@ import { InflatedPane } from './views/inflated-pane.js';
 import { SolverClient } from './worker/client.js';
 import { Messages } from './app/messages.js';
 import { App } from './app/app.js';
+import { SeamTool } from './tools/seam-tool.js';
+import { SeamPanel } from './views/seam-panel.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -44,6 +46,9 @@ const app = new App({
   },
 });
 
+const seamTool = new SeamTool(panes.target, app.seams);
+const seamPanel = new SeamPanel($('seam-panel'), { tool: seamTool, editor: app.seams });
+
 $('open-button').addEventListener('click', () => $('file-input').click());
 $('file-input').addEventListener('change', (event) => {
   const file = event.target.files?.[0];
@@ -61,9 +66,18 @@ window.addEventListener('hashchange', () => app.openFromLink(location.hash));
 // Keyboard shortcuts (not while typing in a field).
 window.addEventListener('keydown', (e) => {
   if (e.target instanceof HTMLInputElement || e.target instanceof HTMLSelectElement) return;
+  if (seamTool.onKey(e)) {
+    seamPanel.render();
+    e.preventDefault();
+    return;
+  }
   const mod = e.ctrlKey || e.metaKey;
   const key = e.key.toLowerCase();
-  if (mod && key === 'z' && !e.shiftKey) app.undo();
+  const tools = { v: 'orbit', d: 'draw', e: 'edit' };
+  if (!mod && !e.altKey && tools[key]) {
+    seamTool.setMode(tools[key]);
+    seamPanel.render();
+  } else if (mod && key === 'z' && !e.shiftKey) app.undo();
   else if (mod && ((key === 'z' && e.shiftKey) || key === 'y')) app.redo();
   else if (mod && key === 's') app.saveDesignFile();
   else if (mod && key === 'o') $('file-input').click();
@@ -93,5 +107,5 @@ window.addEventListener('drop', (e) => {
 });
 
 // For the end-to-end tests and the curious: the app and its solver client.
-window.billow = { app, client, viewport };
+window.billow = { app, client, viewport, seamTool };
 app.start().then(() => document.body.setAttribute('data-ready', 'true'));

@@ -8,6 +8,8 @@ import { History } from './history.js';
 import { encodeDesign, decodeDesign } from './share.js';
 import { PatternSession } from './pattern-session.js';
 import { renderTargetStats } from './target-stats.js';
+import { SeamEditor } from './seam-editor.js';
+import { setHeight } from './commands.js';
 
 // Example patterns computed by the solver (wasm/src/simulate/example_patterns.cpp).
 export const PATTERN_EXAMPLES = [
@@ -36,6 +38,7 @@ export class App {
       status: (text) => this.setStatus(text),
       stats: elements.inflatedStats,
     });
+    this.seams = new SeamEditor(this);
   }
 
   get design() {
@@ -148,7 +151,10 @@ export class App {
       const { design, warnings } = parseDesign(JSON.parse(text));
       for (const w of warnings) this.messages.show('warning', w);
       if (design.target.example) return this.loadExample(design.target.example, design);
-      if (this.target && design.target.file === this.target.fileName) return this.commitDesign(design, { reset: true });
+      if (this.target && design.target.file === this.target.fileName) {
+        this.commitDesign(design, { reset: true });
+        return this.seams.refresh();
+      }
       return this.messages.show('warning', `This design uses the target file "${design.target.file}": open that mesh first, then the design.`);
     } catch (error) {
       return this.messages.show('error', `"${file.name}" cannot be opened: ${error.message}`);
@@ -191,7 +197,9 @@ export class App {
   installTarget(fileName, result, design) {
     this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
     this.panes.target.setTarget(this.target, this.scaleFor(design));
+    this.seams.reset();
     this.commitDesign(design, { reset: true });
+    this.seams.refresh();
   }
 
   // Mesh files carry no units: the design's height (m) fixes the scale of the target's own units.
@@ -207,6 +215,12 @@ export class App {
     if (reset) this.history.reset(design);
     else this.history.apply(() => design, { mergeKey });
     this.showDesign();
+    this.save();
+  }
+
+  // A fix-up that belongs to the edit just made: no new undo step.
+  amendDesign(design) {
+    this.history.amend(() => design);
     this.save();
   }
 
@@ -227,19 +241,24 @@ export class App {
     }
     const height = clampHeight(meters);
     if (height === this.design.size.height) return;
-    this.commitDesign({ ...this.design, size: { ...this.design.size, height } }, { mergeKey: 'height' });
+    this.commitDesign(setHeight(this.design, height), { mergeKey: 'height' });
   }
 
   undo() {
     this.history.undo();
-    this.showDesign();
-    this.save();
+    this.afterHistoryMove();
   }
 
   redo() {
     this.history.redo();
+    this.afterHistoryMove();
+  }
+
+  afterHistoryMove() {
+    this.seams.selection = null;
     this.showDesign();
     this.save();
+    this.seams.refresh();
   }
 
   // Puts the design into the page's link and copies it; files cannot travel in a link yet.

@@ -28,6 +28,13 @@ export class History {
     return next;
   }
 
+  // Changes the present without a new step: derived fix-ups that belong to the edit just made
+  // (e.g. seam ends that follow the seam they are attached to).
+  amend(command) {
+    this.present = command(this.present);
+    return this.present;
+  }
+
   // Replaces the whole history (a new target or an opened design).
   reset(doc) {
     this.past = [];

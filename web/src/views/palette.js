@@ -11,3 +11,11 @@ export function seamColor(i) {
 export function panelTint(i) {
   return seamColor(i).lerp(new Color('#ffffff'), 0.75);
 }
+
+// Segment fills: light, distinct, colorblind-safe hues; a red tint marks a segment that is not a disk.
+const SEGMENT_FILLS = ['#8fb3e0', '#f2c879', '#8fd1b4', '#e3a6c8', '#f0a77a', '#a8d8f0', '#d9d27a', '#b9a6e0', '#9fc7a0', '#e0b9a0'];
+export const PROBLEM_COLOR = new Color('#e05a4f');
+
+export function segmentColor(i) {
+  return new Color(SEGMENT_FILLS[i % SEGMENT_FILLS.length]);
+}

@@ -1,14 +1,28 @@
-// The target pane: the target mesh at its real size (meters), with statistics.
-import { BufferAttribute, BufferGeometry, Mesh, MeshStandardMaterial, Group } from 'three';
+// The target pane: the target mesh at its real size (meters), its seams and segments, and picking of
+// surface points (triangle + barycentric coordinates) for the seam tool.
+import {
+  BufferAttribute, BufferGeometry, Group, Mesh, MeshStandardMaterial, Raycaster, Triangle, Vector2, Vector3,
+} from 'three';
 import { Pane3D } from './pane3d.js';
+import { SeamLayer } from './seam-layer.js';
+import { segmentColor, PROBLEM_COLOR } from './palette.js';
+
+const PUSH_BACK = { polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 };
 
 export class TargetPane extends Pane3D {
   constructor(element, viewport) {
     super(element, viewport);
     this.group = new Group();
     this.scene.add(this.group);
-    this.material = new MeshStandardMaterial({ color: 0x8fb3e0, roughness: 0.55, metalness: 0.05, flatShading: false });
+    // Surfaces are pushed back a little in depth so seams drawn on them are never half hidden.
+    this.material = new MeshStandardMaterial({ color: 0x8fb3e0, roughness: 0.55, metalness: 0.05, ...PUSH_BACK });
     this.mesh = null;
+    this.seams = null;
+    this.raycaster = new Raycaster();
+  }
+
+  requestRender() {
+    this.viewport.requestRender();
   }
 
   // positions in file units, scale to meters; centered on the bounding box's bottom center.
@@ -22,7 +36,12 @@ export class TargetPane extends Pane3D {
     geometry.setIndex(new BufferAttribute(new Uint32Array(indices), 1));
     geometry.computeVertexNormals();
     geometry.computeBoundingBox();
+    geometry.computeBoundingSphere();
+    this.material.visible = true;
+    this.clearSegments();
     this.mesh = new Mesh(geometry, this.material);
+    this.seams = new SeamLayer(geometry.boundingSphere.radius * 0.012);
+    this.mesh.add(this.seams);
     this.mesh.scale.setScalar(0); // forces setScale to place and frame it
     this.group.add(this.mesh);
     this.setScale(scale);
@@ -32,11 +51,77 @@ export class TargetPane extends Pane3D {
     if (!this.mesh || this.mesh.scale.x === scale) return;
     const box = this.mesh.geometry.boundingBox;
     this.mesh.scale.setScalar(scale);
-    this.mesh.position.set(
-      -scale * 0.5 * (box.min.x + box.max.x),
-      -scale * box.min.y,
-      -scale * 0.5 * (box.min.z + box.max.z),
-    );
+    this.mesh.position.set(-scale * 0.5 * (box.min.x + box.max.x), -scale * box.min.y, -scale * 0.5 * (box.min.z + box.max.z));
+    this.mesh.updateMatrixWorld(true);
     this.frame(this.group);
+  }
+
+  // The target cut into segments, each in its own color (segments that are not disks in red). The
+  // original target stays for picking, undrawn; the segments mesh shares its transform.
+  setSegments({ positions, indices, faceSegment, segments }) {
+    this.clearSegments();
+    if (!this.mesh || !segments || segments.length < 2) {
+      this.material.visible = true;
+      this.requestRender();
+      return;
+    }
+    const indexed = new BufferGeometry();
+    indexed.setAttribute('position', new BufferAttribute(positions, 3));
+    indexed.setIndex(new BufferAttribute(indices, 1));
+    indexed.computeVertexNormals();
+    const geometry = indexed.toNonIndexed();
+    const color = new Float32Array(faceSegment.length * 9);
+    faceSegment.forEach((s, f) => {
+      const c = segments[s]?.isDisk === false ? PROBLEM_COLOR : segmentColor(s);
+      for (let k = 0; k < 3; k++) color.set([c.r, c.g, c.b], 9 * f + 3 * k);
+    });
+    geometry.setAttribute('color', new BufferAttribute(color, 3));
+    this.segmentsMesh = new Mesh(geometry, new MeshStandardMaterial({ vertexColors: true, roughness: 0.6, metalness: 0.0, ...PUSH_BACK }));
+    this.segmentsMesh.raycast = () => {}; // picking uses the original target's triangles
+    this.mesh.add(this.segmentsMesh);
+    this.material.visible = false;
+    this.requestRender();
+  }
+
+  clearSegments() {
+    if (!this.segmentsMesh) return;
+    this.segmentsMesh.parent?.remove(this.segmentsMesh);
+    this.segmentsMesh.geometry.dispose();
+    this.segmentsMesh.material.dispose();
+    this.segmentsMesh = null;
+  }
+
+  ndc(event) {
+    const r = this.element.getBoundingClientRect();
+    return new Vector2(((event.clientX - r.left) / r.width) * 2 - 1, -((event.clientY - r.top) / r.height) * 2 + 1);
+  }
+
+  // The surface point under a pointer event: { point: { face, bary }, position: [x, y, z] (file units) }.
+  pick(event) {
+    if (!this.mesh) return null;
+    this.raycaster.setFromCamera(this.ndc(event), this.camera);
+    const hit = this.raycaster.intersectObject(this.mesh, false)[0];
+    if (!hit) return null;
+    const local = this.mesh.worldToLocal(hit.point.clone());
+    const pos = this.mesh.geometry.getAttribute('position');
+    const index = this.mesh.geometry.index.array;
+    const corner = (c) => new Vector3().fromBufferAttribute(pos, index[3 * hit.faceIndex + c]);
+    const bary = Triangle.getBarycoord(local, corner(0), corner(1), corner(2), new Vector3());
+    return { point: { face: hit.faceIndex, bary: [bary.x, bary.y, bary.z] }, position: [local.x, local.y, local.z] };
+  }
+
+  // Screen distance in pixels between a pointer event and a point in the target's own coordinates.
+  screenDistance(event, position) {
+    const r = this.element.getBoundingClientRect();
+    const p = this.mesh.localToWorld(new Vector3(position[0], position[1], position[2])).project(this.camera);
+    const x = ((p.x + 1) / 2) * r.width + r.left;
+    const y = ((1 - p.y) / 2) * r.height + r.top;
+    return Math.hypot(x - event.clientX, y - event.clientY);
+  }
+
+  render(renderer, aspect) {
+    const r = this.element.getBoundingClientRect();
+    this.seams?.setResolution(r.width, r.height);
+    super.render(renderer, aspect);
   }
 }

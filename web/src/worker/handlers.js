@@ -17,7 +17,14 @@ export function createHandlers(api) {
       throw new SolverError('target.invalid', errors.map((i) => i.message).join('\n'), { report });
     }
     state.target = { positions, indices: fixed };
+    state.session ??= api.targetSession();
+    state.session.setTarget(positions, fixed);
     return { report, positions: positions.slice(), indices: fixed.slice() };
+  }
+
+  function requireSession() {
+    if (!state.session || !state.target) throw new SolverError('seams.no-target', 'Load a target before drawing seams.');
+    return state.session;
   }
 
   return {
@@ -53,6 +60,15 @@ export function createHandlers(api) {
       } finally {
         inflation.delete();
       }
+    },
+    // { points, closed } -> the seam's curve on the target (see TargetSession.traceSeam).
+    *[Op.traceSeam](seam) {
+      return requireSession().traceSeam(seam);
+    },
+    // { seams } -> the segmentation (see TargetSession.segment).
+    *[Op.segment]({ seams }) {
+      yield { stage: 'cutting the target along the seams' };
+      return requireSession().segment(seams);
     },
     *[Op.examplePattern]({ name, triangles }) {
       return { patternText: JSON.stringify(api.examplePattern(name, triangles)) };

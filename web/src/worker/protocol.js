@@ -16,6 +16,10 @@ export const Op = Object.freeze({
   loadTarget: 'loadTarget',
   // Re-installs a target that was already loaded: { positions, indices } -> same as loadTarget.
   setTarget: 'setTarget',
+  // { points: [{ face, bary }], closed } -> { curve, faces, barys, controls, controlSamples, length }
+  traceSeam: 'traceSeam',
+  // { seams: [{ points, closed, weight }] } -> { segments, problems, junctions, positions, indices, faceSegment }
+  segment: 'segment',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
   // { patternText, options } -> inflated result (Inflation.snapshot in solver-api.js); stepped, with

@@ -73,6 +73,10 @@ export class SolverApi {
     return new Inflation(this);
   }
 
+  targetSession() {
+    return new TargetSession(this);
+  }
+
   // A built-in example pattern (mylar, pillow, sphere3) as billow-pattern JSON text.
   examplePattern(name, triangles = 3000) {
     return SolverApi.unwrap(this.module.examplePattern(name, triangles));
@@ -134,6 +138,49 @@ export class Inflation {
       regime: this.api.fromHeap(Int32Array, s.regimePtr(), F),
       panelVertexStart: this.api.fromHeap(Int32Array, s.panelVertexStartPtr(), panels + 1),
       panelVertexMap: this.api.fromHeap(Int32Array, s.panelVertexMapPtr(), this.info.panelVertices),
+    };
+  }
+
+  delete() {
+    this.session.delete();
+  }
+}
+
+// The target with its seams (wasm TargetSession): tracing seams and cutting the target into segments.
+export class TargetSession {
+  constructor(api) {
+    this.api = api;
+    this.session = new api.module.TargetSession();
+  }
+
+  setTarget(positions, indices) {
+    const pos = Float64Array.from(positions);
+    const idx = Int32Array.from(indices);
+    this.api.withHeap([pos, idx], (p, i) => SolverApi.unwrap(this.session.setTarget(p, pos.length / 3, i, idx.length / 3)));
+  }
+
+  // seam: { points: [{ face, bary }], closed } -> { curve, faces, barys, controls, controlSamples, length }
+  traceSeam(seam) {
+    const r = SolverApi.unwrap(this.session.traceSeam(JSON.stringify(seam)));
+    return {
+      curve: Float32Array.from(r.positions),
+      faces: Int32Array.from(r.faces),
+      barys: Float64Array.from(r.barys), // full precision: a snapped point must lie exactly on the curve
+      controls: Float32Array.from(r.controls),
+      controlSamples: Int32Array.from(r.controlIndices),
+      length: r.length,
+    };
+  }
+
+  // seams: [{ points, closed, weight }] -> summary (segments, problems, junctions) and the cut mesh.
+  segment(seams) {
+    const summary = SolverApi.unwrap(this.session.segment(JSON.stringify(seams)));
+    const s = this.session;
+    return {
+      ...summary,
+      positions: new Float32Array(this.api.fromHeap(Float64Array, s.cutPositionsPtr(), s.cutVertices() * 3)),
+      indices: new Uint32Array(this.api.fromHeap(Int32Array, s.cutTrianglesPtr(), s.cutTriangles() * 3).buffer),
+      faceSegment: this.api.fromHeap(Int32Array, s.faceSegmentPtr(), s.cutTriangles()),
     };
   }
 

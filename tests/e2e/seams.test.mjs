@@ -1,0 +1,137 @@
+// Drawing seams in the browser: a closed seam on the sphere gives two segments; a second seam snapped
+// to it at both ends gives three; a control point drags; undo/redo; the design survives a reload and
+// travels by link.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { serve, launch, openPage, screenshot } from './harness.mjs';
+import { surfaceScreenPoints } from './seams-helpers.mjs';
+
+let server;
+let context;
+before(async () => {
+  server = await serve();
+  context = await launch();
+});
+after(async () => {
+  await context?.close();
+  await server?.close();
+});
+
+const summary = (page) => page.textContent('#seam-panel .summary');
+const waitSummary = (page, re) =>
+  page.waitForFunction((source) => new RegExp(source).test(document.querySelector('#seam-panel .summary')?.textContent), re.source);
+
+async function openSphere(page) {
+  await page.selectOption('#example-select', 'sphere');
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'sphere.obj');
+  await page.waitForFunction(() => !window.billow.app.design.seams.length);
+}
+
+async function clickAt(page, p) {
+  await page.mouse.move(p.x, p.y);
+  await page.waitForTimeout(60);
+  await page.mouse.click(p.x, p.y);
+  await page.waitForTimeout(120);
+}
+
+// A closed triangle-shaped seam on the front of the sphere, then a seam across it snapped at both ends.
+async function drawTwoSeams(page) {
+  await page.keyboard.press('d');
+  const [a, b, c] = await surfaceScreenPoints(page, [[0.5, 0.6, 1], [-0.3, 0.5, 1], [0.1, -0.3, 1]]);
+  for (const p of [a, b, c]) await clickAt(page, p);
+  // Before closing, the cursor over the first point shows the snap (orange).
+  await page.mouse.move(a.x, a.y);
+  await page.waitForTimeout(100);
+  assert.equal(await page.evaluate(() => window.billow.app.panes.target.seams.cursor.material.color.getHexString()), 'd55e00');
+  await clickAt(page, a);
+  await waitSummary(page, /1 seam, 2 segments/);
+  // Across the loop: from the middle of edge a-b to the middle of edge b-c... near the curve, so it snaps.
+  const mid = (p, q) => ({ x: (p.x + q.x) / 2, y: (p.y + q.y) / 2 });
+  await clickAt(page, mid(a, b));
+  await clickAt(page, mid(b, c));
+  await page.keyboard.press('Enter');
+  await waitSummary(page, /2 seams, 3 segments/);
+}
+
+test('draw a closed seam (two segments), then a snapped seam across it (three)', async () => {
+  const page = await openPage(context, server.url);
+  await openSphere(page);
+  await drawTwoSeams(page);
+  const design = await page.evaluate(() => window.billow.app.design);
+  assert.equal(design.seams.length, 2);
+  assert.equal(design.seams[0].closed, true);
+  assert.equal(design.seams[0].points.length, 3);
+  assert.equal(design.seams[1].closed, false);
+  for (const p of design.seams[1].points) assert.equal(typeof p.face, 'number');
+  const seg = await page.evaluate(() => window.billow.app.seams.segmentation);
+  assert.equal(seg.segments.length, 3);
+  assert.ok(seg.segments.every((s) => s.isDisk));
+  assert.equal(seg.problems.filter((p) => p.severity === 'error').length, 0);
+  await screenshot(page, 'seams-three-segments');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('drag a control point, undo and redo, reload, and open the shared link', async () => {
+  const page = await openPage(context, server.url);
+  await openSphere(page);
+  await drawTwoSeams(page);
+  const before = await page.evaluate(() => window.billow.app.design.seams[0].points[2]);
+  await page.keyboard.press('e');
+  const [c, target] = await surfaceScreenPoints(page, [[0.1, -0.3, 1], [0.0, -0.6, 1]]);
+  await page.mouse.move(c.x, c.y);
+  await page.mouse.down();
+  await page.mouse.move(target.x, target.y, { steps: 6 });
+  await page.mouse.up();
+  const moved = await page.evaluate(() => window.billow.app.design.seams[0].points[2]);
+  assert.notDeepEqual(moved, before, 'the control point moved');
+  await waitSummary(page, /2 seams, 3 segments/);
+  await page.keyboard.press('Control+z');
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams[0].points[2]), before, 'one undo step undoes the whole drag');
+  await page.keyboard.press('Control+z');
+  assert.equal(await page.evaluate(() => window.billow.app.design.seams.length), 1);
+  await waitSummary(page, /1 seam, 2 segments/);
+  await page.keyboard.press('Control+Shift+z');
+  await page.keyboard.press('Control+Shift+z');
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams[0].points[2]), moved);
+  await waitSummary(page, /2 seams, 3 segments/);
+
+  await page.waitForTimeout(300);
+  await page.reload();
+  await page.waitForSelector('body[data-ready="true"]');
+  await waitSummary(page, /2 seams, 3 segments/);
+
+  const url = await page.evaluate(() => window.billow.app.shareLink());
+  const other = await launch();
+  try {
+    const fresh = await openPage(other, url);
+    await waitSummary(fresh, /2 seams, 3 segments/);
+    assert.deepEqual(await fresh.evaluate(() => window.billow.app.design.seams), await page.evaluate(() => window.billow.app.design.seams));
+    assert.deepEqual(fresh.errors, []);
+  } finally {
+    await other.close();
+  }
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('Escape cancels a seam being drawn and Backspace removes its last point', async () => {
+  const page = await openPage(context, server.url);
+  await openSphere(page);
+  await page.keyboard.press('d');
+  const [a, b, c] = await surfaceScreenPoints(page, [[0.5, 0.6, 1], [-0.3, 0.5, 1], [0.1, -0.3, 1]]);
+  await clickAt(page, a);
+  await clickAt(page, b);
+  await page.keyboard.press('Backspace');
+  await clickAt(page, c);
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 1);
+  assert.equal(await page.evaluate(() => window.billow.app.design.seams[0].points.length), 2, 'a and c');
+  await clickAt(page, b);
+  await page.keyboard.press('Escape');
+  await page.waitForTimeout(200);
+  assert.equal(await page.evaluate(() => window.billow.app.design.seams.length), 1, 'nothing added');
+  assert.match(await summary(page), /1 seam/);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

@@ -1,0 +1,176 @@
+// Embind for the target and its seams: a TargetSession holds the target with its topology, projector
+// and geodesic solver (built once per target), traces seams and segments the target.
+//
+//   const t = new Module.TargetSession();                 // never throws
+//   t.setTarget(positionsPtr, numVertices, indicesPtr, numTriangles)   -> {}
+//   t.traceSeam(seamJson)  seam: { points: [{face, bary} | [x,y,z]], closed, smooth }
+//     -> { positions: [x,y,z,...], faces: [...], barys: [...], controls: [x,y,z,...], controlIndices, length }
+//        (faces/barys: a surface point per curve point; curve points of closed seams end at the start)
+//   t.segment(seamsJson)   seams: [{ points, closed, weight, smooth }]
+//     -> { vertices, triangles, segments: [{ area, isDisk, eulerCharacteristic, genus, loops, triangles }],
+//          junctions: [{ position, segments }], problems: [{ code, severity, message, segment, seam, location }] }
+//        and fills the cut mesh: cutPositionsPtr() #V*3 f64, cutTrianglesPtr() #F*3 i32, faceSegmentPtr() #F i32
+#include <emscripten/bind.h>
+
+#include <cmath>
+#include <memory>
+#include <nlohmann/json.hpp>
+
+#include "guarded.hpp"
+#include "seams/geodesic.hpp"
+#include "seams/mesh_topology.hpp"
+#include "seams/seam_curve.hpp"
+#include "seams/surface_point.hpp"
+#include "segment/segmentation.hpp"
+
+namespace {
+
+using billow::bindings::guarded;
+using nlohmann::json;
+
+class TargetSession {
+ public:
+  TargetSession() = default;
+
+  std::string setTarget(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles) {
+    return guarded([&] {
+      geodesic_.reset();
+      projector_.reset();
+      mesh_.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
+      mesh_.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
+      topology_ = billow::buildTopology(mesh_);
+      projector_ = std::make_unique<billow::SurfaceProjector>(mesh_);
+      geodesic_ = std::make_unique<billow::GeodesicSolver>(mesh_, topology_);
+      return std::string("{}");
+    });
+  }
+
+  std::string traceSeam(const std::string& seamJson) {
+    return guarded([&] {
+      requireTarget();
+      const billow::SeamCurve curve = billow::buildSeamCurve(*geodesic_, *projector_, readSeam(parse(seamJson)));
+      return curveJson(curve).dump();
+    });
+  }
+
+  std::string segment(const std::string& seamsJson) {
+    return guarded([&] {
+      requireTarget();
+      const json seams = parse(seamsJson);
+      if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
+      std::vector<billow::SeamCurve> curves;
+      for (const auto& s : seams) curves.push_back(billow::buildSeamCurve(*geodesic_, *projector_, readSeam(s)));
+      billow::Segmentation seg = billow::segmentTarget(mesh_, topology_, curves);
+      cut_ = std::move(seg.mesh);
+      faceSegment_ = seg.faceSegment;
+      return segmentationJson(seg).dump();
+    });
+  }
+
+  int cutVertices() const { return static_cast<int>(cut_.V.rows()); }
+  int cutTriangles() const { return static_cast<int>(cut_.F.rows()); }
+  uintptr_t cutPositionsPtr() const { return reinterpret_cast<uintptr_t>(cut_.V.data()); }
+  uintptr_t cutTrianglesPtr() const { return reinterpret_cast<uintptr_t>(cut_.F.data()); }
+  uintptr_t faceSegmentPtr() const { return reinterpret_cast<uintptr_t>(faceSegment_.data()); }
+
+ private:
+  static json parse(const std::string& text) {
+    json j = json::parse(text, nullptr, false);
+    if (j.is_discarded()) throw billow::Error("seams.bad-input", "The seam description is not valid JSON.");
+    return j;
+  }
+
+  void requireTarget() const {
+    if (!geodesic_) throw billow::Error("seams.no-target", "Load a target before drawing seams.");
+  }
+
+  // A control point: a surface point {face, bary} on the target, or a 3D point [x, y, z] projected onto it.
+  billow::SurfacePoint readPoint(const json& p) const {
+    if (p.is_array() && p.size() == 3 && p[0].is_number() && p[1].is_number() && p[2].is_number())
+      return projector_->project(Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()));
+    if (!p.is_object() || !p.contains("face") || !p["face"].is_number_integer() || !p.contains("bary") ||
+        !p["bary"].is_array() || p["bary"].size() != 3)
+      throw billow::Error("seams.bad-point", "A seam point is neither a surface point nor a 3D point.");
+    billow::SurfacePoint sp;
+    sp.face = p["face"].get<int>();
+    if (sp.face < 0 || sp.face >= mesh_.numTriangles())
+      throw billow::Error("seams.bad-point", "A seam point lies on a triangle the target does not have (" +
+                                                 std::to_string(sp.face) + ").");
+    for (int k = 0; k < 3; ++k) {
+      if (!p["bary"][k].is_number()) throw billow::Error("seams.bad-point", "A seam point has a bad coordinate.");
+      sp.bary[k] = p["bary"][k].get<double>();
+    }
+    const double sum = sp.bary.sum();
+    if (!std::isfinite(sum) || sum <= 0 || sp.bary.minCoeff() < -1e-6)
+      throw billow::Error("seams.bad-point", "A seam point has coordinates outside its triangle.");
+    sp.bary = sp.bary.cwiseMax(0.0) / sp.bary.cwiseMax(0.0).sum();
+    return sp;
+  }
+
+  billow::SeamSpec readSeam(const json& s) const {
+    if (!s.is_object() || !s.contains("points") || !s["points"].is_array())
+      throw billow::Error("seams.bad-input", "A seam has no list of points.");
+    billow::SeamSpec spec;
+    for (const auto& p : s["points"]) spec.controls.push_back(readPoint(p));
+    spec.closed = s.value("closed", false);
+    spec.weight = s.value("weight", 1.0);
+    spec.smooth = s.value("smooth", false);
+    return spec;
+  }
+
+  static json curveJson(const billow::SeamCurve& c) {
+    json positions = json::array(), faces = json::array(), barys = json::array(), controls = json::array();
+    for (const auto& p : c.points) {
+      for (int k = 0; k < 3; ++k) positions.push_back(p.position[k]);
+      faces.push_back(p.point.face);
+      for (int k = 0; k < 3; ++k) barys.push_back(p.point.bary[k]);
+    }
+    for (int i : c.controlIndices)
+      for (int k = 0; k < 3; ++k) controls.push_back(c.points[i].position[k]);
+    return {{"positions", positions}, {"faces", faces},   {"barys", barys},
+            {"controls", controls},   {"controlIndices", c.controlIndices}, {"length", c.length}};
+  }
+
+  static json segmentationJson(const billow::Segmentation& seg) {
+    auto vec = [](const Eigen::Vector3d& v) { return json::array({v.x(), v.y(), v.z()}); };
+    json segments = json::array(), problems = json::array(), junctions = json::array();
+    for (const auto& s : seg.segments)
+      segments.push_back({{"area", s.area},
+                          {"isDisk", s.isDisk},
+                          {"eulerCharacteristic", s.eulerCharacteristic},
+                          {"genus", s.genus},
+                          {"loops", s.loops.size()},
+                          {"triangles", s.triangles.size()}});
+    for (const auto& p : seg.problems)
+      problems.push_back({{"code", p.code},
+                          {"severity", p.severity},
+                          {"message", p.message},
+                          {"segment", p.segment},
+                          {"seam", p.seam},
+                          {"location", vec(p.location)}});
+    for (const auto& j : seg.junctions) junctions.push_back({{"position", vec(j.position)}, {"segments", j.segments}});
+    return {{"vertices", seg.mesh.numVertices()}, {"triangles", seg.mesh.numTriangles()}, {"segments", segments},
+            {"junctions", junctions},             {"problems", problems},                 {"ok", seg.ok()}};
+  }
+
+  billow::TriMesh mesh_, cut_;
+  billow::MeshTopology topology_;
+  std::unique_ptr<billow::SurfaceProjector> projector_;
+  std::unique_ptr<billow::GeodesicSolver> geodesic_;
+  std::vector<int> faceSegment_;
+};
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(billow_target) {
+  emscripten::class_<TargetSession>("TargetSession")
+      .constructor<>()
+      .function("setTarget", &TargetSession::setTarget)
+      .function("traceSeam", &TargetSession::traceSeam)
+      .function("segment", &TargetSession::segment)
+      .function("cutVertices", &TargetSession::cutVertices)
+      .function("cutTriangles", &TargetSession::cutTriangles)
+      .function("cutPositionsPtr", &TargetSession::cutPositionsPtr)
+      .function("cutTrianglesPtr", &TargetSession::cutTrianglesPtr)
+      .function("faceSegmentPtr", &TargetSession::faceSegmentPtr);
+}

@@ -1,0 +1,102 @@
+// Commands: pure functions (design, ...args) -> design. The History stores the results; nothing here
+// mutates its input. Seams hold control points as surface points { face, bary } on the target.
+const replaceAt = (list, i, value) => list.map((x, k) => (k === i ? value : x));
+
+export const DEFAULT_SEAM_WEIGHT = 1;
+
+export function addSeam(design, { points, closed }) {
+  const name = `Seam ${design.seams.length + 1}`;
+  return { ...design, seams: [...design.seams, { name, closed: Boolean(closed), weight: DEFAULT_SEAM_WEIGHT, points }] };
+}
+
+// Points attached to another seam ({ ..., on: seam }) lose the attachment when that seam goes, and
+// follow the renumbering of the others.
+function renumberAttachments(point, removed) {
+  if (point.on === undefined) return point;
+  if (point.on === removed) {
+    const { on, ...free } = point;
+    return free;
+  }
+  return point.on > removed ? { ...point, on: point.on - 1 } : point;
+}
+
+export function deleteSeam(design, seam) {
+  if (!design.seams[seam]) return design;
+  return {
+    ...design,
+    seams: design.seams
+      .filter((_, k) => k !== seam)
+      .map((s) => ({ ...s, points: s.points.map((p) => renumberAttachments(p, seam)) })),
+    // Internal connections that used the seam go with it; the others are renumbered.
+    connections: design.connections
+      .filter((c) => !c.seams.includes(seam))
+      .map((c) => ({ ...c, seams: c.seams.map((s) => (s > seam ? s - 1 : s)) })),
+  };
+}
+
+export function moveControlPoint(design, seam, index, point) {
+  const s = design.seams[seam];
+  if (!s || !s.points[index]) return design;
+  return { ...design, seams: replaceAt(design.seams, seam, { ...s, points: replaceAt(s.points, index, point) }) };
+}
+
+export function insertControlPoint(design, seam, index, point) {
+  const s = design.seams[seam];
+  if (!s) return design;
+  const points = [...s.points.slice(0, index), point, ...s.points.slice(index)];
+  return { ...design, seams: replaceAt(design.seams, seam, { ...s, points }) };
+}
+
+// Deleting a point of a two-point seam deletes the seam (a seam needs two points).
+export function deleteControlPoint(design, seam, index) {
+  const s = design.seams[seam];
+  if (!s || !s.points[index]) return design;
+  if (s.points.length <= 2) return deleteSeam(design, seam);
+  const points = s.points.filter((_, k) => k !== index);
+  return { ...design, seams: replaceAt(design.seams, seam, { ...s, points, closed: s.closed && points.length >= 3 }) };
+}
+
+export function setSeamWeight(design, seam, weight) {
+  const s = design.seams[seam];
+  if (!s || !(weight >= 0)) return design;
+  return { ...design, seams: replaceAt(design.seams, seam, { ...s, weight }) };
+}
+
+export function setHeight(design, height) {
+  return { ...design, size: { ...design.size, height } };
+}
+
+// Seam ends attached to another seam follow it: a point whose host curve no longer passes through it is
+// moved to the host curve's closest sample. traces: per seam { curve, faces, barys } (null: unknown);
+// positionOf(point) -> [x, y, z]. Returns the same design when nothing moved.
+export function reattachSeamEnds(design, traces, positionOf) {
+  let changed = false;
+  const seams = design.seams.map((seam, i) => {
+    const points = seam.points.map((p) => {
+      const host = p.on !== undefined && p.on !== i ? traces[p.on] : null;
+      if (!host || liesOnCurve(p, host)) return p;
+      const [x, y, z] = positionOf(p);
+      let best = 0;
+      let bestDistance = Infinity;
+      for (let k = 0; k < host.faces.length; k++) {
+        const d = (host.curve[3 * k] - x) ** 2 + (host.curve[3 * k + 1] - y) ** 2 + (host.curve[3 * k + 2] - z) ** 2;
+        if (d < bestDistance) {
+          bestDistance = d;
+          best = k;
+        }
+      }
+      changed = true;
+      return { face: host.faces[best], bary: Array.from(host.barys.slice(3 * best, 3 * best + 3)), on: p.on };
+    });
+    return points === seam.points ? seam : { ...seam, points };
+  });
+  return changed ? { ...design, seams } : design;
+}
+
+function liesOnCurve(p, host) {
+  for (let k = 0; k < host.faces.length; k++) {
+    if (host.faces[k] !== p.face) continue;
+    if (Math.abs(host.barys[3 * k] - p.bary[0]) + Math.abs(host.barys[3 * k + 1] - p.bary[1]) < 1e-12) return true;
+  }
+  return false;
+}

@@ -1,0 +1,241 @@
+// Seam editing: keeps the traced curves of the design's seams (derived from the document, cached by
+// their control points), previews the seam being drawn, applies seam commands through the App's
+// history, and asks the worker for the segmentation after each committed edit.
+import { Op, ErrorCode } from '../worker/protocol.js';
+import * as cmd from './commands.js';
+
+const keyOf = (seam) => JSON.stringify([seam.points, seam.closed]);
+const PICK_PX = 10;
+
+export class SeamEditor {
+  constructor(app) {
+    this.app = app;
+    this.cache = new Map(); // keyOf(seam) -> trace
+    this.pending = new Map(); // keyOf(seam) -> promise
+    this.preview = null; // Float32Array of the seam being drawn
+    this.previewTicket = 0;
+    this.selection = null; // { seam, index | null }
+    this.segmentation = null;
+    this.segmentTicket = 0;
+    this.listeners = new Set();
+  }
+
+  get design() {
+    return this.app.design;
+  }
+
+  get pane() {
+    return this.app.panes.target;
+  }
+
+  onChange(fn) {
+    this.listeners.add(fn);
+  }
+
+  // The traces of the design's seams, aligned with design.seams (null while one is being traced).
+  seamTraces() {
+    return this.design.seams.map((s) => this.cache.get(keyOf(s)) ?? null);
+  }
+
+  async trace(points, closed) {
+    return this.app.client.request(Op.traceSeam, { points, closed });
+  }
+
+  // Traces every seam that is not cached yet, then redraws and re-segments.
+  async refresh({ segment = true } = {}, depth = 0) {
+    const seams = this.design.seams;
+    const jobs = seams.map((s) => {
+      const key = keyOf(s);
+      if (this.cache.has(key)) return null;
+      if (!this.pending.has(key))
+        this.pending.set(key, this.trace(s.points, s.closed).then(
+          (t) => this.cache.set(key, t),
+          (error) => this.traceFailed(s, error),
+        ).finally(() => this.pending.delete(key)));
+      return this.pending.get(key);
+    });
+    await Promise.all(jobs.filter(Boolean));
+    this.trimCache();
+    // Seam ends attached to a seam that moved follow it (part of the same undo step), then re-trace.
+    const attached = cmd.reattachSeamEnds(this.design, this.seamTraces(), (p) => this.positionOf(p));
+    if (attached !== this.design && depth < 4) {
+      this.app.amendDesign(attached);
+      return this.refresh({ segment }, depth + 1);
+    }
+    this.draw();
+    if (segment) await this.segment();
+  }
+
+  // The 3D position (target units) of a surface point.
+  positionOf({ face, bary }) {
+    const { positions, indices } = this.app.target;
+    const out = [0, 0, 0];
+    for (let c = 0; c < 3; c++) for (let k = 0; k < 3; k++) out[k] += bary[c] * positions[3 * indices[3 * face + c] + k];
+    return out;
+  }
+
+  traceFailed(seam, error) {
+    if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
+    this.app.messages.show('error', `${seam.name ?? 'A seam'} could not be traced on the surface: ${error.message}`);
+  }
+
+  trimCache() {
+    const live = new Set(this.design.seams.map(keyOf));
+    for (const key of this.cache.keys()) if (!live.has(key)) this.cache.delete(key);
+  }
+
+  draw() {
+    if (!this.pane.seams) return;
+    const traces = this.seamTraces();
+    const seams = this.design.seams.map((s, i) => ({
+      curve: traces[i]?.curve,
+      controls: traces[i] ? chunks(traces[i].controls) : [],
+      weight: s.weight,
+      selected: this.selection?.seam === i,
+      selectedPoint: this.selection?.seam === i ? this.selection.index : null,
+    }));
+    this.pane.seams.update(seams, this.preview);
+    this.pane.requestRender();
+    for (const fn of this.listeners) fn();
+  }
+
+  // The dashed curve of the seam being drawn (latest request wins); null clears it.
+  async previewSeam(points) {
+    const ticket = ++this.previewTicket;
+    if (!points || points.length < 2) {
+      this.preview = null;
+      this.draw();
+      return;
+    }
+    try {
+      const t = await this.trace(points, false);
+      if (ticket !== this.previewTicket) return;
+      this.preview = t.curve;
+      this.draw();
+    } catch {
+      // a preview that fails (e.g. the cursor left the surface) is simply not shown
+    }
+  }
+
+  commitSeam(points, closed) {
+    this.app.commitDesign(cmd.addSeam(this.design, { points, closed }));
+    this.selection = { seam: this.design.seams.length - 1, index: null };
+    this.refresh();
+  }
+
+  // The control point under the pointer: { seam, index } or null.
+  controlPointAt(event) {
+    let best = null;
+    let bestDistance = PICK_PX;
+    this.seamTraces().forEach((trace, seam) => {
+      chunks(trace?.controls ?? []).forEach((c, index) => {
+        const d = this.pane.screenDistance(event, c);
+        if (d < bestDistance) {
+          bestDistance = d;
+          best = { seam, index };
+        }
+      });
+    });
+    return best;
+  }
+
+  selectControlPoint(seam, index) {
+    this.selection = { seam, index };
+    this.draw();
+  }
+
+  selectSeam(seam) {
+    this.selection = seam === null ? null : { seam, index: null };
+    this.draw();
+  }
+
+  // Live drag: one undo step per drag (merged), the curve re-traced as the point moves.
+  moveControlPoint(seam, index, point) {
+    this.app.commitDesign(cmd.moveControlPoint(this.design, seam, index, point), { mergeKey: `move:${seam}:${index}` });
+    this.refresh({ segment: false });
+  }
+
+  endDrag() {
+    this.app.history.lastKey = null; // the next drag is a new step
+    this.segment();
+  }
+
+  // Double-click on a seam: a new control point there, between the control points around it.
+  insertControlPointAt(event) {
+    const hit = this.nearestSample(event);
+    if (!hit) return;
+    const { seam, sample, point } = hit;
+    const controlSamples = this.seamTraces()[seam].controlSamples;
+    let index = controlSamples.findIndex((s) => s > sample);
+    if (index < 0) index = controlSamples.length; // after the last control point (closed loops)
+    this.app.commitDesign(cmd.insertControlPoint(this.design, seam, index, point));
+    this.selection = { seam, index };
+    this.refresh();
+  }
+
+  nearestSample(event) {
+    let best = null;
+    let bestDistance = PICK_PX;
+    this.seamTraces().forEach((trace, seam) => {
+      if (!trace) return;
+      for (let i = 0; i < trace.faces.length; i++) {
+        const d = this.pane.screenDistance(event, [trace.curve[3 * i], trace.curve[3 * i + 1], trace.curve[3 * i + 2]]);
+        if (d < bestDistance) {
+          bestDistance = d;
+          best = { seam, sample: i, point: { face: trace.faces[i], bary: Array.from(trace.barys.subarray(3 * i, 3 * i + 3)) } };
+        }
+      }
+    });
+    return best;
+  }
+
+  deleteSelection() {
+    if (!this.selection) return;
+    const { seam, index } = this.selection;
+    const next = index === null ? cmd.deleteSeam(this.design, seam) : cmd.deleteControlPoint(this.design, seam, index);
+    this.selection = null;
+    this.app.commitDesign(next);
+    this.refresh();
+  }
+
+  deleteSeam(seam) {
+    this.selection = null;
+    this.app.commitDesign(cmd.deleteSeam(this.design, seam));
+    this.refresh();
+  }
+
+  setWeight(seam, weight) {
+    this.app.commitDesign(cmd.setSeamWeight(this.design, seam, weight), { mergeKey: `weight:${seam}` });
+    this.draw();
+  }
+
+  // The segmentation of the target by the current seams (latest request wins).
+  async segment() {
+    const ticket = ++this.segmentTicket;
+    const seams = this.design.seams.map(({ points, closed, weight }) => ({ points, closed, weight }));
+    try {
+      const result = await this.app.client.request(Op.segment, { seams });
+      if (ticket !== this.segmentTicket) return;
+      this.segmentation = result;
+      this.pane.setSegments(result);
+      for (const fn of this.listeners) fn();
+    } catch (error) {
+      if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
+      this.app.messages.show('error', `The target could not be cut along the seams: ${error.message}`);
+    }
+  }
+
+  // A new target or design: traces are recomputed from scratch.
+  reset() {
+    this.cache.clear();
+    this.preview = null;
+    this.selection = null;
+    this.segmentation = null;
+  }
+}
+
+function chunks(flat) {
+  const out = [];
+  for (let i = 0; i + 2 < flat.length; i += 3) out.push([flat[i], flat[i + 1], flat[i + 2]]);
+  return out;
+}

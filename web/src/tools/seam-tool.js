@@ -1,0 +1,167 @@
+// The seam tool in the target pane. Draw: click control points on the surface (a click is a press
+// without a drag, so dragging still orbits); the curve follows the cursor as a dashed preview; Enter or
+// a double-click finishes, clicking the first point closes a loop, Backspace removes the last point,
+// Esc cancels. Near an existing seam or control point the cursor snaps (shown in orange before the click).
+// Edit: drag a control point (the seam follows live), double-click a seam to insert a point, Delete
+// removes the selected point.
+const CLICK_SLOP_PX = 4;
+const SNAP_PX = 12;
+
+export class SeamTool {
+  // pane: TargetPane; app: the App (seam commands and traces)
+  constructor(pane, app) {
+    this.pane = pane;
+    this.app = app;
+    this.mode = 'orbit'; // 'orbit' | 'draw' | 'edit'
+    this.drawing = null; // { points: [surface point], positions: [[x,y,z]] }
+    this.drag = null; // { seam, index }
+    this.down = null;
+    const el = pane.element;
+    el.addEventListener('pointerdown', (e) => this.onDown(e));
+    el.addEventListener('pointermove', (e) => this.onMove(e));
+    el.addEventListener('pointerup', (e) => this.onUp(e));
+    el.addEventListener('dblclick', (e) => this.onDoubleClick(e));
+    el.addEventListener('pointerleave', () => {
+      pane.seams.showCursor(null);
+      pane.requestRender();
+    });
+  }
+
+  setMode(mode) {
+    if (this.drawing) this.cancel();
+    this.mode = mode;
+    this.pane.element.dataset.tool = mode;
+    this.pane.seams.showCursor(null);
+    this.pane.requestRender();
+  }
+
+  // The surface point under the pointer, snapped to seams/control points when close on screen.
+  pick(event) {
+    const hit = this.pane.pick(event);
+    if (!hit) return null;
+    return this.snap(event) ?? { ...hit, snapped: false };
+  }
+
+  snap(event) {
+    // The first point of the seam being drawn closes it.
+    if (this.drawing?.points.length >= 2) {
+      const d = this.pane.screenDistance(event, this.drawing.positions[0]);
+      if (d < SNAP_PX) return { point: this.drawing.points[0], position: this.drawing.positions[0], snapped: true, closes: true };
+    }
+    let best = null;
+    let bestDistance = SNAP_PX;
+    // A snapped point remembers its host seam ("on"), so it follows when that seam is edited.
+    const consider = (point, position, seam, bias = 0) => {
+      const d = this.pane.screenDistance(event, position) - bias;
+      if (d < bestDistance) {
+        bestDistance = d;
+        best = { point: { face: point.face, bary: point.bary, on: seam }, position, snapped: true };
+      }
+    };
+    this.app.seamTraces().forEach((trace, seam) => {
+      if (!trace) return;
+      const controls = this.app.design.seams[seam].points;
+      trace.controls.forEach((c, k) => consider(controls[k], c, seam, 3)); // control points win close calls
+      for (let i = 0; i < trace.faces.length; i++) {
+        const position = [trace.curve[3 * i], trace.curve[3 * i + 1], trace.curve[3 * i + 2]];
+        const point = { face: trace.faces[i], bary: [trace.barys[3 * i], trace.barys[3 * i + 1], trace.barys[3 * i + 2]] };
+        consider(point, position, seam);
+      }
+    });
+    return best;
+  }
+
+  onDown(event) {
+    if (event.button !== 0 || this.mode === 'orbit') return;
+    this.down = { x: event.clientX, y: event.clientY };
+    if (this.mode === 'edit') {
+      const grabbed = this.app.controlPointAt(event);
+      if (grabbed) {
+        this.drag = grabbed;
+        this.pane.controls.enabled = false;
+        this.pane.element.setPointerCapture?.(event.pointerId);
+        this.app.selectControlPoint(grabbed.seam, grabbed.index);
+      }
+    }
+  }
+
+  onMove(event) {
+    if (this.mode === 'orbit') return;
+    if (this.drag) {
+      const hit = this.pane.pick(event);
+      if (hit) this.app.moveControlPoint(this.drag.seam, this.drag.index, hit.point);
+      return;
+    }
+    const hit = this.pick(event);
+    this.pane.seams.showCursor(hit ? { x: hit.position[0], y: hit.position[1], z: hit.position[2] } : null, hit?.snapped);
+    if (this.drawing && hit) this.app.previewSeam([...this.drawing.points, hit.point]);
+    this.pane.requestRender();
+  }
+
+  onUp(event) {
+    if (this.drag) {
+      this.pane.controls.enabled = true;
+      this.pane.element.releasePointerCapture?.(event.pointerId);
+      this.drag = null;
+      this.app.endDrag();
+      return;
+    }
+    if (!this.down || this.mode !== 'draw') return;
+    const moved = Math.hypot(event.clientX - this.down.x, event.clientY - this.down.y);
+    this.down = null;
+    if (moved > CLICK_SLOP_PX) return; // that was an orbit drag
+    const hit = this.pick(event);
+    if (!hit) return;
+    if (hit.closes) {
+      this.finish(true);
+      return;
+    }
+    if (!this.drawing) this.drawing = { points: [], positions: [] };
+    this.drawing.points.push(hit.point);
+    this.drawing.positions.push(hit.position);
+    this.app.previewSeam(this.drawing.points);
+  }
+
+  onDoubleClick(event) {
+    if (this.mode === 'draw' && this.drawing) {
+      // The double-click's second click added a point at the same place: drop it, then finish.
+      if (this.drawing.points.length > 2) {
+        this.drawing.points.pop();
+        this.drawing.positions.pop();
+      }
+      this.finish(false);
+    } else if (this.mode === 'edit') {
+      this.app.insertControlPointAt(event);
+    }
+  }
+
+  finish(closed) {
+    const drawing = this.drawing;
+    this.drawing = null;
+    this.app.previewSeam(null);
+    if (drawing && drawing.points.length >= 2) this.app.commitSeam(drawing.points, closed && drawing.points.length >= 3);
+  }
+
+  cancel() {
+    this.drawing = null;
+    this.app.previewSeam(null);
+  }
+
+  // Keys for the tool. Returns true when handled.
+  onKey(event) {
+    if (this.mode === 'draw' && this.drawing) {
+      if (event.key === 'Enter') return this.finish(false), true;
+      if (event.key === 'Escape') return this.cancel(), true;
+      if (event.key === 'Backspace') {
+        this.drawing.points.pop();
+        this.drawing.positions.pop();
+        if (!this.drawing.points.length) this.cancel();
+        else this.app.previewSeam(this.drawing.points);
+        return true;
+      }
+    }
+    if (this.mode === 'edit' && (event.key === 'Delete' || event.key === 'Backspace')) return this.app.deleteSelection(), true;
+    if (event.key === 'Escape' && this.mode !== 'orbit') return this.setMode('orbit'), true;
+    return false;
+  }
+}

@@ -1,0 +1,86 @@
+// The seam panel beside the target: tool buttons, the list of seams (select, weight σ, delete), the
+// segment count and the problems the segmentation found. Text only through textContent.
+import { seamWidth } from './seam-layer.js';
+
+const TOOLS = [
+  ['orbit', 'View', 'Orbit the view (V)'],
+  ['draw', 'Draw seam', 'Click points on the surface; Enter or double-click finishes; click the first point to close a loop (D)'],
+  ['edit', 'Edit', 'Drag control points; double-click a seam to add a point; Delete removes the selected point (E)'],
+];
+
+export class SeamPanel {
+  constructor(container, { tool, editor }) {
+    this.container = container;
+    this.tool = tool;
+    this.editor = editor;
+    this.toolbar = el('div', 'toolbar');
+    this.toolButtons = TOOLS.map(([mode, label, title]) => {
+      const b = el('button', 'tool', label);
+      b.type = 'button';
+      b.title = title;
+      b.dataset.tool = mode;
+      b.addEventListener('click', () => {
+        tool.setMode(mode);
+        this.render();
+      });
+      this.toolbar.append(b);
+      return b;
+    });
+    this.summary = el('div', 'summary');
+    this.list = el('ol', 'seam-list');
+    this.problems = el('ul', 'problems');
+    container.append(this.toolbar, this.summary, this.list, this.problems);
+    editor.onChange(() => this.render());
+    this.render();
+  }
+
+  render() {
+    for (const b of this.toolButtons) b.setAttribute('aria-pressed', String(b.dataset.tool === this.tool.mode));
+    const { design, segmentation, selection } = this.editor;
+    const count = segmentation?.segments?.length;
+    this.summary.textContent = design.seams.length
+      ? `${design.seams.length} seam${design.seams.length === 1 ? '' : 's'}${count ? `, ${count} segment${count === 1 ? '' : 's'}` : ''}`
+      : 'No seams yet: choose "Draw seam" and click on the target.';
+    this.list.replaceChildren(...design.seams.map((s, i) => this.seamRow(s, i, selection?.seam === i)));
+    this.problems.replaceChildren(
+      ...(segmentation?.problems ?? []).map((p) => {
+        const li = el('li', `problem ${p.severity}`, p.message);
+        li.dataset.code = p.code ?? '';
+        return li;
+      }),
+    );
+  }
+
+  seamRow(seam, i, selected) {
+    const li = el('li', selected ? 'seam selected' : 'seam');
+    const name = el('button', 'name', seam.name ?? `Seam ${i + 1}`);
+    name.type = 'button';
+    name.title = 'Select this seam';
+    name.addEventListener('click', () => this.editor.selectSeam(i));
+    const swatch = el('span', 'swatch');
+    swatch.style.height = `${seamWidth(seam.weight)}px`;
+    const weight = document.createElement('input');
+    weight.type = 'range';
+    weight.min = '0';
+    weight.max = '10';
+    weight.step = '0.1';
+    weight.value = String(seam.weight);
+    weight.title = `Weight σ = ${seam.weight}: how firmly the seam stays where it is drawn`;
+    weight.setAttribute('aria-label', `Weight of ${seam.name ?? `seam ${i + 1}`}`);
+    weight.addEventListener('input', () => this.editor.setWeight(i, Number(weight.value)));
+    const remove = el('button', 'delete', '×');
+    remove.type = 'button';
+    remove.title = 'Delete this seam';
+    remove.setAttribute('aria-label', `Delete ${seam.name ?? `seam ${i + 1}`}`);
+    remove.addEventListener('click', () => this.editor.deleteSeam(i));
+    li.append(swatch, name, weight, remove);
+    return li;
+  }
+}
+
+function el(tag, className, text) {
+  const e = document.createElement(tag);
+  if (className) e.className = className;
+  if (text !== undefined) e.textContent = text;
+  return e;
+}
