@@ -91,3 +91,20 @@ test('a design saved to a file opens again', async () => {
   assert.deepEqual(page.errors, []);
   await page.close();
 });
+
+test('markup in a seam name shows as text and never runs', async () => {
+  const page = await openPage(context, server.url);
+  const evil = '<img src=x onerror="window.__pwned = 1">';
+  const design = {
+    format: 'billow-design', version: 1, target: { example: 'sphere' }, size: { height: 0.5 },
+    seams: [{ name: evil, closed: false, weight: 1, points: [{ face: 10, bary: [0.3, 0.3, 0.4] }, { face: 300, bary: [0.3, 0.3, 0.4] }] }],
+  };
+  await page.setInputFiles('#file-input', { name: 'evil.billow.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(design)) });
+  await page.waitForFunction(() => document.querySelector('#seam-panel .seam .name'));
+  assert.equal(await page.textContent('#seam-panel .seam .name'), evil);
+  assert.equal(await page.evaluate(() => document.querySelectorAll('#seam-panel img').length), 0);
+  await page.waitForTimeout(300);
+  assert.equal(await page.evaluate(() => window.__pwned), undefined);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
