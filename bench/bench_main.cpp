@@ -1,6 +1,129 @@
-// Native benchmarks (see bench/README.md). Filled in by the simulator and optimizer issues.
+// Native benchmark of the inflation simulator (bench/README.md): per example and size, Newton iterations,
+// time to equilibrium (relative residual 1e-5), one sparse factorization of the final Hessian (the floor
+// per iteration), peak RSS, and for the Mylar balloon the ratios against Paulsen's numbers.
+//   billow_bench [--json] [--sizes 700,3000,15000,60000] [--examples mylar,sphere3] [--radius 0.3]
+//                [--max-seconds S]   (a solve stops after S seconds and is reported as not converged)
+#include <sys/resource.h>
+
+#include <algorithm>
+#include <chrono>
 #include <cstdio>
-int main() {
-  std::printf("billow native benchmarks: none yet\n");
+#include <cstring>
+#include <nlohmann/json.hpp>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "simulate/example_patterns.hpp"
+#include "simulate/inflate.hpp"
+
+namespace {
+
+using namespace billow;
+using Clock = std::chrono::steady_clock;
+
+double peakRssMb() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // Linux: kilobytes
+}
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream ss(s);
+  for (std::string item; std::getline(ss, item, ',');) out.push_back(item);
+  return out;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  bool asJson = false;
+  std::vector<std::string> sizes = {"700", "3000", "15000", "60000"}, examples = {"mylar", "sphere3"};
+  double radius = 0.3, maxSeconds = 120;
+  for (int i = 1; i < argc; ++i) {
+    const std::string a = argv[i];
+    const bool hasValue = i + 1 < argc;
+    if (a == "--json")
+      asJson = true;
+    else if (a == "--sizes" && hasValue)
+      sizes = split(argv[++i]);
+    else if (a == "--examples" && hasValue)
+      examples = split(argv[++i]);
+    else if (a == "--radius" && hasValue)
+      radius = std::stod(argv[++i]);
+    else if (a == "--max-seconds" && hasValue)
+      maxSeconds = std::stod(argv[++i]);
+    else {
+      std::fprintf(stderr,
+                   "usage: billow_bench [--json] [--sizes N,N,..] [--examples mylar,sphere3] [--radius M] "
+                   "[--max-seconds S]\n");
+      return 2;
+    }
+  }
+  nlohmann::json rows = nlohmann::json::array();
+  if (!asJson)
+    std::printf("%-8s %7s %6s %5s %6s %9s %9s %8s %8s %9s %9s %5s\n", "example", "tris", "verts", "iters", "facts",
+                "solve s", "factor ms", "setup ms", "RSS MB", "rim/a", "thick/rim", "conv");
+  for (const std::string& name : examples)
+    for (const std::string& size : sizes) {
+      ExampleOptions eo;
+      eo.triangles = std::stoi(size);
+      eo.size = radius;
+      const Pattern p = examplePattern(name, eo);
+      const auto t0 = Clock::now();
+      InflationSolver solver(sewPattern(p), p.material, p.pressure);
+      while (solver.step(1) == InflateState::Running)
+        if (std::chrono::duration<double>(Clock::now() - t0).count() > maxSeconds) break;
+      const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
+      double factorMs = 1e300;
+      for (int k = 0; k < 3; ++k) factorMs = std::min(factorMs, solver.timeFactorization());
+      nlohmann::json row = {{"example", name},
+                            {"triangles", solver.mesh().numTriangles()},
+                            {"vertices", solver.mesh().numVertices},
+                            {"iterations", solver.iterations()},
+                            {"factorizations", solver.timings().factorizations},
+                            {"seconds", seconds},
+                            {"factorMs", factorMs},
+                            {"setupMs", solver.timings().setupMs},
+                            {"assembleMs", solver.timings().assembleMs},
+                            {"lineSearchMs", solver.timings().lineSearchMs},
+                            {"peakRssMb", peakRssMb()},
+                            {"residual", solver.residual()},
+                            {"converged", solver.state() == InflateState::Converged}};
+      double rim = 0, thick = 0;
+      if (name == "mylar") {
+        const MylarShape s = measureMylar(solver.mesh(), solver.positions());
+        rim = s.rimRadius / radius;
+        thick = s.thickness / s.rimRadius;
+        row["rimOverDisc"] = rim;
+        row["thicknessOverRim"] = thick;
+        row["poleThicknessOverRim"] = s.poleThickness / s.rimRadius;
+        row["rimError"] = rim / kMylarRimOverDisc - 1;
+        row["thicknessError"] = thick / kMylarThicknessOverRim - 1;
+      }
+      rows.push_back(row);
+      if (!asJson) {
+        std::printf("%-8s %7d %6d %5d %6d %9.3f %9.2f %8.1f %8.1f ", name.c_str(), solver.mesh().numTriangles(),
+                    solver.mesh().numVertices, solver.iterations(), solver.timings().factorizations, seconds, factorMs,
+                    solver.timings().setupMs, peakRssMb());
+        if (name == "mylar")
+          std::printf("%9.5f %9.5f", rim, thick);
+        else
+          std::printf("%9s %9s", "-", "-");
+        std::printf(" %5s\n", solver.state() == InflateState::Converged ? "yes" : "NO");
+        std::fflush(stdout);
+      }
+    }
+  if (asJson)
+    std::printf("%s\n",
+                nlohmann::json(
+                    {{"runtime", "native"},
+                     {"reference", {{"rimOverDisc", kMylarRimOverDisc}, {"thicknessOverRim", kMylarThicknessOverRim}}},
+                     {"rows", rows}})
+                    .dump(2)
+                    .c_str());
+  else
+    std::printf("Paulsen: rim/a = %.5f, thickness/rim = %.5f\n", kMylarRimOverDisc, kMylarThicknessOverRim);
   return 0;
 }

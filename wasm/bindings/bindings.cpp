@@ -1,4 +1,5 @@
-// The only file that knows embind. Bulk data crosses as pointers into the wasm heap that the JS layer
+// Embind for the core entry points (validation, version, crash test). The bindings/ folder is the only
+// place that knows embind. Bulk data crosses as pointers into the wasm heap that the JS layer
 // (web/src/worker/solver-api.js) fills from typed arrays; results return as JSON text plus heap arrays.
 // Every entry point catches errors and returns {"status":"error","code","message"}: no exception
 // ever escapes to JS as a bare number.
@@ -9,29 +10,12 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
+#include "guarded.hpp"
 #include "mesh/validate.hpp"
-#include "util/error.hpp"
 
 namespace {
 
-using nlohmann::json;
-
-template <class Fn>
-std::string guarded(Fn fn) {
-  try {
-    return "{\"status\":\"ok\",\"result\":" + fn() + "}";
-  } catch (const billow::Error& e) {
-    return json({{"status", "error"}, {"code", e.code}, {"message", e.what()}}).dump();
-  } catch (const std::bad_alloc&) {
-    return json({{"status", "error"},
-                 {"code", "memory"},
-                 {"message", "Billow ran out of memory. Try a coarser resolution or a smaller mesh."}})
-        .dump();
-  } catch (const std::exception& e) {
-    return json({{"status", "error"}, {"code", "internal"}, {"message", std::string("Internal error: ") + e.what()}})
-        .dump();
-  }
-}
+using billow::bindings::guarded;
 
 // positions: #V*3 doubles, indices: #F*3 int32 (rewritten in place when the orientation is fixed).
 std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles) {
@@ -58,3 +42,4 @@ EMSCRIPTEN_BINDINGS(billow) {
   emscripten::function("crashForTesting", &crashForTesting);
   emscripten::function("version", &version);
 }
+

@@ -9,6 +9,8 @@ namespace billow::cli {
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
       {"check", "validate a target mesh (closed, manifold, oriented, one piece)", checkCommand},
+      {"inflate", "simulate a sewn pattern under pressure (the inflated shape and its wrinkles)", inflateCommand},
+      {"example", "write an example pattern (mylar, pillow, sphere3, sphere3-internal)", exampleCommand},
   };
   return list;
 }

@@ -23,5 +23,7 @@ struct Args {
 Args parseArgs(const std::vector<std::string>& args, const std::vector<std::string>& flagsWithValue);
 
 int checkCommand(const std::vector<std::string>& args);
+int inflateCommand(const std::vector<std::string>& args);
+int exampleCommand(const std::vector<std::string>& args);
 
 }  // namespace billow::cli

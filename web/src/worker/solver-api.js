@@ -79,7 +79,7 @@ export class SolverApi {
 
   // A built-in example pattern (mylar, pillow, sphere3) as billow-pattern JSON text.
   examplePattern(name, triangles = 3000) {
-    return SolverApi.unwrap(this.module.examplePattern(name, triangles));
+    return SolverApi.unwrap(this.module.examplePattern(name, JSON.stringify({ triangles })));
   }
 }
 

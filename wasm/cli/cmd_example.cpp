@@ -1,0 +1,54 @@
+// billow example NAME [--triangles N] [--size M] [--pressure PA] --out FILE.json
+#include <cstdio>
+#include <fstream>
+
+#include "cli/commands.hpp"
+#include "io/pattern_json.hpp"
+#include "simulate/example_patterns.hpp"
+#include "util/error.hpp"
+
+namespace billow::cli {
+
+namespace {
+double numberOption(const Args& args, const std::string& name, double fallback) {
+  const std::string v = args.get(name);
+  if (v.empty()) return fallback;
+  try {
+    size_t used = 0;
+    const double d = std::stod(v, &used);
+    if (used != v.size()) throw std::invalid_argument(v);
+    return d;
+  } catch (const std::exception&) {
+    throw Error("cli.usage", "the option " + name + " needs a number, not '" + v + "'");
+  }
+}
+}  // namespace
+
+int exampleCommand(const std::vector<std::string>& argv) {
+  const Args args = parseArgs(argv, {"--triangles", "--size", "--pressure", "--out"});
+  if (args.has("--help") || args.positional.size() != 1 || !args.has("--out")) {
+    std::fprintf(args.has("--help") ? stdout : stderr,
+                 "usage: billow example NAME [--triangles N] [--size M] [--pressure PA] --out FILE.json\n\n"
+                 "Writes an example pattern: mylar (two discs of radius M), pillow (two squares of side M),\n"
+                 "sphere3 (three gores of a sphere of radius M), sphere3-internal (plus an internal panel).\n"
+                 "Defaults: 3000 triangles, 0.3 m, 1000 Pa, "
+                 "foil 25 um, E = 3 GPa.\n");
+    return args.has("--help") ? 0 : 2;
+  }
+  ExampleOptions o;
+  o.triangles = static_cast<int>(numberOption(args, "--triangles", o.triangles));
+  o.size = numberOption(args, "--size", o.size);
+  o.pressure = numberOption(args, "--pressure", o.pressure);
+  const Pattern p = examplePattern(args.positional[0], o);
+  const std::string out = args.get("--out");
+  std::ofstream file(out, std::ios::binary);
+  file << writePatternJson(p) << "\n";
+  if (!file) throw Error("io.cannot-write", "cannot write " + out);
+  long long triangles = 0;
+  for (const Panel& panel : p.panels) triangles += panel.triangles.rows();
+  std::printf("%s: %zu panels, %lld triangles, %zu stitches\n", out.c_str(), p.panels.size(), triangles,
+              p.stitches.size());
+  return 0;
+}
+
+}  // namespace billow::cli

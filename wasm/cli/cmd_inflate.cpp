@@ -1,0 +1,135 @@
+// billow inflate PATTERN.json [--out RESULT.json] [--obj INFLATED.obj] [--pressure PA] [--tolerance T]
+//                 [--max-iterations N] [--quiet]
+#include <cstdio>
+#include <fstream>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "io/mesh_file.hpp"
+#include "io/pattern_json.hpp"
+#include "simulate/inflate.hpp"
+#include "simulate/initial_shape.hpp"
+#include "util/error.hpp"
+
+namespace billow::cli {
+namespace {
+
+double number(const Args& args, const std::string& name, double fallback) {
+  const std::string v = args.get(name);
+  if (v.empty()) return fallback;
+  try {
+    return std::stod(v);
+  } catch (const std::exception&) {
+    throw Error("cli.usage", "the option " + name + " needs a number, not '" + v + "'");
+  }
+}
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+  if (!f) throw Error("io.cannot-write", "cannot write " + path);
+}
+
+// Stitched vertices merged (one OBJ vertex per simulation vertex), outer triangles only, facing outwards.
+std::string toObj(const SewnMesh& mesh, const Vertices& x) {
+  std::string s = "# billow inflated shape (outer surface)\n";
+  char line[128];
+  for (int v = 0; v < x.rows(); ++v) {
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", x(v, 0), x(v, 1), x(v, 2));
+    s += line;
+  }
+  const Triangles F = outerTriangles(mesh);
+  for (int f = 0; f < F.rows(); ++f) {
+    std::snprintf(line, sizeof line, "f %d %d %d\n", F(f, 0) + 1, F(f, 1) + 1, F(f, 2) + 1);
+    s += line;
+  }
+  return s;
+}
+
+nlohmann::json resultJson(const Pattern& p, const SewnMesh& mesh, const InflateResult& r) {
+  using nlohmann::json;
+  json panels = json::array();
+  for (size_t i = 0; i < p.panels.size(); ++i) {
+    json inflated = json::array();
+    for (int v = 0; v < p.panels[i].vertices.rows(); ++v) {
+      const int s = mesh.simVertex(int(i), v);
+      inflated.push_back({r.positions(s, 0), r.positions(s, 1), r.positions(s, 2)});
+    }
+    panels.push_back({{"name", p.panels[i].name}, {"inflated", inflated}});
+  }
+  json compression = json::array(), regime = json::array(), stress = json::array();
+  for (int f = 0; f < mesh.numTriangles(); ++f) {
+    compression.push_back(r.fields.compression[f]);
+    regime.push_back(r.fields.regime[f]);
+    stress.push_back(r.fields.stress[f]);
+  }
+  return {{"format", "billow-inflated"},
+          {"version", 1},
+          {"state", toString(r.state)},
+          {"converged", r.converged},
+          {"message", r.message},
+          {"iterations", r.iterations},
+          {"residual", r.residual},
+          {"volume", r.volume},
+          {"pressure", p.pressure},
+          {"max_compression", r.fields.compression.size() ? r.fields.compression.maxCoeff() : 0.0},
+          {"max_stress", r.fields.stress.size() ? r.fields.stress.maxCoeff() : 0.0},
+          {"timings_ms",
+           {{"setup", r.timings.setupMs},
+            {"assemble", r.timings.assembleMs},
+            {"factor", r.timings.factorMs},
+            {"line_search", r.timings.lineSearchMs},
+            {"total", r.timings.totalMs + r.timings.setupMs},
+            {"factorizations", r.timings.factorizations}}},
+          {"panels", panels},
+          // Per triangle of the pattern, panel by panel in file order.
+          {"triangles", {{"regime", regime}, {"compression", compression}, {"stress", stress}}}};
+}
+
+}  // namespace
+
+int inflateCommand(const std::vector<std::string>& argv) {
+  const Args args = parseArgs(argv, {"--out", "--obj", "--pressure", "--tolerance", "--max-iterations"});
+  if (args.has("--help") || args.positional.size() != 1) {
+    std::fprintf(args.has("--help") ? stdout : stderr,
+                 "usage: billow inflate PATTERN.json [--out RESULT.json] [--obj INFLATED.obj] [--pressure PA]\n"
+                 "                      [--tolerance T] [--max-iterations N] [--quiet]\n\n"
+                 "Inflates a sewn pattern (tension-field membrane, Skouras et al. 2014) and writes the\n"
+                 "inflated shape. Exit code 0 when it settles, 1 when the pattern is rejected or the\n"
+                 "simulation does not settle (the last shape is still written).\n");
+    return args.has("--help") ? 0 : 2;
+  }
+  const std::string path = args.positional[0];
+  std::vector<PatternWarning> warnings;
+  Pattern p = readPatternJson(readFileBytes(path), &warnings);
+  for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.message.c_str());
+  p.pressure = number(args, "--pressure", p.pressure);
+  if (!(p.pressure > 0)) throw Error("cli.usage", "the pressure must be positive");
+  InflateOptions o;
+  o.tolerance = number(args, "--tolerance", o.tolerance);
+  o.maxIterations = static_cast<int>(number(args, "--max-iterations", o.maxIterations));
+  SewnMesh mesh = sewPattern(p);
+  const Vertices start = startFromInflated(p, mesh);
+  InflationSolver solver(mesh, p.material, p.pressure, o, start);
+  const bool quiet = args.has("--quiet");
+  if (!quiet)
+    std::fprintf(stderr, "%s: %d triangles, %d simulation vertices\n", path.c_str(), mesh.numTriangles(),
+                 mesh.numVertices);
+  while (solver.step(5, 500) == InflateState::Running)
+    if (!quiet)
+      std::fprintf(stderr, "  iteration %3d  residual %.3e  volume %.6g m^3\n", solver.iterations(), solver.residual(),
+                   solver.volume());
+  const InflateResult r = solver.result();
+  if (args.has("--out")) writeFile(args.get("--out"), resultJson(p, mesh, r).dump() + "\n");
+  if (args.has("--obj")) writeFile(args.get("--obj"), toObj(mesh, r.positions));
+  std::fprintf(stderr, "%s after %d iterations (residual %.2e), volume %.6g m^3, %.0f ms\n",
+               r.converged ? "settled" : "did not settle", r.iterations, r.residual, r.volume,
+               r.timings.totalMs + r.timings.setupMs);
+  if (!r.converged) {
+    std::fprintf(stderr, "billow inflate: %s\n", r.message.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace billow::cli

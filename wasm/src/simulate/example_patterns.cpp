@@ -1,0 +1,254 @@
+#include "simulate/example_patterns.hpp"
+
+#include <cmath>
+#include <map>
+
+#include "util/error.hpp"
+
+namespace billow {
+namespace {
+
+// Triangulates the strip between two rows of points A and B ("zipper"): each step advances the row whose
+// next point comes first in the parameter s (angle or normalized position). Cyclic rows wrap by `period`.
+void zip(const std::vector<int>& A, const std::vector<double>& sA, const std::vector<int>& B,
+         const std::vector<double>& sB, bool cyclic, double period, std::vector<Eigen::Vector3i>& out) {
+  const int na = int(A.size()), nb = int(B.size());
+  int j0 = 0;
+  if (cyclic) {
+    for (int j = 1; j < nb; ++j)
+      if (std::abs(std::remainder(sB[j] - sA[0], period)) < std::abs(std::remainder(sB[j0] - sA[0], period))) j0 = j;
+  }
+  const int endA = cyclic ? na : na - 1, endB = cyclic ? nb : nb - 1;
+  auto pa = [&](int i) { return sA[i % na] + (cyclic ? period * (i / na) : 0); };
+  const double shiftB = cyclic ? sA[0] + std::remainder(sB[j0] - sA[0], period) - sB[j0] : 0;
+  auto pb = [&](int j) { return sB[(j0 + j) % nb] + shiftB + (cyclic ? period * ((j0 + j) / nb) : 0); };
+  int i = 0, j = 0;
+  while (i < endA || j < endB) {
+    const bool advanceA = j >= endB || (i < endA && pa(i + 1) < pb(j + 1));
+    const int a = A[i % na], b = B[(j0 + j) % nb];
+    if (advanceA) {
+      out.push_back({a, A[(i + 1) % na], b});
+      ++i;
+    } else {
+      out.push_back({a, B[(j0 + j + 1) % nb], b});
+      ++j;
+    }
+  }
+}
+
+// Makes every triangle counterclockwise in the panel plane.
+Triangles orient(const PanelVertices& V, const std::vector<Eigen::Vector3i>& tris) {
+  Triangles F(tris.size(), 3);
+  for (size_t t = 0; t < tris.size(); ++t) {
+    Eigen::Vector3i f = tris[t];
+    const Eigen::Vector2d e1 = V.row(f[1]) - V.row(f[0]), e2 = V.row(f[2]) - V.row(f[0]);
+    if (e1.x() * e2.y() - e1.y() * e2.x() < 0) std::swap(f[1], f[2]);
+    F.row(t) = f.transpose();
+  }
+  return F;
+}
+
+// The other side of a two-sided balloon: seen from outside, a panel is mirrored; vertex numbers are kept, so
+// boundary vertex i of the front is sewn to boundary vertex i of the back.
+Panel mirrored(const Panel& p, const std::string& name) {
+  Panel q = p;
+  q.name = name;
+  q.vertices.col(1) *= -1;
+  q.triangles.col(1).swap(q.triangles.col(2));
+  return q;
+}
+
+std::vector<int> boundaryVertices(const Panel& p) {
+  std::vector<int> count(p.vertices.rows(), 0);
+  std::map<std::pair<int, int>, int> edges;
+  for (int t = 0; t < p.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) ++edges[std::minmax(p.triangles(t, k), p.triangles(t, (k + 1) % 3))];
+  std::vector<char> on(p.vertices.rows(), 0);
+  for (const auto& [e, n] : edges)
+    if (n == 1) on[e.first] = on[e.second] = 1;
+  std::vector<int> out;
+  for (int v = 0; v < int(on.size()); ++v)
+    if (on[v]) out.push_back(v);
+  return out;
+}
+
+Pattern twoSided(const Panel& front, const ExampleOptions& o) {
+  Pattern p;
+  p.panels = {front, mirrored(front, "back")};
+  for (int v : boundaryVertices(front)) p.stitches.push_back({0, v, 1, v});
+  p.material = o.material;
+  p.pressure = o.pressure;
+  return p;
+}
+
+// Disc of radius a: K concentric rings with 6k points each (vertex 0 = centre), about 6 K^2 triangles.
+Panel disc(double a, int K) {
+  std::vector<Eigen::Vector2d> pts = {{0, 0}};
+  std::vector<std::vector<int>> rings = {{0}};
+  std::vector<std::vector<double>> angles = {{0}};
+  for (int k = 1; k <= K; ++k) {
+    const int n = 6 * k;
+    std::vector<int> ring;
+    std::vector<double> ang;
+    for (int j = 0; j < n; ++j) {
+      const double th = 2 * M_PI * (j + 0.5 * (k % 2)) / n;
+      ring.push_back(int(pts.size()));
+      ang.push_back(th);
+      pts.push_back(a * double(k) / K * Eigen::Vector2d(std::cos(th), std::sin(th)));
+    }
+    rings.push_back(ring);
+    angles.push_back(ang);
+  }
+  std::vector<Eigen::Vector3i> tris;
+  for (int j = 0; j < 6; ++j) tris.push_back({0, rings[1][j], rings[1][(j + 1) % 6]});
+  for (int k = 2; k <= K; ++k) zip(rings[k - 1], angles[k - 1], rings[k], angles[k], true, 2 * M_PI, tris);
+  Panel p;
+  p.name = "front";
+  p.vertices.resize(pts.size(), 2);
+  for (size_t i = 0; i < pts.size(); ++i) p.vertices.row(i) = pts[i].transpose();
+  p.triangles = orient(p.vertices, tris);
+  return p;
+}
+
+Panel square(double side, int n) {
+  Panel p;
+  p.name = "front";
+  p.vertices.resize((n + 1) * (n + 1), 2);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) p.vertices.row(i * (n + 1) + j) << side * j / n - side / 2, side * i / n - side / 2;
+  std::vector<Eigen::Vector3i> tris;
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i * (n + 1) + j, b = a + 1, c = a + n + 1, d = c + 1;
+      // Diagonals alternate (a "union jack" pattern) so the quilt has no preferred shear direction.
+      if ((i + j) % 2 == 0) {
+        tris.push_back({a, b, d});
+        tris.push_back({a, d, c});
+      } else {
+        tris.push_back({a, b, c});
+        tris.push_back({b, d, c});
+      }
+    }
+  p.triangles = orient(p.vertices, tris);
+  return p;
+}
+
+// Gore of a sphere of radius R spanning 120 degrees: x = meridian arc length in [0, pi R], half-width
+// w(x) = (pi/3) R sin(x/R). Columns of points across; the tips are single points. Bottom boundary point
+// of each column first, top boundary point last.
+Panel gore(double R, int columns, std::vector<std::pair<int, int>>& sides) {
+  const double h = M_PI * R / columns;
+  std::vector<Eigen::Vector2d> pts;
+  std::vector<std::vector<int>> cols;
+  std::vector<std::vector<double>> params;
+  for (int k = 0; k <= columns; ++k) {
+    const double x = h * k, w = M_PI / 3 * R * std::sin(x / R);
+    const int n = (k == 0 || k == columns) ? 1 : std::max(2, int(std::lround(2 * w / h)) + 1);
+    std::vector<int> col;
+    std::vector<double> par;
+    for (int i = 0; i < n; ++i) {
+      const double s = n == 1 ? 0.5 : double(i) / (n - 1);
+      col.push_back(int(pts.size()));
+      par.push_back(s);
+      pts.push_back({x - M_PI * R / 2, -w + 2 * w * s});
+    }
+    sides.push_back({col.front(), col.back()});
+    cols.push_back(col);
+    params.push_back(par);
+  }
+  std::vector<Eigen::Vector3i> tris;
+  for (int k = 0; k < columns; ++k) zip(cols[k], params[k], cols[k + 1], params[k + 1], false, 0, tris);
+  Panel p;
+  p.vertices.resize(pts.size(), 2);
+  for (size_t i = 0; i < pts.size(); ++i) p.vertices.row(i) = pts[i].transpose();
+  p.triangles = orient(p.vertices, tris);
+  return p;
+}
+
+}  // namespace
+
+const std::vector<std::string>& exampleNames() {
+  static const std::vector<std::string> names = {"mylar", "pillow", "sphere3", "sphere3-internal"};
+  return names;
+}
+
+Pattern examplePattern(const std::string& name, const ExampleOptions& o) {
+  if (!(o.triangles >= 24 && o.triangles <= 2'000'000))
+    throw Error("example.bad-value", "Choose between 24 and 2,000,000 triangles.");
+  if (!(o.size > 0 && std::isfinite(o.size))) throw Error("example.bad-value", "The size must be positive.");
+  if (name == "mylar") {
+    const int K = std::max(2, int(std::lround(std::sqrt(o.triangles / 12.0))));
+    return twoSided(disc(o.size, K), o);
+  }
+  if (name == "pillow") {
+    // An even number of cells puts a diagonal through every corner; otherwise a corner triangle would have
+    // all three corners on the seam and be sewn face to face with its twin.
+    const int n = std::max(2, 2 * int(std::lround(std::sqrt(o.triangles / 16.0))));
+    return twoSided(square(o.size, n), o);
+  }
+  if (name == "sphere3" || name == "sphere3-internal") {
+    const int columns = std::max(3, int(std::lround(std::sqrt(M_PI * o.triangles / 8.0))));
+    Pattern p;
+    std::vector<std::pair<int, int>> sides;
+    for (int g = 0; g < 3; ++g) {
+      sides.clear();
+      p.panels.push_back(gore(o.size, columns, sides));
+      p.panels.back().name = "gore " + std::to_string(g + 1);
+    }
+    // The top side of gore g is sewn to the bottom side of gore g+1, column by column (equal lengths by
+    // symmetry); the tips of all three gores meet at the poles.
+    for (int g = 0; g < 3; ++g)
+      for (const auto& [bottom, top] : sides) p.stitches.push_back({g, top, (g + 1) % 3, bottom});
+    if (name == "sphere3-internal") {
+      // An internal connection: a narrower gore inside, sewn to the seams gore 1|2 and gore 2|3 column by
+      // column, pulls them together (a crease along the middle of gore 2).
+      std::vector<std::pair<int, int>> inner;
+      p.panels.push_back(gore(0.6 * o.size, columns, inner));
+      p.panels.back().name = "internal";
+      p.panels.back().internal = true;
+      p.panels.back().vertices.col(0) /= 0.6;  // full meridian length, 60 % of the width
+      for (size_t k = 0; k < inner.size(); ++k) {
+        p.stitches.push_back({3, inner[k].first, 0, sides[k].second});
+        p.stitches.push_back({3, inner[k].second, 1, sides[k].second});
+      }
+    }
+    p.material = o.material;
+    p.pressure = o.pressure;
+    return p;
+  }
+  throw Error("example.unknown",
+              "There is no example called '" + name + "' (try mylar, pillow, sphere3 or sphere3-internal).");
+}
+
+MylarShape measureMylar(const SewnMesh& mesh, const Vertices& x) {
+  const Eigen::Vector3d top = x.row(mesh.simVertex(0, 0)), bottom = x.row(mesh.simVertex(1, 0));
+  const Eigen::Vector3d axis = (top - bottom).normalized();
+  MylarShape s;
+  s.poleThickness = (top - bottom).norm();
+  Eigen::Vector3d rimCentre = Eigen::Vector3d::Zero();
+  int n = 0;
+  for (int v = 0; v < mesh.numVertices; ++v)
+    if (mesh.stitchedCount[v] >= 2) rimCentre += x.row(v).transpose(), ++n;
+  if (n == 0) return s;
+  rimCentre /= n;
+  const Eigen::Vector3d mid = bottom + (rimCentre - bottom).dot(axis) * axis;  // on the axis, in the rim plane
+  for (int v = 0; v < mesh.numVertices; ++v) {
+    if (mesh.stitchedCount[v] < 2) continue;
+    const Eigen::Vector3d d = x.row(v).transpose() - mid;
+    s.rimRadius += (d - d.dot(axis) * axis).norm() / n;
+  }
+  double sum[2] = {0, 0};
+  int count[2] = {0, 0};
+  for (int v = 0; v < mesh.numVertices; ++v) {
+    const Eigen::Vector3d d = x.row(v).transpose() - mid;
+    const double z = d.dot(axis), rho = (d - z * axis).norm() / s.rimRadius;
+    if (rho < 0.15 || rho > 0.3) continue;
+    const int side = z > 0 ? 0 : 1;
+    sum[side] += std::abs(z) + s.rimRadius * rho * rho * rho / 3;
+    ++count[side];
+  }
+  if (count[0] && count[1]) s.thickness = sum[0] / count[0] + sum[1] / count[1];
+  return s;
+}
+
+}  // namespace billow

@@ -1,0 +1,383 @@
+// Newton equilibrium solver for the inflated shape; see inflate.hpp for the method.
+#include "simulate/inflate.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <limits>
+
+#include "simulate/enclosed_volume.hpp"
+#include "simulate/initial_shape.hpp"
+#include "util/error.hpp"
+
+namespace billow {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+}  // namespace
+
+const char* toString(InflateState s) {
+  switch (s) {
+    case InflateState::Running:
+      return "running";
+    case InflateState::Converged:
+      return "converged";
+    default:
+      return "failed";
+  }
+}
+
+// Lower triangle of the 3n x 3n Hessian (the part SimplicialLDLT reads) with a fixed pattern, and for every
+// element the 81 value slots it adds into (-1 for the upper triangle).
+struct InflationSolver::Sparse {
+  Eigen::SparseMatrix<double> H;
+  Eigen::VectorXd values;  // unshifted Hessian values
+  std::vector<int> slot;
+  std::vector<int> diag;
+  std::vector<int> pinnedEntries;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+};
+
+InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double pressure,
+                                 const InflateOptions& options, const Vertices& x0)
+    : mesh_(std::move(mesh)), pressure_(pressure), options_(options), sparse_(std::make_unique<Sparse>()) {
+  const auto start = Clock::now();
+  material_.youngsModulus = material.youngsModulus;
+  material_.thickness = material.thickness;
+  material_.band = options.band;
+  if (x0.rows() != 0 && (x0.rows() != mesh_.numVertices || !x0.allFinite()))
+    throw Error("inflate.bad-start", "The start shape does not fit the pattern (" + std::to_string(x0.rows()) +
+                                         " positions for " + std::to_string(mesh_.numVertices) + " vertices).");
+  x_ = x0.rows() == mesh_.numVertices ? x0 : sphericalStart(mesh_);
+  const int n = 3 * mesh_.numVertices, F = mesh_.numTriangles();
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(size_t(F) * 45 + n);
+  for (int i = 0; i < n; ++i) trip.emplace_back(i, i, 0.0);
+  for (int f = 0; f < F; ++f)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) {
+            const int r = 3 * mesh_.triangles(f, a) + i, c = 3 * mesh_.triangles(f, b) + j;
+            if (r >= c) trip.emplace_back(r, c, 0.0);
+          }
+  Sparse& s = *sparse_;
+  s.H.resize(n, n);
+  s.H.setFromTriplets(trip.begin(), trip.end());
+  s.H.makeCompressed();
+  auto find = [&](int r, int c) {
+    const int* begin = s.H.innerIndexPtr() + s.H.outerIndexPtr()[c];
+    const int* end = s.H.innerIndexPtr() + s.H.outerIndexPtr()[c + 1];
+    return int(std::lower_bound(begin, end, r) - s.H.innerIndexPtr());
+  };
+  s.slot.assign(size_t(F) * 81, -1);
+  for (int f = 0; f < F; ++f)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) {
+            const int r = 3 * mesh_.triangles(f, a) + i, c = 3 * mesh_.triangles(f, b) + j;
+            if (r >= c) s.slot[size_t(f) * 81 + (3 * a + i) * 9 + 3 * b + j] = find(r, c);
+          }
+  s.diag.resize(n);
+  for (int i = 0; i < n; ++i) s.diag[i] = find(i, i);
+  choosePins();
+  s.ldlt.analyzePattern(s.H);  // symbolic factorization, once per mesh
+  forceScale_ = std::max(pressure_ * mesh_.meanEdgeLength * mesh_.meanEdgeLength, 1e-300);
+  energy_ = totalEnergy(x_);
+  if (!std::isfinite(energy_)) fail("The start shape is invalid (a triangle is collapsed). Try another start.");
+  timings_.setupMs = msSince(start);
+}
+
+InflationSolver::~InflationSolver() = default;
+
+// Pins 6 DOFs against rigid motion: a fully, b across the direction a-b, c across the plane (a, b, c).
+void InflationSolver::choosePins() {
+  const int n = mesh_.numVertices;
+  int a = 0, b = 0, c = 0;
+  for (int v = 0; v < n; ++v)
+    if ((x_.row(v) - x_.row(a)).squaredNorm() > (x_.row(b) - x_.row(a)).squaredNorm()) b = v;
+  const Eigen::Vector3d d = x_.row(b) - x_.row(a);
+  double best = -1;
+  for (int v = 0; v < n; ++v) {
+    const double dist = d.cross(Eigen::Vector3d(x_.row(v) - x_.row(a))).squaredNorm();
+    if (dist > best) best = dist, c = v;
+  }
+  int major = 0;
+  d.cwiseAbs().maxCoeff(&major);
+  const Eigen::Vector3d normal = d.cross(Eigen::Vector3d(x_.row(c) - x_.row(a)));
+  int across = 0;
+  normal.cwiseAbs().maxCoeff(&across);
+  pinned_ = {3 * a, 3 * a + 1, 3 * a + 2};
+  for (int k = 0; k < 3; ++k)
+    if (k != major) pinned_.push_back(3 * b + k);
+  pinned_.push_back(3 * c + across);
+  std::vector<char> isPinned(3 * n, 0);
+  for (int p : pinned_) isPinned[p] = 1;
+  Sparse& s = *sparse_;
+  s.pinnedEntries.clear();
+  for (int col = 0; col < 3 * n; ++col)
+    for (int k = s.H.outerIndexPtr()[col]; k < s.H.outerIndexPtr()[col + 1]; ++k)
+      if ((isPinned[col] || isPinned[s.H.innerIndexPtr()[k]]) && s.H.innerIndexPtr()[k] != col)
+        s.pinnedEntries.push_back(k);
+}
+
+double InflationSolver::totalEnergy(const Vertices& x) const {
+  double e = 0, v = 0;
+  for (int f = 0; f < mesh_.numTriangles(); ++f) {
+    const Eigen::Vector3d a = x.row(mesh_.triangles(f, 0)), b = x.row(mesh_.triangles(f, 1)),
+                          c = x.row(mesh_.triangles(f, 2));
+    e += membraneElementEnergy(mesh_.rest[f], a, b, c, material_);
+    if (mesh_.outer[f]) v += triangleVolume(a, b, c);
+  }
+  return e - pressure_ * v;  // Pi = sum h A psi~ - p V
+}
+
+double InflationSolver::volume() const {
+  double v = 0;
+  for (int f = 0; f < mesh_.numTriangles(); ++f)
+    if (mesh_.outer[f])
+      v += triangleVolume(x_.row(mesh_.triangles(f, 0)), x_.row(mesh_.triangles(f, 1)), x_.row(mesh_.triangles(f, 2)));
+  return v;
+}
+
+bool InflationSolver::assemble() {
+  Sparse& s = *sparse_;
+  const int n = 3 * mesh_.numVertices;
+  grad_.setZero(n);
+  s.values.setZero(s.H.nonZeros());
+  ElementOptions eo;
+  eo.projectHessian = options_.projectHessian;
+  Vector9d g, gv;
+  Matrix9d h, hv;
+  for (int f = 0; f < mesh_.numTriangles(); ++f) {
+    const int* t = &mesh_.triangles(f, 0);
+    const Eigen::Vector3d a = x_.row(t[0]), b = x_.row(t[1]), c = x_.row(t[2]);
+    membraneElement(mesh_.rest[f], a, b, c, material_, eo, &g, &h);
+    if (mesh_.outer[f]) {
+      triangleVolumeDerivatives(a, b, c, &gv, &hv);
+      g -= pressure_ * gv;
+      h -= pressure_ * hv;
+    }
+    for (int k = 0; k < 3; ++k) grad_.segment<3>(3 * t[k]) += g.segment<3>(3 * k);
+    const int* slots = &s.slot[size_t(f) * 81];
+    for (int r = 0; r < 9; ++r)
+      for (int col = 0; col <= r; ++col)
+        if (slots[r * 9 + col] >= 0) s.values[slots[r * 9 + col]] += h(r, col);
+    // Upper-triangle local entries (r < col) can still land in the global lower triangle.
+    for (int r = 0; r < 9; ++r)
+      for (int col = r + 1; col < 9; ++col)
+        if (slots[r * 9 + col] >= 0) s.values[slots[r * 9 + col]] += h(r, col);
+  }
+  double meanDiag = 0;
+  for (int i = 0; i < n; ++i) meanDiag += std::abs(s.values[s.diag[i]]) / n;
+  for (int k : s.pinnedEntries) s.values[k] = 0;
+  for (int p : pinned_) {
+    grad_[p] = 0;
+    s.values[s.diag[p]] = meanDiag > 0 ? meanDiag : 1;
+  }
+  return grad_.allFinite() && s.values.allFinite();
+}
+
+void InflationSolver::fail(const std::string& message) {
+  state_ = InflateState::Failed;
+  message_ = message;
+}
+
+// Preconditioned CG on (current shifted H) d = -g with the last LDL^T as preconditioner. Returns false on
+// negative curvature or when 25 iterations do not reduce the residual below 1e-3 |g| (inexact Newton).
+bool InflationSolver::preconditionedCg(Eigen::VectorXd& d) {
+  Sparse& s = *sparse_;
+  const auto t0 = Clock::now();
+  d.setZero(grad_.size());
+  Eigen::VectorXd r = -grad_, z = s.ldlt.solve(r), p = z, Ap;
+  double rz = r.dot(z);
+  const double target = 1e-3 * grad_.norm();
+  bool ok = false;
+  for (int k = 0; k < 25; ++k) {
+    Ap = s.H.selfadjointView<Eigen::Lower>() * p;
+    const double pAp = p.dot(Ap);
+    if (!(pAp > 0)) break;
+    const double a = rz / pAp;
+    d += a * p;
+    r -= a * Ap;
+    if (r.norm() <= target) {
+      ok = true;
+      break;
+    }
+    z = s.ldlt.solve(r);
+    const double rzNew = r.dot(z);
+    p = z + (rzNew / rz) * p;
+    rz = rzNew;
+  }
+  timings_.reuseMs += msSince(t0);
+  if (ok) ++timings_.reusedSolves;
+  return ok;
+}
+
+InflateState InflationSolver::step(int maxIterations, double maxMillis) {
+  const auto start = Clock::now();
+  Sparse& s = *sparse_;
+  const int n = 3 * mesh_.numVertices;
+  for (int done = 0; state_ == InflateState::Running && done < maxIterations; ++done) {
+    if (maxMillis > 0 && done > 0 && msSince(start) > maxMillis) break;
+    auto t0 = Clock::now();
+    if (!assemble()) {
+      fail("The simulation broke down (invalid forces). Check the pattern for tiny or overlapping panels.");
+      break;
+    }
+    timings_.assembleMs += msSince(t0);
+    residual_ = grad_.lpNorm<Eigen::Infinity>() / forceScale_;
+    if (residual_ < options_.tolerance) {
+      state_ = InflateState::Converged;
+      break;
+    }
+    if (iterations_ >= options_.maxIterations) {
+      fail("The balloon did not settle within " + std::to_string(options_.maxIterations) +
+           " iterations; the shape shown is the last one reached.");
+      break;
+    }
+    // The shift is measured in units of the pressure stiffness p * l: the indefinite part of the Hessian is
+    // -p d2V (entries ~ p l), while the membrane diagonal (~ E h) is larger by the stiffness ratio.
+    const double shiftUnit = pressure_ * mesh_.meanEdgeLength;
+    bool accepted = false, triedReuse = !options_.reuseFactorization || !factorValid_;
+    while (!accepted) {
+      if (shift_ > options_.maxShift) break;
+      Eigen::Map<Eigen::VectorXd>(s.H.valuePtr(), s.H.nonZeros()) = s.values;
+      for (int i = 0; i < n; ++i) s.H.valuePtr()[s.diag[i]] += shift_ * shiftUnit;
+      Eigen::VectorXd d;
+      // First try the previous factorization as a preconditioner for CG on the new Hessian: between late
+      // iterations only the elements that change regime alter H, and a few triangular solves cost far less
+      // than a numeric factorization. Any doubt (negative curvature, slow CG, no descent) refactorizes.
+      const bool reused = !triedReuse && preconditionedCg(d);
+      triedReuse = true;
+      if (!reused) {
+        t0 = Clock::now();
+        s.ldlt.factorize(s.H);
+        ++timings_.factorizations;
+        timings_.factorMs += msSince(t0);
+        // An LDL^T with a non-positive pivot means H + shift is not positive definite: no descent guarantee.
+        factorValid_ = s.ldlt.info() == Eigen::Success && s.ldlt.vectorD().minCoeff() > 0;
+        if (!factorValid_) {
+          shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
+          continue;
+        }
+        d = -s.ldlt.solve(grad_);
+      }
+      const double slope = grad_.dot(d);
+      if (!d.allFinite() || !(slope < 0)) {
+        if (!reused) shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
+        continue;
+      }
+      t0 = Clock::now();
+      double alpha = 1;
+      for (int k = 0; k <= options_.maxHalvings; ++k, alpha *= 0.5) {
+        Vertices trial = x_ + alpha * Eigen::Map<const Vertices>(d.data(), mesh_.numVertices, 3);
+        const double e = totalEnergy(trial);
+        // Armijo on Pi, with a round-off allowance: Pi is a difference of large terms near convergence.
+        const double roundoff = 64 * std::numeric_limits<double>::epsilon() * std::abs(energy_);
+        if (std::isfinite(e) && e <= energy_ + options_.armijo * alpha * slope + roundoff) {
+          energyHistory_.push_back(energy_);
+          energyHistory_.push_back(e);
+          x_ = std::move(trial);
+          energy_ = e;
+          accepted = true;
+          lastAlpha_ = alpha;
+          break;
+        }
+      }
+      timings_.lineSearchMs += msSince(t0);
+      // Damping grows only when no step is found: raising it after short steps (classic LM) was tried and
+      // cost 40 % more iterations on the Mylar balloon. A failed reused direction first refactorizes.
+      if (!accepted && !reused)
+        shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
+      else if (accepted && alpha == 1)
+        shift_ = shift_ < 2e-3 ? 0 : shift_ / 10;
+    }
+    if (!accepted) {
+      fail(
+          "The simulation is stuck (no step lowers the energy). The pattern may not hold pressure; the shape "
+          "shown is the last good one.");
+      break;
+    }
+    ++iterations_;
+  }
+  timings_.totalMs += msSince(start);
+  return state_;
+}
+
+void InflationSolver::restart(const Vertices& x0, double pressure) {
+  if (x0.rows() != mesh_.numVertices)
+    throw Error("inflate.bad-start", "The start shape has the wrong number of vertices.");
+  x_ = x0;
+  pressure_ = pressure;
+  forceScale_ = std::max(pressure_ * mesh_.meanEdgeLength * mesh_.meanEdgeLength, 1e-300);
+  iterations_ = 0;
+  shift_ = 0;
+  state_ = InflateState::Running;
+  message_.clear();
+  energyHistory_.clear();
+  energy_ = totalEnergy(x_);
+  if (!std::isfinite(energy_)) fail("The start shape is invalid (a triangle is collapsed). Try another start.");
+}
+
+double InflationSolver::timeFactorization() {
+  assemble();
+  Sparse& s = *sparse_;
+  Eigen::Map<Eigen::VectorXd>(s.H.valuePtr(), s.H.nonZeros()) = s.values;
+  const auto t0 = Clock::now();
+  s.ldlt.factorize(s.H);
+  const double ms = msSince(t0);
+  factorValid_ = s.ldlt.info() == Eigen::Success && s.ldlt.vectorD().minCoeff() > 0;
+  return ms;
+}
+
+TriangleFields InflationSolver::fields() const {
+  const int F = mesh_.numTriangles();
+  TriangleFields out;
+  out.regime.resize(F);
+  out.compression.resize(F);
+  out.direction.resize(F, 3);
+  out.stress.resize(F);
+  out.tension.resize(F);
+  for (int f = 0; f < F; ++f) {
+    const ElementState st =
+        membraneElementState(mesh_.rest[f], x_.row(mesh_.triangles(f, 0)), x_.row(mesh_.triangles(f, 1)),
+                             x_.row(mesh_.triangles(f, 2)), material_);
+    out.regime[f] = int(st.regime);
+    out.compression[f] = st.compression;
+    out.direction.row(f) = st.direction.transpose();
+    out.stress[f] = st.stress;
+    out.tension[f] = st.tension;
+  }
+  return out;
+}
+
+InflateResult InflationSolver::result() const {
+  InflateResult r;
+  r.state = state_;
+  r.message = message_;
+  r.positions = x_;
+  r.volume = volume();
+  r.energy = energy_;
+  r.residual = residual_;
+  r.iterations = iterations_;
+  r.converged = state_ == InflateState::Converged;
+  r.timings = timings_;
+  r.fields = fields();
+  return r;
+}
+
+InflateResult inflate(const Pattern& pattern, const InflateOptions& options, const Vertices& x0) {
+  SewnMesh mesh = sewPattern(pattern);
+  Vertices start = x0;
+  if (start.rows() != mesh.numVertices) start = startFromInflated(pattern, mesh);
+  InflationSolver solver(std::move(mesh), pattern.material, pattern.pressure, options, start);
+  while (solver.step(50) == InflateState::Running) {
+  }
+  return solver.result();
+}
+
+}  // namespace billow

@@ -1,0 +1,131 @@
+// Inflation: the equilibrium f(x) = 0 of a sewn pattern under pressure, as a stationary point of
+// Pi(x) = sum_e h A_e psi~(C_e) - p V(x) (Skouras et al. 2014, Sec. 4; DESIGN.md "Simulation").
+// Newton with a backtracking (Armijo) line search on Pi; the Hessian is the projected (PSD) membrane part
+// minus p times the exact volume Hessian, which is indefinite: a Levenberg-Marquardt shift mu * mean(diag)
+// is raised whenever the LDL^T factorization shows a non-positive pivot or the line search fails, and
+// lowered after full steps. Rigid motions are pinned without bias: all of vertex a, two coordinates of b
+// and one of c (the reactions vanish at equilibrium because pressure and membrane forces on a closed
+// surface have zero resultant and moment). The sparsity pattern is analysed once (AMD ordering, symbolic
+// factorization) and reused for every iteration and every later solve on the same mesh.
+#pragma once
+#include <Eigen/Sparse>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "simulate/sewn_pattern.hpp"
+
+namespace billow {
+
+struct InflateOptions {
+  // Converged when max |f_i| / (p * l^2) < tolerance: the largest net force on a vertex relative to the
+  // pressure load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
+  double tolerance = 1e-5;
+  int maxIterations = 1000;    // the Mylar balloon needs ~60 at 3k triangles, ~360 at 15k (bench/README.md)
+  double band = 1e-4;          // smoothing band of the relaxed energy (MembraneMaterial::band)
+  bool projectHessian = true;  // per-element PSD projection of the membrane Hessian
+  double armijo = 1e-4;        // sufficient decrease constant
+  int maxHalvings = 30;        // line search
+  // Try the last factorization as a CG preconditioner before refactorizing. Off: on the Mylar balloon the
+  // Hessian changes too much between iterations (elements change regime) and CG rarely converged in time.
+  bool reuseFactorization = false;
+  double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
+};
+
+enum class InflateState { Running, Converged, Failed };
+const char* toString(InflateState s);
+
+struct InflateTimings {
+  double setupMs = 0, assembleMs = 0, factorMs = 0, lineSearchMs = 0, totalMs = 0;
+  int factorizations = 0;
+  double reuseMs = 0;    // preconditioned CG with an older factorization
+  int reusedSolves = 0;  // Newton directions found that way
+};
+
+// Per-triangle fields for display (the compression field predicts wrinkles).
+struct TriangleFields {
+  std::vector<int> regime;      // #F: 0 slack, 1 wrinkled, 2 taut
+  Eigen::VectorXd compression;  // #F, see ElementState
+  Vertices direction;           // #F by 3, unit (zero when taut)
+  Eigen::VectorXd stress;       // #F max principal stress [Pa]
+  Eigen::VectorXd tension;      // #F max principal membrane tension [N/m]
+};
+
+struct InflateResult {
+  InflateState state = InflateState::Running;
+  std::string message;  // designer words; empty when converged
+  Vertices positions;   // #V by 3 simulation vertices [m]
+  double volume = 0;    // [m^3]
+  double energy = 0;    // Pi [J]
+  double residual = 0;  // relative force residual (see InflateOptions::tolerance)
+  int iterations = 0;
+  bool converged = false;
+  InflateTimings timings;
+  TriangleFields fields;
+};
+
+class InflationSolver {
+ public:
+  // x0: start positions (#V by 3), e.g. the target shape; empty = sphericalStart(mesh). Throws
+  // billow::Error("inflate.bad-start") when x0 has another size or invalid coordinates.
+  InflationSolver(SewnMesh mesh, const Material& material, double pressure, const InflateOptions& options = {},
+                  const Vertices& x0 = {});
+  ~InflationSolver();
+
+  // Up to maxIterations Newton iterations or maxMillis of work (<= 0: no limit), whichever first.
+  InflateState step(int maxIterations, double maxMillis = 0);
+
+  // Restarts from new positions or pressure, keeping the symbolic factorization.
+  void restart(const Vertices& x0, double pressure);
+
+  InflateState state() const { return state_; }
+  const std::string& message() const { return message_; }
+  const Vertices& positions() const { return x_; }
+  const SewnMesh& mesh() const { return mesh_; }
+  int iterations() const { return iterations_; }
+  double residual() const { return residual_; }
+  const Eigen::VectorXd& gradient() const { return grad_; }  // dPi/dx at the last assembly, pins zeroed
+  double energy() const { return energy_; }
+  double volume() const;
+  const InflateTimings& timings() const { return timings_; }
+  double lastStepLength() const { return lastAlpha_; }  // line-search alpha of the last step
+  double shift() const { return shift_; }               // current LM shift (relative)
+  // Energy before and after every accepted step (tests: it never increases).
+  const std::vector<double>& energyHistory() const { return energyHistory_; }
+  TriangleFields fields() const;
+  InflateResult result() const;
+
+  // Times one numeric factorization of the current Hessian (benchmark floor), in ms.
+  double timeFactorization();
+
+ private:
+  struct Sparse;
+  double totalEnergy(const Vertices& x) const;
+  bool assemble();  // gradient + Hessian at x_; false when not finite
+  void choosePins();
+  void fail(const std::string& message);
+  bool preconditionedCg(Eigen::VectorXd& d);
+
+  SewnMesh mesh_;
+  MembraneMaterial material_;
+  double pressure_;
+  InflateOptions options_;
+  Vertices x_;
+  Eigen::VectorXd grad_;
+  std::unique_ptr<Sparse> sparse_;
+  std::vector<int> pinned_;  // DOF indices
+  double shift_ = 0;         // LM shift, relative to the mean diagonal
+  double lastAlpha_ = 0;
+  bool factorValid_ = false;  // ldlt holds a positive definite factorization of an earlier Hessian
+  double energy_ = 0, residual_ = 0, forceScale_ = 1;
+  int iterations_ = 0;
+  InflateState state_ = InflateState::Running;
+  std::string message_;
+  InflateTimings timings_;
+  std::vector<double> energyHistory_;
+};
+
+// One-shot: sew, start (pattern.inflated, else x0, else sphere), solve to convergence.
+InflateResult inflate(const Pattern& pattern, const InflateOptions& options = {}, const Vertices& x0 = {});
+
+}  // namespace billow

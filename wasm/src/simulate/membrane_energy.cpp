@@ -1,0 +1,199 @@
+// Relaxed membrane energy (Skouras et al. 2014, Eqs. 1-5) with our C2 smoothing; see the header.
+#include "simulate/membrane_energy.hpp"
+
+#include <cmath>
+
+#include "simulate/dual2.hpp"
+
+namespace billow {
+namespace {
+
+using detail::Dual2;
+
+// C2 soft version of max(u, 0) over [-band, band]: soft'' = 15/(16 band) (1 - s^2)^2, s = u / band.
+Dual2 soft(const Dual2& u, double band) {
+  if (u.v <= -band) return Dual2::constant(0);
+  if (u.v >= band) return u;
+  const double s = u.v / band, s2 = s * s;
+  const double f = band * (15.0 / 16.0 * (s2 / 2 - s2 * s2 / 6 + s2 * s2 * s2 / 30) + s / 2 + 5.0 / 32.0);
+  const double f1 = 15.0 / 16.0 * (s - 2 * s * s2 / 3 + s * s2 * s2 / 5) + 0.5;
+  const double f2 = 15.0 / (16.0 * band) * (1 - s2) * (1 - s2);
+  return detail::apply(u, f, f1, f2);
+}
+
+// Taut regime, Eq. 3 in invariants: psi = kappa (tr C + 1/det C - 3). No eigen-decomposition.
+Density tautDensity(const Eigen::Vector3d& c, double kappa) {
+  const double det = c[0] * c[1] - c[2] * c[2];
+  const Eigen::Vector3d dDet(c[1], c[0], -2 * c[2]);
+  Eigen::Matrix3d hDet;
+  hDet << 0, 1, 0, 1, 0, 0, 0, 0, -2;
+  Density d;
+  d.psi = kappa * (c[0] + c[1] + 1 / det - 3);
+  d.grad = kappa * (Eigen::Vector3d(1, 1, 0) - dDet / (det * det));
+  d.hess = kappa * (2 * dDet * dDet.transpose() / (det * det * det) - hDet / (det * det));
+  return d;
+}
+
+struct Eigenvalues {
+  double l1, l2, r;
+};
+Eigenvalues eigenvaluesOf(const Eigen::Vector3d& c) {
+  const double m = 0.5 * (c[0] + c[1]), a = 0.5 * (c[0] - c[1]);
+  const double r = std::sqrt(a * a + c[2] * c[2]);
+  return {m + r, m - r, r};
+}
+
+}  // namespace
+
+Density relaxedDensity(const Eigen::Vector3d& c, double kappa, double band) {
+  const Eigenvalues e = eigenvaluesOf(c);
+  if (e.l1 <= 1 - band) return {};  // slack: Eq. 4, first case
+  const bool taut = e.l1 >= 1 + band && e.l2 - 1 / std::sqrt(e.l1) >= band;
+  if (taut) return tautDensity(c, kappa);
+  if (e.r < 1e-12) {
+    // Isotropic C inside a band: the eigenvalue map has a kink here; fall back to unsmoothed Eq. 4.
+    return e.l1 >= 1 ? tautDensity(c, kappa) : Density{};
+  }
+  // Bands and the wrinkled regime: psi(l1*, l2*) through the eigenvalues (distinct here, r > 0).
+  const Dual2 c11 = Dual2::variable(c[0], 0), c22 = Dual2::variable(c[1], 1), c12 = Dual2::variable(c[2], 2);
+  const Dual2 m = 0.5 * (c11 + c22), a = 0.5 * (c11 - c22);
+  const Dual2 r = detail::sqrt(a * a + c12 * c12);
+  const Dual2 l1 = m + r, l2 = m - r;
+  const Dual2 l1s = soft(l1 + (-1.0), band) + 1.0;  // l1* = max(l1, 1), smoothed
+  const Dual2 t = detail::inverseSqrt(l1s);         // Eq. 5: energetic minimum of l2
+  const Dual2 l2s = t + soft(l2 - t, band);         // l2* = max(l2, t), smoothed
+  const Dual2 psi = kappa * (l1s + l2s + detail::inverse(l1s * l2s) + (-3.0));
+  return {psi.v, psi.g, psi.h};
+}
+
+ElementRest makeElementRest(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1, const Eigen::Vector2d& X2) {
+  Eigen::Matrix2d Dm;
+  Dm.col(0) = X1 - X0;
+  Dm.col(1) = X2 - X0;
+  ElementRest rest;
+  const double det = Dm.determinant();
+  rest.area = 0.5 * det;
+  if (det != 0) rest.DmInv = Dm.inverse();
+  return rest;
+}
+
+namespace {
+
+// f_i = sum_a w(a, i) x_a: the columns of F as weights of the three corners (F = Ds Dm^-1).
+Eigen::Matrix<double, 3, 2> cornerWeights(const Eigen::Matrix2d& DmInv) {
+  Eigen::Matrix<double, 3, 2> w;
+  w.row(1) = DmInv.row(0);
+  w.row(2) = DmInv.row(1);
+  w.row(0) = -(w.row(1) + w.row(2));
+  return w;
+}
+
+Eigen::Matrix<double, 3, 2> deformationGradient(const ElementRest& rest, const Eigen::Vector3d& x0,
+                                                const Eigen::Vector3d& x1, const Eigen::Vector3d& x2) {
+  Eigen::Matrix<double, 3, 2> Ds;
+  Ds.col(0) = x1 - x0;
+  Ds.col(1) = x2 - x0;
+  return Ds * rest.DmInv;
+}
+
+Eigen::Vector3d cauchyGreen(const Eigen::Matrix<double, 3, 2>& F) {
+  return {F.col(0).squaredNorm(), F.col(1).squaredNorm(), F.col(0).dot(F.col(1))};
+}
+
+template <int N>
+Eigen::Matrix<double, N, N> clampedPsd(const Eigen::Matrix<double, N, N>& m) {
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>> es(m);
+  if (es.eigenvalues().minCoeff() >= 0) return m;
+  return es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() * es.eigenvectors().transpose();
+}
+
+}  // namespace
+
+double membraneElementEnergy(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                             const Eigen::Vector3d& x2, const MembraneMaterial& material) {
+  const Eigen::Vector3d c = cauchyGreen(deformationGradient(rest, x0, x1, x2));
+  const Eigenvalues e = eigenvaluesOf(c);
+  if (e.l1 <= 1 - material.band) return 0;
+  return material.thickness * rest.area * relaxedDensity(c, material.kappa(), material.band).psi;
+}
+
+double membraneElement(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                       const Eigen::Vector3d& x2, const MembraneMaterial& material, const ElementOptions& options,
+                       Vector9d* grad, Matrix9d* hess) {
+  const Eigen::Matrix<double, 3, 2> F = deformationGradient(rest, x0, x1, x2);
+  const Eigen::Vector3d c = cauchyGreen(F);
+  const Density d = relaxedDensity(c, material.kappa(), material.band);
+  const double scale = material.thickness * rest.area;  // element energy h A_e psi~
+  const bool slack = d.psi == 0 && d.grad.isZero(0);
+  if (grad) grad->setZero();
+  if (hess) hess->setZero();
+  if (slack) return 0;
+
+  // J = dc/dx (3x9): dC11 = 2 f1.df1, dC22 = 2 f2.df2, dC12 = f1.df2 + f2.df1, df_i/dx_a = w(a,i) I.
+  const Eigen::Matrix<double, 3, 2> w = cornerWeights(rest.DmInv);
+  const Eigen::Vector3d f1 = F.col(0), f2 = F.col(1);
+  Eigen::Matrix<double, 3, 9> J;
+  for (int a = 0; a < 3; ++a) {
+    J.block<1, 3>(0, 3 * a) = 2 * w(a, 0) * f1.transpose();
+    J.block<1, 3>(1, 3 * a) = 2 * w(a, 1) * f2.transpose();
+    J.block<1, 3>(2, 3 * a) = (w(a, 0) * f2 + w(a, 1) * f1).transpose();
+  }
+  if (grad) *grad = scale * J.transpose() * d.grad;
+  if (hess && options.wantHessian) {
+    // Material part J^T (d2psi/dc2) J plus the geometric part 2 (w_a^T P w_b) I, P = dpsi/dC (symmetric).
+    Eigen::Matrix2d P;
+    P << d.grad[0], 0.5 * d.grad[2], 0.5 * d.grad[2], d.grad[1];
+    Eigen::Matrix3d Hc = d.hess;
+    if (options.projectHessian) {
+      Hc = clampedPsd<3>(Hc);
+      P = clampedPsd<2>(P);
+    }
+    *hess = J.transpose() * Hc * J;
+    const Eigen::Matrix3d Wg = 2 * w * P * w.transpose();
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b) hess->block<3, 3>(3 * a, 3 * b).diagonal().array() += Wg(a, b);
+    *hess *= scale;
+  }
+  return scale * d.psi;
+}
+
+ElementState membraneElementState(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                                  const Eigen::Vector3d& x2, const MembraneMaterial& material) {
+  const Eigen::Matrix<double, 3, 2> F = deformationGradient(rest, x0, x1, x2);
+  const Eigen::Vector3d c = cauchyGreen(F);
+  const Eigenvalues e = eigenvaluesOf(c);
+  ElementState s;
+  s.lambda1 = e.l1;
+  s.lambda2 = e.l2;
+  if (e.l1 < 1) {
+    s.regime = Regime::Slack;
+    s.compression = 1 - std::sqrt(std::max(e.l2, 0.0));
+  } else if (e.l2 < 1 / std::sqrt(e.l1)) {
+    s.regime = Regime::Wrinkled;
+    s.compression = 1 - std::sqrt(std::max(e.l2, 0.0) * std::sqrt(e.l1));
+  } else {
+    s.regime = Regime::Taut;
+  }
+  if (s.regime != Regime::Taut && e.r > 0) {
+    // Eigenvector N2 of C for lambda2: the better conditioned of the two rows of (C - lambda2 I).
+    Eigen::Vector2d n1(c[2], e.l2 - c[0]), n2(e.l2 - c[1], c[2]);
+    const Eigen::Vector2d N2 = n1.squaredNorm() > n2.squaredNorm() ? n1 : n2;
+    const Eigen::Vector3d dir = F * N2;
+    if (dir.norm() > 0) s.direction = dir.normalized();
+  }
+  // Second Piola-Kirchhoff S = 2 dpsi/dC; principal Cauchy stresses are the eigenvalues of S C / sqrt(det C)
+  // times the volume ratio 1 (incompressible: thickness shrinks by sqrt(det C)), i.e. eig(S C).
+  const Density d = relaxedDensity(c, material.kappa(), material.band);
+  Eigen::Matrix2d S, C;
+  S << 2 * d.grad[0], d.grad[2], d.grad[2], 2 * d.grad[1];
+  C << c[0], c[2], c[2], c[1];
+  const Eigen::Matrix2d SC = S * C;
+  const double tr = SC.trace(), det = SC.determinant();
+  const double disc = std::sqrt(std::max(0.25 * tr * tr - det, 0.0));
+  s.stress = std::max(0.5 * tr + disc, 0.0);
+  const double detC = std::max(c[0] * c[1] - c[2] * c[2], 1e-300);
+  s.tension = s.stress * material.thickness / std::sqrt(detC);
+  return s;
+}
+
+}  // namespace billow

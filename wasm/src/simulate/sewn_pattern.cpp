@@ -1,0 +1,211 @@
+// Sewing: union-find over stitched panel vertices, then checks that the outer surface closes.
+#include "simulate/sewn_pattern.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "util/error.hpp"
+
+namespace billow {
+namespace {
+
+struct UnionFind {
+  std::vector<int> parent;
+  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
+  int find(int i) {
+    while (parent[i] != i) i = parent[i] = parent[parent[i]];
+    return i;
+  }
+  void unite(int a, int b) {
+    a = find(a);
+    b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+std::string panelLabel(const Pattern& p, int panel) {
+  const std::string& name = p.panels[panel].name;
+  return name.empty() ? "panel " + std::to_string(panel) : "panel '" + name + "'";
+}
+
+// Edges used by exactly one triangle of the panel, keyed (min, max) -> (from, to) in triangle order.
+std::map<std::pair<int, int>, std::pair<int, int>> boundaryEdges(const Panel& panel) {
+  std::map<std::pair<int, int>, int> count;
+  std::map<std::pair<int, int>, std::pair<int, int>> directed;
+  for (int t = 0; t < panel.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int a = panel.triangles(t, k), b = panel.triangles(t, (k + 1) % 3);
+      const auto key = std::minmax(a, b);
+      ++count[key];
+      directed[key] = {a, b};
+    }
+  std::map<std::pair<int, int>, std::pair<int, int>> out;
+  for (const auto& [key, n] : count)
+    if (n == 1) out[key] = directed[key];
+  return out;
+}
+
+void checkIndices(const Pattern& p, const PatternLimits& limits) {
+  if (p.panels.empty()) throw Error("pattern.empty", "The pattern has no panels.");
+  if (static_cast<long long>(p.panels.size()) > limits.maxPanels)
+    throw Error("pattern.too-large", "The pattern has more than " + std::to_string(limits.maxPanels) + " panels.");
+  long long triangles = 0;
+  for (size_t i = 0; i < p.panels.size(); ++i) {
+    const Panel& panel = p.panels[i];
+    triangles += panel.triangles.rows();
+    if (panel.triangles.rows() == 0) throw Error("pattern.empty", panelLabel(p, int(i)) + " has no triangles.");
+    if (panel.triangles.size() &&
+        (panel.triangles.minCoeff() < 0 || panel.triangles.maxCoeff() >= panel.vertices.rows()))
+      throw Error("pattern.bad-index",
+                  panelLabel(p, int(i)) + " has a triangle that refers to a vertex it does not have.");
+    if (!panel.vertices.allFinite())
+      throw Error("pattern.degenerate", panelLabel(p, int(i)) + " has a vertex with an invalid coordinate.");
+  }
+  if (triangles > limits.maxTriangles)
+    throw Error("pattern.too-large", "The pattern has " + std::to_string(triangles) +
+                                         " triangles; Billow simulates at most " + std::to_string(limits.maxTriangles) +
+                                         ". Use a coarser resolution.");
+  for (size_t s = 0; s < p.stitches.size(); ++s) {
+    const Stitch& st = p.stitches[s];
+    const int n = static_cast<int>(p.panels.size());
+    const bool ok = st.panelA >= 0 && st.panelA < n && st.panelB >= 0 && st.panelB < n && st.vertexA >= 0 &&
+                    st.vertexB >= 0 && st.vertexA < p.panels[st.panelA].vertices.rows() &&
+                    st.vertexB < p.panels[st.panelB].vertices.rows();
+    if (!ok)
+      throw Error("pattern.bad-index",
+                  "Stitch " + std::to_string(s) + " refers to a panel or vertex that does not exist.");
+  }
+}
+
+}  // namespace
+
+SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
+  checkIndices(p, limits);
+  const int numPanels = static_cast<int>(p.panels.size());
+  SewnMesh m;
+  m.panelVertexStart.assign(numPanels + 1, 0);
+  for (int i = 0; i < numPanels; ++i)
+    m.panelVertexStart[i + 1] = m.panelVertexStart[i] + int(p.panels[i].vertices.rows());
+
+  // Stitches join panel boundary vertices only: a stitch in a panel's interior is a drawing mistake.
+  std::vector<std::map<std::pair<int, int>, std::pair<int, int>>> boundary(numPanels);
+  std::vector<std::vector<char>> onBoundary(numPanels);
+  for (int i = 0; i < numPanels; ++i) {
+    boundary[i] = boundaryEdges(p.panels[i]);
+    onBoundary[i].assign(p.panels[i].vertices.rows(), 0);
+    for (const auto& [key, e] : boundary[i]) onBoundary[i][key.first] = onBoundary[i][key.second] = 1;
+  }
+  UnionFind uf(m.panelVertexStart.back());
+  for (size_t s = 0; s < p.stitches.size(); ++s) {
+    const Stitch& st = p.stitches[s];
+    if (!onBoundary[st.panelA][st.vertexA] || !onBoundary[st.panelB][st.vertexB])
+      throw Error("pattern.not-boundary", "Stitch " + std::to_string(s) + " sews a vertex inside " +
+                                              panelLabel(p, onBoundary[st.panelA][st.vertexA] ? st.panelB : st.panelA) +
+                                              "; stitches may only join panel edges.");
+    uf.unite(m.panelVertexStart[st.panelA] + st.vertexA, m.panelVertexStart[st.panelB] + st.vertexB);
+  }
+  // Simulation vertices numbered by first appearance: deterministic for a given file.
+  m.simVertexOf.assign(m.panelVertexStart.back(), -1);
+  std::vector<int> rootIndex(m.panelVertexStart.back(), -1);
+  for (int g = 0; g < m.panelVertexStart.back(); ++g) {
+    const int r = uf.find(g);
+    if (rootIndex[r] < 0) {
+      rootIndex[r] = m.numVertices++;
+      m.stitchedCount.push_back(0);
+    }
+    m.simVertexOf[g] = rootIndex[r];
+    ++m.stitchedCount[rootIndex[r]];
+  }
+
+  long long numTriangles = 0;
+  for (const Panel& panel : p.panels) numTriangles += panel.triangles.rows();
+  m.triangles.resize(numTriangles, 3);
+  m.rest.resize(numTriangles);
+  m.outer.resize(numTriangles);
+  m.trianglePanel.resize(numTriangles);
+  double edgeSum = 0;
+  int t = 0;
+  for (int i = 0; i < numPanels; ++i) {
+    const Panel& panel = p.panels[i];
+    for (int k = 0; k < panel.triangles.rows(); ++k, ++t) {
+      const Eigen::Vector2d X0 = panel.vertices.row(panel.triangles(k, 0)),
+                            X1 = panel.vertices.row(panel.triangles(k, 1)),
+                            X2 = panel.vertices.row(panel.triangles(k, 2));
+      m.rest[t] = makeElementRest(X0, X1, X2);
+      const double scale = std::max({(X1 - X0).squaredNorm(), (X2 - X1).squaredNorm(), (X0 - X2).squaredNorm()});
+      if (!(m.rest[t].area > 1e-12 * scale))
+        throw Error("pattern.degenerate", panelLabel(p, i) + " has a triangle (" + std::to_string(k) +
+                                              ") that is flat, or clockwise: panel triangles must be counterclockwise "
+                                              "as seen from outside.");
+      for (int c = 0; c < 3; ++c) m.triangles(t, c) = m.simVertexOf[m.panelVertexStart[i] + panel.triangles(k, c)];
+      if (m.triangles(t, 0) == m.triangles(t, 1) || m.triangles(t, 1) == m.triangles(t, 2) ||
+          m.triangles(t, 0) == m.triangles(t, 2))
+        throw Error("pattern.degenerate",
+                    panelLabel(p, i) + " has a triangle (" + std::to_string(k) + ") with two corners sewn together.");
+      m.outer[t] = !panel.internal;
+      m.trianglePanel[t] = i;
+      if (!panel.internal) m.outerArea += m.rest[t].area;
+      edgeSum +=
+          std::sqrt((X1 - X0).squaredNorm()) + std::sqrt((X2 - X1).squaredNorm()) + std::sqrt((X0 - X2).squaredNorm());
+    }
+  }
+  m.meanEdgeLength = edgeSum / (3.0 * double(numTriangles));
+
+  // The outer surface must close: every sewn edge is used once in each direction by outer triangles.
+  std::map<std::pair<int, int>, std::pair<int, int>> uses;  // directed edge -> (count, triangle)
+  for (int f = 0; f < m.numTriangles(); ++f) {
+    if (!m.outer[f]) continue;
+    for (int c = 0; c < 3; ++c) {
+      auto& u = uses[{m.triangles(f, c), m.triangles(f, (c + 1) % 3)}];
+      ++u.first;
+      u.second = f;
+    }
+  }
+  if (uses.empty()) throw Error("pattern.open", "The pattern has no outer panel: nothing holds the air.");
+  for (const auto& [e, u] : uses) {
+    const std::string where = panelLabel(p, m.trianglePanel[u.second]);
+    if (u.first > 1)
+      throw Error(
+          uses.count({e.second, e.first}) ? "pattern.non-manifold" : "pattern.orientation",
+          uses.count({e.second, e.first})
+              ? "More than two outer panels meet along one edge of " + where + "; use an internal panel instead."
+              : "Two outer panels along a seam of " + where + " face opposite ways; one panel is flipped.");
+    if (!uses.count({e.second, e.first}))
+      throw Error("pattern.open", "An edge of " + where +
+                                      " is not sewn to another panel, so the balloon would leak. Stitch both ends of "
+                                      "every outer panel edge to a matching edge.");
+  }
+
+  // Warnings: sewn boundary edges of different lengths (DESIGN.md, Eq. 11 wants them equal).
+  std::map<std::pair<int, int>, std::pair<double, int>> sewnLength;  // sim edge -> (length, panel)
+  for (int i = 0; i < numPanels; ++i)
+    for (const auto& [key, e] : boundary[i]) {
+      const int a = m.simVertex(i, e.first), b = m.simVertex(i, e.second);
+      const double len = (p.panels[i].vertices.row(e.first) - p.panels[i].vertices.row(e.second)).norm();
+      auto it = sewnLength.find(std::minmax(a, b));
+      if (it == sewnLength.end()) {
+        sewnLength[std::minmax(a, b)] = {len, i};
+        continue;
+      }
+      const double mismatch = std::abs(len - it->second.first) / std::max(len, it->second.first);
+      if (mismatch > 1e-3 && m.warnings.size() < 100)  // a badly drawn pattern would otherwise list every edge
+        m.warnings.push_back({"pattern.seam-length",
+                              "A seam between " + panelLabel(p, it->second.second) + " and " + panelLabel(p, i) +
+                                  " joins edges whose lengths differ by " + std::to_string(mismatch * 100) +
+                                  " %; the seam will pucker.",
+                              mismatch});
+    }
+  return m;
+}
+
+Triangles outerTriangles(const SewnMesh& mesh) {
+  Triangles out(std::count(mesh.outer.begin(), mesh.outer.end(), 1), 3);
+  int k = 0;
+  for (int f = 0; f < mesh.numTriangles(); ++f)
+    if (mesh.outer[f]) out.row(k++) = mesh.triangles.row(f);
+  return out;
+}
+
+}  // namespace billow
