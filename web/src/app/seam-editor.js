@@ -212,6 +212,13 @@ export class SeamEditor {
   // The segmentation of the target by the current seams (latest request wins).
   async segment() {
     const ticket = ++this.segmentTicket;
+    if (!this.design.seams.length) {
+      // Nothing drawn yet is not a problem to report: the whole target is simply one piece.
+      this.segmentation = null;
+      this.pane.setSegments({ segments: [] });
+      for (const fn of this.listeners) fn();
+      return;
+    }
     const seams = this.design.seams.map(({ points, closed, weight }) => ({ points, closed, weight }));
     try {
       const result = await this.app.client.request(Op.segment, { seams });

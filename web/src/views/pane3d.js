@@ -28,7 +28,7 @@ export class Pane3D {
     const sphere = new Box3().setFromObject(object).getBoundingSphere(new Sphere());
     if (!Number.isFinite(sphere.radius) || sphere.radius <= 0) return;
     const direction = new Vector3(0.35, 0.3, 1).normalize();
-    const distance = (sphere.radius / Math.sin((this.camera.fov * Math.PI) / 360)) * 0.95;
+    const distance = (sphere.radius / Math.sin((this.camera.fov * Math.PI) / 360)) * 1.05;
     this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;

@@ -1,0 +1,62 @@
+// Inflating patterns in the browser: the Mylar example from the menu streams its shape, ends with the
+// compression overlay and figures, and shows its two panels; an imported pattern file does the same;
+// a broken pattern gets a message and the last good result stays.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { serve, launch, openPage, screenshot, paintedFraction } from './harness.mjs';
+
+let server;
+let context;
+before(async () => {
+  server = await serve();
+  context = await launch();
+});
+after(async () => {
+  await context?.close();
+  await server?.close();
+});
+
+const waitInflated = (page) =>
+  page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent), null, { timeout: 60000 });
+
+test('the Mylar example inflates: shape, wrinkle overlay, figures and two labelled panels', async () => {
+  const page = await openPage(context, server.url);
+  const progress = [];
+  await page.exposeFunction('recordStatus', (t) => progress.push(t));
+  await page.evaluate(() => new MutationObserver(() => window.recordStatus(document.querySelector('#status').textContent))
+    .observe(document.querySelector('#status'), { childList: true, characterData: true, subtree: true }));
+  await page.selectOption('#example-select', 'pattern:mylar');
+  await waitInflated(page);
+  assert.ok(progress.some((t) => /Inflating .*step \d+/.test(t)), `progress was shown: ${progress.slice(0, 5)}`);
+  const volume = await page.textContent('#inflated-stats dd[data-stat="volume"]');
+  const liters = parseFloat(volume);
+  // Two discs of radius 0.3 m: Paulsen's balloon holds about 0.0329 m3 (rim 0.229 m, thickness 0.274 m).
+  assert.ok(liters > 28 && liters < 38, `volume ${volume}`);
+  assert.ok(await page.isVisible('#pane-inflated .legend'));
+  const labels = await page.$$eval('.panel-label', (els) => els.map((e) => e.textContent));
+  assert.equal(labels.length, 2);
+  await page.waitForTimeout(200);
+  assert.ok((await paintedFraction(page, '#pane-inflated .pane-body')) > 0.03, 'the inflated shape is drawn');
+  assert.ok((await paintedFraction(page, '#pane-pattern .pane-body')) > 0.03, 'the panels are drawn');
+  await screenshot(page, 'inflate-mylar');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('an imported pattern file inflates; a broken one gets a message and the last result stays', async () => {
+  const page = await openPage(context, server.url);
+  const text = await page.evaluate(async () => (await window.billow.client.request('examplePattern', { name: 'pillow', triangles: 800 })).patternText);
+  await page.setInputFiles('#file-input', { name: 'pillow.json', mimeType: 'application/json', buffer: Buffer.from(text) });
+  await waitInflated(page);
+  const volume = await page.textContent('#inflated-stats dd[data-stat="volume"]');
+  const broken = JSON.parse(text);
+  broken.stitches[0][1] = 99999; // a stitch to a vertex that does not exist
+  await page.setInputFiles('#file-input', { name: 'broken.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(broken)) });
+  const message = await page.locator('.message.error', { hasText: 'broken.json' }).textContent();
+  assert.match(message, /could not be inflated/);
+  assert.equal(await page.textContent('#inflated-stats dd[data-stat="volume"]'), volume, 'the last good result stays');
+  await page.setInputFiles('#file-input', { name: 'junk.json', mimeType: 'application/json', buffer: Buffer.from('{"format": "billow-pattern", "version": 7}') });
+  await page.locator('.message.error', { hasText: 'junk.json' }).waitFor();
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
