@@ -135,3 +135,32 @@ test('Escape cancels a seam being drawn and Backspace removes its last point', a
   assert.deepEqual(page.errors, []);
   await page.close();
 });
+
+test('an internal connection joins two seams: listed, drawn translucent, undoable and deletable', async () => {
+  const page = await openPage(context, server.url);
+  await openSphere(page);
+  await page.keyboard.press('d');
+  const [a, b, c, d] = await surfaceScreenPoints(page, [[0.6, 0.6, 1], [0.1, 0.7, 1], [-0.6, -0.2, 1], [-0.1, -0.5, 1]]);
+  await clickAt(page, a);
+  await clickAt(page, b);
+  await page.keyboard.press('Enter');
+  await clickAt(page, c);
+  await clickAt(page, d);
+  await page.keyboard.press('Enter');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 2);
+  await page.click('#seam-panel .seam:nth-child(1) .name');
+  await page.click('#seam-panel .seam:nth-child(2) .connect');
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design.connections), [{ seams: [0, 1] }]);
+  assert.match(await page.textContent('#seam-panel .connection'), /Internal panel: Seam 1 ↔ Seam 2/);
+  assert.equal(await page.evaluate(() => window.billow.app.panes.target.connections.children.length), 1);
+  await page.keyboard.press('Control+z');
+  assert.equal(await page.evaluate(() => window.billow.app.design.connections.length), 0);
+  await page.keyboard.press('Control+Shift+z');
+  assert.equal(await page.evaluate(() => window.billow.app.design.connections.length), 1);
+  await screenshot(page, 'seams-connection');
+  await page.click('#seam-panel .connection .delete');
+  assert.equal(await page.evaluate(() => window.billow.app.design.connections.length), 0);
+  assert.equal(await page.evaluate(() => window.billow.app.panes.target.connections.children.length), 0);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

@@ -36,3 +36,14 @@ test('deleting a seam drops the internal connections that use it and renumbers t
   assert.deepEqual(after.connections, [{ seams: [1, 2] }]);
   assert.equal(cmd.deleteSeam(d, 9), d);
 });
+
+test('internal connections join two different seams once, and can be deleted', () => {
+  let d = newDesign();
+  for (let i = 0; i < 3; i++) d = cmd.addSeam(d, { points: [p(i), p(i + 10)], closed: false });
+  const c1 = cmd.addConnection(d, 0, 2);
+  assert.deepEqual(c1.connections, [{ seams: [0, 2] }]);
+  assert.equal(cmd.addConnection(c1, 2, 0), c1, 'no duplicate');
+  assert.equal(cmd.addConnection(c1, 1, 1), c1, 'not to itself');
+  assert.equal(cmd.addConnection(c1, 1, 7), c1, 'not to a missing seam');
+  assert.deepEqual(cmd.deleteConnection(c1, 0).connections, []);
+});

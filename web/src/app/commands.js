@@ -100,3 +100,16 @@ function liesOnCurve(p, host) {
   }
   return false;
 }
+
+// Internal connections (paper Sec. 3.2): an internal panel spanning two seams.
+export function addConnection(design, a, b) {
+  if (a === b || !design.seams[a] || !design.seams[b]) return design;
+  const exists = design.connections.some((c) => c.seams.includes(a) && c.seams.includes(b));
+  if (exists) return design;
+  return { ...design, connections: [...design.connections, { seams: [a, b] }] };
+}
+
+export function deleteConnection(design, index) {
+  if (!design.connections[index]) return design;
+  return { ...design, connections: design.connections.filter((_, k) => k !== index) };
+}

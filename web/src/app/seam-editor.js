@@ -95,6 +95,7 @@ export class SeamEditor {
       selectedPoint: this.selection?.seam === i ? this.selection.index : null,
     }));
     this.pane.seams.update(seams, this.preview);
+    this.pane.setConnections(this.design.connections.map((c) => c.seams.map((k) => traces[k]?.curve ?? null)));
     this.pane.requestRender();
     for (const fn of this.listeners) fn();
   }
@@ -206,6 +207,16 @@ export class SeamEditor {
 
   setWeight(seam, weight) {
     this.app.commitDesign(cmd.setSeamWeight(this.design, seam, weight), { mergeKey: `weight:${seam}` });
+    this.draw();
+  }
+
+  connect(a, b) {
+    this.app.commitDesign(cmd.addConnection(this.design, a, b));
+    this.draw();
+  }
+
+  deleteConnection(index) {
+    this.app.commitDesign(cmd.deleteConnection(this.design, index));
     this.draw();
   }
 

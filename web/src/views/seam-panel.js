@@ -28,8 +28,9 @@ export class SeamPanel {
     });
     this.summary = el('div', 'summary');
     this.list = el('ol', 'seam-list');
+    this.connections = el('ul', 'connection-list');
     this.problems = el('ul', 'problems');
-    container.append(this.toolbar, this.summary, this.list, this.problems);
+    container.append(this.toolbar, this.summary, this.list, this.connections, this.problems);
     editor.onChange(() => this.render());
     this.render();
   }
@@ -41,7 +42,8 @@ export class SeamPanel {
     this.summary.textContent = design.seams.length
       ? `${design.seams.length} seam${design.seams.length === 1 ? '' : 's'}${count ? `, ${count} segment${count === 1 ? '' : 's'}` : ''}`
       : 'No seams yet: choose "Draw seam" and click on the target.';
-    this.list.replaceChildren(...design.seams.map((s, i) => this.seamRow(s, i, selection?.seam === i)));
+    this.list.replaceChildren(...design.seams.map((s, i) => this.seamRow(s, i, selection)));
+    this.connections.replaceChildren(...design.connections.map((c, i) => this.connectionRow(c, i)));
     this.problems.replaceChildren(
       ...(segmentation?.problems ?? []).map((p) => {
         const li = el('li', `problem ${p.severity}`, p.message);
@@ -51,7 +53,20 @@ export class SeamPanel {
     );
   }
 
-  seamRow(seam, i, selected) {
+  connectionRow(connection, i) {
+    const names = connection.seams.map((k) => this.editor.design.seams[k]?.name ?? `Seam ${k + 1}`);
+    const li = el('li', 'connection', `Internal panel: ${names[0]} ↔ ${names[1]}`);
+    const remove = el('button', 'delete', '×');
+    remove.type = 'button';
+    remove.title = 'Delete this internal connection';
+    remove.setAttribute('aria-label', `Delete the internal panel between ${names[0]} and ${names[1]}`);
+    remove.addEventListener('click', () => this.editor.deleteConnection(i));
+    li.append(remove);
+    return li;
+  }
+
+  seamRow(seam, i, selection) {
+    const selected = selection?.seam === i;
     const li = el('li', selected ? 'seam selected' : 'seam');
     const name = el('button', 'name', seam.name ?? `Seam ${i + 1}`);
     name.type = 'button';
@@ -74,6 +89,15 @@ export class SeamPanel {
     remove.setAttribute('aria-label', `Delete ${seam.name ?? `seam ${i + 1}`}`);
     remove.addEventListener('click', () => this.editor.deleteSeam(i));
     li.append(swatch, name, weight, remove);
+    if (selection && !selected) {
+      // With a seam selected, any other seam can be joined to it by an internal panel.
+      const connect = el('button', 'connect', '⇄');
+      connect.type = 'button';
+      connect.title = `Join this seam to the selected seam with an internal panel`;
+      connect.setAttribute('aria-label', `Connect ${seam.name ?? `seam ${i + 1}`} to the selected seam`);
+      connect.addEventListener('click', () => this.editor.connect(selection.seam, i));
+      li.append(connect);
+    }
     return li;
   }
 }

@@ -1,11 +1,52 @@
 // The target pane: the target mesh at its real size (meters), its seams and segments, and picking of
 // surface points (triangle + barycentric coordinates) for the seam tool.
 import {
-  BufferAttribute, BufferGeometry, Group, Mesh, MeshStandardMaterial, Raycaster, Triangle, Vector2, Vector3,
+  BufferAttribute, BufferGeometry, DoubleSide, Group, Mesh, MeshStandardMaterial, Raycaster, Triangle, Vector2, Vector3,
 } from 'three';
 import { Pane3D } from './pane3d.js';
 import { SeamLayer } from './seam-layer.js';
 import { segmentColor, PROBLEM_COLOR } from './palette.js';
+
+const CONNECTION_MATERIAL = new MeshStandardMaterial({
+  // Internal panels lie inside the target: drawn through it, translucent.
+  color: 0xcc79a7, transparent: true, opacity: 0.3, side: DoubleSide, depthWrite: false, depthTest: false,
+});
+
+// n+1 points at equal arc-length steps along a polyline (flat x,y,z array).
+function resample(curve, n) {
+  const count = curve.length / 3;
+  const cumulative = [0];
+  for (let i = 1; i < count; i++)
+    cumulative.push(cumulative[i - 1] + Math.hypot(curve[3 * i] - curve[3 * i - 3], curve[3 * i + 1] - curve[3 * i - 2], curve[3 * i + 2] - curve[3 * i - 1]));
+  const total = cumulative[count - 1] || 1;
+  const out = [];
+  let j = 1;
+  for (let k = 0; k <= n; k++) {
+    const s = (k / n) * total;
+    while (j < count - 1 && cumulative[j] < s) j++;
+    const t = (s - cumulative[j - 1]) / (cumulative[j] - cumulative[j - 1] || 1);
+    out.push([0, 1, 2].map((c) => curve[3 * (j - 1) + c] * (1 - t) + curve[3 * j + c] * t));
+  }
+  return out;
+}
+
+function ruledSurface(a, b, n) {
+  const pa = resample(a, n);
+  const pb = resample(b, n);
+  // Pair the curves in the direction that gives the shorter rulings.
+  const direct = pa.reduce((s, p, k) => s + Math.hypot(...p.map((x, c) => x - pb[k][c])), 0);
+  const reversed = pa.reduce((s, p, k) => s + Math.hypot(...p.map((x, c) => x - pb[n - k][c])), 0);
+  if (reversed < direct) pb.reverse();
+  const position = new Float32Array((n + 1) * 6);
+  pa.forEach((p, k) => position.set([...p, ...pb[k]], 6 * k));
+  const index = [];
+  for (let k = 0; k < n; k++) index.push(2 * k, 2 * k + 1, 2 * k + 2, 2 * k + 1, 2 * k + 3, 2 * k + 2);
+  const geometry = new BufferGeometry();
+  geometry.setAttribute('position', new BufferAttribute(position, 3));
+  geometry.setIndex(index);
+  geometry.computeVertexNormals();
+  return geometry;
+}
 
 const PUSH_BACK = { polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 };
 
@@ -40,6 +81,7 @@ export class TargetPane extends Pane3D {
     this.material.visible = true;
     this.clearSegments();
     this.mesh = new Mesh(geometry, this.material);
+    this.connections = null;
     this.seams = new SeamLayer(geometry.boundingSphere.radius * 0.012);
     this.mesh.add(this.seams);
     this.mesh.scale.setScalar(0); // forces setScale to place and frame it
@@ -89,6 +131,29 @@ export class TargetPane extends Pane3D {
     this.segmentsMesh.geometry.dispose();
     this.segmentsMesh.material.dispose();
     this.segmentsMesh = null;
+  }
+
+  // Internal connections: a translucent ruled surface between the two seam curves (points matched by
+  // arc length), showing where the internal panel will be. curves: [[curveA, curveB] | nulls].
+  setConnections(pairs) {
+    if (!this.mesh) return;
+    if (!this.connections) {
+      this.connections = new Group();
+      this.mesh.add(this.connections);
+    }
+    for (const child of [...this.connections.children]) {
+      this.connections.remove(child);
+      child.geometry.dispose();
+    }
+    for (const [a, b] of pairs) {
+      if (!a || !b) continue;
+      const geometry = ruledSurface(a, b, 32);
+      const panel = new Mesh(geometry, CONNECTION_MATERIAL);
+      panel.renderOrder = 1;
+      panel.raycast = () => {}; // seams are picked on the target, through the translucent panel
+      this.connections.add(panel);
+    }
+    this.requestRender();
   }
 
   ndc(event) {
