@@ -174,3 +174,25 @@ test('a crashed solver is replaced, the designer is told, and work goes on', asy
   assert.deepEqual(page.errors.filter((e) => !/Aborted|RuntimeError|unreachable/.test(e)), []);
   await page.close();
 });
+
+test('a mesh far beyond the interactive budget is refused quickly with a message', async () => {
+  const page = await fresh();
+  const triangles = 600000;
+  const stl = Buffer.alloc(84 + 50 * triangles);
+  stl.writeUInt32LE(triangles, 80);
+  for (let i = 0; i < triangles; i++) {
+    const o = 84 + 50 * i + 12;
+    stl.writeFloatLE(i, o); stl.writeFloatLE(i + 1, o + 12); stl.writeFloatLE(1, o + 16); stl.writeFloatLE(i, o + 24); stl.writeFloatLE(2, o + 28);
+  }
+  const started = Date.now();
+  await page.setInputFiles('#file-input', { name: 'huge.stl', mimeType: 'model/stl', buffer: stl });
+  const message = await page.locator('.message.error', { hasText: 'huge.stl' }).textContent({ timeout: 60000 });
+  assert.match(message, /600,000 triangles/);
+  assert.match(message, /Simplify/);
+  assert.ok(Date.now() - started < 30000, 'refused without a long freeze');
+  assert.equal(await stat(page, 'file'), 'spot.obj', 'the design is unchanged');
+  // The page stayed responsive meanwhile: the seam panel still answers.
+  assert.ok(await page.isVisible('#seam-panel'));
+  assertNoErrors(page);
+  await page.close();
+});

@@ -8,6 +8,7 @@ import { mergeVertices } from 'three/addons/utils/BufferGeometryUtils.js';
 import { SolverError } from '../worker/protocol.js';
 
 export const MAX_FILE_BYTES = 256 * 1024 * 1024;
+export const MAX_TRIANGLES = 500000; // the solver's interactive budget (also checked in C++ validation)
 export const MESH_EXTENSIONS = ['obj', 'stl', 'ply'];
 
 export function extensionOf(fileName) {
@@ -68,6 +69,11 @@ export function parseMesh(fileName, bytes) {
   }
   const { positions, indices } = positionsAndIndices(geometries);
   if (indices.length < 3) fail('mesh.empty', `"${fileName}" contains no triangles, so there is no shape to design on.`);
+  if (indices.length / 3 > MAX_TRIANGLES)
+    fail(
+      'mesh.too-large',
+      `"${fileName}" has ${(indices.length / 3).toLocaleString('en')} triangles; Billow works interactively up to ${MAX_TRIANGLES.toLocaleString('en')}. Simplify it (for example with Decimate in Blender or MeshLab) and open it again.`,
+    );
   for (const p of positions)
     if (!Number.isFinite(p))
       fail('mesh.not-finite', `"${fileName}" has vertices with invalid coordinates (not a number). The file is damaged.`);
