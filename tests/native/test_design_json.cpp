@@ -1,0 +1,290 @@
+// The design file (io/design_json.hpp): round trip with unknown fields kept, every bad field refused with a
+// message naming it (or defaulted with a warning when not strict), 3D seam points projected onto the target,
+// targets from examples, files and inline meshes; and the CLI commands built on it (billow segment, design).
+#include <gtest/gtest.h>
+#include <unistd.h>
+
+#include <climits>
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+
+#include "io/design_json.hpp"
+#include "io/mesh_file.hpp"
+#include "io/pattern_json.hpp"
+#include "pattern/design_scene.hpp"
+#include "test_support.hpp"
+#include "util/error.hpp"
+
+using namespace billow;
+using nlohmann::json;
+
+namespace {
+
+std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
+std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
+
+json minimal() {
+  return json::parse(R"({"format": "billow-design", "version": 1, "target": {"example": "sphere"},
+    "size": {"height": 0.5}, "seams": [{"closed": true, "points": [[1, 0, 0], [-0.5, 0, 0.8], [-0.5, 0, -0.8]]}],
+    "material": {"thickness": 2.5e-5, "youngs_modulus": 3e9}, "pressure": 1000})");
+}
+
+// Reading `doc` strictly fails with `code`, and the message mentions `words`.
+void expectRefused(const json& doc, const std::string& code, const std::string& words) {
+  try {
+    readDesignJson(doc.dump());
+    ADD_FAILURE() << "accepted: " << doc.dump();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, code) << doc.dump();
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+json with(json doc, const json::json_pointer& where, const json& value) {
+  doc[where] = value;
+  return doc;
+}
+
+}  // namespace
+
+TEST(DesignJson, FixtureRoundTripKeepsEveryFieldAndUnknownOnes) {
+  json doc = json::parse(readFileBytes(dataPath("sphere-gores.billow.json")));
+  doc["seams"][1]["color"] = "#ff8800";  // unknown fields, at the top and inside a seam
+  doc["app"] = {{"camera", {1, 2, 3}}};
+  const Design a = readDesignJson(doc.dump());
+  ASSERT_EQ(a.seams.size(), 3u);
+  EXPECT_EQ(a.target.kind, DesignTarget::Obj);
+  EXPECT_EQ(a.target.name, "../../web/public/examples/sphere.obj");
+  EXPECT_DOUBLE_EQ(a.height, 0.5);
+  EXPECT_TRUE(a.seams[0].points[0].onSurface);
+  EXPECT_EQ(a.seams[0].points[0].surface.face, 20);
+  EXPECT_FALSE(a.seams[0].points[1].onSurface);
+  EXPECT_EQ(a.seams[2].name, "meridian 3");
+  const std::string text = writeDesignJson(a);
+  const Design b = readDesignJson(text);
+  EXPECT_EQ(writeDesignJson(b), text);
+  const json back = json::parse(text);
+  EXPECT_EQ(back["seams"][1]["color"], "#ff8800");
+  EXPECT_EQ(back["app"]["camera"][2], 3);
+  EXPECT_EQ(back["seams"][0]["points"][0]["face"], 20);
+  EXPECT_EQ(b.seams[1].points[1].position, a.seams[1].points[1].position);
+  EXPECT_DOUBLE_EQ(b.material.youngsModulus, 3e9);
+  EXPECT_DOUBLE_EQ(b.pressure, 1000);
+}
+
+TEST(DesignJson, DefaultsWhenFieldsAreMissing) {
+  const Design d = readDesignJson(R"({"format": "billow-design", "version": 1})");
+  EXPECT_EQ(d.target.kind, DesignTarget::Example);
+  EXPECT_EQ(d.target.name, "spot");
+  EXPECT_DOUBLE_EQ(d.height, 0.6);
+  EXPECT_DOUBLE_EQ(d.scale, 0);
+  EXPECT_TRUE(d.seams.empty());
+  EXPECT_DOUBLE_EQ(d.material.thickness, 25e-6);
+  EXPECT_DOUBLE_EQ(d.material.youngsModulus, 3e9);
+  EXPECT_DOUBLE_EQ(d.pressure, 1000);
+  const Design s = readDesignJson(with(minimal(), "/size"_json_pointer, {{"scale", 0.01}}).dump());
+  EXPECT_DOUBLE_EQ(s.scale, 0.01);
+  EXPECT_NE(writeDesignJson(s).find("\"scale\""), std::string::npos);
+}
+
+TEST(DesignJson, EveryBadFieldIsRefusedWithItsName) {
+  for (const char* text : {"not json", "[1, 2]", "{\"format\": \"billow-design\""}) {
+    try {
+      readDesignJson(text);
+      ADD_FAILURE() << text;
+    } catch (const Error& e) {
+      EXPECT_EQ(e.code, "design.json");
+    }
+  }
+  const json m = minimal();
+  expectRefused(with(m, "/format"_json_pointer, "billow-pattern"), "design.unknown-format", "not a Billow design");
+  expectRefused(with(m, "/version"_json_pointer, 2), "design.version", "newer Billow");
+  expectRefused(with(m, "/version"_json_pointer, "one"), "design.bad-value", "version");
+  expectRefused(with(m, "/target"_json_pointer, 3), "design.bad-value", "target");
+  expectRefused(with(m, "/target"_json_pointer, {{"example", "spot"}, {"obj", "a.obj"}}), "design.bad-value",
+                "exactly one");
+  expectRefused(with(m, "/target"_json_pointer, {{"example", "../secret"}}), "design.bad-value", "no example");
+  expectRefused(with(m, "/target"_json_pointer, {{"obj", ""}}), "design.bad-value", "obj");
+  const json tetra = {{"vertices", {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}},
+                      {"triangles", {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}}}};
+  expectRefused(with(m, "/target"_json_pointer, with(tetra, "/vertices/1"_json_pointer, {1, "x", 0})),
+                "design.bad-value", "vertex 1");
+  expectRefused(with(m, "/target"_json_pointer, with(tetra, "/triangles/2/1"_json_pointer, 4)), "design.bad-value",
+                "triangle 2");
+  expectRefused(with(m, "/size/height"_json_pointer, 0.001), "design.bad-value", "size.height");
+  expectRefused(with(m, "/size/height"_json_pointer, "tall"), "design.bad-value", "size.height");
+  expectRefused(with(m, "/size"_json_pointer, {{"height", 1}, {"scale", 2}}), "design.bad-value", "not both");
+  expectRefused(with(m, "/size"_json_pointer, 0.6), "design.bad-value", "size");
+  expectRefused(with(m, "/seams"_json_pointer, {{"points", 1}}), "design.bad-value", "seams");
+  expectRefused(with(m, "/seams"_json_pointer, json::array({3})), "design.bad-value", "seams[0]");
+  expectRefused(with(m, "/seams/0/points"_json_pointer, {{1, 0, 0}, {0, 1, 0}}), "design.bad-value", "at least 3");
+  expectRefused(with(m, "/seams/0/closed"_json_pointer, "yes"), "design.bad-value", "seams[0].closed");
+  expectRefused(with(m, "/seams/0/weight"_json_pointer, -1), "design.bad-value", "seams[0].weight");
+  expectRefused(with(m, "/seams/0/name"_json_pointer, 7), "design.bad-value", "seams[0].name");
+  expectRefused(with(m, "/seams/0/points/1"_json_pointer, {1, 2}), "design.bad-value", "seams[0].points[1]");
+  expectRefused(with(m, "/seams/0/points/1"_json_pointer, {{"face", -1}, {"bary", {1, 0, 0}}}), "design.bad-value",
+                "no triangle");
+  expectRefused(with(m, "/seams/0/points/1"_json_pointer, {{"face", 3}, {"bary", {1.5, -0.5, 0}}}), "design.bad-value",
+                "outside its triangle");
+  expectRefused(with(m, "/seams/0/points/1"_json_pointer, {{"face", 3}, {"bary", {1, 0}}}), "design.bad-value",
+                "three barycentric");
+  expectRefused(with(m, "/connections"_json_pointer, {{{"seams", {0, 5}}}}), "design.bad-value", "connections[0]");
+  expectRefused(with(m, "/connections"_json_pointer, 5), "design.bad-value", "connections");
+  expectRefused(with(m, "/material/thickness"_json_pointer, 0), "design.bad-value", "material.thickness");
+  expectRefused(with(m, "/material/youngs_modulus"_json_pointer, -3), "design.bad-value", "material.youngs_modulus");
+  expectRefused(with(m, "/material"_json_pointer, "foil"), "design.bad-value", "material");
+  expectRefused(with(m, "/pressure"_json_pointer, -10), "design.bad-value", "pressure");
+  expectRefused(with(m, "/pressure"_json_pointer, nullptr), "design.bad-value", "pressure");
+}
+
+TEST(DesignJson, LenientReadingFallsBackWithWarnings) {
+  json doc = minimal();
+  doc["pressure"] = -5;
+  doc["seams"].push_back({{"points", {{1, 0, 0}}}});  // too few points: dropped
+  doc["material"]["thickness"] = "thin";
+  DesignReadOptions o;
+  o.strict = false;
+  std::vector<DesignWarning> warnings;
+  const Design d = readDesignJson(doc.dump(), o, &warnings);
+  EXPECT_DOUBLE_EQ(d.pressure, 1000);
+  EXPECT_DOUBLE_EQ(d.material.thickness, 25e-6);
+  EXPECT_EQ(d.seams.size(), 1u);
+  ASSERT_EQ(warnings.size(), 3u);
+  EXPECT_EQ(warnings[0].field, "seams[1].points");
+}
+
+TEST(DesignJson, ThreeDimensionalPointsAreProjectedOntoTheScaledTarget) {
+  const std::string path = dataPath("sphere-equator.billow.json");
+  const Design d = readDesignJson(readFileBytes(path));
+  const auto scene = makeDesignScene(d, path, {examplesDir()});
+  EXPECT_NEAR(scene->scale, 0.25, 1e-6);
+  const std::vector<SeamSpec> specs = designSeamSpecs(d, scene->target, *scene->projector, scene->scale);
+  ASSERT_EQ(specs.size(), 1u);
+  ASSERT_EQ(specs[0].controls.size(), 3u);
+  EXPECT_TRUE(specs[0].closed);
+  for (size_t i = 0; i < 3; ++i) {
+    const Eigen::Vector3d onSurface = position(scene->target, specs[0].controls[i]);
+    EXPECT_NEAR(onSurface.norm(), 0.25, 0.25 * 5e-3);  // on the icosphere (its flat triangles sag < 0.5 %)
+    EXPECT_LT((onSurface - 0.25 * d.seams[0].points[i].position).norm(), 0.25 * 5e-3);
+  }
+  // A surface point on a triangle the target does not have.
+  Design bad = d;
+  bad.seams[0].points[0].onSurface = true;
+  bad.seams[0].points[0].surface.face = 99999;
+  try {
+    designSeamSpecs(bad, scene->target, *scene->projector, scene->scale);
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "design.bad-value");
+    EXPECT_NE(std::string(e.what()).find("another target"), std::string::npos);
+  }
+}
+
+TEST(DesignJson, TargetsFromExamplesFilesAndInlineMeshes) {
+  Design d = readDesignJson(minimal().dump());
+  d.target.name = "no-such-example";
+  try {
+    loadDesignTarget(d, dataPath("x.billow.json"), {examplesDir()});
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "design.example-not-found");
+  }
+  // Relative obj paths resolve against the design file's folder.
+  const TriMesh sphere = loadDesignTarget(readDesignJson(readFileBytes(dataPath("sphere-gores.billow.json"))),
+                                          dataPath("sphere-gores.billow.json"), {});
+  EXPECT_EQ(sphere.numTriangles(), 1280);
+  // An inline octahedron, 2 units high, made 1 m high.
+  json doc = minimal();
+  doc["target"] = {
+      {"vertices", {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}}},
+      {"triangles", {{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5}, {3, 1, 5}, {0, 3, 5}}}};
+  doc["size"] = {{"height", 1.0}};
+  doc["seams"] = json::array();
+  const Design inl = readDesignJson(doc.dump());
+  EXPECT_EQ(inl.target.kind, DesignTarget::Inline);
+  EXPECT_EQ(readDesignJson(writeDesignJson(inl)).target.mesh.F, inl.target.mesh.F);
+  const auto scene = makeDesignScene(inl, "", {});
+  EXPECT_DOUBLE_EQ(scene->scale, 0.5);
+  EXPECT_DOUBLE_EQ(scene->target.V.col(1).maxCoeff(), 0.5);
+  // BILLOW_EXAMPLES is searched first.
+  setenv("BILLOW_EXAMPLES", "/nowhere:/elsewhere", 1);
+  const std::vector<std::string> dirs = exampleSearchPath("/opt/billow/bin");
+  unsetenv("BILLOW_EXAMPLES");
+  ASSERT_EQ(dirs.size(), 3u);
+  EXPECT_EQ(dirs[1], "/elsewhere");
+  EXPECT_EQ(dirs[2], "/opt/billow/bin/../../web/public/examples");
+}
+
+// ---- The CLI (native only: it runs the billow executable next to this test binary) ----
+
+namespace {
+
+std::string cli() {
+  char buf[PATH_MAX];
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  const std::string exe(buf, n > 0 ? static_cast<size_t>(n) : 0);
+  return exe.substr(0, exe.find_last_of('/')) + "/billow";
+}
+
+int run(const std::string& command) {
+  const int status = std::system((command + " 2>/dev/null").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+}  // namespace
+
+TEST(CliDesign, SegmentWritesSegmentsAndFailsOnNonDisks) {
+#ifdef __EMSCRIPTEN__
+  GTEST_SKIP() << "the CLI is native only";
+#else
+  const std::string out = testing::TempDir() + "billow-segments.json";
+  ASSERT_EQ(run(cli() + " segment " + dataPath("sphere-gores.billow.json") + " --out " + out), 0);
+  const json s = json::parse(readFileBytes(out));
+  EXPECT_EQ(s["format"], "billow-segments");
+  ASSERT_EQ(s["segments"].size(), 3u);
+  double area = 0;
+  for (const auto& g : s["segments"]) {
+    EXPECT_TRUE(g["isDisk"].get<bool>());
+    EXPECT_EQ(g["boundary"].size(), 1u);
+    EXPECT_EQ(g["boundary"][0].size(), 2u);  // two meridian pieces
+    area += g["area"].get<double>();
+  }
+  EXPECT_NEAR(area, 4 * 3.14159265 * 0.0625, 0.01 * 0.785);  // m^2: the 0.5 m sphere
+  EXPECT_TRUE(s["ok"].get<bool>());
+  // No seam: one closed segment, an error, a non-zero exit, and the file is still written.
+  json doc = json::parse(readFileBytes(dataPath("sphere-equator.billow.json")));
+  doc["seams"] = json::array();
+  const std::string design = testing::TempDir() + "billow-noseam.billow.json";
+  std::ofstream(design) << doc.dump();
+  EXPECT_EQ(run(cli() + " segment " + design + " --out " + out), 1);
+  EXPECT_FALSE(json::parse(readFileBytes(out))["ok"].get<bool>());
+  EXPECT_EQ(run(cli() + " segment " + design), 2);  // usage
+#endif
+}
+
+TEST(CliDesign, DesignWritesPatternInflatedShapeAndReport) {
+#ifdef __EMSCRIPTEN__
+  GTEST_SKIP() << "the CLI is native only";
+#else
+  const std::string dir = testing::TempDir() + "billow-design-equator";
+  ASSERT_EQ(run(cli() + " design " + dataPath("sphere-equator.billow.json") + " --out-dir " + dir +
+                " --no-optimize --resolution 1200"),
+            0);
+  std::vector<PatternWarning> warnings;
+  const Pattern p = readPatternJson(readFileBytes(dir + "/pattern.json"), &warnings);
+  ASSERT_EQ(p.panels.size(), 2u);
+  ASSERT_EQ(p.inflated.size(), 2u);
+  const SewnMesh sewn = sewPattern(p);
+  const TriMesh inflated = readMeshBytes(readFileBytes(dir + "/inflated.obj"), "inflated.obj");
+  EXPECT_EQ(inflated.numVertices(), sewn.numVertices);
+  EXPECT_EQ(inflated.numTriangles(), sewn.numTriangles());
+  const json report = json::parse(readFileBytes(dir + "/report.json"));
+  EXPECT_TRUE(report["inflate"]["converged"].get<bool>());
+  EXPECT_FALSE(report["optimized"].get<bool>());
+  // Two flat discs puff up to a Mylar-balloon-like shape: a few percent from the sphere, not more than 25 %.
+  EXPECT_GT(report["distance_to_target"]["rms"].get<double>(), 0.01);
+  EXPECT_LT(report["distance_to_target"]["max"].get<double>(), 0.25);
+  EXPECT_GE(report["seam_length_mismatch"]["max_piece"].get<double>(), 0.0);
+#endif
+}

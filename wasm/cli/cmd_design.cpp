@@ -1,0 +1,170 @@
+// billow design DESIGN.json --out-dir DIR [--resolution N] [--no-optimize] [--quiet]: the design's sewn
+// pattern (DIR/pattern.json, with the target shape as "inflated" start), its inflated shape from the target
+// (DIR/inflated.obj) and a report (DIR/report.json: distance to the target, seam length mismatch, solver
+// figures, timings). Pattern optimization is not built yet: the flattened pattern is used as it is.
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "io/pattern_json.hpp"
+#include "pattern/build_pattern.hpp"
+#include "pattern/design_scene.hpp"
+#include "simulate/inflate.hpp"
+#include "simulate/initial_shape.hpp"
+#include "util/error.hpp"
+
+namespace billow::cli {
+
+std::unique_ptr<DesignScene> loadDesignScene(const std::string& path, bool quiet);
+void writeTextFile(const std::string& path, const std::string& text);
+void printProblems(const std::vector<SegmentationProblem>& problems);
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+// Outer surface, one OBJ vertex per simulation vertex.
+std::string objText(const SewnMesh& mesh, const Vertices& x) {
+  std::string s = "# billow inflated shape (outer surface, meters)\n";
+  char line[128];
+  for (int v = 0; v < x.rows(); ++v) {
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", x(v, 0), x(v, 1), x(v, 2));
+    s += line;
+  }
+  const Triangles F = outerTriangles(mesh);
+  for (int f = 0; f < F.rows(); ++f) {
+    std::snprintf(line, sizeof line, "f %d %d %d\n", F(f, 0) + 1, F(f, 1) + 1, F(f, 2) + 1);
+    s += line;
+  }
+  return s;
+}
+
+struct Distance {
+  double rms = 0, max = 0;  // relative to the target's bounding-box diagonal
+};
+
+// Closest-point distance of every simulation vertex to the target surface.
+Distance distanceToTarget(const DesignScene& scene, const Vertices& x) {
+  const double diag = (scene.target.V.colwise().maxCoeff() - scene.target.V.colwise().minCoeff()).norm();
+  Distance d;
+  for (int v = 0; v < x.rows(); ++v) {
+    double dist = 0;
+    scene.projector->project(x.row(v).transpose(), &dist);
+    d.rms += dist * dist, d.max = std::max(d.max, dist);
+  }
+  d.rms = x.rows() ? std::sqrt(d.rms / x.rows()) / diag : 0;
+  d.max /= diag;
+  return d;
+}
+
+int positiveInt(const Args& args, const std::string& name, int fallback) {
+  const std::string v = args.get(name);
+  if (v.empty()) return fallback;
+  try {
+    const long n = std::stol(v);
+    if (n >= 8 && n <= 2'000'000) return static_cast<int>(n);
+  } catch (const std::exception&) {
+  }
+  throw Error("cli.usage", "the option " + name + " needs a triangle count from 8 to 2000000, not '" + v + "'");
+}
+
+}  // namespace
+
+int designCommand(const std::vector<std::string>& argv) {
+  const Args args = parseArgs(argv, {"--out-dir", "--resolution"});
+  if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir")) {
+    std::fprintf(args.has("--help") ? stdout : stderr,
+                 "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize] [--quiet]\n\n"
+                 "Makes the sewn pattern of a design (its segments flattened into panels of about TRIANGLES\n"
+                 "triangles in all, default 3000), inflates it from the target shape and writes\n"
+                 "DIR/pattern.json, DIR/inflated.obj and DIR/report.json. Pattern optimization is not\n"
+                 "available yet, so the flattened panels are used as they are (as with --no-optimize).\n"
+                 "Exit code 0 when the inflated shape settles, 1 when the design cannot be patterned or\n"
+                 "the simulation does not settle (the files written so far stay).\n");
+    return args.has("--help") ? 0 : 2;
+  }
+  const bool quiet = args.has("--quiet");
+  const auto t0 = Clock::now();
+  const std::string dir = args.get("--out-dir");
+  PatternBuildOptions options;
+  options.triangles = positiveInt(args, "--resolution", options.triangles);
+  std::fprintf(stderr, "billow design: pattern optimization is not available yet; using the flattened panels%s\n",
+               args.has("--no-optimize") ? "" : " (as with --no-optimize)");
+
+  const auto scene = loadDesignScene(args.positional[0], quiet);
+  const Design& design = scene->design;
+  printProblems(scene->segmentation.problems);
+  if (!scene->segmentation.ok()) {
+    std::fprintf(stderr, "billow design: this design cannot be made into panels yet (see the errors above)\n");
+    return 1;
+  }
+  options.material = design.material;
+  options.pressure = design.pressure;
+  const BuiltPattern bp = buildPattern(scene->target, scene->segmentation, options);
+  printProblems(bp.problems);
+  if (!bp.ok()) {
+    std::fprintf(stderr, "billow design: some segments could not be made into panels (see the errors above)\n");
+    return 1;
+  }
+  if (!quiet)
+    std::fprintf(stderr,
+                 "pattern: %d panels, %d triangles, %d stitches, h %.4g m, seam length mismatch %.2f %% (%.0f ms)\n",
+                 bp.figures.panels, bp.figures.triangles, bp.figures.stitches, bp.figures.edgeLength,
+                 100 * bp.figures.maxSeamLengthMismatch, bp.figures.totalMs);
+  std::filesystem::create_directories(dir);
+  writeTextFile(dir + "/pattern.json", writePatternJson(bp.pattern) + "\n");
+
+  // Inflate from the target shape (the pattern's "inflated" start).
+  const SewnMesh mesh = sewPattern(bp.pattern);
+  InflationSolver solver(mesh, bp.pattern.material, bp.pattern.pressure, {}, startFromInflated(bp.pattern, mesh));
+  while (solver.step(5, 500) == InflateState::Running)
+    if (!quiet)
+      std::fprintf(stderr, "  inflate: iteration %3d  residual %.3e  volume %.6g m^3\n", solver.iterations(),
+                   solver.residual(), solver.volume());
+  const InflateResult r = solver.result();
+  writeTextFile(dir + "/inflated.obj", objText(mesh, r.positions));
+  const Distance d = distanceToTarget(*scene, r.positions);
+
+  using nlohmann::json;
+  const json report = {
+      {"format", "billow-design-report"},
+      {"version", 1},
+      {"optimized", false},
+      {"panels", bp.figures.panels},
+      {"triangles", bp.figures.triangles},
+      {"edge_length", bp.figures.edgeLength},
+      {"distance_to_target", {{"rms", d.rms}, {"max", d.max}, {"relative_to", "bounding-box diagonal"}}},
+      {"seam_length_mismatch",
+       {{"max_piece", bp.figures.maxSeamLengthMismatch}, {"max_edge", bp.figures.maxEdgeLengthMismatch}}},
+      {"inflate",
+       {{"state", toString(r.state)},
+        {"converged", r.converged},
+        {"message", r.message},
+        {"iterations", r.iterations},
+        {"residual", r.residual},
+        {"volume", r.volume}}},
+      {"timings_ms",
+       {{"load", scene->loadMs},
+        {"seams", scene->seamsMs},
+        {"segment", scene->segmentMs},
+        {"flatten", bp.figures.flattenMs},
+        {"mesh", bp.figures.meshMs},
+        {"pattern", bp.figures.totalMs},
+        {"inflate", r.timings.totalMs + r.timings.setupMs},
+        {"total", msSince(t0)}}}};
+  writeTextFile(dir + "/report.json", report.dump(2) + "\n");
+  std::fprintf(stderr,
+               "%s after %d iterations; distance to target: rms %.2f %%, max %.2f %% of the diagonal (%.0f ms)\n",
+               r.converged ? "settled" : "did not settle", r.iterations, 100 * d.rms, 100 * d.max, msSince(t0));
+  if (!r.converged) {
+    std::fprintf(stderr, "billow design: %s\n", r.message.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace billow::cli

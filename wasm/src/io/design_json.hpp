@@ -1,0 +1,98 @@
+// The design document (billow-design, version 1; docs/formats.md): the target, its real size, the seams as
+// surface points or 3D points, internal connections, material and pressure. Read with every field
+// validated; unknown fields are kept and written back.
+//   { "format": "billow-design", "version": 1,
+//     "target": { "example": "spot" } | { "obj": "cow.obj" } | { "file": "cow.obj" }
+//               | { "vertices": [[x, y, z], ...], "triangles": [[i, j, k], ...] },
+//     "size": { "height": 0.6 } | { "scale": 0.01 },
+//     "seams": [ { "name": "belly", "closed": true, "weight": 1.0, "smooth": false,
+//                  "points": [ { "face": 812, "bary": [0.2, 0.3, 0.5] }, [0.01, 0.12, -0.03] ] } ],
+//     "connections": [ { "seams": [0, 3] } ],
+//     "material": { "name": "foil", "thickness": 2.5e-5, "youngs_modulus": 3.0e9 },
+//     "pressure": 1000.0 }
+// Sizes are meters along the target's own y axis; 3D seam points are in the target's own coordinates.
+#pragma once
+#include <nlohmann/json.hpp>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "seams/seam_curve.hpp"
+#include "simulate/sewn_pattern.hpp"
+
+namespace billow {
+
+struct DesignPoint {
+  bool onSurface = false;  // true: `surface` ({face, bary}); false: `position`, projected when loaded
+  SurfacePoint surface;
+  Eigen::Vector3d position = Eigen::Vector3d::Zero();
+};
+
+struct DesignSeam {
+  std::string name;
+  std::vector<DesignPoint> points;
+  bool closed = false;
+  double weight = 1.0;  // sigma of Eq. 10
+  bool smooth = false;
+};
+
+struct DesignConnection {
+  std::vector<int> seams;  // the seams an internal panel joins
+};
+
+struct DesignTarget {
+  enum Kind { Example, Obj, File, Inline } kind = Example;
+  // Example: the example id; Obj ("obj") and File ("file", the app's autosaved mesh): a mesh file path as
+  // written, relative to the design file's folder (any format readMeshBytes knows, by extension).
+  std::string name = "spot";
+  TriMesh mesh;  // Inline
+};
+
+struct Design {
+  int version = 1;
+  DesignTarget target;
+  double height = 0.6;  // [m] along y; used when scale is 0
+  double scale = 0;     // meters per target unit, when given instead of a height
+  std::vector<DesignSeam> seams;
+  std::vector<DesignConnection> connections;
+  Material material;
+  double pressure = 1000.0;                         // [Pa]
+  nlohmann::json extra = nlohmann::json::object();  // the document as read: unknown fields survive a write
+};
+
+struct DesignWarning {
+  std::string field;  // "seams[2].weight"
+  std::string message;
+};
+
+struct DesignReadOptions {
+  // true: a bad field is an error (billow::Error "design.bad-value" naming the field), as the CLI wants;
+  // false: it falls back to its default with a warning (docs/formats.md, as the app reads autosaves).
+  bool strict = true;
+};
+
+// Throws billow::Error: design.json (not JSON), design.unknown-format, design.version (newer than this
+// reader), design.bad-value (strict), design.too-large.
+Design readDesignJson(std::string_view text, const DesignReadOptions& options = {},
+                      std::vector<DesignWarning>* warnings = nullptr);
+std::string writeDesignJson(const Design& design, int indent = 2);
+
+// Folders searched for `{ "example": id }` targets (<dir>/<id>.obj): $BILLOW_EXAMPLES (':'-separated), then
+// <exeDir>/../../web/public/examples when exeDir is given.
+std::vector<std::string> exampleSearchPath(const std::string& exeDir = "");
+
+// The design's target in its own coordinates. designPath: the design file (for relative "obj" paths).
+// Throws billow::Error: design.example-not-found, io.cannot-read, the mesh readers' codes, design.bad-target.
+TriMesh loadDesignTarget(const Design& design, const std::string& designPath,
+                         const std::vector<std::string>& exampleDirs);
+
+// Meters per target unit: size.scale, else size.height / (y extent of the target).
+double designScale(const Design& design, const TriMesh& targetOwnUnits);
+
+// The seams as SeamSpec on `target` (any uniform scale of the target the points were written for:
+// 3D points are multiplied by `scale` before projection). Throws design.bad-value for a face index the
+// target does not have.
+std::vector<SeamSpec> designSeamSpecs(const Design& design, const TriMesh& target, const SurfaceProjector& projector,
+                                      double scale = 1.0);
+
+}  // namespace billow

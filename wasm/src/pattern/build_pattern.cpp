@@ -1,0 +1,243 @@
+#include "pattern/build_pattern.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include "pattern/panel_stages.hpp"
+#include "remesh/panel_mesher.hpp"
+#include "util/error.hpp"
+
+namespace billow {
+
+namespace {
+constexpr double kMeshFill = 4.0 / 3.0;
+}  // namespace
+
+bool BuiltPattern::ok() const {
+  return std::none_of(problems.begin(), problems.end(), [](const auto& p) { return p.severity == "error"; });
+}
+
+double patternEdgeLength(double panelArea, const PatternBuildOptions& options) {
+  if (options.edgeLength > 0) return options.edgeLength;
+  if (!(panelArea > 0)) throw Error("pattern.empty", "There is no panel area to mesh.");
+  // An equilateral triangle of edge h has area sqrt(3) h^2 / 4; the refined panel meshes hold about 4/3 as
+  // many triangles as equilateral ones would (measured on spheres and the corpus), hence the factor.
+  const int n = std::max(options.triangles, 8);
+  return std::sqrt(kMeshFill * 4 * panelArea / (std::sqrt(3.0) * n));
+}
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+
+Eigen::Vector3d segmentCentre(const Segmentation& seg, int s) {
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+  for (int t : seg.segments[s].triangles)
+    for (int k = 0; k < 3; ++k) c += seg.mesh.V.row(seg.mesh.F(t, k)).transpose() / 3.0;
+  return seg.segments[s].triangles.empty() ? c : c / static_cast<double>(seg.segments[s].triangles.size());
+}
+
+void addProblem(BuiltPattern& out, const Segmentation& seg, int s, const std::string& code, const std::string& severity,
+                const std::string& message) {
+  SegmentationProblem p;
+  p.code = code, p.severity = severity, p.message = message, p.segment = s;
+  p.location = segmentCentre(seg, s);
+  out.problems.push_back(p);
+}
+
+std::string notDiskMessage(const Segment& s, int index) {
+  std::string why = s.loops.empty() ? "it has no seam around it (a closed surface cannot be laid flat)"
+                                    : "it has " + std::to_string(s.loops.size()) + " separate seam boundaries";
+  if (s.genus > 0) why = "it goes around a handle";
+  return "Segment " + std::to_string(index + 1) + " cannot be laid flat as one panel: " + why +
+         ". Add a seam that cuts it open.";
+}
+
+// The pieces on both sides of a seam: (flat segment, piece) -> its partner, found by the reverse of its last edge.
+using PieceId = std::pair<int, int>;
+std::map<PieceId, PieceId> pairPieces(const std::vector<pattern::FlatSegment>& flats) {
+  std::unordered_map<std::uint64_t, PieceId> byFirstEdge;
+  for (int f = 0; f < static_cast<int>(flats.size()); ++f)
+    for (int k = 0; k < static_cast<int>(flats[f].pieces.size()); ++k) {
+      const auto& v = flats[f].pieces[k].vertices;
+      byFirstEdge[directedKey(v[0], v[1])] = {f, k};
+    }
+  std::map<PieceId, PieceId> partner;
+  for (int f = 0; f < static_cast<int>(flats.size()); ++f)
+    for (int k = 0; k < static_cast<int>(flats[f].pieces.size()); ++k) {
+      const auto& v = flats[f].pieces[k].vertices;
+      const auto it = byFirstEdge.find(directedKey(v[v.size() - 1], v[v.size() - 2]));
+      if (it != byFirstEdge.end() && flats[it->second.first].pieces[it->second.second].vertices.size() == v.size())
+        partner[{f, k}] = it->second;
+    }
+  return partner;
+}
+
+// N per piece, equal on both sides (Sec. 5.3: matching vertices on both panels of a seam). A panel with one
+// piece needs 3 segments, with two pieces 2 each, to stay a polygon.
+void chooseSegmentCounts(std::vector<pattern::FlatSegment>& flats, const std::map<PieceId, PieceId>& partner,
+                         double h) {
+  const auto least = [&](int f) {
+    const size_t n = flats[f].pieces.size();
+    return n == 1 ? 3 : n == 2 ? 2 : 1;
+  };
+  for (auto& fs : flats) fs.segments.assign(fs.pieces.size(), 0);
+  for (int f = 0; f < static_cast<int>(flats.size()); ++f)
+    for (int k = 0; k < static_cast<int>(flats[f].pieces.size()); ++k) {
+      if (flats[f].segments[k] > 0) continue;
+      int n = std::max(remesh::segmentCountFor(flats[f].pieces[k].length, h), least(f));
+      const auto it = partner.find({f, k});
+      if (it != partner.end()) {
+        n = std::max(n, least(it->second.first));
+        flats[it->second.first].segments[it->second.second] = n;
+      }
+      flats[f].segments[k] = n;
+    }
+}
+
+double edgeLength(const Panel& p, int a, int b) { return (p.vertices.row(a) - p.vertices.row(b)).norm(); }
+
+int findRoot(std::vector<int>& parent, int i) {
+  while (parent[i] != i) i = parent[i] = parent[parent[i]];
+  return i;
+}
+
+// Stitches every sample k of a piece to sample N - k of its partner; the groups of panel vertices that
+// are one point (three or more at corners) become chains of stitches. Fills the mismatch figures.
+void stitchPieces(BuiltPattern& out) {
+  const auto& panels = out.pattern.panels;
+  std::vector<int> start{0};
+  for (const Panel& p : panels) start.push_back(start.back() + static_cast<int>(p.vertices.rows()));
+  std::vector<int> parent(start.back());
+  std::iota(parent.begin(), parent.end(), 0);
+  PatternFigures& fig = out.figures;
+  for (int a = 0; a < static_cast<int>(panels.size()); ++a)
+    for (const PanelPiece& pa : out.panels[a].pieces) {
+      const int b = pa.neighborPanel;
+      if (b < 0) continue;
+      const PanelPiece& pb = out.panels[b].pieces[pa.neighborPiece];
+      const int n = static_cast<int>(pa.rows.size()) - 1;
+      double la = 0, lb = 0;
+      for (int k = 0; k <= n; ++k) {
+        const int va = pa.rows[k], vb = pb.rows[n - k];
+        const int ra = findRoot(parent, start[a] + va), rb = findRoot(parent, start[b] + vb);
+        if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+        fig.maxStitchTargetDistance =
+            std::max(fig.maxStitchTargetDistance,
+                     (out.panels[a].targetPosition.row(va) - out.panels[b].targetPosition.row(vb)).norm());
+        if (k == n) break;
+        const double ea = edgeLength(panels[a], pa.rows[k], pa.rows[k + 1]);
+        const double eb = edgeLength(panels[b], pb.rows[n - k - 1], pb.rows[n - k]);
+        la += ea, lb += eb;
+        fig.maxEdgeLengthMismatch = std::max(fig.maxEdgeLengthMismatch, std::abs(ea - eb) / (0.5 * (ea + eb)));
+      }
+      fig.maxSeamLengthMismatch = std::max(fig.maxSeamLengthMismatch, std::abs(la - lb) / (0.5 * (la + lb)));
+    }
+  std::map<int, std::vector<int>> groups;  // root -> members, in panel order
+  for (int g = 0; g < start.back(); ++g) groups[findRoot(parent, g)].push_back(g);
+  for (const auto& [root, members] : groups)
+    for (size_t i = 1; i < members.size(); ++i) {
+      const auto where = [&](int g) {
+        const int p = static_cast<int>(std::upper_bound(start.begin(), start.end(), g) - start.begin()) - 1;
+        return std::make_pair(p, g - start[p]);
+      };
+      const auto [p0, v0] = where(members[i - 1]);
+      const auto [p1, v1] = where(members[i]);
+      out.pattern.stitches.push_back({p0, v0, p1, v1});
+    }
+}
+
+}  // namespace
+
+BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const PatternBuildOptions& options) {
+  const auto t0 = Clock::now();
+  BuiltPattern out;
+  out.pattern.material = options.material;
+  out.pattern.pressure = options.pressure;
+  out.segmentPanel.assign(seg.segments.size(), -1);
+  const SeamGraph graph = analyzeSeams(seg);
+
+  // 1. Flatten every disk segment (Sec. 5.2).
+  std::vector<pattern::FlatSegment> flats;
+  for (int s = 0; s < static_cast<int>(seg.segments.size()); ++s) {
+    if (!seg.segments[s].isDisk) {
+      addProblem(out, seg, s, "pattern.not-disk", "error", notDiskMessage(seg.segments[s], s));
+      continue;
+    }
+    try {
+      flats.push_back(pattern::flattenForPattern(seg, graph, s));
+      if (flats.back().flat.flippedTriangles > 0)
+        addProblem(out, seg, s, "pattern.flipped", "warning",
+                   "Segment " + std::to_string(s + 1) + " folds over itself when laid flat (" +
+                       std::to_string(flats.back().flat.flippedTriangles) +
+                       " triangles); its panel may be poor. Another seam across it would help.");
+    } catch (const Error& e) {
+      addProblem(out, seg, s, "pattern.flatten-failed", "error",
+                 "Segment " + std::to_string(s + 1) + " could not be laid flat: " + e.what());
+    }
+  }
+  out.figures.flattenMs = msSince(t0);
+
+  // 2.-3. Matching boundary samples on both sides of every seam, then the panel meshes (Sec. 5.3). The
+  // triangle count is set on the flattened panels (their area is smaller than the segments' on curved parts).
+  const auto t1 = Clock::now();
+  double flatArea = 0;
+  for (const auto& fs : flats) flatArea += fs.flat.areaRatio * seg.segments[fs.segment].area;
+  const double h = flats.empty() ? options.edgeLength : patternEdgeLength(flatArea, options);
+  out.figures.edgeLength = h;
+  const std::map<PieceId, PieceId> partner = pairPieces(flats);
+  chooseSegmentCounts(flats, partner, h);
+  std::vector<int> flatPanel(flats.size(), -1);
+  for (size_t f = 0; f < flats.size(); ++f) {
+    Panel panel;
+    BuiltPanel built;
+    try {
+      pattern::meshFlatSegment(target, seg, flats[f], h, panel, built);
+    } catch (const Error& e) {
+      addProblem(out, seg, flats[f].segment, "pattern.mesh-failed", "error",
+                 "The panel of segment " + std::to_string(flats[f].segment + 1) + " could not be meshed: " + e.what());
+      continue;
+    }
+    flatPanel[f] = static_cast<int>(out.panels.size());
+    out.segmentPanel[flats[f].segment] = flatPanel[f];
+    panel.name = "Panel " + std::to_string(out.panels.size() + 1);
+    panel.internal = false;
+    out.pattern.inflated.push_back(built.targetPosition);
+    out.pattern.panels.push_back(std::move(panel));
+    out.panels.push_back(std::move(built));
+  }
+  for (size_t f = 0; f < flats.size(); ++f) {
+    if (flatPanel[f] < 0) continue;
+    for (int k = 0; k < static_cast<int>(flats[f].pieces.size()); ++k) {
+      PanelPiece& pp = out.panels[flatPanel[f]].pieces[k];
+      const auto it = partner.find({static_cast<int>(f), k});
+      if (it != partner.end() && flatPanel[it->second.first] >= 0) {
+        pp.neighborPanel = flatPanel[it->second.first];
+        pp.neighborPiece = it->second.second;
+      } else {
+        addProblem(out, seg, flats[f].segment, "pattern.open-seam", "warning",
+                   "A seam of panel " + std::to_string(flatPanel[f] + 1) +
+                       " has no panel on its other side, so it stays open.");
+      }
+    }
+  }
+  out.figures.meshMs = msSince(t1);
+
+  // 4. Stitches.
+  stitchPieces(out);
+  PatternFigures& fig = out.figures;
+  fig.panels = static_cast<int>(out.pattern.panels.size());
+  for (const Panel& p : out.pattern.panels) {
+    fig.triangles += static_cast<int>(p.triangles.rows());
+    fig.vertices += static_cast<int>(p.vertices.rows());
+  }
+  fig.stitches = static_cast<int>(out.pattern.stitches.size());
+  fig.totalMs = msSince(t0);
+  return out;
+}
+
+}  // namespace billow

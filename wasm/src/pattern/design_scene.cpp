@@ -1,0 +1,48 @@
+#include "pattern/design_scene.hpp"
+
+#include <chrono>
+
+#include "mesh/validate.hpp"
+#include "util/error.hpp"
+
+namespace billow {
+
+namespace {
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
+}  // namespace
+
+std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::string& designPath,
+                                             const std::vector<std::string>& exampleDirs) {
+  auto scene = std::make_unique<DesignScene>();
+  const auto t0 = Clock::now();
+  scene->design = design;
+  TriMesh own = loadDesignTarget(design, designPath, exampleDirs);
+  // Seam points name the target's triangles and corners: the mesh is used as it is (no reorientation).
+  ValidationOptions vo;
+  vo.fixOrientation = false;
+  const ValidationReport report = validateTarget(own, vo);
+  if (!report.ok) {
+    std::string why;
+    for (const MeshIssue& i : report.issues)
+      if (i.severity == "error") why += (why.empty() ? "" : " ") + i.message;
+    throw Error("design.bad-target", "The design's target cannot be used: " + why);
+  }
+  scene->scale = designScale(design, own);
+  scene->target = own;
+  scene->target.V *= scene->scale;
+  scene->topology = buildTopology(scene->target);
+  scene->projector = std::make_unique<SurfaceProjector>(scene->target);
+  scene->geodesic = std::make_unique<GeodesicSolver>(scene->target, scene->topology);
+  scene->loadMs = msSince(t0);
+  const auto t1 = Clock::now();
+  for (const SeamSpec& spec : designSeamSpecs(design, scene->target, *scene->projector, scene->scale))
+    scene->curves.push_back(buildSeamCurve(*scene->geodesic, *scene->projector, spec));
+  scene->seamsMs = msSince(t1);
+  const auto t2 = Clock::now();
+  scene->segmentation = segmentTarget(scene->target, scene->topology, scene->curves);
+  scene->segmentMs = msSince(t2);
+  return scene;
+}
+
+}  // namespace billow

@@ -1,0 +1,31 @@
+// A design made concrete: the target scaled to meters, its seams traced and the target segmented. What the
+// CLI commands and the tests start from (the web worker keeps the same pieces in its sessions).
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/design_json.hpp"
+#include "seams/geodesic.hpp"
+#include "segment/segmentation.hpp"
+
+namespace billow {
+
+struct DesignScene {
+  Design design;
+  TriMesh target;    // in meters
+  double scale = 1;  // meters per target unit
+  MeshTopology topology;
+  std::unique_ptr<SurfaceProjector> projector;
+  std::unique_ptr<GeodesicSolver> geodesic;
+  std::vector<SeamCurve> curves;
+  Segmentation segmentation;
+  double loadMs = 0, seamsMs = 0, segmentMs = 0;
+};
+
+// Loads the target (designPath for relative files, exampleDirs for examples), scales it, checks that it is a
+// closed surface (billow::Error "design.bad-target" with the validator's words), traces and segments.
+std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::string& designPath,
+                                             const std::vector<std::string>& exampleDirs);
+
+}  // namespace billow
