@@ -60,3 +60,21 @@ test('an imported pattern file inflates; a broken one gets a message and the las
   assert.deepEqual(page.errors, []);
   await page.close();
 });
+
+test('a design with an equator seam becomes two panels that inflate like a Mylar balloon', async () => {
+  const { readFileSync } = await import('node:fs');
+  const page = await openPage(context, server.url);
+  const design = readFileSync(new URL('../data/sphere-equator.billow.json', import.meta.url));
+  await page.setInputFiles('#file-input', { name: 'sphere-equator.billow.json', mimeType: 'application/json', buffer: design });
+  await page.waitForFunction(() => /1 seam, 2 segments/.test(document.querySelector('#seam-panel .summary')?.textContent));
+  await waitInflated(page);
+  const labels = await page.$$eval('.panel-label', (els) => els.map((e) => e.textContent));
+  assert.deepEqual(labels, ['1 Panel 1', '2 Panel 2']);
+  // Two flat discs with the equator's length as their rims (radius 0.25 m) inflate to Paulsen's lens:
+  // 0.0329 m3 x (0.25 / 0.3)^3 = 19 L (the panels are meshed, so allow a margin).
+  const liters = parseFloat(await page.textContent('#inflated-stats dd[data-stat="volume"]'));
+  assert.ok(liters > 15 && liters < 24, `volume ${liters} L`);
+  await screenshot(page, 'design-equator-inflated');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

@@ -10,6 +10,8 @@
 //     -> { vertices, triangles, segments: [{ area, isDisk, eulerCharacteristic, genus, loops, triangles }],
 //          junctions: [{ position, segments }], problems: [{ code, severity, message, segment, seam, location }] }
 //        and fills the cut mesh: cutPositionsPtr() #V*3 f64, cutTrianglesPtr() #F*3 i32, faceSegmentPtr() #F i32
+//   t.buildPattern(seamsJson, scale, triangles)   scale: meters per target unit
+//     -> { ok, pattern (billow-pattern JSON, "inflated" = the target shape), figures, problems }
 #include <emscripten/bind.h>
 
 #include <cmath>
@@ -17,6 +19,8 @@
 #include <nlohmann/json.hpp>
 
 #include "guarded.hpp"
+#include "io/pattern_json.hpp"
+#include "pattern/build_pattern.hpp"
 #include "seams/geodesic.hpp"
 #include "seams/mesh_topology.hpp"
 #include "seams/seam_curve.hpp"
@@ -36,6 +40,7 @@ class TargetSession {
     return guarded([&] {
       geodesic_.reset();
       projector_.reset();
+      scaledGeodesic_.reset();
       mesh_.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
       mesh_.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
       topology_ = billow::buildTopology(mesh_);
@@ -64,6 +69,38 @@ class TargetSession {
       cut_ = std::move(seg.mesh);
       faceSegment_ = seg.faceSegment;
       return segmentationJson(seg).dump();
+    });
+  }
+
+  std::string buildPattern(const std::string& seamsJson, double scale, int triangles) {
+    return guarded([&] {
+      requireTarget();
+      if (!(scale > 0) || !std::isfinite(scale)) throw billow::Error("pattern.bad-scale", "The target's size is not valid.");
+      if (triangles < 50 || triangles > 200000)
+        throw billow::Error("pattern.bad-resolution", "The resolution must be between 50 and 200,000 triangles.");
+      const json seams = parse(seamsJson);
+      if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
+      useScale(scale);
+      std::vector<billow::SeamCurve> curves;
+      for (const auto& s : seams) curves.push_back(billow::buildSeamCurve(*scaledGeodesic_, *scaledProjector_, readSeam(s)));
+      const billow::Segmentation seg = billow::segmentTarget(scaled_, scaledTopology_, curves);
+      billow::PatternBuildOptions options;
+      options.triangles = triangles;
+      const billow::BuiltPattern built = billow::buildPattern(scaled_, seg, options);
+      json problems = json::array();
+      for (const auto& p : built.problems)
+        problems.push_back({{"code", p.code}, {"severity", p.severity}, {"message", p.message}, {"segment", p.segment}});
+      const auto& f = built.figures;
+      return json({{"ok", built.ok()},
+                   {"pattern", json::parse(billow::writePatternJson(built.pattern))},
+                   {"problems", problems},
+                   {"figures",
+                    {{"panels", f.panels},
+                     {"triangles", f.triangles},
+                     {"edgeLength", f.edgeLength},
+                     {"maxSeamLengthMismatch", f.maxSeamLengthMismatch},
+                     {"totalMs", f.totalMs}}}})
+          .dump();
     });
   }
 
@@ -153,7 +190,23 @@ class TargetSession {
             {"junctions", junctions},             {"problems", problems},                 {"ok", seg.ok()}};
   }
 
-  billow::TriMesh mesh_, cut_;
+  // The target in meters for pattern building (cached per scale; seams are surface points, scale-free).
+  void useScale(double scale) {
+    if (scaledGeodesic_ && scale == scale_) return;
+    scaledGeodesic_.reset();
+    scaled_ = mesh_;
+    scaled_.V *= scale;
+    scaledTopology_ = billow::buildTopology(scaled_);
+    scaledProjector_ = std::make_unique<billow::SurfaceProjector>(scaled_);
+    scaledGeodesic_ = std::make_unique<billow::GeodesicSolver>(scaled_, scaledTopology_);
+    scale_ = scale;
+  }
+
+  billow::TriMesh mesh_, cut_, scaled_;
+  billow::MeshTopology scaledTopology_;
+  std::unique_ptr<billow::SurfaceProjector> scaledProjector_;
+  std::unique_ptr<billow::GeodesicSolver> scaledGeodesic_;
+  double scale_ = 0;
   billow::MeshTopology topology_;
   std::unique_ptr<billow::SurfaceProjector> projector_;
   std::unique_ptr<billow::GeodesicSolver> geodesic_;
@@ -168,6 +221,7 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("setTarget", &TargetSession::setTarget)
       .function("traceSeam", &TargetSession::traceSeam)
       .function("segment", &TargetSession::segment)
+      .function("buildPattern", &TargetSession::buildPattern)
       .function("cutVertices", &TargetSession::cutVertices)
       .function("cutTriangles", &TargetSession::cutTriangles)
       .function("cutPositionsPtr", &TargetSession::cutPositionsPtr)

@@ -57,6 +57,7 @@ $('file-input').addEventListener('change', (event) => {
 });
 $('example-select').addEventListener('change', (event) => event.target.value && app.openExample(event.target.value));
 $('height-input').addEventListener('change', (event) => app.setHeight(Number(event.target.value)));
+$('resolution-select').addEventListener('change', (event) => app.setResolution(Number(event.target.value)));
 $('undo-button').addEventListener('click', () => app.undo());
 $('redo-button').addEventListener('click', () => app.redo());
 $('save-button').addEventListener('click', () => app.saveDesignFile());

@@ -39,6 +39,8 @@ export class App {
       stats: elements.inflatedStats,
     });
     this.seams = new SeamEditor(this);
+    this.patternTicket = 0;
+    this.resolution = 2000; // triangles of the simulation mesh (view setting, not part of the design)
   }
 
   get design() {
@@ -216,6 +218,28 @@ export class App {
     else this.history.apply(() => design, { mergeKey });
     this.showDesign();
     this.save();
+  }
+
+  // The panels of the current seams, inflated from the target shape (not optimized yet). A newer edit
+  // supersedes this one: its inflation is cancelled by the next open().
+  async makePattern() {
+    const ticket = ++this.patternTicket;
+    const seams = this.design.seams.map(({ points, closed, weight }) => ({ points, closed, weight }));
+    this.patterns.running?.cancel();
+    try {
+      const built = await this.client.request(Op.buildPattern, { seams, scale: this.scaleFor(this.design), triangles: this.resolution });
+      if (ticket !== this.patternTicket) return;
+      for (const p of built.problems.filter((q) => q.severity === 'error')) this.messages.show('warning', p.message);
+      await this.patterns.open('the panels', built.patternText);
+    } catch (error) {
+      if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
+      this.messages.show('error', `The panels could not be made from these seams: ${error.message}`);
+    }
+  }
+
+  setResolution(triangles) {
+    this.resolution = triangles;
+    if (this.seams.segmentation?.segments?.every((s) => s.isDisk) && this.design.seams.length) this.makePattern();
   }
 
   // A fix-up that belongs to the edit just made: no new undo step.

@@ -23,6 +23,20 @@ export function patternForDisplay(text, fileName) {
   };
 }
 
+// Many warnings of one kind become one line: unequal sewn edges are reported by count and the largest.
+export function summarizeWarnings(warnings) {
+  const seams = warnings.filter((w) => w.code === 'pattern.seam-length');
+  const others = warnings.filter((w) => w.code !== 'pattern.seam-length').map((w) => w.message);
+  if (seams.length === 1) others.unshift(seams[0].message);
+  else if (seams.length > 1) {
+    const worst = Math.max(...seams.map((w) => w.mismatch ?? 0));
+    others.unshift(
+      `${seams.length}${seams.length >= 100 ? ' or more' : ''} sewn edges join boundaries of different lengths (up to ${(100 * worst).toFixed(1)} %): those seams would pucker when sewn.`,
+    );
+  }
+  return others;
+}
+
 export class PatternSession {
   constructor({ client, panes, messages, status, stats }) {
     this.client = client;
@@ -56,7 +70,7 @@ export class PatternSession {
           this.panes.pattern.setPattern(display);
           this.panes.inflated.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer });
           shown = true;
-          for (const w of p.warnings ?? []) this.messages.show('warning', w.message);
+          for (const text of summarizeWarnings(p.warnings ?? [])) this.messages.show('warning', text);
         } else if (p.positions && shown) {
           this.panes.inflated.updatePositions(p.positions);
         }

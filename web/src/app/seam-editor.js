@@ -237,6 +237,8 @@ export class SeamEditor {
       this.segmentation = result;
       this.pane.setSegments(result);
       for (const fn of this.listeners) fn();
+      const patternable = result.segments.length >= 2 && result.segments.every((s) => s.isDisk);
+      if (patternable) this.app.makePattern();
     } catch (error) {
       if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
       this.app.messages.show('error', `The target could not be cut along the seams: ${error.message}`);

@@ -70,6 +70,12 @@ export function createHandlers(api) {
       yield { stage: 'cutting the target along the seams' };
       return requireSession().segment(seams);
     },
+    // { seams, scale, triangles } -> { ok, patternText, figures, problems }
+    *[Op.buildPattern]({ seams, scale, triangles = 3000 }) {
+      yield { stage: 'flattening the segments into panels' };
+      const { pattern, ...rest } = requireSession().buildPattern(seams, scale, triangles);
+      return { ...rest, patternText: JSON.stringify(pattern) };
+    },
     *[Op.examplePattern]({ name, triangles }) {
       return { patternText: JSON.stringify(api.examplePattern(name, triangles)) };
     },

@@ -20,6 +20,9 @@ export const Op = Object.freeze({
   traceSeam: 'traceSeam',
   // { seams: [{ points, closed, weight }] } -> { segments, problems, junctions, positions, indices, faceSegment }
   segment: 'segment',
+  // { seams, scale, triangles } -> { ok, patternText, figures, problems }: flattened panels of the segments,
+  // sewn, with the target shape as the simulation's start.
+  buildPattern: 'buildPattern',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
   // { patternText, options } -> inflated result (Inflation.snapshot in solver-api.js); stepped, with

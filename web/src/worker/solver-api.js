@@ -141,6 +141,11 @@ export class Inflation {
     };
   }
 
+  // The sewn pattern of the current seams: { ok, pattern (object), figures, problems }.
+  buildPattern(seams, scale, triangles) {
+    return SolverApi.unwrap(this.session.buildPattern(JSON.stringify(seams), scale, triangles));
+  }
+
   delete() {
     this.session.delete();
   }
@@ -182,6 +187,11 @@ export class TargetSession {
       indices: new Uint32Array(this.api.fromHeap(Int32Array, s.cutTrianglesPtr(), s.cutTriangles() * 3).buffer),
       faceSegment: this.api.fromHeap(Int32Array, s.faceSegmentPtr(), s.cutTriangles()),
     };
+  }
+
+  // The sewn pattern of the current seams: { ok, pattern (object), figures, problems }.
+  buildPattern(seams, scale, triangles) {
+    return SolverApi.unwrap(this.session.buildPattern(JSON.stringify(seams), scale, triangles));
   }
 
   delete() {
