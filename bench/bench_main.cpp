@@ -89,6 +89,8 @@ int main(int argc, char** argv) {
                             {"assembleMs", solver.timings().assembleMs},
                             {"lineSearchMs", solver.timings().lineSearchMs},
                             {"peakRssMb", peakRssMb()},
+                            {"factorNonZeros", solver.timings().factorNonZeros},
+                            {"factorMflops", solver.timings().factorFlops * 1e-6},
                             {"residual", solver.residual()},
                             {"converged", solver.state() == InflateState::Converged}};
       double rim = 0, thick = 0;

@@ -5,9 +5,11 @@
 #include <cmath>
 #include <random>
 
+#include "simulate/block_cholesky.hpp"
 #include "simulate/enclosed_volume.hpp"
 #include "simulate/example_patterns.hpp"
 #include "simulate/inflate.hpp"
+#include "simulate/initial_shape.hpp"
 
 using namespace billow;
 
@@ -173,4 +175,78 @@ TEST(Inflate, AnInternalPanelPullsTwoSeamsTogether) {
   int internalTaut = 0;
   for (int f = 0; f < mesh.numTriangles(); ++f) internalTaut += !mesh.outer[f] && r.fields.regime[f] != 0;
   EXPECT_GT(internalTaut, 0);  // the internal panel is under tension
+}
+
+namespace {
+
+// Lower triangle of a random symmetric matrix with the vertex-block pattern of a sewn mesh, made positive
+// definite by a diagonal shift (or indefinite by a negative one).
+Eigen::SparseMatrix<double> blockPatternMatrix(const SewnMesh& mesh, double diagonal, std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-1, 1);
+  std::vector<Eigen::Triplet<double>> trip;
+  const int n = 3 * mesh.numVertices;
+  for (int f = 0; f < mesh.numTriangles(); ++f)
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) {
+            const int r = 3 * mesh.triangles(f, a) + i, c = 3 * mesh.triangles(f, b) + j;
+            if (r > c) trip.emplace_back(r, c, u(rng));
+          }
+  for (int i = 0; i < n; ++i) trip.emplace_back(i, i, diagonal);
+  Eigen::SparseMatrix<double> H(n, n);
+  H.setFromTriplets(trip.begin(), trip.end());
+  return H;
+}
+
+}  // namespace
+
+TEST(BlockCholesky, SolvesLikeEigenWithBothOrderings) {
+  ExampleOptions eo;
+  eo.triangles = 600;
+  const SewnMesh mesh = sewPattern(examplePattern("sphere3", eo));
+  std::mt19937 rng(7);
+  // Diagonally dominant: each row has at most ~ 3 x 7 x 3 off-diagonal entries in [-1, 1].
+  const Eigen::SparseMatrix<double> H = blockPatternMatrix(mesh, 80.0, rng);
+  const Eigen::MatrixXd points = sphericalStart(mesh);
+  Eigen::VectorXd b = Eigen::VectorXd::Random(H.rows());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ref(H);
+  const Eigen::VectorXd expected = ref.solve(b);
+  for (auto ordering : {BlockCholesky::Ordering::NestedDissection, BlockCholesky::Ordering::Amd}) {
+    BlockCholesky chol;
+    chol.analyze(H, points, ordering);
+    ASSERT_TRUE(chol.factorize(H));
+    Eigen::VectorXd x = b;
+    chol.solve(x);
+    EXPECT_LT((x - expected).norm(), 1e-10 * expected.norm());
+    const Eigen::VectorXd residual = H.selfadjointView<Eigen::Lower>() * x - b;
+    EXPECT_LT(residual.norm(), 1e-10 * b.norm());
+    EXPECT_GE(chol.factorNonZeros(), double(H.nonZeros()));
+    // Refactorizing new values on the same pattern works too; an indefinite matrix is refused.
+    Eigen::SparseMatrix<double> H2 = H;
+    for (int k = 0; k < H2.nonZeros(); ++k) H2.valuePtr()[k] *= 2;
+    ASSERT_TRUE(chol.factorize(H2));
+    x = b;
+    chol.solve(x);
+    EXPECT_LT((x - 0.5 * expected).norm(), 1e-10 * expected.norm());
+    Eigen::SparseMatrix<double> bad = H;
+    bad.coeffRef(7, 7) = -100;
+    EXPECT_FALSE(chol.factorize(bad));
+  }
+}
+
+TEST(Inflate, SupernodalAndSimplicialSolversAgree) {
+  ExampleOptions eo;
+  eo.triangles = 400;
+  const Pattern p = examplePattern("mylar", eo);
+  Vertices result[2];
+  int k = 0;
+  for (LinearSolver ls : {LinearSolver::Supernodal, LinearSolver::SimplicialLdlt}) {
+    InflateOptions o;
+    o.linearSolver = ls;
+    const InflateResult r = inflate(p, o);
+    ASSERT_TRUE(r.converged) << r.message;
+    result[k++] = r.positions;
+  }
+  EXPECT_LT((result[0] - result[1]).cwiseAbs().maxCoeff(), 1e-6);
 }

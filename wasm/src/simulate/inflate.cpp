@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 
+#include "simulate/block_cholesky.hpp"
 #include "simulate/enclosed_volume.hpp"
 #include "simulate/initial_shape.hpp"
 #include "util/error.hpp"
@@ -37,7 +38,22 @@ struct InflationSolver::Sparse {
   std::vector<int> slot;
   std::vector<int> diag;
   std::vector<int> pinnedEntries;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;  // LinearSolver::SimplicialLdlt
+  BlockCholesky chol;                                       // LinearSolver::Supernodal
+  bool supernodal = true;
+
+  // Factorizes H; false when it is not positive definite.
+  bool factorize() {
+    if (supernodal) return chol.factorize(H);
+    ldlt.factorize(H);
+    return ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0;
+  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) {
+    if (!supernodal) return ldlt.solve(b);
+    Eigen::VectorXd x = b;
+    chol.solve(x);
+    return x;
+  }
 };
 
 InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double pressure,
@@ -84,7 +100,15 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
   s.diag.resize(n);
   for (int i = 0; i < n; ++i) s.diag[i] = find(i, i);
   choosePins();
-  s.ldlt.analyzePattern(s.H);  // symbolic factorization, once per mesh
+  // Symbolic factorization, once per mesh.
+  s.supernodal = options_.linearSolver != LinearSolver::SimplicialLdlt;
+  if (s.supernodal)
+    s.chol.analyze(s.H, x_,
+                   options_.linearSolver == LinearSolver::SupernodalAmd ? BlockCholesky::Ordering::Amd
+                                                                        : BlockCholesky::Ordering::NestedDissection);
+  else
+    s.ldlt.analyzePattern(s.H);
+  if (s.supernodal) timings_.factorNonZeros = s.chol.factorNonZeros(), timings_.factorFlops = s.chol.factorFlops();
   forceScale_ = std::max(pressure_ * mesh_.meanEdgeLength * mesh_.meanEdgeLength, 1e-300);
   energy_ = totalEnergy(x_);
   if (!std::isfinite(energy_)) fail("The start shape is invalid (a triangle is collapsed). Try another start.");
@@ -192,7 +216,7 @@ bool InflationSolver::preconditionedCg(Eigen::VectorXd& d) {
   Sparse& s = *sparse_;
   const auto t0 = Clock::now();
   d.setZero(grad_.size());
-  Eigen::VectorXd r = -grad_, z = s.ldlt.solve(r), p = z, Ap;
+  Eigen::VectorXd r = -grad_, z = s.solve(r), p = z, Ap;
   double rz = r.dot(z);
   const double target = 1e-3 * grad_.norm();
   bool ok = false;
@@ -207,7 +231,7 @@ bool InflationSolver::preconditionedCg(Eigen::VectorXd& d) {
       ok = true;
       break;
     }
-    z = s.ldlt.solve(r);
+    z = s.solve(r);
     const double rzNew = r.dot(z);
     p = z + (rzNew / rz) * p;
     rz = rzNew;
@@ -255,16 +279,15 @@ InflateState InflationSolver::step(int maxIterations, double maxMillis) {
       triedReuse = true;
       if (!reused) {
         t0 = Clock::now();
-        s.ldlt.factorize(s.H);
+        // A failed Cholesky (non-positive pivot) means H + shift is not positive definite: no descent guarantee.
+        factorValid_ = s.factorize();
         ++timings_.factorizations;
         timings_.factorMs += msSince(t0);
-        // An LDL^T with a non-positive pivot means H + shift is not positive definite: no descent guarantee.
-        factorValid_ = s.ldlt.info() == Eigen::Success && s.ldlt.vectorD().minCoeff() > 0;
         if (!factorValid_) {
           shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
           continue;
         }
-        d = -s.ldlt.solve(grad_);
+        d = -s.solve(grad_);
       }
       const double slope = grad_.dot(d);
       if (!d.allFinite() || !(slope < 0)) {
@@ -328,9 +351,8 @@ double InflationSolver::timeFactorization() {
   Sparse& s = *sparse_;
   Eigen::Map<Eigen::VectorXd>(s.H.valuePtr(), s.H.nonZeros()) = s.values;
   const auto t0 = Clock::now();
-  s.ldlt.factorize(s.H);
+  factorValid_ = s.factorize();
   const double ms = msSince(t0);
-  factorValid_ = s.ldlt.info() == Eigen::Success && s.ldlt.vectorD().minCoeff() > 0;
   return ms;
 }
 

@@ -17,6 +17,11 @@
 
 namespace billow {
 
+// Sparse solver for the Newton systems. Supernodal: our multifrontal Cholesky on 3x3 vertex blocks
+// (block_cholesky.hpp) with a nested dissection ordering; SupernodalAmd: the same with AMD on the vertex
+// graph; SimplicialLdlt: Eigen's SimplicialLDLT with AMD (the reference; several times slower).
+enum class LinearSolver { Supernodal, SupernodalAmd, SimplicialLdlt };
+
 struct InflateOptions {
   // Converged when max |f_i| / (p * l^2) < tolerance: the largest net force on a vertex relative to the
   // pressure load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
@@ -29,6 +34,13 @@ struct InflateOptions {
   // Try the last factorization as a CG preconditioner before refactorizing. Off: on the Mylar balloon the
   // Hessian changes too much between iterations (elements change regime) and CG rarely converged in time.
   bool reuseFactorization = false;
+  // The supernodal solver's dense kernels vectorize natively but run scalar in wasm, where Eigen's
+  // simplicial LDLT is as fast (bench/README.md): each build gets the faster one.
+#ifdef __EMSCRIPTEN__
+  LinearSolver linearSolver = LinearSolver::SimplicialLdlt;
+#else
+  LinearSolver linearSolver = LinearSolver::Supernodal;
+#endif
   double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
 };
 
@@ -38,8 +50,9 @@ const char* toString(InflateState s);
 struct InflateTimings {
   double setupMs = 0, assembleMs = 0, factorMs = 0, lineSearchMs = 0, totalMs = 0;
   int factorizations = 0;
-  double reuseMs = 0;    // preconditioned CG with an older factorization
-  int reusedSolves = 0;  // Newton directions found that way
+  double reuseMs = 0;                          // preconditioned CG with an older factorization
+  int reusedSolves = 0;                        // Newton directions found that way
+  double factorNonZeros = 0, factorFlops = 0;  // size and multiply-adds of one factorization (supernodal)
 };
 
 // Per-triangle fields for display (the compression field predicts wrinkles).

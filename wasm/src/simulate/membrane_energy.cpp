@@ -100,9 +100,13 @@ Eigen::Vector3d cauchyGreen(const Eigen::Matrix<double, 3, 2>& F) {
   return {F.col(0).squaredNorm(), F.col(1).squaredNorm(), F.col(0).dot(F.col(1))};
 }
 
+// Clamps the negative eigenvalues of a symmetric 2x2 or 3x3 matrix at zero. Most matrices are already
+// positive definite (taut and wrinkled elements outside the bands): a Cholesky test skips the eigensolver.
 template <int N>
 Eigen::Matrix<double, N, N> clampedPsd(const Eigen::Matrix<double, N, N>& m) {
-  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>> es(m);
+  if (Eigen::LLT<Eigen::Matrix<double, N, N>>(m).info() == Eigen::Success) return m;
+  Eigen::SelfAdjointEigenSolver<Eigen::Matrix<double, N, N>> es;
+  es.computeDirect(m);  // closed form for 2x2 and 3x3
   if (es.eigenvalues().minCoeff() >= 0) return m;
   return es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() * es.eigenvectors().transpose();
 }

@@ -214,6 +214,9 @@ export class App {
 
   // Every change of the design goes through here: history, views, autosave.
   commitDesign(design, { reset = false, mergeKey = null } = {}) {
+    // Panels being made for the previous design are stale now.
+    this.patternTicket += 1;
+    this.patterns.running?.cancel();
     if (reset) this.history.reset(design);
     else this.history.apply(() => design, { mergeKey });
     this.showDesign();

@@ -32,6 +32,10 @@ export const Op = Object.freeze({
   examplePattern: 'examplePattern',
 });
 
+// Quick operations that only read the worker's state: they run at once, even between the steps of a
+// long operation, so drawing stays responsive while the panels inflate.
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment]);
+
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);
 

@@ -2,7 +2,7 @@
 // A step should take at most a few tens of milliseconds (long solvers step with a time budget); between
 // steps the runner yields to the event loop so a { kind: 'cancel' } message can arrive, and a cancelled
 // operation stops at its next step.
-import { ErrorCode, SolverError, transferables } from './protocol.js';
+import { ErrorCode, IMMEDIATE_OPS, SolverError, transferables } from './protocol.js';
 
 const tick = () =>
   new Promise((resolve) => {
@@ -29,11 +29,17 @@ export class Runner {
       return;
     }
     if (message.kind !== 'request') return;
+    if (IMMEDIATE_OPS.has(message.op)) {
+      // Quick, read-only operations (a seam preview while a long inflation runs) do not wait in line:
+      // they run now, between two steps of whatever is running.
+      this.run(message, { immediate: true });
+      return;
+    }
     // One operation at a time, in order: the worker's state changes only between operations.
     this.queue = this.queue.then(() => this.run(message));
   }
 
-  async run({ id, op, args }) {
+  async run({ id, op, args }, { immediate = false } = {}) {
     const handler = this.handlers[op];
     if (!handler) {
       this.post({ kind: 'reply', id, ok: false, error: { code: ErrorCode.unknownOp, message: `Unknown operation ${op}` } });
@@ -44,7 +50,7 @@ export class Runner {
       steps = handler(args, { id });
       for (;;) {
         // Yield to the event loop before each step, so that a cancel sent meanwhile is seen.
-        await tick();
+        if (!immediate) await tick();
         if (this.cancelled.has(id)) throw new SolverError(ErrorCode.cancelled, 'Cancelled.');
         const { value, done } = steps.next();
         if (done) {
