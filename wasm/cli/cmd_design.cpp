@@ -1,7 +1,8 @@
 // billow design DESIGN.json --out-dir DIR [--resolution N] [--no-optimize] [--quiet]: the design's sewn
 // pattern (DIR/pattern.json, with the target shape as "inflated" start), its inflated shape from the target
 // (DIR/inflated.obj) and a report (DIR/report.json: distance to the target, seam length mismatch, solver
-// figures, timings). Pattern optimization is not built yet: the flattened pattern is used as it is.
+// figures, timings). Unless --no-optimize, the panels are optimized first (optimize/pattern_optimizer.hpp)
+// and report.json gets the per-iteration error and time.
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -10,6 +11,7 @@
 
 #include "cli/commands.hpp"
 #include "io/pattern_json.hpp"
+#include "optimize/pattern_optimizer.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/design_scene.hpp"
 #include "simulate/inflate.hpp"
@@ -81,8 +83,8 @@ int designCommand(const std::vector<std::string>& argv) {
                  "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize] [--quiet]\n\n"
                  "Makes the sewn pattern of a design (its segments flattened into panels of about TRIANGLES\n"
                  "triangles in all, default 3000), inflates it from the target shape and writes\n"
-                 "DIR/pattern.json, DIR/inflated.obj and DIR/report.json. Pattern optimization is not\n"
-                 "available yet, so the flattened panels are used as they are (as with --no-optimize).\n"
+                 "DIR/pattern.json, DIR/inflated.obj and DIR/report.json. The panels are optimized so that\n"
+                 "the inflated shape comes close to the target, unless --no-optimize.\n"
                  "Exit code 0 when the inflated shape settles, 1 when the design cannot be patterned or\n"
                  "the simulation does not settle (the files written so far stay).\n");
     return args.has("--help") ? 0 : 2;
@@ -92,8 +94,7 @@ int designCommand(const std::vector<std::string>& argv) {
   const std::string dir = args.get("--out-dir");
   PatternBuildOptions options;
   options.triangles = positiveInt(args, "--resolution", options.triangles);
-  std::fprintf(stderr, "billow design: pattern optimization is not available yet; using the flattened panels%s\n",
-               args.has("--no-optimize") ? "" : " (as with --no-optimize)");
+  const bool optimizePanels = !args.has("--no-optimize");
 
   const auto scene = loadDesignScene(args.positional[0], quiet);
   const Design& design = scene->design;
@@ -104,7 +105,7 @@ int designCommand(const std::vector<std::string>& argv) {
   }
   options.material = design.material;
   options.pressure = design.pressure;
-  const BuiltPattern bp = buildPattern(scene->target, scene->segmentation, options);
+  BuiltPattern bp = buildPattern(scene->target, scene->segmentation, options);
   printProblems(bp.problems);
   if (!bp.ok()) {
     std::fprintf(stderr, "billow design: some segments could not be made into panels (see the errors above)\n");
@@ -115,6 +116,47 @@ int designCommand(const std::vector<std::string>& argv) {
                  "pattern: %d panels, %d triangles, %d stitches, h %.4g m, seam length mismatch %.2f %% (%.0f ms)\n",
                  bp.figures.panels, bp.figures.triangles, bp.figures.stitches, bp.figures.edgeLength,
                  100 * bp.figures.maxSeamLengthMismatch, bp.figures.totalMs);
+  using nlohmann::json;
+  json history = json::array();
+  std::string optimizeState = "skipped";
+  double optimizeMs = 0, edgeMismatch = bp.figures.maxEdgeLengthMismatch;
+  if (optimizePanels) {
+    std::vector<double> seamWeights;
+    for (const DesignSeam& s : design.seams) seamWeights.push_back(s.weight);
+    const auto t1 = Clock::now();
+    PatternOptimizer optimizer(scene->target, bp, seamWeights);
+    while (optimizer.step(5, 1000) == OptimizeState::Running)
+      if (!quiet && !optimizer.history().empty()) {
+        const OptimizeRecord& h = optimizer.history().back();
+        std::fprintf(stderr, "  optimize: iteration %3d  distance rms %.3f %%  max %.3f %%  seam mismatch %.1e\n",
+                     h.iteration, 100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch);
+      }
+    optimizeMs = msSince(t1);
+    optimizeState = toString(optimizer.state());
+    if (!quiet)
+      std::fprintf(stderr, "optimize: %s after %d iterations (%.0f ms)%s%s\n", optimizeState.c_str(),
+                   optimizer.iterations(), optimizeMs, optimizer.message().empty() ? "" : ": ",
+                   optimizer.message().c_str());
+    for (const OptimizeRecord& h : optimizer.history())
+      history.push_back({{"iteration", h.iteration},
+                         {"objective", h.objective},
+                         {"distance_rms", h.distanceRms},
+                         {"distance_max", h.distanceMax},
+                         {"seam_mismatch", h.seamMismatch},
+                         {"gradient", h.gradient},
+                         {"projected", h.projected},
+                         {"ms", h.ms}});
+    if (optimizer.state() != OptimizeState::Failed) {
+      edgeMismatch = optimizer.history().back().seamMismatch;
+      for (size_t p = 0; p < bp.pattern.panels.size(); ++p)
+        bp.pattern.panels[p].vertices = optimizer.pattern().panels[p].vertices;
+      // Start the final inflation from the optimizer's shape (one row per panel vertex).
+      const SewnMesh& m = optimizer.mesh();
+      for (size_t p = 0; p < bp.pattern.panels.size(); ++p)
+        for (int v = 0; v < bp.pattern.panels[p].vertices.rows(); ++v)
+          bp.pattern.inflated[p].row(v) = optimizer.inflated().row(m.simVertex(int(p), v));
+    }
+  }
   std::filesystem::create_directories(dir);
   writeTextFile(dir + "/pattern.json", writePatternJson(bp.pattern) + "\n");
 
@@ -129,17 +171,16 @@ int designCommand(const std::vector<std::string>& argv) {
   writeTextFile(dir + "/inflated.obj", objText(mesh, r.positions));
   const Distance d = distanceToTarget(*scene, r.positions);
 
-  using nlohmann::json;
   const json report = {
       {"format", "billow-design-report"},
       {"version", 1},
-      {"optimized", false},
+      {"optimized", optimizePanels && optimizeState != "failed"},
+      {"optimize", {{"state", optimizeState}, {"ms", optimizeMs}, {"history", history}}},
       {"panels", bp.figures.panels},
       {"triangles", bp.figures.triangles},
       {"edge_length", bp.figures.edgeLength},
       {"distance_to_target", {{"rms", d.rms}, {"max", d.max}, {"relative_to", "bounding-box diagonal"}}},
-      {"seam_length_mismatch",
-       {{"max_piece", bp.figures.maxSeamLengthMismatch}, {"max_edge", bp.figures.maxEdgeLengthMismatch}}},
+      {"seam_length_mismatch", {{"max_piece", bp.figures.maxSeamLengthMismatch}, {"max_edge", edgeMismatch}}},
       {"inflate",
        {{"state", toString(r.state)},
         {"converged", r.converged},
@@ -154,6 +195,7 @@ int designCommand(const std::vector<std::string>& argv) {
         {"flatten", bp.figures.flattenMs},
         {"mesh", bp.figures.meshMs},
         {"pattern", bp.figures.totalMs},
+        {"optimize", optimizeMs},
         {"inflate", r.timings.totalMs + r.timings.setupMs},
         {"total", msSince(t0)}}}};
   writeTextFile(dir + "/report.json", report.dump(2) + "\n");

@@ -1,0 +1,70 @@
+#include "optimize/adjoint.hpp"
+
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
+#include <cmath>
+
+namespace billow {
+
+std::vector<int> rigidPins(const Vertices& x) {
+  const int n = static_cast<int>(x.rows());
+  if (n < 3) return {};
+  const Eigen::Vector3d a = x.row(0);
+  int b = 0, c = 0;
+  double best = -1;
+  for (int v = 0; v < n; ++v)
+    if (const double d = (x.row(v).transpose() - a).squaredNorm(); d > best) best = d, b = v;
+  const Eigen::Vector3d ab = (x.row(b).transpose() - a).normalized();
+  best = -1;
+  for (int v = 0; v < n; ++v) {
+    const Eigen::Vector3d r = x.row(v).transpose() - a;
+    if (const double d = (r - r.dot(ab) * ab).squaredNorm(); d > best) best = d, c = v;
+  }
+  const Eigen::Vector3d normal = ab.cross(x.row(c).transpose() - a);
+  int ia = 0, in = 0;
+  ab.cwiseAbs().maxCoeff(&ia);      // b slides along its dominant axis
+  normal.cwiseAbs().maxCoeff(&in);  // c keeps its coordinate along the plane normal
+  std::vector<int> pins = {0, 1, 2};
+  for (int k = 0; k < 3; ++k)
+    if (k != ia) pins.push_back(3 * b + k);
+  pins.push_back(3 * c + in);
+  return pins;
+}
+
+double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b, const std::vector<int>& pins,
+                    Eigen::VectorXd& lambda) {
+  const int n = static_cast<int>(K.rows());
+  std::vector<char> pinned(n, 0);
+  for (int p : pins) pinned[p] = 1;
+  const double scale = K.diagonal().cwiseAbs().mean();
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(K.nonZeros() + pins.size());
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
+      if (!pinned[it.row()] && !pinned[it.col()]) trip.emplace_back(it.row(), it.col(), it.value());
+  for (int p : pins) trip.emplace_back(p, p, scale > 0 ? scale : 1.0);
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(trip.begin(), trip.end());
+  Eigen::VectorXd rhs = b;
+  for (int p : pins) rhs[p] = 0;
+  const double bn = std::max(rhs.norm(), 1e-300);
+  const auto residual = [&]() { return lambda.allFinite() ? (A * lambda - rhs).norm() / bn : INFINITY; };
+  {
+    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+    if (ldlt.info() == Eigen::Success) {
+      lambda = ldlt.solve(rhs);
+      const double r = residual();
+      if (r < 1e-8) return r;
+    }
+  }
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+  lu.compute(A);
+  if (lu.info() != Eigen::Success) {
+    lambda = Eigen::VectorXd::Zero(n);
+    return INFINITY;
+  }
+  lambda = lu.solve(rhs);
+  return residual();
+}
+
+}  // namespace billow

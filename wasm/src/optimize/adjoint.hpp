@@ -1,0 +1,25 @@
+// The adjoint of the equilibrium constraint for the reduced-space method (DESIGN.md "Pattern optimization"):
+// with g(x, X) = dPi/dx = 0 (Eq. 7, g = -f) and K = dg/dx, the inflated shape x(X) has
+// dx/dX = -K^-1 dg/dX, so the reduced gradient of E(x(X), X) is
+//     dE/dX = dE/dX|_x - lambda^T dg/dX,   K lambda = dE/dx.
+// K is singular along the six rigid motions; they are pinned (3-2-1 on three far-apart vertices). Which
+// pins does not matter because x is rigidly aligned to minimize E first (rigid_align.hpp): then dE/dx has
+// no rigid component and every choice of pins gives the same dE/dX.
+#pragma once
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "mesh/tri_mesh.hpp"
+
+namespace billow {
+
+// Six DOF indices (3 v + axis) that remove the rigid motions of x: all of vertex a, two coordinates of the
+// farthest vertex b, one of the vertex c farthest from the line ab.
+std::vector<int> rigidPins(const Vertices& x);
+
+// Solves K lambda = b with lambda = 0 at the pins (LDL^T; sparse LU when LDL^T fails or is inaccurate: K is
+// indefinite because of the pressure term). Returns the relative residual |K lambda - b| / |b| on free DOFs.
+double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b, const std::vector<int>& pins,
+                    Eigen::VectorXd& lambda);
+
+}  // namespace billow

@@ -1,0 +1,251 @@
+#include "optimize/pattern_optimizer.hpp"
+
+#include <chrono>
+#include <cmath>
+
+#include "optimize/adjoint.hpp"
+#include "optimize/rest_derivatives.hpp"
+#include "optimize/rigid_align.hpp"
+#include "optimize/seam_projection.hpp"
+#include "simulate/initial_shape.hpp"
+#include "util/error.hpp"
+
+namespace billow {
+
+namespace {
+double nowMs() {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
+}
+}  // namespace
+
+const char* toString(OptimizeState s) {
+  switch (s) {
+    case OptimizeState::Running:
+      return "running";
+    case OptimizeState::Converged:
+      return "converged";
+    case OptimizeState::Stopped:
+      return "stopped";
+    case OptimizeState::Failed:
+      return "failed";
+  }
+  return "?";
+}
+
+PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& built,
+                                   const std::vector<double>& seamWeights, const OptimizeOptions& options)
+    : options_(options), pattern_(built.pattern), start_(nowMs()) {
+  imls_ = std::make_unique<ImlsDistance>(target, options.imls);
+  mesh_ = sewPattern(pattern_);
+  objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights, options.weights);
+  material_.youngsModulus = pattern_.material.youngsModulus;
+  material_.thickness = pattern_.material.thickness;
+  material_.band = options.inflate.band;
+  X_ = packPattern(pattern_);
+  x_ = startFromInflated(pattern_, mesh_);
+  if (x_.rows() != mesh_.numVertices) x_ = sphericalStart(mesh_);
+  timings_.setupMs = elapsedMs();
+}
+
+PatternOptimizer::~PatternOptimizer() = default;
+
+double PatternOptimizer::elapsedMs() const { return nowMs() - start_; }
+
+bool PatternOptimizer::rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) const {
+  const std::vector<int> start = panelTriangleStart(pattern_);
+  for (size_t p = 0; p < pattern_.panels.size(); ++p) {
+    const Triangles& F = pattern_.panels[p].triangles;
+    for (int k = 0; k < F.rows(); ++k) {
+      const auto corner = [&](int c) {
+        return Eigen::Vector2d(X.segment<2>(2 * (mesh.panelVertexStart[p] + F(k, c))));
+      };
+      const Eigen::Vector2d a = corner(0), b = corner(1), c = corner(2);
+      const double cross = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+      if (!(cross > 1e-6 * mesh.meanEdgeLength * mesh.meanEdgeLength)) return false;  // flipped or degenerate
+      mesh.rest[start[p] + k] = makeElementRest(a, b, c);
+    }
+  }
+  return true;
+}
+
+bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton) {
+  if (!X.allFinite()) return false;
+  SewnMesh mesh = mesh_;
+  if (!rebuildRest(X, mesh)) return false;
+  const double t0 = nowMs();
+  InflationSolver solver(std::move(mesh), pattern_.material, pattern_.pressure, options_.inflate, start);
+  while (solver.step(options_.inflate.maxIterations) == InflateState::Running) {
+  }
+  ++timings_.equilibriumSolves;
+  timings_.equilibriumMs += nowMs() - t0;
+  if (newton) *newton = solver.iterations();
+  if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) return false;
+  x = solver.positions();
+  const double t1 = nowMs();
+  alignRigid(*objective_, x);
+  timings_.alignMs += nowMs() - t1;
+  return x.allFinite();
+}
+
+double PatternOptimizer::energy(const Eigen::VectorXd& X, const Vertices& x, ObjectiveTerms* terms) const {
+  return objective_->shapeEnergy(x, nullptr, terms) + objective_->patternEnergy(X, nullptr, terms);
+}
+
+void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad) {
+  const double t0 = nowMs();
+  SewnMesh mesh = mesh_;
+  rebuildRest(X, mesh);
+  Eigen::VectorXd dEdx, lambda, product = Eigen::VectorXd::Zero(X.size());
+  objective_->shapeEnergy(x, &dEdx);
+  const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure);
+  solveAdjoint(K, dEdx, rigidPins(x), lambda);
+  addRestGradientProduct(mesh, pattern_, X, x, lambda, material_, product);
+  objective_->patternEnergy(X, &grad);
+  grad -= product;  // dE/dX = dE/dX|_x - lambda^T dg/dX
+  timings_.adjointMs += nowMs() - t0;
+}
+
+bool PatternOptimizer::evaluate(const Eigen::VectorXd& X, double* E, Eigen::VectorXd* grad, Vertices* x) {
+  Vertices xs;
+  if (!solveEquilibrium(X, x_, xs, nullptr)) return false;
+  if (E) *E = energy(X, xs, nullptr);
+  if (grad) reducedGradient(X, xs, *grad);
+  if (x) *x = xs;
+  return true;
+}
+
+void PatternOptimizer::record(double alpha, int newton, bool projected) {
+  OptimizeRecord r;
+  r.iteration = iteration_;
+  r.objective = energy(X_, x_, &r.terms);
+  const double D = objective_->modelSize();
+  const Eigen::VectorXd& w = objective_->targetWeights();
+  int count = 0;
+  for (int i = 0; i < x_.rows(); ++i) {
+    if (w[i] == 0) continue;
+    const double d = imls_->closestDistance(x_.row(i).transpose()) / D;
+    r.distanceRms += d * d, r.distanceMax = std::max(r.distanceMax, d), ++count;
+  }
+  r.distanceRms = count ? std::sqrt(r.distanceRms / count) : 0;
+  r.seamMismatch = objective_->maxEdgeMismatch(X_);
+  const double norm = double(objective_->numVertices()) * D;
+  r.gradient = g_.size() ? g_.lpNorm<Eigen::Infinity>() * norm / 2 : 0;
+  r.stepLength = alpha, r.equilibriumIterations = newton, r.ms = elapsedMs(), r.projected = projected;
+  history_.push_back(r);
+  if (options_.keepShapes) shapes_.push_back(x_);
+}
+
+void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
+  message_ = message;
+  if (options_.exactSeamLengths && s != OptimizeState::Failed) {
+    Eigen::VectorXd X = X_;
+    projectSeamLengths(objective_->edgePairs(), X);
+    Vertices x;
+    int newton = 0;
+    if (solveEquilibrium(X, x_, x, &newton)) {
+      X_ = X, x_ = x;
+      unpackPattern(X_, pattern_);
+      reducedGradient(X_, x_, g_);
+      record(0, newton, true);
+    } else {
+      message_ += (message_.empty() ? "" : "; ") + std::string("the exact seam-length projection did not settle");
+    }
+  }
+  state_ = s;
+  timings_.totalMs = elapsedMs();
+}
+
+// One L-BFGS iteration (two-loop recursion, Armijo backtracking with equilibrium re-solves).
+bool PatternOptimizer::iterate() {
+  const int m = static_cast<int>(S_.size());
+  Eigen::VectorXd q = -g_;
+  std::vector<double> a(m);
+  for (int i = m - 1; i >= 0; --i) a[i] = S_[i].dot(q) / Y_[i].dot(S_[i]), q -= a[i] * Y_[i];
+  if (m > 0) q *= S_[m - 1].dot(Y_[m - 1]) / Y_[m - 1].squaredNorm();
+  for (int i = 0; i < m; ++i) q += (a[i] - Y_[i].dot(q) / Y_[i].dot(S_[i])) * S_[i];
+  Eigen::VectorXd d = q;
+  double slope = g_.dot(d);
+  if (!(slope < 0)) d = -g_, slope = -g_.squaredNorm(), S_.clear(), Y_.clear();
+  // Cap the largest vertex move (the first step has no curvature information at all).
+  double maxMove = 0;
+  for (int v = 0; v < d.size() / 2; ++v) maxMove = std::max(maxMove, d.segment<2>(2 * v).norm());
+  const double cap = options_.maxStep * objective_->meanEdgeLength();
+  double alpha = (m == 0 || maxMove > cap) ? cap / std::max(maxMove, 1e-300) : 1.0;
+  if (m > 0) alpha = std::min(alpha, 1.0);
+  for (int h = 0; h <= options_.maxHalvings; ++h, alpha *= 0.5) {
+    const Eigen::VectorXd X = X_ + alpha * d;
+    Vertices x;
+    int newton = 0;
+    if (!solveEquilibrium(X, x_, x, &newton)) {
+      ++timings_.rejectedTrials;
+      continue;
+    }
+    const double E = energy(X, x, nullptr);
+    if (!(std::isfinite(E) && E <= E_ + 1e-4 * alpha * slope)) {
+      ++timings_.rejectedTrials;
+      continue;
+    }
+    Eigen::VectorXd g;
+    reducedGradient(X, x, g);
+    if (!g.allFinite()) return false;
+    const Eigen::VectorXd s = X - X_, y = g - g_;
+    if (s.dot(y) > 1e-12 * s.norm() * y.norm()) {
+      S_.push_back(s), Y_.push_back(y);
+      if (static_cast<int>(S_.size()) > options_.memory) S_.erase(S_.begin()), Y_.erase(Y_.begin());
+    }
+    stalled_ = (E_ - E) <= options_.relativeDecrease * std::abs(E_) ? stalled_ + 1 : 0;
+    X_ = X, x_ = std::move(x), g_ = std::move(g), E_ = E, ++iteration_;
+    unpackPattern(X_, pattern_);
+    record(alpha, newton, false);
+    return true;
+  }
+  return false;
+}
+
+OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
+  if (state_ != OptimizeState::Running) return state_;
+  const double t0 = nowMs();
+  if (!started_) {
+    started_ = true;
+    Vertices x;
+    int newton = 0;
+    if (!solveEquilibrium(X_, x_, x, &newton)) {
+      finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
+      return state_;
+    }
+    x_ = std::move(x);
+    E_ = energy(X_, x_, nullptr);
+    reducedGradient(X_, x_, g_);
+    record(0, newton, false);
+  }
+  for (int k = 0; k < maxIterations; ++k) {
+    if (history_.back().gradient < options_.gradientTolerance) {
+      finish(OptimizeState::Converged, "");
+      break;
+    }
+    if (stalled_ >= options_.stallIterations) {
+      finish(OptimizeState::Converged, "the objective stopped decreasing");
+      break;
+    }
+    if (iteration_ >= options_.maxIterations) {
+      finish(OptimizeState::Stopped, "the iteration limit was reached");
+      break;
+    }
+    if (options_.maxMillis > 0 && elapsedMs() > options_.maxMillis) {
+      finish(OptimizeState::Stopped, "the time limit was reached");
+      break;
+    }
+    if (!iterate()) {
+      if (S_.empty()) {  // not even a short steepest-descent step helps: a (numerical) minimum
+        finish(OptimizeState::Converged, "no further decrease along the gradient");
+        break;
+      }
+      S_.clear(), Y_.clear();
+    }
+    if (maxMillis > 0 && nowMs() - t0 > maxMillis) break;
+  }
+  timings_.totalMs = elapsedMs();
+  return state_;
+}
+
+}  // namespace billow

@@ -1,0 +1,120 @@
+// Pattern optimization (Skouras et al. 2014, Sec. 5; DESIGN.md "Pattern optimization"): flat panels X whose
+// inflated shape x(X) is as close as possible to the target, min_X E(x(X), X) with f(x, X) = 0 (Eq. 8).
+//
+// Reduced-space method: x(X) by the simulator (InflationSolver, warm-started from the last accepted x),
+// placed rigidly where E is least (rigid_align.hpp); the gradient by the adjoint (adjoint.hpp); L-BFGS on X
+// with a backtracking Armijo line search that re-solves equilibrium for every trial (so the objective of
+// every accepted step is the true E(x(X), X) and decreases monotonically). Trial patterns with a flipped or
+// degenerate rest triangle, a failed equilibrium, or a non-finite value are rejected; the last good state
+// is never lost. Null spaces: each panel's 2D rigid motion leaves E unchanged (its gradient has no
+// component there, so L-BFGS never moves along it); interior sliding is removed by E_laplace (Eq. 13).
+// Equal seam lengths: E_length as a penalty while iterating, then an exact projection (seam_projection.hpp)
+// and one more equilibrium solve when the optimizer stops.
+#pragma once
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "optimize/objectives.hpp"
+#include "simulate/inflate.hpp"
+
+namespace billow {
+
+struct OptimizeOptions {
+  OptimizeWeights weights;
+  ImlsOptions imls;
+  InflateOptions inflate;  // equilibrium solves (tolerance: forces < 1e-5 relative, as the paper)
+  int maxIterations = 300;
+  double maxMillis = 0;  // total budget over all steps (<= 0: none)
+  // Converged when the scaled reduced gradient ||dE/dX||_inf n D / 2 (about the largest residual moved per
+  // meter, relative to the model size D) is below this, or when E decreased by less than relativeDecrease
+  // (relative) in each of the last `stallIterations` iterations.
+  double gradientTolerance = 1e-6;
+  double relativeDecrease = 1e-6;
+  int stallIterations = 5;
+  int memory = 8;                // L-BFGS pairs
+  double maxStep = 0.5;          // largest panel-vertex move of one step, in mean rest edge lengths
+  int maxHalvings = 12;          // line search
+  bool exactSeamLengths = true;  // project onto equal stitched edge lengths at the end
+  bool keepShapes = false;       // keep x of every accepted iterate (benchmarks: preview quality)
+};
+
+enum class OptimizeState { Running, Converged, Stopped, Failed };
+const char* toString(OptimizeState s);
+
+struct OptimizeRecord {
+  int iteration = 0;
+  ObjectiveTerms terms;
+  double objective = 0;
+  double distanceRms = 0, distanceMax = 0;  // closest-point distance of outer vertices / bbox diagonal
+  double seamMismatch = 0;                  // max relative stitched-edge length difference
+  double gradient = 0;                      // scaled ||dE/dX||_inf (see gradientTolerance)
+  double stepLength = 0;                    // line-search alpha
+  int equilibriumIterations = 0;            // Newton iterations of the accepted solve
+  double ms = 0;                            // since the optimizer was made
+  bool projected = false;                   // the final seam-length projection (not an L-BFGS step)
+};
+
+struct OptimizeTimings {
+  double setupMs = 0, equilibriumMs = 0, alignMs = 0, adjointMs = 0, objectiveMs = 0, totalMs = 0;
+  int equilibriumSolves = 0, rejectedTrials = 0;
+};
+
+class PatternOptimizer {
+ public:
+  // built: the flattened pattern (its `inflated` = the target positions, the first equilibrium's start).
+  // seamWeights[s]: sigma_s of seam s (Eq. 10). Throws billow::Error when the pattern does not sew.
+  PatternOptimizer(const TriMesh& target, const BuiltPattern& built, const std::vector<double>& seamWeights,
+                   const OptimizeOptions& options = {});
+  ~PatternOptimizer();
+
+  // Up to maxIterations L-BFGS iterations or maxMillis (<= 0: none), whichever first; checked between
+  // iterations (one iteration may overrun). The first call also solves the initial equilibrium.
+  OptimizeState step(int maxIterations, double maxMillis = 0);
+
+  OptimizeState state() const { return state_; }
+  const std::string& message() const { return message_; }
+  int iterations() const { return iteration_; }
+  const Pattern& pattern() const { return pattern_; }  // panels X of the last accepted iterate
+  const Vertices& inflated() const { return x_; }      // x(X), #V by 3 [m]
+  const SewnMesh& mesh() const { return mesh_; }
+  const PatternObjective& objective() const { return *objective_; }
+  const std::vector<OptimizeRecord>& history() const { return history_; }
+  const std::vector<Vertices>& shapes() const { return shapes_; }  // when options.keepShapes
+  const OptimizeTimings& timings() const { return timings_; }
+
+  // For tests: E(x(X), X) and its reduced gradient at pattern coordinates X, solving equilibrium from
+  // the current x. Returns false when the equilibrium fails.
+  bool evaluate(const Eigen::VectorXd& X, double* E, Eigen::VectorXd* grad, Vertices* x = nullptr);
+
+ private:
+  bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton);
+  void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
+  double energy(const Eigen::VectorXd& X, const Vertices& x, ObjectiveTerms* terms) const;
+  bool iterate();
+  void finish(OptimizeState s, const std::string& message);
+  void record(double alpha, int newton, bool projected);
+  bool rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) const;
+  double elapsedMs() const;
+
+  OptimizeOptions options_;
+  std::unique_ptr<ImlsDistance> imls_;
+  std::unique_ptr<PatternObjective> objective_;
+  Pattern pattern_;
+  SewnMesh mesh_;
+  MembraneMaterial material_;
+  Eigen::VectorXd X_, g_;
+  Vertices x_;
+  double E_ = 0;
+  std::vector<Eigen::VectorXd> S_, Y_;  // L-BFGS pairs
+  std::vector<OptimizeRecord> history_;
+  std::vector<Vertices> shapes_;
+  OptimizeTimings timings_;
+  OptimizeState state_ = OptimizeState::Running;
+  std::string message_;
+  int iteration_ = 0, stalled_ = 0;
+  bool started_ = false;
+  double start_ = 0;  // steady-clock ms at construction
+};
+
+}  // namespace billow

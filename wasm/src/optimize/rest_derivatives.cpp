@@ -1,0 +1,172 @@
+#include "optimize/rest_derivatives.hpp"
+
+#include "simulate/enclosed_volume.hpp"
+
+namespace billow {
+
+namespace {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+
+// First-order dual number over the six rest coordinates of one triangle.
+struct D6 {
+  double v = 0;
+  Vector6d d = Vector6d::Zero();
+};
+D6 operator+(const D6& a, const D6& b) { return {a.v + b.v, a.d + b.d}; }
+D6 operator-(const D6& a, const D6& b) { return {a.v - b.v, a.d - b.d}; }
+D6 operator*(const D6& a, const D6& b) { return {a.v * b.v, a.v * b.d + b.v * a.d}; }
+D6 operator*(double s, const D6& a) { return {s * a.v, s * a.d}; }
+D6 var(double v, int i) {
+  D6 r{v, Vector6d::Zero()};
+  r.d[i] = 1;
+  return r;
+}
+
+// Per-triangle view of the pattern: rest corners and simulation corners.
+template <class F>
+void forEachElement(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, F&& fn) {
+  const std::vector<int> start = panelTriangleStart(pattern);
+  for (size_t p = 0; p < pattern.panels.size(); ++p) {
+    const Panel& panel = pattern.panels[p];
+    for (int k = 0; k < panel.triangles.rows(); ++k) {
+      const int t = start[p] + k;
+      int gid[3];
+      Eigen::Vector2d R[3];
+      for (int c = 0; c < 3; ++c) {
+        gid[c] = mesh.panelVertexStart[p] + panel.triangles(k, c);
+        R[c] = X.segment<2>(2 * gid[c]);
+      }
+      fn(t, gid, R);
+    }
+  }
+}
+
+}  // namespace
+
+Vector9d membraneElementRestJacobian(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1, const Eigen::Vector2d& X2,
+                                     const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, const Eigen::Vector3d& x2,
+                                     const MembraneMaterial& material, Matrix96d* dGradDX) {
+  // Dm = [X1 - X0, X2 - X0] and its inverse M, area A = det(Dm) / 2.
+  const D6 a = var(X1.x(), 2) - var(X0.x(), 0), b = var(X2.x(), 4) - var(X0.x(), 0);
+  const D6 c = var(X1.y(), 3) - var(X0.y(), 1), d = var(X2.y(), 5) - var(X0.y(), 1);
+  const D6 det = a * d - b * c;
+  const D6 inv{1.0 / det.v, (-1.0 / (det.v * det.v)) * det.d};
+  const D6 M[2][2] = {{d * inv, D6{} - b * inv}, {D6{} - c * inv, a * inv}};
+  const D6 area = 0.5 * det;
+  Eigen::Matrix<double, 3, 2> Ds;
+  Ds.col(0) = x1 - x0;
+  Ds.col(1) = x2 - x0;
+  // F = Ds M (3x2), c = (|F0|^2, |F1|^2, F0.F1).
+  D6 F[3][2];
+  for (int i = 0; i < 3; ++i)
+    for (int j = 0; j < 2; ++j) F[i][j] = Ds(i, 0) * M[0][j] + Ds(i, 1) * M[1][j];
+  D6 cg[3];
+  for (int i = 0; i < 3; ++i) {
+    cg[0] = cg[0] + F[i][0] * F[i][0];
+    cg[1] = cg[1] + F[i][1] * F[i][1];
+    cg[2] = cg[2] + F[i][0] * F[i][1];
+  }
+  const Density den = relaxedDensity(Eigen::Vector3d(cg[0].v, cg[1].v, cg[2].v), material.kappa(), material.band);
+  D6 S[3];  // dpsi/dc as duals: the Hessian in c carries the X dependence
+  for (int i = 0; i < 3; ++i) {
+    S[i].v = den.grad[i];
+    for (int j = 0; j < 3; ++j) S[i].d += den.hess(i, j) * cg[j].d;
+  }
+  const D6 scale = material.thickness * area;
+  // P = dW/dF: P0 = hA (2 S0 F0 + S2 F1), P1 = hA (2 S1 F1 + S2 F0); dW/dDs = P M^T.
+  Vector9d grad;
+  Matrix96d J;
+  for (int i = 0; i < 3; ++i) {
+    const D6 P0 = scale * (2.0 * (S[0] * F[i][0]) + S[2] * F[i][1]);
+    const D6 P1 = scale * (2.0 * (S[1] * F[i][1]) + S[2] * F[i][0]);
+    const D6 g1 = P0 * M[0][0] + P1 * M[0][1];  // column 0 of P M^T: corner 1
+    const D6 g2 = P0 * M[1][0] + P1 * M[1][1];  // corner 2
+    grad[3 + i] = g1.v, grad[6 + i] = g2.v, grad[i] = -(g1.v + g2.v);
+    J.row(3 + i) = g1.d.transpose(), J.row(6 + i) = g2.d.transpose(), J.row(i) = -(g1.d + g2.d).transpose();
+  }
+  if (dGradDX) *dGradDX = J;
+  return grad;
+}
+
+Eigen::VectorXd packPattern(const Pattern& pattern) {
+  long n = 0;
+  for (const Panel& p : pattern.panels) n += p.vertices.rows();
+  Eigen::VectorXd X(2 * n);
+  long k = 0;
+  for (const Panel& p : pattern.panels)
+    for (int v = 0; v < p.vertices.rows(); ++v, ++k) X.segment<2>(2 * k) = p.vertices.row(v).transpose();
+  return X;
+}
+
+void unpackPattern(const Eigen::VectorXd& X, Pattern& pattern) {
+  long k = 0;
+  for (Panel& p : pattern.panels)
+    for (int v = 0; v < p.vertices.rows(); ++v, ++k) p.vertices.row(v) = X.segment<2>(2 * k).transpose();
+}
+
+std::vector<int> panelTriangleStart(const Pattern& pattern) {
+  std::vector<int> start{0};
+  for (const Panel& p : pattern.panels) start.push_back(start.back() + static_cast<int>(p.triangles.rows()));
+  return start;
+}
+
+Eigen::SparseMatrix<double> assembleStiffness(const SewnMesh& mesh, const Vertices& x, const MembraneMaterial& material,
+                                              double pressure) {
+  const int n = 3 * mesh.numVertices;
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(size_t(mesh.numTriangles()) * 2 * 81);
+  ElementOptions exact;
+  exact.projectHessian = false;  // the adjoint needs the true Hessian
+  Vector9d g;
+  Matrix9d H, HV;
+  for (int t = 0; t < mesh.numTriangles(); ++t) {
+    const int v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    const Eigen::Vector3d x0 = x.row(v[0]), x1 = x.row(v[1]), x2 = x.row(v[2]);
+    membraneElement(mesh.rest[t], x0, x1, x2, material, exact, &g, &H);
+    if (mesh.outer[t]) {
+      triangleVolumeDerivatives(x0, x1, x2, nullptr, &HV);
+      H -= pressure * HV;  // Pi = W - p V
+    }
+    for (int a = 0; a < 3; ++a)
+      for (int b = 0; b < 3; ++b)
+        for (int i = 0; i < 3; ++i)
+          for (int j = 0; j < 3; ++j) trip.emplace_back(3 * v[a] + i, 3 * v[b] + j, H(3 * a + i, 3 * b + j));
+  }
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(trip.begin(), trip.end());
+  return K;
+}
+
+Eigen::VectorXd equilibriumGradient(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X,
+                                    const Vertices& x, const MembraneMaterial& material, double pressure) {
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(3 * mesh.numVertices);
+  forEachElement(mesh, pattern, X, [&](int t, const int*, const Eigen::Vector2d* R) {
+    const int v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    const Eigen::Vector3d x0 = x.row(v[0]), x1 = x.row(v[1]), x2 = x.row(v[2]);
+    Vector9d ge = membraneElementRestJacobian(R[0], R[1], R[2], x0, x1, x2, material, nullptr);
+    if (mesh.outer[t]) {
+      Vector9d gv;
+      triangleVolumeDerivatives(x0, x1, x2, &gv, nullptr);
+      ge -= pressure * gv;
+    }
+    for (int c = 0; c < 3; ++c) g.segment<3>(3 * v[c]) += ge.segment<3>(3 * c);
+  });
+  return g;
+}
+
+void addRestGradientProduct(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
+                            const Eigen::VectorXd& lambda, const MembraneMaterial& material, Eigen::VectorXd& out) {
+  Matrix96d J;
+  forEachElement(mesh, pattern, X, [&](int t, const int* gid, const Eigen::Vector2d* R) {
+    const int v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    Vector9d l;
+    for (int c = 0; c < 3; ++c) l.segment<3>(3 * c) = lambda.segment<3>(3 * v[c]);
+    if (l.isZero(0)) return;
+    membraneElementRestJacobian(R[0], R[1], R[2], x.row(v[0]), x.row(v[1]), x.row(v[2]), material, &J);
+    const Eigen::Matrix<double, 6, 1> r = J.transpose() * l;
+    for (int c = 0; c < 3; ++c) out.segment<2>(2 * gid[c]) += r.segment<2>(2 * c);
+  });
+}
+
+}  // namespace billow

@@ -1,0 +1,42 @@
+// Derivatives of the equilibrium equations (Skouras et al. 2014, Eq. 7) that the simulator does not export:
+// the exact (unprojected) stiffness K = d2 Pi / dx2 and the mixed derivative dg/dX of the gradient
+// g = dPi/dx = -f with respect to the rest (pattern) positions X. The adjoint (adjoint.hpp) needs both.
+//
+// Per element W = h A(X) psi~(c(x, X)), c = (C11, C22, C12), C = M^T Ds^T Ds M, M = Dm^-1. Its gradient
+// g_e = dW/dx is evaluated with first-order dual numbers over the six rest coordinates (X0, X1, X2), using
+// psi~'s own gradient and Hessian in c (membrane_energy.hpp relaxedDensity), so dg_e/dX is exact.
+#pragma once
+#include <Eigen/Sparse>
+#include <vector>
+
+#include "simulate/membrane_energy.hpp"
+#include "simulate/sewn_pattern.hpp"
+
+namespace billow {
+
+using Matrix96d = Eigen::Matrix<double, 9, 6>;
+
+// Element gradient dW/d(x0, x1, x2) (9) and, when given, its derivative in (X0x, X0y, X1x, X1y, X2x, X2y).
+Vector9d membraneElementRestJacobian(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1, const Eigen::Vector2d& X2,
+                                     const Eigen::Vector3d& x0, const Eigen::Vector3d& x1, const Eigen::Vector3d& x2,
+                                     const MembraneMaterial& material, Matrix96d* dGradDX);
+
+// Pattern coordinates X: 2 per panel vertex, in the sewn order (panel p's vertex v at panelVertexStart[p] + v).
+Eigen::VectorXd packPattern(const Pattern& pattern);
+void unpackPattern(const Eigen::VectorXd& X, Pattern& pattern);
+// First sewn triangle of every panel (#panels + 1).
+std::vector<int> panelTriangleStart(const Pattern& pattern);
+
+// Exact K = sum_e d2W_e/dx2 - p d2V/dx2 (3 #V square, vertex-major DOFs), rest data from mesh.rest.
+Eigen::SparseMatrix<double> assembleStiffness(const SewnMesh& mesh, const Vertices& x, const MembraneMaterial& material,
+                                              double pressure);
+
+// g = dPi/dx (3 #V) with the rest data of X (tests; the simulator keeps its own).
+Eigen::VectorXd equilibriumGradient(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X,
+                                    const Vertices& x, const MembraneMaterial& material, double pressure);
+
+// out += lambda^T dg/dX (2 per panel vertex), lambda 3 #V. The pressure term does not depend on X.
+void addRestGradientProduct(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
+                            const Eigen::VectorXd& lambda, const MembraneMaterial& material, Eigen::VectorXd& out);
+
+}  // namespace billow

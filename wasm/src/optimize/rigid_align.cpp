@@ -1,0 +1,88 @@
+#include "optimize/rigid_align.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+
+namespace billow {
+
+namespace {
+
+using Vector6d = Eigen::Matrix<double, 6, 1>;
+using Matrix6d = Eigen::Matrix<double, 6, 6>;
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d S;
+  S << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return S;
+}
+
+// Gauss-Newton normal equations of E_target + E_seam in (rotation vector, translation) about `center`.
+void normalEquations(const PatternObjective& obj, const Vertices& x, const Eigen::Vector3d& center, Matrix6d& H,
+                     Vector6d& g) {
+  H.setZero(), g.setZero();
+  const Eigen::VectorXd& w = obj.targetWeights();
+  Eigen::Vector3d n;
+  for (int i = 0; i < x.rows(); ++i) {
+    if (w[i] == 0) continue;
+    const Eigen::Vector3d xi = x.row(i).transpose();
+    const double d = obj.imls().distance(xi, &n);
+    Vector6d J;
+    J << (xi - center).cross(n), n;  // d(d)/d(omega, t)
+    H += w[i] * J * J.transpose(), g += w[i] * d * J;
+  }
+  for (const auto& s : obj.seamVertices()) {
+    // Same weight as PatternObjective::shapeEnergy's seam term (w_s sigma / (n D^2)).
+    const double ws = obj.seamWeight(s);
+    const Eigen::Vector3d xi = x.row(s.vertex).transpose();
+    Eigen::Matrix<double, 3, 6> J;
+    J << -skew(xi - center), Eigen::Matrix3d::Identity();
+    H += ws * J.transpose() * J, g += ws * J.transpose() * (xi - s.target);
+  }
+}
+
+void applyRigid(Vertices& x, const Eigen::Vector3d& center, const Vector6d& step) {
+  const double angle = step.head<3>().norm();
+  const Eigen::Matrix3d R =
+      angle > 0 ? Eigen::AngleAxisd(angle, step.head<3>() / angle).toRotationMatrix() : Eigen::Matrix3d::Identity();
+  for (int i = 0; i < x.rows(); ++i)
+    x.row(i) = (R * (x.row(i).transpose() - center) + center + step.tail<3>()).transpose();
+}
+
+}  // namespace
+
+int alignRigid(const PatternObjective& objective, Vertices& x, int maxIterations, double tolerance) {
+  const double D = objective.modelSize();
+  double E = objective.shapeEnergy(x, nullptr);
+  double mu = 1e-6;
+  int it = 0;
+  for (; it < maxIterations; ++it) {
+    const Eigen::Vector3d center = x.colwise().mean().transpose();
+    Matrix6d H;
+    Vector6d g;
+    normalEquations(objective, x, center, H, g);
+    if (!g.allFinite() || g.isZero(0)) break;
+    // Rotations are measured in radians, translations in meters: scale the rotation block by D.
+    Vector6d s;
+    s << Eigen::Vector3d::Constant(D), Eigen::Vector3d::Ones();
+    bool accepted = false;
+    for (int tries = 0; tries < 12 && !accepted; ++tries) {
+      Matrix6d A = s.asDiagonal() * H * s.asDiagonal();
+      A.diagonal().array() += mu * (A.diagonal().maxCoeff() + 1e-300);
+      const Vector6d step = -(s.asDiagonal() * A.ldlt().solve(s.asDiagonal() * g)).eval();
+      Vertices trial = x;
+      applyRigid(trial, center, step);
+      const double Et = objective.shapeEnergy(trial, nullptr);
+      if (std::isfinite(Et) && Et <= E) {
+        const bool small = step.head<3>().norm() * D + step.tail<3>().norm() < tolerance * D;
+        x = std::move(trial), E = Et, accepted = true, mu = std::max(mu * 0.1, 1e-12);
+        if (small) return it + 1;
+      } else {
+        mu *= 10;
+      }
+    }
+    if (!accepted) break;
+  }
+  return it;
+}
+
+}  // namespace billow

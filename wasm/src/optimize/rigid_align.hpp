@@ -1,0 +1,14 @@
+// Rigid placement of the inflated shape. The equilibrium x(X) is only defined up to a rigid motion (the
+// simulator pins one); E_target and E_seam are not rigid-invariant. We place x at the rigid motion that
+// minimizes E_target + E_seam (Levenberg-damped Gauss-Newton over a rotation vector and a translation).
+// At that minimum dE/dx is orthogonal to the rigid motions, so the adjoint gradient does not depend on the
+// pins (adjoint.hpp) and, by the envelope theorem, the optimizer sees the best-aligned shape's energy.
+#pragma once
+#include "optimize/objectives.hpp"
+
+namespace billow {
+
+// Moves x in place; returns the Gauss-Newton iterations used. Stops when the step is below tolerance x D.
+int alignRigid(const PatternObjective& objective, Vertices& x, int maxIterations = 30, double tolerance = 1e-12);
+
+}  // namespace billow

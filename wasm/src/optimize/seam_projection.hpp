@@ -1,0 +1,16 @@
+// Exact equal seam lengths (Eq. 11 as a hard constraint, DESIGN.md: fabrication needs it exactly). The
+// optimizer keeps E_length as a penalty (so its objective stays one smooth function and decreases
+// monotonically); at the end the pattern is projected onto the constraint set r_e(X) = L_a - L_b = 0 by
+// Gauss-Newton minimum-norm steps dX = -J^T (J J^T)^-1 r, which move the panel boundaries the least.
+#pragma once
+#include <vector>
+
+#include "optimize/objectives.hpp"
+
+namespace billow {
+
+// Projects X in place; returns the max relative edge mismatch afterwards.
+double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, Eigen::VectorXd& X,
+                          int maxIterations = 10, double tolerance = 1e-12);
+
+}  // namespace billow
