@@ -12,6 +12,11 @@
 //        and fills the cut mesh: cutPositionsPtr() #V*3 f64, cutTrianglesPtr() #F*3 i32, faceSegmentPtr() #F i32
 //   t.buildPattern(seamsJson, scale, triangles)   scale: meters per target unit
 //     -> { ok, pattern (billow-pattern JSON, "inflated" = the target shape), figures, problems }
+//   t.startOptimization(seamsJson, scale, triangles)  the same, and keeps a PatternOptimizer for:
+//   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, distanceRms, distanceMax,
+//                                                 seamMismatch, objective }
+//   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
+//   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
 #include <emscripten/bind.h>
 
 #include <cmath>
@@ -20,6 +25,7 @@
 
 #include "guarded.hpp"
 #include "io/pattern_json.hpp"
+#include "optimize/pattern_optimizer.hpp"
 #include "pattern/build_pattern.hpp"
 #include "seams/geodesic.hpp"
 #include "seams/mesh_topology.hpp"
@@ -41,6 +47,7 @@ class TargetSession {
       geodesic_.reset();
       projector_.reset();
       scaledGeodesic_.reset();
+      optimizer_.reset();
       mesh_.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
       mesh_.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
       topology_ = billow::buildTopology(mesh_);
@@ -73,35 +80,95 @@ class TargetSession {
   }
 
   std::string buildPattern(const std::string& seamsJson, double scale, int triangles) {
+    return guarded([&] { return patternJson(makePattern(seamsJson, scale, triangles)).dump(); });
+  }
+
+  std::string startOptimization(const std::string& seamsJson, double scale, int triangles) {
     return guarded([&] {
-      requireTarget();
-      if (!(scale > 0) || !std::isfinite(scale)) throw billow::Error("pattern.bad-scale", "The target's size is not valid.");
-      if (triangles < 50 || triangles > 200000)
-        throw billow::Error("pattern.bad-resolution", "The resolution must be between 50 and 200,000 triangles.");
-      const json seams = parse(seamsJson);
-      if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
-      useScale(scale);
-      std::vector<billow::SeamCurve> curves;
-      for (const auto& s : seams) curves.push_back(billow::buildSeamCurve(*scaledGeodesic_, *scaledProjector_, readSeam(s)));
-      const billow::Segmentation seg = billow::segmentTarget(scaled_, scaledTopology_, curves);
-      billow::PatternBuildOptions options;
-      options.triangles = triangles;
-      const billow::BuiltPattern built = billow::buildPattern(scaled_, seg, options);
-      json problems = json::array();
-      for (const auto& p : built.problems)
-        problems.push_back({{"code", p.code}, {"severity", p.severity}, {"message", p.message}, {"segment", p.segment}});
-      const auto& f = built.figures;
-      return json({{"ok", built.ok()},
-                   {"pattern", json::parse(billow::writePatternJson(built.pattern))},
-                   {"problems", problems},
-                   {"figures",
-                    {{"panels", f.panels},
-                     {"triangles", f.triangles},
-                     {"edgeLength", f.edgeLength},
-                     {"maxSeamLengthMismatch", f.maxSeamLengthMismatch},
-                     {"totalMs", f.totalMs}}}})
-          .dump();
+      optimizer_.reset();
+      const billow::BuiltPattern built = makePattern(seamsJson, scale, triangles);
+      if (built.ok()) {
+        std::vector<double> weights;
+        for (const auto& s : parse(seamsJson)) weights.push_back(s.value("weight", 1.0));
+        optimizer_ = std::make_unique<billow::PatternOptimizer>(scaled_, built, weights);
+      }
+      return patternJson(built).dump();
     });
+  }
+
+  std::string optimizeStep(int maxIterations, double maxMillis) {
+    return guarded([&] {
+      if (!optimizer_) throw billow::Error("optimize.not-started", "There are no panels to optimize yet.");
+      const billow::OptimizeState state = optimizer_->step(maxIterations, maxMillis);
+      json out = {{"state", billow::toString(state)},
+                  {"iteration", optimizer_->iterations()},
+                  {"message", optimizer_->message()}};
+      if (!optimizer_->history().empty()) {
+        const auto& r = optimizer_->history().back();
+        out["distanceRms"] = r.distanceRms;
+        out["distanceMax"] = r.distanceMax;
+        out["seamMismatch"] = r.seamMismatch;
+        out["objective"] = r.objective;
+      }
+      return out.dump();
+    });
+  }
+
+  std::string optimizedPattern() const {
+    return guarded([&] {
+      if (!optimizer_) throw billow::Error("optimize.not-started", "There are no panels to optimize yet.");
+      billow::Pattern p = optimizer_->pattern();
+      const billow::SewnMesh& m = optimizer_->mesh();
+      const billow::Vertices& x = optimizer_->inflated();
+      p.inflated.clear();
+      for (size_t panel = 0; panel < p.panels.size(); ++panel) {
+        const int begin = m.panelVertexStart[panel], end = m.panelVertexStart[panel + 1];
+        billow::Vertices v(end - begin, 3);
+        for (int k = begin; k < end; ++k) v.row(k - begin) = x.row(m.simVertexOf[k]);
+        p.inflated.push_back(v);
+      }
+      return billow::writePatternJson(p);
+    });
+  }
+
+  int optimizedVertices() const { return optimizer_ ? static_cast<int>(optimizer_->inflated().rows()) : 0; }
+  uintptr_t optimizedPositionsPtr() const {
+    return optimizer_ ? reinterpret_cast<uintptr_t>(optimizer_->inflated().data()) : 0;
+  }
+
+  billow::BuiltPattern makePattern(const std::string& seamsJson, double scale, int triangles) {
+    requireTarget();
+    if (!(scale > 0) || !std::isfinite(scale))
+      throw billow::Error("pattern.bad-scale", "The target's size is not valid.");
+    if (triangles < 50 || triangles > 200000)
+      throw billow::Error("pattern.bad-resolution", "The resolution must be between 50 and 200,000 triangles.");
+    const json seams = parse(seamsJson);
+    if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
+    useScale(scale);
+    std::vector<billow::SeamCurve> curves;
+    for (const auto& s : seams)
+      curves.push_back(billow::buildSeamCurve(*scaledGeodesic_, *scaledProjector_, readSeam(s)));
+    const billow::Segmentation seg = billow::segmentTarget(scaled_, scaledTopology_, curves);
+    billow::PatternBuildOptions options;
+    options.triangles = triangles;
+    const billow::BuiltPattern built = billow::buildPattern(scaled_, seg, options);
+    return built;
+  }
+
+  static json patternJson(const billow::BuiltPattern& built) {
+    json problems = json::array();
+    for (const auto& p : built.problems)
+      problems.push_back({{"code", p.code}, {"severity", p.severity}, {"message", p.message}, {"segment", p.segment}});
+    const auto& f = built.figures;
+    return json({{"ok", built.ok()},
+                 {"pattern", json::parse(billow::writePatternJson(built.pattern))},
+                 {"problems", problems},
+                 {"figures",
+                  {{"panels", f.panels},
+                   {"triangles", f.triangles},
+                   {"edgeLength", f.edgeLength},
+                   {"maxSeamLengthMismatch", f.maxSeamLengthMismatch},
+                   {"totalMs", f.totalMs}}}});
   }
 
   int cutVertices() const { return static_cast<int>(cut_.V.rows()); }
@@ -164,8 +231,12 @@ class TargetSession {
     }
     for (int i : c.controlIndices)
       for (int k = 0; k < 3; ++k) controls.push_back(c.points[i].position[k]);
-    return {{"positions", positions}, {"faces", faces},   {"barys", barys},
-            {"controls", controls},   {"controlIndices", c.controlIndices}, {"length", c.length}};
+    return {{"positions", positions},
+            {"faces", faces},
+            {"barys", barys},
+            {"controls", controls},
+            {"controlIndices", c.controlIndices},
+            {"length", c.length}};
   }
 
   static json segmentationJson(const billow::Segmentation& seg) {
@@ -186,13 +257,18 @@ class TargetSession {
                           {"seam", p.seam},
                           {"location", vec(p.location)}});
     for (const auto& j : seg.junctions) junctions.push_back({{"position", vec(j.position)}, {"segments", j.segments}});
-    return {{"vertices", seg.mesh.numVertices()}, {"triangles", seg.mesh.numTriangles()}, {"segments", segments},
-            {"junctions", junctions},             {"problems", problems},                 {"ok", seg.ok()}};
+    return {{"vertices", seg.mesh.numVertices()},
+            {"triangles", seg.mesh.numTriangles()},
+            {"segments", segments},
+            {"junctions", junctions},
+            {"problems", problems},
+            {"ok", seg.ok()}};
   }
 
   // The target in meters for pattern building (cached per scale; seams are surface points, scale-free).
   void useScale(double scale) {
     if (scaledGeodesic_ && scale == scale_) return;
+    optimizer_.reset();  // it refers to the scaled target
     scaledGeodesic_.reset();
     scaled_ = mesh_;
     scaled_.V *= scale;
@@ -207,6 +283,7 @@ class TargetSession {
   std::unique_ptr<billow::SurfaceProjector> scaledProjector_;
   std::unique_ptr<billow::GeodesicSolver> scaledGeodesic_;
   double scale_ = 0;
+  std::unique_ptr<billow::PatternOptimizer> optimizer_;
   billow::MeshTopology topology_;
   std::unique_ptr<billow::SurfaceProjector> projector_;
   std::unique_ptr<billow::GeodesicSolver> geodesic_;
@@ -222,6 +299,11 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("traceSeam", &TargetSession::traceSeam)
       .function("segment", &TargetSession::segment)
       .function("buildPattern", &TargetSession::buildPattern)
+      .function("startOptimization", &TargetSession::startOptimization)
+      .function("optimizeStep", &TargetSession::optimizeStep)
+      .function("optimizedPattern", &TargetSession::optimizedPattern)
+      .function("optimizedVertices", &TargetSession::optimizedVertices)
+      .function("optimizedPositionsPtr", &TargetSession::optimizedPositionsPtr)
       .function("cutVertices", &TargetSession::cutVertices)
       .function("cutTriangles", &TargetSession::cutTriangles)
       .function("cutPositionsPtr", &TargetSession::cutPositionsPtr)

@@ -6,7 +6,7 @@ import { newDesign, parseDesign, clampHeight } from './design.js';
 import { autosave } from './autosave.js';
 import { History } from './history.js';
 import { encodeDesign, decodeDesign } from './share.js';
-import { PatternSession } from './pattern-session.js';
+import { PatternSession, patternForDisplay } from './pattern-session.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight } from './commands.js';
@@ -40,7 +40,7 @@ export class App {
     });
     this.seams = new SeamEditor(this);
     this.patternTicket = 0;
-    this.resolution = 2000; // triangles of the simulation mesh (view setting, not part of the design)
+    this.resolution = 1000; // triangles of the simulation mesh (view setting, not part of the design)
   }
 
   get design() {
@@ -217,26 +217,49 @@ export class App {
     // Panels being made for the previous design are stale now.
     this.patternTicket += 1;
     this.patterns.running?.cancel();
+    this.optimizing?.cancel();
     if (reset) this.history.reset(design);
     else this.history.apply(() => design, { mergeKey });
     this.showDesign();
     this.save();
   }
 
-  // The panels of the current seams, inflated from the target shape (not optimized yet). A newer edit
-  // supersedes this one: its inflation is cancelled by the next open().
+  // The panels of the current seams: flattened (shown at once in the pattern pane), then optimized in the
+  // worker so their inflated shape matches the target (paper Sec. 5), then inflated for the panes. A newer
+  // edit supersedes this one (commitDesign cancels it).
   async makePattern() {
     const ticket = ++this.patternTicket;
     const seams = this.design.seams.map(({ points, closed, weight }) => ({ points, closed, weight }));
     this.patterns.running?.cancel();
+    this.optimizing?.cancel();
+    const call = this.client.call(
+      Op.optimizeDesign,
+      { seams, scale: this.scaleFor(this.design), triangles: this.resolution },
+      {
+        onProgress: (p) => {
+          if (ticket !== this.patternTicket) return;
+          if (p.flattenedText) {
+            this.flattenedText = p.flattenedText;
+            this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
+          }
+          if (p.iteration !== undefined && p.stage === 'optimizing')
+            this.setStatus(`Optimizing the panels: step ${p.iteration}${p.distanceRms !== undefined ? `, distance to target ${(100 * p.distanceRms).toFixed(2)} %` : ''}…`);
+          else this.setStatus(`Making the panels: ${p.stage}…`);
+        },
+      },
+    );
+    this.optimizing = call;
     try {
-      const built = await this.client.request(Op.buildPattern, { seams, scale: this.scaleFor(this.design), triangles: this.resolution });
+      const result = await call.promise;
       if (ticket !== this.patternTicket) return;
-      for (const p of built.problems.filter((q) => q.severity === 'error')) this.messages.show('warning', p.message);
-      await this.patterns.open('the panels', built.patternText);
+      this.optimized = result;
+      await this.patterns.open('the optimized panels', result.patternText);
     } catch (error) {
       if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
       this.messages.show('error', `The panels could not be made from these seams: ${error.message}`);
+      this.setStatus('');
+    } finally {
+      if (this.optimizing === call) this.optimizing = null;
     }
   }
 

@@ -76,6 +76,27 @@ export function createHandlers(api) {
       const { pattern, ...rest } = requireSession().buildPattern(seams, scale, triangles);
       return { ...rest, patternText: JSON.stringify(pattern) };
     },
+    // { seams, scale, triangles } -> { flattenedText, patternText (optimized), history }. Streams
+    // { stage, iteration, distanceRms, positions } as the optimizer improves the panels (paper Sec. 5).
+    *[Op.optimizeDesign]({ seams, scale, triangles = 1000, maxIterations = 400 }) {
+      yield { stage: 'flattening the segments into panels' };
+      const session = requireSession();
+      const start = session.startOptimization(seams, scale, triangles);
+      if (!start.ok) {
+        const messages = start.problems.filter((p) => p.severity === 'error').map((p) => p.message);
+        throw new SolverError('pattern.not-built', messages.join('\n') || 'These seams do not give panels yet.');
+      }
+      const flattenedText = JSON.stringify(start.pattern);
+      yield { stage: 'optimizing', iteration: 0, flattenedText };
+      let status;
+      for (;;) {
+        status = session.optimizeStep(1, STEP_MILLIS);
+        if (status.state === 'failed') throw new SolverError('optimize.failed', status.message);
+        yield { stage: 'optimizing', ...status, positions: new Float32Array(session.optimizedPositions()) };
+        if (status.state !== 'running' || status.iteration >= maxIterations) break;
+      }
+      return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status };
+    },
     *[Op.examplePattern]({ name, triangles }) {
       return { patternText: JSON.stringify(api.examplePattern(name, triangles)) };
     },

@@ -23,6 +23,9 @@ export const Op = Object.freeze({
   // { seams, scale, triangles } -> { ok, patternText, figures, problems }: flattened panels of the segments,
   // sewn, with the target shape as the simulation's start.
   buildPattern: 'buildPattern',
+  // { seams, scale, triangles, maxIterations } -> { flattenedText, patternText, status }: the panels
+  // optimized so their inflated shape matches the target; progress streams each iterate's shape.
+  optimizeDesign: 'optimizeDesign',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
   // { patternText, options } -> inflated result (Inflation.snapshot in solver-api.js); stepped, with
