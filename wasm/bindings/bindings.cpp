@@ -42,4 +42,3 @@ EMSCRIPTEN_BINDINGS(billow) {
   emscripten::function("crashForTesting", &crashForTesting);
   emscripten::function("version", &version);
 }
-
