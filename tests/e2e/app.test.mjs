@@ -3,24 +3,15 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { serve, launch, openPage, screenshot, paintedFraction, MESHES } from './harness.mjs';
+import { serve, launch, openPage, screenshot, paintedFraction, MESHES, useBrowser } from './harness.mjs';
 
-let server;
-let context;
-before(async () => {
-  server = await serve();
-  context = await launch();
-});
-after(async () => {
-  await context?.close();
-  await server?.close();
-});
+const env = useBrowser({ before, after });
 
 const stat = (page, name) => page.textContent(`#target-stats dd[data-stat="${name}"]`);
 
 // A page with no autosaved design: the app starts on its default example.
 async function fresh() {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   await page.evaluate(
     () => new Promise((resolve, reject) => {
       const request = indexedDB.deleteDatabase('billow');

@@ -3,18 +3,9 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { serve, launch, openPage } from './harness.mjs';
+import { serve, launch, openPage, useBrowser } from './harness.mjs';
 
-let server;
-let context;
-before(async () => {
-  server = await serve();
-  context = await launch();
-});
-after(async () => {
-  await context?.close();
-  await server?.close();
-});
+const env = useBrowser({ before, after });
 
 const stat = (page, name) => page.textContent(`#target-stats dd[data-stat="${name}"]`);
 
@@ -24,7 +15,7 @@ async function setHeight(page, value) {
 }
 
 test('height edits undo and redo with buttons and keyboard', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   await page.selectOption('#example-select', 'sphere');
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'sphere.obj');
   assert.equal(await page.isDisabled('#undo-button'), true);
@@ -47,7 +38,7 @@ test('height edits undo and redo with buttons and keyboard', async () => {
 });
 
 test('a shared link opens the same design in a fresh page; a damaged link gets a message', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   await page.selectOption('#example-select', 'blub');
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'blub.obj');
   await setHeight(page, 0.75);
@@ -74,7 +65,7 @@ test('a shared link opens the same design in a fresh page; a damaged link gets a
 });
 
 test('a design saved to a file opens again', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   await page.selectOption('#example-select', 'penguin');
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'penguin.obj');
   await setHeight(page, 1.5);
@@ -93,7 +84,7 @@ test('a design saved to a file opens again', async () => {
 });
 
 test('markup in a seam name shows as text and never runs', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   const evil = '<img src=x onerror="window.__pwned = 1">';
   const design = {
     format: 'billow-design', version: 1, target: { example: 'sphere' }, size: { height: 0.5 },

@@ -94,4 +94,19 @@ export async function paintedFraction(page, selector) {
   }, selector);
 }
 
+// Starts a static server and a browser for the tests of one file (node:test before/after hooks);
+// returns an object whose server and context are set once the hooks have run.
+export function useBrowser({ before, after }) {
+  const env = { server: null, context: null };
+  before(async () => {
+    env.server = await serve();
+    env.context = await launch();
+  });
+  after(async () => {
+    await env.context?.close();
+    await env.server?.close();
+  });
+  return env;
+}
+
 export { dirname };

@@ -3,24 +3,15 @@
 // a broken pattern gets a message and the last good result stays.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve, launch, openPage, screenshot, paintedFraction } from './harness.mjs';
+import { serve, launch, openPage, screenshot, paintedFraction, useBrowser } from './harness.mjs';
 
-let server;
-let context;
-before(async () => {
-  server = await serve();
-  context = await launch();
-});
-after(async () => {
-  await context?.close();
-  await server?.close();
-});
+const env = useBrowser({ before, after });
 
 const waitInflated = (page) =>
   page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent), null, { timeout: 60000 });
 
 test('the Mylar example inflates: shape, wrinkle overlay, figures and two labelled panels', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   const progress = [];
   await page.exposeFunction('recordStatus', (t) => progress.push(t));
   await page.evaluate(() => new MutationObserver(() => window.recordStatus(document.querySelector('#status').textContent))
@@ -44,7 +35,7 @@ test('the Mylar example inflates: shape, wrinkle overlay, figures and two labell
 });
 
 test('an imported pattern file inflates; a broken one gets a message and the last result stays', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   const text = await page.evaluate(async () => (await window.billow.client.request('examplePattern', { name: 'pillow', triangles: 800 })).patternText);
   await page.setInputFiles('#file-input', { name: 'pillow.json', mimeType: 'application/json', buffer: Buffer.from(text) });
   await waitInflated(page);
@@ -63,7 +54,7 @@ test('an imported pattern file inflates; a broken one gets a message and the las
 
 test('a design with an equator seam becomes two panels that inflate like a Mylar balloon', async () => {
   const { readFileSync } = await import('node:fs');
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   const design = readFileSync(new URL('../data/sphere-equator.billow.json', import.meta.url));
   await page.setInputFiles('#file-input', { name: 'sphere-equator.billow.json', mimeType: 'application/json', buffer: design });
   await page.waitForFunction(() => /1 seam, 2 segments/.test(document.querySelector('#seam-panel .summary')?.textContent));

@@ -3,19 +3,10 @@
 // travels by link.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve, launch, openPage, screenshot } from './harness.mjs';
+import { serve, launch, openPage, screenshot, useBrowser } from './harness.mjs';
 import { surfaceScreenPoints } from './seams-helpers.mjs';
 
-let server;
-let context;
-before(async () => {
-  server = await serve();
-  context = await launch();
-});
-after(async () => {
-  await context?.close();
-  await server?.close();
-});
+const env = useBrowser({ before, after });
 
 const summary = (page) => page.textContent('#seam-panel .summary');
 const waitSummary = (page, re) =>
@@ -54,7 +45,7 @@ async function drawTwoSeams(page) {
 }
 
 test('draw a closed seam (two segments), then a snapped seam across it (three)', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   await openSphere(page);
   await drawTwoSeams(page);
   const design = await page.evaluate(() => window.billow.app.design);
@@ -73,7 +64,7 @@ test('draw a closed seam (two segments), then a snapped seam across it (three)',
 });
 
 test('drag a control point, undo and redo, reload, and open the shared link', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   await openSphere(page);
   await drawTwoSeams(page);
   const before = await page.evaluate(() => window.billow.app.design.seams[0].points[2]);
@@ -116,7 +107,7 @@ test('drag a control point, undo and redo, reload, and open the shared link', as
 });
 
 test('Escape cancels a seam being drawn and Backspace removes its last point', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   await openSphere(page);
   await page.keyboard.press('d');
   const [a, b, c] = await surfaceScreenPoints(page, [[0.5, 0.6, 1], [-0.3, 0.5, 1], [0.1, -0.3, 1]]);
@@ -137,7 +128,7 @@ test('Escape cancels a seam being drawn and Backspace removes its last point', a
 });
 
 test('an internal connection joins two seams: listed, drawn translucent, undoable and deletable', async () => {
-  const page = await openPage(context, server.url);
+  const page = await openPage(env.context, env.server.url);
   await openSphere(page);
   await page.keyboard.press('d');
   const [a, b, c, d] = await surfaceScreenPoints(page, [[0.6, 0.6, 1], [0.1, 0.7, 1], [-0.6, -0.2, 1], [-0.1, -0.5, 1]]);

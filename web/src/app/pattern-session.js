@@ -2,6 +2,7 @@
 // each streamed iterate and the pattern pane shows the panels. A new pattern cancels the running one.
 import { Op, ErrorCode } from '../worker/protocol.js';
 import { formatVolume } from './units.js';
+import { renderStats } from '../views/stats-list.js';
 
 const UNIT_SCALE = { m: 1, cm: 0.01, mm: 0.001 };
 
@@ -105,15 +106,6 @@ export class PatternSession {
       ['Max stress', `${(result.maxStress / 1e6).toFixed(1)} MPa`],
       ['Solver steps', String(result.iterations)],
     ];
-    const dl = document.createElement('dl');
-    for (const [k, v] of rows) {
-      const dt = document.createElement('dt');
-      dt.textContent = k;
-      const dd = document.createElement('dd');
-      dd.textContent = v;
-      dd.dataset.stat = k.toLowerCase().replace(/\s+/g, '-');
-      dl.append(dt, dd);
-    }
-    this.stats.replaceChildren(dl);
+    renderStats(this.stats, rows);
   }
 }

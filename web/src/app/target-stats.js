@@ -1,5 +1,6 @@
 // The target's statistics box: counts from validation, sizes in real units after the design's scale.
 import { formatLength, formatArea, formatVolume } from './units.js';
+import { renderStats } from '../views/stats-list.js';
 
 export function renderTargetStats(container, target, scale) {
   if (!target) return container.replaceChildren();
@@ -14,14 +15,5 @@ export function renderTargetStats(container, target, scale) {
     ['Surface', formatArea(st.area * scale * scale)],
     ['Volume', formatVolume(st.volume * scale ** 3)],
   ];
-  const dl = document.createElement('dl');
-  for (const [k, v] of rows) {
-    const dt = document.createElement('dt');
-    dt.textContent = k;
-    const dd = document.createElement('dd');
-    dd.textContent = v;
-    dd.dataset.stat = k.toLowerCase().split(' ')[0];
-    dl.append(dt, dd);
-  }
-  container.replaceChildren(dl);
+  renderStats(container, rows, (label) => label.toLowerCase().split(' ')[0]);
 }

@@ -141,30 +141,6 @@ export class Inflation {
     };
   }
 
-  // Starts optimizing the panels of these seams; returns the flattened pattern like buildPattern.
-  startOptimization(seams, scale, triangles) {
-    return SolverApi.unwrap(this.session.startOptimization(JSON.stringify(seams), scale, triangles));
-  }
-
-  // { state: "running"|"converged"|"stopped"|"failed", iteration, distanceRms, distanceMax, seamMismatch, message }
-  optimizeStep(maxIterations, maxMillis) {
-    return SolverApi.unwrap(this.session.optimizeStep(maxIterations, maxMillis));
-  }
-
-  optimizedPositions() {
-    return this.api.fromHeap(Float64Array, this.session.optimizedPositionsPtr(), this.session.optimizedVertices() * 3);
-  }
-
-  // The current panels as a pattern object whose "inflated" is their inflated shape.
-  optimizedPattern() {
-    return SolverApi.unwrap(this.session.optimizedPattern());
-  }
-
-  // The sewn pattern of the current seams: { ok, pattern (object), figures, problems }.
-  buildPattern(seams, scale, triangles) {
-    return SolverApi.unwrap(this.session.buildPattern(JSON.stringify(seams), scale, triangles));
-  }
-
   delete() {
     this.session.delete();
   }
