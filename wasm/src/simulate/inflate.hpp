@@ -34,13 +34,9 @@ struct InflateOptions {
   // Try the last factorization as a CG preconditioner before refactorizing. Off: on the Mylar balloon the
   // Hessian changes too much between iterations (elements change regime) and CG rarely converged in time.
   bool reuseFactorization = false;
-  // The supernodal solver's dense kernels vectorize natively but run scalar in wasm, where Eigen's
-  // simplicial LDLT is as fast (bench/README.md): each build gets the faster one.
-#ifdef __EMSCRIPTEN__
-  LinearSolver linearSolver = LinearSolver::SimplicialLdlt;
-#else
+  // The same solver in native and wasm builds, so both take the same Newton iterates (in wasm it is about
+  // as fast as Eigen's simplicial LDLT: its dense kernels run scalar there, bench/README.md).
   LinearSolver linearSolver = LinearSolver::Supernodal;
-#endif
   double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
 };
 
