@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # npm test: install what is missing, build, then run every suite: native GoogleTest (ctest), the same
 # GoogleTest suite compiled to wasm (ctest under node), the wasm module through the JS layer in Node
-# (node:test), and the app end to end in headless Chromium (node:test + playwright-core).
+# (node:test), the app end to end in headless Chromium (node:test + playwright-core), and a short
+# libFuzzer run of the readers under ASan/UBSan.
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 bash "$ROOT/scripts/setup.sh"
 bash "$ROOT/scripts/build.sh" all
@@ -21,7 +22,9 @@ suite() {
   "$@" 2>&1 | tee "$log_file" || rc=$?
   [ "$rc" -eq 0 ] || status=1
   local p=0 f=0
-  if [ "$kind" = ctest ]; then
+  if [ "$kind" = exit ]; then
+    if [ "$rc" -eq 0 ]; then p=1; else f=1; fi
+  elif [ "$kind" = ctest ]; then
     local line
     line=$(grep -E 'tests passed, [0-9]+ tests failed out of [0-9]+' "$log_file" | tail -1 || true)
     if [ -n "$line" ]; then
@@ -42,6 +45,8 @@ suite native ctest ctest --test-dir "$NATIVE_DIR" --output-on-failure -j2
 suite wasm ctest ctest --test-dir "$WASM_DIR" --output-on-failure -j2
 suite node node node --test --test-timeout=120000 "$ROOT/tests/node/"
 suite e2e node node --test --test-concurrency=1 --test-timeout=180000 "$ROOT/tests/e2e/"
+# A short libFuzzer run of every reader under ASan+UBSan (npm run fuzz runs longer): counts as one test.
+suite fuzz exit bash "$ROOT/scripts/fuzz.sh" "${BILLOW_FUZZ_SECONDS:-10}"
 
 echo
 echo "all suites: $passed passed, $failed failed"

@@ -25,6 +25,7 @@ Args parseArgs(const std::vector<std::string>& args, const std::vector<std::stri
 int checkCommand(const std::vector<std::string>& args);
 int inflateCommand(const std::vector<std::string>& args);
 int exampleCommand(const std::vector<std::string>& args);
+int exportCommand(const std::vector<std::string>& args);
 int segmentCommand(const std::vector<std::string>& args);
 int designCommand(const std::vector<std::string>& args);
 

@@ -85,7 +85,7 @@ Pattern readPatternJson(std::string_view text, std::vector<PatternWarning>* warn
   json j;
   try {
     j = json::parse(text);
-  } catch (const json::parse_error& e) {
+  } catch (const json::exception& e) {  // parse_error, and out_of_range for a number such as 1e309
     throw Error("pattern.json", std::string("The pattern file is not valid JSON: ") + e.what());
   }
   if (!j.is_object() || !j.contains("format") || j["format"] != "billow-pattern")

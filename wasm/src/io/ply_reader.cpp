@@ -395,6 +395,7 @@ TriMesh readPly(std::string_view bytes, const MeshReadOptions& options) {
   corners.reserve(static_cast<size_t>(3 * target.face->count));
   Body body(bytes, header);
   for (const Element& e : header.elements) {
+    if (e.properties.empty()) continue;  // nothing to read, however large its count (checkCounts cannot bound it)
     for (long long i = 0; i < e.count; ++i) {
       body.at(e.name, i);
       if (&e == target.vertex)

@@ -1,0 +1,28 @@
+#include "export/export.hpp"
+
+#include "export/dxf_writer.hpp"
+#include "export/layout.hpp"
+#include "export/pdf_writer.hpp"
+#include "export/statistics.hpp"
+#include "export/svg_writer.hpp"
+
+namespace billow {
+
+ExportBundle exportPattern(const Pattern& pattern, const ExportOptions& options) {
+  const SheetLayout layout = layoutSheet(pattern, options);
+  const nlohmann::json stats = exportStatistics(pattern, layout, options);
+  PdfOptions pdf;
+  pdf.paper = options.paper;
+  pdf.overlap = options.tileOverlap;
+  pdf.units = options.units;
+  pdf.title = options.title;
+  pdf.summary = summaryLines(stats, options);
+  ExportBundle out;
+  out.svg = writeSvg(layout.drawing, options.title);
+  out.dxf = writeDxf(layout.drawing);
+  out.pdf = writePdf(layout.drawing, pdf);
+  out.statistics = stats.dump(2);
+  return out;
+}
+
+}  // namespace billow

@@ -1,0 +1,19 @@
+// The fabrication outputs in one call (what the CLI and the worker use): SVG and DXF cut files of the
+// nested sheet, a tiled printable PDF, and statistics as JSON text. All at true scale, in millimetres.
+#pragma once
+#include <string>
+
+#include "export/export_options.hpp"
+#include "simulate/sewn_pattern.hpp"
+
+namespace billow {
+
+struct ExportBundle {
+  std::string svg, dxf, pdf;
+  std::string statistics;  // JSON (statistics.hpp)
+};
+
+// Throws billow::Error: export.empty, export.bad-value, export.panel-shape, export.sheet-too-narrow.
+ExportBundle exportPattern(const Pattern& pattern, const ExportOptions& options = {});
+
+}  // namespace billow

@@ -1,0 +1,116 @@
+#include "export/layout.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "export/offset.hpp"
+#include "util/error.hpp"
+
+namespace billow {
+namespace {
+
+constexpr double kMm = 1000.0;  // pattern meters -> sheet millimetres
+
+// A good spot for the panel's name: the triangle centroid farthest from the outline (a sample of at most
+// ~400 triangles keeps this linear in the boundary size).
+Vec2 labelSpot(const Panel& panel, const Polygon2& sew) {
+  const int nt = int(panel.triangles.rows());
+  const int stride = std::max(1, nt / 400);
+  Vec2 best = polygonCentroid(sew);
+  double bestDistance = -1;
+  for (int t = 0; t < nt; t += stride) {
+    Vec2 c(0, 0);
+    for (int k = 0; k < 3; ++k)
+      c += kMm * Vec2(panel.vertices(panel.triangles(t, k), 0), panel.vertices(panel.triangles(t, k), 1));
+    c /= 3;
+    const double d = distanceToBoundary(c, sew);
+    if (d > bestDistance) bestDistance = d, best = c;
+  }
+  return best;
+}
+
+void validate(const Pattern& pattern, const ExportOptions& o) {
+  if (pattern.panels.empty()) throw Error("export.empty", "The pattern has no panels to cut.");
+  auto bad = [](double v) { return !(v >= 0 && std::isfinite(v)); };
+  if (bad(o.allowance) || o.allowance > 200)
+    throw Error("export.bad-value", "Choose a seam allowance from 0 to 200 mm.");
+  for (const auto& [seam, w] : o.seamAllowance)
+    if (bad(w) || w > 200) throw Error("export.bad-value", "Choose seam allowances from 0 to 200 mm.");
+  if (bad(o.notchSpacing) || bad(o.notchLength) || bad(o.gap) || bad(o.tileOverlap))
+    throw Error("export.bad-value", "Notch spacing, notch length, gap and tile overlap must be 0 or more.");
+  if (!(o.sheetWidth >= 10 && o.sheetWidth <= 100000))
+    throw Error("export.bad-value", "Choose a sheet width from 10 mm to 100 m.");
+}
+
+}  // namespace
+
+double allowanceOf(int seam, const ExportOptions& o) {
+  if (seam < 0) return o.freeEdgeAllowance >= 0 ? o.freeEdgeAllowance : o.allowance;
+  for (const auto& [id, w] : o.seamAllowance)
+    if (id == seam) return w;
+  return o.allowance;
+}
+
+SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& o) {
+  validate(pattern, o);
+  SheetLayout s;
+  s.outlines = buildOutlines(pattern);
+  s.notches = placeNotches(pattern, s.outlines, o.notchSpacing / kMm);
+  const int np = int(pattern.panels.size());
+  s.panels.resize(np);
+  std::vector<Polygon2> cuts;
+  std::vector<std::string> names;
+  for (int p = 0; p < np; ++p) {
+    PanelLayout& pl = s.panels[p];
+    const PanelOutline& outline = s.outlines.panels[p];
+    pl.sew = outline.points(pattern.panels[p], kMm);
+    for (int seam : outline.edgeSeam) pl.widths.push_back(allowanceOf(seam, o));
+    pl.cut = offsetPolygon(pl.sew, pl.widths);
+    pl.labelPoint = labelSpot(pattern.panels[p], pl.sew);
+    const Vec2 size = boundingBox(pl.sew).size();
+    pl.labelHeight = std::clamp(0.06 * std::min(size.x(), size.y()), 4.0, 20.0);
+    cuts.push_back(pl.cut);
+    names.push_back(pattern.panels[p].name);
+  }
+  s.nest = nestPieces(cuts, {o.sheetWidth, o.gap, o.allowRotation, o.grainLock}, names);
+
+  Drawing& d = s.drawing;
+  d.width = o.sheetWidth;
+  d.length = s.nest.length;
+  for (int p = 0; p < np; ++p) {
+    PanelLayout& pl = s.panels[p];
+    pl.placement = s.nest.placements[p];
+    d.paths.push_back({Layer::Cut, p, true, transformed(pl.cut, pl.placement)});
+    d.paths.push_back({Layer::Sew, p, true, transformed(pl.sew, pl.placement)});
+    const Panel& panel = pattern.panels[p];
+    d.texts.push_back({Layer::Label, p, pl.placement.apply(pl.labelPoint) - Vec2(0, 0.35 * pl.labelHeight),
+                       pl.labelHeight,
+                       std::to_string(p + 1) + "  " + panel.name + (panel.internal ? " (internal)" : "")});
+  }
+  // Notches: a short tick across the cut line, mostly inside the allowance so a snip does not cut the seam.
+  for (const Notch& n : s.notches) {
+    const PanelLayout& pl = s.panels[n.panel];
+    const double w = pl.widths[n.edge];
+    const double inside = w > 0 ? std::min(o.notchLength, 0.5 * w) : o.notchLength;
+    const Vec2 p = kMm * n.point;
+    const Polygon2 tick = {p + (w - inside) * n.normal, p + (w + o.notchLength) * n.normal};
+    d.paths.push_back({Layer::Notch, n.panel, false, transformed(tick, pl.placement)});
+  }
+  // Seam ids on both panels, inside the sewing line near the seam's middle.
+  for (const Seam& seam : s.outlines.seams) {
+    const SeamSide* sides[2] = {&seam.a, &seam.b};
+    for (const SeamSide* side : sides) {
+      const PanelLayout& pl = s.panels[side->panel];
+      const double h = std::clamp(0.6 * pl.labelHeight, 3.0, 10.0);
+      // A closed seam starts at a corner of the loop; its middle would be another corner, so use a quarter.
+      const SidePoint mid = pointAlongSide(pattern, s.outlines, *side, (seam.closed ? 0.25 : 0.5) * side->length);
+      const double inset = (side == &seam.b && !seam.shared ? 2.6 : 1.3) * h;
+      // Text stays upright on the sheet: centre it vertically after the panel's rotation.
+      const Vec2 at = pl.placement.apply(kMm * mid.point - inset * mid.normal) - Vec2(0, 0.35 * h);
+      d.texts.push_back({Layer::Label, side->panel, at, h, "S" + std::to_string(seam.id + 1)});
+    }
+  }
+  return s;
+}
+
+}  // namespace billow

@@ -1,0 +1,36 @@
+// The sheet: outlines, seam allowance, notches, nesting and labels put together in sheet millimetres.
+#pragma once
+#include <vector>
+
+#include "export/drawing.hpp"
+#include "export/export_options.hpp"
+#include "export/nesting.hpp"
+#include "export/notches.hpp"
+#include "export/outline.hpp"
+
+namespace billow {
+
+struct PanelLayout {
+  Polygon2 sew;                // sewing line (the panel outline) [mm], panel frame
+  Polygon2 cut;                // cut line (with the allowance) [mm], panel frame
+  std::vector<double> widths;  // allowance per outline edge [mm]
+  Placement2 placement;        // panel frame -> sheet
+  Vec2 labelPoint{0, 0};       // inside the panel, far from its outline [mm], panel frame
+  double labelHeight = 5;      // [mm]
+};
+
+struct SheetLayout {
+  Outlines outlines;
+  std::vector<Notch> notches;
+  std::vector<PanelLayout> panels;
+  NestResult nest;
+  Drawing drawing;
+};
+
+// Throws billow::Error: export.empty, export.bad-value, export.panel-shape, export.sheet-too-narrow.
+SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& options);
+
+// Allowance [mm] of a seam (its override, else the default) or of a free edge (seam < 0).
+double allowanceOf(int seam, const ExportOptions& options);
+
+}  // namespace billow

@@ -1,0 +1,234 @@
+#include "export/pdf_writer.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace billow {
+namespace {
+
+constexpr double kFooterMm = 56;  // check square (50 mm) and page label below every tile
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.3f", v);
+  std::string s = buf;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+std::string rgb(Layer layer, const char* op) {
+  unsigned r = 0, g = 0, b = 0;
+  std::sscanf(layerColor(layer) + 1, "%2x%2x%2x", &r, &g, &b);
+  return num(r / 255.0) + " " + num(g / 255.0) + " " + num(b / 255.0) + " " + op + "\n";
+}
+
+// Rough Helvetica advance widths (em) for centring labels; exact metrics are not needed for that.
+double textWidth(const std::string& s, double size) {
+  double w = 0;
+  for (unsigned char c : s)
+    w += (c == ' ' || c == 'i' || c == 'l' || c == '.' || c == ',') ? 0.28 : (c >= 'A' && c <= 'Z') ? 0.67 : 0.55;
+  return w * size;
+}
+
+std::string text(double x, double y, double size, const std::string& s) {
+  return "BT /F1 " + num(size) + " Tf " + num(x) + " " + num(y) + " Td (" + escapePdfText(s) + ") Tj ET\n";
+}
+
+std::string pathOps(const DrawnPath& p) {
+  std::string s;
+  for (size_t i = 0; i < p.points.size(); ++i)
+    s += num(p.points[i].x()) + " " + num(p.points[i].y()) + (i ? " l\n" : " m\n");
+  return s + (p.closed ? "h S\n" : "S\n");
+}
+
+// The drawing's paths and texts that touch `view`, in sheet millimetres (the caller sets the transform).
+std::string drawingOps(const Drawing& d, const Box2& view, bool labels, double textScale = 1) {
+  std::string s;
+  for (Layer layer : kLayers) {
+    if (layer == Layer::Label) continue;
+    s += rgb(layer, "RG");
+    s += layer == Layer::Cut ? "0.25 w [] 0 d\n" : layer == Layer::Sew ? "0.2 w [3 1.5] 0 d\n" : "0.3 w [] 0 d\n";
+    for (const DrawnPath& p : d.paths)
+      if (p.layer == layer && boundingBox(p.points).overlaps(view)) s += pathOps(p);
+  }
+  if (!labels) return s;
+  s += rgb(Layer::Label, "rg");
+  for (const DrawnText& t : d.texts) {
+    const double size = t.height * textScale, w = textWidth(t.text, size);
+    Box2 b;
+    b.add(t.at - Vec2(w / 2, 0)), b.add(t.at + Vec2(w / 2, size));
+    if (b.overlaps(view)) s += text(t.at.x() - w / 2, t.at.y(), size, t.text);
+  }
+  return s;
+}
+
+std::string circle(const Vec2& c, double r) {
+  const double k = 0.5523 * r;  // cubic Bezier quarter-circle handle
+  auto p = [](double x, double y) { return num(x) + " " + num(y) + " "; };
+  return p(c.x() + r, c.y()) + "m\n" + p(c.x() + r, c.y() + k) + p(c.x() + k, c.y() + r) + p(c.x(), c.y() + r) + "c\n" +
+         p(c.x() - k, c.y() + r) + p(c.x() - r, c.y() + k) + p(c.x() - r, c.y()) + "c\n" + p(c.x() - r, c.y() - k) +
+         p(c.x() - k, c.y() - r) + p(c.x(), c.y() - r) + "c\n" + p(c.x() + k, c.y() - r) + p(c.x() + r, c.y() - k) +
+         p(c.x() + r, c.y()) + "c S\n";
+}
+
+// Footer of every page, in points: the 50 mm check square and the page's labels.
+std::string footer(const PdfOptions& o, const std::string& label, int page, int pages) {
+  const double m = o.margin * kPointsPerMm, side = kCheckSquareMm * kPointsPerMm;
+  std::string s = "q 0 0 0 RG 0 0 0 rg 0.5 w [] 0 d\n% scale-check-square\n";
+  s += num(m) + " " + num(m) + " " + num(side) + " " + num(side) + " re S\n";
+  const bool inches = o.units == DisplayUnits::Inches;
+  s += text(m + 4, m + side / 2, 8, "50 mm");
+  s += text(m + 4, m + side / 2 - 10, 6, inches ? "= 1.97 in" : "check square");
+  const double x = m + side + 12;
+  s += text(x, m + side - 12, 12, label);
+  s += text(x, m + side - 28, 9, o.title + "  -  page " + std::to_string(page) + " of " + std::to_string(pages));
+  s += text(
+      x, m + side - 42, 8,
+      std::string("Print at 100 % (no fit to page); the square must measure 50 mm") + (inches ? " (1.97 in)." : "."));
+  s += text(x, m + side - 54, 8, "cut: black   sew: blue dashed   notches: red   marks: align the crosshairs");
+  return s + "Q\n";
+}
+
+}  // namespace
+
+std::string escapePdfText(const std::string& utf8) {
+  std::string out;
+  for (size_t i = 0; i < utf8.size();) {
+    unsigned char c = utf8[i++];
+    unsigned cp = c;
+    if (c >= 0x80) {  // two-byte UTF-8 covers Latin-1; anything else prints as '?'
+      const int extra = c >= 0xF0 ? 3 : c >= 0xE0 ? 2 : c >= 0xC0 ? 1 : 0;
+      cp = extra == 1 && i < utf8.size() ? ((c & 0x1F) << 6) | (static_cast<unsigned char>(utf8[i]) & 0x3F) : '?';
+      i = std::min(utf8.size(), i + extra);
+      if (cp > 0xFF || cp < 0xA0) cp = '?';
+    }
+    if (cp == '(' || cp == ')' || cp == '\\') {
+      out += '\\', out += char(cp);
+    } else if (cp < 0x20 || cp >= 0x7F) {
+      char buf[8];
+      std::snprintf(buf, sizeof buf, "\\%03o", cp < 0x20 ? unsigned('?') : cp);
+      out += buf;
+    } else {
+      out += char(cp);
+    }
+  }
+  return out;
+}
+
+PdfTiling pdfTiling(const Drawing& d, const PdfOptions& o) {
+  PdfTiling t;
+  t.pageWidth = o.paper == PaperSize::A4 ? 210.0 : 215.9;
+  t.pageHeight = o.paper == PaperSize::A4 ? 297.0 : 279.4;
+  t.contentWidth = t.pageWidth - 2 * o.margin;
+  t.contentHeight = t.pageHeight - 2 * o.margin - kFooterMm;
+  const double overlap = std::clamp(o.overlap, 0.0, 0.5 * std::min(t.contentWidth, t.contentHeight));
+  t.stepX = t.contentWidth - overlap;
+  t.stepY = t.contentHeight - overlap;
+  t.columns = std::max(1, int(std::ceil((d.width - overlap) / t.stepX - 1e-9)));
+  t.rows = std::max(1, int(std::ceil((d.length - overlap) / t.stepY - 1e-9)));
+  t.height = (t.rows - 1) * t.stepY + t.contentHeight;
+  return t;
+}
+
+std::string writePdf(const Drawing& d, const PdfOptions& o) {
+  const PdfTiling t = pdfTiling(d, o);
+  const double k = kPointsPerMm, m = o.margin, overlap = t.contentWidth - t.stepX;
+  const int pages = t.pageCount();
+  std::vector<std::string> streams, labels;
+
+  // Page 1: the overview, scaled to fit above the footer.
+  {
+    const double titleSpace = 14 + 5 * double(o.summary.size());
+    const double availH = t.pageHeight - 2 * m - kFooterMm - titleSpace;
+    // Fit the tile grid (which reaches past the sheet), not just the sheet.
+    const double gridW = (t.columns - 1) * t.stepX + t.contentWidth;
+    const double scale = std::min(t.contentWidth / gridW, availH / t.height);
+    const double ox = m + (t.contentWidth - scale * gridW) / 2, oy = m + kFooterMm;
+    std::string s = "q " + num(k * scale) + " 0 0 " + num(k * scale) + " " + num(k * ox) + " " + num(k * oy) + " cm\n";
+    Box2 all;
+    all.add({-1e9, -1e9}), all.add({1e9, 1e9});
+    s += "0.6 0.6 0.6 RG " + num(0.5 / scale) + " w 0 0 " + num(d.width) + " " + num(d.length) + " re S\n";
+    s += drawingOps(d, all, true, 1);
+    // The tile grid with each tile's row and column, so a maker knows where each page goes.
+    s += "0.2 0.6 0.2 RG 0.2 0.6 0.2 rg " + num(0.3 / scale) + " w [] 0 d\n";
+    for (int r = 0; r < t.rows; ++r)
+      for (int c = 0; c < t.columns; ++c) {
+        const double x0 = c * t.stepX, y0 = t.height - r * t.stepY - t.contentHeight;
+        s += num(x0) + " " + num(y0) + " " + num(t.contentWidth) + " " + num(t.contentHeight) + " re S\n";
+        const std::string lab = std::to_string(r + 1) + "," + std::to_string(c + 1);
+        const double size = std::min(0.15 * t.contentWidth, 4 / scale);
+        s += text(x0 + 0.5 * t.contentWidth - textWidth(lab, size) / 2, y0 + 0.5 * t.contentHeight, size, lab);
+      }
+    s += "Q\nq 0 0 0 rg\n";
+    double y = t.pageHeight - m - 6;
+    s += text(k * m, k * y, 14, o.title + " - overview (not to scale)");
+    for (const std::string& line : o.summary) y -= 5, s += text(k * m, k * y, 8, line);
+    s += "Q\n";
+    streams.push_back(s + footer(o, "overview", 1, pages));
+    labels.push_back("overview");
+  }
+  // Tiles at true scale: sheet millimetres -> page points with the tile's origin at the content box.
+  for (int r = 0; r < t.rows; ++r)
+    for (int c = 0; c < t.columns; ++c) {
+      const double x0 = c * t.stepX, y0 = t.height - r * t.stepY - t.contentHeight;
+      Box2 view;
+      view.add({x0, y0}), view.add({x0 + t.contentWidth, y0 + t.contentHeight});
+      std::string s = "q " + num(k * m) + " " + num(k * (m + kFooterMm)) + " " + num(k * t.contentWidth) + " " +
+                      num(k * t.contentHeight) + " re W n\n";
+      s += num(k) + " 0 0 " + num(k) + " " + num(k * (m - x0)) + " " + num(k * (m + kFooterMm - y0)) + " cm\n";
+      s += drawingOps(d, view, true);
+      // Alignment crosshairs in the middle of the overlap strips; each appears on every tile that shares it.
+      s += "0 0 0 RG 0.2 w [] 0 d\n";
+      for (int i = 0; i <= t.columns; ++i)
+        for (int j = 0; j <= t.rows; ++j) {
+          const Vec2 p(i * t.stepX + overlap / 2, t.height - j * t.stepY - overlap / 2);
+          if (p.x() < x0 - 6 || p.x() > x0 + t.contentWidth + 6 || p.y() < y0 - 6 || p.y() > y0 + t.contentHeight + 6)
+            continue;
+          s += num(p.x() - 6) + " " + num(p.y()) + " m " + num(p.x() + 6) + " " + num(p.y()) + " l S\n";
+          s += num(p.x()) + " " + num(p.y() - 6) + " m " + num(p.x()) + " " + num(p.y() + 6) + " l S\n";
+          s += circle(p, 3);
+        }
+      s += "0.6 0.6 0.6 RG 0.2 w [1 1] 0 d " + num(x0) + " " + num(y0) + " " + num(t.contentWidth) + " " +
+           num(t.contentHeight) + " re S\nQ\n";
+      const std::string label = "row " + std::to_string(r + 1) + ", column " + std::to_string(c + 1);
+      streams.push_back(s + footer(o, label, int(streams.size()) + 1, pages));
+      labels.push_back(label);
+    }
+
+  // Objects: 1 catalog, 2 page tree, 3 font, 4 info, then page i = 5 + 2i and its contents 6 + 2i.
+  std::string pdf = "%PDF-1.4\n%\xE2\xE3\xCF\xD3\n";
+  std::vector<size_t> offsets;
+  auto object = [&](const std::string& body) {
+    offsets.push_back(pdf.size());
+    pdf += std::to_string(offsets.size()) + " 0 obj\n" + body + "\nendobj\n";
+  };
+  std::string nums;
+  for (size_t i = 0; i < labels.size(); ++i)
+    nums += std::to_string(i) + " << /P (" + escapePdfText(labels[i]) + ") >> ";
+  object("<< /Type /Catalog /Pages 2 0 R /PageLabels << /Nums [" + nums + "] >> >>");
+  std::string kids;
+  for (int i = 0; i < pages; ++i) kids += std::to_string(5 + 2 * i) + " 0 R ";
+  object("<< /Type /Pages /Kids [" + kids + "] /Count " + std::to_string(pages) + " >>");
+  object("<< /Type /Font /Subtype /Type1 /BaseFont /Helvetica /Encoding /WinAnsiEncoding >>");
+  object("<< /Title (" + escapePdfText(o.title) + ") /Producer (Billow) >>");
+  const std::string box = "[0 0 " + num(t.pageWidth * k) + " " + num(t.pageHeight * k) + "]";
+  for (int i = 0; i < pages; ++i) {
+    object("<< /Type /Page /Parent 2 0 R /MediaBox " + box + " /Resources << /Font << /F1 3 0 R >> >> /Contents " +
+           std::to_string(6 + 2 * i) + " 0 R >>");
+    object("<< /Length " + std::to_string(streams[i].size()) + " >>\nstream\n" + streams[i] + "endstream");
+  }
+  const size_t xref = pdf.size();
+  pdf += "xref\n0 " + std::to_string(offsets.size() + 1) + "\n0000000000 65535 f \n";
+  for (size_t off : offsets) {
+    char buf[24];
+    std::snprintf(buf, sizeof buf, "%010zu 00000 n \n", off);
+    pdf += buf;
+  }
+  pdf += "trailer\n<< /Size " + std::to_string(offsets.size() + 1) + " /Root 1 0 R /Info 4 0 R >>\nstartxref\n" +
+         std::to_string(xref) + "\n%%EOF\n";
+  return pdf;
+}
+
+}  // namespace billow

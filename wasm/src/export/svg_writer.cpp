@@ -1,0 +1,82 @@
+#include "export/svg_writer.hpp"
+
+#include <cstdio>
+
+namespace billow {
+namespace {
+
+std::string num(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.4f", v);  // 0.1 um: lengths round-trip far below 0.01 mm
+  std::string s = buf;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+}  // namespace
+
+std::string escapeXml(const std::string& text) {
+  std::string out;
+  for (unsigned char c : text) {
+    switch (c) {
+      case '&':
+        out += "&amp;";
+        break;
+      case '<':
+        out += "&lt;";
+        break;
+      case '>':
+        out += "&gt;";
+        break;
+      case '"':
+        out += "&quot;";
+        break;
+      case '\'':
+        out += "&apos;";
+        break;
+      default:
+        if (c >= 0x20 || c == '\t') out += char(c);  // XML 1.0 forbids most control characters
+    }
+  }
+  return out;
+}
+
+std::string writeSvg(const Drawing& d, const std::string& title) {
+  const double W = d.width, L = d.length;
+  auto X = [](double x) { return num(x); };
+  auto Y = [L](double y) { return num(L - y); };
+  std::string s;
+  s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
+  s += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" ";
+  s += "width=\"" + num(W) + "mm\" height=\"" + num(L) + "mm\" viewBox=\"0 0 " + num(W) + " " + num(L) + "\">\n";
+  s += "<title>" + escapeXml(title) + "</title>\n";
+  for (Layer layer : kLayers) {
+    const std::string name = layerName(layer), color = layerColor(layer);
+    s += "<g id=\"" + name + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + name + "\"";
+    if (layer == Layer::Label) {
+      s += " fill=\"" + color + "\" font-family=\"Helvetica, Arial, sans-serif\" text-anchor=\"middle\">\n";
+      for (const DrawnText& t : d.texts)
+        if (t.layer == layer)
+          s += "<text x=\"" + X(t.at.x()) + "\" y=\"" + Y(t.at.y()) + "\" font-size=\"" + num(t.height) +
+               "\" data-panel=\"" + std::to_string(t.panel) + "\">" + escapeXml(t.text) + "</text>\n";
+    } else {
+      // Hairlines for cutters (0.1 mm); the sewing line dashed as on paper patterns.
+      s += " fill=\"none\" stroke=\"" + color + "\" stroke-width=\"" + (layer == Layer::Cut ? "0.1" : "0.2") + "\"";
+      if (layer == Layer::Sew) s += " stroke-dasharray=\"3 1.5\"";
+      s += ">\n";
+      for (const DrawnPath& p : d.paths) {
+        if (p.layer != layer || p.points.empty()) continue;
+        s += "<path data-panel=\"" + std::to_string(p.panel) + "\" d=\"M";
+        for (size_t i = 0; i < p.points.size(); ++i)
+          s += (i ? " " : "") + X(p.points[i].x()) + " " + Y(p.points[i].y());
+        s += p.closed ? " Z\"/>\n" : "\"/>\n";
+      }
+    }
+    s += "</g>\n";
+  }
+  s += "</svg>\n";
+  return s;
+}
+
+}  // namespace billow
