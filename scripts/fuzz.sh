@@ -13,17 +13,7 @@ TARGETS=(${FUZZ_TARGETS:-obj stl ply pattern_json design_json})
 FUZZ_DIR="${FUZZ_BUILD_DIR:-$ROOT/build/fuzz}"
 FUZZ_JOBS="${FUZZ_JOBS:-$(nproc)}"
 
-missing=()
-for p in clang-14 libclang-rt-14-dev cmake ninja-build libeigen3-dev nlohmann-json3-dev libgtest-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  log "installing Debian packages: ${missing[*]}"
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-fi
+ensure_debian_packages clang-14 libclang-rt-14-dev cmake ninja-build libeigen3-dev nlohmann-json3-dev libgtest-dev
 CC_BIN=$(command -v clang || command -v clang-14) || die "clang not found"
 CXX_BIN=$(command -v clang++ || command -v clang++-14) || die "clang++ not found"
 

@@ -6,3 +6,17 @@ NATIVE_DIR="$ROOT/build/native"
 WASM_DIR="$ROOT/build/wasm"
 log() { printf '\033[1;34m[billow]\033[0m %s\n' "$*" >&2; }
 die() { printf '\033[1;31m[billow]\033[0m %s\n' "$*" >&2; exit 1; }
+
+# Installs the Debian packages among "$@" that are not installed yet (apt-get update only when needed).
+ensure_debian_packages() {
+  local missing=() p
+  for p in "$@"; do
+    dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  done
+  ((${#missing[@]})) || return 0
+  log "installing Debian packages: ${missing[*]}"
+  local sudo=""
+  [ "$(id -u)" -eq 0 ] || sudo="sudo"
+  $sudo apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+}

@@ -4,19 +4,9 @@
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 APT_PACKAGES=(cmake ninja-build g++ libgtest-dev libeigen3-dev nlohmann-json3-dev emscripten chromium)
-missing=()
-for p in "${APT_PACKAGES[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  log "installing Debian packages: ${missing[*]}"
-  SUDO=""
-  [ "$(id -u)" -eq 0 ] || SUDO="sudo"
-  $SUDO apt-get update -qq
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
-  # Chromium's recommended fonts make pages readable in screenshots.
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq fonts-dejavu-core >/dev/null || true
-fi
+ensure_debian_packages "${APT_PACKAGES[@]}"
+# Chromium's recommended fonts make pages readable in screenshots.
+ensure_debian_packages fonts-dejavu-core
 
 # npm ci when node_modules does not match the lockfile (npm keeps a copy of the lock it installed).
 lock="$ROOT/package-lock.json"

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "io/obj_writer.hpp"
 #include "io/pattern_json.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "pattern/build_pattern.hpp"
@@ -31,18 +32,7 @@ double msSince(Clock::time_point t) { return std::chrono::duration<double, std::
 
 // Outer surface, one OBJ vertex per simulation vertex.
 std::string objText(const SewnMesh& mesh, const Vertices& x) {
-  std::string s = "# billow inflated shape (outer surface, meters)\n";
-  char line[128];
-  for (int v = 0; v < x.rows(); ++v) {
-    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", x(v, 0), x(v, 1), x(v, 2));
-    s += line;
-  }
-  const Triangles F = outerTriangles(mesh);
-  for (int f = 0; f < F.rows(); ++f) {
-    std::snprintf(line, sizeof line, "f %d %d %d\n", F(f, 0) + 1, F(f, 1) + 1, F(f, 2) + 1);
-    s += line;
-  }
-  return s;
+  return writeObj(x, outerTriangles(mesh), "billow inflated shape (outer surface, meters)");
 }
 
 struct Distance {

@@ -9,21 +9,6 @@
 
 namespace billow::cli {
 
-namespace {
-double numberOption(const Args& args, const std::string& name, double fallback) {
-  const std::string v = args.get(name);
-  if (v.empty()) return fallback;
-  try {
-    size_t used = 0;
-    const double d = std::stod(v, &used);
-    if (used != v.size()) throw std::invalid_argument(v);
-    return d;
-  } catch (const std::exception&) {
-    throw Error("cli.usage", "the option " + name + " needs a number, not '" + v + "'");
-  }
-}
-}  // namespace
-
 int exampleCommand(const std::vector<std::string>& argv) {
   const Args args = parseArgs(argv, {"--triangles", "--size", "--pressure", "--out"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out")) {

@@ -17,16 +17,7 @@ namespace billow::cli {
 namespace {
 
 double millimetres(const Args& args, const std::string& name, double fallback) {
-  const std::string v = args.get(name);
-  if (v.empty()) return fallback;
-  try {
-    size_t used = 0;
-    const double d = std::stod(v, &used);
-    if (used != v.size()) throw std::invalid_argument(v);
-    return d;
-  } catch (const std::exception&) {
-    throw Error("cli.usage", "the option " + name + " needs a length in mm, not '" + v + "'");
-  }
+  return numberOption(args, name, fallback, "a length in mm");
 }
 
 void writeFile(const std::filesystem::path& path, const std::string& bytes) {

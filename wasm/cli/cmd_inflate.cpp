@@ -6,6 +6,7 @@
 
 #include "cli/commands.hpp"
 #include "io/mesh_file.hpp"
+#include "io/obj_writer.hpp"
 #include "io/pattern_json.hpp"
 #include "simulate/inflate.hpp"
 #include "simulate/initial_shape.hpp"
@@ -32,18 +33,7 @@ void writeFile(const std::string& path, const std::string& text) {
 
 // Stitched vertices merged (one OBJ vertex per simulation vertex), outer triangles only, facing outwards.
 std::string toObj(const SewnMesh& mesh, const Vertices& x) {
-  std::string s = "# billow inflated shape (outer surface)\n";
-  char line[128];
-  for (int v = 0; v < x.rows(); ++v) {
-    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", x(v, 0), x(v, 1), x(v, 2));
-    s += line;
-  }
-  const Triangles F = outerTriangles(mesh);
-  for (int f = 0; f < F.rows(); ++f) {
-    std::snprintf(line, sizeof line, "f %d %d %d\n", F(f, 0) + 1, F(f, 1) + 1, F(f, 2) + 1);
-    s += line;
-  }
-  return s;
+  return writeObj(x, outerTriangles(mesh), "billow inflated shape (outer surface)");
 }
 
 nlohmann::json resultJson(const Pattern& p, const SewnMesh& mesh, const InflateResult& r) {

@@ -28,6 +28,19 @@ std::string Args::get(const std::string& name, const std::string& fallback) cons
   return fallback;
 }
 
+double numberOption(const Args& args, const std::string& name, double fallback, const std::string& what) {
+  const std::string v = args.get(name);
+  if (v.empty()) return fallback;
+  try {
+    size_t used = 0;
+    const double d = std::stod(v, &used);
+    if (used != v.size()) throw std::invalid_argument(v);
+    return d;
+  } catch (const std::exception&) {
+    throw Error("cli.usage", "the option " + name + " needs " + what + ", not '" + v + "'");
+  }
+}
+
 Args parseArgs(const std::vector<std::string>& args, const std::vector<std::string>& flagsWithValue) {
   Args out;
   for (size_t i = 0; i < args.size(); ++i) {

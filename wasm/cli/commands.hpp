@@ -21,6 +21,8 @@ struct Args {
 };
 // flagsWithValue lists the options that take a value; anything else starting with -- is a flag.
 Args parseArgs(const std::vector<std::string>& args, const std::vector<std::string>& flagsWithValue);
+// The number after option `name`, or fallback when absent; `what` names it in the error ("a length in mm").
+double numberOption(const Args& args, const std::string& name, double fallback, const std::string& what = "a number");
 
 int checkCommand(const std::vector<std::string>& args);
 int inflateCommand(const std::vector<std::string>& args);
