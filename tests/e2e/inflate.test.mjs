@@ -66,6 +66,15 @@ test('a design with an equator seam becomes two panels that inflate like a Mylar
   const liters = parseFloat(await page.textContent('#inflated-stats dd[data-stat="volume"]'));
   assert.ok(liters > 15 && liters < 70, `volume ${liters} L`);
   await screenshot(page, 'design-equator-inflated');
+  // Compare with the panels before optimization (paper Fig. 8): two flat discs, Paulsen's lens of ~19 L.
+  await page.click('#show-flattened');
+  await page.waitForFunction(() => /^Inflated the flattened panels/.test(document.querySelector('#status').textContent), null, { timeout: 60000 });
+  const flatLiters = parseFloat(await page.textContent('#inflated-stats dd[data-stat="volume"]'));
+  assert.ok(flatLiters > 15 && flatLiters < 24, `flattened volume ${flatLiters} L`);
+  assert.equal(await page.getAttribute('#show-flattened', 'aria-pressed'), 'true');
+  await page.click('#show-optimized');
+  await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 60000 });
+  assert.equal(parseFloat(await page.textContent('#inflated-stats dd[data-stat="volume"]')), liters);
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -42,6 +42,9 @@ const app = new App({
     exampleSelect: $('example-select'),
     heightInput: $('height-input'),
     undoButton: $('undo-button'),
+    compareGroup: $('compare-group'),
+    showOptimized: $('show-optimized'),
+    showFlattened: $('show-flattened'),
     redoButton: $('redo-button'),
   },
 });
@@ -58,6 +61,8 @@ $('file-input').addEventListener('change', (event) => {
 $('example-select').addEventListener('change', (event) => event.target.value && app.openExample(event.target.value));
 $('height-input').addEventListener('change', (event) => app.setHeight(Number(event.target.value)));
 $('resolution-select').addEventListener('change', (event) => app.setResolution(Number(event.target.value)));
+$('show-optimized').addEventListener('click', () => app.showVersion('optimized'));
+$('show-flattened').addEventListener('click', () => app.showVersion('flattened'));
 $('undo-button').addEventListener('click', () => app.undo());
 $('redo-button').addEventListener('click', () => app.redo());
 $('save-button').addEventListener('click', () => app.saveDesignFile());

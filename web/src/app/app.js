@@ -253,7 +253,7 @@ export class App {
       const result = await call.promise;
       if (ticket !== this.patternTicket) return;
       this.optimized = result;
-      await this.patterns.open('the optimized panels', result.patternText);
+      await this.showVersion('optimized');
     } catch (error) {
       if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
       this.messages.show('error', `The panels could not be made from these seams: ${error.message}`);
@@ -261,6 +261,18 @@ export class App {
     } finally {
       if (this.optimizing === call) this.optimizing = null;
     }
+  }
+
+  // The inflated pane shows the optimized panels or, for comparison (paper Fig. 8), the panels as first
+  // flattened: pressure rounds them, which is why they miss the target.
+  async showVersion(which) {
+    if (!this.optimized) return null;
+    this.el.compareGroup.hidden = false;
+    this.el.showOptimized.setAttribute('aria-pressed', String(which === 'optimized'));
+    this.el.showFlattened.setAttribute('aria-pressed', String(which !== 'optimized'));
+    return which === 'optimized'
+      ? this.patterns.open('the optimized panels', this.optimized.patternText)
+      : this.patterns.open('the flattened panels', this.optimized.flattenedText);
   }
 
   setResolution(triangles) {
