@@ -70,15 +70,19 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
   const int n = 3 * mesh_.numVertices, F = mesh_.numTriangles();
   std::vector<Eigen::Triplet<double>> trip;
   trip.reserve(size_t(F) * 45 + n);
+  // Visits the lower-triangle Hessian entries (r >= c) of each element, with their slot in the 9x9 block.
+  auto forEachLowerEntry = [&](auto visit) {
+    for (int f = 0; f < F; ++f)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+          for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j) {
+              const int r = 3 * mesh_.triangles(f, a) + i, c = 3 * mesh_.triangles(f, b) + j;
+              if (r >= c) visit(f, (3 * a + i) * 9 + 3 * b + j, r, c);
+            }
+  };
   for (int i = 0; i < n; ++i) trip.emplace_back(i, i, 0.0);
-  for (int f = 0; f < F; ++f)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) {
-            const int r = 3 * mesh_.triangles(f, a) + i, c = 3 * mesh_.triangles(f, b) + j;
-            if (r >= c) trip.emplace_back(r, c, 0.0);
-          }
+  forEachLowerEntry([&](int, int, int r, int c) { trip.emplace_back(r, c, 0.0); });
   Sparse& s = *sparse_;
   s.H.resize(n, n);
   s.H.setFromTriplets(trip.begin(), trip.end());
@@ -89,14 +93,7 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
     return int(std::lower_bound(begin, end, r) - s.H.innerIndexPtr());
   };
   s.slot.assign(size_t(F) * 81, -1);
-  for (int f = 0; f < F; ++f)
-    for (int a = 0; a < 3; ++a)
-      for (int b = 0; b < 3; ++b)
-        for (int i = 0; i < 3; ++i)
-          for (int j = 0; j < 3; ++j) {
-            const int r = 3 * mesh_.triangles(f, a) + i, c = 3 * mesh_.triangles(f, b) + j;
-            if (r >= c) s.slot[size_t(f) * 81 + (3 * a + i) * 9 + 3 * b + j] = find(r, c);
-          }
+  forEachLowerEntry([&](int f, int k, int r, int c) { s.slot[size_t(f) * 81 + k] = find(r, c); });
   s.diag.resize(n);
   for (int i = 0; i < n; ++i) s.diag[i] = find(i, i);
   choosePins();
