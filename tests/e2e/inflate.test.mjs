@@ -78,3 +78,47 @@ test('a design with an equator seam becomes two panels that inflate like a Mylar
   assert.deepEqual(page.errors, []);
   await page.close();
 });
+
+test('material and pressure are part of the design: the panels are made again, saved, and undone', async () => {
+  const { readFileSync } = await import('node:fs');
+  const page = await openPage(env.context, env.server.url);
+  const design = readFileSync(new URL('../data/sphere-equator.billow.json', import.meta.url));
+  await page.setInputFiles('#file-input', { name: 'sphere-equator.billow.json', mimeType: 'application/json', buffer: design });
+  await page.waitForFunction(() => /1 seam, 2 segments/.test(document.querySelector('#seam-panel .summary')?.textContent));
+  await waitInflated(page);
+  assert.equal(await page.inputValue('#material-select'), 'foil');
+  assert.equal(await page.textContent('#inflated-stats dd[data-stat="pressure"]'), '1.00 kPa');
+  const foilStress = parseFloat(await page.textContent('#inflated-stats dd[data-stat="max-stress"]'));
+
+  await page.selectOption('#material-select', 'pvc');
+  await page.fill('#pressure-input', '2');
+  await page.press('#pressure-input', 'Enter');
+  await page.waitForFunction(
+    () => document.querySelector('#inflated-stats dd[data-stat="pressure"]')?.textContent === '2.00 kPa' &&
+      /^Inflated the optimized panels/.test(document.querySelector('#status').textContent),
+    null,
+    { timeout: 90000 },
+  );
+  // The same shape at twice the pressure: the sheet's tension doubles; PVC is 12x thicker than foil, so
+  // its stress is about 2/12 of the foil's (membrane stress ~ p r / h).
+  const pvcStress = parseFloat(await page.textContent('#inflated-stats dd[data-stat="max-stress"]'));
+  assert.ok(pvcStress < foilStress / 2, `PVC stress ${pvcStress} MPa vs foil ${foilStress} MPa`);
+
+  const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-button')]);
+  const saved = JSON.parse(readFileSync(await download.path(), 'utf8'));
+  assert.equal(saved.material.name, 'pvc');
+  assert.equal(saved.material.thickness, 0.3e-3);
+  assert.equal(saved.pressure, 2000);
+
+  await page.click('#undo-button'); // the pressure
+  assert.equal(await page.inputValue('#pressure-input'), '1');
+  await page.click('#undo-button'); // the material
+  assert.equal(await page.inputValue('#material-select'), 'foil');
+
+  await page.fill('#pressure-input', '-5');
+  await page.press('#pressure-input', 'Enter');
+  await page.locator('.message.warning', { hasText: 'pressure must be between' }).waitFor();
+  assert.equal(await page.inputValue('#pressure-input'), '1');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

@@ -12,6 +12,7 @@
 
 #include "guarded.hpp"
 #include "mesh/validate.hpp"
+#include "simulate/materials.hpp"
 
 namespace {
 
@@ -35,10 +36,26 @@ void crashForTesting() { std::abort(); }
 
 std::string version() { return "0.1.0"; }
 
+// [{ name, label, thickness [m], youngs_modulus [Pa], density [kg/m^3], max_stress [Pa] }]
+std::string materialPresets() {
+  return guarded([&] {
+    nlohmann::json out = nlohmann::json::array();
+    for (const billow::MaterialPreset& p : billow::materialPresets())
+      out.push_back({{"name", p.material.name},
+                     {"label", p.label},
+                     {"thickness", p.material.thickness},
+                     {"youngs_modulus", p.material.youngsModulus},
+                     {"density", p.material.density},
+                     {"max_stress", p.maxStress}});
+    return out.dump();
+  });
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(billow) {
   emscripten::function("validateTarget", &validateTarget);
   emscripten::function("crashForTesting", &crashForTesting);
   emscripten::function("version", &version);
+  emscripten::function("materialPresets", &materialPresets);
 }

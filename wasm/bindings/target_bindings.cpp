@@ -10,9 +10,11 @@
 //     -> { vertices, triangles, segments: [{ area, isDisk, eulerCharacteristic, genus, loops, triangles }],
 //          junctions: [{ position, segments }], problems: [{ code, severity, message, segment, seam, location }] }
 //        and fills the cut mesh: cutPositionsPtr() #V*3 f64, cutTrianglesPtr() #F*3 i32, faceSegmentPtr() #F i32
-//   t.buildPattern(seamsJson, scale, triangles)   scale: meters per target unit
+//   t.buildPattern(seamsJson, optionsJson)
+//     options: { scale (meters per target unit), triangles, pressure [Pa],
+//                material: { name (a preset: foil, pvc, ripstop, tpu), thickness [m], youngs_modulus [Pa] } }
 //     -> { ok, pattern (billow-pattern JSON, "inflated" = the target shape), figures, problems }
-//   t.startOptimization(seamsJson, scale, triangles)  the same, and keeps a PatternOptimizer for:
+//   t.startOptimization(seamsJson, optionsJson)  the same, and keeps a PatternOptimizer for:
 //   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, distanceRms, distanceMax,
 //                                                 seamMismatch, objective }
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
@@ -32,6 +34,7 @@
 #include "seams/seam_curve.hpp"
 #include "seams/surface_point.hpp"
 #include "segment/segmentation.hpp"
+#include "simulate/materials.hpp"
 
 namespace {
 
@@ -79,14 +82,14 @@ class TargetSession {
     });
   }
 
-  std::string buildPattern(const std::string& seamsJson, double scale, int triangles) {
-    return guarded([&] { return patternJson(makePattern(seamsJson, scale, triangles)).dump(); });
+  std::string buildPattern(const std::string& seamsJson, const std::string& optionsJson) {
+    return guarded([&] { return patternJson(makePattern(seamsJson, optionsJson)).dump(); });
   }
 
-  std::string startOptimization(const std::string& seamsJson, double scale, int triangles) {
+  std::string startOptimization(const std::string& seamsJson, const std::string& optionsJson) {
     return guarded([&] {
       optimizer_.reset();
-      const billow::BuiltPattern built = makePattern(seamsJson, scale, triangles);
+      const billow::BuiltPattern built = makePattern(seamsJson, optionsJson);
       if (built.ok()) {
         std::vector<double> weights;
         for (const auto& s : parse(seamsJson)) weights.push_back(s.value("weight", 1.0));
@@ -136,12 +139,48 @@ class TargetSession {
     return optimizer_ ? reinterpret_cast<uintptr_t>(optimizer_->inflated().data()) : 0;
   }
 
-  billow::BuiltPattern makePattern(const std::string& seamsJson, double scale, int triangles) {
-    requireTarget();
+  // Reads { scale, triangles, pressure, material } (see the top of this file) into build options.
+  static billow::PatternBuildOptions readBuildOptions(const std::string& optionsJson, double& scale) {
+    const json o = parse(optionsJson);
+    if (!o.is_object()) throw billow::Error("pattern.bad-options", "The pattern options must be an object.");
+    const auto number = [&](const json& j, const char* key, double fallback) {
+      if (!j.contains(key)) return fallback;
+      if (!j[key].is_number()) return std::nan("");
+      return j[key].get<double>();
+    };
+    billow::PatternBuildOptions options;
+    scale = number(o, "scale", std::nan(""));
     if (!(scale > 0) || !std::isfinite(scale))
       throw billow::Error("pattern.bad-scale", "The target's size is not valid.");
-    if (triangles < 50 || triangles > 200000)
+    const double triangles = number(o, "triangles", options.triangles);
+    if (!(triangles >= 50 && triangles <= 200000))
       throw billow::Error("pattern.bad-resolution", "The resolution must be between 50 and 200,000 triangles.");
+    options.triangles = static_cast<int>(triangles);
+    options.pressure = number(o, "pressure", options.pressure);
+    if (!(options.pressure >= 1 && options.pressure <= 1e7))
+      throw billow::Error("pattern.bad-pressure", "The pressure must be between 1 Pa and 10 MPa.");
+    if (o.contains("material")) {
+      const json& m = o["material"];
+      if (!m.is_object()) throw billow::Error("pattern.bad-material", "The material must be an object.");
+      if (m.contains("name") && m["name"].is_string()) {
+        options.material.name = m["name"].get<std::string>();
+        if (const billow::MaterialPreset* preset = billow::findMaterialPreset(options.material.name))
+          options.material = preset->material;
+      }
+      options.material.thickness = number(m, "thickness", options.material.thickness);
+      options.material.youngsModulus = number(m, "youngs_modulus", options.material.youngsModulus);
+      if (!(options.material.thickness >= 1e-7 && options.material.thickness <= 0.01))
+        throw billow::Error("pattern.bad-material", "The sheet thickness must be between 0.1 µm and 1 cm.");
+      if (!(options.material.youngsModulus >= 1e3 && options.material.youngsModulus <= 1e13))
+        throw billow::Error("pattern.bad-material", "The material's Young's modulus must be between 1 kPa and 10 TPa.");
+    }
+    return options;
+  }
+
+  billow::BuiltPattern makePattern(const std::string& seamsJson, const std::string& optionsJson) {
+    requireTarget();
+    double scale = 0;
+    const billow::PatternBuildOptions options = readBuildOptions(optionsJson, scale);
     const json seams = parse(seamsJson);
     if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
     useScale(scale);
@@ -149,8 +188,6 @@ class TargetSession {
     for (const auto& s : seams)
       curves.push_back(billow::buildSeamCurve(*scaledGeodesic_, *scaledProjector_, readSeam(s)));
     const billow::Segmentation seg = billow::segmentTarget(scaled_, scaledTopology_, curves);
-    billow::PatternBuildOptions options;
-    options.triangles = triangles;
     const billow::BuiltPattern built = billow::buildPattern(scaled_, seg, options);
     return built;
   }

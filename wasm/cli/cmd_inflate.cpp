@@ -79,14 +79,15 @@ nlohmann::json resultJson(const Pattern& p, const SewnMesh& mesh, const InflateR
 }  // namespace
 
 int inflateCommand(const std::vector<std::string>& argv) {
-  const Args args = parseArgs(argv, {"--out", "--obj", "--pressure", "--tolerance", "--max-iterations"});
+  const Args args = parseArgs(argv, {"--out", "--obj", "--pressure", "--material", "--tolerance", "--max-iterations"});
   if (args.has("--help") || args.positional.size() != 1) {
-    std::fprintf(args.has("--help") ? stdout : stderr,
-                 "usage: billow inflate PATTERN.json [--out RESULT.json] [--obj INFLATED.obj] [--pressure PA]\n"
-                 "                      [--tolerance T] [--max-iterations N] [--quiet]\n\n"
-                 "Inflates a sewn pattern (tension-field membrane, Skouras et al. 2014) and writes the\n"
-                 "inflated shape. Exit code 0 when it settles, 1 when the pattern is rejected or the\n"
-                 "simulation does not settle (the last shape is still written).\n");
+    std::fprintf(
+        args.has("--help") ? stdout : stderr,
+        "usage: billow inflate PATTERN.json [--out RESULT.json] [--obj INFLATED.obj] [--pressure PA]\n"
+        "                      [--material foil|pvc|ripstop|tpu] [--tolerance T] [--max-iterations N] [--quiet]\n\n"
+        "Inflates a sewn pattern (tension-field membrane, Skouras et al. 2014) and writes the\n"
+        "inflated shape. Exit code 0 when it settles, 1 when the pattern is rejected or the\n"
+        "simulation does not settle (the last shape is still written).\n");
     return args.has("--help") ? 0 : 2;
   }
   const std::string path = args.positional[0];
@@ -94,6 +95,7 @@ int inflateCommand(const std::vector<std::string>& argv) {
   Pattern p = readPatternJson(readFileBytes(path), &warnings);
   for (const auto& w : warnings) std::fprintf(stderr, "warning: %s\n", w.message.c_str());
   p.pressure = number(args, "--pressure", p.pressure);
+  p.material = materialOption(args, p.material);
   if (!(p.pressure > 0)) throw Error("cli.usage", "the pressure must be positive");
   InflateOptions o;
   o.tolerance = number(args, "--tolerance", o.tolerance);

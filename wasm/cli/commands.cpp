@@ -2,6 +2,7 @@
 
 #include <algorithm>
 
+#include "simulate/materials.hpp"
 #include "util/error.hpp"
 
 namespace billow::cli {
@@ -26,6 +27,15 @@ std::string Args::get(const std::string& name, const std::string& fallback) cons
   for (const auto& o : options)
     if (o.first == name) return o.second;
   return fallback;
+}
+
+Material materialOption(const Args& args, const Material& fallback) {
+  const std::string name = args.get("--material");
+  if (name.empty()) return fallback;
+  if (const MaterialPreset* preset = findMaterialPreset(name)) return preset->material;
+  std::string names;
+  for (const MaterialPreset& p : materialPresets()) names += (names.empty() ? "" : ", ") + p.material.name;
+  throw Error("cli.usage", "there is no material called '" + name + "' (known: " + names + ")");
 }
 
 double numberOption(const Args& args, const std::string& name, double fallback, const std::string& what) {

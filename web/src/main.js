@@ -41,6 +41,9 @@ const app = new App({
     inflatedStats: $('inflated-stats'),
     exampleSelect: $('example-select'),
     heightInput: $('height-input'),
+    materialSelect: $('material-select'),
+    pressureInput: $('pressure-input'),
+    pressureUnit: $('pressure-unit'),
     undoButton: $('undo-button'),
     compareGroup: $('compare-group'),
     showOptimized: $('show-optimized'),
@@ -60,6 +63,10 @@ $('file-input').addEventListener('change', (event) => {
 });
 $('example-select').addEventListener('change', (event) => event.target.value && app.openExample(event.target.value));
 $('height-input').addEventListener('change', (event) => app.setHeight(Number(event.target.value)));
+$('material-select').addEventListener('change', (event) => app.setMaterialPreset(event.target.value));
+const pressureChanged = () => app.setPressure(Number($('pressure-input').value) * Number($('pressure-unit').value));
+$('pressure-input').addEventListener('change', pressureChanged);
+$('pressure-unit').addEventListener('change', () => app.showDesign());
 $('resolution-select').addEventListener('change', (event) => app.setResolution(Number(event.target.value)));
 $('show-optimized').addEventListener('click', () => app.showVersion('optimized'));
 $('show-flattened').addEventListener('click', () => app.showVersion('flattened'));

@@ -5,6 +5,7 @@
 #include <fstream>
 
 #include "io/mesh_file.hpp"
+#include "simulate/materials.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -174,9 +175,11 @@ void readMaterial(FieldReader& r, const json& m, Material& out) {
     return;
   }
   if (m.contains("name")) {
-    if (m["name"].is_string())
+    if (m["name"].is_string()) {
       out.name = m["name"].get<std::string>();
-    else
+      // A preset's name stands for its figures; the fields given below override them.
+      if (const MaterialPreset* preset = findMaterialPreset(out.name)) out = preset->material;
+    } else
       r.bad("material.name", "The material's name must be text.");
   }
   out.thickness = r.number(m, "thickness", out.thickness, 1e-7, 0.01, "material.thickness", "The sheet thickness [m]");

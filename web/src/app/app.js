@@ -9,7 +9,8 @@ import { encodeDesign, decodeDesign } from './share.js';
 import { PatternSession, patternForDisplay } from './pattern-session.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
-import { setHeight } from './commands.js';
+import { setHeight, setMaterial, setPressure } from './commands.js';
+import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
 
 // Example patterns computed by the solver (wasm/src/simulate/example_patterns.cpp).
 export const PATTERN_EXAMPLES = [
@@ -49,6 +50,7 @@ export class App {
 
   async start() {
     this.populateExamples();
+    this.populateMaterials();
     if (await this.openFromLink(location.hash)) return;
     const saved = await autosave.load(AUTOSAVE_KEY).catch(() => null);
     if (saved?.design) {
@@ -234,7 +236,13 @@ export class App {
     this.optimizing?.cancel();
     const call = this.client.call(
       Op.optimizeDesign,
-      { seams, scale: this.scaleFor(this.design), triangles: this.resolution },
+      {
+        seams,
+        scale: this.scaleFor(this.design),
+        triangles: this.resolution,
+        pressure: this.design.pressure,
+        material: this.design.material,
+      },
       {
         onProgress: (p) => {
           if (ticket !== this.patternTicket) return;
@@ -277,7 +285,41 @@ export class App {
 
   setResolution(triangles) {
     this.resolution = triangles;
+    this.remakePattern();
+  }
+
+  // After a change of the physics (resolution, material, pressure): new panels when the seams give some.
+  remakePattern() {
     if (this.seams.segmentation?.segments?.every((s) => s.isDisk) && this.design.seams.length) this.makePattern();
+  }
+
+  populateMaterials() {
+    const select = this.el.materialSelect;
+    select.replaceChildren(
+      ...MATERIAL_PRESETS.map((m) => {
+        const option = new Option(m.label, m.name);
+        option.title = describeMaterial(m);
+        return option;
+      }),
+      Object.assign(new Option('Custom (from the design file)', 'custom'), { disabled: true }),
+    );
+  }
+
+  setMaterialPreset(name) {
+    if (name === 'custom' || (isPresetMaterial(this.design.material) && this.design.material.name === name)) return;
+    this.commitDesign(setMaterial(this.design, presetMaterial(name)));
+    this.remakePattern();
+  }
+
+  setPressure(pascals) {
+    if (!Number.isFinite(pascals) || pascals < MIN_PRESSURE || pascals > MAX_PRESSURE) {
+      this.messages.show('warning', `The pressure must be between ${formatPressure(MIN_PRESSURE)} and ${formatPressure(MAX_PRESSURE)}.`);
+      this.showDesign();
+      return;
+    }
+    if (pascals === this.design.pressure) return;
+    this.commitDesign(setPressure(this.design, pascals), { mergeKey: 'pressure' });
+    this.remakePattern();
   }
 
   // A fix-up that belongs to the edit just made: no new undo step.
@@ -289,6 +331,11 @@ export class App {
   showDesign() {
     const design = this.design;
     this.el.heightInput.value = String(design.size.height);
+    const material = design.material;
+    this.el.materialSelect.value = isPresetMaterial(material) ? material.name : 'custom';
+    this.el.materialSelect.title = `The sheet the panels are cut from: ${describeMaterial(material)}`;
+    const unit = Number(this.el.pressureUnit.value) || 1000;
+    this.el.pressureInput.value = String(+(design.pressure / unit).toPrecision(6));
     this.panes.target.setScale(this.scaleFor(design));
     renderTargetStats(this.el.stats, this.target, this.scaleFor(design));
     this.el.undoButton.disabled = !this.history.canUndo;

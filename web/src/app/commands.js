@@ -66,6 +66,15 @@ export function setHeight(design, height) {
   return { ...design, size: { ...design.size, height } };
 }
 
+// material: { name, thickness [m], youngs_modulus [Pa], density? }
+export function setMaterial(design, material) {
+  return { ...design, material: { ...material } };
+}
+
+export function setPressure(design, pascals) {
+  return { ...design, pressure: pascals };
+}
+
 // Seam ends attached to another seam follow it: a point whose host curve no longer passes through it is
 // moved to the host curve's closest sample. traces: per seam { curve, faces, barys } (null: unknown);
 // positionOf(point) -> [x, y, z]. Returns the same design when nothing moved.

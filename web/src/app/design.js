@@ -1,6 +1,10 @@
 // The design document: the only saved state (see docs/formats.md). Read with parse-and-default: every
 // field is validated, a bad field falls back to its default with a warning, unknown fields are kept.
 import { findExample, DEFAULT_EXAMPLE } from './examples.js';
+import {
+  DEFAULT_MATERIAL, DEFAULT_PRESSURE, MIN_PRESSURE, MAX_PRESSURE, MIN_THICKNESS, MAX_THICKNESS, MIN_YOUNGS, MAX_YOUNGS,
+  findMaterialPreset, presetMaterial, formatPressure,
+} from './materials.js';
 
 export const DESIGN_FORMAT = 'billow-design';
 export const DESIGN_VERSION = 1;
@@ -16,7 +20,35 @@ export function newDesign(exampleId = DEFAULT_EXAMPLE) {
     size: { height: example.height },
     seams: [],
     connections: [],
+    material: presetMaterial(DEFAULT_MATERIAL),
+    pressure: DEFAULT_PRESSURE,
   };
+}
+
+const inRange = (v, lo, hi) => typeof v === 'number' && Number.isFinite(v) && v >= lo && v <= hi;
+
+// The material with parse-and-default: a preset's name stands for its figures, given figures override them.
+function parseMaterial(value, warnings) {
+  if (value === undefined) return presetMaterial(DEFAULT_MATERIAL);
+  if (!isObject(value)) {
+    warnings.push('The design\'s material is not valid; foil is used instead.');
+    return presetMaterial(DEFAULT_MATERIAL);
+  }
+  const preset = findMaterialPreset(value.name);
+  const material = { ...value, ...(preset ? presetMaterial(preset.name) : {}), name: typeof value.name === 'string' ? value.name : 'custom' };
+  if (!preset && !(inRange(value.thickness, MIN_THICKNESS, MAX_THICKNESS) && inRange(value.youngs_modulus, MIN_YOUNGS, MAX_YOUNGS))) {
+    warnings.push(`The design's material "${material.name}" has no valid thickness and Young's modulus; foil is used instead.`);
+    return presetMaterial(DEFAULT_MATERIAL);
+  }
+  if (value.thickness !== undefined) {
+    if (inRange(value.thickness, MIN_THICKNESS, MAX_THICKNESS)) material.thickness = value.thickness;
+    else warnings.push(`The material's thickness is not between 0.1 µm and 1 cm; using ${material.thickness} m.`);
+  }
+  if (value.youngs_modulus !== undefined) {
+    if (inRange(value.youngs_modulus, MIN_YOUNGS, MAX_YOUNGS)) material.youngs_modulus = value.youngs_modulus;
+    else warnings.push(`The material's Young's modulus is not valid; using ${material.youngs_modulus} Pa.`);
+  }
+  return material;
 }
 
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
@@ -51,6 +83,13 @@ export function parseDesign(value) {
   }
   design.seams = Array.isArray(value.seams) ? value.seams : [];
   design.connections = Array.isArray(value.connections) ? value.connections : [];
+  design.material = parseMaterial(value.material, warnings);
+  if (inRange(value.pressure, MIN_PRESSURE, MAX_PRESSURE)) design.pressure = value.pressure;
+  else {
+    if (value.pressure !== undefined)
+      warnings.push(`The design's pressure is not between ${formatPressure(MIN_PRESSURE)} and ${formatPressure(MAX_PRESSURE)}; using ${formatPressure(DEFAULT_PRESSURE)}.`);
+    design.pressure = DEFAULT_PRESSURE;
+  }
   return { design, warnings };
 }
 

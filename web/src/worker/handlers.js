@@ -70,18 +70,18 @@ export function createHandlers(api) {
       yield { stage: 'cutting the target along the seams' };
       return requireSession().segment(seams);
     },
-    // { seams, scale, triangles } -> { ok, patternText, figures, problems }
-    *[Op.buildPattern]({ seams, scale, triangles = 3000 }) {
+    // { seams, scale, triangles, pressure, material } -> { ok, patternText, figures, problems }
+    *[Op.buildPattern]({ seams, triangles = 3000, ...physics }) {
       yield { stage: 'flattening the segments into panels' };
-      const { pattern, ...rest } = requireSession().buildPattern(seams, scale, triangles);
+      const { pattern, ...rest } = requireSession().buildPattern(seams, { triangles, ...physics });
       return { ...rest, patternText: JSON.stringify(pattern) };
     },
-    // { seams, scale, triangles } -> { flattenedText, patternText (optimized), history }. Streams
-    // { stage, iteration, distanceRms, positions } as the optimizer improves the panels (paper Sec. 5).
-    *[Op.optimizeDesign]({ seams, scale, triangles = 1000, maxIterations = 400 }) {
+    // { seams, scale, triangles, pressure, material } -> { flattenedText, patternText (optimized), history }.
+    // Streams { stage, iteration, distanceRms, positions } as the optimizer improves the panels (Sec. 5).
+    *[Op.optimizeDesign]({ seams, triangles = 1000, maxIterations = 400, ...physics }) {
       yield { stage: 'flattening the segments into panels' };
       const session = requireSession();
-      const start = session.startOptimization(seams, scale, triangles);
+      const start = session.startOptimization(seams, { triangles, ...physics });
       if (!start.ok) {
         const messages = start.problems.filter((p) => p.severity === 'error').map((p) => p.message);
         throw new SolverError('pattern.not-built', messages.join('\n') || 'These seams do not give panels yet.');
@@ -96,6 +96,9 @@ export function createHandlers(api) {
         if (status.state !== 'running' || status.iteration >= maxIterations) break;
       }
       return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status };
+    },
+    *[Op.materialPresets]() {
+      return api.materialPresets();
     },
     *[Op.examplePattern]({ name, triangles }) {
       return { patternText: JSON.stringify(api.examplePattern(name, triangles)) };

@@ -20,10 +20,11 @@ export const Op = Object.freeze({
   traceSeam: 'traceSeam',
   // { seams: [{ points, closed, weight }] } -> { segments, problems, junctions, positions, indices, faceSegment }
   segment: 'segment',
-  // { seams, scale, triangles } -> { ok, patternText, figures, problems }: flattened panels of the segments,
-  // sewn, with the target shape as the simulation's start.
+  // { seams, scale, triangles, pressure, material } -> { ok, patternText, figures, problems }: flattened
+  // panels of the segments, sewn, with the target shape as the simulation's start. scale: meters per target
+  // unit; pressure [Pa]; material { name (preset), thickness [m], youngs_modulus [Pa] }.
   buildPattern: 'buildPattern',
-  // { seams, scale, triangles, maxIterations } -> { flattenedText, patternText, status }: the panels
+  // { seams, scale, triangles, pressure, material, maxIterations } -> { flattenedText, patternText, status }: the panels
   // optimized so their inflated shape matches the target; progress streams each iterate's shape.
   optimizeDesign: 'optimizeDesign',
   // Traps the wasm module on purpose (tests of crash recovery).
@@ -33,11 +34,13 @@ export const Op = Object.freeze({
   inflatePattern: 'inflatePattern',
   // { name, triangles } -> { patternText }: a built-in example pattern (mylar, pillow, sphere3).
   examplePattern: 'examplePattern',
+  // {} -> [{ name, label, thickness, youngs_modulus, density, max_stress }]: the material presets.
+  materialPresets: 'materialPresets',
 });
 
 // Quick operations that only read the worker's state: they run at once, even between the steps of a
 // long operation, so drawing stays responsive while the panels inflate.
-export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment]);
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.materialPresets]);
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);

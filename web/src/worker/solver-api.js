@@ -19,6 +19,11 @@ export class SolverApi {
     return this.module.version();
   }
 
+  // [{ name, label, thickness, youngs_modulus, density, max_stress }] (wasm/src/simulate/materials.cpp)
+  materialPresets() {
+    return SolverApi.unwrap(this.module.materialPresets());
+  }
+
   // Copies a typed array into a fresh heap allocation; returns the pointer (caller frees).
   toHeap(array) {
     const heap = HEAP_BY_TYPE.get(array.constructor);
@@ -185,8 +190,9 @@ export class TargetSession {
   }
 
   // Starts optimizing the panels of these seams; returns the flattened pattern like buildPattern.
-  startOptimization(seams, scale, triangles) {
-    return SolverApi.unwrap(this.session.startOptimization(JSON.stringify(seams), scale, triangles));
+  // options: { scale (m per target unit), triangles, pressure [Pa], material { name, thickness, youngs_modulus } }
+  startOptimization(seams, options) {
+    return SolverApi.unwrap(this.session.startOptimization(JSON.stringify(seams), JSON.stringify(options)));
   }
 
   // { state: "running"|"converged"|"stopped"|"failed", iteration, distanceRms, distanceMax, seamMismatch, message }
@@ -204,8 +210,8 @@ export class TargetSession {
   }
 
   // The sewn pattern of the current seams: { ok, pattern (object), figures, problems }.
-  buildPattern(seams, scale, triangles) {
-    return SolverApi.unwrap(this.session.buildPattern(JSON.stringify(seams), scale, triangles));
+  buildPattern(seams, options) {
+    return SolverApi.unwrap(this.session.buildPattern(JSON.stringify(seams), JSON.stringify(options)));
   }
 
   delete() {

@@ -1,0 +1,24 @@
+// Sheet materials a designer picks by name. The figures are typical values for an isotropic membrane
+// model (the simulator knows no weave direction): a woven fabric's Young's modulus here is its effective
+// in-plane stiffness (tension per unit strain) divided by the nominal thickness.
+#pragma once
+#include <string>
+#include <vector>
+
+#include "simulate/sewn_pattern.hpp"
+
+namespace billow {
+
+struct MaterialPreset {
+  Material material;  // name, thickness [m], Young's modulus [Pa], density [kg/m^3]
+  std::string label;  // what the designer reads: "Foil (metallized nylon, 25 µm)"
+  double maxStress;   // [Pa] a safe working stress (about half the yield or tear strength)
+};
+
+// foil, pvc, ripstop, tpu; the first is the default (Material{}'s values).
+const std::vector<MaterialPreset>& materialPresets();
+
+// nullptr when no preset has this name.
+const MaterialPreset* findMaterialPreset(const std::string& name);
+
+}  // namespace billow
