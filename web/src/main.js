@@ -8,6 +8,7 @@ import { Messages } from './app/messages.js';
 import { App } from './app/app.js';
 import { SeamTool } from './tools/seam-tool.js';
 import { SeamPanel } from './views/seam-panel.js';
+import { Exporter } from './app/exporter.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -44,6 +45,10 @@ const app = new App({
     materialSelect: $('material-select'),
     pressureInput: $('pressure-input'),
     pressureUnit: $('pressure-unit'),
+    patternStats: $('pattern-stats'),
+    allowanceInput: $('allowance-input'),
+    sheetInput: $('sheet-input'),
+    unitsSelect: $('units-select'),
     undoButton: $('undo-button'),
     compareGroup: $('compare-group'),
     showOptimized: $('show-optimized'),
@@ -67,6 +72,22 @@ $('material-select').addEventListener('change', (event) => app.setMaterialPreset
 const pressureChanged = () => app.setPressure(Number($('pressure-input').value) * Number($('pressure-unit').value));
 $('pressure-input').addEventListener('change', pressureChanged);
 $('pressure-unit').addEventListener('change', () => app.showDesign());
+// Fabrication settings: lengths typed in the chosen units, stored in mm.
+const typedMillimeters = (input) => Number(input.value) * ($('units-select').value === 'in' ? 25.4 : 1);
+$('allowance-input').addEventListener('change', (e) => app.setFabrication({ allowance: typedMillimeters(e.target) }));
+$('sheet-input').addEventListener('change', (e) => app.setFabrication({ sheet_width: typedMillimeters(e.target) }));
+$('units-select').addEventListener('change', (e) => app.setFabrication({ units: e.target.value }));
+const exporter = new Exporter(app, viewport);
+const exportMenu = $('export-menu');
+exportMenu.addEventListener('click', (event) => {
+  const kind = event.target.closest('[data-export]')?.dataset.export;
+  if (!kind) return;
+  exportMenu.open = false;
+  exporter.run(kind);
+});
+document.addEventListener('click', (event) => {
+  if (exportMenu.open && !exportMenu.contains(event.target)) exportMenu.open = false;
+});
 $('resolution-select').addEventListener('change', (event) => app.setResolution(Number(event.target.value)));
 $('show-optimized').addEventListener('click', () => app.showVersion('optimized'));
 $('show-flattened').addEventListener('click', () => app.showVersion('flattened'));
@@ -120,5 +141,5 @@ window.addEventListener('drop', (e) => {
 });
 
 // For the end-to-end tests and the curious: the app and its solver client.
-window.billow = { app, client, viewport, seamTool };
+window.billow = { app, client, viewport, seamTool, exporter };
 app.start().then(() => document.body.setAttribute('data-ready', 'true'));

@@ -2,15 +2,18 @@
 // nested sheet, a tiled printable PDF, and statistics as JSON text. All at true scale, in millimetres.
 #pragma once
 #include <string>
+#include <vector>
 
 #include "export/export_options.hpp"
+#include "export/polygon.hpp"
 #include "simulate/sewn_pattern.hpp"
 
 namespace billow {
 
 struct ExportBundle {
   std::string svg, dxf, pdf;
-  std::string statistics;  // JSON (statistics.hpp)
+  std::string statistics;          // JSON (statistics.hpp)
+  std::vector<Polygon2> cutLines;  // per panel, the cut line (with the allowance) in its own frame [mm]
 };
 
 // Throws billow::Error: export.empty, export.bad-value, export.panel-shape, export.sheet-too-narrow.

@@ -9,7 +9,9 @@ import { encodeDesign, decodeDesign } from './share.js';
 import { PatternSession, patternForDisplay } from './pattern-session.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
-import { setHeight, setMaterial, setPressure } from './commands.js';
+import { setHeight, setMaterial, setPressure, setFabrication } from './commands.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, patternStatRows } from './fabrication.js';
+import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
 
 // Example patterns computed by the solver (wasm/src/simulate/example_patterns.cpp).
@@ -39,6 +41,7 @@ export class App {
       status: (text) => this.setStatus(text),
       stats: elements.inflatedStats,
     });
+    this.patterns.onPatternShown = (display, text) => this.refreshCutLines(display, text);
     this.seams = new SeamEditor(this);
     this.patternTicket = 0;
     this.resolution = 1000; // triangles of the simulation mesh (view setting, not part of the design)
@@ -293,6 +296,48 @@ export class App {
     if (this.seams.segmentation?.segments?.every((s) => s.isDisk) && this.design.seams.length) this.makePattern();
   }
 
+  // The cut lines (with the seam allowance) and the pattern's figures, from the solver's exporter.
+  async refreshCutLines(display = this.patterns.display, text = this.patterns.currentText) {
+    if (!text) return;
+    const ticket = (this.cutTicket = (this.cutTicket ?? 0) + 1);
+    const f = this.design.fabrication;
+    try {
+      const result = await this.client.request(Op.exportPattern, {
+        patternText: text,
+        options: { allowance: f.allowance, sheet_width: f.sheet_width, units: f.units },
+      });
+      if (ticket !== this.cutTicket) return;
+      this.panes.pattern.setCutLines(display, result.cutLines);
+      renderStats(this.el.patternStats, patternStatRows(result.statistics, f.units));
+    } catch (error) {
+      if (ticket !== this.cutTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
+      renderStats(this.el.patternStats, []);
+      this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`);
+    }
+  }
+
+  // Fabrication settings change the cut files only, never the panels: no new optimization.
+  setFabrication(changes) {
+    const checks = {
+      allowance: [0, MAX_ALLOWANCE, `The seam allowance must be between 0 and ${MAX_ALLOWANCE} mm.`],
+      sheet_width: [MIN_SHEET, MAX_SHEET, `The sheet width must be between ${MIN_SHEET} and ${MAX_SHEET} mm.`],
+    };
+    for (const [key, [lo, hi, message]] of Object.entries(checks)) {
+      const v = changes[key];
+      if (v !== undefined && !(Number.isFinite(v) && v >= lo && v <= hi)) {
+        this.messages.show('warning', message);
+        this.showDesign();
+        return;
+      }
+    }
+    const next = setFabrication(this.design, changes);
+    if (JSON.stringify(next.fabrication) === JSON.stringify(this.design.fabrication)) return;
+    this.history.apply(() => next, { mergeKey: `fabrication-${Object.keys(changes).join()}` });
+    this.showDesign();
+    this.save();
+    this.refreshCutLines();
+  }
+
   populateMaterials() {
     const select = this.el.materialSelect;
     select.replaceChildren(
@@ -334,6 +379,11 @@ export class App {
     const material = design.material;
     this.el.materialSelect.value = isPresetMaterial(material) ? material.name : 'custom';
     this.el.materialSelect.title = `The sheet the panels are cut from: ${describeMaterial(material)}`;
+    const f = design.fabrication;
+    const inches = f.units === 'in';
+    this.el.unitsSelect.value = f.units;
+    this.el.allowanceInput.value = String(+(inches ? f.allowance / 25.4 : f.allowance).toFixed(inches ? 3 : 1));
+    this.el.sheetInput.value = String(+(inches ? f.sheet_width / 25.4 : f.sheet_width).toFixed(inches ? 2 : 0));
     const unit = Number(this.el.pressureUnit.value) || 1000;
     this.el.pressureInput.value = String(+(design.pressure / unit).toPrecision(6));
     this.panes.target.setScale(this.scaleFor(design));
@@ -368,6 +418,7 @@ export class App {
     this.showDesign();
     this.save();
     this.seams.refresh();
+    this.refreshCutLines();
   }
 
   // Puts the design into the page's link and copies it; files cannot travel in a link yet.

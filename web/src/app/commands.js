@@ -71,6 +71,11 @@ export function setMaterial(design, material) {
   return { ...design, material: { ...material } };
 }
 
+// changes: some of { allowance [mm], sheet_width [mm], units: 'mm' | 'in' }
+export function setFabrication(design, changes) {
+  return { ...design, fabrication: { ...design.fabrication, ...changes } };
+}
+
 export function setPressure(design, pascals) {
   return { ...design, pressure: pascals };
 }

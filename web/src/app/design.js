@@ -5,6 +5,7 @@ import {
   DEFAULT_MATERIAL, DEFAULT_PRESSURE, MIN_PRESSURE, MAX_PRESSURE, MIN_THICKNESS, MAX_THICKNESS, MIN_YOUNGS, MAX_YOUNGS,
   findMaterialPreset, presetMaterial, formatPressure,
 } from './materials.js';
+import { DEFAULT_FABRICATION, parseFabrication } from './fabrication.js';
 
 export const DESIGN_FORMAT = 'billow-design';
 export const DESIGN_VERSION = 1;
@@ -22,6 +23,7 @@ export function newDesign(exampleId = DEFAULT_EXAMPLE) {
     connections: [],
     material: presetMaterial(DEFAULT_MATERIAL),
     pressure: DEFAULT_PRESSURE,
+    fabrication: { ...DEFAULT_FABRICATION },
   };
 }
 
@@ -90,6 +92,7 @@ export function parseDesign(value) {
       warnings.push(`The design's pressure is not between ${formatPressure(MIN_PRESSURE)} and ${formatPressure(MAX_PRESSURE)}; using ${formatPressure(DEFAULT_PRESSURE)}.`);
     design.pressure = DEFAULT_PRESSURE;
   }
+  design.fabrication = parseFabrication(value.fabrication, warnings);
   return { design, warnings };
 }
 

@@ -5,11 +5,15 @@ export class Messages {
   }
 
   // severity: 'error' | 'warning' | 'notice'; items: optional list of detail lines.
+  // The same message twice in a row is shown once (the newer replaces the older, so it comes last).
   show(severity, text, items = []) {
+    const key = `${severity}\n${text}\n${items.join('\n')}`;
+    for (const old of this.container.children) if (old.dataset.key === key) old.remove();
     const box = document.createElement('div');
     box.className = `message ${severity}`;
     box.setAttribute('role', severity === 'error' ? 'alert' : 'status');
     box.dataset.severity = severity;
+    box.dataset.key = key;
     const body = document.createElement('div');
     body.className = 'text';
     body.textContent = text;

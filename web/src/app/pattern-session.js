@@ -3,6 +3,7 @@
 import { Op, ErrorCode } from '../worker/protocol.js';
 import { formatVolume } from './units.js';
 import { renderStats } from '../views/stats-list.js';
+import { balloonFigures, balloonRows } from './fabrication.js';
 
 const UNIT_SCALE = { m: 1, cm: 0.01, mm: 0.001 };
 
@@ -47,6 +48,9 @@ export class PatternSession {
     this.stats = stats; // element for the inflated shape's figures
     this.running = null;
     this.last = null; // the last good result
+    this.currentText = null; // the pattern shown (billow-pattern JSON text)
+    this.display = null; // the same, parsed, in meters
+    this.onPatternShown = null; // (display, text) => void
   }
 
   async openExample(name, triangles = 3000) {
@@ -69,6 +73,9 @@ export class PatternSession {
       onProgress: (p) => {
         if (p.triangles) {
           this.panes.pattern.setPattern(display);
+          this.currentText = text;
+          this.display = display;
+          this.onPatternShown?.(display, text);
           this.panes.inflated.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer });
           shown = true;
           for (const text of summarizeWarnings(p.warnings ?? [])) this.messages.show('warning', text);
@@ -83,6 +90,7 @@ export class PatternSession {
       const result = await call.promise;
       this.panes.inflated.setResult(result, { frame: !shown });
       this.last = result;
+      this.lastPattern = display;
       const seconds = ((performance.now() - started) / 1000).toFixed(1);
       this.status(`Inflated ${fileName} in ${seconds} s (${result.iterations} steps)`);
       this.renderStats(result);
@@ -98,7 +106,7 @@ export class PatternSession {
     }
   }
 
-  renderStats(result) {
+  renderStats(result, pattern = this.lastPattern) {
     const rows = [
       ['Volume', formatVolume(result.volume)],
       ['Pressure', `${(result.pressure / 1000).toFixed(2)} kPa`],
@@ -106,6 +114,7 @@ export class PatternSession {
       ['Max stress', `${(result.maxStress / 1e6).toFixed(1)} MPa`],
       ['Solver steps', String(result.iterations)],
     ];
+    if (pattern?.material) rows.push(...balloonRows(balloonFigures(pattern, result.volume, result.maxStress)));
     renderStats(this.stats, rows);
   }
 }

@@ -38,6 +38,8 @@ export class PatternPane {
   setPattern(pattern) {
     this.clear();
     const layout = layoutPattern(pattern);
+    this.pattern = pattern;
+    this.layout = layout;
     const seamIds = new Map();
     const seamIndex = (a, b) => {
       const k = a < b ? `${a}-${b}` : `${b}-${a}`;
@@ -74,7 +76,35 @@ export class PatternPane {
     this.frame(this.content);
   }
 
+  // The cut lines (sewing line plus seam allowance) of `pattern`'s panels, each a flat [x0, y0, x1, ...]
+  // in the panel's frame [m]; ignored when another pattern is shown by now.
+  setCutLines(pattern, cutLines) {
+    if (pattern !== this.pattern || !this.layout) return false;
+    if (this.cutLines) {
+      this.content.remove(this.cutLines);
+      this.cutLines.geometry.dispose();
+      this.cutLines.material.dispose();
+    }
+    const points = [];
+    cutLines.forEach((line, i) => {
+      const [dx, dy] = this.layout[i].offset;
+      const n = line.length / 2;
+      for (let k = 0; k < n; k++) {
+        const j = (k + 1) % n;
+        points.push(line[2 * k] + dx, line[2 * k + 1] + dy, 0, line[2 * j] + dx, line[2 * j + 1] + dy, 0);
+      }
+    });
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+    this.cutLines = new LineSegments(geometry, new LineBasicMaterial({ color: 0x1d2330 }));
+    this.cutLines.position.z = 0.002;
+    this.content.add(this.cutLines);
+    this.viewport.requestRender();
+    return true;
+  }
+
   clear() {
+    this.cutLines = null;
     for (const child of [...this.content.children]) {
       this.content.remove(child);
       child.geometry.dispose();

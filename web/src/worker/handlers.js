@@ -97,6 +97,10 @@ export function createHandlers(api) {
       }
       return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status };
     },
+    *[Op.exportPattern]({ patternText, options }) {
+      yield { stage: 'laying out the panels' };
+      return api.exportPattern(patternText, options);
+    },
     *[Op.materialPresets]() {
       return api.materialPresets();
     },

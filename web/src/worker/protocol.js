@@ -34,6 +34,9 @@ export const Op = Object.freeze({
   inflatePattern: 'inflatePattern',
   // { name, triangles } -> { patternText }: a built-in example pattern (mylar, pillow, sphere3).
   examplePattern: 'examplePattern',
+  // { patternText, options } -> { svg, dxf, pdf: Uint8Array, statistics, cutLines }: the cut files and
+  // printable tiles of a pattern (see SolverApi.exportPattern for the options).
+  exportPattern: 'exportPattern',
   // {} -> [{ name, label, thickness, youngs_modulus, density, max_stress }]: the material presets.
   materialPresets: 'materialPresets',
 });

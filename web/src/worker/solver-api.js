@@ -19,6 +19,16 @@ export class SolverApi {
     return this.module.version();
   }
 
+  // Fabrication outputs of a billow-pattern (JSON text): { svg, dxf, pdf: Uint8Array, statistics, cutLines }.
+  // options (lengths in mm): { allowance, sheet_width, notch_spacing, overlap, paper, units, grain_lock, rotate, title }
+  exportPattern(patternText, options = {}) {
+    const { pdfBase64, ...rest } = SolverApi.unwrap(this.module.exportPattern(patternText, JSON.stringify(options)));
+    const binary = atob(pdfBase64);
+    const pdf = new Uint8Array(binary.length);
+    for (let i = 0; i < binary.length; i++) pdf[i] = binary.charCodeAt(i);
+    return { ...rest, pdf };
+  }
+
   // [{ name, label, thickness, youngs_modulus, density, max_stress }] (wasm/src/simulate/materials.cpp)
   materialPresets() {
     return SolverApi.unwrap(this.module.materialPresets());

@@ -1,0 +1,91 @@
+// Embind for the fabrication outputs (wasm/src/export/export.hpp):
+//   Module.exportPattern(patternJson, optionsJson) -> { svg, dxf, pdfBase64, statistics, cutLines }
+//     options (all optional, lengths in mm): { allowance, free_edge_allowance, sheet_width, notch_spacing,
+//       overlap, paper: "a4"|"letter", units: "mm"|"in", grain_lock, rotate, title }
+//     cutLines: per panel [x0, y0, x1, y1, ...] in the panel's own frame, in meters (for the pattern pane).
+//   The PDF is binary, so it crosses as base64 (embind strings are UTF-8 text).
+#include <emscripten/bind.h>
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "export/export.hpp"
+#include "guarded.hpp"
+#include "io/pattern_json.hpp"
+#include "util/error.hpp"
+
+namespace {
+
+using billow::bindings::guarded;
+using nlohmann::json;
+
+std::string base64(const std::string& bytes) {
+  static const char* table = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+  std::string out;
+  out.reserve((bytes.size() + 2) / 3 * 4);
+  size_t i = 0;
+  for (; i + 2 < bytes.size(); i += 3) {
+    const unsigned v = (unsigned char)bytes[i] << 16 | (unsigned char)bytes[i + 1] << 8 | (unsigned char)bytes[i + 2];
+    for (int k = 3; k >= 0; --k) out += table[(v >> (6 * k)) & 63];
+  }
+  if (i < bytes.size()) {
+    unsigned v = (unsigned char)bytes[i] << 16;
+    if (i + 1 < bytes.size()) v |= (unsigned char)bytes[i + 1] << 8;
+    out += table[(v >> 18) & 63];
+    out += table[(v >> 12) & 63];
+    out += i + 1 < bytes.size() ? table[(v >> 6) & 63] : '=';
+    out += '=';
+  }
+  return out;
+}
+
+billow::ExportOptions readOptions(const std::string& optionsJson) {
+  billow::ExportOptions o;
+  if (optionsJson.empty()) return o;
+  const json j = json::parse(optionsJson, nullptr, false);
+  if (j.is_discarded() || !j.is_object()) throw billow::Error("export.bad-value", "The export options are not valid.");
+  const auto number = [&](const char* key, double fallback) {
+    if (!j.contains(key)) return fallback;
+    if (!j[key].is_number())
+      throw billow::Error("export.bad-value", std::string("The export option ") + key + " must be a number.");
+    return j[key].get<double>();
+  };
+  o.allowance = number("allowance", o.allowance);
+  o.freeEdgeAllowance = number("free_edge_allowance", o.freeEdgeAllowance);
+  o.sheetWidth = number("sheet_width", o.sheetWidth);
+  o.notchSpacing = number("notch_spacing", o.notchSpacing);
+  o.tileOverlap = number("overlap", o.tileOverlap);
+  const std::string paper = j.value("paper", std::string("a4"));
+  if (paper != "a4" && paper != "letter") throw billow::Error("export.bad-value", "The paper is A4 or Letter.");
+  o.paper = paper == "a4" ? billow::PaperSize::A4 : billow::PaperSize::Letter;
+  const std::string units = j.value("units", std::string("mm"));
+  if (units != "mm" && units != "in") throw billow::Error("export.bad-value", "The units are mm or inches.");
+  o.units = units == "mm" ? billow::DisplayUnits::Millimeters : billow::DisplayUnits::Inches;
+  o.grainLock = j.value("grain_lock", false);
+  o.allowRotation = j.value("rotate", true);
+  if (j.contains("title") && j["title"].is_string()) o.title = j["title"].get<std::string>().substr(0, 120);
+  return o;
+}
+
+std::string exportPattern(const std::string& patternJson, const std::string& optionsJson) {
+  return guarded([&] {
+    const billow::Pattern pattern = billow::readPatternJson(patternJson);
+    const billow::ExportBundle bundle = billow::exportPattern(pattern, readOptions(optionsJson));
+    json cut = json::array();
+    for (const billow::Polygon2& line : bundle.cutLines) {
+      json flat = json::array();
+      for (const billow::Vec2& p : line) flat.push_back(p.x() / 1000), flat.push_back(p.y() / 1000);
+      cut.push_back(std::move(flat));
+    }
+    return json({{"svg", bundle.svg},
+                 {"dxf", bundle.dxf},
+                 {"pdfBase64", base64(bundle.pdf)},
+                 {"statistics", json::parse(bundle.statistics)},
+                 {"cutLines", cut}})
+        .dump();
+  });
+}
+
+}  // namespace
+
+EMSCRIPTEN_BINDINGS(billow_export) { emscripten::function("exportPattern", &exportPattern); }

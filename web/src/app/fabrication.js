@@ -1,0 +1,94 @@
+// Fabrication settings of the design (seam allowance, sheet width, display units) and the figures a maker
+// reads: pattern statistics from the exporter, and for balloons the envelope mass, helium lift and the
+// stress safety factor. Pure functions; the Exporter (exporter.js) does the downloads.
+import { findMaterialPreset } from './materials.js';
+
+export const DEFAULT_FABRICATION = Object.freeze({ allowance: 10, sheet_width: 1000, units: 'mm' });
+export const MAX_ALLOWANCE = 100; // [mm]
+export const MIN_SHEET = 100;
+export const MAX_SHEET = 10000;
+
+// Air at 20 °C and helium at 20 °C, 1 atm [kg/m³]: the lift of helium is their difference.
+const AIR_DENSITY = 1.204;
+const HELIUM_DENSITY = 0.166;
+
+const inRange = (v, lo, hi) => typeof v === 'number' && Number.isFinite(v) && v >= lo && v <= hi;
+
+// Parse-and-default of design.fabrication; returns the settings and pushes warnings.
+export function parseFabrication(value, warnings) {
+  const out = { ...DEFAULT_FABRICATION };
+  if (value === undefined) return out;
+  if (value === null || typeof value !== 'object' || Array.isArray(value)) {
+    warnings.push('The design\'s fabrication settings are not valid; the defaults are used.');
+    return out;
+  }
+  const fields = [
+    ['allowance', inRange(value.allowance, 0, MAX_ALLOWANCE), `The seam allowance is not between 0 and ${MAX_ALLOWANCE} mm; using 10 mm.`],
+    ['sheet_width', inRange(value.sheet_width, MIN_SHEET, MAX_SHEET), `The sheet width is not between ${MIN_SHEET} and ${MAX_SHEET} mm; using 1000 mm.`],
+    ['units', value.units === 'mm' || value.units === 'in', 'The display units are mm or in; using mm.'],
+  ];
+  for (const [key, ok, warning] of fields) {
+    if (ok) out[key] = value[key];
+    else if (value[key] !== undefined) warnings.push(warning);
+  }
+  return { ...value, ...out };
+}
+
+// A length given in mm, in the designer's units: "123 mm" or "4.84 in".
+export function formatMillimeters(mm, units = 'mm') {
+  return units === 'in' ? `${(mm / 25.4).toFixed(2)} in` : `${mm.toFixed(0)} mm`;
+}
+
+// Rows for the pattern pane's figures box from the exporter's statistics (wasm/src/export/statistics.hpp).
+export function patternStatRows(statistics, units = 'mm') {
+  const t = statistics.totals;
+  const minutes = Math.round(t.sewing_minutes);
+  return [
+    ['Panels', String(statistics.panels.length)],
+    ['Material', `${t.material_area_m2.toFixed(2)} m² with allowance`],
+    ['Sheet', `${formatMillimeters(t.sheet_width_mm, units)} × ${formatMillimeters(t.sheet_length_mm, units)} (${Math.round(100 * t.utilisation)} % used)`],
+    ['Seams', `${(t.seam_length_mm / 1000).toFixed(2)} m, about ${minutes >= 90 ? `${(minutes / 60).toFixed(1)} h` : `${minutes} min`} to sew`],
+    ['Seam mismatch', `${formatMillimeters(t.max_seam_mismatch_mm, units === 'in' ? 'in' : 'mm').replace(/^0 mm$/, '< 1 mm')}`],
+  ];
+}
+
+// Signed area of a panel [m²] from its triangles.
+function panelArea(panel) {
+  let area = 0;
+  for (const [a, b, c] of panel.triangles) {
+    const [ax, ay] = panel.vertices[a], [bx, by] = panel.vertices[b], [cx, cy] = panel.vertices[c];
+    area += 0.5 * ((bx - ax) * (cy - ay) - (cx - ax) * (by - ay));
+  }
+  return Math.abs(area);
+}
+
+// What a balloon maker asks of an inflated pattern. pattern: panels in meters with its material
+// { name, thickness, youngs_modulus, density? }; volume [m³]; maxStress [Pa].
+// Returns { massGrams, liftGrams, floats, safetyFactor } (null figures when the material's density or
+// strength is unknown).
+export function balloonFigures(pattern, volume, maxStress) {
+  const material = pattern.material ?? {};
+  const preset = findMaterialPreset(material.name);
+  const density = material.density ?? preset?.density;
+  const strength = preset?.max_stress;
+  const sheetArea = pattern.panels.reduce((sum, p) => sum + panelArea(p), 0);
+  const massGrams = density ? sheetArea * material.thickness * density * 1000 : null;
+  const liftGrams = volume * (AIR_DENSITY - HELIUM_DENSITY) * 1000;
+  return {
+    massGrams,
+    liftGrams,
+    floats: massGrams === null ? null : liftGrams > massGrams,
+    safetyFactor: strength && maxStress > 0 ? strength / maxStress : null,
+  };
+}
+
+// Rows for the inflated pane's figures box.
+export function balloonRows(figures) {
+  const rows = [];
+  if (figures.massGrams !== null) rows.push(['Envelope mass', `${figures.massGrams.toFixed(figures.massGrams < 10 ? 1 : 0)} g`]);
+  const lift = `${figures.liftGrams.toFixed(figures.liftGrams < 10 ? 1 : 0)} g`;
+  rows.push(['Helium lift', figures.floats === null ? lift : `${lift}, ${figures.floats ? 'floats' : 'does not float'} (net ${(figures.liftGrams - figures.massGrams).toFixed(0)} g)`]);
+  if (figures.safetyFactor !== null)
+    rows.push(['Safety factor', `${figures.safetyFactor.toFixed(1)}${figures.safetyFactor < 1 ? ' — it would burst' : figures.safetyFactor < 2 ? ' — too close to bursting' : ''}`]);
+  return rows;
+}
