@@ -173,7 +173,8 @@ bool PatternOptimizer::iterate() {
   double alpha = (m == 0 || maxMove > cap) ? cap / std::max(maxMove, 1e-300) : 1.0;
   if (m > 0) alpha = std::min(alpha, 1.0);
   for (int h = 0; h <= options_.maxHalvings; ++h, alpha *= 0.5) {
-    const Eigen::VectorXd X = X_ + alpha * d;
+    Eigen::VectorXd X = X_ + alpha * d;
+    if (options_.projectEveryStep) projectSeamLengths(objective_->edgePairs(), X);
     Vertices x;
     int newton = 0;
     if (!solveEquilibrium(X, x_, x, &newton)) {
@@ -207,6 +208,12 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
   const double t0 = nowMs();
   if (!started_) {
     started_ = true;
+    if (options_.projectEveryStep) {
+      Eigen::VectorXd X = X_;
+      projectSeamLengths(objective_->edgePairs(), X);
+      SewnMesh mesh = mesh_;
+      if (rebuildRest(X, mesh)) X_ = X, unpackPattern(X_, pattern_);
+    }
     Vertices x;
     int newton = 0;
     if (!solveEquilibrium(X_, x_, x, &newton)) {

@@ -36,7 +36,10 @@ struct OptimizeOptions {
   double maxStep = 0.5;          // largest panel-vertex move of one step, in mean rest edge lengths
   int maxHalvings = 12;          // line search
   bool exactSeamLengths = true;  // project onto equal stitched edge lengths at the end
-  bool keepShapes = false;       // keep x of every accepted iterate (benchmarks: preview quality)
+  // Also project the start and every trial step, so the panels never drift far from equal seam lengths
+  // (a large final projection can fold triangles, and the last shape would then not be sewable).
+  bool projectEveryStep = true;
+  bool keepShapes = false;  // keep x of every accepted iterate (benchmarks: preview quality)
 };
 
 enum class OptimizeState { Running, Converged, Stopped, Failed };
