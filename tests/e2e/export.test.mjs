@@ -51,6 +51,10 @@ test('the panels of a design export to every format, checked file by file', asyn
   await page.setInputFiles('#file-input', { name: 'sphere-equator.billow.json', mimeType: 'application/json', buffer: design });
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
   await page.waitForFunction(() => document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
+  // The optimized panels are sewable: stitched edges of equal length (paper Sec. 5.1), no pucker warning.
+  const status = await page.evaluate(() => window.billow.app.optimized.status);
+  assert.ok(status.seamMismatch < 1e-4, `seam mismatch ${status.seamMismatch} (${status.message})`);
+  assert.equal(await page.locator('.message', { hasText: 'pucker' }).count(), 0);
   // Balloon figures: a 0.5 m sphere of 25 µm foil floats on helium.
   assert.match(await stat(page, 'inflated', 'helium-lift'), /floats/);
   assert.match(await stat(page, 'inflated', 'envelope-mass'), /^\d+(\.\d)? g$/);
