@@ -286,5 +286,20 @@ TEST(CliDesign, DesignWritesPatternInflatedShapeAndReport) {
   EXPECT_GT(report["distance_to_target"]["rms"].get<double>(), 0.01);
   EXPECT_LT(report["distance_to_target"]["max"].get<double>(), 0.25);
   EXPECT_GE(report["seam_length_mismatch"]["max_piece"].get<double>(), 0.0);
+  // The cut file: true scale in mm, one cut and one sewing line per panel.
+  const std::string svg = readFileBytes(dir + "/pattern.svg");
+  EXPECT_NE(svg.find("width=\"1000mm\""), std::string::npos);
+  const size_t cut = svg.find("<g id=\"cut\""), sew = svg.find("<g id=\"sew\"");
+  ASSERT_NE(cut, std::string::npos);
+  ASSERT_NE(sew, std::string::npos);
+  const auto pathsIn = [&](size_t from) {
+    int n = 0;
+    for (size_t at = svg.find("<path", from); at != std::string::npos && at < svg.find("</g>", from);
+         at = svg.find("<path", at + 1))
+      ++n;
+    return n;
+  };
+  EXPECT_EQ(pathsIn(cut), 2);
+  EXPECT_EQ(pathsIn(sew), 2);
 #endif
 }

@@ -10,6 +10,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "export/export.hpp"
 #include "io/obj_writer.hpp"
 #include "io/pattern_json.hpp"
 #include "optimize/pattern_optimizer.hpp"
@@ -73,7 +74,8 @@ int designCommand(const std::vector<std::string>& argv) {
                  "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize] [--quiet]\n\n"
                  "Makes the sewn pattern of a design (its segments flattened into panels of about TRIANGLES\n"
                  "triangles in all, default 3000), inflates it from the target shape and writes\n"
-                 "DIR/pattern.json, DIR/inflated.obj and DIR/report.json. The panels are optimized so that\n"
+                 "DIR/pattern.json, DIR/pattern.svg (the cut file), DIR/inflated.obj and DIR/report.json. The panels "
+                 "are optimized so that\n"
                  "the inflated shape comes close to the target, unless --no-optimize.\n"
                  "Exit code 0 when the inflated shape settles, 1 when the design cannot be patterned or\n"
                  "the simulation does not settle (the files written so far stay).\n");
@@ -149,6 +151,19 @@ int designCommand(const std::vector<std::string>& argv) {
   }
   std::filesystem::create_directories(dir);
   writeTextFile(dir + "/pattern.json", writePatternJson(bp.pattern) + "\n");
+  {
+    // The cut file, with the design's fabrication settings (seam allowance, sheet width) when it has them.
+    ExportOptions eo;
+    const json& fabrication = design.extra.value("fabrication", json::object());
+    if (fabrication.is_object()) {
+      if (fabrication.contains("allowance") && fabrication["allowance"].is_number())
+        eo.allowance = fabrication["allowance"].get<double>();
+      if (fabrication.contains("sheet_width") && fabrication["sheet_width"].is_number())
+        eo.sheetWidth = fabrication["sheet_width"].get<double>();
+    }
+    eo.title = std::filesystem::path(args.positional[0]).stem().string();
+    writeTextFile(dir + "/pattern.svg", exportPattern(bp.pattern, eo).svg);
+  }
 
   // Inflate from the target shape (the pattern's "inflated" start).
   const SewnMesh mesh = sewPattern(bp.pattern);
