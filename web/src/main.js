@@ -9,6 +9,7 @@ import { App } from './app/app.js';
 import { SeamTool } from './tools/seam-tool.js';
 import { SeamPanel } from './views/seam-panel.js';
 import { Exporter } from './app/exporter.js';
+import { TabGuard, secondaryTabMessage } from './app/tab-guard.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -140,6 +141,13 @@ window.addEventListener('drop', (e) => {
   if (file) app.openFile(file);
 });
 
+// Only one tab autosaves, so two tabs never overwrite each other's design.
+const tabGuard = new TabGuard({
+  onChange: (primary) =>
+    primary ? messages.show('notice', 'This tab autosaves your design again.') : messages.show('warning', secondaryTabMessage()),
+});
+app.tabGuard = tabGuard;
+
 // For the end-to-end tests and the curious: the app and its solver client.
-window.billow = { app, client, viewport, seamTool, exporter };
-app.start().then(() => document.body.setAttribute('data-ready', 'true'));
+window.billow = { app, client, viewport, seamTool, exporter, tabGuard };
+tabGuard.start().then(() => app.start()).then(() => document.body.setAttribute('data-ready', 'true'));

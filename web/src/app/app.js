@@ -452,6 +452,7 @@ export class App {
 
   save() {
     if (!this.target) return;
+    if (this.tabGuard && !this.tabGuard.isPrimary) return; // another tab autosaves (tab-guard.js)
     const mesh = this.design.target.example ? undefined : { positions: this.target.positions, indices: this.target.indices };
     autosave.save(AUTOSAVE_KEY, { design: this.design, mesh }).catch((error) =>
       this.messages.show('warning', `Autosave failed (${error?.message || error}); save your design to a file.`),

@@ -1,0 +1,151 @@
+// Reliability in headless Chromium: a second tab does not autosave over the first (web/src/app/tab-guard.js)
+// and takes over when the first goes away; a page closed without unload handling, or whose renderer
+// crashes, loses nothing that was autosaved; the app fetches nothing from other sites. Every page fails
+// on any console error.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openPage, useBrowser } from './harness.mjs';
+
+const env = useBrowser({ before, after });
+
+const ready = (page) => page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+const isPrimary = (page) => page.evaluate(() => window.billow.tabGuard.isPrimary);
+const waitPrimary = (page) => page.waitForFunction(() => window.billow.tabGuard.isPrimary === true, null, { timeout: 10000 });
+const secondaryWarning = (page) => page.locator('.message.warning', { hasText: 'already open in another tab' });
+const primaryNotice = (page) => page.locator('.message.notice', { hasText: 'autosaves your design again' });
+
+// A page with no autosaved design: the app starts on its default example.
+async function fresh() {
+  const page = await openPage(env.context, env.server.url);
+  await page.evaluate(
+    () => new Promise((resolve, reject) => {
+      const request = indexedDB.deleteDatabase('billow');
+      request.onsuccess = resolve;
+      request.onerror = () => reject(request.error);
+    }),
+  );
+  await page.reload();
+  await ready(page);
+  return page;
+}
+
+async function setHeight(page, meters) {
+  await page.fill('#height-input', String(meters));
+  await page.press('#height-input', 'Enter');
+  await page.waitForFunction((h) => window.billow.app.design.size.height === h, meters);
+}
+
+// The height of the design autosaved in this browser profile (IndexedDB 'billow', key 'current').
+function autosavedHeight(page) {
+  return page.evaluate(
+    () => new Promise((resolve, reject) => {
+      const open = indexedDB.open('billow', 1);
+      open.onerror = () => reject(open.error);
+      open.onsuccess = () => {
+        const db = open.result;
+        const get = db.transaction('autosave', 'readonly').objectStore('autosave').get('current');
+        get.onsuccess = () => {
+          db.close();
+          resolve(get.result?.design?.size?.height ?? null);
+        };
+        get.onerror = () => reject(get.error);
+      };
+    }),
+  );
+}
+
+function assertNoErrors(...pages) {
+  for (const page of pages) assert.deepEqual(page.errors, [], 'no console errors');
+}
+
+test('a second tab does not autosave over the first, and takes over when the first goes away', async () => {
+  const first = await fresh();
+  assert.equal(await isPrimary(first), true, 'the first tab autosaves');
+  await setHeight(first, 0.8);
+  await first.waitForTimeout(300); // autosave is asynchronous
+  assert.equal(await autosavedHeight(first), 0.8);
+
+  const second = await openPage(env.context, env.server.url);
+  assert.equal(await isPrimary(second), false, 'the second tab does not autosave');
+  await secondaryWarning(second).waitFor();
+  assert.match(await secondaryWarning(second).textContent(), /does not autosave.*Save design/);
+  assert.equal(await second.inputValue('#height-input'), '0.8', 'it opened the autosaved design');
+  assert.equal(await secondaryWarning(first).count(), 0, 'the first tab is not warned');
+  assert.equal(await isPrimary(first), true);
+
+  await setHeight(second, 1.2);
+  await second.waitForTimeout(1500); // long enough for an autosave, if there were one
+  assert.equal(await autosavedHeight(second), 0.8, 'the second tab did not autosave');
+
+  // Reloading the first tab releases its lock: the waiting second tab becomes primary (and says so), and
+  // the reloaded first tab, with its own design, is the one that waits now.
+  await first.reload();
+  await ready(first);
+  assert.equal(await first.inputValue('#height-input'), '0.8', 'the first tab still shows its own height');
+  await waitPrimary(second);
+  await primaryNotice(second).waitFor();
+  assert.equal(await isPrimary(first), false);
+  await secondaryWarning(first).waitFor();
+
+  // Closing the primary tab hands the autosave to the other one.
+  await second.close();
+  await waitPrimary(first);
+  await primaryNotice(first).waitFor();
+  await setHeight(first, 1.1);
+  await first.waitForTimeout(300);
+  assert.equal(await autosavedHeight(first), 1.1, 'the tab left open autosaves again');
+  assertNoErrors(first, second);
+  await first.close();
+});
+
+test('a page closed without unload handling loses nothing: the next page restores the design', async () => {
+  const page = await fresh();
+  await setHeight(page, 1.3);
+  await page.waitForTimeout(1500); // autosave happens on every change, unload handlers play no part
+  assertNoErrors(page);
+  await page.close({ runBeforeUnload: false });
+
+  const next = await openPage(env.context, env.server.url);
+  assert.equal(await next.inputValue('#height-input'), '1.3', 'the height is restored');
+  assert.equal(await next.evaluate(() => window.billow.app.design.size.height), 1.3);
+  assertNoErrors(next);
+  await next.close();
+});
+
+test('a crashed renderer loses nothing either: the next page restores the design', async () => {
+  const page = await fresh();
+  await setHeight(page, 1.4);
+  await page.waitForTimeout(1500);
+  assertNoErrors(page);
+  const cdp = await env.context.newCDPSession(page);
+  const crashed = page.waitForEvent('crash');
+  cdp.send('Page.crash').catch(() => {}); // never answers: the page's process is gone
+  await crashed;
+  await page.close();
+
+  const next = await openPage(env.context, env.server.url);
+  assert.equal(await next.inputValue('#height-input'), '1.4', 'the height is restored');
+  assertNoErrors(next);
+  await next.close();
+});
+
+test('the app fetches nothing from other sites, the solver worker included', async () => {
+  const foreign = [];
+  const record = (request) => {
+    const url = request.url();
+    if (!url.startsWith(env.server.url) && !/^(data|blob):/.test(url)) foreign.push(url);
+  };
+  env.context.on('request', record);
+  try {
+    const page = await fresh();
+    await page.selectOption('#example-select', 'pattern:mylar');
+    await page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent), null, { timeout: 60000 });
+    await page.selectOption('#example-select', 'sphere');
+    await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'sphere.obj');
+    assert.deepEqual(foreign, [], 'every request goes to the page\'s own server');
+    assertNoErrors(page);
+    await page.close();
+  } finally {
+    env.context.off('request', record);
+  }
+});
