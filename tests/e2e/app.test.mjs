@@ -3,26 +3,13 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { serve, launch, openPage, screenshot, paintedFraction, MESHES, useBrowser } from './harness.mjs';
+import { serve, launch, openFreshPage, screenshot, paintedFraction, MESHES, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
 const stat = (page, name) => page.textContent(`#target-stats dd[data-stat="${name}"]`);
 
-// A page with no autosaved design: the app starts on its default example.
-async function fresh() {
-  const page = await openPage(env.context, env.server.url);
-  await page.evaluate(
-    () => new Promise((resolve, reject) => {
-      const request = indexedDB.deleteDatabase('billow');
-      request.onsuccess = resolve;
-      request.onerror = () => reject(request.error);
-    }),
-  );
-  await page.reload();
-  await page.waitForSelector('body[data-ready="true"]');
-  return page;
-}
+const fresh = () => openFreshPage(env.context, env.server.url);
 
 function assertNoErrors(page) {
   assert.deepEqual(page.errors, [], 'no console errors');

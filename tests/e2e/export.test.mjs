@@ -4,7 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { openPage, screenshot, useBrowser } from './harness.mjs';
+import { openPage, openDesignFixture, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 const stat = (page, pane, name) => page.textContent(`#${pane}-stats dd[data-stat="${name}"]`);
@@ -47,8 +47,7 @@ function patternPerimeters(pattern) {
 
 test('the panels of a design export to every format, checked file by file', async () => {
   const page = await openPage(env.context, env.server.url);
-  const design = readFileSync(new URL('../data/sphere-equator.billow.json', import.meta.url));
-  await page.setInputFiles('#file-input', { name: 'sphere-equator.billow.json', mimeType: 'application/json', buffer: design });
+  await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
   await page.waitForFunction(() => document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
   // The optimized panels are sewable: stitched edges of equal length (paper Sec. 5.1), no pucker warning.
@@ -130,8 +129,7 @@ test('the panels of a design export to every format, checked file by file', asyn
 
 test('the seam allowance and the units change the cut outline and the figures at once', async () => {
   const page = await openPage(env.context, env.server.url);
-  const design = readFileSync(new URL('../data/sphere-equator.billow.json', import.meta.url));
-  await page.setInputFiles('#file-input', { name: 'sphere-equator.billow.json', mimeType: 'application/json', buffer: design });
+  await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
   await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines && document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
   const area = async () => parseFloat(await stat(page, 'pattern', 'material'));

@@ -66,6 +66,27 @@ export async function openPage(context, url) {
   return page;
 }
 
+// A page with no autosaved design: the app starts on its default example.
+export async function openFreshPage(context, url) {
+  const page = await openPage(context, url);
+  await page.evaluate(
+    () => new Promise((resolve, reject) => {
+      const request = indexedDB.deleteDatabase('billow');
+      request.onsuccess = resolve;
+      request.onerror = () => reject(request.error);
+    }),
+  );
+  await page.reload();
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  return page;
+}
+
+// Opens a design file of tests/data with the file picker, as a designer would.
+export async function openDesignFixture(page, fileName) {
+  const buffer = await readFile(join(ROOT, 'tests/data', fileName));
+  await page.setInputFiles('#file-input', { name: fileName, mimeType: 'application/json', buffer });
+}
+
 export async function screenshot(page, name) {
   await mkdir(SHOTS, { recursive: true });
   const path = join(SHOTS, `${name}.png`);

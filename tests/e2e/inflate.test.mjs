@@ -3,7 +3,8 @@
 // a broken pattern gets a message and the last good result stays.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve, launch, openPage, screenshot, paintedFraction, useBrowser } from './harness.mjs';
+import { readFileSync } from 'node:fs';
+import { serve, launch, openPage, openDesignFixture, screenshot, paintedFraction, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -53,10 +54,8 @@ test('an imported pattern file inflates; a broken one gets a message and the las
 });
 
 test('a design with an equator seam becomes two panels that inflate like a Mylar balloon', async () => {
-  const { readFileSync } = await import('node:fs');
   const page = await openPage(env.context, env.server.url);
-  const design = readFileSync(new URL('../data/sphere-equator.billow.json', import.meta.url));
-  await page.setInputFiles('#file-input', { name: 'sphere-equator.billow.json', mimeType: 'application/json', buffer: design });
+  await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /1 seam, 2 segments/.test(document.querySelector('#seam-panel .summary')?.textContent));
   await waitInflated(page);
   const labels = await page.$$eval('.panel-label', (els) => els.map((e) => e.textContent));
@@ -80,10 +79,8 @@ test('a design with an equator seam becomes two panels that inflate like a Mylar
 });
 
 test('material and pressure are part of the design: the panels are made again, saved, and undone', async () => {
-  const { readFileSync } = await import('node:fs');
   const page = await openPage(env.context, env.server.url);
-  const design = readFileSync(new URL('../data/sphere-equator.billow.json', import.meta.url));
-  await page.setInputFiles('#file-input', { name: 'sphere-equator.billow.json', mimeType: 'application/json', buffer: design });
+  await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /1 seam, 2 segments/.test(document.querySelector('#seam-panel .summary')?.textContent));
   await waitInflated(page);
   assert.equal(await page.inputValue('#material-select'), 'foil');

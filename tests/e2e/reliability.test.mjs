@@ -4,7 +4,7 @@
 // on any console error.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, useBrowser } from './harness.mjs';
+import { openPage, openFreshPage, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -14,20 +14,7 @@ const waitPrimary = (page) => page.waitForFunction(() => window.billow.tabGuard.
 const secondaryWarning = (page) => page.locator('.message.warning', { hasText: 'already open in another tab' });
 const primaryNotice = (page) => page.locator('.message.notice', { hasText: 'autosaves your design again' });
 
-// A page with no autosaved design: the app starts on its default example.
-async function fresh() {
-  const page = await openPage(env.context, env.server.url);
-  await page.evaluate(
-    () => new Promise((resolve, reject) => {
-      const request = indexedDB.deleteDatabase('billow');
-      request.onsuccess = resolve;
-      request.onerror = () => reject(request.error);
-    }),
-  );
-  await page.reload();
-  await ready(page);
-  return page;
-}
+const fresh = () => openFreshPage(env.context, env.server.url);
 
 async function setHeight(page, meters) {
   await page.fill('#height-input', String(meters));

@@ -162,16 +162,14 @@ class TargetSession {
     if (o.contains("material")) {
       const json& m = o["material"];
       if (!m.is_object()) throw billow::Error("pattern.bad-material", "The material must be an object.");
-      if (m.contains("name") && m["name"].is_string()) {
-        options.material.name = m["name"].get<std::string>();
-        if (const billow::MaterialPreset* preset = billow::findMaterialPreset(options.material.name))
-          options.material = preset->material;
-      }
+      if (m.contains("name") && m["name"].is_string())
+        options.material = billow::namedMaterial(m["name"].get<std::string>(), options.material);
       options.material.thickness = number(m, "thickness", options.material.thickness);
       options.material.youngsModulus = number(m, "youngs_modulus", options.material.youngsModulus);
-      if (!(options.material.thickness >= 1e-7 && options.material.thickness <= 0.01))
+      if (!(options.material.thickness >= billow::kMinThickness && options.material.thickness <= billow::kMaxThickness))
         throw billow::Error("pattern.bad-material", "The sheet thickness must be between 0.1 µm and 1 cm.");
-      if (!(options.material.youngsModulus >= 1e3 && options.material.youngsModulus <= 1e13))
+      if (!(options.material.youngsModulus >= billow::kMinYoungsModulus &&
+            options.material.youngsModulus <= billow::kMaxYoungsModulus))
         throw billow::Error("pattern.bad-material", "The material's Young's modulus must be between 1 kPa and 10 TPa.");
     }
     return options;

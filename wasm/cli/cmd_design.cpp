@@ -74,9 +74,9 @@ int designCommand(const std::vector<std::string>& argv) {
                  "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize] [--quiet]\n\n"
                  "Makes the sewn pattern of a design (its segments flattened into panels of about TRIANGLES\n"
                  "triangles in all, default 3000), inflates it from the target shape and writes\n"
-                 "DIR/pattern.json, DIR/pattern.svg (the cut file), DIR/inflated.obj and DIR/report.json. The panels "
-                 "are optimized so that\n"
-                 "the inflated shape comes close to the target, unless --no-optimize.\n"
+                 "DIR/pattern.json, DIR/pattern.svg (the cut file), DIR/inflated.obj and DIR/report.json.\n"
+                 "The panels are optimized so that the inflated shape comes close to the target, unless\n"
+                 "--no-optimize.\n"
                  "Exit code 0 when the inflated shape settles, 1 when the design cannot be patterned or\n"
                  "the simulation does not settle (the files written so far stay).\n");
     return args.has("--help") ? 0 : 2;

@@ -23,9 +23,9 @@ struct Args {
 };
 // flagsWithValue lists the options that take a value; anything else starting with -- is a flag.
 Args parseArgs(const std::vector<std::string>& args, const std::vector<std::string>& flagsWithValue);
-// The number after option `name`, or fallback when absent; `what` names it in the error ("a length in mm").
 // --material NAME (a preset of simulate/materials.hpp), else `fallback`.
 Material materialOption(const Args& args, const Material& fallback);
+// The number after option `name`, or fallback when absent; `what` names it in the error ("a length in mm").
 double numberOption(const Args& args, const std::string& name, double fallback, const std::string& what = "a number");
 
 int checkCommand(const std::vector<std::string>& args);

@@ -9,6 +9,7 @@ import { App } from './app/app.js';
 import { SeamTool } from './tools/seam-tool.js';
 import { SeamPanel } from './views/seam-panel.js';
 import { Exporter } from './app/exporter.js';
+import { MM_PER_INCH } from './app/fabrication.js';
 import { TabGuard, secondaryTabMessage } from './app/tab-guard.js';
 
 const $ = (id) => document.getElementById(id);
@@ -74,7 +75,7 @@ const pressureChanged = () => app.setPressure(Number($('pressure-input').value) 
 $('pressure-input').addEventListener('change', pressureChanged);
 $('pressure-unit').addEventListener('change', () => app.showDesign());
 // Fabrication settings: lengths typed in the chosen units, stored in mm.
-const typedMillimeters = (input) => Number(input.value) * ($('units-select').value === 'in' ? 25.4 : 1);
+const typedMillimeters = (input) => Number(input.value) * ($('units-select').value === 'in' ? MM_PER_INCH : 1);
 $('allowance-input').addEventListener('change', (e) => app.setFabrication({ allowance: typedMillimeters(e.target) }));
 $('sheet-input').addEventListener('change', (e) => app.setFabrication({ sheet_width: typedMillimeters(e.target) }));
 $('units-select').addEventListener('change', (e) => app.setFabrication({ units: e.target.value }));

@@ -175,16 +175,15 @@ void readMaterial(FieldReader& r, const json& m, Material& out) {
     return;
   }
   if (m.contains("name")) {
-    if (m["name"].is_string()) {
-      out.name = m["name"].get<std::string>();
-      // A preset's name stands for its figures; the fields given below override them.
-      if (const MaterialPreset* preset = findMaterialPreset(out.name)) out = preset->material;
-    } else
+    if (m["name"].is_string())
+      out = namedMaterial(m["name"].get<std::string>(), out);
+    else
       r.bad("material.name", "The material's name must be text.");
   }
-  out.thickness = r.number(m, "thickness", out.thickness, 1e-7, 0.01, "material.thickness", "The sheet thickness [m]");
-  out.youngsModulus =
-      r.number(m, "youngs_modulus", out.youngsModulus, 1e3, 1e13, "material.youngs_modulus", "Young's modulus [Pa]");
+  out.thickness = r.number(m, "thickness", out.thickness, kMinThickness, kMaxThickness, "material.thickness",
+                           "The sheet thickness [m]");
+  out.youngsModulus = r.number(m, "youngs_modulus", out.youngsModulus, kMinYoungsModulus, kMaxYoungsModulus,
+                               "material.youngs_modulus", "Young's modulus [Pa]");
   out.density = r.number(m, "density", out.density, 0, 1e5, "material.density", "The density [kg/m^3]");
 }
 

@@ -36,4 +36,10 @@ const MaterialPreset* findMaterialPreset(const std::string& name) {
   return nullptr;
 }
 
+Material namedMaterial(const std::string& name, Material base) {
+  if (const MaterialPreset* preset = findMaterialPreset(name)) return preset->material;
+  base.name = name;
+  return base;
+}
+
 }  // namespace billow

@@ -21,4 +21,12 @@ const std::vector<MaterialPreset>& materialPresets();
 // nullptr when no preset has this name.
 const MaterialPreset* findMaterialPreset(const std::string& name);
 
+// The material called `name`: a preset's figures when there is one, else `base` under that name. Readers
+// then let the figures given beside the name override it.
+Material namedMaterial(const std::string& name, Material base);
+
+// What readers accept for a sheet: thickness [m] and Young's modulus [Pa].
+constexpr double kMinThickness = 1e-7, kMaxThickness = 0.01;
+constexpr double kMinYoungsModulus = 1e3, kMaxYoungsModulus = 1e13;
+
 }  // namespace billow

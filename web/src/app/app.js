@@ -10,7 +10,8 @@ import { PatternSession, patternForDisplay } from './pattern-session.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight, setMaterial, setPressure, setFabrication } from './commands.js';
-import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, patternStatRows } from './fabrication.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions } from './fabrication.js';
+import { download } from './download.js';
 import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
 
@@ -304,7 +305,7 @@ export class App {
     try {
       const result = await this.client.request(Op.exportPattern, {
         patternText: text,
-        options: { allowance: f.allowance, sheet_width: f.sheet_width, units: f.units },
+        options: exportOptions(f),
       });
       if (ticket !== this.cutTicket) return;
       this.panes.pattern.setCutLines(display, result.cutLines);
@@ -382,8 +383,8 @@ export class App {
     const f = design.fabrication;
     const inches = f.units === 'in';
     this.el.unitsSelect.value = f.units;
-    this.el.allowanceInput.value = String(+(inches ? f.allowance / 25.4 : f.allowance).toFixed(inches ? 3 : 1));
-    this.el.sheetInput.value = String(+(inches ? f.sheet_width / 25.4 : f.sheet_width).toFixed(inches ? 2 : 0));
+    this.el.allowanceInput.value = String(+(inches ? f.allowance / MM_PER_INCH : f.allowance).toFixed(inches ? 3 : 1));
+    this.el.sheetInput.value = String(+(inches ? f.sheet_width / MM_PER_INCH : f.sheet_width).toFixed(inches ? 2 : 0));
     const unit = Number(this.el.pressureUnit.value) || 1000;
     this.el.pressureInput.value = String(+(design.pressure / unit).toPrecision(6));
     this.panes.target.setScale(this.scaleFor(design));
@@ -441,13 +442,12 @@ export class App {
 
   // Downloads the design document as a .json file.
   saveDesignFile() {
-    const blob = new Blob([JSON.stringify(this.design, null, 2)], { type: 'application/json' });
-    const link = document.createElement('a');
-    link.href = URL.createObjectURL(blob);
-    const base = (this.design.target.example ?? this.target?.fileName ?? 'design').replace(/\.[^.]+$/, '');
-    link.download = `${base}.billow.json`;
-    link.click();
-    setTimeout(() => URL.revokeObjectURL(link.href), 1000);
+    download(JSON.stringify(this.design, null, 2), `${this.fileBaseName()}.billow.json`, 'application/json');
+  }
+
+  // The name files of this design are called by: its example or mesh file, without extension.
+  fileBaseName() {
+    return (this.design.target.example ?? this.target?.fileName ?? 'design').replace(/\.[^.]+$/, '');
   }
 
   save() {

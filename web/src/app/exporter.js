@@ -6,15 +6,8 @@ import { OBJExporter } from 'three/addons/exporters/OBJExporter.js';
 import { STLExporter } from 'three/addons/exporters/STLExporter.js';
 import { GLTFExporter } from 'three/addons/exporters/GLTFExporter.js';
 import { Op } from '../worker/protocol.js';
-
-export function download(data, fileName, type) {
-  const blob = data instanceof Blob ? data : new Blob([data], { type });
-  const link = document.createElement('a');
-  link.href = URL.createObjectURL(blob);
-  link.download = fileName;
-  link.click();
-  setTimeout(() => URL.revokeObjectURL(link.href), 5000);
-}
+import { download } from './download.js';
+import { exportOptions } from './fabrication.js';
 
 export class Exporter {
   // app: the App (design, patterns, panes, client, messages, viewport)
@@ -23,15 +16,9 @@ export class Exporter {
     this.viewport = viewport;
   }
 
+  // The design's name, safe in a file name.
   baseName() {
-    const app = this.app;
-    return (app.design.target.example ?? app.target?.fileName ?? 'design').replace(/\.[^.]+$/, '').replace(/[^\w.-]+/g, '-');
-  }
-
-  // The options of the exporter from the design's fabrication settings.
-  exportOptions(extra = {}) {
-    const f = this.app.design.fabrication;
-    return { allowance: f.allowance, sheet_width: f.sheet_width, units: f.units, title: `${this.baseName()} (Billow)`, ...extra };
+    return this.app.fileBaseName().replace(/[^\w.-]+/g, '-');
   }
 
   async run(kind) {
@@ -55,7 +42,8 @@ export class Exporter {
 
   async cutFiles(kind) {
     const paper = kind === 'pdf-letter' ? 'letter' : 'a4';
-    const result = await this.app.client.request(Op.exportPattern, { patternText: this.currentPattern(), options: this.exportOptions({ paper }) });
+    const options = exportOptions(this.app.design.fabrication, { paper, title: `${this.baseName()} (Billow)` });
+    const result = await this.app.client.request(Op.exportPattern, { patternText: this.currentPattern(), options });
     const name = this.baseName();
     if (kind === 'svg') download(result.svg, `${name}-pattern.svg`, 'image/svg+xml');
     else if (kind === 'dxf') download(result.dxf, `${name}-pattern.dxf`, 'application/dxf');

@@ -7,6 +7,7 @@ export const DEFAULT_FABRICATION = Object.freeze({ allowance: 10, sheet_width: 1
 export const MAX_ALLOWANCE = 100; // [mm]
 export const MIN_SHEET = 100;
 export const MAX_SHEET = 10000;
+export const MM_PER_INCH = 25.4;
 
 // Air at 20 °C and helium at 20 °C, 1 atm [kg/m³]: the lift of helium is their difference.
 const AIR_DENSITY = 1.204;
@@ -34,9 +35,14 @@ export function parseFabrication(value, warnings) {
   return { ...value, ...out };
 }
 
+// The exporter's options (wasm/src/export, lengths in mm) from the design's fabrication settings.
+export function exportOptions(fabrication, extra = {}) {
+  return { allowance: fabrication.allowance, sheet_width: fabrication.sheet_width, units: fabrication.units, ...extra };
+}
+
 // A length given in mm, in the designer's units: "123 mm" or "4.84 in".
 export function formatMillimeters(mm, units = 'mm') {
-  return units === 'in' ? `${(mm / 25.4).toFixed(2)} in` : `${mm.toFixed(0)} mm`;
+  return units === 'in' ? `${(mm / MM_PER_INCH).toFixed(2)} in` : `${mm.toFixed(0)} mm`;
 }
 
 // Rows for the pattern pane's figures box from the exporter's statistics (wasm/src/export/statistics.hpp).
