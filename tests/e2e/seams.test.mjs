@@ -3,7 +3,9 @@
 // travels by link.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { serve, launch, openPage, screenshot, useBrowser } from './harness.mjs';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { serve, launch, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
 import { surfaceScreenPoints } from './seams-helpers.mjs';
 
 const env = useBrowser({ before, after });
@@ -102,6 +104,44 @@ test('drag a control point, undo and redo, reload, and open the shared link', as
   } finally {
     await other.close();
   }
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('a design on the designer\'s own mesh file travels by link with its mesh; a mesh too large for a link says so', async () => {
+  const page = await openPage(env.context, env.server.url);
+  await page.setInputFiles('#file-input', { name: 'my ball.obj', mimeType: 'text/plain', buffer: readFileSync(join(MESHES, 'sphere.obj')) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'my ball.obj');
+  await page.waitForFunction(() => !window.billow.app.design.seams.length);
+  await drawTwoSeams(page);
+  const url = await page.evaluate(() => window.billow.app.shareLink());
+  assert.match(url, /#design=[A-Za-z0-9_-]+&mesh=[A-Za-z0-9_-]+$/);
+  const other = await launch();
+  try {
+    const fresh = await openPage(other, url);
+    await waitSummary(fresh, /2 seams, 3 segments/);
+    assert.equal(await fresh.textContent('#target-stats dd[data-stat="file"]'), 'my ball.obj');
+    assert.equal(await fresh.evaluate(() => window.billow.app.target.indices.length), 1280 * 3);
+    // The same control points; points snapped onto another seam follow that seam on the quantized mesh.
+    const sent = await page.evaluate(() => window.billow.app.design.seams);
+    const received = await fresh.evaluate(() => window.billow.app.design.seams);
+    assert.equal(received.length, sent.length);
+    sent.forEach((seam, i) => {
+      assert.equal(received[i].closed, seam.closed);
+      assert.equal(received[i].points.length, seam.points.length);
+      seam.points.forEach((p, k) => {
+        assert.equal(received[i].points[k].face, p.face);
+        p.bary.forEach((b, j) => assert.ok(Math.abs(received[i].points[k].bary[j] - b) < 1e-3, `seam ${i} point ${k}`));
+      });
+    });
+    assert.deepEqual(fresh.errors, []);
+  } finally {
+    await other.close();
+  }
+  await page.setInputFiles('#file-input', { name: 'hand.obj', mimeType: 'text/plain', buffer: readFileSync(join(MESHES, 'hand.obj')) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'hand.obj', null, { timeout: 60000 });
+  assert.equal(await page.evaluate(() => window.billow.app.shareLink()), null);
+  await page.locator('.message.warning', { hasText: 'too large for a link' }).waitFor();
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -83,12 +83,21 @@ export class App {
     if (!decoded) return false;
     for (const w of decoded.warnings) this.messages.show('warning', w);
     history.replaceState(null, '', location.pathname + location.search); // the design is autosaved from now on
-    if (!decoded.design.target.example) {
+    if (decoded.design.target.example) {
+      await this.loadExample(decoded.design.target.example, decoded.design);
+      return true;
+    }
+    if (!decoded.mesh) {
       this.messages.show('warning', `The link refers to the file "${decoded.design.target.file}", which is not in the link. Open that file to continue.`);
       await this.loadExample(newDesign().target.example);
       return true;
     }
-    await this.loadExample(decoded.design.target.example, decoded.design);
+    try {
+      await this.installSavedMesh(decoded.design, decoded.mesh);
+    } catch (error) {
+      this.messages.show('error', `The target shape in this link cannot be used: ${error.message} Billow opened an example instead.`);
+      await this.loadExample(newDesign().target.example);
+    }
     return true;
   }
 
@@ -196,6 +205,7 @@ export class App {
   }
 
   async installSavedMesh(design, mesh) {
+    this.el.exampleSelect.value = '';
     const result = await this.client.request(Op.setTarget, mesh);
     this.client.remember(Op.setTarget, mesh);
     this.installTarget(design.target.file, result, design);
@@ -422,14 +432,12 @@ export class App {
     this.refreshCutLines();
   }
 
-  // Puts the design into the page's link and copies it; files cannot travel in a link yet.
+  // Puts the design into the page's link and copies it; a target from the designer's own file travels in
+  // the link too (quantized and compressed), unless it makes the link too long.
   async shareLink() {
-    if (!this.design.target.example) {
-      this.messages.show('warning', 'This design uses your own mesh file, which a link cannot carry yet. Use "Save design" and send the file with your mesh.');
-      return null;
-    }
     try {
-      const fragment = await encodeDesign(this.design);
+      const mesh = this.design.target.example ? null : { positions: this.target.positions, indices: this.target.indices };
+      const fragment = await encodeDesign(this.design, mesh);
       const url = `${location.origin}${location.pathname}${location.search}#${fragment}`;
       await navigator.clipboard?.writeText(url).catch(() => {});
       this.messages.show('notice', 'A link to this design was copied to the clipboard.');
