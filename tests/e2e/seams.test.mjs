@@ -146,6 +146,51 @@ test('a design on the designer\'s own mesh file travels by link with its mesh; a
   await page.close();
 });
 
+test('mirror symmetry: a seam drawn on one side gets a twin; dragging, undo and delete act on both', async () => {
+  const page = await openPage(env.context, env.server.url);
+  await openSphere(page);
+  await page.selectOption('#seam-panel select.symmetry', 'x');
+  await page.waitForFunction(() => window.billow.app.design.symmetry?.axis === 'x');
+  await page.keyboard.press('d');
+  const [a, b, c] = await surfaceScreenPoints(page, [[0.7, 0.4, 0.8], [0.3, 0.0, 1], [0.7, -0.4, 0.8]]);
+  for (const p of [a, b, c]) await clickAt(page, p);
+  await clickAt(page, a); // closes the loop
+  await waitSummary(page, /2 seams, 3 segments/);
+  const position = (seam, k) => page.evaluate(([i, j]) => window.billow.app.seams.positionOf(window.billow.app.design.seams[i].points[j]), [seam, k]);
+  const mirrorError = async () => {
+    let worst = 0;
+    for (let k = 0; k < 3; k++) {
+      const [p, q] = [await position(0, k), await position(1, k)];
+      worst = Math.max(worst, Math.hypot(p[0] + q[0], p[1] - q[1], p[2] - q[2])); // x -> -x on the sphere centred at 0
+    }
+    return worst;
+  };
+  assert.ok((await mirrorError()) < 0.02, 'the twin mirrors the seam across x = 0');
+  assert.equal(await page.evaluate(() => window.billow.app.design.seams[1].mirror), 0);
+  await screenshot(page, 'seams-mirror-symmetry');
+
+  await page.keyboard.press('e');
+  const [grab, to] = await surfaceScreenPoints(page, [[0.3, 0.0, 1], [0.45, 0.15, 1]]);
+  const before = await position(1, 1);
+  await page.mouse.move(grab.x, grab.y);
+  await page.mouse.down();
+  await page.mouse.move(to.x, to.y, { steps: 6 });
+  await page.mouse.up();
+  await waitSummary(page, /2 seams, 3 segments/);
+  const after = await position(1, 1);
+  assert.ok(Math.hypot(after[0] - before[0], after[1] - before[1], after[2] - before[2]) > 0.05, 'the twin point followed the drag');
+  assert.ok((await mirrorError()) < 0.02, 'still mirrored');
+  await page.keyboard.press('Control+z');
+  const undone = await position(1, 1);
+  assert.ok(Math.hypot(undone[0] - before[0], undone[1] - before[1], undone[2] - before[2]) < 1e-9, 'one undo restores both seams');
+  await page.click('#seam-panel .seam-list .seam:first-child .delete');
+  await waitSummary(page, /No seams yet/);
+  await page.keyboard.press('Control+z');
+  await waitSummary(page, /2 seams, 3 segments/);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 test('Escape cancels a seam being drawn and Backspace removes its last point', async () => {
   const page = await openPage(env.context, env.server.url);
   await openSphere(page);

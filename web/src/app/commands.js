@@ -20,13 +20,21 @@ function renumberAttachments(point, removed) {
   return point.on > removed ? { ...point, on: point.on - 1 } : point;
 }
 
+// A mirrored twin link (seam.mirror) to the removed seam goes; links past it follow the renumbering.
+function renumberMirror(seam, removed) {
+  if (seam.mirror === undefined) return seam;
+  const { mirror, ...rest } = seam;
+  if (mirror === removed) return rest;
+  return { ...rest, mirror: mirror > removed ? mirror - 1 : mirror };
+}
+
 export function deleteSeam(design, seam) {
   if (!design.seams[seam]) return design;
   return {
     ...design,
     seams: design.seams
       .filter((_, k) => k !== seam)
-      .map((s) => ({ ...s, points: s.points.map((p) => renumberAttachments(p, seam)) })),
+      .map((s) => renumberMirror({ ...s, points: s.points.map((p) => renumberAttachments(p, seam)) }, seam)),
     // Internal connections that used the seam go with it; the others are renumbered.
     connections: design.connections
       .filter((c) => !c.seams.includes(seam))
@@ -60,6 +68,12 @@ export function setSeamWeight(design, seam, weight) {
   const s = design.seams[seam];
   if (!s || !(weight >= 0)) return design;
   return { ...design, seams: replaceAt(design.seams, seam, { ...s, weight }) };
+}
+
+// axis: 'x' | 'y' | 'z' turns mirror symmetry on across that plane (symmetry.js); null turns it off.
+export function setSymmetry(design, axis) {
+  const { symmetry, ...rest } = design;
+  return axis ? { ...rest, symmetry: { axis } } : rest;
 }
 
 export function setHeight(design, height) {

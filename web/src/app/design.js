@@ -6,6 +6,7 @@ import {
   findMaterialPreset, presetMaterial, formatPressure,
 } from './materials.js';
 import { DEFAULT_FABRICATION, parseFabrication } from './fabrication.js';
+import { parseSymmetry } from './symmetry.js';
 
 export const DESIGN_FORMAT = 'billow-design';
 export const DESIGN_VERSION = 1;
@@ -93,6 +94,17 @@ export function parseDesign(value) {
     design.pressure = DEFAULT_PRESSURE;
   }
   design.fabrication = parseFabrication(value.fabrication, warnings);
+  const symmetry = parseSymmetry(value.symmetry, warnings);
+  if (symmetry) design.symmetry = symmetry;
+  else delete design.symmetry;
+  design.seams = design.seams.map((seam, i) => {
+    // A twin link must name another seam that links back; anything else is dropped.
+    if (seam === null || typeof seam !== 'object' || seam.mirror === undefined) return seam;
+    const twin = design.seams[seam.mirror];
+    if (Number.isInteger(seam.mirror) && seam.mirror !== i && twin && twin.mirror === i) return seam;
+    const { mirror, ...rest } = seam;
+    return rest;
+  });
   return { design, warnings };
 }
 

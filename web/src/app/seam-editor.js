@@ -3,6 +3,7 @@
 // history, and asks the worker for the segmentation after each committed edit.
 import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
+import { symmetryPlane, mirrorPoint, addMirroredTwin } from './symmetry.js';
 
 const keyOf = (seam) => JSON.stringify([seam.points, seam.closed]);
 const PICK_PX = 10;
@@ -96,6 +97,7 @@ export class SeamEditor {
     }));
     this.pane.seams.update(seams, this.preview);
     this.pane.setConnections(this.design.connections.map((c) => c.seams.map((k) => traces[k]?.curve ?? null)));
+    this.pane.setSymmetryPlane(this.plane);
     this.pane.requestRender();
     for (const fn of this.listeners) fn();
   }
@@ -118,10 +120,47 @@ export class SeamEditor {
     }
   }
 
+  // The mirror plane while symmetry is on (null otherwise).
+  get plane() {
+    return symmetryPlane(this.design, this.app.target);
+  }
+
+  // The twin of seam i that edits of i carry over to, or null (no symmetry, no twin, or out of step).
+  twinOf(design, i) {
+    const twin = design.seams[i]?.mirror;
+    if (twin === undefined || !this.plane) return null;
+    return design.seams[twin]?.points.length === design.seams[i].points.length ? twin : null;
+  }
+
+  mirrored(design, point) {
+    return mirrorPoint(design, this.app.target, this.plane, point);
+  }
+
   commitSeam(points, closed) {
-    this.app.commitDesign(cmd.addSeam(this.design, { points, closed }));
-    this.selection = { seam: this.design.seams.length - 1, index: null };
+    let next = cmd.addSeam(this.design, { points, closed });
+    const index = next.seams.length - 1;
+    if (this.plane) next = addMirroredTwin(next, this.app.target, this.plane, index);
+    this.app.commitDesign(next);
+    this.selection = { seam: index, index: null };
     this.refresh();
+  }
+
+  // A mirrored copy of seam i across the symmetry plane (for seams drawn before symmetry was on).
+  mirrorSeam(i) {
+    if (!this.plane) return;
+    const next = addMirroredTwin(this.design, this.app.target, this.plane, i);
+    if (next === this.design) {
+      const own = this.design.seams[i]?.mirror === undefined;
+      this.app.messages.show('notice', own ? 'This seam is its own mirror image: it needs no twin.' : 'This seam already has a mirrored twin.');
+      return;
+    }
+    this.app.commitDesign(next);
+    this.refresh();
+  }
+
+  setSymmetry(axis) {
+    this.app.commitDesign(cmd.setSymmetry(this.design, axis));
+    this.draw();
   }
 
   // The control point under the pointer: { seam, index } or null.
@@ -152,7 +191,10 @@ export class SeamEditor {
 
   // Live drag: one undo step per drag (merged), the curve re-traced as the point moves.
   moveControlPoint(seam, index, point) {
-    this.app.commitDesign(cmd.moveControlPoint(this.design, seam, index, point), { mergeKey: `move:${seam}:${index}` });
+    let next = cmd.moveControlPoint(this.design, seam, index, point);
+    const twin = this.twinOf(next, seam);
+    if (twin !== null) next = cmd.moveControlPoint(next, twin, index, this.mirrored(next, point));
+    this.app.commitDesign(next, { mergeKey: `move:${seam}:${index}` });
     this.refresh({ segment: false });
   }
 
@@ -169,7 +211,10 @@ export class SeamEditor {
     const controlSamples = this.seamTraces()[seam].controlSamples;
     let index = controlSamples.findIndex((s) => s > sample);
     if (index < 0) index = controlSamples.length; // after the last control point (closed loops)
-    this.app.commitDesign(cmd.insertControlPoint(this.design, seam, index, point));
+    let next = cmd.insertControlPoint(this.design, seam, index, point);
+    const twin = this.twinOf(this.design, seam);
+    if (twin !== null) next = cmd.insertControlPoint(next, twin, index, this.mirrored(next, point));
+    this.app.commitDesign(next);
     this.selection = { seam, index };
     this.refresh();
   }
@@ -193,20 +238,30 @@ export class SeamEditor {
   deleteSelection() {
     if (!this.selection) return;
     const { seam, index } = this.selection;
-    const next = index === null ? cmd.deleteSeam(this.design, seam) : cmd.deleteControlPoint(this.design, seam, index);
+    if (index === null) return this.deleteSeam(seam);
+    const twin = this.twinOf(this.design, seam);
+    let next = cmd.deleteControlPoint(this.design, seam, index);
+    // A twin goes with its seam, or loses the same point (deleting a seam renumbers the ones after it).
+    if (twin !== null) next = next.seams.length < this.design.seams.length ? cmd.deleteSeam(next, twin > seam ? twin - 1 : twin) : cmd.deleteControlPoint(next, twin, index);
     this.selection = null;
     this.app.commitDesign(next);
     this.refresh();
   }
 
+  // With symmetry on, a seam and its twin go together (one undo step).
   deleteSeam(seam) {
     this.selection = null;
-    this.app.commitDesign(cmd.deleteSeam(this.design, seam));
+    const twin = this.twinOf(this.design, seam);
+    const next = twin === null ? cmd.deleteSeam(this.design, seam) : cmd.deleteSeam(cmd.deleteSeam(this.design, Math.max(seam, twin)), Math.min(seam, twin));
+    this.app.commitDesign(next);
     this.refresh();
   }
 
   setWeight(seam, weight) {
-    this.app.commitDesign(cmd.setSeamWeight(this.design, seam, weight), { mergeKey: `weight:${seam}` });
+    let next = cmd.setSeamWeight(this.design, seam, weight);
+    const twin = this.twinOf(next, seam);
+    if (twin !== null) next = cmd.setSeamWeight(next, twin, weight);
+    this.app.commitDesign(next, { mergeKey: `weight:${seam}` });
     this.draw();
   }
 

@@ -26,6 +26,15 @@ export class SeamPanel {
       this.toolbar.append(b);
       return b;
     });
+    // Mirror symmetry (symmetry.js): new seams get a twin across the chosen plane of the target.
+    this.symmetry = document.createElement('select');
+    this.symmetry.className = 'symmetry';
+    this.symmetry.title = 'Mirror symmetry: seams drawn or edited on one side are mirrored to the other (M cycles)';
+    this.symmetry.setAttribute('aria-label', 'Mirror symmetry');
+    for (const [value, label] of [['', 'No symmetry'], ['x', 'Mirror across X'], ['y', 'Mirror across Y'], ['z', 'Mirror across Z']])
+      this.symmetry.append(new Option(label, value));
+    this.symmetry.addEventListener('change', () => editor.setSymmetry(this.symmetry.value || null));
+    this.toolbar.append(this.symmetry);
     this.summary = el('div', 'summary');
     this.list = el('ol', 'seam-list');
     this.connections = el('ul', 'connection-list');
@@ -38,6 +47,7 @@ export class SeamPanel {
   render() {
     for (const b of this.toolButtons) b.setAttribute('aria-pressed', String(b.dataset.tool === this.tool.mode));
     const { design, segmentation, selection } = this.editor;
+    this.symmetry.value = design.symmetry?.axis ?? '';
     const count = segmentation?.segments?.length;
     this.summary.textContent = design.seams.length
       ? `${design.seams.length} seam${design.seams.length === 1 ? '' : 's'}${count ? `, ${count} segment${count === 1 ? '' : 's'}` : ''}`
@@ -89,6 +99,14 @@ export class SeamPanel {
     remove.setAttribute('aria-label', `Delete ${seam.name ?? `seam ${i + 1}`}`);
     remove.addEventListener('click', () => this.editor.deleteSeam(i));
     li.append(swatch, name, weight, remove);
+    if (this.editor.design.symmetry && seam.mirror === undefined) {
+      const mirror = el('button', 'mirror', '⇋');
+      mirror.type = 'button';
+      mirror.title = 'Add a mirrored twin of this seam across the symmetry plane';
+      mirror.setAttribute('aria-label', `Mirror ${seam.name ?? `seam ${i + 1}`}`);
+      mirror.addEventListener('click', () => this.editor.mirrorSeam(i));
+      li.append(mirror);
+    }
     if (selection && !selected) {
       // With a seam selected, any other seam can be joined to it by an internal panel.
       const connect = el('button', 'connect', '⇄');

@@ -1,7 +1,8 @@
 // The target pane: the target mesh at its real size (meters), its seams and segments, and picking of
 // surface points (triangle + barycentric coordinates) for the seam tool.
 import {
-  BufferAttribute, BufferGeometry, DoubleSide, Group, Mesh, MeshStandardMaterial, Raycaster, Triangle, Vector2, Vector3,
+  BufferAttribute, BufferGeometry, DoubleSide, Group, Mesh, MeshBasicMaterial, MeshStandardMaterial, PlaneGeometry, Raycaster, Triangle,
+  Vector2, Vector3,
 } from 'three';
 import { Pane3D } from './pane3d.js';
 import { SeamLayer } from './seam-layer.js';
@@ -48,6 +49,11 @@ function ruledSurface(a, b, n) {
   return geometry;
 }
 
+const SYMMETRY_MATERIAL = new MeshBasicMaterial({
+  // The mirror plane: a faint sheet through the target, drawn through it.
+  color: 0x0072b2, transparent: true, opacity: 0.12, side: DoubleSide, depthWrite: false,
+});
+
 const PUSH_BACK = { polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 };
 
 export class TargetPane extends Pane3D {
@@ -82,6 +88,7 @@ export class TargetPane extends Pane3D {
     this.clearSegments();
     this.mesh = new Mesh(geometry, this.material);
     this.connections = null;
+    this.symmetry = null;
     this.seams = new SeamLayer(geometry.boundingSphere.radius * 0.012);
     this.mesh.add(this.seams);
     this.mesh.scale.setScalar(0); // forces setScale to place and frame it
@@ -152,6 +159,33 @@ export class TargetPane extends Pane3D {
       panel.renderOrder = 1;
       panel.raycast = () => {}; // seams are picked on the target, through the translucent panel
       this.connections.add(panel);
+    }
+    this.requestRender();
+  }
+
+  // The mirror plane ({ axis: 0 | 1 | 2, offset } in target units) as a faint sheet a little larger than
+  // the target's box; null hides it.
+  setSymmetryPlane(plane) {
+    if (!this.mesh) return;
+    if (this.symmetry) {
+      this.mesh.remove(this.symmetry);
+      this.symmetry.geometry.dispose();
+      this.symmetry = null;
+    }
+    if (plane) {
+      const box = this.mesh.geometry.boundingBox;
+      const size = box.getSize(new Vector3()).multiplyScalar(1.15);
+      const center = box.getCenter(new Vector3());
+      // PlaneGeometry spans local x (width) and y (height); rotated so its normal is the plane's axis.
+      const [width, height] = [[size.z, size.y], [size.x, size.z], [size.x, size.y]][plane.axis];
+      this.symmetry = new Mesh(new PlaneGeometry(width, height), SYMMETRY_MATERIAL);
+      if (plane.axis === 0) this.symmetry.rotation.y = Math.PI / 2; // the sheet's normal along x
+      if (plane.axis === 1) this.symmetry.rotation.x = -Math.PI / 2; // along y
+      center.setComponent(plane.axis, plane.offset);
+      this.symmetry.position.copy(center);
+      this.symmetry.renderOrder = 2;
+      this.symmetry.raycast = () => {};
+      this.mesh.add(this.symmetry);
     }
     this.requestRender();
   }
