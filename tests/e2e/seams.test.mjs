@@ -191,6 +191,55 @@ test('mirror symmetry: a seam drawn on one side gets a twin; dragging, undo and 
   await page.close();
 });
 
+// A finger tap through the DevTools protocol (touch events, which the page receives as pointer events with
+// pointerType "touch"), a little off the aimed point as fingers are.
+async function touchTap(cdp, p, wobble = 0) {
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: p.x, y: p.y, radiusX: 8, radiusY: 8 }] });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: p.x + wobble, y: p.y + wobble, radiusX: 8, radiusY: 8 }] });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await new Promise((r) => setTimeout(r, 150));
+}
+
+test('touch: tapping points and "Close loop" draws a seam; a finger drags a control point', async () => {
+  const page = await openPage(env.context, env.server.url);
+  const cdp = await page.context().newCDPSession(page);
+  await cdp.send('Emulation.setTouchEmulationEnabled', { enabled: true, maxTouchPoints: 5 });
+  await openSphere(page);
+  const kinds = [];
+  await page.exposeFunction('recordPointer', (kind) => kinds.push(kind));
+  await page.evaluate(() => window.billow.app.panes.target.element.addEventListener('pointerdown', (e) => window.recordPointer(e.pointerType)));
+  await page.click('#seam-panel button[data-tool="draw"]');
+  assert.equal(await page.isHidden('#seam-panel .drawbar'), true, 'no draw buttons before the first point');
+  const [a, b, c] = await surfaceScreenPoints(page, [[0.5, 0.6, 1], [-0.3, 0.5, 1], [0.1, -0.3, 1]]);
+  await touchTap(cdp, a, 5); // a finger wobbles a few pixels (7 px, more than a mouse may): still a tap
+  await touchTap(cdp, b, 5);
+  await page.waitForFunction(() => !document.querySelector('#seam-panel .drawbar').hidden);
+  assert.equal(await page.isDisabled('#seam-panel .drawbar button:has-text("Close loop")'), true, 'two points cannot close a loop');
+  await touchTap(cdp, c, 5);
+  await page.waitForFunction(() => !document.querySelector('#seam-panel .drawbar button:nth-child(2)').disabled);
+  assert.ok(kinds.length >= 3 && kinds.every((k) => k === 'touch'), `pointer types ${kinds}`);
+  await page.tap('#seam-panel .drawbar button:has-text("Close loop")').catch(() => page.click('#seam-panel .drawbar button:has-text("Close loop")'));
+  await waitSummary(page, /1 seam, 2 segments/);
+  const seam = await page.evaluate(() => window.billow.app.design.seams[0]);
+  assert.equal(seam.closed, true);
+  assert.equal(seam.points.length, 3);
+  assert.equal(await page.isHidden('#seam-panel .drawbar'), true);
+
+  // Edit with a finger: grab the control point a little off target (touch reaches farther than a mouse).
+  await page.click('#seam-panel button[data-tool="edit"]');
+  const [to] = await surfaceScreenPoints(page, [[-0.5, 0.7, 1]]);
+  const start = { x: b.x + 14, y: b.y + 6 };
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: start.x, y: start.y }] });
+  for (let k = 1; k <= 6; k++)
+    await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: start.x + ((to.x - start.x) * k) / 6, y: start.y + ((to.y - start.y) * k) / 6 }] });
+  await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
+  await page.waitForFunction((before) => JSON.stringify(window.billow.app.design.seams[0].points[1]) !== before, JSON.stringify(seam.points[1]));
+  await waitSummary(page, /1 seam, 2 segments/);
+  await screenshot(page, 'seams-touch');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 test('Escape cancels a seam being drawn and Backspace removes its last point', async () => {
   const page = await openPage(env.context, env.server.url);
   await openSphere(page);

@@ -164,9 +164,9 @@ export class SeamEditor {
   }
 
   // The control point under the pointer: { seam, index } or null.
-  controlPointAt(event) {
+  controlPointAt(event, radius = PICK_PX) {
     let best = null;
-    let bestDistance = PICK_PX;
+    let bestDistance = radius;
     this.seamTraces().forEach((trace, seam) => {
       chunks(trace?.controls ?? []).forEach((c, index) => {
         const d = this.pane.screenDistance(event, c);

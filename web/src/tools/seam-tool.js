@@ -4,8 +4,13 @@
 // Esc cancels. Near an existing seam or control point the cursor snaps (shown in orange before the click).
 // Edit: drag a control point (the seam follows live), double-click a seam to insert a point, Delete
 // removes the selected point.
-const CLICK_SLOP_PX = 4;
-const SNAP_PX = 12;
+// Touch and pen input: a fingertip covers more pixels than a mouse pointer, so taps may wander more and
+// reach farther to snap or grab; the seam panel shows Finish / Close / Cancel buttons while drawing, since
+// there is no Enter key or reliable double-tap.
+const CLICK_SLOP_PX = { mouse: 4, pen: 6, touch: 12 };
+const SNAP_PX = { mouse: 12, pen: 16, touch: 28 };
+export const PICK_PX = { mouse: 10, pen: 14, touch: 26 };
+const reach = (table, event) => table[event.pointerType] ?? table.mouse;
 
 export class SeamTool {
   // pane: TargetPane; app: the App (seam commands and traces)
@@ -46,10 +51,10 @@ export class SeamTool {
     // The first point of the seam being drawn closes it.
     if (this.drawing?.points.length >= 2) {
       const d = this.pane.screenDistance(event, this.drawing.positions[0]);
-      if (d < SNAP_PX) return { point: this.drawing.points[0], position: this.drawing.positions[0], snapped: true, closes: true };
+      if (d < reach(SNAP_PX, event)) return { point: this.drawing.points[0], position: this.drawing.positions[0], snapped: true, closes: true };
     }
     let best = null;
-    let bestDistance = SNAP_PX;
+    let bestDistance = reach(SNAP_PX, event);
     // A snapped point remembers its host seam ("on"), so it follows when that seam is edited.
     const consider = (point, position, seam, bias = 0) => {
       const d = this.pane.screenDistance(event, position) - bias;
@@ -75,7 +80,7 @@ export class SeamTool {
     if (event.button !== 0 || this.mode === 'orbit') return;
     this.down = { x: event.clientX, y: event.clientY };
     if (this.mode === 'edit') {
-      const grabbed = this.app.controlPointAt(event);
+      const grabbed = this.app.controlPointAt(event, reach(PICK_PX, event));
       if (grabbed) {
         this.drag = grabbed;
         this.pane.controls.enabled = false;
@@ -109,7 +114,7 @@ export class SeamTool {
     if (!this.down || this.mode !== 'draw') return;
     const moved = Math.hypot(event.clientX - this.down.x, event.clientY - this.down.y);
     this.down = null;
-    if (moved > CLICK_SLOP_PX) return; // that was an orbit drag
+    if (moved > reach(CLICK_SLOP_PX, event)) return; // that was an orbit drag
     const hit = this.pick(event);
     if (!hit) return;
     if (hit.closes) {
@@ -145,6 +150,15 @@ export class SeamTool {
   cancel() {
     this.drawing = null;
     this.app.previewSeam(null);
+  }
+
+  // For the Finish / Close loop buttons: what the seam being drawn allows.
+  get canFinish() {
+    return (this.drawing?.points.length ?? 0) >= 2;
+  }
+
+  get canClose() {
+    return (this.drawing?.points.length ?? 0) >= 3;
   }
 
   // Keys for the tool. Returns true when handled.

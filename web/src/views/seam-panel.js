@@ -35,11 +35,27 @@ export class SeamPanel {
       this.symmetry.append(new Option(label, value));
     this.symmetry.addEventListener('change', () => editor.setSymmetry(this.symmetry.value || null));
     this.toolbar.append(this.symmetry);
+    // While a seam is being drawn: buttons for what Enter, a click on the first point and Esc do (touch).
+    this.drawbar = el('div', 'drawbar');
+    const action = (label, title, fn) => {
+      const b = el('button', 'tool', label);
+      b.type = 'button';
+      b.title = title;
+      b.addEventListener('click', () => {
+        fn();
+        this.render();
+      });
+      this.drawbar.append(b);
+      return b;
+    };
+    this.finishButton = action('Finish', 'End the seam here (Enter)', () => tool.finish(false));
+    this.closeButton = action('Close loop', 'Join the last point to the first (click the first point)', () => tool.finish(true));
+    action('Cancel', 'Drop the seam being drawn (Esc)', () => tool.cancel());
     this.summary = el('div', 'summary');
     this.list = el('ol', 'seam-list');
     this.connections = el('ul', 'connection-list');
     this.problems = el('ul', 'problems');
-    container.append(this.toolbar, this.summary, this.list, this.connections, this.problems);
+    container.append(this.toolbar, this.drawbar, this.summary, this.list, this.connections, this.problems);
     editor.onChange(() => this.render());
     this.render();
   }
@@ -48,6 +64,9 @@ export class SeamPanel {
     for (const b of this.toolButtons) b.setAttribute('aria-pressed', String(b.dataset.tool === this.tool.mode));
     const { design, segmentation, selection } = this.editor;
     this.symmetry.value = design.symmetry?.axis ?? '';
+    this.drawbar.hidden = !this.tool.drawing;
+    this.finishButton.disabled = !this.tool.canFinish;
+    this.closeButton.disabled = !this.tool.canClose;
     const count = segmentation?.segments?.length;
     this.summary.textContent = design.seams.length
       ? `${design.seams.length} seam${design.seams.length === 1 ? '' : 's'}${count ? `, ${count} segment${count === 1 ? '' : 's'}` : ''}`
