@@ -21,3 +21,19 @@ export async function surfaceScreenPoints(page, dirs) {
     });
   }, dirs);
 }
+
+// The screen point of seam `seam`'s traced curve halfway (by sample count) between control points k and k+1.
+export async function seamMidScreenPoint(page, seam, k) {
+  return page.evaluate(([s, i]) => {
+    const app = window.billow.app;
+    const pane = app.panes.target;
+    const trace = app.seams.seamTraces()[s];
+    const from = trace.controlSamples[i];
+    const to = trace.controlSamples[i + 1] ?? trace.faces.length;
+    const m = Math.round((from + to) / 2);
+    const local = new pane.mesh.position.constructor(trace.curve[3 * m], trace.curve[3 * m + 1], trace.curve[3 * m + 2]);
+    const p = pane.mesh.localToWorld(local).project(pane.camera);
+    const rect = pane.element.getBoundingClientRect();
+    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
+  }, [seam, k]);
+}

@@ -6,7 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { serve, launch, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
-import { surfaceScreenPoints } from './seams-helpers.mjs';
+import { surfaceScreenPoints, seamMidScreenPoint } from './seams-helpers.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -38,10 +38,9 @@ async function drawTwoSeams(page) {
   assert.equal(await page.evaluate(() => window.billow.app.panes.target.seams.cursor.material.color.getHexString()), 'd55e00');
   await clickAt(page, a);
   await waitSummary(page, /1 seam, 2 segments/);
-  // Across the loop: from the middle of edge a-b to the middle of edge b-c... near the curve, so it snaps.
-  const mid = (p, q) => ({ x: (p.x + q.x) / 2, y: (p.y + q.y) / 2 });
-  await clickAt(page, mid(a, b));
-  await clickAt(page, mid(b, c));
+  // Across the loop: from the middle of the curve a-b to the middle of b-c, so it snaps at both ends.
+  await clickAt(page, await seamMidScreenPoint(page, 0, 0));
+  await clickAt(page, await seamMidScreenPoint(page, 0, 1));
   await page.keyboard.press('Enter');
   await waitSummary(page, /2 seams, 3 segments/);
 }

@@ -7,6 +7,7 @@
 #include <random>
 
 #include "seams/geodesic.hpp"
+#include "seams/seam_curve.hpp"
 #include "test_support.hpp"
 
 using namespace billow;
@@ -145,4 +146,52 @@ TEST(Geodesic, LoopsAroundThinLimbsTerminateFast) {
     std::printf("[timing] ring loops on %s: worst %.2f ms\n", name, worst);
     EXPECT_LT(worst, 200.0);
   }
+}
+
+// A smoothed seam (cubic Hermite through the control points, DESIGN.md) through six points on a circle of
+// latitude follows that circle; the plain seam through the same points is the geodesic hexagon, which cuts
+// the corners. Both are well formed, pass through every control point, and close exactly.
+TEST(SeamCurve, SmoothSeamFollowsTheCircleThroughItsPointsWhereGeodesicsCutCorners) {
+  const TriMesh m = test::loadShared("sphere.obj");
+  const MeshTopology topo = buildTopology(m);
+  const SurfaceProjector projector(m);
+  const GeodesicSolver solver(m, topo);
+  const double latitude = 0.5;  // the circle z = sin(0.5) on the unit sphere, radius cos(0.5)
+  SeamSpec spec;
+  spec.closed = true;
+  for (int k = 0; k < 6; ++k) {
+    const double a = 2 * M_PI * k / 6 + 0.1;
+    spec.controls.push_back(projector.project(
+        Eigen::Vector3d(std::cos(latitude) * std::cos(a), std::cos(latitude) * std::sin(a), std::sin(latitude))));
+  }
+  const double circle = 2 * M_PI * std::cos(latitude);
+  // Worst distance of the curve's points from the cone of the circle (angle from the equator plane).
+  auto worstLatitudeError = [&](const SeamCurve& c) {
+    double worst = 0;
+    for (const PathPoint& p : c.points) worst = std::max(worst, std::abs(std::asin(p.position.normalized().z()) - latitude));
+    return worst;
+  };
+  spec.smooth = false;
+  const SeamCurve plain = buildSeamCurve(solver, projector, spec);
+  spec.smooth = true;
+  const SeamCurve smooth = buildSeamCurve(solver, projector, spec);
+  for (const SeamCurve* c : {&plain, &smooth}) {
+    ASSERT_EQ(c->faces.size() + 1, c->points.size());
+    for (size_t i = 0; i < c->faces.size(); ++i) {
+      SurfacePoint s;
+      EXPECT_TRUE(expressInFace(m, topo, c->points[i].point, c->faces[i], s));
+      EXPECT_TRUE(expressInFace(m, topo, c->points[i + 1].point, c->faces[i], s));
+    }
+    ASSERT_EQ(c->controlIndices.size(), 6u);
+    for (int k = 0; k < 6; ++k)
+      EXPECT_LT((c->points[c->controlIndices[k]].position - position(m, spec.controls[k])).norm(), 1e-12);
+    EXPECT_EQ((c->points.front().position - c->points.back().position).norm(), 0.0);
+  }
+  const double plainError = worstLatitudeError(plain), smoothError = worstLatitudeError(smooth);
+  std::printf("[seams] latitude circle: plain length %.4f, smooth %.4f, circle %.4f; worst latitude error %.4f vs %.4f\n",
+              plain.length, smooth.length, circle, plainError, smoothError);
+  EXPECT_LT(smoothError, 0.5 * plainError) << "the spline keeps to the circle";
+  EXPECT_LT(smoothError, 0.03);
+  EXPECT_NEAR(smooth.length, circle, 0.02 * circle);
+  EXPECT_LT(plain.length, smooth.length) << "the geodesic hexagon is shorter than the circle";
 }

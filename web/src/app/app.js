@@ -245,7 +245,7 @@ export class App {
   // edit supersedes this one (commitDesign cancels it).
   async makePattern() {
     const ticket = ++this.patternTicket;
-    const seams = this.design.seams.map(({ points, closed, weight }) => ({ points, closed, weight }));
+    const seams = this.design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
     this.patterns.running?.cancel();
     this.optimizing?.cancel();
     const call = this.client.call(

@@ -4,9 +4,18 @@ const replaceAt = (list, i, value) => list.map((x, k) => (k === i ? value : x));
 
 export const DEFAULT_SEAM_WEIGHT = 1;
 
-export function addSeam(design, { points, closed }) {
+// New seams are smooth: a cubic Hermite spline through the control points, carried onto the surface
+// (seams/seam_curve.hpp); a seam that is not smooth runs along the shortest paths between its points.
+export function addSeam(design, { points, closed, smooth = true }) {
   const name = `Seam ${design.seams.length + 1}`;
-  return { ...design, seams: [...design.seams, { name, closed: Boolean(closed), weight: DEFAULT_SEAM_WEIGHT, points }] };
+  const seam = { name, closed: Boolean(closed), smooth: Boolean(smooth), weight: DEFAULT_SEAM_WEIGHT, points };
+  return { ...design, seams: [...design.seams, seam] };
+}
+
+export function setSeamSmooth(design, seam, smooth) {
+  const s = design.seams[seam];
+  if (!s) return design;
+  return { ...design, seams: replaceAt(design.seams, seam, { ...s, smooth: Boolean(smooth) }) };
 }
 
 // Points attached to another seam ({ ..., on: seam }) lose the attachment when that seam goes, and

@@ -5,7 +5,7 @@ import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
 import { symmetryPlane, mirrorPoint, addMirroredTwin } from './symmetry.js';
 
-const keyOf = (seam) => JSON.stringify([seam.points, seam.closed]);
+const keyOf = (seam) => JSON.stringify([seam.points, seam.closed, Boolean(seam.smooth)]);
 const PICK_PX = 10;
 
 export class SeamEditor {
@@ -38,8 +38,8 @@ export class SeamEditor {
     return this.design.seams.map((s) => this.cache.get(keyOf(s)) ?? null);
   }
 
-  async trace(points, closed) {
-    return this.app.client.request(Op.traceSeam, { points, closed });
+  async trace(points, closed, smooth) {
+    return this.app.client.request(Op.traceSeam, { points, closed, smooth: Boolean(smooth) });
   }
 
   // Traces every seam that is not cached yet, then redraws and re-segments.
@@ -49,7 +49,7 @@ export class SeamEditor {
       const key = keyOf(s);
       if (this.cache.has(key)) return null;
       if (!this.pending.has(key))
-        this.pending.set(key, this.trace(s.points, s.closed).then(
+        this.pending.set(key, this.trace(s.points, s.closed, s.smooth).then(
           (t) => this.cache.set(key, t),
           (error) => this.traceFailed(s, error),
         ).finally(() => this.pending.delete(key)));
@@ -111,7 +111,7 @@ export class SeamEditor {
       return;
     }
     try {
-      const t = await this.trace(points, false);
+      const t = await this.trace(points, false, true); // as the new seam will be: smooth
       if (ticket !== this.previewTicket) return;
       this.preview = t.curve;
       this.draw();
@@ -257,6 +257,14 @@ export class SeamEditor {
     this.refresh();
   }
 
+  setSmooth(seam, smooth) {
+    let next = cmd.setSeamSmooth(this.design, seam, smooth);
+    const twin = this.twinOf(next, seam);
+    if (twin !== null) next = cmd.setSeamSmooth(next, twin, smooth);
+    this.app.commitDesign(next);
+    this.refresh();
+  }
+
   setWeight(seam, weight) {
     let next = cmd.setSeamWeight(this.design, seam, weight);
     const twin = this.twinOf(next, seam);
@@ -285,7 +293,7 @@ export class SeamEditor {
       for (const fn of this.listeners) fn();
       return;
     }
-    const seams = this.design.seams.map(({ points, closed, weight }) => ({ points, closed, weight }));
+    const seams = this.design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
     try {
       const result = await this.app.client.request(Op.segment, { seams });
       if (ticket !== this.segmentTicket) return;

@@ -117,7 +117,15 @@ export class SeamPanel {
     remove.title = 'Delete this seam';
     remove.setAttribute('aria-label', `Delete ${seam.name ?? `seam ${i + 1}`}`);
     remove.addEventListener('click', () => this.editor.deleteSeam(i));
-    li.append(swatch, name, weight, remove);
+    const smooth = el('button', 'smooth', seam.smooth ? '∿' : '⌇');
+    smooth.type = 'button';
+    smooth.setAttribute('aria-pressed', String(Boolean(seam.smooth)));
+    smooth.title = seam.smooth
+      ? 'Smooth: a spline through the points. Click for shortest paths between the points (straight gores)'
+      : 'Shortest paths between the points. Click for a smooth spline through them';
+    smooth.setAttribute('aria-label', `Smooth ${seam.name ?? `seam ${i + 1}`}`);
+    smooth.addEventListener('click', () => this.editor.setSmooth(i, !seam.smooth));
+    li.append(swatch, name, weight, remove, smooth);
     if (this.editor.design.symmetry && seam.mirror === undefined) {
       const mirror = el('button', 'mirror', '⇋');
       mirror.type = 'button';
