@@ -55,7 +55,7 @@ test('a second tab does not autosave over the first, and takes over when the fir
   const second = await openPage(env.context, env.server.url);
   assert.equal(await isPrimary(second), false, 'the second tab does not autosave');
   await secondaryWarning(second).waitFor();
-  assert.match(await secondaryWarning(second).textContent(), /does not autosave.*Save design/);
+  assert.match(await secondaryWarning(second).textContent(), /does not autosave over it.*Save design/);
   assert.equal(await second.inputValue('#height-input'), '0.8', 'it opened the autosaved design');
   assert.equal(await secondaryWarning(first).count(), 0, 'the first tab is not warned');
   assert.equal(await isPrimary(first), true);
@@ -71,6 +71,9 @@ test('a second tab does not autosave over the first, and takes over when the fir
   assert.equal(await first.inputValue('#height-input'), '0.8', 'the first tab still shows its own height');
   await waitPrimary(second);
   await primaryNotice(second).waitFor();
+  // The promoted tab saves at once, not at its next edit.
+  for (let k = 0; k < 30 && (await autosavedHeight(second)) !== 1.2; k++) await second.waitForTimeout(100);
+  assert.equal(await autosavedHeight(second), 1.2, 'the promoted tab saved its design without another edit');
   assert.equal(await isPrimary(first), false);
   await secondaryWarning(first).waitFor();
 
@@ -83,6 +86,52 @@ test('a second tab does not autosave over the first, and takes over when the fir
   assert.equal(await autosavedHeight(first), 1.1, 'the tab left open autosaves again');
   assertNoErrors(first, second);
   await first.close();
+});
+
+test('a second tab keeps its own work across its reloads, a shared link included', async () => {
+  const first = await fresh();
+  await setHeight(first, 0.9);
+  const url = await first.evaluate(() => window.billow.app.shareLink());
+  await setHeight(first, 0.7);
+  await first.waitForTimeout(300);
+
+  const second = await openPage(env.context, url);
+  assert.equal(await isPrimary(second), false);
+  assert.equal(await second.inputValue('#height-input'), '0.9', 'the shared design opened');
+  await second.reload();
+  await ready(second);
+  assert.equal(await second.inputValue('#height-input'), '0.9', 'a reload keeps the shared design');
+  await setHeight(second, 0.95);
+  await second.waitForTimeout(300);
+  await second.reload();
+  await ready(second);
+  assert.equal(await second.inputValue('#height-input'), '0.95', 'and the edits made in this tab');
+  assert.equal(await autosavedHeight(second), 0.7, 'the first tab\'s autosave is untouched');
+  assert.equal(await first.inputValue('#height-input'), '0.7');
+  assertNoErrors(first, second);
+  await second.close();
+  await first.close();
+});
+
+test('an example picked while offline gets a message and the design stays', async () => {
+  const page = await fresh();
+  await setHeight(page, 0.85);
+  const context = page.context();
+  await context.setOffline(true);
+  try {
+    await page.selectOption('#example-select', 'penguin');
+    const message = page.locator('.message.error', { hasText: 'could not be loaded' });
+    await message.waitFor();
+    assert.match(await message.textContent(), /Penguin.*check the connection.*unchanged/);
+  } finally {
+    await context.setOffline(false);
+  }
+  assert.equal(await page.inputValue('#height-input'), '0.85', 'the design is unchanged');
+  assert.equal(await page.inputValue('#example-select'), 'spot', 'the menu shows the open example again');
+  // The failed download itself is logged by the browser; nothing else may be.
+  const unexpected = page.errors.filter((e) => !/penguin\.obj|ERR_INTERNET_DISCONNECTED|Failed to load resource/.test(e));
+  assert.deepEqual(unexpected, []);
+  await page.close();
 });
 
 test('a page closed without unload handling loses nothing: the next page restores the design', async () => {

@@ -3,7 +3,7 @@
 import { Op } from '../worker/protocol.js';
 import { EXAMPLES, findExample } from './examples.js';
 import { newDesign, parseDesign, clampHeight } from './design.js';
-import { autosave } from './autosave.js';
+import { autosave, tabRecordKey } from './autosave.js';
 import { History } from './history.js';
 import { encodeDesign, decodeDesign } from './share.js';
 import { PatternSession, patternForDisplay } from './pattern-session.js';
@@ -23,6 +23,7 @@ export const PATTERN_EXAMPLES = [
 ];
 
 const AUTOSAVE_KEY = 'current';
+const TAB_RECORD_DAYS = 30; // per-tab records older than this are deleted
 
 export class App {
   constructor({ client, panes, messages, elements, baseUrl }) {
@@ -55,8 +56,12 @@ export class App {
   async start() {
     this.populateExamples();
     this.populateMaterials();
+    this.tabKey = tabRecordKey();
+    autosave.pruneTabs(this.tabKey, TAB_RECORD_DAYS * 86400e3).catch(() => {});
     if (await this.openFromLink(location.hash)) return;
-    const saved = await autosave.load(AUTOSAVE_KEY).catch(() => null);
+    // A reloaded tab reopens its own design; a new tab the one the autosaving tab saved.
+    const own = this.tabKey ? await autosave.load(this.tabKey).catch(() => null) : null;
+    const saved = own ?? (await autosave.load(AUTOSAVE_KEY).catch(() => null));
     if (saved?.design) {
       try {
         const { design, warnings } = parseDesign(saved.design);
@@ -138,9 +143,19 @@ export class App {
     const example = findExample(id);
     if (!example) return this.messages.show('error', `There is no example called "${id}".`);
     this.el.exampleSelect.value = id;
-    const response = await fetch(new URL(`examples/${example.file}`, this.baseUrl));
-    if (!response.ok) return this.messages.show('error', `The example "${example.name}" could not be loaded.`);
-    const bytes = await response.arrayBuffer();
+    let bytes;
+    try {
+      const response = await fetch(new URL(`examples/${example.file}`, this.baseUrl));
+      if (!response.ok) throw new Error(`HTTP ${response.status}`);
+      bytes = await response.arrayBuffer();
+    } catch {
+      // Offline before the examples were cached, or the site is missing the file.
+      this.el.exampleSelect.value = this.design.target.example ?? '';
+      return this.messages.show(
+        'error',
+        `The example "${example.name}" could not be loaded: check the connection and try again.${this.target ? ' Your current design is unchanged.' : ''}`,
+      );
+    }
     return this.loadTargetBytes(example.file, bytes, design ?? newDesign(id), { quiet: true });
   }
 
@@ -458,11 +473,19 @@ export class App {
     return (this.design.target.example ?? this.target?.fileName ?? 'design').replace(/\.[^.]+$/, '');
   }
 
+  // This tab now autosaves (the tab that did was closed): the design is saved at once, not only after the
+  // next edit.
+  becamePrimary() {
+    this.save();
+  }
+
+  // Every tab saves its own record; the tab that autosaves (tab-guard.js) also the shared one.
   save() {
     if (!this.target) return;
-    if (this.tabGuard && !this.tabGuard.isPrimary) return; // another tab autosaves (tab-guard.js)
     const mesh = this.design.target.example ? undefined : { positions: this.target.positions, indices: this.target.indices };
-    autosave.save(AUTOSAVE_KEY, { design: this.design, mesh }).catch((error) =>
+    const record = { design: this.design, mesh };
+    const keys = [this.tabKey, this.tabGuard && !this.tabGuard.isPrimary ? null : AUTOSAVE_KEY].filter(Boolean);
+    Promise.all(keys.map((key) => autosave.save(key, record))).catch((error) =>
       this.messages.show('warning', `Autosave failed (${error?.message || error}); save your design to a file.`),
     );
   }

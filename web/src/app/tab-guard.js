@@ -6,7 +6,7 @@ const DEFAULT_NAME = 'billow-autosave';
 
 // What a secondary tab tells the designer.
 export function secondaryTabMessage() {
-  return 'Billow is already open in another tab. This tab does not autosave, so the other tab\'s design is safe; use Save design to keep what you do here, or close the other tab.';
+  return 'Billow is already open in another tab. This tab does not autosave over it, so the other tab\'s design is safe; what you do here survives reloading this tab, and Save design keeps it for good.';
 }
 
 export class TabGuard {
