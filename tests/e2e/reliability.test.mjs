@@ -4,7 +4,7 @@
 // on any console error.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, openFreshPage, useBrowser } from './harness.mjs';
+import { openPage, openFreshPage, openDesignFixture, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -184,4 +184,43 @@ test('the app fetches nothing from other sites, the solver worker included', asy
   } finally {
     env.context.off('request', record);
   }
+});
+
+// A shorter browser version of tests/node/soak.test.mjs: edits that each start making and optimizing the
+// panels, cancelled by the next edit. Neither the worker's wasm heap nor the page's JS heap may grow, and
+// the panels finally shown are those of the last edit, never of an older one.
+test('soak: 30 edits each cancelling the panels of the one before leave no memory behind and no stale result', async () => {
+  const page = await fresh();
+  await openDesignFixture(page, 'sphere-equator.billow.json');
+  await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
+  const cdp = await page.context().newCDPSession(page);
+  const memory = async () => {
+    await cdp.send('HeapProfiler.collectGarbage');
+    const { usedSize } = await cdp.send('Runtime.getHeapUsage');
+    const wasm = await page.evaluate(() => window.billow.client.request('memoryStats', {}));
+    return { js: usedSize, ...wasm };
+  };
+  const cycle = async (k) => {
+    const kPa = k % 2 ? '1.2' : '1.1'; // always a change
+    await page.fill('#pressure-input', kPa);
+    await page.press('#pressure-input', 'Enter');
+    // Wait until the worker is at work on these panels, then the next edit cancels it.
+    await page.waitForFunction(() => /^(Making|Optimizing) the panels/.test(document.querySelector('#status').textContent), null, { timeout: 30000 });
+  };
+  for (let k = 0; k < 5; k++) await cycle(k); // warm up: caches, JIT, the allocator's pools
+  const before = await memory();
+  for (let k = 5; k < 35; k++) await cycle(k);
+  // The last edit's panels complete and are shown.
+  await page.fill('#pressure-input', '1.25');
+  await page.press('#pressure-input', 'Enter');
+  await page.waitForFunction(() => window.billow.app.optimized?.revision === window.billow.app.revision && /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
+  assert.equal(await page.evaluate(() => window.billow.app.design.pressure), 1250);
+  const after = await memory();
+  const MB = 1 << 20;
+  console.log(`[soak] wasm heap ${before.heapBytes / MB} -> ${after.heapBytes / MB} MB, probe ${(before.probe / MB).toFixed(2)} -> ${(after.probe / MB).toFixed(2)} MB, JS heap ${(before.js / MB).toFixed(1)} -> ${(after.js / MB).toFixed(1)} MB`);
+  assert.equal(after.heapBytes, before.heapBytes, 'the wasm memory did not grow');
+  assert.ok(after.probe - before.probe <= 2 * MB, 'the wasm allocator\'s top did not rise');
+  assert.ok(after.js - before.js < 8 * MB, 'the page\'s JS heap did not grow');
+  assertNoErrors(page);
+  await page.close();
 });

@@ -246,6 +246,7 @@ export class App {
   // Every change of the design goes through here: history, views, autosave.
   commitDesign(design, { reset = false, mergeKey = null } = {}) {
     // Panels being made for the previous design are stale now.
+    this.revision = (this.revision ?? 0) + 1;
     this.patternTicket += 1;
     this.patterns.running?.cancel();
     this.optimizing?.cancel();
@@ -260,6 +261,7 @@ export class App {
   // edit supersedes this one (commitDesign cancels it).
   async makePattern() {
     const ticket = ++this.patternTicket;
+    const revision = this.revision;
     const seams = this.design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
     this.patterns.running?.cancel();
     this.optimizing?.cancel();
@@ -289,7 +291,7 @@ export class App {
     try {
       const result = await call.promise;
       if (ticket !== this.patternTicket) return;
-      this.optimized = result;
+      this.optimized = { ...result, revision }; // the design revision these panels were made for
       await this.showVersion('optimized');
     } catch (error) {
       if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;

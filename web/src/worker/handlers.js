@@ -101,6 +101,9 @@ export function createHandlers(api) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);
     },
+    *[Op.memoryStats]() {
+      return api.memoryStats();
+    },
     *[Op.materialPresets]() {
       return api.materialPresets();
     },

@@ -39,11 +39,14 @@ export const Op = Object.freeze({
   exportPattern: 'exportPattern',
   // {} -> [{ name, label, thickness, youngs_modulus, density, max_stress }]: the material presets.
   materialPresets: 'materialPresets',
+  // {} -> { heapBytes, probe }: the wasm memory's size and where a fresh 1 MB block lands (the top of the
+  // allocator's used memory: it rises when anything leaks). For soak tests and the curious.
+  memoryStats: 'memoryStats',
 });
 
 // Quick operations that only read the worker's state: they run at once, even between the steps of a
 // long operation, so drawing stays responsive while the panels inflate.
-export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.materialPresets]);
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.materialPresets, Op.memoryStats]);
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);

@@ -30,6 +30,12 @@ export class SolverApi {
   }
 
   // [{ name, label, thickness, youngs_modulus, density, max_stress }] (wasm/src/simulate/materials.cpp)
+  memoryStats() {
+    const probe = this.module._malloc(1 << 20);
+    this.module._free(probe);
+    return { heapBytes: this.module.HEAPU8.length, probe };
+  }
+
   materialPresets() {
     return SolverApi.unwrap(this.module.materialPresets());
   }
