@@ -10,3 +10,4 @@ if [ -f "$ROOT/bench/bench-wasm.mjs" ]; then
   log "wasm (node)"
   node "$ROOT/bench/bench-wasm.mjs" "$@"
 fi
+bash "$ROOT/scripts/build.sh" web >/dev/null && log "site (headless Chromium)" && node "$ROOT/bench/site-bench.mjs"

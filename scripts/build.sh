@@ -25,6 +25,7 @@ build_wasm() {
 build_web() {
   log "building the web app (web/dist)"
   (cd "$ROOT" && npx vite build web --logLevel warn)
+  node "$ROOT/scripts/site-report.mjs" "$ROOT/web/dist"  # bundle sizes, raw and gzipped
 }
 
 case "$what" in

@@ -41,12 +41,16 @@ export async function serve({ base = '/' } = {}) {
   return { url, close: () => new Promise((r) => server.close(r)) };
 }
 
-export async function launch() {
+// A fresh browser profile. Service workers are blocked unless asked for (serviceWorkers: 'allow'): the
+// page's offline cache (web/src/app/offline.js) is tested on its own in site.test.mjs, and would otherwise
+// serve the other tests' pages from its cache and precache the site while they run.
+export async function launch({ serviceWorkers = 'block' } = {}) {
   if (!existsSync(join(DIST, 'index.html'))) throw new Error('web/dist is missing: run npm run build first');
   const profile = await mkdtemp(join(tmpdir(), 'billow-chromium-'));
   return chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
     headless: true,
+    serviceWorkers,
     viewport: { width: 1400, height: 900 },
     args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
       '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader'],

@@ -11,6 +11,7 @@ import { SeamPanel } from './views/seam-panel.js';
 import { Exporter } from './app/exporter.js';
 import { MM_PER_INCH } from './app/fabrication.js';
 import { TabGuard, secondaryTabMessage } from './app/tab-guard.js';
+import { registerServiceWorker, updateReadyMessage } from './app/offline.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -113,6 +114,9 @@ window.addEventListener('keydown', (e) => {
   if (!mod && !e.altKey && tools[key]) {
     seamTool.setMode(tools[key]);
     seamPanel.render();
+  } else if (!mod && !e.altKey && key === 'm') {
+    const axes = ['', 'x', 'y', 'z'];
+    app.seams.setSymmetry(axes[(axes.indexOf(app.design.symmetry?.axis ?? '') + 1) % axes.length] || null);
   } else if (mod && key === 'z' && !e.shiftKey) app.undo();
   else if (mod && ((key === 'z' && e.shiftKey) || key === 'y')) app.redo();
   else if (mod && key === 's') app.saveDesignFile();
@@ -144,11 +148,15 @@ window.addEventListener('drop', (e) => {
 
 // Only one tab autosaves, so two tabs never overwrite each other's design.
 const tabGuard = new TabGuard({
-  onChange: (primary) =>
-    primary ? messages.show('notice', 'This tab autosaves your design again.') : messages.show('warning', secondaryTabMessage()),
+  onChange: (primary) => {
+    if (!primary) return messages.show('warning', secondaryTabMessage());
+    messages.show('notice', 'This tab autosaves your design again.');
+    app.becamePrimary();
+  },
 });
 app.tabGuard = tabGuard;
 
 // For the end-to-end tests and the curious: the app and its solver client.
 window.billow = { app, client, viewport, seamTool, exporter, tabGuard };
 tabGuard.start().then(() => app.start()).then(() => document.body.setAttribute('data-ready', 'true'));
+registerServiceWorker({ onUpdate: () => messages.show('notice', updateReadyMessage()) }); // offline use, once started
