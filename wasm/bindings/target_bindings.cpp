@@ -12,8 +12,12 @@
 //        and fills the cut mesh: cutPositionsPtr() #V*3 f64, cutTrianglesPtr() #F*3 i32, faceSegmentPtr() #F i32
 //   t.buildPattern(seamsJson, optionsJson)
 //     options: { scale (meters per target unit), triangles, pressure [Pa],
-//                material: { name (a preset: foil, pvc, ripstop, tpu), thickness [m], youngs_modulus [Pa] } }
-//     -> { ok, pattern (billow-pattern JSON, "inflated" = the target shape), figures, problems }
+//                material: { name (a preset: foil, pvc, ripstop, tpu), thickness [m], youngs_modulus [Pa] },
+//                connections: [[i, j], ...] or [{ seams: [i, j] }, ...] (internal connections: an internal
+//                panel between seams i and j, indices into seamsJson; a seam's "name" is used in messages) }
+//     -> { ok, pattern (billow-pattern JSON, "inflated" = the target shape; internal panels last, with
+//          "internal": true), figures (internalPanels among them), problems (a connection that cannot be
+//          built is one: code "pattern.connection", severity "error", seam) }
 //   t.startOptimization(seamsJson, optionsJson)  the same, and keeps a PatternOptimizer for:
 //   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, distanceRms, distanceMax,
 //                                                 seamMismatch, objective }
@@ -21,6 +25,7 @@
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
 #include <emscripten/bind.h>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -172,15 +177,41 @@ class TargetSession {
             options.material.youngsModulus <= billow::kMaxYoungsModulus))
         throw billow::Error("pattern.bad-material", "The material's Young's modulus must be between 1 kPa and 10 TPa.");
     }
+    if (o.contains("connections")) options.connections = readConnections(o["connections"]);
     return options;
+  }
+
+  // [[i, j], ...] or [{ "seams": [i, j] }, ...]. Indices the seams do not have are left to the builder, which
+  // reports them as problems.
+  static std::vector<billow::InternalConnection> readConnections(const json& list) {
+    const auto bad = [] {
+      return billow::Error("pattern.bad-options",
+                           "The internal connections must be a list of seam pairs: [[i, j], ...] or "
+                           "[{\"seams\": [i, j]}, ...].");
+    };
+    if (!list.is_array()) throw bad();
+    std::vector<billow::InternalConnection> out;
+    for (const json& c : list) {
+      const json& pair = c.is_object() && c.contains("seams") ? c["seams"] : c;
+      if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() || !pair[1].is_number_integer())
+        throw bad();
+      const auto index = [](const json& j) {
+        return static_cast<int>(std::clamp<long long>(j.get<long long>(), -1'000'000'000, 1'000'000'000));
+      };
+      out.push_back({index(pair[0]), index(pair[1])});
+    }
+    return out;
   }
 
   billow::BuiltPattern makePattern(const std::string& seamsJson, const std::string& optionsJson) {
     requireTarget();
     double scale = 0;
-    const billow::PatternBuildOptions options = readBuildOptions(optionsJson, scale);
+    billow::PatternBuildOptions options = readBuildOptions(optionsJson, scale);
     const json seams = parse(seamsJson);
     if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
+    for (const auto& s : seams)
+      options.seamNames.push_back(
+          s.is_object() && s.contains("name") && s["name"].is_string() ? s["name"].get<std::string>() : std::string());
     useScale(scale);
     std::vector<billow::SeamCurve> curves;
     for (const auto& s : seams)
@@ -193,13 +224,18 @@ class TargetSession {
   static json patternJson(const billow::BuiltPattern& built) {
     json problems = json::array();
     for (const auto& p : built.problems)
-      problems.push_back({{"code", p.code}, {"severity", p.severity}, {"message", p.message}, {"segment", p.segment}});
+      problems.push_back({{"code", p.code},
+                          {"severity", p.severity},
+                          {"message", p.message},
+                          {"segment", p.segment},
+                          {"seam", p.seam}});
     const auto& f = built.figures;
     return json({{"ok", built.ok()},
                  {"pattern", json::parse(billow::writePatternJson(built.pattern))},
                  {"problems", problems},
                  {"figures",
                   {{"panels", f.panels},
+                   {"internalPanels", f.internalPanels},
                    {"triangles", f.triangles},
                    {"edgeLength", f.edgeLength},
                    {"maxSeamLengthMismatch", f.maxSeamLengthMismatch},

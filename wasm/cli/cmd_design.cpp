@@ -1,5 +1,6 @@
 // billow design DESIGN.json --out-dir DIR [--resolution N] [--no-optimize] [--quiet]: the design's sewn
-// pattern (DIR/pattern.json, with the target shape as "inflated" start), its inflated shape from the target
+// pattern (DIR/pattern.json, with the target shape as "inflated" start; an internal panel per internal
+// connection), its inflated shape from the target
 // (DIR/inflated.obj) and a report (DIR/report.json: distance to the target, seam length mismatch, solver
 // figures, timings). Unless --no-optimize, the panels are optimized first (optimize/pattern_optimizer.hpp)
 // and report.json gets the per-iteration error and time.
@@ -40,16 +41,23 @@ struct Distance {
   double rms = 0, max = 0;  // relative to the target's bounding-box diagonal
 };
 
-// Closest-point distance of every simulation vertex to the target surface.
-Distance distanceToTarget(const DesignScene& scene, const Vertices& x) {
+// Closest-point distance of every simulation vertex of the outer surface to the target surface (the inside
+// of internal panels is not meant to lie on it).
+Distance distanceToTarget(const DesignScene& scene, const SewnMesh& mesh, const Vertices& x) {
   const double diag = (scene.target.V.colwise().maxCoeff() - scene.target.V.colwise().minCoeff()).norm();
+  std::vector<char> outer(x.rows(), 0);
+  const Triangles F = outerTriangles(mesh);
+  for (int t = 0; t < F.rows(); ++t)
+    for (int k = 0; k < 3; ++k) outer[F(t, k)] = 1;
   Distance d;
+  int n = 0;
   for (int v = 0; v < x.rows(); ++v) {
+    if (!outer[v]) continue;
     double dist = 0;
     scene.projector->project(x.row(v).transpose(), &dist);
-    d.rms += dist * dist, d.max = std::max(d.max, dist);
+    d.rms += dist * dist, d.max = std::max(d.max, dist), ++n;
   }
-  d.rms = x.rows() ? std::sqrt(d.rms / x.rows()) / diag : 0;
+  d.rms = n ? std::sqrt(d.rms / n) / diag : 0;
   d.max /= diag;
   return d;
 }
@@ -73,7 +81,8 @@ int designCommand(const std::vector<std::string>& argv) {
     std::fprintf(args.has("--help") ? stdout : stderr,
                  "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize] [--quiet]\n\n"
                  "Makes the sewn pattern of a design (its segments flattened into panels of about TRIANGLES\n"
-                 "triangles in all, default 3000), inflates it from the target shape and writes\n"
+                 "triangles in all, default 3000, and an internal panel for each internal connection), inflates it "
+                 "from the target shape and writes\n"
                  "DIR/pattern.json, DIR/pattern.svg (the cut file), DIR/inflated.obj and DIR/report.json.\n"
                  "The panels are optimized so that the inflated shape comes close to the target, unless\n"
                  "--no-optimize.\n"
@@ -97,17 +106,21 @@ int designCommand(const std::vector<std::string>& argv) {
   }
   options.material = design.material;
   options.pressure = design.pressure;
+  useDesignConnections(design, options);
   BuiltPattern bp = buildPattern(scene->target, scene->segmentation, options);
   printProblems(bp.problems);
   if (!bp.ok()) {
-    std::fprintf(stderr, "billow design: some segments could not be made into panels (see the errors above)\n");
+    std::fprintf(stderr,
+                 "billow design: some segments or internal connections could not be made into panels (see the errors "
+                 "above)\n");
     return 1;
   }
   if (!quiet)
     std::fprintf(stderr,
-                 "pattern: %d panels, %d triangles, %d stitches, h %.4g m, seam length mismatch %.2f %% (%.0f ms)\n",
-                 bp.figures.panels, bp.figures.triangles, bp.figures.stitches, bp.figures.edgeLength,
-                 100 * bp.figures.maxSeamLengthMismatch, bp.figures.totalMs);
+                 "pattern: %d panels (%d internal), %d triangles, %d stitches, h %.4g m, seam length mismatch %.2f %% "
+                 "(%.0f ms)\n",
+                 bp.figures.panels, bp.figures.internalPanels, bp.figures.triangles, bp.figures.stitches,
+                 bp.figures.edgeLength, 100 * bp.figures.maxSeamLengthMismatch, bp.figures.totalMs);
   using nlohmann::json;
   json history = json::array();
   std::string optimizeState = "skipped";
@@ -174,7 +187,7 @@ int designCommand(const std::vector<std::string>& argv) {
                    solver.residual(), solver.volume());
   const InflateResult r = solver.result();
   writeTextFile(dir + "/inflated.obj", objText(mesh, r.positions));
-  const Distance d = distanceToTarget(*scene, r.positions);
+  const Distance d = distanceToTarget(*scene, mesh, r.positions);
 
   const json report = {
       {"format", "billow-design-report"},
@@ -182,6 +195,7 @@ int designCommand(const std::vector<std::string>& argv) {
       {"optimized", optimizePanels && optimizeState != "failed"},
       {"optimize", {{"state", optimizeState}, {"ms", optimizeMs}, {"history", history}}},
       {"panels", bp.figures.panels},
+      {"internal_panels", bp.figures.internalPanels},
       {"triangles", bp.figures.triangles},
       {"edge_length", bp.figures.edgeLength},
       {"distance_to_target", {{"rms", d.rms}, {"max", d.max}, {"relative_to", "bounding-box diagonal"}}},

@@ -45,7 +45,7 @@ nlohmann::json resultJson(const Pattern& p, const SewnMesh& mesh, const InflateR
       const int s = mesh.simVertex(int(i), v);
       inflated.push_back({r.positions(s, 0), r.positions(s, 1), r.positions(s, 2)});
     }
-    panels.push_back({{"name", p.panels[i].name}, {"inflated", inflated}});
+    panels.push_back({{"name", p.panels[i].name}, {"internal", p.panels[i].internal}, {"inflated", inflated}});
   }
   json compression = json::array(), regime = json::array(), stress = json::array();
   for (int f = 0; f < mesh.numTriangles(); ++f) {

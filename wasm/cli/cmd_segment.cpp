@@ -1,5 +1,6 @@
 // billow segment DESIGN.json --out SEGMENTS.json: the design's target cut into segments along its seams,
-// with each segment's area, topology and boundary as seam pieces, and the problems in the designer's words.
+// with each segment's area, topology and boundary as seam pieces, the internal connections, and the problems
+// in the designer's words.
 // Exit code 0 when every segment can be made into a panel, 1 when not (the file is still written).
 #include <unistd.h>
 
@@ -60,6 +61,13 @@ nlohmann::json segmentsJson(const DesignScene& scene) {
   }
   for (const SeamJunction& j : seg.junctions)
     junctions.push_back({{"vertex", j.vertex}, {"position", vec3(j.position)}, {"segments", j.segments}});
+  json connections = json::array();  // internal connections: each becomes an internal panel (billow design)
+  for (const DesignConnection& c : scene.design.connections) {
+    json names = json::array();
+    for (int s : c.seams)
+      names.push_back(s >= 0 && s < static_cast<int>(scene.design.seams.size()) ? scene.design.seams[s].name : "");
+    connections.push_back({{"seams", c.seams}, {"names", names}});
+  }
   for (const SegmentationProblem& p : seg.problems)
     problems.push_back({{"code", p.code},
                         {"severity", p.severity},
@@ -70,7 +78,7 @@ nlohmann::json segmentsJson(const DesignScene& scene) {
   return {{"format", "billow-segments"},    {"version", 1},         {"units", "m"},
           {"scale", scene.scale},           {"vertices", vertices}, {"triangles", triangles},
           {"faceSegment", seg.faceSegment}, {"segments", segments}, {"junctions", junctions},
-          {"problems", problems},           {"ok", seg.ok()}};
+          {"connections", connections},     {"problems", problems}, {"ok", seg.ok()}};
 }
 
 }  // namespace
@@ -103,7 +111,8 @@ int segmentCommand(const std::vector<std::string>& argv) {
     std::fprintf(args.has("--help") ? stdout : stderr,
                  "usage: billow segment DESIGN.json --out SEGMENTS.json [--quiet]\n\n"
                  "Cuts the design's target along its seams and writes the cut mesh (meters), every segment\n"
-                 "(triangles, area in m^2, whether it is a disk, its boundary as seam pieces) and the problems.\n"
+                 "(triangles, area in m^2, whether it is a disk, its boundary as seam pieces), the internal\n"
+                 "connections and the problems.\n"
                  "Exit code 0 when every segment can be laid flat as a panel, 1 when not.\n");
     return args.has("--help") ? 0 : 2;
   }

@@ -14,7 +14,8 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
   norm_ = 1.0 / (std::max(n_, 1) * D_ * D_);
   edge_ = mesh.meanEdgeLength > 0 ? mesh.meanEdgeLength : D_ / 100;
 
-  // E_target weights: lumped rest area of the outer surface, relative to the mean.
+  // E_target weights: lumped rest area of the outer surface, relative to the mean. Vertices of internal panels
+  // only (not on any outer triangle) get none: they are not meant to lie on the target.
   targetWeight_ = Eigen::VectorXd::Zero(n_);
   for (int t = 0; t < mesh.numTriangles(); ++t)
     if (mesh.outer[t])
@@ -41,15 +42,18 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
   for (int v = 0; v < n_; ++v)
     if (count[v]) seams_.push_back({v, sum[v] / count[v], sigma[v]});
 
-  // E_length: edge k of a piece is sewn to edge N-1-k of its neighbour piece (rows run opposite).
+  // E_length: edge k of a piece is sewn to edge N-1-k of its neighbour piece (rows run opposite). Pairs are
+  // mutual (counted once) or one-way: an internal panel's piece names the outer piece it is sewn to.
   const auto gid = [&](int p, int v) { return mesh.panelVertexStart[p] + v; };
   for (size_t p = 0; p < built.panels.size(); ++p) {
     const BuiltPanel& bp = built.panels[p];
     for (size_t i = 0; i < bp.pieces.size(); ++i) {
       const PanelPiece& a = bp.pieces[i];
       const int q = a.neighborPanel, j = a.neighborPiece;
-      if (q < 0 || j < 0 || std::make_pair(int(p), int(i)) >= std::make_pair(q, j)) continue;
+      if (q < 0 || j < 0) continue;
       const PanelPiece& b = built.panels[q].pieces[j];
+      const bool mutual = b.neighborPanel == int(p) && b.neighborPiece == int(i);
+      if (mutual && std::make_pair(int(p), int(i)) >= std::make_pair(q, j)) continue;
       if (b.rows.size() != a.rows.size()) continue;
       PiecePair pp;
       const int N = int(a.rows.size()) - 1;

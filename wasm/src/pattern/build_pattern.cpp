@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 
+#include "pattern/internal_panels.hpp"
 #include "pattern/panel_stages.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "util/error.hpp"
@@ -225,13 +226,17 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
       }
     }
   }
+
+  // 6. Internal panels, sewn onto the outer panels' seam samples (stitched with them below).
+  pattern::addInternalPanels(target, seg, options, h, out);
   out.figures.meshMs = msSince(t1);
 
-  // 4. Stitches.
+  // 4. Stitches (of the outer and the internal panels).
   stitchPieces(out);
   PatternFigures& fig = out.figures;
   fig.panels = static_cast<int>(out.pattern.panels.size());
   for (const Panel& p : out.pattern.panels) {
+    fig.internalPanels += p.internal;
     fig.triangles += static_cast<int>(p.triangles.rows());
     fig.vertices += static_cast<int>(p.vertices.rows());
   }

@@ -10,7 +10,9 @@
 //      corners shared by three or more panels are chained;
 //   5. every panel vertex gets its position on the target (barycentric location in the flattened segment,
 //      evaluated on the 3D segment): the "inflated" start of the pattern and, for seam vertices, s_j of
-//      Eq. 10 (with the seam id).
+//      Eq. 10 (with the seam id);
+//   6. every internal connection (Sec. 3.2, Fig. 2) becomes an internal panel: the ruled surface between
+//      its two seams, laid flat and sewn to the outer panels' samples along both seams (internal_panels.hpp).
 #pragma once
 #include <string>
 #include <vector>
@@ -20,6 +22,11 @@
 
 namespace billow {
 
+// An internal connection (Sec. 3.2): an internal panel spanning seam `seamA` and seam `seamB`.
+struct InternalConnection {
+  int seamA = -1, seamB = -1;  // seam ids (Segmentation::seamVertices index = the design's seam order)
+};
+
 struct PatternBuildOptions {
   // Target edge length h [m] of the simulation mesh. 0: derived from `triangles`.
   double edgeLength = 0;
@@ -27,8 +34,10 @@ struct PatternBuildOptions {
   // area of the flattened panels, see patternEdgeLength. 3000 gives ~3k triangles on any target (h ~ 1.8 cm
   // on a 0.5 m sphere cut in two).
   int triangles = 3000;
-  Material material;           // foil: 25 um, E = 3 GPa
-  double pressure = 1000.0;    // [Pa]
+  Material material;                            // foil: 25 um, E = 3 GPa
+  double pressure = 1000.0;                     // [Pa]
+  std::vector<InternalConnection> connections;  // one internal panel each
+  std::vector<std::string> seamNames;           // for problems ("seam 3" when missing or empty)
 };
 
 // A boundary piece of a panel: consecutive boundary rows from one corner to the next (wrapping).
@@ -43,19 +52,22 @@ struct PanelPiece {
 
 // What the optimizer needs per panel, beside the pattern's own panel.
 struct BuiltPanel {
-  int segment = -1;                       // Segmentation::segments index
+  int segment = -1;                       // Segmentation::segments index; -1 for an internal panel
+  int connection = -1;                    // internal panel: PatternBuildOptions::connections index
   int boundaryVertices = 0;               // the first rows of the panel are its boundary, CCW
   Vertices targetPosition;                // #v by 3: the panel vertex on the (scaled) target [m]
-  std::vector<SurfacePoint> targetPoint;  // #v: the same point on the original target (face, bary)
+  std::vector<SurfacePoint> targetPoint;  // #v: the same point on the original target (face, bary); face -1
+                                          // inside an internal panel (its points are not on the target)
   std::vector<int> seam;                  // #v: seam of a boundary vertex (outgoing piece at corners), -1 inside
   std::vector<char> corner;               // #v: 1 at corners
   std::vector<PanelPiece> pieces;
   double flattenAreaRatio = 0;  // flattened / 3D area of the segment (Eq. 14 keeps lengths, not area)
-  std::string interior;         // how the flattening placed the interior
+  std::string interior;         // how the flattening placed the interior ("ruled" for an internal panel)
 };
 
 struct PatternFigures {
   int panels = 0, triangles = 0, vertices = 0, stitches = 0;
+  int internalPanels = 0;              // of `panels`
   double edgeLength = 0;               // h used [m]
   double maxSeamLengthMismatch = 0;    // max over piece pairs |L_a - L_b| / mean, panel lengths (2D)
   double maxEdgeLengthMismatch = 0;    // max over stitched edge pairs, relative
@@ -67,13 +79,16 @@ struct BuiltPattern {
   Pattern pattern;                            // panels, stitches, material, pressure; inflated = target positions
   std::vector<BuiltPanel> panels;             // parallel to pattern.panels
   std::vector<int> segmentPanel;              // per segment: its panel, or -1 when it was not built
-  std::vector<SegmentationProblem> problems;  // segments that could not be built, in the designer's words
+  std::vector<int> connectionPanel;           // per internal connection: its panel, or -1 when it was not built
+  std::vector<SegmentationProblem> problems;  // segments and connections that could not be built, designer's words
   PatternFigures figures;
-  bool ok() const;  // every segment built (no problem of severity "error")
+  bool ok() const;  // every segment and connection built (no problem of severity "error")
 };
 
 // target: the target (in meters) that `segmentation` was computed on (its faces give targetPoint).
-// Never throws for a bad segment: such a segment becomes a problem and its neighbours keep open pieces.
+// Never throws for a bad segment: such a segment becomes a problem and its neighbours keep open pieces. A
+// connection that cannot be built (a seam that does not exist, the same seam twice, seams that cross or do not
+// face each other across the inside) is a problem of severity "error" too; the other panels are still built.
 BuiltPattern buildPattern(const TriMesh& target, const Segmentation& segmentation,
                           const PatternBuildOptions& options = {});
 

@@ -45,4 +45,12 @@ std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::st
   return scene;
 }
 
+void useDesignConnections(const Design& design, PatternBuildOptions& options) {
+  options.connections.clear();
+  for (const DesignConnection& c : design.connections)
+    if (c.seams.size() == 2) options.connections.push_back({c.seams[0], c.seams[1]});
+  options.seamNames.clear();
+  for (const DesignSeam& s : design.seams) options.seamNames.push_back(s.name);
+}
+
 }  // namespace billow

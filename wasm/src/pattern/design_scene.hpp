@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/design_json.hpp"
+#include "pattern/build_pattern.hpp"
 #include "seams/geodesic.hpp"
 #include "segment/segmentation.hpp"
 
@@ -27,5 +28,8 @@ struct DesignScene {
 // closed surface (billow::Error "design.bad-target" with the validator's words), traces and segments.
 std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::string& designPath,
                                              const std::vector<std::string>& exampleDirs);
+
+// The design's internal connections and seam names (for problems and panel names) as build options.
+void useDesignConnections(const Design& design, PatternBuildOptions& options);
 
 }  // namespace billow

@@ -262,7 +262,7 @@ export class App {
   async makePattern() {
     const ticket = ++this.patternTicket;
     const revision = this.revision;
-    const seams = this.design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
+    const seams = this.design.seams.map(({ name, points, closed, weight, smooth }) => ({ name, points, closed, weight, smooth: Boolean(smooth) }));
     this.patterns.running?.cancel();
     this.optimizing?.cancel();
     const call = this.client.call(
@@ -273,6 +273,7 @@ export class App {
         triangles: this.resolution,
         pressure: this.design.pressure,
         material: this.design.material,
+        connections: this.design.connections.map((c) => c.seams), // internal panels (paper Sec. 3.2)
       },
       {
         onProgress: (p) => {
