@@ -257,19 +257,20 @@ export class SeamEditor {
     this.refresh();
   }
 
-  setSmooth(seam, smooth) {
-    let next = cmd.setSeamSmooth(this.design, seam, smooth);
+  // A seam setting applied to the seam and, with symmetry on, to its twin (one design, one undo step).
+  withTwin(seam, set) {
+    const next = set(this.design, seam);
     const twin = this.twinOf(next, seam);
-    if (twin !== null) next = cmd.setSeamSmooth(next, twin, smooth);
-    this.app.commitDesign(next);
+    return twin === null ? next : set(next, twin);
+  }
+
+  setSmooth(seam, smooth) {
+    this.app.commitDesign(this.withTwin(seam, (d, i) => cmd.setSeamSmooth(d, i, smooth)));
     this.refresh();
   }
 
   setWeight(seam, weight) {
-    let next = cmd.setSeamWeight(this.design, seam, weight);
-    const twin = this.twinOf(next, seam);
-    if (twin !== null) next = cmd.setSeamWeight(next, twin, weight);
-    this.app.commitDesign(next, { mergeKey: `weight:${seam}` });
+    this.app.commitDesign(this.withTwin(seam, (d, i) => cmd.setSeamWeight(d, i, weight)), { mergeKey: `weight:${seam}` });
     this.draw();
   }
 
