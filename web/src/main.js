@@ -12,6 +12,9 @@ import { Exporter } from './app/exporter.js';
 import { MM_PER_INCH } from './app/fabrication.js';
 import { TabGuard, secondaryTabMessage } from './app/tab-guard.js';
 import { registerServiceWorker, updateReadyMessage } from './app/offline.js';
+import { Gallery } from './app/gallery.js';
+import { Theme } from './app/theme.js';
+import { Help } from './app/help.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -23,6 +26,18 @@ const panes = {
   pattern: new PatternPane(body('pane-pattern'), viewport),
 };
 const messages = new Messages($('messages'));
+const theme = new Theme({
+  onChange: (t) => {
+    viewport.setColors({ pane: t.color('--pane-bg'), page: t.color('--bg') });
+    panes.pattern.setGridColors(...(t.resolved === 'dark' ? [0x56607a, 0x353c4a] : [0xb8c0cc, 0xd8dde5]));
+  },
+});
+$('theme-select').value = theme.choice;
+$('theme-select').addEventListener('change', (e) => theme.set(e.target.value));
+$('large-type').checked = theme.largeType;
+$('large-type').addEventListener('change', (e) => theme.setLargeType(e.target.checked));
+const help = new Help($('help-dialog'));
+$('help-button').addEventListener('click', () => help.open());
 
 const client = new SolverClient(
   () => new Worker(new URL('./worker/solver.worker.js', import.meta.url), { type: 'module' }),
@@ -114,6 +129,8 @@ window.addEventListener('keydown', (e) => {
   if (!mod && !e.altKey && tools[key]) {
     seamTool.setMode(tools[key]);
     seamPanel.render();
+  } else if (e.key === '?') {
+    help.open();
   } else if (!mod && !e.altKey && key === 'm') {
     const axes = ['', 'x', 'y', 'z'];
     app.seams.setSymmetry(axes[(axes.indexOf(app.design.symmetry?.axis ?? '') + 1) % axes.length] || null);
@@ -157,6 +174,7 @@ const tabGuard = new TabGuard({
 app.tabGuard = tabGuard;
 
 // For the end-to-end tests and the curious: the app and its solver client.
-window.billow = { app, client, viewport, seamTool, exporter, tabGuard };
+const gallery = new Gallery(app, $('gallery-button'));
+window.billow = { app, client, viewport, seamTool, exporter, tabGuard, theme, gallery };
 tabGuard.start().then(() => app.start()).then(() => document.body.setAttribute('data-ready', 'true'));
 registerServiceWorker({ onUpdate: () => messages.show('notice', updateReadyMessage()) }); // offline use, once started

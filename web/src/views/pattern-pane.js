@@ -15,9 +15,7 @@ export class PatternPane {
     this.halfHeight = 0.5; // meters visible above the center
     this.camera = new OrthographicCamera(-1, 1, 1, -1, -10, 10);
     this.camera.position.set(0, 0, 5);
-    this.grid = new GridHelper(4, 40, 0xb8c0cc, 0xd8dde5); // 10 cm squares over 4 m
-    this.grid.rotation.x = Math.PI / 2;
-    this.scene.add(this.grid);
+    this.setGridColors(0xb8c0cc, 0xd8dde5);
     this.controls = new OrbitControls(this.camera, element);
     this.controls.enableRotate = false;
     this.controls.screenSpacePanning = true;
@@ -35,6 +33,19 @@ export class PatternPane {
 
   // pattern: panels in meters (see docs/formats.md). Panels are laid out side by side; each seam has one
   // color on both panels it joins; labels name the panels.
+  // The 10 cm grid over 4 m in the theme's colors (the axes, the lines).
+  setGridColors(axes, lines) {
+    if (this.grid) {
+      this.scene.remove(this.grid);
+      this.grid.geometry.dispose();
+      this.grid.material.dispose();
+    }
+    this.grid = new GridHelper(4, 40, axes, lines);
+    this.grid.rotation.x = Math.PI / 2;
+    this.scene.add(this.grid);
+    this.viewport.requestRender();
+  }
+
   setPattern(pattern) {
     this.clear();
     const layout = layoutPattern(pattern);

@@ -10,8 +10,16 @@ export class Viewport {
     this.renderer.setScissorTest(true);
     this.panes = [];
     this.scheduled = false;
-    this.clearColor = new Color(0xeef1f6);
+    this.clearColor = new Color(0xeef1f6); // each pane's background
+    this.pageColor = new Color(0xf4f5f7); // between the panes
     new ResizeObserver(() => this.requestRender()).observe(canvas);
+  }
+
+  // The theme's colors (CSS color strings); unparsable ones are ignored.
+  setColors({ pane, page }) {
+    if (pane) this.clearColor.setStyle(pane);
+    if (page) this.pageColor.setStyle(page);
+    this.requestRender();
   }
 
   add(pane) {
@@ -40,7 +48,7 @@ export class Viewport {
       renderer.setSize(width, height, false);
     const box = canvas.getBoundingClientRect();
     renderer.setScissor(0, 0, width, height);
-    renderer.setClearColor(0xf4f5f7);
+    renderer.setClearColor(this.pageColor);
     renderer.clear();
     for (const pane of this.panes) {
       const r = pane.element.getBoundingClientRect();

@@ -1,0 +1,53 @@
+// The help panel: every keyboard shortcut and how to draw with a mouse, a pen or a finger. Opened with
+// the Help button or "?"; text only through textContent.
+export const SHORTCUTS = [
+  ['V', 'View: orbit (drag), zoom (wheel or pinch), pan (right drag or two fingers)'],
+  ['D', 'Draw seams: click points on the target; click the first point to close a loop'],
+  ['E', 'Edit seams: drag control points; double-click a seam to add a point'],
+  ['Enter', 'Finish the seam being drawn (or the Finish button, for touch)'],
+  ['Esc', 'Cancel the seam being drawn; back to View'],
+  ['Backspace', 'Remove the last point of the seam being drawn'],
+  ['Delete', 'Delete the selected control point (Edit)'],
+  ['M', 'Mirror symmetry: off, across X, Y, Z'],
+  ['Ctrl+Z', 'Undo'],
+  ['Ctrl+Shift+Z / Ctrl+Y', 'Redo'],
+  ['Ctrl+S', 'Save the design as a file'],
+  ['Ctrl+O', 'Open a mesh, design or pattern file'],
+  ['?', 'This help'],
+];
+
+export class Help {
+  constructor(dialog) {
+    this.dialog = dialog;
+    const title = document.createElement('h2');
+    title.textContent = 'Keyboard shortcuts and drawing';
+    const close = document.createElement('button');
+    close.type = 'button';
+    close.className = 'close';
+    close.textContent = 'Close';
+    close.addEventListener('click', () => dialog.close());
+    const table = document.createElement('table');
+    for (const [keys, what] of SHORTCUTS) {
+      const row = table.insertRow();
+      const keyCell = row.insertCell();
+      keys.split(' / ').forEach((combo, i) => {
+        if (i) keyCell.append(' or ');
+        combo.split('+').forEach((k, j) => {
+          if (j) keyCell.append('+');
+          const kbd = document.createElement('kbd');
+          kbd.textContent = k;
+          keyCell.append(kbd);
+        });
+      });
+      row.insertCell().textContent = what;
+    }
+    const touch = document.createElement('p');
+    touch.textContent =
+      'On a tablet: tap points to draw (a tap, not a drag); use Finish, Close loop and Cancel in the seam panel; drag a control point with a finger in Edit. Pens work like a mouse.';
+    dialog.append(close, title, table, touch);
+  }
+
+  open() {
+    if (!this.dialog.open) this.dialog.showModal();
+  }
+}
