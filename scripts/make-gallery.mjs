@@ -1,0 +1,200 @@
+// Makes the gallery's files in web/public/gallery (see web/src/app/gallery.js):
+//   node scripts/make-gallery.mjs data     the design files (sphere3, toy, cow) and star.pattern.json
+//   node scripts/make-gallery.mjs thumbs   the thumbnails (<id>.png, 320x240): serves web/dist, opens every
+//                                          item in headless Chromium (/usr/bin/chromium, as the e2e tests),
+//                                          waits until its inflated result shows and screenshots that pane
+//   node scripts/make-gallery.mjs          both
+// To regenerate after changing an item: `node scripts/make-gallery.mjs data`, `bash scripts/build.sh web`,
+// `node scripts/make-gallery.mjs thumbs`, `bash scripts/build.sh web` again (the thumbnails ship in web/dist).
+// It prints how long each item takes to show its result.
+import { readFileSync, writeFileSync, mkdirSync } from 'node:fs';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const ROOT = fileURLToPath(new URL('..', import.meta.url));
+const OUT = join(ROOT, 'web/public/gallery');
+const round = (v) => Math.round(v * 1e5) / 1e5;
+const design = (example, height, seams, extra = {}) => ({
+  format: 'billow-design', version: 1, target: { example }, size: { height }, seams, connections: [],
+  material: { name: 'foil', thickness: 2.5e-5, youngs_modulus: 3.0e9 }, pressure: 1000, ...extra,
+});
+
+// Vertices and triangles of an OBJ file (triangulated fans).
+function readObj(path) {
+  const v = [], t = [];
+  for (const line of readFileSync(path, 'utf8').split('\n')) {
+    const f = line.trim().split(/\s+/);
+    if (f[0] === 'v') v.push(f.slice(1, 4).map(Number));
+    else if (f[0] === 'f') {
+      const ids = f.slice(1).map((s) => parseInt(s, 10) - 1);
+      for (let k = 1; k + 1 < ids.length; k++) t.push([ids[0], ids[k], ids[k + 1]]);
+    }
+  }
+  return { v, t };
+}
+
+// The farthest point where the ray from o along d leaves the mesh (Moeller-Trumbore).
+function farthestHit({ v, t }, o, d) {
+  const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
+  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  let best = -1;
+  for (const [i, j, k] of t) {
+    const e1 = sub(v[j], v[i]), e2 = sub(v[k], v[i]);
+    const p = cross(d, e2), det = dot(e1, p);
+    if (Math.abs(det) < 1e-12) continue;
+    const s = sub(o, v[i]), u = dot(s, p) / det;
+    if (u < 0 || u > 1) continue;
+    const q = cross(s, e1), w = dot(d, q) / det;
+    if (w < 0 || u + w > 1) continue;
+    const dist = dot(e2, q) / det;
+    if (dist > best) best = dist;
+  }
+  return o.map((c, a) => round(c + best * d[a]));
+}
+
+// Surface points around the loop where the plane x = x0 cuts the mesh, seen from center c.
+function sagittalLoop(mesh, c, count) {
+  const points = [];
+  for (let i = 0; i < count; i++) {
+    const a = (2 * Math.PI * i) / count;
+    points.push(farthestHit(mesh, c, [0, Math.cos(a), Math.sin(a)]));
+  }
+  return points;
+}
+
+// Open seams along the axis `axis` of the mesh, from pole to pole, at the given angles (degrees) around it.
+function lengthwiseSeams(mesh, axis, angles, names) {
+  const lo = [0, 1, 2].map((a) => Math.min(...mesh.v.map((p) => p[a])));
+  const hi = [0, 1, 2].map((a) => Math.max(...mesh.v.map((p) => p[a])));
+  const c = lo.map((l, a) => (l + hi[a]) / 2);
+  const [u, w] = [0, 1, 2].filter((a) => a !== axis);
+  const dir = (along, deg) => {
+    const d = [0, 0, 0], a = (deg * Math.PI) / 180;
+    d[axis] = along;
+    d[u] = Math.sqrt(1 - along * along) * Math.cos(a);
+    d[w] = Math.sqrt(1 - along * along) * Math.sin(a);
+    return d;
+  };
+  const start = farthestHit(mesh, c, dir(-1, 0)), end = farthestHit(mesh, c, dir(1, 0));
+  return angles.map((deg, i) => ({
+    name: names[i], closed: false, weight: 1,
+    points: [start, ...[-0.6, -0.2, 0.2, 0.6].map((t) => farthestHit(mesh, c, dir(t, deg))), end],
+  }));
+}
+
+// A star of `tips` points, outer radius R, inner r: rings of the outline scaled towards the middle.
+function starPanel(R, r, tips, perEdge, rings) {
+  const outline = [];
+  for (let c = 0; c < 2 * tips; c++) {
+    const a0 = Math.PI / 2 + (Math.PI * c) / tips, a1 = Math.PI / 2 + (Math.PI * (c + 1)) / tips;
+    const r0 = c % 2 ? r : R, r1 = c % 2 ? R : r;
+    const p0 = [r0 * Math.cos(a0), r0 * Math.sin(a0)], p1 = [r1 * Math.cos(a1), r1 * Math.sin(a1)];
+    for (let s = 0; s < perEdge; s++) outline.push([p0[0] + ((p1[0] - p0[0]) * s) / perEdge, p0[1] + ((p1[1] - p0[1]) * s) / perEdge]);
+  }
+  const m = outline.length;
+  const vertices = [[0, 0]];
+  for (let k = 1; k <= rings; k++) for (const [x, y] of outline) vertices.push([round((x * k) / rings), round((y * k) / rings)]);
+  const at = (k, j) => 1 + (k - 1) * m + (j % m);
+  const triangles = [];
+  for (let j = 0; j < m; j++) triangles.push([0, at(1, j), at(1, j + 1)]);
+  for (let k = 1; k < rings; k++)
+    for (let j = 0; j < m; j++) {
+      triangles.push([at(k, j), at(k + 1, j), at(k + 1, j + 1)]);
+      triangles.push([at(k, j), at(k + 1, j + 1), at(k, j + 1)]);
+    }
+  const boundary = Array.from({ length: m }, (_, j) => at(rings, j));
+  return { vertices, triangles, boundary };
+}
+
+function makeData() {
+  mkdirSync(OUT, { recursive: true });
+  const write = (name, value, indent = 1) => writeFileSync(join(OUT, name), `${JSON.stringify(value, null, indent)}\n`);
+
+  // Sphere (unit sphere in its own coordinates): three meridians from pole to pole, 120 degrees apart.
+  const meridian = (deg, name) => {
+    const a = (deg * Math.PI) / 180;
+    const at = (lat) => [round(Math.cos(lat) * Math.cos(a)), round(Math.sin(lat)), round(Math.cos(lat) * Math.sin(a))];
+    return { name, closed: false, weight: 1, points: [[0, 1, 0], at(Math.PI / 4), at(0), at(-Math.PI / 4), [0, -1, 0]] };
+  };
+  write('sphere3.billow.json', design('sphere', 0.5, [meridian(0, 'meridian 1'), meridian(120, 'meridian 2'), meridian(240, 'meridian 3')]));
+
+  // Penguin toy: one closed seam around the middle plane (x = center), left and right halves.
+  const penguin = readObj(join(ROOT, 'web/public/examples/penguin.obj'));
+  const lo = [0, 1, 2].map((a) => Math.min(...penguin.v.map((p) => p[a])));
+  const hi = [0, 1, 2].map((a) => Math.max(...penguin.v.map((p) => p[a])));
+  const center = lo.map((l, a) => (l + hi[a]) / 2);
+  write('toy.billow.json', design('penguin', 0.9, [{ name: 'middle', closed: true, weight: 1, points: sagittalLoop(penguin, center, 16) }]));
+
+  // Fish: Blub cut in left and right halves by open seams from tail to nose along the back and the belly,
+  // with an internal panel between them (the fish's middle plane).
+  const blub = readObj(join(ROOT, 'web/public/examples/blub.obj'));
+  write('fish.billow.json', design('blub', 0.5, lengthwiseSeams(blub, 2, [90, 270], ['back', 'belly']), {
+    connections: [{ seams: [0, 1] }],
+  }));
+
+  // Star foil balloon: two identical five-pointed stars (0.5 m tip to tip), the back one mirrored so both
+  // are drawn as seen from outside, sealed at the rim vertex by vertex.
+  const front = starPanel(0.25, 0.11, 5, 8, 10);
+  const back = { vertices: front.vertices.map(([x, y]) => [round(-x), y]), triangles: front.triangles.map(([a, b, c]) => [a, c, b]) };
+  write('star.pattern.json', {
+    format: 'billow-pattern', version: 1, units: 'm', pressure: 1000,
+    material: { name: 'foil', thickness: 2.5e-5, youngs_modulus: 3.0e9 },
+    panels: [
+      { name: 'front', internal: false, vertices: front.vertices, triangles: front.triangles },
+      { name: 'back', internal: false, vertices: back.vertices, triangles: back.triangles },
+    ],
+    stitches: front.boundary.map((i) => [0, i, 1, i]),
+  }, 0);
+  console.log(`wrote the gallery's data files to ${OUT}`);
+}
+
+async function makeThumbnails() {
+  const { serve, launch, openFreshPage } = await import('../tests/e2e/harness.mjs');
+  const server = await serve();
+  const context = await launch();
+  try {
+    const page = await openFreshPage(context, server.url);
+    const ids = await page.evaluate(() => [...document.querySelectorAll('.gallery-card')].map((c) => c.dataset.item));
+    for (const id of ids) {
+      const started = Date.now();
+      await page.evaluate(() => { document.querySelector('#status').textContent = ''; });
+      await page.evaluate((i) => window.billow.gallery.open(i), id);
+      await page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent)
+        && !/^Inflated the flattened/.test(document.querySelector('#status').textContent), null, { timeout: 300000 });
+      const seconds = ((Date.now() - started) / 1000).toFixed(1);
+      await page.waitForTimeout(500);
+      // Designs: the target with its seams; patterns: the inflated shape. Without the figures and legends.
+      const pane = /^Inflated the optimized panels/.test(await page.textContent('#status')) ? 'target' : 'inflated';
+      const overlays = '.pane .stats, .pane .legend, .pane .seam-panel, .pane .hint, .pane .panel-label';
+      await page.evaluate((sel) => document.querySelectorAll(sel).forEach((el) => { el.style.visibility = 'hidden'; }), overlays);
+      await page.waitForTimeout(100);
+      const box = await page.locator(`#pane-${pane} .pane-body`).boundingBox();
+      const png = await page.screenshot({ clip: box });
+      await page.evaluate((sel) => document.querySelectorAll(sel).forEach((el) => { el.style.visibility = ''; }), overlays);
+      // Scaled to 320x240 in the page, cropped to cover.
+      const dataUrl = await page.evaluate(async (b64) => {
+        const img = new Image();
+        img.src = `data:image/png;base64,${b64}`;
+        await img.decode();
+        const canvas = document.createElement('canvas');
+        canvas.width = 320;
+        canvas.height = 240;
+        const s = Math.max(320 / img.width, 240 / img.height);
+        const w = 320 / s, h = 240 / s;
+        canvas.getContext('2d').drawImage(img, (img.width - w) / 2, (img.height - h) / 2, w, h, 0, 0, 320, 240);
+        return canvas.toDataURL('image/png');
+      }, png.toString('base64'));
+      writeFileSync(join(OUT, `${id}.png`), Buffer.from(dataUrl.split(',')[1], 'base64'));
+      console.log(`${id}: result shown after ${seconds} s (${await page.textContent('#status')})`);
+    }
+    if (page.errors.length) console.log('page errors:', page.errors);
+  } finally {
+    await context.close();
+    await server.close();
+  }
+}
+
+const what = process.argv[2] ?? 'all';
+if (what === 'data' || what === 'all') makeData();
+if (what === 'thumbs' || what === 'all') await makeThumbnails();

@@ -1,0 +1,124 @@
+// The gallery: ready designs and patterns, each with a thumbnail (web/public/gallery/<id>.png, made by
+// scripts/make-gallery.mjs) and one line on what it teaches. Opening an item computes its result live:
+// a design is segmented, its panels optimized and inflated; a pattern is inflated.
+import { parseDesign } from './design.js';
+import './gallery.css';
+
+// open: { design: file } a billow-design in web/public/gallery; { pattern: id } a solver example
+// pattern (PATTERN_EXAMPLES in app.js); { patternFile: file } a billow-pattern in web/public/gallery.
+export const GALLERY_ITEMS = [
+  {
+    id: 'mylar', title: 'Mylar balloon', thumbnail: 'mylar.png', open: { pattern: 'mylar' },
+    teaches: 'Two flat discs sewn at the rim do not make a sphere: they puff into a pillow with wrinkles at the rim.',
+  },
+  {
+    id: 'sphere3', title: 'Sphere, three gores', thumbnail: 'sphere3.png', open: { design: 'sphere3.billow.json' },
+    teaches: 'Three meridian seams from pole to pole: the optimizer shapes the gores so the inflated ball is round.',
+  },
+  {
+    id: 'pillow', title: 'Pillow', thumbnail: 'pillow.png', open: { pattern: 'pillow' },
+    teaches: 'Two squares sewn at the edges: the corners pucker and the sides pull in under pressure.',
+  },
+  {
+    id: 'toy', title: 'Penguin toy', thumbnail: 'toy.png', open: { design: 'toy.billow.json' },
+    teaches: 'A plush-toy cut: left and right halves sewn along the middle, optimized to bulge into the penguin.',
+  },
+  {
+    id: 'fish', title: 'Fish with an internal panel', thumbnail: 'fish.png', open: { design: 'fish.billow.json' },
+    teaches: 'An internal connection: a panel inside joins the back and belly seams, so the fish stays slim instead of puffing round.',
+  },
+  {
+    id: 'star', title: 'Star foil balloon', thumbnail: 'star.png', open: { patternFile: 'star.pattern.json' },
+    teaches: 'Two flat stars sealed at the rim: the points stay thin while the middle inflates, with wrinkles at the inner corners.',
+  },
+];
+
+export function findGalleryItem(id) {
+  return GALLERY_ITEMS.find((item) => item.id === id) ?? null;
+}
+
+export class Gallery {
+  constructor(app, button) {
+    this.app = app;
+    this.dialog = document.createElement('dialog');
+    this.dialog.className = 'gallery';
+    this.dialog.setAttribute('aria-labelledby', 'gallery-title');
+    const header = document.createElement('header');
+    const title = document.createElement('h2');
+    title.id = 'gallery-title';
+    title.textContent = 'Gallery';
+    const close = document.createElement('button');
+    close.type = 'button';
+    close.className = 'gallery-close';
+    close.textContent = 'Close';
+    close.addEventListener('click', () => this.dialog.close());
+    header.append(title, close);
+    const intro = document.createElement('p');
+    intro.className = 'gallery-intro';
+    intro.textContent = 'Ready designs: each opens with its seams and panels, and its result is computed as it opens.';
+    this.grid = document.createElement('div');
+    this.grid.className = 'gallery-grid';
+    for (const item of GALLERY_ITEMS) this.grid.append(this.card(item));
+    this.dialog.append(header, intro, this.grid);
+    // A click on the backdrop (outside the dialog's box) closes it.
+    this.dialog.addEventListener('click', (event) => {
+      if (event.target === this.dialog) this.dialog.close();
+    });
+    document.body.append(this.dialog);
+    button?.addEventListener('click', () => this.show());
+  }
+
+  card(item) {
+    const card = document.createElement('button');
+    card.type = 'button';
+    card.className = 'gallery-card';
+    card.dataset.item = item.id;
+    const img = document.createElement('img');
+    img.src = new URL(`gallery/${item.thumbnail}`, this.app.baseUrl).href;
+    img.alt = item.title;
+    img.width = 320;
+    img.height = 240;
+    img.loading = 'lazy';
+    const title = document.createElement('span');
+    title.className = 'gallery-title';
+    title.textContent = item.title;
+    const line = document.createElement('span');
+    line.className = 'gallery-teaches';
+    line.textContent = item.teaches;
+    card.append(img, title, line);
+    card.addEventListener('click', () => {
+      this.dialog.close();
+      this.open(item.id);
+    });
+    return card;
+  }
+
+  show() {
+    if (!this.dialog.open) this.dialog.showModal();
+  }
+
+  // Opens a gallery item by id; resolves when the app has taken it (its result is then computed live).
+  async open(id) {
+    const item = findGalleryItem(id);
+    if (!item) return this.app.messages.show('error', `There is no gallery item called "${id}".`);
+    if (item.open.pattern) return this.app.patterns.openExample(item.open.pattern);
+    const file = item.open.design ?? item.open.patternFile;
+    let text;
+    try {
+      const response = await fetch(new URL(`gallery/${file}`, this.app.baseUrl));
+      if (!response.ok) throw new Error(`HTTP ${response.status}`);
+      text = await response.text();
+    } catch {
+      return this.app.messages.show('error', `"${item.title}" could not be loaded from the gallery: check the connection and try again.`);
+    }
+    if (item.open.patternFile) return this.app.patterns.open(item.title, text);
+    try {
+      const { design, warnings } = parseDesign(JSON.parse(text));
+      for (const w of warnings) this.app.messages.show('warning', w);
+      if (!design.target.example) throw new Error('its target is not a built-in example.');
+      return this.app.loadExample(design.target.example, design);
+    } catch (error) {
+      return this.app.messages.show('error', `"${item.title}" cannot be opened: ${error.message}`);
+    }
+  }
+}
