@@ -168,7 +168,8 @@ TEST(SeamCurve, SmoothSeamFollowsTheCircleThroughItsPointsWhereGeodesicsCutCorne
   // Worst distance of the curve's points from the cone of the circle (angle from the equator plane).
   auto worstLatitudeError = [&](const SeamCurve& c) {
     double worst = 0;
-    for (const PathPoint& p : c.points) worst = std::max(worst, std::abs(std::asin(p.position.normalized().z()) - latitude));
+    for (const PathPoint& p : c.points)
+      worst = std::max(worst, std::abs(std::asin(p.position.normalized().z()) - latitude));
     return worst;
   };
   spec.smooth = false;
@@ -188,8 +189,9 @@ TEST(SeamCurve, SmoothSeamFollowsTheCircleThroughItsPointsWhereGeodesicsCutCorne
     EXPECT_EQ((c->points.front().position - c->points.back().position).norm(), 0.0);
   }
   const double plainError = worstLatitudeError(plain), smoothError = worstLatitudeError(smooth);
-  std::printf("[seams] latitude circle: plain length %.4f, smooth %.4f, circle %.4f; worst latitude error %.4f vs %.4f\n",
-              plain.length, smooth.length, circle, plainError, smoothError);
+  std::printf(
+      "[seams] latitude circle: plain length %.4f, smooth %.4f, circle %.4f; worst latitude error %.4f vs %.4f\n",
+      plain.length, smooth.length, circle, plainError, smoothError);
   EXPECT_LT(smoothError, 0.5 * plainError) << "the spline keeps to the circle";
   EXPECT_LT(smoothError, 0.03);
   EXPECT_NEAR(smooth.length, circle, 0.02 * circle);
