@@ -92,7 +92,8 @@ export class PatternSession {
       this.last = result;
       this.lastPattern = display;
       const seconds = ((performance.now() - started) / 1000).toFixed(1);
-      this.status(`Inflated ${fileName} in ${seconds} s (${result.iterations} steps)`);
+      // Optimized panels arrive in balance already: no steps to report then.
+      this.status(result.iterations ? `Inflated ${fileName} in ${seconds} s (${result.iterations} steps)` : `Inflated ${fileName}: in balance under pressure`);
       this.renderStats(result);
       return result;
     } catch (error) {
