@@ -10,6 +10,7 @@
 #include "pattern/panel_stages.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "util/error.hpp"
+#include "util/union_find.hpp"
 
 namespace billow {
 
@@ -102,19 +103,13 @@ void chooseSegmentCounts(std::vector<pattern::FlatSegment>& flats, const std::ma
 
 double edgeLength(const Panel& p, int a, int b) { return (p.vertices.row(a) - p.vertices.row(b)).norm(); }
 
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
 // Stitches every sample k of a piece to sample N - k of its partner; the groups of panel vertices that
 // are one point (three or more at corners) become chains of stitches. Fills the mismatch figures.
 void stitchPieces(BuiltPattern& out) {
   const auto& panels = out.pattern.panels;
   std::vector<int> start{0};
   for (const Panel& p : panels) start.push_back(start.back() + static_cast<int>(p.vertices.rows()));
-  std::vector<int> parent(start.back());
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind groupsOf(start.back());
   PatternFigures& fig = out.figures;
   for (int a = 0; a < static_cast<int>(panels.size()); ++a)
     for (const PanelPiece& pa : out.panels[a].pieces) {
@@ -125,8 +120,7 @@ void stitchPieces(BuiltPattern& out) {
       double la = 0, lb = 0;
       for (int k = 0; k <= n; ++k) {
         const int va = pa.rows[k], vb = pb.rows[n - k];
-        const int ra = findRoot(parent, start[a] + va), rb = findRoot(parent, start[b] + vb);
-        if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
+        groupsOf.unite(start[a] + va, start[b] + vb);
         fig.maxStitchTargetDistance =
             std::max(fig.maxStitchTargetDistance,
                      (out.panels[a].targetPosition.row(va) - out.panels[b].targetPosition.row(vb)).norm());
@@ -139,7 +133,7 @@ void stitchPieces(BuiltPattern& out) {
       fig.maxSeamLengthMismatch = std::max(fig.maxSeamLengthMismatch, std::abs(la - lb) / (0.5 * (la + lb)));
     }
   std::map<int, std::vector<int>> groups;  // root -> members, in panel order
-  for (int g = 0; g < start.back(); ++g) groups[findRoot(parent, g)].push_back(g);
+  for (int g = 0; g < start.back(); ++g) groups[groupsOf.find(g)].push_back(g);
   for (const auto& [root, members] : groups)
     for (size_t i = 1; i < members.size(); ++i) {
       const auto where = [&](int g) {
@@ -227,7 +221,7 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
     }
   }
 
-  // 6. Internal panels, sewn onto the outer panels' seam samples (stitched with them below).
+  // 3b. Internal panels, sewn onto the outer panels' seam samples (stitched with them below).
   pattern::addInternalPanels(target, seg, options, h, out);
   out.figures.meshMs = msSince(t1);
 

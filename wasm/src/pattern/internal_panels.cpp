@@ -9,6 +9,7 @@
 
 #include "remesh/panel_mesher.hpp"
 #include "util/error.hpp"
+#include "util/union_find.hpp"
 
 namespace billow::pattern {
 
@@ -31,11 +32,6 @@ struct ConnectionError {
   std::string why;
 };
 
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
 // The outer panels' vertices as one numbering, grouped as stitchPieces (build_pattern.cpp) will stitch them.
 struct OuterGroups {
   int panels = 0;                     // the outer panels: out.panels[0 .. panels)
@@ -54,30 +50,27 @@ OuterGroups groupOuter(const BuiltPattern& out) {
   g.panels = static_cast<int>(out.panels.size());
   g.start = {0};
   for (const BuiltPanel& b : out.panels) g.start.push_back(g.start.back() + static_cast<int>(b.targetPosition.rows()));
-  std::vector<int> parent(g.start.back());
-  std::iota(parent.begin(), parent.end(), 0);
+  const int n = g.start.back();
+  UnionFind groups(n);
   for (int a = 0; a < g.panels; ++a)
     for (const PanelPiece& pa : out.panels[a].pieces) {
       if (pa.neighborPanel < 0) continue;
       const PanelPiece& pb = out.panels[pa.neighborPanel].pieces[pa.neighborPiece];
-      const int n = static_cast<int>(pa.rows.size()) - 1;
+      const int last = static_cast<int>(pa.rows.size()) - 1;
       if (pb.rows.size() != pa.rows.size()) continue;
-      for (int k = 0; k <= n; ++k) {
-        const int ra = findRoot(parent, g.start[a] + pa.rows[k]);
-        const int rb = findRoot(parent, g.start[pa.neighborPanel] + pb.rows[n - k]);
-        if (ra != rb) parent[std::max(ra, rb)] = std::min(ra, rb);
-      }
+      for (int k = 0; k <= last; ++k)
+        groups.unite(g.start[a] + pa.rows[k], g.start[pa.neighborPanel] + pb.rows[last - k]);
     }
-  g.root.resize(parent.size());
-  g.mean.assign(parent.size(), Eigen::Vector3d::Zero());
-  std::vector<int> count(parent.size(), 0);
-  for (int i = 0; i < static_cast<int>(parent.size()); ++i) {
-    g.root[i] = findRoot(parent, i);
+  g.root.resize(n);
+  g.mean.assign(n, Eigen::Vector3d::Zero());
+  std::vector<int> count(n, 0);
+  for (int i = 0; i < n; ++i) {
+    g.root[i] = groups.find(i);
     const auto [p, v] = g.where(i);
     g.mean[g.root[i]] += out.panels[p].targetPosition.row(v).transpose();
     ++count[g.root[i]];
   }
-  for (size_t r = 0; r < parent.size(); ++r)
+  for (int r = 0; r < n; ++r)
     if (count[r]) g.mean[r] /= count[r];
   return g;
 }

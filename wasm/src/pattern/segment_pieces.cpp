@@ -4,21 +4,9 @@
 #include <numeric>
 #include <unordered_set>
 
+#include "util/union_find.hpp"
+
 namespace billow {
-
-namespace {
-
-int findRoot(std::vector<int>& parent, int i) {
-  while (parent[i] != i) i = parent[i] = parent[parent[i]];
-  return i;
-}
-
-void unite(std::vector<int>& parent, int a, int b) {
-  a = findRoot(parent, a), b = findRoot(parent, b);
-  if (a != b) parent[std::max(a, b)] = std::min(a, b);
-}
-
-}  // namespace
 
 SegmentMesh extractSegment(const Segmentation& seg, int segment) {
   const Segment& s = seg.segments[segment];
@@ -31,8 +19,7 @@ SegmentMesh extractSegment(const Segmentation& seg, int segment) {
       cut.insert(edgeKey(l.vertices[i], l.vertices[(i + 1) % l.vertices.size()]));
   // Triangle corners 3t + k are joined across every uncut edge shared by two triangles of the segment.
   std::unordered_map<std::uint64_t, std::pair<int, int>> open;  // undirected edge -> (t, k) seen first
-  std::vector<int> parent(3 * nt);
-  std::iota(parent.begin(), parent.end(), 0);
+  UnionFind corners(3 * nt);
   for (int t = 0; t < nt; ++t)
     for (int k = 0; k < 3; ++k) {
       const int a = F(s.triangles[t], k), b = F(s.triangles[t], (k + 1) % 3);
@@ -44,8 +31,8 @@ SegmentMesh extractSegment(const Segmentation& seg, int segment) {
         continue;
       }
       const auto [t2, k2] = it->second;  // runs b -> a in t2: corner k2 is b, k2 + 1 is a
-      unite(parent, 3 * t + k, 3 * t2 + (k2 + 1) % 3);
-      unite(parent, 3 * t + (k + 1) % 3, 3 * t2 + k2);
+      corners.unite(3 * t + k, 3 * t2 + (k2 + 1) % 3);
+      corners.unite(3 * t + (k + 1) % 3, 3 * t2 + k2);
       open.erase(it);
     }
   SegmentMesh out;
@@ -53,7 +40,7 @@ SegmentMesh extractSegment(const Segmentation& seg, int segment) {
   std::vector<int> local(3 * nt, -1);
   for (int t = 0; t < nt; ++t)
     for (int k = 0; k < 3; ++k) {
-      const int r = findRoot(parent, 3 * t + k);
+      const int r = corners.find(3 * t + k);
       if (local[r] < 0) {
         local[r] = static_cast<int>(out.vertexCut.size());
         out.vertexCut.push_back(F(s.triangles[t], k));

@@ -7,23 +7,10 @@
 #include <numeric>
 
 #include "util/error.hpp"
+#include "util/union_find.hpp"
 
 namespace billow {
 namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int i) {
-    while (parent[i] != i) i = parent[i] = parent[parent[i]];
-    return i;
-  }
-  void unite(int a, int b) {
-    a = find(a);
-    b = find(b);
-    if (a != b) parent[std::max(a, b)] = std::min(a, b);
-  }
-};
 
 std::string panelLabel(const Pattern& p, int panel) {
   const std::string& name = p.panels[panel].name;
