@@ -218,28 +218,12 @@ TEST(DesignJson, TargetsFromExamplesFilesAndInlineMeshes) {
 
 // ---- The CLI (native only: it runs the billow executable next to this test binary) ----
 
-namespace {
-
-std::string cli() {
-  char buf[PATH_MAX];
-  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
-  const std::string exe(buf, n > 0 ? static_cast<size_t>(n) : 0);
-  return exe.substr(0, exe.find_last_of('/')) + "/billow";
-}
-
-int run(const std::string& command) {
-  const int status = std::system((command + " 2>/dev/null").c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-}  // namespace
-
 TEST(CliDesign, SegmentWritesSegmentsAndFailsOnNonDisks) {
 #ifdef __EMSCRIPTEN__
   GTEST_SKIP() << "the CLI is native only";
 #else
   const std::string out = testing::TempDir() + "billow-segments.json";
-  ASSERT_EQ(run(cli() + " segment " + dataPath("sphere-gores.billow.json") + " --out " + out), 0);
+  ASSERT_EQ(test::runQuiet(test::cliPath() + " segment " + dataPath("sphere-gores.billow.json") + " --out " + out), 0);
   const json s = json::parse(readFileBytes(out));
   EXPECT_EQ(s["format"], "billow-segments");
   ASSERT_EQ(s["segments"].size(), 3u);
@@ -257,9 +241,9 @@ TEST(CliDesign, SegmentWritesSegmentsAndFailsOnNonDisks) {
   doc["seams"] = json::array();
   const std::string design = testing::TempDir() + "billow-noseam.billow.json";
   std::ofstream(design) << doc.dump();
-  EXPECT_EQ(run(cli() + " segment " + design + " --out " + out), 1);
+  EXPECT_EQ(test::runQuiet(test::cliPath() + " segment " + design + " --out " + out), 1);
   EXPECT_FALSE(json::parse(readFileBytes(out))["ok"].get<bool>());
-  EXPECT_EQ(run(cli() + " segment " + design), 2);  // usage
+  EXPECT_EQ(test::runQuiet(test::cliPath() + " segment " + design), 2);  // usage
 #endif
 }
 
@@ -268,8 +252,8 @@ TEST(CliDesign, DesignWritesPatternInflatedShapeAndReport) {
   GTEST_SKIP() << "the CLI is native only";
 #else
   const std::string dir = testing::TempDir() + "billow-design-equator";
-  ASSERT_EQ(run(cli() + " design " + dataPath("sphere-equator.billow.json") + " --out-dir " + dir +
-                " --no-optimize --resolution 1200"),
+  ASSERT_EQ(test::runQuiet(test::cliPath() + " design " + dataPath("sphere-equator.billow.json") + " --out-dir " + dir +
+                           " --no-optimize --resolution 1200"),
             0);
   std::vector<PatternWarning> warnings;
   const Pattern p = readPatternJson(readFileBytes(dir + "/pattern.json"), &warnings);

@@ -397,22 +397,6 @@ TEST(InternalPanels, CrossingAndClosedSeamsAreProblems) {
 
 // ---- The CLI (native only: it runs the billow executable next to this test binary) ----
 
-namespace {
-
-std::string cli() {
-  char buf[PATH_MAX];
-  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
-  const std::string exe(buf, n > 0 ? static_cast<size_t>(n) : 0);
-  return exe.substr(0, exe.find_last_of('/')) + "/billow";
-}
-
-int run(const std::string& command) {
-  const int status = std::system((command + " 2>/dev/null").c_str());
-  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
-}
-
-}  // namespace
-
 TEST(InternalPanels, CliDesignBuildsTheConnectionAndInflateReadsIt) {
 #ifdef __EMSCRIPTEN__
   GTEST_SKIP() << "the CLI is native only";
@@ -424,7 +408,9 @@ TEST(InternalPanels, CliDesignBuildsTheConnectionAndInflateReadsIt) {
   const std::string design = testing::TempDir() + "billow-gores-connection.billow.json";
   std::ofstream(design) << doc.dump();
   const std::string dir = testing::TempDir() + "billow-design-connection";
-  ASSERT_EQ(run(cli() + " design " + design + " --out-dir " + dir + " --no-optimize --resolution 1000"), 0);
+  ASSERT_EQ(
+      test::runQuiet(test::cliPath() + " design " + design + " --out-dir " + dir + " --no-optimize --resolution 1000"),
+      0);
   const json pattern = json::parse(readFileBytes(dir + "/pattern.json"));
   ASSERT_EQ(pattern["panels"].size(), 4u);
   EXPECT_TRUE(pattern["panels"][3]["internal"].get<bool>());
@@ -434,18 +420,20 @@ TEST(InternalPanels, CliDesignBuildsTheConnectionAndInflateReadsIt) {
   EXPECT_TRUE(report["inflate"]["converged"].get<bool>());
   EXPECT_EQ(report["internal_panels"], 1);
   // billow inflate re-inflates the written pattern, internal panel included.
-  ASSERT_EQ(run(cli() + " inflate " + dir + "/pattern.json --obj " + dir + "/again.obj"), 0);
+  ASSERT_EQ(test::runQuiet(test::cliPath() + " inflate " + dir + "/pattern.json --obj " + dir + "/again.obj"), 0);
   const TriMesh again = readMeshBytes(readFileBytes(dir + "/again.obj"), "again.obj");
   const Pattern p = readPatternJson(readFileBytes(dir + "/pattern.json"));
   EXPECT_EQ(again.numTriangles(), static_cast<int>(outerTriangles(sewPattern(p)).rows()));
   // billow segment lists the connection; a bad one makes billow design fail with the problem.
   const std::string segments = testing::TempDir() + "billow-gores-connection.segments.json";
-  ASSERT_EQ(run(cli() + " segment " + design + " --out " + segments), 0);
+  ASSERT_EQ(test::runQuiet(test::cliPath() + " segment " + design + " --out " + segments), 0);
   const json s = json::parse(readFileBytes(segments));
   ASSERT_EQ(s["connections"].size(), 1u);
   EXPECT_EQ(s["connections"][0]["seams"], json({0, 1}));
   doc["connections"] = json::array({{{"seams", {1, 1}}}});
   std::ofstream(design) << doc.dump();
-  EXPECT_EQ(run(cli() + " design " + design + " --out-dir " + dir + " --no-optimize --resolution 1000"), 1);
+  EXPECT_EQ(
+      test::runQuiet(test::cliPath() + " design " + design + " --out-dir " + dir + " --no-optimize --resolution 1000"),
+      1);
 #endif
 }

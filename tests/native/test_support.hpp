@@ -1,5 +1,10 @@
 // Helpers shared by the native and wasm GoogleTest suites.
 #pragma once
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <climits>
+#include <cstdlib>
 #include <string>
 
 #include "io/mesh_file.hpp"
@@ -9,8 +14,20 @@ namespace billow::test {
 
 inline std::string meshPath(const std::string& name) { return std::string(BILLOW_MESH_DIR) + "/" + name; }
 
-inline TriMesh loadShared(const std::string& name) {
-  return readMeshBytes(readFileBytes(meshPath(name)), name);
+inline TriMesh loadShared(const std::string& name) { return readMeshBytes(readFileBytes(meshPath(name)), name); }
+
+// The billow CLI built next to this test binary (native suites only run it).
+inline std::string cliPath() {
+  char buf[PATH_MAX];
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  const std::string exe(buf, n > 0 ? static_cast<size_t>(n) : 0);
+  return exe.substr(0, exe.find_last_of('/')) + "/billow";
+}
+
+// Runs a shell command with its stderr dropped; its exit code, or -1 when it did not exit normally.
+inline int runQuiet(const std::string& command) {
+  const int status = std::system((command + " 2>/dev/null").c_str());
+  return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
 }  // namespace billow::test
