@@ -34,8 +34,10 @@ async function drawTwoSeams(page) {
   for (const p of [a, b, c]) await clickAt(page, p);
   // Before closing, the cursor over the first point shows the snap (orange).
   await page.mouse.move(a.x, a.y);
-  await page.waitForTimeout(100);
-  assert.equal(await page.evaluate(() => window.billow.app.panes.target.seams.cursor.material.color.getHexString()), 'd55e00');
+  const snapColor = () => window.billow.app.panes.target.seams.cursor.material.color.getHexString();
+  // Wait for the cursor to turn (under load a frame may be late), then check it did.
+  await page.waitForFunction(() => window.billow.app.panes.target.seams.cursor.material.color.getHexString() === 'd55e00', null, { timeout: 5000 }).catch(() => {});
+  assert.equal(await page.evaluate(snapColor), 'd55e00');
   await clickAt(page, a);
   await waitSummary(page, /1 seam, 2 segments/);
   // Across the loop: from the middle of the curve a-b to the middle of b-c, so it snaps at both ends.

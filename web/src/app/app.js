@@ -454,8 +454,7 @@ export class App {
   // the link too (quantized and compressed), unless it makes the link too long.
   async shareLink() {
     try {
-      const mesh = this.design.target.example ? null : { positions: this.target.positions, indices: this.target.indices };
-      const fragment = await encodeDesign(this.design, mesh);
+      const fragment = await encodeDesign(this.design, this.ownMesh());
       const url = `${location.origin}${location.pathname}${location.search}#${fragment}`;
       await navigator.clipboard?.writeText(url).catch(() => {});
       this.messages.show('notice', 'A link to this design was copied to the clipboard.');
@@ -476,6 +475,11 @@ export class App {
     return (this.design.target.example ?? this.target?.fileName ?? 'design').replace(/\.[^.]+$/, '');
   }
 
+  // The target mesh when it is the designer's own file (links and the autosave carry it), else null.
+  ownMesh() {
+    return this.design.target.example ? null : { positions: this.target.positions, indices: this.target.indices };
+  }
+
   // This tab now autosaves (the tab that did was closed): the design is saved at once, not only after the
   // next edit.
   becamePrimary() {
@@ -485,8 +489,7 @@ export class App {
   // Every tab saves its own record; the tab that autosaves (tab-guard.js) also the shared one.
   save() {
     if (!this.target) return;
-    const mesh = this.design.target.example ? undefined : { positions: this.target.positions, indices: this.target.indices };
-    const record = { design: this.design, mesh };
+    const record = { design: this.design, mesh: this.ownMesh() };
     const keys = [this.tabKey, this.tabGuard && !this.tabGuard.isPrimary ? null : AUTOSAVE_KEY].filter(Boolean);
     Promise.all(keys.map((key) => autosave.save(key, record))).catch((error) =>
       this.messages.show('warning', `Autosave failed (${error?.message || error}); save your design to a file.`),

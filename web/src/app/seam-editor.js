@@ -3,7 +3,7 @@
 // history, and asks the worker for the segmentation after each committed edit.
 import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
-import { symmetryPlane, mirrorPoint, addMirroredTwin } from './symmetry.js';
+import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf } from './symmetry.js';
 
 const keyOf = (seam) => JSON.stringify([seam.points, seam.closed, Boolean(seam.smooth)]);
 const PICK_PX = 10;
@@ -68,11 +68,8 @@ export class SeamEditor {
   }
 
   // The 3D position (target units) of a surface point.
-  positionOf({ face, bary }) {
-    const { positions, indices } = this.app.target;
-    const out = [0, 0, 0];
-    for (let c = 0; c < 3; c++) for (let k = 0; k < 3; k++) out[k] += bary[c] * positions[3 * indices[3 * face + c] + k];
-    return out;
+  positionOf(point) {
+    return positionOf(this.app.target, point);
   }
 
   traceFailed(seam, error) {
