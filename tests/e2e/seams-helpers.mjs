@@ -37,3 +37,28 @@ export async function seamMidScreenPoint(page, seam, k) {
     return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
   }, [seam, k]);
 }
+
+// Click on seam `seam`'s curve between control points k and k+1 while drawing, so the new point snaps to
+// it. Hovers first and waits for the cursor's snap colour (a frame may be late under load); recomputes the
+// screen point if the view changed meanwhile. Throws with what is under the pointer when it cannot snap.
+export async function clickOnSeam(page, seam, k) {
+  let p = null;
+  for (let attempt = 0; attempt < 3; attempt++) {
+    p = await seamMidScreenPoint(page, seam, k);
+    await page.mouse.move(p.x, p.y);
+    const snapped = await page
+      .waitForFunction(() => window.billow.app.panes.target.seams.cursor.material.color.getHexString() === 'd55e00', null, { timeout: 3000 })
+      .then(() => true, () => false);
+    if (snapped) {
+      const before = await page.evaluate(() => window.billow.seamTool.drawing?.points.length ?? 0);
+      await page.mouse.click(p.x, p.y);
+      await page.waitForFunction((n) => (window.billow.seamTool.drawing?.points.length ?? 0) > n, before, { timeout: 5000 });
+      return p;
+    }
+  }
+  const under = await page.evaluate(({ x, y }) => {
+    const el = document.elementFromPoint(x, y);
+    return el ? `${el.tagName.toLowerCase()}${el.id ? '#' + el.id : ''}.${el.className}` : 'nothing';
+  }, p);
+  throw new Error(`the pointer at (${p.x.toFixed(0)}, ${p.y.toFixed(0)}) does not snap to seam ${seam}; under it: ${under}`);
+}

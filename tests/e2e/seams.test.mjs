@@ -6,13 +6,18 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { serve, launch, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
-import { surfaceScreenPoints, seamMidScreenPoint } from './seams-helpers.mjs';
+import { surfaceScreenPoints, clickOnSeam } from './seams-helpers.mjs';
 
 const env = useBrowser({ before, after });
 
 const summary = (page) => page.textContent('#seam-panel .summary');
+// Waits for the seam panel's summary to match; a timeout says what it showed instead.
 const waitSummary = (page, re) =>
-  page.waitForFunction((source) => new RegExp(source).test(document.querySelector('#seam-panel .summary')?.textContent), re.source);
+  page
+    .waitForFunction((source) => new RegExp(source).test(document.querySelector('#seam-panel .summary')?.textContent), re.source)
+    .catch(async (error) => {
+      throw new Error(`seam summary never matched ${re}; it shows "${await summary(page)}" (${error.message})`);
+    });
 
 async function openSphere(page) {
   await page.selectOption('#example-select', 'sphere');
@@ -41,8 +46,8 @@ async function drawTwoSeams(page) {
   await clickAt(page, a);
   await waitSummary(page, /1 seam, 2 segments/);
   // Across the loop: from the middle of the curve a-b to the middle of b-c, so it snaps at both ends.
-  await clickAt(page, await seamMidScreenPoint(page, 0, 0));
-  await clickAt(page, await seamMidScreenPoint(page, 0, 1));
+  await clickOnSeam(page, 0, 0);
+  await clickOnSeam(page, 0, 1);
   await page.keyboard.press('Enter');
   await waitSummary(page, /2 seams, 3 segments/);
 }
