@@ -23,9 +23,10 @@ build_wasm() {
 }
 
 build_web() {
-  log "building the web app (web/dist)"
+  local dist="${BILLOW_DIST:-$ROOT/web/dist}" # BILLOW_DIST: build the site elsewhere (a second checkout's tests)
+  log "building the web app ($dist)"
   (cd "$ROOT" && npx vite build web --logLevel warn)
-  node "$ROOT/scripts/site-report.mjs" "$ROOT/web/dist"  # bundle sizes, raw and gzipped
+  node "$ROOT/scripts/site-report.mjs" "$dist" # bundle sizes, raw and gzipped
 }
 
 case "$what" in

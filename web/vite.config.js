@@ -59,7 +59,7 @@ export default defineConfig({
   worker: { format: 'es' },
   plugins: [serviceWorker()],
   build: {
-    outDir: resolve(root, 'dist'),
+    outDir: process.env.BILLOW_DIST || resolve(root, 'dist'),
     emptyOutDir: true,
     target: 'es2022',
     chunkSizeWarningLimit: 1000,

@@ -10,7 +10,7 @@ import { fileURLToPath } from 'node:url';
 import { chromium } from 'playwright-core';
 
 export const ROOT = fileURLToPath(new URL('../..', import.meta.url));
-export const DIST = join(ROOT, 'web/dist');
+export const DIST = process.env.BILLOW_DIST || join(ROOT, 'web/dist');
 export const SHOTS = join(ROOT, 'build/screenshots');
 export const MESHES = join(ROOT, '../shared/meshes');
 
