@@ -18,7 +18,9 @@ using nlohmann::json;
 //   const s = new Module.InflationSession();          // never throws
 //   s.load(patternJson, optionsJson)                  // -> {"status":"ok","result":{vertices, triangles, panels,
 //                                                     //     panelVertices, warnings:[{code,message,mismatch}]}}
-//     optionsJson (all optional): {"tolerance":1e-5, "maxIterations":400, "pressure":PA, "band":1e-4}
+//     optionsJson (all optional): {"tolerance":1e-5, "maxIterations":400, "pressure":PA, "band":1e-4,
+//                                  "memoryBudget":BYTES (default: the heap's room; a pattern needing more
+//                                  is refused with "memory.budget" before any work)}
 //   s.setStart(ptr, numVertices)                       // #V x 3 doubles: restart from these positions (target)
 //   s.step(maxIterations, maxMillis)                   // -> result {state:"running"|"converged"|"failed",
 //                                                     //     iteration, residual, volume, energy, message}
@@ -44,6 +46,7 @@ using nlohmann::json;
 #include "simulate/example_patterns.hpp"
 #include "simulate/inflate.hpp"
 #include "simulate/initial_shape.hpp"
+#include "util/memory_budget.hpp"
 
 namespace {
 
@@ -57,6 +60,7 @@ class InflationSession {
       std::vector<billow::PatternWarning> warnings;
       pattern_ = billow::readPatternJson(patternJson, &warnings);
       billow::InflateOptions o;
+      double budget = billow::availableBytes();  // "memoryBudget" (bytes) replaces it, for tests
       if (!optionsJson.empty()) {
         json j = json::parse(optionsJson, nullptr, false);
         if (j.is_discarded() || !j.is_object())
@@ -67,7 +71,14 @@ class InflationSession {
         pattern_.pressure = j.value("pressure", pattern_.pressure);
         if (!(pattern_.pressure > 0) || !(o.tolerance > 0) || o.maxIterations < 1 || !(o.band > 0))
           throw billow::Error("inflate.options", "Pressure, tolerance, band and iteration limit must be positive.");
+        if (j.contains("memoryBudget") && j["memoryBudget"].is_number()) budget = j["memoryBudget"].get<double>();
       }
+      long long triangles = 0;
+      for (const auto& panel : pattern_.panels) triangles += panel.triangles.rows();
+      billow::requireMemory(billow::inflationBytes(triangles), budget,
+                            "Inflating this pattern (" + std::to_string(triangles) + " triangles)",
+                            "Use a pattern with fewer triangles, or inflate it with the billow command-line tool "
+                            "on a computer with more memory.");
       billow::SewnMesh mesh = billow::sewPattern(pattern_);
       const billow::Vertices start = billow::startFromInflated(pattern_, mesh);
       solver_ =

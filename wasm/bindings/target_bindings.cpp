@@ -40,6 +40,7 @@
 #include "seams/surface_point.hpp"
 #include "segment/segmentation.hpp"
 #include "simulate/materials.hpp"
+#include "util/memory_budget.hpp"
 
 namespace {
 
@@ -94,6 +95,7 @@ class TargetSession {
   std::string startOptimization(const std::string& seamsJson, const std::string& optionsJson) {
     return guarded([&] {
       optimizer_.reset();
+      requireOptimizationMemory(optionsJson);
       const billow::BuiltPattern built = makePattern(seamsJson, optionsJson);
       if (built.ok()) {
         std::vector<double> weights;
@@ -142,6 +144,19 @@ class TargetSession {
   int optimizedVertices() const { return optimizer_ ? static_cast<int>(optimizer_->inflated().rows()) : 0; }
   uintptr_t optimizedPositionsPtr() const {
     return optimizer_ ? reinterpret_cast<uintptr_t>(optimizer_->inflated().data()) : 0;
+  }
+
+  // Refuses, before any work, a resolution whose optimization would not fit in memory ("memoryBudget" in
+  // the options, in bytes, replaces the heap's room for tests).
+  void requireOptimizationMemory(const std::string& optionsJson) const {
+    const json o = parse(optionsJson);
+    const double triangles = o.is_object() ? o.value("triangles", 3000.0) : 3000.0;
+    const double budget = o.is_object() && o.contains("memoryBudget") && o["memoryBudget"].is_number()
+                              ? o["memoryBudget"].get<double>()
+                              : billow::availableBytes();
+    billow::requireMemory(billow::optimizationBytes(static_cast<long long>(triangles), mesh_.F.rows()), budget,
+                          "Optimizing panels of " + std::to_string(static_cast<long long>(triangles)) + " triangles",
+                          "Choose a coarser panel resolution.");
   }
 
   // Reads { scale, triangles, pressure, material } (see the top of this file) into build options.

@@ -1,5 +1,5 @@
-// billow design DESIGN.json --out-dir DIR [--resolution N] [--no-optimize] [--quiet]: the design's sewn
-// pattern (DIR/pattern.json, with the target shape as "inflated" start; an internal panel per internal
+// billow design DESIGN.json --out-dir DIR [--resolution N] [--no-optimize] [--max-memory MB] [--quiet]: the design's
+// sewn pattern (DIR/pattern.json, with the target shape as "inflated" start; an internal panel per internal
 // connection), its inflated shape from the target
 // (DIR/inflated.obj) and a report (DIR/report.json: distance to the target, seam length mismatch, solver
 // figures, timings). Unless --no-optimize, the panels are optimized first (optimize/pattern_optimizer.hpp)
@@ -20,6 +20,7 @@
 #include "simulate/inflate.hpp"
 #include "simulate/initial_shape.hpp"
 #include "util/error.hpp"
+#include "util/memory_budget.hpp"
 
 namespace billow::cli {
 
@@ -76,10 +77,11 @@ int positiveInt(const Args& args, const std::string& name, int fallback) {
 }  // namespace
 
 int designCommand(const std::vector<std::string>& argv) {
-  const Args args = parseArgs(argv, {"--out-dir", "--resolution"});
+  const Args args = parseArgs(argv, {"--out-dir", "--resolution", "--max-memory"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir")) {
     std::fprintf(args.has("--help") ? stdout : stderr,
-                 "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize] [--quiet]\n\n"
+                 "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize]\n"
+                 "                     [--max-memory MB] [--quiet]\n\n"
                  "Makes the sewn pattern of a design (its segments flattened into panels of about TRIANGLES\n"
                  "triangles in all, default 3000, and an internal panel for each internal connection), inflates it "
                  "from the target shape and writes\n"
@@ -87,7 +89,8 @@ int designCommand(const std::vector<std::string>& argv) {
                  "The panels are optimized so that the inflated shape comes close to the target, unless\n"
                  "--no-optimize.\n"
                  "Exit code 0 when the inflated shape settles, 1 when the design cannot be patterned or\n"
-                 "the simulation does not settle (the files written so far stay).\n");
+                 "the simulation does not settle (the files written so far stay). A resolution whose predicted\n"
+                 "memory need exceeds --max-memory (default: this computer's memory) is refused before work.\n");
     return args.has("--help") ? 0 : 2;
   }
   const bool quiet = args.has("--quiet");
@@ -97,7 +100,14 @@ int designCommand(const std::vector<std::string>& argv) {
   options.triangles = positiveInt(args, "--resolution", options.triangles);
   const bool optimizePanels = !args.has("--no-optimize");
 
+  const double budget = memoryBudgetOption(args);
   const auto scene = loadDesignScene(args.positional[0], quiet);
+  const double neededBytes =
+      optimizePanels ? optimizationBytes(options.triangles, scene->target.F.rows()) : inflationBytes(options.triangles);
+  requireMemory(neededBytes, budget,
+                std::string(optimizePanels ? "Optimizing" : "Inflating") + " panels of " +
+                    std::to_string(options.triangles) + " triangles",
+                "Choose a coarser --resolution.");
   const Design& design = scene->design;
   printProblems(scene->segmentation.problems);
   if (!scene->segmentation.ok()) {
@@ -216,7 +226,8 @@ int designCommand(const std::vector<std::string>& argv) {
         {"pattern", bp.figures.totalMs},
         {"optimize", optimizeMs},
         {"inflate", r.timings.totalMs + r.timings.setupMs},
-        {"total", msSince(t0)}}}};
+        {"total", msSince(t0)}}},
+      {"memory", {{"predicted_bytes", neededBytes}, {"peak_resident_bytes", peakResidentBytes()}}}};
   writeTextFile(dir + "/report.json", report.dump(2) + "\n");
   std::fprintf(stderr,
                "%s after %d iterations; distance to target: rms %.2f %%, max %.2f %% of the diagonal (%.0f ms)\n",

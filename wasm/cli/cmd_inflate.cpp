@@ -1,5 +1,5 @@
 // billow inflate PATTERN.json [--out RESULT.json] [--obj INFLATED.obj] [--pressure PA] [--tolerance T]
-//                 [--max-iterations N] [--quiet]
+//                 [--max-iterations N] [--max-memory MB] [--quiet]
 #include <cstdio>
 #include <fstream>
 #include <nlohmann/json.hpp>
@@ -11,6 +11,7 @@
 #include "simulate/inflate.hpp"
 #include "simulate/initial_shape.hpp"
 #include "util/error.hpp"
+#include "util/memory_budget.hpp"
 
 namespace billow::cli {
 namespace {
@@ -79,15 +80,17 @@ nlohmann::json resultJson(const Pattern& p, const SewnMesh& mesh, const InflateR
 }  // namespace
 
 int inflateCommand(const std::vector<std::string>& argv) {
-  const Args args = parseArgs(argv, {"--out", "--obj", "--pressure", "--material", "--tolerance", "--max-iterations"});
+  const Args args = parseArgs(
+      argv, {"--out", "--obj", "--pressure", "--material", "--tolerance", "--max-iterations", "--max-memory"});
   if (args.has("--help") || args.positional.size() != 1) {
-    std::fprintf(
-        args.has("--help") ? stdout : stderr,
-        "usage: billow inflate PATTERN.json [--out RESULT.json] [--obj INFLATED.obj] [--pressure PA]\n"
-        "                      [--material foil|pvc|ripstop|tpu] [--tolerance T] [--max-iterations N] [--quiet]\n\n"
-        "Inflates a sewn pattern (tension-field membrane, Skouras et al. 2014) and writes the\n"
-        "inflated shape. Exit code 0 when it settles, 1 when the pattern is rejected or the\n"
-        "simulation does not settle (the last shape is still written).\n");
+    std::fprintf(args.has("--help") ? stdout : stderr,
+                 "usage: billow inflate PATTERN.json [--out RESULT.json] [--obj INFLATED.obj] [--pressure PA]\n"
+                 "                      [--material foil|pvc|ripstop|tpu] [--tolerance T] [--max-iterations N]\n"
+                 "                      [--max-memory MB] [--quiet]\n\n"
+                 "Inflates a sewn pattern (tension-field membrane, Skouras et al. 2014) and writes the\n"
+                 "inflated shape. Exit code 0 when it settles, 1 when the pattern is rejected or the\n"
+                 "simulation does not settle (the last shape is still written). A pattern whose predicted\n"
+                 "memory need exceeds --max-memory (default: this computer's memory) is refused before work.\n");
     return args.has("--help") ? 0 : 2;
   }
   const std::string path = args.positional[0];
@@ -100,6 +103,12 @@ int inflateCommand(const std::vector<std::string>& argv) {
   InflateOptions o;
   o.tolerance = number(args, "--tolerance", o.tolerance);
   o.maxIterations = static_cast<int>(number(args, "--max-iterations", o.maxIterations));
+  long long patternTriangles = 0;
+  for (const auto& panel : p.panels) patternTriangles += panel.triangles.rows();
+  const double neededBytes = inflationBytes(patternTriangles);
+  requireMemory(neededBytes, memoryBudgetOption(args),
+                "Inflating this pattern (" + std::to_string(patternTriangles) + " triangles)",
+                "Use a pattern with fewer triangles.");
   SewnMesh mesh = sewPattern(p);
   const Vertices start = startFromInflated(p, mesh);
   InflationSolver solver(mesh, p.material, p.pressure, o, start);
@@ -112,7 +121,11 @@ int inflateCommand(const std::vector<std::string>& argv) {
       std::fprintf(stderr, "  iteration %3d  residual %.3e  volume %.6g m^3\n", solver.iterations(), solver.residual(),
                    solver.volume());
   const InflateResult r = solver.result();
-  if (args.has("--out")) writeFile(args.get("--out"), resultJson(p, mesh, r).dump() + "\n");
+  if (args.has("--out")) {
+    nlohmann::json out = resultJson(p, mesh, r);
+    out["memory"] = {{"predicted_bytes", neededBytes}, {"peak_resident_bytes", peakResidentBytes()}};
+    writeFile(args.get("--out"), out.dump() + "\n");
+  }
   if (args.has("--obj")) writeFile(args.get("--obj"), toObj(mesh, r.positions));
   std::fprintf(stderr, "%s after %d iterations (residual %.2e), volume %.6g m^3, %.0f ms\n",
                r.converged ? "settled" : "did not settle", r.iterations, r.residual, r.volume,

@@ -1,9 +1,12 @@
 #include "cli/commands.hpp"
 
+#include <sys/resource.h>
+
 #include <algorithm>
 
 #include "simulate/materials.hpp"
 #include "util/error.hpp"
+#include "util/memory_budget.hpp"
 
 namespace billow::cli {
 
@@ -49,6 +52,19 @@ double numberOption(const Args& args, const std::string& name, double fallback, 
   } catch (const std::exception&) {
     throw Error("cli.usage", "the option " + name + " needs " + what + ", not '" + v + "'");
   }
+}
+
+double memoryBudgetOption(const Args& args) {
+  if (!args.has("--max-memory")) return availableBytes();
+  const double mb = numberOption(args, "--max-memory", 0, "a size in MB");
+  if (!(mb > 0)) throw Error("cli.usage", "the option --max-memory needs a positive size in MB");
+  return mb * 1024 * 1024;
+}
+
+double peakResidentBytes() {
+  rusage usage{};
+  getrusage(RUSAGE_SELF, &usage);
+  return static_cast<double>(usage.ru_maxrss) * 1024.0;  // Linux reports kilobytes
 }
 
 Args parseArgs(const std::vector<std::string>& args, const std::vector<std::string>& flagsWithValue) {

@@ -27,6 +27,11 @@ Args parseArgs(const std::vector<std::string>& args, const std::vector<std::stri
 Material materialOption(const Args& args, const Material& fallback);
 // The number after option `name`, or fallback when absent; `what` names it in the error ("a length in mm").
 double numberOption(const Args& args, const std::string& name, double fallback, const std::string& what = "a number");
+// --max-memory MB, else the machine's physical memory: the budget a computation's predicted need is
+// checked against before it starts (util/memory_budget.hpp).
+double memoryBudgetOption(const Args& args);
+// The most memory this process has held so far (peak resident set), in bytes.
+double peakResidentBytes();
 
 int checkCommand(const std::vector<std::string>& args);
 int inflateCommand(const std::vector<std::string>& args);
