@@ -8,6 +8,7 @@
 
 #include "seams/geodesic.hpp"
 #include "seams/seam_curve.hpp"
+#include "seams/surface_distance.hpp"
 #include "test_support.hpp"
 
 using namespace billow;
@@ -55,6 +56,42 @@ TEST(SurfaceProjection, MatchesBruteForceAndIsFast) {
   const double perQuery = msSince(t0) / 1000;
   std::printf("[timing] projection on cat (%d triangles): %.4f ms per query\n", m.numTriangles(), perQuery);
   EXPECT_LT(perQuery, 1.0);
+}
+
+TEST(SurfaceDistance, SignedOutsidePositiveInsideNegativeOnACubeAndOnSpot) {
+  // The cube [-1, 1]^3, outward triangles.
+  TriMesh cube;
+  cube.V.resize(8, 3);
+  for (int i = 0; i < 8; ++i) cube.V.row(i) << (i & 1 ? 1 : -1), (i & 2 ? 1 : -1), (i & 4 ? 1 : -1);
+  cube.F.resize(12, 3);
+  cube.F << 0, 2, 1, 1, 2, 3, 4, 5, 6, 5, 7, 6, 0, 1, 4, 1, 5, 4, 2, 6, 3, 3, 6, 7, 0, 4, 2, 2, 4, 6, 1, 3, 5, 3, 7, 5;
+  const SurfaceProjector cubeProjector(cube);
+  Vertices q(5, 3);
+  q << 0, 0, 1.5, 0, 0, 0.5, 0, 0, 0, 1.5, 1.5, 0, 0.9, 0.95, 0;
+  const Eigen::VectorXd d = signedDistances(cube, cubeProjector, q);
+  EXPECT_NEAR(d[0], 0.5, 1e-12);
+  EXPECT_NEAR(d[1], -0.5, 1e-12);
+  EXPECT_NEAR(d[2], -1.0, 1e-12);
+  EXPECT_NEAR(d[3], std::sqrt(0.5), 1e-12) << "outside an edge";
+  EXPECT_NEAR(d[4], -0.05, 1e-12) << "inside, near an edge";
+  // Spot: every vertex pushed out along its area-weighted normal by 0.2 % of the box diagonal is
+  // outside by about that much, pushed in is inside.
+  const TriMesh spot = test::loadShared("spot.obj");
+  const SurfaceProjector projector(spot);
+  const double h = 0.002 * (spot.V.colwise().maxCoeff() - spot.V.colwise().minCoeff()).norm();
+  Vertices normals = Vertices::Zero(spot.V.rows(), 3);
+  for (int f = 0; f < spot.numTriangles(); ++f) {
+    const Eigen::Vector3d a = spot.V.row(spot.F(f, 0)), b = spot.V.row(spot.F(f, 1)), c = spot.V.row(spot.F(f, 2));
+    for (int k = 0; k < 3; ++k) normals.row(spot.F(f, k)) += (b - a).cross(c - a).transpose();
+  }
+  normals.rowwise().normalize();
+  const Eigen::VectorXd out = signedDistances(spot, projector, spot.V + h * normals);
+  const Eigen::VectorXd in = signedDistances(spot, projector, spot.V - h * normals);
+  int wrongSide = 0;
+  for (int v = 0; v < spot.V.rows(); ++v) wrongSide += (out[v] <= 0) + (in[v] >= 0);
+  EXPECT_EQ(wrongSide, 0);
+  EXPECT_NEAR(out.mean(), h, 0.2 * h);
+  EXPECT_NEAR(in.mean(), -h, 0.2 * h);
 }
 
 TEST(Geodesic, FollowsGreatCirclesOnTheSphere) {

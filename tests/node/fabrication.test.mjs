@@ -2,7 +2,7 @@
 // balloon figures (envelope mass, helium lift, safety factor) checked against hand computations.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { parseFabrication, patternStatRows, balloonFigures, balloonRows, formatMillimeters } from '../../web/src/app/fabrication.js';
+import { parseFabrication, patternStatRows, balloonFigures, balloonRows, formatMillimeters, peakStress } from '../../web/src/app/fabrication.js';
 
 test('fabrication settings default, keep good fields and warn about bad ones', () => {
   const warnings = [];
@@ -49,5 +49,36 @@ test('a foil sphere floats on helium when its envelope is lighter than the lift'
   const custom = balloonFigures({ ...pattern, material: { name: 'mine', thickness: 1e-4, youngs_modulus: 1e8 } }, 0.1, 1e6);
   assert.equal(custom.massGrams, null);
   assert.equal(custom.safetyFactor, null);
-  assert.deepEqual(balloonRows(custom).map(([label]) => label), ['Helium lift']);
+  assert.deepEqual(balloonRows(custom).map(([label]) => label), ['Helium lift']); // no pressure given: no blower
+  // Foil is sealed: no blower row. Ripstop at 400 Pa: a fan blower does; PVC at 5 kPa needs a pump.
+  assert.equal(big.blowerPascals, null);
+  assert.ok(!Object.fromEntries(balloonRows(big)).Blower);
+  const ripstop = { ...pattern, pressure: 400, material: { name: 'ripstop', thickness: 1e-4, youngs_modulus: 5e8 } };
+  assert.match(Object.fromEntries(balloonRows(balloonFigures(ripstop, 2, 1e6))).Blower, /^400 Pa static pressure/);
+  const pvc = { ...pattern, pressure: 5000, material: { name: 'pvc', thickness: 3e-4, youngs_modulus: 2e7 } };
+  assert.match(Object.fromEntries(balloonRows(balloonFigures(pvc, 0.5, 1e6))).Blower, /^5\.0 kPa: more than a fan blower gives/);
+});
+
+test('the peak stress is what the most stressed 1 % of the surface reaches, not a single sliver', () => {
+  // 100 right triangles of area 0.5 at 1 MPa, one sliver of area 5e-4 at 100 MPa, one internal at 500 MPa.
+  const positions = [];
+  const triangles = [];
+  const stress = [];
+  const outer = [];
+  const add = (p, q, r, sigma, isOuter = 1) => {
+    const base = positions.length / 3;
+    positions.push(...p, ...q, ...r);
+    triangles.push(base, base + 1, base + 2);
+    stress.push(sigma, 0);
+    outer.push(isOuter);
+  };
+  for (let i = 0; i < 100; i++) add([i, 0, 0], [i + 1, 0, 0], [i, 1, 0], 1e6);
+  add([0, 0, 1], [1, 0, 1], [0, 0.001, 1], 100e6);
+  add([0, 0, 2], [1, 0, 2], [0, 1, 2], 500e6, 0);
+  const result = { positions, triangles, outer, stress };
+  assert.equal(peakStress(result), 1e6);
+  // When 5 % of the surface (5 triangles) is at 10 MPa, that is the peak.
+  for (let f = 0; f < 5; f++) stress[2 * f] = 10e6;
+  assert.equal(peakStress(result), 10e6);
+  assert.equal(peakStress({ ...result, stress: [] }), 0);
 });

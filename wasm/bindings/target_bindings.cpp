@@ -23,6 +23,9 @@
 //                                                 seamMismatch, objective }
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
+//   t.distanceToTarget(positionsPtr, numVertices, scale) -> { rms, max, diagonal } (rms and max of |d| over the
+//     diagonal of the target's box) and distancesPtr() #V f64: per point [m], the signed distance to the target
+//     scaled by `scale` (positive outside); for the "distance to target" colors of an inflated shape
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -37,6 +40,7 @@
 #include "seams/geodesic.hpp"
 #include "seams/mesh_topology.hpp"
 #include "seams/seam_curve.hpp"
+#include "seams/surface_distance.hpp"
 #include "seams/surface_point.hpp"
 #include "segment/segmentation.hpp"
 #include "simulate/materials.hpp"
@@ -158,6 +162,25 @@ class TargetSession {
                           "Optimizing panels of " + std::to_string(static_cast<long long>(triangles)) + " triangles",
                           "Choose a coarser panel resolution.");
   }
+
+  std::string distanceToTarget(uintptr_t positions, int numVertices, double scale) {
+    return guarded([&] {
+      requireTarget();
+      if (!(scale > 0) || !std::isfinite(scale))
+        throw billow::Error("pattern.bad-scale", "The target's size is not valid.");
+      if (numVertices < 0) throw billow::Error("seams.bad-input", "The shape has no points.");
+      // In target units, on the target's own projector (a running optimization's scaled target stays).
+      const billow::Vertices x =
+          Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3) / scale;
+      if (!x.allFinite()) throw billow::Error("seams.bad-input", "The shape has invalid coordinates.");
+      distances_ = scale * billow::signedDistances(mesh_, *projector_, x);
+      const double diagonal = scale * (mesh_.V.colwise().maxCoeff() - mesh_.V.colwise().minCoeff()).norm();
+      const double rms = numVertices ? std::sqrt(distances_.squaredNorm() / numVertices) : 0;
+      const double max = numVertices ? distances_.cwiseAbs().maxCoeff() : 0;
+      return json({{"rms", rms / diagonal}, {"max", max / diagonal}, {"diagonal", diagonal}}).dump();
+    });
+  }
+  uintptr_t distancesPtr() const { return reinterpret_cast<uintptr_t>(distances_.data()); }
 
   // Reads { scale, triangles, pressure, material } (see the top of this file) into build options.
   static billow::PatternBuildOptions readBuildOptions(const std::string& optionsJson, double& scale) {
@@ -374,6 +397,7 @@ class TargetSession {
   std::unique_ptr<billow::SurfaceProjector> projector_;
   std::unique_ptr<billow::GeodesicSolver> geodesic_;
   std::vector<int> faceSegment_;
+  Eigen::VectorXd distances_;  // of the last distanceToTarget
 };
 
 }  // namespace
@@ -394,5 +418,7 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("cutTriangles", &TargetSession::cutTriangles)
       .function("cutPositionsPtr", &TargetSession::cutPositionsPtr)
       .function("cutTrianglesPtr", &TargetSession::cutTrianglesPtr)
-      .function("faceSegmentPtr", &TargetSession::faceSegmentPtr);
+      .function("faceSegmentPtr", &TargetSession::faceSegmentPtr)
+      .function("distanceToTarget", &TargetSession::distanceToTarget)
+      .function("distancesPtr", &TargetSession::distancesPtr);
 }

@@ -68,10 +68,37 @@ function panelArea(panel) {
   return Math.abs(area);
 }
 
+// The stress that the most stressed `share` of the outer surface reaches [Pa]: the figure to judge bursting
+// by. The single highest triangle is often a sliver where panels meet (a spike of the simulation mesh,
+// not of the sheet), so it is not used alone. result: { positions #V*3, triangles #F*3, outer #F,
+// stress #F*2 (max principal stress first) }.
+export function peakStress(result, share = 0.01) {
+  const { positions: x, triangles: t, outer, stress } = result;
+  if (!stress?.length) return 0;
+  const faces = [];
+  let total = 0;
+  for (let f = 0; f < outer.length; f++) {
+    if (!outer[f]) continue;
+    const [a, b, c] = [3 * t[3 * f], 3 * t[3 * f + 1], 3 * t[3 * f + 2]];
+    const u = [x[b] - x[a], x[b + 1] - x[a + 1], x[b + 2] - x[a + 2]];
+    const v = [x[c] - x[a], x[c + 1] - x[a + 1], x[c + 2] - x[a + 2]];
+    const area = 0.5 * Math.hypot(u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]);
+    faces.push([stress[2 * f], area]);
+    total += area;
+  }
+  faces.sort((p, q) => q[0] - p[0]);
+  let covered = 0;
+  for (const [sigma, area] of faces) {
+    covered += area;
+    if (covered >= share * total) return sigma;
+  }
+  return faces.length ? faces[faces.length - 1][0] : 0;
+}
+
 // What a balloon maker asks of an inflated pattern. pattern: panels in meters with its material
 // { name, thickness, youngs_modulus, density? }; volume [m³]; maxStress [Pa].
-// Returns { massGrams, liftGrams, floats, safetyFactor } (null figures when the material's density or
-// strength is unknown).
+// Returns { massGrams, liftGrams, floats, safetyFactor, blowerPascals } (null figures when the material's
+// density or strength is unknown; blowerPascals only for structures a blower can keep up).
 export function balloonFigures(pattern, volume, maxStress) {
   const material = pattern.material ?? {};
   const preset = findMaterialPreset(material.name);
@@ -85,8 +112,14 @@ export function balloonFigures(pattern, volume, maxStress) {
     liftGrams,
     floats: massGrams === null ? null : liftGrams > massGrams,
     safetyFactor: strength && maxStress > 0 ? strength / maxStress : null,
+    // Fabric and plastic structures are often kept up by a fan blower: its static pressure must reach the
+    // design's. Foil balloons are sealed (helium or a straw), so they get none.
+    blowerPascals: material.name !== 'foil' && pattern.pressure > 0 ? pattern.pressure : null,
   };
 }
+
+// About the most static pressure a fan blower for inflatables gives (a 1 HP bounce-house blower: 1.2 kPa).
+export const BLOWER_MAX_PA = 1200;
 
 // Rows for the inflated pane's figures box.
 export function balloonRows(figures) {
@@ -94,6 +127,11 @@ export function balloonRows(figures) {
   if (figures.massGrams !== null) rows.push(['Envelope mass', `${figures.massGrams.toFixed(figures.massGrams < 10 ? 1 : 0)} g`]);
   const lift = `${figures.liftGrams.toFixed(figures.liftGrams < 10 ? 1 : 0)} g`;
   rows.push(['Helium lift', figures.floats === null ? lift : `${lift}, ${figures.floats ? 'floats' : 'does not float'} (net ${(figures.liftGrams - figures.massGrams).toFixed(0)} g)`]);
+  if (figures.blowerPascals !== null) {
+    const p = figures.blowerPascals;
+    const text = p < 1000 ? `${Math.round(p)} Pa` : `${(p / 1000).toFixed(1)} kPa`;
+    rows.push(['Blower', p <= BLOWER_MAX_PA ? `${text} static pressure (a fan blower gives up to about 1.2 kPa)` : `${text}: more than a fan blower gives; seal it and use a pump`]);
+  }
   if (figures.safetyFactor !== null)
     rows.push(['Safety factor', `${figures.safetyFactor.toFixed(1)}${figures.safetyFactor < 1 ? ' — it would burst' : figures.safetyFactor < 2 ? ' — too close to bursting' : ''}`]);
   return rows;

@@ -101,6 +101,9 @@ export function createHandlers(api) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);
     },
+    *[Op.distanceToTarget]({ positions, scale }) {
+      return requireSession().distanceToTarget(positions, scale);
+    },
     *[Op.memoryStats]() {
       return api.memoryStats();
     },

@@ -37,6 +37,9 @@ export const Op = Object.freeze({
   // { patternText, options } -> { svg, dxf, pdf: Uint8Array, statistics, cutLines }: the cut files and
   // printable tiles of a pattern (see SolverApi.exportPattern for the options).
   exportPattern: 'exportPattern',
+  // { positions (#V*3, meters), scale } -> { distances: Float32Array #V, rms, max, diagonal }: signed distance of
+  // each point to the target (positive outside), for the inflated pane's "distance to target" colors.
+  distanceToTarget: 'distanceToTarget',
   // {} -> [{ name, label, thickness, youngs_modulus, density, max_stress }]: the material presets.
   materialPresets: 'materialPresets',
   // {} -> { heapBytes, probe }: the wasm memory's size and where a fresh 1 MB block lands (the top of the
@@ -46,7 +49,7 @@ export const Op = Object.freeze({
 
 // Quick operations that only read the worker's state: they run at once, even between the steps of a
 // long operation, so drawing stays responsive while the panels inflate.
-export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.materialPresets, Op.memoryStats]);
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.distanceToTarget, Op.materialPresets, Op.memoryStats]);
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);

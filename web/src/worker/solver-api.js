@@ -225,6 +225,15 @@ export class TargetSession {
     return SolverApi.unwrap(this.session.optimizedPattern());
   }
 
+  // positions (#V*3, meters) -> { distances: Float32Array #V (signed, meters, positive outside the target),
+  // rms, max (of |d| over the target box's diagonal), diagonal [m] }; scale: meters per target unit.
+  distanceToTarget(positions, scale) {
+    const pos = Float64Array.from(positions);
+    const n = pos.length / 3;
+    const summary = this.api.withHeap([pos], (p) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale)));
+    return { ...summary, distances: new Float32Array(this.api.fromHeap(Float64Array, this.session.distancesPtr(), n)) };
+  }
+
   // The sewn pattern of the current seams: { ok, pattern (object), figures, problems }.
   buildPattern(seams, options) {
     return SolverApi.unwrap(this.session.buildPattern(JSON.stringify(seams), JSON.stringify(options)));

@@ -1,0 +1,100 @@
+// The inflated pane's colors: wrinkles (the compression field), stress (share of the material's strength,
+// with the safety factor) and distance to the target (signed: blue inside, orange outside). The distance
+// view shows why the flattened panels miss the target and how much closer the optimized ones come.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
+
+const env = useBrowser({ before, after });
+
+// The outer surface's vertex colors, counted: bluish (inside), orange (outside), pale (on target) and other.
+const colorCounts = (page) =>
+  page.evaluate(() => {
+    const pane = window.billow.app.panes.inflated;
+    const color = pane.outerMesh.geometry.getAttribute('color');
+    const counts = { blue: 0, orange: 0, pale: 0, other: 0 };
+    for (let v = 0; v < color.count; v++) {
+      const [r, g, b] = [color.getX(v), color.getY(v), color.getZ(v)];
+      if (r > 0.85 && g > 0.85 && b > 0.85) counts.pale++;
+      else if (b > r + 0.05) counts.blue++;
+      else if (r > b + 0.05) counts.orange++;
+      else counts.other++;
+    }
+    return counts;
+  });
+
+const legend = (page) =>
+  page.evaluate(() => {
+    const el = document.querySelector('#pane-inflated .legend');
+    return { hidden: el.hidden, title: el.children[0].textContent, ends: el.children[2].textContent, note: el.querySelector('.note').textContent };
+  });
+
+const waitInflated = (page) =>
+  page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
+
+test('the inflated shape colors by wrinkles, stress and distance to target; distance shows what optimization gains', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await waitInflated(page);
+  await page.waitForFunction(() => window.billow.app.panes.inflated.hasDistances, null, { timeout: 30000 });
+  // Wrinkles by default.
+  assert.equal(await page.inputValue('#color-select'), 'wrinkles');
+  assert.equal((await legend(page)).title, 'Wrinkles (compression)');
+  assert.equal(await page.isDisabled('#color-select option[value="distance"]'), false, 'distance is offered for the target\'s own panels');
+
+  // Distance to target, optimized panels.
+  await page.selectOption('#color-select', 'distance');
+  let l = await legend(page);
+  assert.equal(l.title, 'Distance to target');
+  assert.match(l.ends, /mm inside.*on target.*mm outside/);
+  const optimized = await page.evaluate(() => window.billow.app.panes.inflated.fields.distance);
+  assert.match(l.note, new RegExp(`Average ${(100 * optimized.rms).toFixed(2)} %`));
+  const optimizedColors = await colorCounts(page);
+  await screenshot(page, 'inflated-distance-optimized');
+
+  // Before optimization: pressure rounds the flattened panels, so they miss the target by more.
+  const serial = await page.evaluate(() => window.billow.app.panes.inflated.serial);
+  await page.click('#show-flattened');
+  await page.waitForFunction((s) => {
+    const pane = window.billow.app.panes.inflated;
+    return pane.serial > s && pane.hasDistances && /^Inflated/.test(document.querySelector('#status').textContent);
+  }, serial, { timeout: 90000 });
+  const flattened = await page.evaluate(() => window.billow.app.panes.inflated.fields.distance);
+  assert.ok(flattened.rms > 1.2 * optimized.rms, `before optimization ${flattened.rms} vs optimized ${optimized.rms}`);
+  assert.equal(await page.inputValue('#color-select'), 'distance', 'the chosen colors stay');
+  const flattenedColors = await colorCounts(page);
+  assert.ok(flattenedColors.pale < optimizedColors.pale, `fewer vertices on target before optimization: ${JSON.stringify({ flattenedColors, optimizedColors })}`);
+  assert.ok(flattenedColors.blue + flattenedColors.orange > 0);
+  await screenshot(page, 'inflated-distance-flattened');
+
+  // Stress, with the material's strength and the safety factor; C cycles the colors.
+  await page.click('#show-optimized');
+  await waitInflated(page);
+  await page.locator('#pane-inflated .pane-body').click({ position: { x: 5, y: 5 } }); // focus the page, not a field
+  await page.selectOption('#color-select', 'wrinkles');
+  await page.locator('body').press('c');
+  assert.equal(await page.inputValue('#color-select'), 'stress');
+  l = await legend(page);
+  assert.equal(l.title, "Stress (share of the material's strength)");
+  assert.match(l.note, /^Peak \d+(\.\d)? MPa, safety factor \d+(\.\d)?$/);
+  const stressColors = await colorCounts(page);
+  assert.ok(stressColors.pale + stressColors.orange + stressColors.other > 0);
+  await screenshot(page, 'inflated-stress');
+  await page.locator('body').press('c');
+  assert.equal(await page.inputValue('#color-select'), 'distance');
+  await page.locator('body').press('c');
+  assert.equal(await page.inputValue('#color-select'), 'wrinkles');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('a pattern file opened on its own offers no distance to target', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.evaluate(() => window.billow.gallery.open('star'));
+  await waitInflated(page);
+  assert.equal(await page.isDisabled('#color-select option[value="distance"]'), true);
+  await page.selectOption('#color-select', 'stress');
+  assert.match((await legend(page)).title, /^Stress/);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
