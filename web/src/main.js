@@ -15,6 +15,8 @@ import { registerServiceWorker, updateReadyMessage } from './app/offline.js';
 import { Gallery } from './app/gallery.js';
 import { Theme } from './app/theme.js';
 import { Help } from './app/help.js';
+import { Classroom, classroomRequested } from './app/classroom.js';
+import { LayoutCompare } from './app/compare.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -30,6 +32,7 @@ const theme = new Theme({
   onChange: (t) => {
     viewport.setColors({ pane: t.color('--pane-bg'), page: t.color('--bg') });
     panes.pattern.setGridColors(...(t.resolved === 'dark' ? [0x56607a, 0x353c4a] : [0xb8c0cc, 0xd8dde5]));
+    $('large-type').checked = t.largeType; // also when the classroom walk changes it
   },
 });
 $('theme-select').value = theme.choice;
@@ -109,6 +112,20 @@ document.addEventListener('click', (event) => {
 $('resolution-select').addEventListener('change', (event) => app.setResolution(Number(event.target.value)));
 $('show-optimized').addEventListener('click', () => app.showVersion('optimized'));
 $('show-flattened').addEventListener('click', () => app.showVersion('flattened'));
+// The inflated pane's colors: wrinkles, stress, distance to target (only for the target's own panels).
+const colorSelect = $('color-select');
+const setColorMode = (mode) => {
+  colorSelect.value = mode;
+  panes.inflated.setColorMode(mode);
+};
+colorSelect.addEventListener('change', () => setColorMode(colorSelect.value));
+panes.inflated.onFieldsChanged = () => {
+  colorSelect.querySelector('option[value="distance"]').disabled = !panes.inflated.hasDistances;
+};
+const cycleColorMode = () => {
+  const modes = [...colorSelect.options].filter((o) => !o.disabled).map((o) => o.value);
+  setColorMode(modes[(modes.indexOf(colorSelect.value) + 1) % modes.length]);
+};
 $('undo-button').addEventListener('click', () => app.undo());
 $('redo-button').addEventListener('click', () => app.redo());
 $('save-button').addEventListener('click', () => app.saveDesignFile());
@@ -134,6 +151,8 @@ window.addEventListener('keydown', (e) => {
   } else if (!mod && !e.altKey && key === 'm') {
     const axes = ['', 'x', 'y', 'z'];
     app.seams.setSymmetry(axes[(axes.indexOf(app.design.symmetry?.axis ?? '') + 1) % axes.length] || null);
+  } else if (!mod && !e.altKey && key === 'c') {
+    cycleColorMode();
   } else if (mod && key === 'z' && !e.shiftKey) app.undo();
   else if (mod && ((key === 'z' && e.shiftKey) || key === 'y')) app.redo();
   else if (mod && key === 's') app.saveDesignFile();
@@ -175,6 +194,24 @@ app.tabGuard = tabGuard;
 
 // For the end-to-end tests and the curious: the app and its solver client.
 const gallery = new Gallery(app, $('gallery-button'));
-window.billow = { app, client, viewport, seamTool, exporter, tabGuard, theme, gallery };
-tabGuard.start().then(() => app.start()).then(() => document.body.setAttribute('data-ready', 'true'));
+const compare = new LayoutCompare({ app, viewport, button: $('compare-button') });
+const classroom = new Classroom({ app, viewport, theme, exporter, seamTool, statusElement: $('status') });
+$('classroom-button').addEventListener('click', () => {
+  compare.close();
+  classroom.start();
+});
+window.addEventListener('hashchange', () => {
+  if (location.hash === '#classroom' && document.body.dataset.ready) {
+    compare.close();
+    classroom.start();
+  }
+});
+window.billow = { app, client, viewport, seamTool, exporter, tabGuard, theme, gallery, classroom, compare };
+tabGuard
+  .start()
+  .then(() => app.start())
+  .then(() => {
+    document.body.setAttribute('data-ready', 'true');
+    if (classroomRequested()) classroom.start(); // a #classroom link opens the walk
+  });
 registerServiceWorker({ onUpdate: () => messages.show('notice', updateReadyMessage()) }); // offline use, once started

@@ -296,7 +296,9 @@ export class App {
       await this.showVersion('optimized');
     } catch (error) {
       if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
-      this.messages.show('error', `The panels could not be made from these seams: ${error.message}`);
+      // Memory messages say what to do on their own; others are about the seams.
+      const text = error.code?.startsWith('memory') ? error.message : `The panels could not be made from these seams: ${error.message}`;
+      this.messages.show('error', text);
       this.setStatus('');
     } finally {
       if (this.optimizing === call) this.optimizing = null;
@@ -310,9 +312,32 @@ export class App {
     this.el.compareGroup.hidden = false;
     this.el.showOptimized.setAttribute('aria-pressed', String(which === 'optimized'));
     this.el.showFlattened.setAttribute('aria-pressed', String(which !== 'optimized'));
-    return which === 'optimized'
-      ? this.patterns.open('the optimized panels', this.optimized.patternText)
-      : this.patterns.open('the flattened panels', this.optimized.flattenedText);
+    const result =
+      which === 'optimized'
+        ? await this.patterns.open('the optimized panels', this.optimized.patternText)
+        : await this.patterns.open('the flattened panels', this.optimized.flattenedText);
+    if (result) await this.measureDistance(result);
+    return result;
+  }
+
+  // The signed distance of an inflated shape ({ positions, triangles, outer }) to the target, from the worker:
+  // { distances (per vertex, m), rms, max (outer surface, over the target's diagonal), diagonal }.
+  distanceOf(shape) {
+    const { positions, triangles, outer } = shape;
+    return this.client.call(Op.distanceToTarget, { positions, triangles, outer, scale: this.scaleFor(this.design) }).promise;
+  }
+
+  // The signed distance of the shown inflated shape to the target, for the "distance to target" colors.
+  async measureDistance(result) {
+    const pane = this.panes.inflated;
+    const serial = pane.serial;
+    try {
+      const d = await this.distanceOf(result);
+      if (pane.serial === serial) pane.setDistances(d.distances, d);
+    } catch (error) {
+      // Without distances the pane keeps its other colors; a crashed worker says so elsewhere.
+      if (error.code !== 'cancelled' && error.code !== 'worker.crashed') console.warn('distance to target:', error.message);
+    }
   }
 
   setResolution(triangles) {
@@ -487,8 +512,9 @@ export class App {
   }
 
   // Every tab saves its own record; the tab that autosaves (tab-guard.js) also the shared one.
+  // autosavePaused: while the classroom walk shows its example, the designer's autosaved design stays.
   save() {
-    if (!this.target) return;
+    if (!this.target || this.autosavePaused) return;
     const record = { design: this.design, mesh: this.ownMesh() };
     const keys = [this.tabKey, this.tabGuard && !this.tabGuard.isPrimary ? null : AUTOSAVE_KEY].filter(Boolean);
     Promise.all(keys.map((key) => autosave.save(key, record))).catch((error) =>

@@ -9,11 +9,20 @@ export const SHORTCUTS = [
   ['Backspace', 'Remove the last point of the seam being drawn'],
   ['Delete', 'Delete the selected control point (Edit)'],
   ['M', 'Mirror symmetry: off, across X, Y, Z'],
+  ['C', 'Colors of the inflated shape: wrinkles, stress, distance to target'],
   ['Ctrl+Z', 'Undo'],
   ['Ctrl+Shift+Z / Ctrl+Y', 'Redo'],
   ['Ctrl+S', 'Save the design as a file'],
   ['Ctrl+O', 'Open a mesh, design or pattern file'],
   ['?', 'This help'],
+];
+
+// In the classroom walk (the Classroom button, or a link ending in #classroom).
+export const CLASSROOM_SHORTCUTS = [
+  ['→ / Page Down / Space', 'Classroom: next step'],
+  ['← / Page Up', 'Classroom: previous step'],
+  ['Home / End', 'Classroom: first / last step'],
+  ['Esc', 'Classroom: leave the walk; your own design comes back'],
 ];
 
 export class Help {
@@ -27,7 +36,7 @@ export class Help {
     close.textContent = 'Close';
     close.addEventListener('click', () => dialog.close());
     const table = document.createElement('table');
-    for (const [keys, what] of SHORTCUTS) {
+    for (const [keys, what] of [...SHORTCUTS, ...CLASSROOM_SHORTCUTS]) {
       const row = table.insertRow();
       const keyCell = row.insertCell();
       keys.split(' / ').forEach((combo, i) => {
@@ -44,7 +53,10 @@ export class Help {
     const touch = document.createElement('p');
     touch.textContent =
       'On a tablet: tap points to draw (a tap, not a drag); use Finish, Close loop and Cancel in the seam panel; drag a control point with a finger in Edit. Pens work like a mouse.';
-    dialog.append(close, title, table, touch);
+    const more = document.createElement('p');
+    more.textContent =
+      'Compare (top bar): keep the current seams as Layout A, change them, and compare panels, distance to target and wrinkles; Use puts a kept layout back, Undo returns. Classroom (top bar): a walk through the method on an example, for teaching; Full screen for a projector, Larger text for the back of the room.';
+    dialog.append(close, title, table, touch, more);
   }
 
   open() {

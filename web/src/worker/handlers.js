@@ -101,8 +101,23 @@ export function createHandlers(api) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);
     },
-    *[Op.distanceToTarget]({ positions, scale }) {
-      return requireSession().distanceToTarget(positions, scale);
+    *[Op.distanceToTarget]({ positions, scale, triangles = null, outer = null }) {
+      const d = requireSession().distanceToTarget(positions, scale);
+      if (!triangles || !outer) return d;
+      // The figures over the outer surface only (internal panels lie inside by design), as the optimizer
+      // and `billow design` measure them.
+      const onOuter = new Uint8Array(d.distances.length);
+      for (let f = 0; f < outer.length; f++) if (outer[f]) for (let k = 0; k < 3; k++) onOuter[triangles[3 * f + k]] = 1;
+      let sum = 0;
+      let max = 0;
+      let count = 0;
+      d.distances.forEach((x, v) => {
+        if (!onOuter[v]) return;
+        sum += x * x;
+        max = Math.max(max, Math.abs(x));
+        count++;
+      });
+      return { ...d, rms: count ? Math.sqrt(sum / count) / d.diagonal : 0, max: max / d.diagonal };
     },
     *[Op.memoryStats]() {
       return api.memoryStats();

@@ -37,8 +37,9 @@ export const Op = Object.freeze({
   // { patternText, options } -> { svg, dxf, pdf: Uint8Array, statistics, cutLines }: the cut files and
   // printable tiles of a pattern (see SolverApi.exportPattern for the options).
   exportPattern: 'exportPattern',
-  // { positions (#V*3, meters), scale } -> { distances: Float32Array #V, rms, max, diagonal }: signed distance of
-  // each point to the target (positive outside), for the inflated pane's "distance to target" colors.
+  // { positions (#V*3, meters), scale, triangles?, outer? } -> { distances: Float32Array #V, rms, max, diagonal }:
+  // signed distance of each point to the target (positive outside), for the inflated pane's "distance to
+  // target" colors; rms and max over the diagonal, of the outer surface's vertices when triangles/outer are given.
   distanceToTarget: 'distanceToTarget',
   // {} -> [{ name, label, thickness, youngs_modulus, density, max_stress }]: the material presets.
   materialPresets: 'materialPresets',
