@@ -23,6 +23,7 @@
 //                                                 seamMismatch, objective }
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
+//   optimizedTrianglesPtr() #F*3 i32 / optimizedTriangles(), optimizedOuterPtr() #F i32: the optimizer's sewn mesh
 //   t.distanceToTarget(positionsPtr, numVertices, scale) -> { rms, max, diagonal } (rms and max of |d| over the
 //     diagonal of the target's box) and distancesPtr() #V f64: per point [m], the signed distance to the target
 //     scaled by `scale` (positive outside); for the "distance to target" colors of an inflated shape
@@ -146,6 +147,16 @@ class TargetSession {
   }
 
   int optimizedVertices() const { return optimizer_ ? static_cast<int>(optimizer_->inflated().rows()) : 0; }
+  // The optimizer's sewn mesh, to draw its streamed shapes: #F x 3 int32 (outward) and #F int32 (1: outer).
+  int optimizedTriangles() const { return optimizer_ ? optimizer_->mesh().numTriangles() : 0; }
+  uintptr_t optimizedTrianglesPtr() const {
+    return optimizer_ ? reinterpret_cast<uintptr_t>(optimizer_->mesh().triangles.data()) : 0;
+  }
+  uintptr_t optimizedOuterPtr() {
+    outer_.clear();
+    if (optimizer_) outer_.assign(optimizer_->mesh().outer.begin(), optimizer_->mesh().outer.end());
+    return reinterpret_cast<uintptr_t>(outer_.data());
+  }
   uintptr_t optimizedPositionsPtr() const {
     return optimizer_ ? reinterpret_cast<uintptr_t>(optimizer_->inflated().data()) : 0;
   }
@@ -398,6 +409,7 @@ class TargetSession {
   std::unique_ptr<billow::GeodesicSolver> geodesic_;
   std::vector<int> faceSegment_;
   Eigen::VectorXd distances_;  // of the last distanceToTarget
+  std::vector<int> outer_;     // optimizedOuterPtr's copy
 };
 
 }  // namespace
@@ -414,6 +426,9 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("optimizedPattern", &TargetSession::optimizedPattern)
       .function("optimizedVertices", &TargetSession::optimizedVertices)
       .function("optimizedPositionsPtr", &TargetSession::optimizedPositionsPtr)
+      .function("optimizedTriangles", &TargetSession::optimizedTriangles)
+      .function("optimizedTrianglesPtr", &TargetSession::optimizedTrianglesPtr)
+      .function("optimizedOuterPtr", &TargetSession::optimizedOuterPtr)
       .function("cutVertices", &TargetSession::cutVertices)
       .function("cutTriangles", &TargetSession::cutTriangles)
       .function("cutPositionsPtr", &TargetSession::cutPositionsPtr)

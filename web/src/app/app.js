@@ -282,6 +282,7 @@ export class App {
             this.flattenedText = p.flattenedText;
             this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
           }
+          this.showIterate(p);
           if (p.iteration !== undefined && p.stage === 'optimizing')
             this.setStatus(`Optimizing the panels: step ${p.iteration}${p.distanceRms !== undefined ? `, distance to target ${(100 * p.distanceRms).toFixed(2)} %` : ''}…`);
           else this.setStatus(`Making the panels: ${p.stage}…`);
@@ -303,6 +304,16 @@ export class App {
     } finally {
       if (this.optimizing === call) this.optimizing = null;
     }
+  }
+
+  // An optimization iterate: its inflated shape (colored by its distance to the target when that is the
+  // chosen view) and, now and then, its panels. The final result replaces both.
+  showIterate(p) {
+    const pane = this.panes.inflated;
+    if (p.triangles) pane.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer }, { frame: !pane.shape });
+    else if (p.positions && pane.shape && pane.position?.count * 3 === p.positions.length) pane.updatePositions(p.positions);
+    if (p.distances && pane.shape) pane.setDistances(p.distances, p.distance);
+    if (p.patternText) this.panes.pattern.setPattern(patternForDisplay(p.patternText, 'the panels being optimized'), { frame: false });
   }
 
   // The inflated pane shows the optimized panels or, for comparison (paper Fig. 8), the panels as first

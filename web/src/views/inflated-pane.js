@@ -75,9 +75,14 @@ export class InflatedPane extends Pane3D {
     this.clear();
     this.position = null;
     this.shape = { triangles: result.triangles, outer: result.outer };
-    this.fields = result.compression
-      ? { compression: result.compression, stress: result.stress ?? null, peakStress: peakStress(result), distances: null, distance: null }
-      : null;
+    // A streamed iterate has no fields yet: neutral colors, unless its distances arrive.
+    this.fields = {
+      compression: result.compression ?? null,
+      stress: result.stress ?? null,
+      peakStress: result.stress ? peakStress(result) : 0,
+      distances: null,
+      distance: null,
+    };
     const outerFaces = [];
     const innerFaces = [];
     for (let f = 0; f < result.outer.length; f++) (result.outer[f] ? outerFaces : innerFaces).push(f);
@@ -119,16 +124,18 @@ export class InflatedPane extends Pane3D {
   // The per-vertex colors of the outer surface for the current mode, and the legend that explains them.
   recolor() {
     const fields = this.fields;
-    this.legend.hidden = !fields;
-    if (!fields || !this.outerMesh) return;
+    if (!fields || !this.outerMesh) return void (this.legend.hidden = true);
     const n = this.position.count;
-    const mode = this.colorMode === 'distance' && !fields.distances ? 'wrinkles' : this.colorMode;
+    let mode = this.colorMode;
+    if (mode === 'distance' && !fields.distances) mode = 'wrinkles';
+    if (mode === 'stress' && !fields.stress) mode = 'wrinkles';
+    this.legend.hidden = mode === 'wrinkles' && !fields.compression; // a streamed iterate: nothing to explain
+    const source = mode === 'stress' ? fields.stress : fields.compression;
     let value; // per vertex
     if (mode === 'distance') value = fields.distances;
     else {
       // Per-triangle fields, averaged to the vertices (the shape is smooth-shaded).
       const stride = mode === 'stress' ? 2 : 4;
-      const source = mode === 'stress' ? fields.stress : fields.compression;
       const sum = new Float32Array(n);
       const count = new Float32Array(n);
       for (const f of this.outerFaces) {

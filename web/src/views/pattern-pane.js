@@ -46,7 +46,8 @@ export class PatternPane {
     this.viewport.requestRender();
   }
 
-  setPattern(pattern) {
+  // frame: fit the view to the panels (not for a streamed iterate: the designer's pan and zoom stay).
+  setPattern(pattern, { frame = true } = {}) {
     this.clear();
     const layout = layoutPattern(pattern);
     this.pattern = pattern;
@@ -84,7 +85,8 @@ export class PatternPane {
       this.labelAnchors.push({ label, at: new Vector3(centroid[0], centroid[1], 0) });
     });
     this.element.parentElement.querySelector('.hint')?.setAttribute('hidden', '');
-    this.frame(this.content);
+    if (frame) this.frame(this.content);
+    else this.viewport.requestRender();
   }
 
   // The cut lines (sewing line plus seam allowance) of `pattern`'s panels, each a flat [x0, y0, x1, ...]

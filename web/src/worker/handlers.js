@@ -4,6 +4,7 @@ import { parseMesh } from '../io/mesh-loaders.js';
 
 const STEP_ITERATIONS = 1000; // a step ends on time, not on count
 const STEP_MILLIS = 30; // short steps keep cancel responsive
+const PANELS_EVERY_MS = 500; // how often an optimization streams its panels (their JSON costs a little)
 const PREVIEW_MILLIS = 120; // how often the inflating shape is streamed to the page
 
 export function createHandlers(api) {
@@ -25,6 +26,26 @@ export function createHandlers(api) {
   function requireSession() {
     if (!state.session || !state.target) throw new SolverError('seams.no-target', 'Load a target before drawing seams.');
     return state.session;
+  }
+
+  // Signed distances of points to the target; rms and max over the outer surface when its mesh is given.
+  function measureDistance({ positions, scale, triangles = null, outer = null }) {
+    const d = requireSession().distanceToTarget(positions, scale);
+    if (!triangles || !outer) return d;
+    // The figures over the outer surface only (internal panels lie inside by design), as the optimizer
+    // and `billow design` measure them.
+    const onOuter = new Uint8Array(d.distances.length);
+    for (let f = 0; f < outer.length; f++) if (outer[f]) for (let k = 0; k < 3; k++) onOuter[triangles[3 * f + k]] = 1;
+    let sum = 0;
+    let max = 0;
+    let count = 0;
+    d.distances.forEach((x, v) => {
+      if (!onOuter[v]) return;
+      sum += x * x;
+      max = Math.max(max, Math.abs(x));
+      count++;
+    });
+    return { ...d, rms: count ? Math.sqrt(sum / count) / d.diagonal : 0, max: max / d.diagonal };
   }
 
   return {
@@ -79,6 +100,7 @@ export function createHandlers(api) {
     // { seams, scale, triangles, pressure, material } -> { flattenedText, patternText (optimized), history }.
     // Streams { stage, iteration, distanceRms, positions } as the optimizer improves the panels (Sec. 5).
     *[Op.optimizeDesign]({ seams, triangles = 1000, maxIterations = 400, ...physics }) {
+      const scale = physics.scale;
       yield { stage: 'flattening the segments into panels' };
       const session = requireSession();
       const start = session.startOptimization(seams, { triangles, ...physics });
@@ -87,12 +109,24 @@ export function createHandlers(api) {
         throw new SolverError('pattern.not-built', messages.join('\n') || 'These seams do not give panels yet.');
       }
       const flattenedText = JSON.stringify(start.pattern);
-      yield { stage: 'optimizing', iteration: 0, flattenedText };
+      // Every iterate streams: its inflated shape with its distance to the target, and every half second
+      // the panels themselves (paper Sec. 5: the designer watches the optimization).
+      const mesh = session.optimizedMesh();
+      const iterate = () => {
+        const positions = session.optimizedPositions();
+        const d = scale > 0 ? measureDistance({ positions, scale, ...mesh }) : null;
+        return { positions: new Float32Array(positions), distances: d?.distances, distance: d && { rms: d.rms, max: d.max, diagonal: d.diagonal } };
+      };
+      // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
+      yield { stage: 'optimizing', iteration: 0, flattenedText, triangles: mesh.triangles.slice(), outer: mesh.outer.slice(), ...iterate() };
       let status;
+      let lastPanels = performance.now();
       for (;;) {
         status = session.optimizeStep(1, STEP_MILLIS);
         if (status.state === 'failed') throw new SolverError('optimize.failed', status.message);
-        yield { stage: 'optimizing', ...status, positions: new Float32Array(session.optimizedPositions()) };
+        const panels = performance.now() - lastPanels > PANELS_EVERY_MS ? { patternText: JSON.stringify(session.optimizedPattern()) } : {};
+        if (panels.patternText) lastPanels = performance.now();
+        yield { stage: 'optimizing', ...status, ...iterate(), ...panels };
         if (status.state !== 'running' || status.iteration >= maxIterations) break;
       }
       return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status };
@@ -101,23 +135,8 @@ export function createHandlers(api) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);
     },
-    *[Op.distanceToTarget]({ positions, scale, triangles = null, outer = null }) {
-      const d = requireSession().distanceToTarget(positions, scale);
-      if (!triangles || !outer) return d;
-      // The figures over the outer surface only (internal panels lie inside by design), as the optimizer
-      // and `billow design` measure them.
-      const onOuter = new Uint8Array(d.distances.length);
-      for (let f = 0; f < outer.length; f++) if (outer[f]) for (let k = 0; k < 3; k++) onOuter[triangles[3 * f + k]] = 1;
-      let sum = 0;
-      let max = 0;
-      let count = 0;
-      d.distances.forEach((x, v) => {
-        if (!onOuter[v]) return;
-        sum += x * x;
-        max = Math.max(max, Math.abs(x));
-        count++;
-      });
-      return { ...d, rms: count ? Math.sqrt(sum / count) / d.diagonal : 0, max: max / d.diagonal };
+    *[Op.distanceToTarget](args) {
+      return measureDistance(args);
     },
     *[Op.memoryStats]() {
       return api.memoryStats();

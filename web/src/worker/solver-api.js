@@ -220,6 +220,16 @@ export class TargetSession {
     return this.api.fromHeap(Float64Array, this.session.optimizedPositionsPtr(), this.session.optimizedVertices() * 3);
   }
 
+  // The optimizer's sewn mesh: { triangles: Int32Array #F*3 (outward), outer: Int32Array #F (1: outer surface) }.
+  optimizedMesh() {
+    const s = this.session;
+    const F = s.optimizedTriangles();
+    return {
+      triangles: this.api.fromHeap(Int32Array, s.optimizedTrianglesPtr(), F * 3),
+      outer: this.api.fromHeap(Int32Array, s.optimizedOuterPtr(), F),
+    };
+  }
+
   // The current panels as a pattern object whose "inflated" is their inflated shape.
   optimizedPattern() {
     return SolverApi.unwrap(this.session.optimizedPattern());

@@ -1,0 +1,43 @@
+// The optimization streams every iterate through the worker's handlers: the sewn mesh once, then each
+// iterate's inflated shape with its signed distances to the target, whose outer-surface RMS is the
+// optimizer's own figure; now and then the panels. And distanceToTarget is 0 on the target, positive outside.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { loadApi } from './load-module.mjs';
+import { readObjText } from './obj.mjs';
+import { createHandlers } from '../../web/src/worker/handlers.js';
+
+const api = await loadApi();
+const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
+
+test('each optimizer iterate streams its shape and its distance to the target, the optimizer\'s own figure', () => {
+  const handlers = createHandlers(api);
+  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
+  for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
+  const design = JSON.parse(read('../../web/public/gallery/sphere3.billow.json'));
+  const seams = design.seams.map(({ points, closed }) => ({ points, closed, weight: 1 }));
+  const iterates = [];
+  const run = handlers.optimizeDesign({ seams, scale: 0.25, triangles: 600, maxIterations: 8 });
+  for (let step = run.next(); !step.done; step = run.next()) if (step.value.stage === 'optimizing') iterates.push(step.value);
+  assert.ok(iterates.length >= 5, `${iterates.length} iterates`);
+  const [first, ...rest] = iterates;
+  assert.ok(first.triangles.length > 0 && first.outer.length === first.triangles.length / 3, 'the sewn mesh comes first');
+  const n = first.positions.length / 3;
+  for (const it of rest) {
+    assert.equal(it.positions.length, 3 * n);
+    assert.equal(it.distances.length, n);
+    assert.ok(Math.abs(it.distance.rms - it.distanceRms) < 1e-6 * Math.max(1, it.distanceRms), `iteration ${it.iteration}: ${it.distance.rms} vs ${it.distanceRms}`);
+    assert.ok(it.distance.max >= it.distance.rms);
+  }
+  assert.ok(rest.at(-1).distance.rms < rest[0].distance.rms, 'the iterates come closer to the target');
+  for (const it of rest) if (it.patternText) assert.equal(JSON.parse(it.patternText).panels.length, 3, 'streamed panels'); // every 0.5 s
+  // Points on the target are at distance 0; pushed out along the sphere's radius they are outside.
+  const scale = 0.25;
+  const onTarget = Float64Array.from(sphere.positions, (x) => x * scale);
+  const out = handlers.distanceToTarget({ positions: onTarget.map((x) => x * 1.02), scale }).next().value;
+  const on = handlers.distanceToTarget({ positions: onTarget, scale }).next().value;
+  assert.ok(on.max < 1e-9, `on the target: ${on.max}`);
+  assert.ok(out.distances.every((d) => d > 0), 'outside: positive');
+  assert.ok(Math.abs(out.rms * out.diagonal - 0.02 * scale) < 0.002 * scale, `2 % out: ${out.rms * out.diagonal} m`);
+});
