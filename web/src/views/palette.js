@@ -13,7 +13,9 @@ export function panelTint(i) {
 }
 
 // Segment fills: light, distinct, colorblind-safe hues; a red tint marks a segment that is not a disk.
-const SEGMENT_FILLS = ['#8fb3e0', '#f2c879', '#8fd1b4', '#e3a6c8', '#f0a77a', '#a8d8f0', '#d9d27a', '#b9a6e0', '#9fc7a0', '#e0b9a0'];
+// Ordered so that any two within two places differ by ΔE > 11 even with protanopia, deuteranopia or
+// tritanopia (tests/node/color-vision.test.mjs).
+const SEGMENT_FILLS = ['#d9d27a', '#e0b9a0', '#a8d8f0', '#f0a77a', '#e3a6c8', '#8fd1b4', '#b9a6e0', '#f2c879', '#9fc7a0', '#8fb3e0'];
 export const PROBLEM_COLOR = new Color('#e05a4f');
 
 export function segmentColor(i) {
