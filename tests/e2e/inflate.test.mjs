@@ -85,7 +85,7 @@ test('material and pressure are part of the design: the panels are made again, s
   await waitInflated(page);
   assert.equal(await page.inputValue('#material-select'), 'foil');
   assert.equal(await page.textContent('#inflated-stats dd[data-stat="pressure"]'), '1.00 kPa');
-  const foilStress = parseFloat(await page.textContent('#inflated-stats dd[data-stat="max-stress"]'));
+  const foilStress = parseFloat(await page.textContent('#inflated-stats dd[data-stat="peak-stress"]'));
 
   await page.selectOption('#material-select', 'pvc');
   await page.fill('#pressure-input', '2');
@@ -98,7 +98,7 @@ test('material and pressure are part of the design: the panels are made again, s
   );
   // The same shape at twice the pressure: the sheet's tension doubles; PVC is 12x thicker than foil, so
   // its stress is about 2/12 of the foil's (membrane stress ~ p r / h).
-  const pvcStress = parseFloat(await page.textContent('#inflated-stats dd[data-stat="max-stress"]'));
+  const pvcStress = parseFloat(await page.textContent('#inflated-stats dd[data-stat="peak-stress"]'));
   assert.ok(pvcStress < foilStress / 2, `PVC stress ${pvcStress} MPa vs foil ${foilStress} MPa`);
 
   const [download] = await Promise.all([page.waitForEvent('download'), page.click('#save-button')]);

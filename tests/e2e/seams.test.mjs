@@ -234,7 +234,16 @@ test('touch: tapping points and "Close loop" draws a seam; a finger drags a cont
   // Edit with a finger: grab the control point a little off target (touch reaches farther than a mouse).
   await page.click('#seam-panel button[data-tool="edit"]');
   const [to] = await surfaceScreenPoints(page, [[-0.5, 0.7, 1]]);
-  const start = { x: b.x + 14, y: b.y + 6 };
+  // Where control point 1 is on screen now (where the tap put it), and 15 px off it: beyond a mouse's reach.
+  const grip = await page.evaluate(() => {
+    const app = window.billow.app;
+    const pane = app.panes.target;
+    const c = app.seams.seamTraces()[0].controls;
+    const p = pane.mesh.localToWorld(new pane.mesh.position.constructor(c[3], c[4], c[5])).project(pane.camera);
+    const rect = pane.element.getBoundingClientRect();
+    return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
+  });
+  const start = { x: grip.x + 14, y: grip.y + 6 };
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchStart', touchPoints: [{ x: start.x, y: start.y }] });
   for (let k = 1; k <= 6; k++)
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: start.x + ((to.x - start.x) * k) / 6, y: start.y + ((to.y - start.y) * k) / 6 }] });
