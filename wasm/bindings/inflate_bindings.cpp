@@ -73,8 +73,7 @@ class InflationSession {
           throw billow::Error("inflate.options", "Pressure, tolerance, band and iteration limit must be positive.");
         if (j.contains("memoryBudget") && j["memoryBudget"].is_number()) budget = j["memoryBudget"].get<double>();
       }
-      long long triangles = 0;
-      for (const auto& panel : pattern_.panels) triangles += panel.triangles.rows();
+      const long long triangles = billow::numTriangles(pattern_);
       billow::requireMemory(billow::inflationBytes(triangles), budget,
                             "Inflating this pattern (" + std::to_string(triangles) + " triangles)",
                             "Use a pattern with fewer triangles, or inflate it with the billow command-line tool "

@@ -24,9 +24,10 @@
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
 //   optimizedTrianglesPtr() #F*3 i32 / optimizedTriangles(), optimizedOuterPtr() #F i32: the optimizer's sewn mesh
-//   t.distanceToTarget(positionsPtr, numVertices, scale) -> { rms, max, diagonal } (rms and max of |d| over the
-//     diagonal of the target's box) and distancesPtr() #V f64: per point [m], the signed distance to the target
-//     scaled by `scale` (positive outside); for the "distance to target" colors of an inflated shape
+//   t.distanceToTarget(positionsPtr, numVertices, scale, surfacePtr, numSurfaceTriangles) -> { rms, max, diagonal }
+//     (rms and max of |d| over the diagonal of the target's box, over the corners of the #S x 3 int32 surface
+//     triangles, e.g. the outer surface; over all points when there are none) and distancesPtr() #V f64: per
+//     point [m], the signed distance to the target scaled by `scale` (positive outside)
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -174,21 +175,26 @@ class TargetSession {
                           "Choose a coarser panel resolution.");
   }
 
-  std::string distanceToTarget(uintptr_t positions, int numVertices, double scale) {
+  std::string distanceToTarget(uintptr_t positions, int numVertices, double scale, uintptr_t surface,
+                               int numSurfaceTriangles) {
     return guarded([&] {
       requireTarget();
       if (!(scale > 0) || !std::isfinite(scale))
         throw billow::Error("pattern.bad-scale", "The target's size is not valid.");
-      if (numVertices < 0) throw billow::Error("seams.bad-input", "The shape has no points.");
+      if (numVertices < 0 || numSurfaceTriangles < 0)
+        throw billow::Error("seams.bad-input", "The shape has no points.");
       // In target units, on the target's own projector (a running optimization's scaled target stays).
       const billow::Vertices x =
           Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3) / scale;
       if (!x.allFinite()) throw billow::Error("seams.bad-input", "The shape has invalid coordinates.");
+      const billow::Triangles F =
+          Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(surface), numSurfaceTriangles, 3);
+      if (F.size() && (F.minCoeff() < 0 || F.maxCoeff() >= numVertices))
+        throw billow::Error("seams.bad-input", "The shape's surface refers to points it does not have.");
       distances_ = scale * billow::signedDistances(mesh_, *projector_, x);
       const double diagonal = scale * (mesh_.V.colwise().maxCoeff() - mesh_.V.colwise().minCoeff()).norm();
-      const double rms = numVertices ? std::sqrt(distances_.squaredNorm() / numVertices) : 0;
-      const double max = numVertices ? distances_.cwiseAbs().maxCoeff() : 0;
-      return json({{"rms", rms / diagonal}, {"max", max / diagonal}, {"diagonal", diagonal}}).dump();
+      const billow::DistanceSummary d = billow::summarizeDistances(distances_, F, diagonal);
+      return json({{"rms", d.rms}, {"max", d.max}, {"diagonal", diagonal}}).dump();
     });
   }
   uintptr_t distancesPtr() const { return reinterpret_cast<uintptr_t>(distances_.data()); }

@@ -17,6 +17,7 @@
 #include "optimize/pattern_optimizer.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/design_scene.hpp"
+#include "seams/surface_distance.hpp"
 #include "simulate/inflate.hpp"
 #include "simulate/initial_shape.hpp"
 #include "util/error.hpp"
@@ -38,29 +39,11 @@ std::string objText(const SewnMesh& mesh, const Vertices& x) {
   return writeObj(x, outerTriangles(mesh), "billow inflated shape (outer surface, meters)");
 }
 
-struct Distance {
-  double rms = 0, max = 0;  // relative to the target's bounding-box diagonal
-};
-
-// Closest-point distance of every simulation vertex of the outer surface to the target surface (the inside
-// of internal panels is not meant to lie on it).
-Distance distanceToTarget(const DesignScene& scene, const SewnMesh& mesh, const Vertices& x) {
+// Distance of the outer surface's simulation vertices to the target surface (the inside of internal
+// panels is not meant to lie on it), relative to the target's bounding-box diagonal.
+DistanceSummary distanceToTarget(const DesignScene& scene, const SewnMesh& mesh, const Vertices& x) {
   const double diag = (scene.target.V.colwise().maxCoeff() - scene.target.V.colwise().minCoeff()).norm();
-  std::vector<char> outer(x.rows(), 0);
-  const Triangles F = outerTriangles(mesh);
-  for (int t = 0; t < F.rows(); ++t)
-    for (int k = 0; k < 3; ++k) outer[F(t, k)] = 1;
-  Distance d;
-  int n = 0;
-  for (int v = 0; v < x.rows(); ++v) {
-    if (!outer[v]) continue;
-    double dist = 0;
-    scene.projector->project(x.row(v).transpose(), &dist);
-    d.rms += dist * dist, d.max = std::max(d.max, dist), ++n;
-  }
-  d.rms = n ? std::sqrt(d.rms / n) / diag : 0;
-  d.max /= diag;
-  return d;
+  return summarizeDistances(signedDistances(scene.target, *scene.projector, x), outerTriangles(mesh), diag);
 }
 
 int positiveInt(const Args& args, const std::string& name, int fallback) {
@@ -197,7 +180,7 @@ int designCommand(const std::vector<std::string>& argv) {
                    solver.residual(), solver.volume());
   const InflateResult r = solver.result();
   writeTextFile(dir + "/inflated.obj", objText(mesh, r.positions));
-  const Distance d = distanceToTarget(*scene, mesh, r.positions);
+  const DistanceSummary d = distanceToTarget(*scene, mesh, r.positions);
 
   const json report = {
       {"format", "billow-design-report"},

@@ -103,8 +103,7 @@ int inflateCommand(const std::vector<std::string>& argv) {
   InflateOptions o;
   o.tolerance = number(args, "--tolerance", o.tolerance);
   o.maxIterations = static_cast<int>(number(args, "--max-iterations", o.maxIterations));
-  long long patternTriangles = 0;
-  for (const auto& panel : p.panels) patternTriangles += panel.triangles.rows();
+  const long long patternTriangles = numTriangles(p);
   const double neededBytes = inflationBytes(patternTriangles);
   requireMemory(neededBytes, memoryBudgetOption(args),
                 "Inflating this pattern (" + std::to_string(patternTriangles) + " triangles)",

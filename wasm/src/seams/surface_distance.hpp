@@ -13,4 +13,13 @@ namespace billow {
 // Exact in magnitude; the sign is the closest triangle's, which can only err within a hair of an edge.
 Eigen::VectorXd signedDistances(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points);
 
+struct DistanceSummary {
+  double rms = 0, max = 0;  // of |d|, over the diagonal given
+};
+
+// RMS and max of |distances| over the points that are corners of `surface` (all points when it has no
+// rows: the outer surface of an inflated shape, since internal panels are not meant to lie on the target),
+// divided by `diagonal` (the target's bounding-box diagonal).
+DistanceSummary summarizeDistances(const Eigen::VectorXd& distances, const Triangles& surface, double diagonal);
+
 }  // namespace billow

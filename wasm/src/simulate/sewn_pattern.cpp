@@ -106,12 +106,11 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
     ++m.stitchedCount[rootIndex[r]];
   }
 
-  long long numTriangles = 0;
-  for (const Panel& panel : p.panels) numTriangles += panel.triangles.rows();
-  m.triangles.resize(numTriangles, 3);
-  m.rest.resize(numTriangles);
-  m.outer.resize(numTriangles);
-  m.trianglePanel.resize(numTriangles);
+  const long long triangles = numTriangles(p);
+  m.triangles.resize(triangles, 3);
+  m.rest.resize(triangles);
+  m.outer.resize(triangles);
+  m.trianglePanel.resize(triangles);
   double edgeSum = 0;
   int t = 0;
   for (int i = 0; i < numPanels; ++i) {
@@ -138,7 +137,7 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
           std::sqrt((X1 - X0).squaredNorm()) + std::sqrt((X2 - X1).squaredNorm()) + std::sqrt((X0 - X2).squaredNorm());
     }
   }
-  m.meanEdgeLength = edgeSum / (3.0 * double(numTriangles));
+  m.meanEdgeLength = edgeSum / (3.0 * double(triangles));
 
   // The outer surface must close: every sewn edge is used once in each direction by outer triangles.
   std::map<std::pair<int, int>, std::pair<int, int>> uses;  // directed edge -> (count, triangle)
@@ -193,6 +192,12 @@ Triangles outerTriangles(const SewnMesh& mesh) {
   for (int f = 0; f < mesh.numTriangles(); ++f)
     if (mesh.outer[f]) out.row(k++) = mesh.triangles.row(f);
   return out;
+}
+
+long long numTriangles(const Pattern& pattern) {
+  long long n = 0;
+  for (const Panel& panel : pattern.panels) n += panel.triangles.rows();
+  return n;
 }
 
 }  // namespace billow

@@ -74,6 +74,9 @@ struct SewnMesh {
 // Sewn edges of different rest length (beyond 1e-3 relative) are reported in SewnMesh::warnings.
 SewnMesh sewPattern(const Pattern& pattern, const PatternLimits& limits = {});
 
+// Triangles of all panels (the size of the simulation mesh a pattern makes).
+long long numTriangles(const Pattern& pattern);
+
 // Outer triangles only, as a closed mesh with merged vertices (for OBJ export and the volume).
 Triangles outerTriangles(const SewnMesh& mesh);
 

@@ -12,7 +12,7 @@ import { Box3, Sphere, Vector3 } from 'three';
 import { parseDesign } from './design.js';
 import { History } from './history.js';
 import { patternForDisplay } from './pattern-session.js';
-import { formatDistance } from './units.js';
+import { formatPercent } from './units.js';
 import { formatPressure } from './materials.js';
 import { Op } from '../worker/protocol.js';
 import './classroom.css';
@@ -360,15 +360,15 @@ export class Classroom {
     const figures = {
       naive: () => [
         ['Pressure', formatPressure(app.design.pressure)],
-        ['Distance to target', naive === null ? '…' : formatDistance(naive.rms), 'Average distance from the target, in % of its size'],
-        ['Largest distance', naive === null ? '…' : formatDistance(naive.max)],
+        ['Distance to target', naive === null ? '…' : formatPercent(naive.rms), 'Average distance from the target, in % of its size'],
+        ['Largest distance', naive === null ? '…' : formatPercent(naive.max)],
       ],
       optimized: () => [
-        ['Distance to target', this.optimizedDistance() ? formatDistance(this.optimizedDistance().rms) : '…', 'Average distance from the target, in % of its size'],
-        ['First try', this.naive ? formatDistance(this.naive.distance.rms) : '—'],
+        ['Distance to target', this.optimizedDistance() ? formatPercent(this.optimizedDistance().rms) : '…', 'Average distance from the target, in % of its size'],
+        ['First try', this.naive ? formatPercent(this.naive.distance.rms) : '—'],
         ['Optimizer steps', String(optimized.status?.iteration ?? '—')],
       ],
-      wrinkles: () => [['Most wrinkled', formatDistance(app.patterns.last?.maxCompression ?? 0), 'The largest share of the sheet taken up by wrinkles']],
+      wrinkles: () => [['Most wrinkled', formatPercent(app.patterns.last?.maxCompression ?? 0), 'The largest share of the sheet taken up by wrinkles']],
       cut: () => [['Panels', String(app.patterns.display?.panels.length ?? 0)], ['Seam allowance', `${app.design.fabrication.allowance} mm`]],
     };
     this.setFigure(figures[step.id]());

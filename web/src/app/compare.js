@@ -5,7 +5,8 @@
 // seams back as an ordinary edit, so Undo returns to the seams it replaced. Kept layouts live in this
 // page only (they are views of the design, not part of it).
 import './compare.css';
-import { formatDistance } from './units.js';
+import { formatPercent } from './units.js';
+import { dialogHeader } from '../views/dialog-header.js';
 
 const LETTERS = ['A', 'B'];
 const POLL_MS = 400;
@@ -32,18 +33,13 @@ export class LayoutCompare {
   build() {
     const dialog = (this.dialog = document.createElement('dialog'));
     dialog.className = 'compare-dialog';
-    dialog.setAttribute('aria-labelledby', 'compare-title');
-    const header = document.createElement('header');
-    const title = document.createElement('h2');
-    title.id = 'compare-title';
-    title.textContent = 'Compare seam layouts';
-    const close = document.createElement('button');
-    close.type = 'button';
-    close.className = 'compare-close';
-    close.textContent = 'Close';
-    close.title = 'Close the comparison (kept layouts stay until the page is closed)';
-    close.addEventListener('click', () => this.close());
-    header.append(title, close);
+    const header = dialogHeader(dialog, {
+      id: 'compare-title',
+      title: 'Compare seam layouts',
+      closeClass: 'compare-close',
+      closeTitle: 'Close the comparison (kept layouts stay until the page is closed)',
+      onClose: () => this.close(),
+    });
     this.intro = document.createElement('p');
     this.intro.className = 'compare-intro';
     this.cards = document.createElement('div');
@@ -244,9 +240,9 @@ export class LayoutCompare {
     const rows = figures
       ? [
           ['Panels', String(figures.panels), 'panels'],
-          ['Distance to target', figures.distance === null ? '—' : formatDistance(figures.distance), 'distance', 'Average distance of the inflated optimized panels from the target, in % of its size'],
-          ['Largest distance', figures.distanceMax === null ? '—' : formatDistance(figures.distanceMax), 'distance-max'],
-          ['Most wrinkled', figures.wrinkling === null ? '—' : formatDistance(figures.wrinkling), 'wrinkling', 'The largest share of the sheet taken up by wrinkles'],
+          ['Distance to target', figures.distance === null ? '—' : formatPercent(figures.distance), 'distance', 'Average distance of the inflated optimized panels from the target, in % of its size'],
+          ['Largest distance', figures.distanceMax === null ? '—' : formatPercent(figures.distanceMax), 'distance-max'],
+          ['Most wrinkled', figures.wrinkling === null ? '—' : formatPercent(figures.wrinkling), 'wrinkling', 'The largest share of the sheet taken up by wrinkles'],
         ]
       : [];
     if (rows.length) {

@@ -3,6 +3,7 @@
 // a design is segmented, its panels optimized and inflated; a pattern is inflated.
 import { parseDesign } from './design.js';
 import './gallery.css';
+import { dialogHeader } from '../views/dialog-header.js';
 
 // open: { design: file } a billow-design in web/public/gallery; { pattern: id } a solver example
 // pattern (PATTERN_EXAMPLES in app.js); { patternFile: file } a billow-pattern in web/public/gallery.
@@ -42,17 +43,7 @@ export class Gallery {
     this.app = app;
     this.dialog = document.createElement('dialog');
     this.dialog.className = 'gallery';
-    this.dialog.setAttribute('aria-labelledby', 'gallery-title');
-    const header = document.createElement('header');
-    const title = document.createElement('h2');
-    title.id = 'gallery-title';
-    title.textContent = 'Gallery';
-    const close = document.createElement('button');
-    close.type = 'button';
-    close.className = 'gallery-close';
-    close.textContent = 'Close';
-    close.addEventListener('click', () => this.dialog.close());
-    header.append(title, close);
+    const header = dialogHeader(this.dialog, { id: 'gallery-title', title: 'Gallery', closeClass: 'gallery-close', onClose: () => this.dialog.close() });
     const intro = document.createElement('p');
     intro.className = 'gallery-intro';
     intro.textContent = 'Ready designs: each opens with its seams and panels, and its result is computed as it opens.';

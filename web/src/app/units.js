@@ -13,7 +13,7 @@ export function formatVolume(m3) {
   return m3 >= 1 ? `${m3.toFixed(2)} m³` : `${(m3 * 1000).toFixed(m3 >= 0.01 ? 1 : 2)} L`;
 }
 
-// "1.4 %": a distance (or wrinkling) figure, a fraction of the target's size, as the app shows it.
-export function formatDistance(fraction) {
+// "1.4 %": a fraction (a distance over the target's size, a share of the sheet wrinkled) as the app shows it.
+export function formatPercent(fraction) {
   return `${(100 * fraction).toFixed(1)} %`;
 }

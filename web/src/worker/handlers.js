@@ -28,24 +28,13 @@ export function createHandlers(api) {
     return state.session;
   }
 
-  // Signed distances of points to the target; rms and max over the outer surface when its mesh is given.
-  function measureDistance({ positions, scale, triangles = null, outer = null }) {
-    const d = requireSession().distanceToTarget(positions, scale);
-    if (!triangles || !outer) return d;
-    // The figures over the outer surface only (internal panels lie inside by design), as the optimizer
-    // and `billow design` measure them.
-    const onOuter = new Uint8Array(d.distances.length);
-    for (let f = 0; f < outer.length; f++) if (outer[f]) for (let k = 0; k < 3; k++) onOuter[triangles[3 * f + k]] = 1;
-    let sum = 0;
-    let max = 0;
-    let count = 0;
-    d.distances.forEach((x, v) => {
-      if (!onOuter[v]) return;
-      sum += x * x;
-      max = Math.max(max, Math.abs(x));
-      count++;
-    });
-    return { ...d, rms: count ? Math.sqrt(sum / count) / d.diagonal : 0, max: max / d.diagonal };
+  // The outer triangles (#S*3 vertex indices) of a sewn mesh: the distance figures are taken over them
+  // (internal panels lie inside by design), as the optimizer and `billow design` measure them.
+  function outerSurface(triangles, outer) {
+    const surface = [];
+    if (triangles && outer)
+      for (let f = 0; f < outer.length; f++) if (outer[f]) surface.push(triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]);
+    return surface;
   }
 
   return {
@@ -112,9 +101,10 @@ export function createHandlers(api) {
       // Every iterate streams: its inflated shape with its distance to the target, and every half second
       // the panels themselves (paper Sec. 5: the designer watches the optimization).
       const mesh = session.optimizedMesh();
+      const surface = outerSurface(mesh.triangles, mesh.outer);
       const iterate = () => {
         const positions = session.optimizedPositions();
-        const d = scale > 0 ? measureDistance({ positions, scale, ...mesh }) : null;
+        const d = scale > 0 ? session.distanceToTarget(positions, scale, surface) : null;
         return { positions: new Float32Array(positions), distances: d?.distances, distance: d && { rms: d.rms, max: d.max, diagonal: d.diagonal } };
       };
       // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
@@ -135,8 +125,8 @@ export function createHandlers(api) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);
     },
-    *[Op.distanceToTarget](args) {
-      return measureDistance(args);
+    *[Op.distanceToTarget]({ positions, scale, triangles = null, outer = null }) {
+      return requireSession().distanceToTarget(positions, scale, outerSurface(triangles, outer));
     },
     *[Op.memoryStats]() {
       return api.memoryStats();

@@ -236,11 +236,13 @@ export class TargetSession {
   }
 
   // positions (#V*3, meters) -> { distances: Float32Array #V (signed, meters, positive outside the target),
-  // rms, max (of |d| over the target box's diagonal), diagonal [m] }; scale: meters per target unit.
-  distanceToTarget(positions, scale) {
+  // rms, max (of |d| over the target box's diagonal, over the corners of `surface`, #S*3 vertex indices such
+  // as the outer triangles; over all points when empty), diagonal [m] }; scale: meters per target unit.
+  distanceToTarget(positions, scale, surface = []) {
     const pos = Float64Array.from(positions);
+    const tris = Int32Array.from(surface);
     const n = pos.length / 3;
-    const summary = this.api.withHeap([pos], (p) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale)));
+    const summary = this.api.withHeap([pos, tris], (p, t) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale, t, tris.length / 3)));
     return { ...summary, distances: new Float32Array(this.api.fromHeap(Float64Array, this.session.distancesPtr(), n)) };
   }
 
