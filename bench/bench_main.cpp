@@ -83,6 +83,7 @@ int main(int argc, char** argv) {
                             {"vertices", solver.mesh().numVertices},
                             {"iterations", solver.iterations()},
                             {"factorizations", solver.timings().factorizations},
+                            {"raisedPivots", solver.timings().raisedPivots},
                             {"seconds", seconds},
                             {"factorMs", factorMs},
                             {"setupMs", solver.timings().setupMs},

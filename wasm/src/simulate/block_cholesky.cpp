@@ -3,6 +3,8 @@
 
 #include <Eigen/OrderingMethods>
 #include <algorithm>
+#include <cmath>
+#include <cstring>
 #include <numeric>
 
 namespace billow {
@@ -69,6 +71,100 @@ std::vector<int> amdOrder(const Graph& g) {
   Eigen::AMDOrdering<int>()(A, P);
   // Eigen's ordering returns the inverse permutation: P.indices()[new] = old.
   return std::vector<int>(P.indices().data(), P.indices().data() + n);
+}
+
+// Dense kernels of the frontal matrices. Eigen 3.4 has no WebAssembly SIMD back end (its products run
+// scalar in wasm), so the dominant kernel, the rank update of a front, is written here once with the GCC and
+// Clang vector extension: a Packet is two doubles, an SSE2 register in the native x86-64 build and a SIMD128
+// register in the wasm build (compiled with -msimd128). Both builds run the same arithmetic in the same order.
+typedef double Packet __attribute__((vector_size(16)));
+
+inline Packet load(const double* p) {
+  Packet v;
+  std::memcpy(&v, p, sizeof v);  // unaligned load
+  return v;
+}
+inline void store(double* p, const Packet& v) { std::memcpy(p, &v, sizeof v); }
+
+// Columns per step of the blocked partial factorization: the rank of each update of the trailing matrix.
+constexpr int kBlockColumns = 32;
+
+// Copies the n x b column-major matrix P (leading dimension ld) into groups of 4 rows, zero-padded:
+// pack[(g b + p) 4 + r] = P(4 g + r, p). The rank-update kernel then reads both operands sequentially.
+void packRowGroups(const double* P, int ld, int n, int b, std::vector<double>& pack) {
+  const int groups = (n + 3) / 4;
+  pack.assign(size_t(groups) * b * 4, 0.0);
+  for (int p = 0; p < b; ++p)
+    for (int i = 0; i < n; ++i) pack[(size_t(i / 4) * b + p) * 4 + i % 4] = P[size_t(p) * ld + i];
+}
+
+// C -= P P^T on the lower triangle of the n x n matrix C (column-major, leading dimension ld), with P packed
+// by packRowGroups(). Blocks of 4 x 4 entries are accumulated in 8 registers over the b columns of P.
+void lowerRankUpdate(double* C, int ld, int n, const double* pack, int b) {
+  const int groups = (n + 3) / 4;
+  for (int gj = 0; gj < groups; ++gj) {
+    const double* pb = pack + size_t(gj) * b * 4;
+    for (int gi = gj; gi < groups; ++gi) {
+      const double* pa = pack + size_t(gi) * b * 4;
+      Packet c[2][4] = {};  // c[h][col]: rows 2h, 2h+1 of the block, column col
+      for (int p = 0; p < b; ++p) {
+        const Packet a0 = load(pa + 4 * p), a1 = load(pa + 4 * p + 2);
+        for (int col = 0; col < 4; ++col) {
+          const double x = pb[4 * p + col];
+          const Packet bc = {x, x};
+          c[0][col] += a0 * bc;
+          c[1][col] += a1 * bc;
+        }
+      }
+      const int i0 = 4 * gi, j0 = 4 * gj;
+      if (gi > gj && i0 + 4 <= n) {
+        // Below the diagonal and inside C: all 16 entries exist.
+        for (int col = 0; col < 4; ++col) {
+          double* dst = C + size_t(j0 + col) * ld + i0;
+          store(dst, load(dst) - c[0][col]);
+          store(dst + 2, load(dst + 2) - c[1][col]);
+        }
+      } else {
+        // On the diagonal or at the last rows: only entries inside the lower triangle.
+        for (int col = 0; col < 4 && j0 + col < n; ++col)
+          for (int r = 0; r < 4 && i0 + r < n; ++r)
+            if (i0 + r >= j0 + col) C[size_t(j0 + col) * ld + i0 + r] -= c[r / 2][col][r % 2];
+      }
+    }
+  }
+}
+
+// Partial Cholesky of the m x m front F (lower triangle, column-major): F11 = L11 L11^T, L21 = F21 L11^-T
+// and F22 -= L21 L21^T, where F11 is the leading k x k block. Right-looking by blocks of kBlockColumns
+// columns: each block is factorized left-looking (axpy over its rows, which the compiler vectorizes), then
+// updates the trailing matrix with lowerRankUpdate(). False on a non-positive pivot; with raisedPivot > 0,
+// pivots up to tinyPivot are raised instead (see BlockCholesky::factorize) and counted in `raised`.
+bool partialCholesky(double* F, int m, int k, double tinyPivot, double raisedPivot, std::vector<double>& pack,
+                     int& raised) {
+  for (int J = 0; J < k; J += kBlockColumns) {
+    const int b = std::min(kBlockColumns, k - J);
+    for (int j = J; j < J + b; ++j) {
+      double* cj = F + size_t(j) * m;
+      for (int p = J; p < j; ++p) {
+        const double* cp = F + size_t(p) * m;
+        const double f = cp[j];
+        for (int i = j; i < m; ++i) cj[i] -= f * cp[i];
+      }
+      if (raisedPivot > 0 && !(cj[j] > tinyPivot)) {
+        cj[j] = std::isfinite(cj[j]) ? std::max(raisedPivot, std::abs(cj[j])) : raisedPivot;
+        ++raised;
+      }
+      if (!(cj[j] > 0)) return false;  // also catches NaN
+      const double d = std::sqrt(cj[j]), inv = 1 / d;
+      cj[j] = d;
+      for (int i = j + 1; i < m; ++i) cj[i] *= inv;
+    }
+    const int rest = m - J - b;
+    if (rest == 0) continue;
+    packRowGroups(F + size_t(J) * m + J + b, m, rest, b, pack);
+    lowerRankUpdate(F + size_t(J + b) * m + J + b, m, rest, pack.data(), b);
+  }
+  return true;
 }
 
 }  // namespace
@@ -286,9 +382,10 @@ double BlockCholesky::factorFlops() const {
   return f;
 }
 
-bool BlockCholesky::factorize(const Eigen::SparseMatrix<double>& H) {
+bool BlockCholesky::factorize(const Eigen::SparseMatrix<double>& H, double tinyPivot, double raisedPivot) {
   const int ns = numSupernodes();
   const double* values = H.valuePtr();
+  raised_ = 0;
   // Update matrices of finished supernodes, in postorder; a parent pops its children's from the top.
   std::vector<size_t> offsets;
   size_t top = 0;
@@ -314,14 +411,7 @@ bool BlockCholesky::factorize(const Eigen::SparseMatrix<double>& H) {
       top = at;
     }
     // Dense partial factorization: F11 = L11 L11^T, L21 = F21 L11^-T, update = F22 - L21 L21^T.
-    auto F11 = F.topLeftCorner(k, k);
-    Eigen::LLT<Eigen::Ref<Eigen::MatrixXd>> llt(F11);
-    if (llt.info() != Eigen::Success) return false;
-    if (u > 0) {
-      auto F21 = F.bottomLeftCorner(u, k);
-      F11.triangularView<Eigen::Lower>().transpose().solveInPlace<Eigen::OnTheRight>(F21);
-      F.bottomRightCorner(u, u).selfadjointView<Eigen::Lower>().rankUpdate(F21, -1.0);
-    }
+    if (!partialCholesky(F.data(), m, k, tinyPivot, raisedPivot, pack_, raised_)) return false;
     Eigen::Map<Eigen::MatrixXd>(panels_.data() + panelStart_[s], m, k) = F.leftCols(k);
     if (parent_[s] != -1) {
       const size_t need = top + 1 + size_t(u) * u;

@@ -5,8 +5,8 @@
 //               columns with nested structure, merged further when few zeros are added) and, for every
 //               nonzero of H, its slot in a frontal matrix. Once per mesh.
 //   factorize(): per supernode, a dense frontal matrix = entries of H + the children's update matrices
-//               (extend-add), a dense partial Cholesky (LLT, triangular solve, rank-k update with Eigen's
-//               blocked dense kernels) and the update matrix for the parent.
+//               (extend-add), a dense partial Cholesky (blocked, with our own SIMD rank-update kernel, see
+//               block_cholesky.cpp) and the update matrix for the parent.
 //   solve():    forward and backward substitution over the supernodes.
 // Why not Eigen's SimplicialLDLT: it is column-by-column scalar code; on these meshes the dense kernels of
 // the supernodes run several times faster for the same fill (bench/README.md).
@@ -26,8 +26,12 @@ class BlockCholesky {
   // nested dissection (ignored for Amd). The same pattern must be passed to factorize().
   void analyze(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& points,
                Ordering ordering = Ordering::NestedDissection);
-  // False when H is not (numerically) positive definite; the factor is then unusable.
-  bool factorize(const Eigen::SparseMatrix<double>& H);
+  // False when H is not (numerically) positive definite; the factor is then unusable. With raisedPivot > 0
+  // it is a modified Cholesky instead and never fails: every pivot (diagonal entry of the Schur complement)
+  // <= tinyPivot is replaced by max(raisedPivot, |pivot|), so the factor is that of H + E with E >= 0
+  // diagonal, nonzero only where H is indefinite or singular; raisedPivots() counts them.
+  bool factorize(const Eigen::SparseMatrix<double>& H, double tinyPivot = 0, double raisedPivot = 0);
+  int raisedPivots() const { return raised_; }
   // Solves H x = b in place.
   void solve(Eigen::VectorXd& b) const;
 
@@ -38,6 +42,7 @@ class BlockCholesky {
 
  private:
   int n_ = 0;                  // vertices
+  int raised_ = 0;             // pivots raised by the last factorize()
   std::vector<int> perm_;      // new vertex -> old vertex
   std::vector<int> first_;     // supernode s owns new vertices [first_[s], first_[s+1])
   std::vector<int> rowStart_;  // rows of s (new vertices, own columns first): rows_[rowStart_[s] ..]
@@ -52,6 +57,7 @@ class BlockCholesky {
   std::vector<double> panels_;
   std::vector<double> stack_;  // update matrices waiting for their parent
   Eigen::MatrixXd front_;
+  std::vector<double> pack_;  // packed columns for the dense rank update
   mutable Eigen::VectorXd work_;
 };
 

@@ -43,8 +43,9 @@ struct InflationSolver::Sparse {
   bool supernodal = true;
 
   // Factorizes H; false when it is not positive definite.
-  bool factorize() {
-    if (supernodal) return chol.factorize(H);
+  // raisedPivot > 0 (supernodal only): modified Cholesky, see BlockCholesky::factorize.
+  bool factorize(double tinyPivot = 0, double raisedPivot = 0) {
+    if (supernodal) return chol.factorize(H, tinyPivot, raisedPivot);
     ldlt.factorize(H);
     return ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0;
   }
@@ -107,6 +108,7 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
     s.ldlt.analyzePattern(s.H);
   if (s.supernodal) timings_.factorNonZeros = s.chol.factorNonZeros(), timings_.factorFlops = s.chol.factorFlops();
   forceScale_ = std::max(pressure_ * mesh_.meanEdgeLength * mesh_.meanEdgeLength, 1e-300);
+  sizeScale_ = std::sqrt(mesh_.outerArea / (4 * M_PI));
   energy_ = totalEnergy(x_);
   if (!std::isfinite(energy_)) fail("The start shape is invalid (a triangle is collapsed). Try another start.");
   timings_.setupMs = msSince(start);
@@ -277,7 +279,14 @@ InflateState InflationSolver::step(int maxIterations, double maxMillis) {
       if (!reused) {
         t0 = Clock::now();
         // A failed Cholesky (non-positive pivot) means H + shift is not positive definite: no descent guarantee.
-        factorValid_ = s.factorize();
+        // Without a shift, small and negative pivots are raised (modified Cholesky) rather than refused: the
+        // correction then stays where H is indefinite or nearly singular (slack and wrinkled regions under
+        // the pressure's curvature) instead of a shift that damps every direction. A shift comes in only
+        // when the modified step fails (no descent, too long, or no decrease along it).
+        const bool modified = shift_ == 0 && options_.minPivot > 0 && s.supernodal;
+        const double raised = modified ? options_.minPivot * shiftUnit : 0;
+        factorValid_ = s.factorize(residual_ > options_.smallPivotResidual ? raised : 1e-3 * raised, raised);
+        if (modified) timings_.raisedPivots += s.chol.raisedPivots();
         ++timings_.factorizations;
         timings_.factorMs += msSince(t0);
         if (!factorValid_) {
@@ -287,7 +296,11 @@ InflateState InflationSolver::step(int maxIterations, double maxMillis) {
         d = -s.solve(grad_);
       }
       const double slope = grad_.dot(d);
-      if (!d.allFinite() || !(slope < 0)) {
+      // A step longer than maxStep balloon radii is no Newton step to trust: the energy of a neo-Hookean
+      // balloon is unbounded below (past its limit point it blows up), and a wild step could find that.
+      double longest = 0;
+      for (int v = 0; v < mesh_.numVertices; ++v) longest = std::max(longest, d.segment<3>(3 * v).squaredNorm());
+      if (!d.allFinite() || !(slope < 0) || std::sqrt(longest) > options_.maxStep * sizeScale_) {
         if (!reused) shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
         continue;
       }

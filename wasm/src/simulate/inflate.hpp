@@ -1,11 +1,13 @@
 // Inflation: the equilibrium f(x) = 0 of a sewn pattern under pressure, as a stationary point of
 // Pi(x) = sum_e h A_e psi~(C_e) - p V(x) (Skouras et al. 2014, Sec. 4; DESIGN.md "Simulation").
 // Newton with a backtracking (Armijo) line search on Pi; the Hessian is the projected (PSD) membrane part
-// minus p times the exact volume Hessian, which is indefinite: a Levenberg-Marquardt shift mu * mean(diag)
-// is raised whenever the LDL^T factorization shows a non-positive pivot or the line search fails, and
-// lowered after full steps. Rigid motions are pinned without bias: all of vertex a, two coordinates of b
-// and one of c (the reactions vanish at equilibrium because pressure and membrane forces on a closed
-// surface have zero resultant and moment). The sparsity pattern is analysed once (AMD ordering, symbolic
+// minus p times the exact volume Hessian, which is indefinite. Without a shift the factorization is a
+// modified Cholesky (small or negative pivots raised, InflateOptions::minPivot); a Levenberg-Marquardt shift
+// mu * p * l is raised whenever that step is no descent, too long, or the line search fails (or, with
+// minPivot = 0 or the simplicial solver, the factorization shows a non-positive pivot), and lowered after
+// full steps. Rigid motions are pinned without bias: all of vertex a, two coordinates of b and one of c
+// (the reactions vanish at equilibrium because pressure and membrane forces on a closed surface have zero
+// resultant and moment). The sparsity pattern is analysed once (AMD ordering, symbolic
 // factorization) and reused for every iteration and every later solve on the same mesh.
 #pragma once
 #include <Eigen/Sparse>
@@ -26,7 +28,7 @@ struct InflateOptions {
   // Converged when max |f_i| / (p * l^2) < tolerance: the largest net force on a vertex relative to the
   // pressure load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
   double tolerance = 1e-5;
-  int maxIterations = 1000;    // the Mylar balloon needs ~60 at 3k triangles, ~360 at 15k (bench/README.md)
+  int maxIterations = 1000;    // the Mylar balloon needs ~55 at 3k triangles, 160-350 at 15k (bench/README.md)
   double band = 1e-4;          // smoothing band of the relaxed energy (MembraneMaterial::band)
   bool projectHessian = true;  // per-element PSD projection of the membrane Hessian
   double armijo = 1e-4;        // sufficient decrease constant
@@ -34,9 +36,19 @@ struct InflateOptions {
   // Try the last factorization as a CG preconditioner before refactorizing. Off: on the Mylar balloon the
   // Hessian changes too much between iterations (elements change regime) and CG rarely converged in time.
   bool reuseFactorization = false;
-  // The same solver in native and wasm builds, so both take the same Newton iterates (in wasm it is about
-  // as fast as Eigen's simplicial LDLT: its dense kernels run scalar there, bench/README.md).
+  // The same solver in native and wasm builds (its dense kernel is our own two-double SIMD code, SSE2
+  // natively and SIMD128 in wasm, so wasm runs it at nearly native speed; bench/README.md).
   LinearSolver linearSolver = LinearSolver::Supernodal;
+  // Modified Cholesky while the LM shift is zero: pivots below minPivot (in units of the pressure stiffness
+  // p * l, like the shift) are raised to it instead of refusing the factorization (0: off). Once the
+  // residual is below smallPivotResidual only non-positive (and tiny, < minPivot / 1000) pivots are, so the
+  // last steps are exact Newton steps (a free panel edge keeps small positive pivots up to the end). About 2x
+  // fewer Newton iterations on the Mylar balloon at 12k-15k triangles (bench/README.md). Supernodal only.
+  double minPivot = 1;
+  double smallPivotResidual = 1;
+  // A Newton step moving a vertex by more than maxStep x the radius of the sphere with the pattern's area
+  // is refused (the shift goes up): a guard against the unbounded energy of an over-inflated sheet.
+  double maxStep = 2;
   double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
 };
 
@@ -48,6 +60,7 @@ struct InflateTimings {
   int factorizations = 0;
   double reuseMs = 0;                          // preconditioned CG with an older factorization
   int reusedSolves = 0;                        // Newton directions found that way
+  int raisedPivots = 0;                        // modified Cholesky: pivots raised (InflateOptions::minPivot)
   double factorNonZeros = 0, factorFlops = 0;  // size and multiply-adds of one factorization (supernodal)
 };
 
@@ -127,6 +140,7 @@ class InflationSolver {
   double lastAlpha_ = 0;
   bool factorValid_ = false;  // ldlt holds a positive definite factorization of an earlier Hessian
   double energy_ = 0, residual_ = 0, forceScale_ = 1;
+  double sizeScale_ = 1;  // radius of the sphere with the outer panels' area [m]
   int iterations_ = 0;
   InflateState state_ = InflateState::Running;
   std::string message_;
