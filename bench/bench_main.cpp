@@ -3,6 +3,8 @@
 // per iteration), peak RSS, and for the Mylar balloon the ratios against Paulsen's numbers.
 //   billow_bench [--json] [--sizes 700,3000,15000,60000] [--examples mylar,sphere3] [--radius 0.3]
 //                [--max-seconds S]   (a solve stops after S seconds and is reported as not converged)
+//                [--stiffening K]    (Young's modulus x K: the Mylar balloon tends to Paulsen's inextensible
+//                                     shape as K grows, DESIGN.md)
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -40,7 +42,7 @@ std::vector<std::string> split(const std::string& s) {
 int main(int argc, char** argv) {
   bool asJson = false;
   std::vector<std::string> sizes = {"700", "3000", "15000", "60000"}, examples = {"mylar", "sphere3"};
-  double radius = 0.3, maxSeconds = 120;
+  double radius = 0.3, maxSeconds = 120, stiffening = 1;
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
     const bool hasValue = i + 1 < argc;
@@ -54,10 +56,12 @@ int main(int argc, char** argv) {
       radius = std::stod(argv[++i]);
     else if (a == "--max-seconds" && hasValue)
       maxSeconds = std::stod(argv[++i]);
+    else if (a == "--stiffening" && hasValue)
+      stiffening = std::stod(argv[++i]);
     else {
       std::fprintf(stderr,
                    "usage: billow_bench [--json] [--sizes N,N,..] [--examples mylar,sphere3] [--radius M] "
-                   "[--max-seconds S]\n");
+                   "[--max-seconds S] [--stiffening K]\n");
       return 2;
     }
   }
@@ -70,6 +74,7 @@ int main(int argc, char** argv) {
       ExampleOptions eo;
       eo.triangles = std::stoi(size);
       eo.size = radius;
+      eo.material.youngsModulus *= stiffening;
       const Pattern p = examplePattern(name, eo);
       const auto t0 = Clock::now();
       InflationSolver solver(sewPattern(p), p.material, p.pressure);
@@ -80,6 +85,7 @@ int main(int argc, char** argv) {
       for (int k = 0; k < 3; ++k) factorMs = std::min(factorMs, solver.timeFactorization());
       nlohmann::json row = {{"example", name},
                             {"triangles", solver.mesh().numTriangles()},
+                            {"stiffening", stiffening},
                             {"vertices", solver.mesh().numVertices},
                             {"iterations", solver.iterations()},
                             {"factorizations", solver.timings().factorizations},

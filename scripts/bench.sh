@@ -10,4 +10,11 @@ if [ -f "$ROOT/bench/bench-wasm.mjs" ]; then
   log "wasm (node)"
   node "$ROOT/bench/bench-wasm.mjs" "$@"
 fi
+# Pattern optimization (the paper's Table 1): BILLOW_BENCH_DESIGNS=sphere3,teddy picks designs.
+designs=()
+[ -n "${BILLOW_BENCH_DESIGNS:-}" ] && designs=(--designs "$BILLOW_BENCH_DESIGNS")
+log "pattern optimization, native"
+"$NATIVE_DIR/billow_design_bench" "${designs[@]}"
+log "pattern optimization, wasm (node)"
+node "$ROOT/bench/design-bench-wasm.mjs" "${designs[@]}"
 bash "$ROOT/scripts/build.sh" web >/dev/null && log "site (headless Chromium)" && node "$ROOT/bench/site-bench.mjs"

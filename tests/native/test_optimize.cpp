@@ -209,3 +209,24 @@ TEST(Optimize, HeavySeamStaysLightSeamSlides) {
   EXPECT_LT(heavy.seamShift, 0.02 * D);
   EXPECT_GT(light.seamShift, 2 * heavy.seamShift);
 }
+
+// DESIGN.md: "the optimizer must also recover from a poor [flattening]". The koala cut into 18 panels along
+// plane sections (bench/designs/teddy.billow.json) has segments far from developable: their flattened seam
+// sides differ by up to ~50 %, and projecting them onto equal lengths at once folds panels. The optimizer
+// then goes on with the seam-length penalty alone instead of stopping before its first step.
+TEST(Optimize, RecoversFromAPoorFlattening) {
+  Fixture f = makeFixture("../../bench/designs/teddy.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  ASSERT_GT(f.built.figures.maxSeamLengthMismatch, 0.2) << "the flattening is no longer poor: pick a harder case";
+  OptimizeOptions o;
+  o.maxIterations = 6;
+  const OptimizeRun r = optimize(f, o, 6);
+  std::printf(
+      "[figures] koala, 18 panels: %zu records, %s, distance rms %.3f%% -> %.3f%%, seam mismatch %.2f -> %.2f\n",
+      r.history.size(), toString(r.state), 100 * r.history.front().distanceRms, 100 * r.history.back().distanceRms,
+      r.history.front().seamMismatch, r.history.back().seamMismatch);
+  ASSERT_NE(r.state, OptimizeState::Failed);
+  ASSERT_GE(r.history.size(), 4u) << "no step was taken";
+  EXPECT_LT(r.history.back().objective, 0.9 * r.history.front().objective);
+  EXPECT_LT(r.history.back().distanceRms, r.history.front().distanceRms);
+}

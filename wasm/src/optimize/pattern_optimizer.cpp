@@ -174,7 +174,7 @@ bool PatternOptimizer::iterate() {
   if (m > 0) alpha = std::min(alpha, 1.0);
   for (int h = 0; h <= options_.maxHalvings; ++h, alpha *= 0.5) {
     Eigen::VectorXd X = X_ + alpha * d;
-    if (options_.projectEveryStep) projectSeamLengths(objective_->edgePairs(), X);
+    if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X);
     Vertices x;
     int newton = 0;
     if (!solveEquilibrium(X, x_, x, &newton)) {
@@ -209,10 +209,14 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
   if (!started_) {
     started_ = true;
     if (options_.projectEveryStep) {
+      // Flattened panels whose seam sides differ a lot (a segment far from developable) may fold when
+      // projected at once: then the seam lengths are brought together by E_length alone while iterating,
+      // and projected exactly only at the end.
       Eigen::VectorXd X = X_;
       projectSeamLengths(objective_->edgePairs(), X);
       SewnMesh mesh = mesh_;
-      if (rebuildRest(X, mesh)) X_ = X, unpackPattern(X_, pattern_);
+      projectTrials_ = rebuildRest(X, mesh);
+      if (projectTrials_) X_ = X, unpackPattern(X_, pattern_);
     }
     Vertices x;
     int newton = 0;
@@ -243,8 +247,16 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       break;
     }
     if (!iterate()) {
+      if (S_.empty() && projectTrials_ && iteration_ == 0) {
+        // Every trial folded or did not settle once projected: go on with the seam-length penalty alone.
+        projectTrials_ = false;
+        continue;
+      }
       if (S_.empty()) {  // not even a short steepest-descent step helps: a (numerical) minimum
-        finish(OptimizeState::Converged, "no further decrease along the gradient");
+        if (iteration_ == 0)
+          finish(OptimizeState::Stopped, "no change of the panels brings the inflated shape closer to the target");
+        else
+          finish(OptimizeState::Converged, "no further decrease along the gradient");
         break;
       }
       S_.clear(), Y_.clear();

@@ -117,7 +117,8 @@ class PatternOptimizer {
   std::string message_;
   int iteration_ = 0, stalled_ = 0;
   bool started_ = false;
-  double start_ = 0;  // steady-clock ms at construction
+  bool projectTrials_ = false;  // options.projectEveryStep, unless projecting the flattened panels folds them
+  double start_ = 0;            // steady-clock ms at construction
 };
 
 }  // namespace billow

@@ -1,0 +1,99 @@
+// The design benchmark in wasm (Node), as the app's worker runs it (bench/README.md "Pattern optimization"):
+// per design of bench/designs/manifest.json, through the worker's handlers (web/src/worker/handlers.js),
+// so every iterate's shape and its distance to the target are computed as the app streams them.
+//   node bench/design-bench-wasm.mjs [--json] [--designs sphere3,teddy] [--max-seconds S]
+// Needs build/wasm/billow_node.{cjs,wasm}; BILLOW_WASM_DIR overrides.
+import { readFileSync } from 'node:fs';
+import { dirname, join, resolve } from 'node:path';
+import { fileURLToPath } from 'node:url';
+import { loadApi } from '../tests/node/load-module.mjs';
+import { readObjText } from '../tests/node/obj.mjs';
+import { createHandlers } from '../web/src/worker/handlers.js';
+
+const HERE = dirname(fileURLToPath(import.meta.url));
+const args = process.argv.slice(2);
+const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
+const asJson = args.includes('--json');
+const only = option('--designs', '').split(',').filter(Boolean);
+const maxSeconds = Number(option('--max-seconds', 600));
+const manifestPath = resolve(option('--manifest', join(HERE, 'designs/manifest.json')));
+const manifest = JSON.parse(readFileSync(manifestPath, 'utf8'));
+
+const api = await loadApi();
+
+function targetOf(design, designPath) {
+  const t = design.target;
+  const file = t.example ? join(HERE, '../web/public/examples', `${t.example}.obj`) : resolve(dirname(designPath), t.obj);
+  return readObjText(readFileSync(file, 'utf8'));
+}
+
+function run(entry) {
+  const designPath = resolve(dirname(manifestPath), entry.file);
+  const design = JSON.parse(readFileSync(designPath, 'utf8'));
+  const target = targetOf(design, designPath);
+  let lo = Infinity, hi = -Infinity;
+  for (let i = 1; i < target.positions.length; i += 3) (lo = Math.min(lo, target.positions[i])), (hi = Math.max(hi, target.positions[i]));
+  const scale = design.size.height / (hi - lo);
+  const handlers = createHandlers(api);
+  const t0 = performance.now();
+  for (const _ of handlers.setTarget(target)); // eslint-disable-line no-unused-vars
+  const seams = design.seams.map(({ points, closed, weight, name }) => ({ points, closed, weight: weight ?? 1, name }));
+  const job = handlers.optimizeDesign({
+    seams, scale, triangles: entry.triangles, maxIterations: 300, pressure: design.pressure, material: design.material,
+    connections: design.connections ?? [],
+  });
+  const shapes = [];
+  let tStart = 0, last = null, first = null, patternSeconds = 0;
+  for (let step = job.next(); !step.done; step = job.next()) {
+    const v = step.value;
+    if (v.stage !== 'optimizing') continue;
+    if (v.iteration === 0 && !first) (first = v), (patternSeconds = (performance.now() - t0) / 1000), (tStart = performance.now());
+    last = v;
+    shapes.push({ iteration: v.iteration ?? 0, seconds: (performance.now() - tStart) / 1000, positions: v.positions });
+    if ((performance.now() - tStart) / 1000 > maxSeconds) break;
+  }
+  const seconds = (performance.now() - tStart) / 1000;
+  // Preview quality: the first iterate within 5 % of the model size (the target's diagonal) of the final one.
+  const final = last.positions, diagonal = first.distance.diagonal;
+  let preview = null;
+  for (const s of shapes) {
+    let worst = 0;
+    for (let i = 0; i < final.length; i += 3) worst = Math.max(worst, Math.hypot(s.positions[i] - final[i], s.positions[i + 1] - final[i + 1], s.positions[i + 2] - final[i + 2]));
+    if (worst < 0.05 * diagonal) { preview = s; break; }
+  }
+  const pattern = JSON.parse(first.flattenedText);
+  return {
+    design: entry.name, class: entry.class, elements: first.triangles.length / 3, panels: pattern.panels.length,
+    internalPanels: pattern.panels.filter((p) => p.internal).length, remeshingSteps: 0,
+    iterations: last.iteration ?? 0, patternSeconds, previewIteration: preview?.iteration ?? -1, previewSeconds: preview?.seconds ?? 0,
+    seconds, state: last.state ?? 'time limit', message: last.message ?? '',
+    flattenedDistanceRms: first.distance.rms, distanceRms: last.distance.rms, distanceMax: last.distance.max,
+    seamMismatch: last.seamMismatch, heapMb: api.memoryStats().heapBytes / 2 ** 20,
+  };
+}
+
+const rows = [];
+if (!asJson)
+  console.log(['design', 'class', 'elems', 'panels', 'iters', 'pattern s', 'preview s', 'full s', 'rms %', 'max %', 'seam', 'heap MB', 'state'].map((h, i) => (i < 2 ? h.padEnd(9) : h.padStart(9))).join(' '));
+for (const entry of manifest.designs) {
+  if (only.length && !only.includes(entry.name)) continue;
+  let row;
+  try {
+    row = run(entry);
+  } catch (error) {
+    row = { design: entry.name, error: error.message };
+  }
+  rows.push(row);
+  if (asJson) continue;
+  if (row.error) {
+    console.log(`${entry.name.padEnd(9)} ${row.error}`);
+    continue;
+  }
+  console.log([
+    row.design.padEnd(9), row.class.padEnd(9), String(row.elements).padStart(9), `${row.panels} (${row.internalPanels})`.padStart(9),
+    String(row.iterations).padStart(9), row.patternSeconds.toFixed(2).padStart(9), row.previewSeconds.toFixed(2).padStart(9),
+    row.seconds.toFixed(2).padStart(9), (100 * row.distanceRms).toFixed(3).padStart(9), (100 * row.distanceMax).toFixed(3).padStart(9),
+    (row.seamMismatch ?? 0).toExponential(1).padStart(9), row.heapMb.toFixed(0).padStart(9), row.state,
+  ].join(' '));
+}
+if (asJson) console.log(JSON.stringify({ runtime: 'wasm (node)', rows }, null, 2));
