@@ -4,7 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { openPage, openDesignFixture, screenshot, useBrowser } from './harness.mjs';
+import { openPage, openFreshPage, openDesignFixture, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 const stat = (page, pane, name) => page.textContent(`#${pane}-stats dd[data-stat="${name}"]`);
@@ -133,7 +133,8 @@ test('the seam allowance and the units change the cut outline and the figures at
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
   await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines && document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
   const area = async () => parseFloat(await stat(page, 'pattern', 'material'));
-  const cutLength = () => page.evaluate(() => window.billow.app.panes.pattern.cutLines.geometry.attributes.position.count);
+  // The cut lines are redrawn (and briefly absent) whenever the panels or the settings change: wait for them.
+  const cutLength = async () => (await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines?.geometry.attributes.position.count)).jsonValue();
   const with10 = await area();
   assert.ok((await cutLength()) > 0, 'cut lines are drawn');
   await page.fill('#allowance-input', '0');
@@ -156,6 +157,196 @@ test('the seam allowance and the units change the cut outline and the figures at
   await page.click('#undo-button');
   assert.equal(await page.inputValue('#units-select'), 'mm');
   assert.equal(await page.inputValue('#allowance-input'), '25');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+// Per seam id (-1: free edges), the median distance [mm] from the middles of its outline edges (away from its
+// ends) to the cut line drawn in the pattern pane.
+const paneWidths = (page) =>
+  page.evaluate(() => {
+    const pane = window.billow.app.panes.pattern;
+    const lines = pane.cutLines?.userData.lines;
+    if (!pane.seams || !lines) return null;
+    const widths = {};
+    pane.seams.outlines.forEach(({ loop, seams }, p) => {
+      const n = loop.length;
+      const xy = lines[p];
+      for (let e = 0; e < n; e++) {
+        if ([-2, -1, 1, 2].some((k) => seams[(e + k + n) % n] !== seams[e])) continue;
+        const [ax, ay] = pane.pattern.panels[p].vertices[loop[e]], [bx, by] = pane.pattern.panels[p].vertices[loop[(e + 1) % n]];
+        const [x, y] = [(ax + bx) / 2, (ay + by) / 2];
+        let best = Infinity;
+        for (let i = 0; i < xy.length; i += 2) {
+          const j = (i + 2) % xy.length;
+          const [cx, cy, dx, dy] = [xy[i], xy[i + 1], xy[j], xy[j + 1]];
+          const len2 = (dx - cx) ** 2 + (dy - cy) ** 2;
+          const t = len2 > 0 ? Math.min(1, Math.max(0, ((x - cx) * (dx - cx) + (y - cy) * (dy - cy)) / len2)) : 0;
+          best = Math.min(best, Math.hypot(x - cx - t * (dx - cx), y - cy - t * (dy - cy)));
+        }
+        (widths[seams[e]] ??= []).push(1000 * best);
+      }
+    });
+    return Object.fromEntries(Object.entries(widths).map(([id, list]) => [id, +list.sort((a, b) => a - b)[list.length >> 1].toFixed(2)]));
+  });
+
+// Waits until the pane's cut line lies at these widths [mm] from the sewing line, seam by seam.
+async function waitWidths(page, expected) {
+  let last = null;
+  for (let k = 0; k < 150; k++) {
+    last = await paneWidths(page);
+    if (last && Object.keys(expected).every((id) => Math.abs(last[id] - expected[id]) < 0.05) && Object.keys(last).length === Object.keys(expected).length) return last;
+    await page.waitForTimeout(100);
+  }
+  assert.fail(`cut line widths ${JSON.stringify(last)}, expected ${JSON.stringify(expected)}`);
+}
+
+// Screen point of the middle of seam `id` on its first panel in the pattern pane.
+const seamPoint = (page, id) =>
+  page.evaluate((seam) => {
+    const pane = window.billow.app.panes.pattern;
+    const run = pane.seams.runs.get(seam)[0];
+    const [x0, y0, x1, y1] = run.segments[run.segments.length >> 1];
+    const p = pane.camera.position.clone().set((x0 + x1) / 2, (y0 + y1) / 2, 0).project(pane.camera);
+    const r = pane.element.getBoundingClientRect();
+    return { x: r.left + ((p.x + 1) / 2) * r.width, y: r.top + ((1 - p.y) / 2) * r.height };
+  }, id);
+
+const waitInflated = (page) =>
+  page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
+
+// Cut-line perimeters per panel number in the exported SVG [mm] (rotation on the sheet does not change them).
+async function svgCutPerimeters(page) {
+  const svg = (await exportFile(page, 'svg')).bytes.toString('utf8');
+  const layer = svg.slice(svg.indexOf('<g id="cut"'), svg.indexOf('</g>', svg.indexOf('<g id="cut"')));
+  return Object.fromEntries([...layer.matchAll(/<path data-panel="(\d+)" d="M([^"Z]+)Z"/g)].map(([, panel, d]) => [panel, perimeter(d.trim().split(/\s+/).map(Number))]));
+}
+
+test('one seam gets its own allowance by a click on it: only its cut line moves; undo, grain and reload', async () => {
+  const page = await openFreshPage(env.context, env.server.url); // the other tests' autosaved settings are not this test's
+  await page.selectOption('#example-select', 'pattern:sphere3');
+  await waitInflated(page);
+  await waitWidths(page, { 0: 10, 1: 10, 2: 10 });
+  const statistics = await page.evaluate(() => window.billow.app.cutStatistics);
+  const s2 = statistics.seams[1];
+  assert.equal(s2.label, 'S2');
+  const before = await svgCutPerimeters(page);
+
+  // A click on seam S2 opens the list of seams at its row, its field ready to type into.
+  const at = await seamPoint(page, 1);
+  await page.mouse.move(at.x, at.y);
+  assert.match(await page.getAttribute('#pane-pattern .pane-body', 'title'), /^Seam S2, panels \d and \d: allowance 10 mm \(the seam allowance\)/);
+  await page.mouse.click(at.x, at.y);
+  await page.locator('#seam-allowance-panel').waitFor();
+  assert.equal(await page.getAttribute('#seams-button', 'aria-expanded'), 'true');
+  assert.equal(await page.evaluate(() => document.activeElement.closest('tr')?.dataset.seam), '1');
+  assert.deepEqual(await page.$$eval('#seam-allowance-panel tbody tr', (rows) => rows.map((r) => r.querySelector('.name').textContent)), ['S1', 'S2', 'S3']);
+  assert.equal(await page.locator('.seam-label', { hasText: 'S2' }).count(), 2, 'S2 is labelled on both of its panels');
+  await page.keyboard.type('0');
+  await page.keyboard.press('Enter');
+  await waitWidths(page, { 0: 10, 1: 0, 2: 10 });
+  assert.match(await page.getAttribute('#seam-allowance-panel tr[data-seam="1"]', 'class'), /\bown\b/);
+  assert.doesNotMatch(await page.getAttribute('#seam-allowance-panel tr[data-seam="0"]', 'class'), /\bown\b/);
+  assert.equal(await page.textContent('#seams-button'), 'Seams (1 own)');
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design.fabrication.seam_allowance), { 1: 0 });
+  // The cut file: the two panels sewn at S2 lose its allowance along it, the third panel is as it was.
+  const after = await svgCutPerimeters(page);
+  for (const panel of [0, 1, 2]) {
+    const onS2 = s2.panels.includes(panel + 1);
+    if (onS2) assert.ok(after[panel] < before[panel] - 10, `panel ${panel + 1}: ${before[panel]} -> ${after[panel]} mm`);
+    else assert.ok(Math.abs(after[panel] - before[panel]) < 0.01, `panel ${panel + 1} keeps its cut line`);
+  }
+  await screenshot(page, 'export-seam-allowance-s2-heat-sealed');
+
+  // The seam allowance of the header changes the other seams, not S2.
+  await page.fill('#allowance-input', '15');
+  await page.press('#allowance-input', 'Enter');
+  await waitWidths(page, { 0: 15, 1: 0, 2: 15 });
+  // Undo and redo, like any edit.
+  await page.click('#undo-button');
+  await waitWidths(page, { 0: 10, 1: 0, 2: 10 });
+  await page.click('#undo-button');
+  await waitWidths(page, { 0: 10, 1: 10, 2: 10 });
+  assert.equal(await page.textContent('#seams-button'), 'Seams');
+  await page.click('#redo-button');
+  await waitWidths(page, { 0: 10, 1: 0, 2: 10 });
+
+  // Grain. On a 1700 mm sheet the nesting turns one gore by 90 degrees when the panels may turn freely;
+  // kept along the roll they are turned 0 or 180 degrees only (a longer sheet); as drawn, not at all.
+  const rotations = () => page.evaluate(() => window.billow.app.cutStatistics.panels.map((p) => Math.round(Math.abs(p.rotation_deg))));
+  const sheetLength = () => page.evaluate(() => window.billow.app.cutStatistics.totals.sheet_length_mm);
+  await page.fill('#sheet-input', '1700');
+  await page.press('#sheet-input', 'Enter');
+  await page.waitForFunction(() => window.billow.app.cutStatistics.totals.sheet_width_mm === 1700);
+  assert.ok((await rotations()).includes(90), `turned freely: ${await rotations()}`);
+  const freeLength = await sheetLength();
+  const freeSheet = await stat(page, 'pattern', 'sheet');
+  await page.selectOption('#grain-select', 'grain');
+  await page.waitForFunction(() => window.billow.app.design.fabrication.grain_lock === true && !('rotate' in window.billow.app.design.fabrication));
+  await page.waitForFunction(() => window.billow.app.cutStatistics.panels.every((p) => [0, 180].includes(Math.round(Math.abs(p.rotation_deg)))));
+  assert.ok((await sheetLength()) > freeLength + 100, `grain kept: ${await sheetLength()} mm of sheet, turned freely ${freeLength} mm`);
+  assert.notEqual(await stat(page, 'pattern', 'sheet'), freeSheet, 'the Sheet figure follows');
+  await screenshot(page, 'export-keep-grain');
+  await page.selectOption('#grain-select', 'fixed');
+  await page.waitForFunction(() => window.billow.app.design.fabrication.rotate === false && !('grain_lock' in window.billow.app.design.fabrication));
+  await page.waitForFunction(() => window.billow.app.cutStatistics.panels.every((p) => Math.abs(p.rotation_deg) < 1e-9));
+  await page.selectOption('#grain-select', 'grain');
+  await page.waitForFunction(() => window.billow.app.cutStatistics.panels.every((p) => [0, 180].includes(Math.round(Math.abs(p.rotation_deg)))));
+
+  // Saved with the design: a reload keeps S2's own allowance and the grain, for this pattern again.
+  await page.waitForTimeout(300); // the autosave
+  await page.reload();
+  await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design.fabrication), { allowance: 10, sheet_width: 1700, units: 'mm', seam_allowance: { 1: 0 }, grain_lock: true });
+  assert.equal(await page.inputValue('#grain-select'), 'grain');
+  assert.equal(await page.textContent('#seams-button'), 'Seams (1 own)');
+  await page.selectOption('#example-select', 'pattern:sphere3');
+  await waitInflated(page);
+  await waitWidths(page, { 0: 10, 1: 0, 2: 10 });
+  // Back to the seam allowance with the keyboard: the list from its button, S2's ↺.
+  await page.focus('#seams-button');
+  await page.keyboard.press('Enter');
+  await page.locator('#seam-allowance-panel tr[data-seam="1"] .reset').focus();
+  await page.keyboard.press('Enter');
+  await waitWidths(page, { 0: 10, 1: 10, 2: 10 });
+  assert.equal(await page.evaluate(() => 'seam_allowance' in window.billow.app.design.fabrication), false);
+  // A typed value out of range is refused with a message, and the field shows the allowance again.
+  await page.fill('#seam-allowance-panel tr[data-seam="2"] input', '500');
+  await page.press('#seam-allowance-panel tr[data-seam="2"] input', 'Enter');
+  await page.locator('.message.warning', { hasText: 'allowance of seam S3 must be between 0 and 100 mm' }).waitFor();
+  assert.equal(await page.inputValue('#seam-allowance-panel tr[data-seam="2"] input'), '10');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('free edges get their own allowance; own allowances of seams that are gone are listed and removable', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  // The sphere of three gores with an internal panel whose two tips are left unsewn: free edges inside.
+  const pattern = JSON.parse(await page.evaluate(async () => (await window.billow.client.request('examplePattern', { name: 'sphere3-internal', triangles: 800 })).patternText));
+  const xs = pattern.panels[3].vertices.map(([x]) => x);
+  const [lo, hi] = [Math.min(...xs), Math.max(...xs)];
+  const tip = (panel, v) => panel === 3 && Math.abs(pattern.panels[3].vertices[v][0] - (lo + hi) / 2) > 0.35 * (hi - lo);
+  pattern.stitches = pattern.stitches.filter(([pa, va, pb, vb]) => !tip(pa, va) && !tip(pb, vb));
+  await page.evaluate(() => window.billow.app.setSeamAllowance(7, 3)); // a seam this pattern does not have
+  await page.setInputFiles('#file-input', { name: 'open-tips.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(pattern)) });
+  await waitInflated(page);
+  await page.waitForFunction(() => window.billow.app.cutStatistics?.totals.free_edge_mm > 0);
+  await page.click('#seams-button');
+  const free = page.locator('#seam-allowance-panel tr[data-seam="-1"]');
+  assert.match(await free.textContent(), /Free edges/);
+  const gone = page.locator('#seam-allowance-panel tr[data-seam="7"]');
+  assert.match(await gone.textContent(), /S8.*not in this pattern/);
+  const seamIds = Object.keys(await paneWidths(page)).filter((id) => id !== '-1');
+  await free.locator('input').fill('25');
+  await free.locator('input').press('Enter');
+  await waitWidths(page, { '-1': 25, ...Object.fromEntries(seamIds.map((id) => [id, 10])) });
+  assert.equal(await page.evaluate(() => window.billow.app.design.fabrication.free_edge_allowance), 25);
+  await screenshot(page, 'export-free-edges');
+  await gone.locator('.reset').click();
+  await page.waitForFunction(() => !window.billow.app.design.fabrication.seam_allowance);
+  assert.equal(await gone.count(), 0);
+  await free.locator('.reset').click();
+  await waitWidths(page, { '-1': 10, ...Object.fromEntries(seamIds.map((id) => [id, 10])) });
   assert.deepEqual(page.errors, []);
   await page.close();
 });

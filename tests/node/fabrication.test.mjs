@@ -2,7 +2,14 @@
 // balloon figures (envelope mass, helium lift, safety factor) checked against hand computations.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { parseFabrication, patternStatRows, balloonFigures, balloonRows, formatMillimeters, peakStress } from '../../web/src/app/fabrication.js';
+import {
+  parseFabrication, patternStatRows, balloonFigures, balloonRows, formatMillimeters, peakStress, exportOptions, grainMode, GRAIN_FIELDS,
+  seamAllowanceOf,
+} from '../../web/src/app/fabrication.js';
+import { setFabrication, setSeamAllowance } from '../../web/src/app/commands.js';
+import { parseDesign, newDesign } from '../../web/src/app/design.js';
+import { loadApi } from './load-module.mjs';
+import { SolverError } from '../../web/src/worker/protocol.js';
 
 test('fabrication settings default, keep good fields and warn about bad ones', () => {
   const warnings = [];
@@ -16,6 +23,141 @@ test('fabrication settings default, keep good fields and warn about bad ones', (
   assert.equal(warnings.length, 4);
   assert.equal(formatMillimeters(254, 'in'), '10.00 in');
   assert.equal(formatMillimeters(254.4, 'mm'), '254 mm');
+});
+
+test('per-seam and free-edge allowances and the grain are read with warnings for bad values', () => {
+  const warnings = [];
+  const good = parseFabrication(
+    { allowance: 10, sheet_width: 1000, units: 'mm', seam_allowance: { 5: 15, 3: 0 }, free_edge_allowance: 4, grain_lock: true, rotate: false, note: 'kept' },
+    warnings,
+  );
+  assert.deepEqual(warnings, []);
+  assert.deepEqual(good.seam_allowance, { 3: 0, 5: 15 });
+  assert.deepEqual(Object.keys(good.seam_allowance), ['3', '5']);
+  assert.equal(good.free_edge_allowance, 4);
+  assert.equal(good.grain_lock, true);
+  assert.equal(good.rotate, false);
+  assert.equal(good.note, 'kept'); // unknown fields survive
+  assert.equal(seamAllowanceOf(good, 3), 0);
+  assert.equal(seamAllowanceOf(good, 4), 10);
+  // Bad entries are dropped one by one, each with a warning that names it; the good ones stay.
+  const mixed = parseFabrication({ seam_allowance: { 2: 101, 4: -1, 6: 'wide', 7: 12, S3: 0, '-1': 5, '1.5': 5, '007': 5 } }, warnings);
+  assert.deepEqual(mixed.seam_allowance, { 7: 12 });
+  assert.equal(warnings.length, 7);
+  assert.match(warnings[0], /seam S3 is not between 0 and 100 mm/);
+  assert.ok(warnings.some((w) => /"S3", which is no seam id/.test(w)));
+  warnings.length = 0;
+  const bad = parseFabrication({ seam_allowance: [[3, 0]], free_edge_allowance: 500, grain_lock: 'yes', rotate: 1 }, warnings);
+  assert.equal(warnings.length, 4);
+  for (const key of ['seam_allowance', 'free_edge_allowance', 'grain_lock', 'rotate']) assert.equal(key in bad, false, key);
+  assert.deepEqual(bad, { allowance: 10, sheet_width: 1000, units: 'mm' });
+  // Nothing valid left: no empty object.
+  assert.equal('seam_allowance' in parseFabrication({ seam_allowance: { x: 1 } }, []), false);
+  // A design document keeps them through parseDesign, with its warnings.
+  const { design, warnings: designWarnings } = parseDesign({ ...newDesign(), fabrication: { allowance: 8, seam_allowance: { 3: 0, 4: 200 } } });
+  assert.deepEqual(design.fabrication.seam_allowance, { 3: 0 });
+  assert.equal(designWarnings.length, 1);
+});
+
+test('the exporter\'s options carry the per-seam allowances, free edges and grain; the commands set and reset them', () => {
+  const plain = newDesign();
+  assert.deepEqual(exportOptions(plain.fabrication), { allowance: 10, sheet_width: 1000, units: 'mm' });
+  let d = setSeamAllowance(plain, 5, 15);
+  d = setSeamAllowance(d, 3, 0);
+  assert.deepEqual(Object.entries(d.fabrication.seam_allowance), [['3', 0], ['5', 15]]);
+  assert.equal(setSeamAllowance(d, 3, 0), d, 'no change, same design');
+  d = setFabrication(d, { free_edge_allowance: 4, ...GRAIN_FIELDS.grain });
+  assert.equal(grainMode(d.fabrication), 'grain');
+  assert.deepEqual(exportOptions(d.fabrication, { paper: 'letter' }), {
+    allowance: 10, sheet_width: 1000, units: 'mm', seam_allowance: { 3: 0, 5: 15 }, free_edge_allowance: 4, grain_lock: true, paper: 'letter',
+  });
+  d = setFabrication(d, GRAIN_FIELDS.fixed);
+  assert.equal(grainMode(d.fabrication), 'fixed');
+  assert.equal(exportOptions(d.fabrication).rotate, false);
+  assert.equal('grain_lock' in d.fabrication, false);
+  d = setFabrication(d, { ...GRAIN_FIELDS.free, free_edge_allowance: undefined });
+  assert.equal(grainMode(d.fabrication), 'free');
+  d = setSeamAllowance(setSeamAllowance(d, 3, null), 5, null);
+  assert.deepEqual(d.fabrication, plain.fabrication); // back to the defaults: no leftover fields
+  assert.deepEqual(plain.fabrication, { allowance: 10, sheet_width: 1000, units: 'mm' }); // not mutated
+});
+
+// Distance from point (x, y) to a closed polyline [x0, y0, x1, y1, ...].
+function distanceToLoop(x, y, xy) {
+  let best = Infinity;
+  for (let i = 0; i < xy.length; i += 2) {
+    const j = (i + 2) % xy.length;
+    const [ax, ay, bx, by] = [xy[i], xy[i + 1], xy[j], xy[j + 1]];
+    const len2 = (bx - ax) ** 2 + (by - ay) ** 2;
+    const t = len2 > 0 ? Math.min(1, Math.max(0, ((x - ax) * (bx - ax) + (y - ay) * (by - ay)) / len2)) : 0;
+    best = Math.min(best, Math.hypot(x - ax - t * (bx - ax), y - ay - t * (by - ay)));
+  }
+  return best;
+}
+
+// Per seam id (-1 free): the distances [mm] from the middles of its edges (away from its ends) to the cut line.
+function cutWidths(pattern, result) {
+  const widths = new Map();
+  result.outlines.forEach(({ loop, seams }, p) => {
+    const n = loop.length;
+    for (let e = 0; e < n; e++) {
+      if ([-2, -1, 1, 2].some((k) => seams[(e + k + n) % n] !== seams[e])) continue;
+      const [ax, ay] = pattern.panels[p].vertices[loop[e]], [bx, by] = pattern.panels[p].vertices[loop[(e + 1) % n]];
+      const d = 1000 * distanceToLoop((ax + bx) / 2, (ay + by) / 2, result.cutLines[p]);
+      if (!widths.has(seams[e])) widths.set(seams[e], []);
+      widths.get(seams[e]).push(d);
+    }
+  });
+  return widths;
+}
+
+test('the exporter honours seam_allowance: the cut line moves by the given width near that seam only', async () => {
+  const api = await loadApi();
+  const pattern = api.examplePattern('sphere3', 900);
+  const text = JSON.stringify(pattern);
+  const plain = api.exportPattern(text, {});
+  assert.equal(plain.statistics.seams.length, 3);
+  assert.equal(plain.outlines.length, 3);
+  // Every outline edge has a seam (a closed sphere has no free edges).
+  assert.ok(plain.outlines.every((o) => o.loop.length === o.seams.length && o.seams.every((id) => id >= 0 && id < 3)));
+  assert.equal(plain.statistics.totals.free_edge_mm, 0);
+  const own = api.exportPattern(text, { seam_allowance: { 1: 0, 2: 25 } });
+  const before = cutWidths(pattern, plain), after = cutWidths(pattern, own);
+  const expected = { 0: 10, 1: 0, 2: 25 };
+  for (const [id, list] of after) {
+    assert.ok(list.length >= 10, `seam ${id}: ${list.length} edges checked`);
+    for (const d of list) assert.ok(Math.abs(d - expected[id]) < 0.05, `seam S${id + 1}: ${d} mm from the sewing line, not ${expected[id]}`);
+    for (const d of before.get(id)) assert.ok(Math.abs(d - 10) < 0.05);
+  }
+  assert.deepEqual(own.statistics.seams.map((s) => s.allowance_mm), [10, 0, 25]);
+  // A seam the pattern does not have (the seams were redrawn) is ignored.
+  const stale = api.exportPattern(text, { seam_allowance: { 9: 0 } });
+  assert.deepEqual(stale.cutLines, plain.cutLines);
+  // Grain lock: every panel turned 0 or 180 degrees on the sheet.
+  const grain = api.exportPattern(text, { grain_lock: true });
+  for (const p of grain.statistics.panels) assert.ok([0, 180].includes(Math.round(Math.abs(p.rotation_deg))), `${p.rotation_deg}°`);
+});
+
+test('the exporter refuses bad seam allowances with a message that names the seam', async () => {
+  const api = await loadApi();
+  const text = JSON.stringify(api.examplePattern('sphere3', 600));
+  const refused = (options, pattern) => {
+    assert.throws(() => api.exportPattern(text, options), (e) => {
+      assert.ok(e instanceof SolverError);
+      assert.equal(e.code, 'export.bad-value');
+      assert.match(e.message, pattern);
+      return true;
+    });
+  };
+  refused({ seam_allowance: { 1: 101 } }, /seam S2 must be a width from 0 to 100 mm/);
+  refused({ seam_allowance: { 1: -2 } }, /seam S2/);
+  refused({ seam_allowance: { 1: '5' } }, /seam S2/);
+  refused({ seam_allowance: { S2: 5 } }, /"S2".*whole number/);
+  refused({ seam_allowance: { '-1': 5 } }, /whole number/);
+  refused({ seam_allowance: [[1, 5]] }, /seam ids and widths/);
+  refused({ seam_allowance: 5 }, /seam ids and widths/);
+  refused({ free_edge_allowance: -1 }, /free edges/);
+  refused({ grain_lock: 'yes' }, /grain_lock is true or false/);
 });
 
 test('pattern statistics read in the chosen units', () => {

@@ -1,8 +1,11 @@
 // Embind for the fabrication outputs (wasm/src/export/export.hpp):
 //   Module.exportPattern(patternJson, optionsJson) -> { svg, dxf, pdfBase64, statistics, cutLines }
-//     options (all optional, lengths in mm): { allowance, free_edge_allowance, sheet_width, notch_spacing,
-//       overlap, paper: "a4"|"letter", units: "mm"|"in", grain_lock, rotate, title }
+//     options (all optional, lengths in mm; io/export_options_json.hpp): { allowance, free_edge_allowance,
+//       seam_allowance: { "<seam id>": mm }, sheet_width, notch_spacing, overlap, paper: "a4"|"letter",
+//       units: "mm"|"in", grain_lock, rotate, title }
 //     cutLines: per panel [x0, y0, x1, y1, ...] in the panel's own frame, in meters (for the pattern pane).
+//     outlines: per panel { loop: [vertex index, ...] (its sewing line, counterclockwise), seams: [seam id of
+//       loop edge i (loop[i] -> loop[i+1]), -1 for a free edge] }: where each seam of stats.json lies.
 //   The PDF is binary, so it crosses as base64 (embind strings are UTF-8 text).
 #include <emscripten/bind.h>
 
@@ -11,6 +14,7 @@
 
 #include "export/export.hpp"
 #include "guarded.hpp"
+#include "io/export_options_json.hpp"
 #include "io/pattern_json.hpp"
 #include "util/error.hpp"
 
@@ -40,31 +44,10 @@ std::string base64(const std::string& bytes) {
 }
 
 billow::ExportOptions readOptions(const std::string& optionsJson) {
-  billow::ExportOptions o;
-  if (optionsJson.empty()) return o;
+  if (optionsJson.empty()) return {};
   const json j = json::parse(optionsJson, nullptr, false);
   if (j.is_discarded() || !j.is_object()) throw billow::Error("export.bad-value", "The export options are not valid.");
-  const auto number = [&](const char* key, double fallback) {
-    if (!j.contains(key)) return fallback;
-    if (!j[key].is_number())
-      throw billow::Error("export.bad-value", std::string("The export option ") + key + " must be a number.");
-    return j[key].get<double>();
-  };
-  o.allowance = number("allowance", o.allowance);
-  o.freeEdgeAllowance = number("free_edge_allowance", o.freeEdgeAllowance);
-  o.sheetWidth = number("sheet_width", o.sheetWidth);
-  o.notchSpacing = number("notch_spacing", o.notchSpacing);
-  o.tileOverlap = number("overlap", o.tileOverlap);
-  const std::string paper = j.value("paper", std::string("a4"));
-  if (paper != "a4" && paper != "letter") throw billow::Error("export.bad-value", "The paper is A4 or Letter.");
-  o.paper = paper == "a4" ? billow::PaperSize::A4 : billow::PaperSize::Letter;
-  const std::string units = j.value("units", std::string("mm"));
-  if (units != "mm" && units != "in") throw billow::Error("export.bad-value", "The units are mm or inches.");
-  o.units = units == "mm" ? billow::DisplayUnits::Millimeters : billow::DisplayUnits::Inches;
-  o.grainLock = j.value("grain_lock", false);
-  o.allowRotation = j.value("rotate", true);
-  if (j.contains("title") && j["title"].is_string()) o.title = j["title"].get<std::string>().substr(0, 120);
-  return o;
+  return billow::readExportOptionsJson(j);
 }
 
 std::string exportPattern(const std::string& patternJson, const std::string& optionsJson) {
@@ -77,11 +60,15 @@ std::string exportPattern(const std::string& patternJson, const std::string& opt
       for (const billow::Vec2& p : line) flat.push_back(p.x() / 1000), flat.push_back(p.y() / 1000);
       cut.push_back(std::move(flat));
     }
+    json outlines = json::array();
+    for (const billow::PanelOutline& o : bundle.outlines.panels)
+      outlines.push_back({{"loop", o.loop}, {"seams", o.edgeSeam}});
     return json({{"svg", bundle.svg},
                  {"dxf", bundle.dxf},
                  {"pdfBase64", base64(bundle.pdf)},
                  {"statistics", json::parse(bundle.statistics)},
-                 {"cutLines", cut}})
+                 {"cutLines", cut},
+                 {"outlines", outlines}})
         .dump();
   });
 }

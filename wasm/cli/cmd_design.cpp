@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "export/export.hpp"
+#include "io/export_options_json.hpp"
 #include "io/obj_writer.hpp"
 #include "io/pattern_json.hpp"
 #include "optimize/pattern_optimizer.hpp"
@@ -68,7 +69,8 @@ int designCommand(const std::vector<std::string>& argv) {
                  "Makes the sewn pattern of a design (its segments flattened into panels of about TRIANGLES\n"
                  "triangles in all, default 3000, and an internal panel for each internal connection), inflates it "
                  "from the target shape and writes\n"
-                 "DIR/pattern.json, DIR/pattern.svg (the cut file), DIR/inflated.obj and DIR/report.json.\n"
+                 "DIR/pattern.json, DIR/pattern.svg (the cut file, with the design's \"fabrication\" settings:\n"
+                 "seam allowances, grain, sheet width), DIR/inflated.obj and DIR/report.json.\n"
                  "The panels are optimized so that the inflated shape comes close to the target, unless\n"
                  "--no-optimize.\n"
                  "Exit code 0 when the inflated shape settles, 1 when the design cannot be patterned or\n"
@@ -92,6 +94,17 @@ int designCommand(const std::vector<std::string>& argv) {
                     std::to_string(options.triangles) + " triangles",
                 "Choose a coarser --resolution.");
   const Design& design = scene->design;
+  // The cut file uses the design's fabrication settings (seam allowances, grain, sheet width; the keys of
+  // io/export_options_json.hpp); read now, so that a bad value stops the command before the long work.
+  ExportOptions cutOptions;
+  if (design.extra.contains("fabrication")) {
+    try {
+      cutOptions = readExportOptionsJson(design.extra["fabrication"]);
+    } catch (const Error& e) {
+      throw Error(e.code, std::string("the design's fabrication settings: ") + e.what());
+    }
+  }
+  cutOptions.title = std::filesystem::path(args.positional[0]).stem().string();
   printProblems(scene->segmentation.problems);
   if (!scene->segmentation.ok()) {
     std::fprintf(stderr, "billow design: this design cannot be made into panels yet (see the errors above)\n");
@@ -157,19 +170,8 @@ int designCommand(const std::vector<std::string>& argv) {
   }
   std::filesystem::create_directories(dir);
   writeTextFile(dir + "/pattern.json", writePatternJson(bp.pattern) + "\n");
-  {
-    // The cut file, with the design's fabrication settings (seam allowance, sheet width) when it has them.
-    ExportOptions eo;
-    const json& fabrication = design.extra.value("fabrication", json::object());
-    if (fabrication.is_object()) {
-      if (fabrication.contains("allowance") && fabrication["allowance"].is_number())
-        eo.allowance = fabrication["allowance"].get<double>();
-      if (fabrication.contains("sheet_width") && fabrication["sheet_width"].is_number())
-        eo.sheetWidth = fabrication["sheet_width"].get<double>();
-    }
-    eo.title = std::filesystem::path(args.positional[0]).stem().string();
-    writeTextFile(dir + "/pattern.svg", exportPattern(bp.pattern, eo).svg);
-  }
+  // The cut file, with the design's fabrication settings when it has them.
+  writeTextFile(dir + "/pattern.svg", exportPattern(bp.pattern, cutOptions).svg);
 
   // Inflate from the target shape (the pattern's "inflated" start).
   const SewnMesh mesh = sewPattern(bp.pattern);

@@ -1,4 +1,5 @@
-// billow export PATTERN.json --out-dir DIR [--allowance MM] [--sheet-width MM] [--paper a4|letter]
+// billow export PATTERN.json --out-dir DIR [--allowance MM] [--seam-allowance SEAM=MM ...]
+//                            [--free-edge-allowance MM] [--sheet-width MM] [--paper a4|letter]
 //                            [--notch-spacing MM] [--overlap MM] [--units mm|in] [--grain-lock] [--no-rotate]
 // Writes DIR/pattern.svg, DIR/pattern.dxf, DIR/pattern.pdf and DIR/stats.json.
 #include <cstdio>
@@ -6,6 +7,8 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <string>
+#include <utility>
 
 #include "cli/commands.hpp"
 #include "export/export.hpp"
@@ -20,6 +23,31 @@ double millimetres(const Args& args, const std::string& name, double fallback) {
   return numberOption(args, name, fallback, "a length in mm");
 }
 
+// --seam-allowance SEAM=MM: SEAM is the seam's label on the pieces (S4) or its id in stats.json (3).
+std::pair<int, double> seamAllowanceOption(const std::string& value) {
+  const auto fail = [&](const std::string& why) -> std::pair<int, double> {
+    throw Error("cli.usage",
+                "the option --seam-allowance needs SEAM=MM, like S4=0 or 3=15 (" + why + "), not '" + value + "'");
+  };
+  const size_t eq = value.find('=');
+  if (eq == std::string::npos) return fail("no '='");
+  std::string seam = value.substr(0, eq);
+  const bool label = !seam.empty() && (seam[0] == 'S' || seam[0] == 's');
+  if (label) seam.erase(0, 1);
+  if (seam.empty() || seam.size() > 6 || seam.find_first_not_of("0123456789") != std::string::npos)
+    return fail("the seam is its label S1, S2, ... or its id 0, 1, ...");
+  const int id = std::stoi(seam) - (label ? 1 : 0);
+  if (id < 0) return fail("the labels start at S1");
+  const std::string mm = value.substr(eq + 1);
+  try {
+    size_t used = 0;
+    const double width = std::stod(mm, &used);
+    if (used == mm.size()) return {id, width};
+  } catch (const std::exception&) {
+  }
+  return fail("the width is a length in mm");
+}
+
 void writeFile(const std::filesystem::path& path, const std::string& bytes) {
   std::ofstream file(path, std::ios::binary);
   file << bytes;
@@ -29,21 +57,40 @@ void writeFile(const std::filesystem::path& path, const std::string& bytes) {
 }  // namespace
 
 int exportCommand(const std::vector<std::string>& argv) {
-  const Args args = parseArgs(
-      argv, {"--out-dir", "--allowance", "--sheet-width", "--paper", "--notch-spacing", "--overlap", "--units"});
+  const Args args = parseArgs(argv, {"--out-dir", "--allowance", "--seam-allowance", "--free-edge-allowance",
+                                     "--sheet-width", "--paper", "--notch-spacing", "--overlap", "--units"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir")) {
-    std::fprintf(args.has("--help") ? stdout : stderr,
-                 "usage: billow export PATTERN.json --out-dir DIR [--allowance MM] [--sheet-width MM]\n"
-                 "                     [--paper a4|letter] [--notch-spacing MM] [--overlap MM] [--units mm|in]\n"
-                 "                     [--grain-lock] [--no-rotate]\n\n"
-                 "Writes the cut files DIR/pattern.svg and DIR/pattern.dxf (the pieces nested on a sheet), a\n"
-                 "printable DIR/pattern.pdf (overview, then true-scale tiles) and DIR/stats.json.\n"
-                 "Defaults: 10 mm seam allowance (0 for heat sealing), 1000 mm sheet, A4, notches every 100 mm,\n"
-                 "10 mm tile overlap.\n");
+    std::fprintf(
+        args.has("--help") ? stdout : stderr,
+        "usage: billow export PATTERN.json --out-dir DIR [--allowance MM] [--seam-allowance SEAM=MM ...]\n"
+        "                     [--free-edge-allowance MM] [--sheet-width MM] [--paper a4|letter]\n"
+        "                     [--notch-spacing MM] [--overlap MM] [--units mm|in] [--grain-lock] [--no-rotate]\n\n"
+        "Writes the cut files DIR/pattern.svg and DIR/pattern.dxf (the pieces nested on a sheet), a\n"
+        "printable DIR/pattern.pdf (overview, then true-scale tiles) and DIR/stats.json.\n"
+        "  --allowance MM             seam allowance of every seam (0 for heat sealing)\n"
+        "  --seam-allowance SEAM=MM   one seam's own allowance; SEAM is its label on the pieces (S4) or\n"
+        "                             its id in stats.json (3); repeat for more seams\n"
+        "  --free-edge-allowance MM   allowance of edges sewn to nothing (openings, hems)\n"
+        "  --grain-lock               keep each panel's y axis along the roll (turned 0 or 180 degrees)\n"
+        "  --no-rotate                nest the panels as drawn (not turned)\n"
+        "Defaults: 10 mm seam allowance, free edges as the seams, 1000 mm sheet, A4, notches every\n"
+        "100 mm, 10 mm tile overlap, panels turned as they nest best.\n");
     return args.has("--help") ? 0 : 2;
   }
   ExportOptions o;
   o.allowance = millimetres(args, "--allowance", o.allowance);
+  o.freeEdgeAllowance = millimetres(args, "--free-edge-allowance", o.freeEdgeAllowance);
+  if (args.has("--free-edge-allowance") && o.freeEdgeAllowance < 0)
+    throw Error("cli.usage", "the option --free-edge-allowance needs a length of 0 mm or more");
+  for (const auto& [name, value] : args.options) {
+    if (name != "--seam-allowance") continue;
+    const auto seam = seamAllowanceOption(value);
+    for (const auto& given : o.seamAllowance)
+      if (given.first == seam.first)
+        throw Error("cli.usage",
+                    "the seam S" + std::to_string(seam.first + 1) + " is given two allowances (--seam-allowance)");
+    o.seamAllowance.push_back(seam);
+  }
   o.sheetWidth = millimetres(args, "--sheet-width", o.sheetWidth);
   o.notchSpacing = millimetres(args, "--notch-spacing", o.notchSpacing);
   o.tileOverlap = millimetres(args, "--overlap", o.tileOverlap);

@@ -8,6 +8,7 @@ import { Messages } from './app/messages.js';
 import { App } from './app/app.js';
 import { SeamTool } from './tools/seam-tool.js';
 import { SeamPanel } from './views/seam-panel.js';
+import { SeamAllowancePanel } from './views/seam-allowance-panel.js';
 import { Exporter } from './app/exporter.js';
 import { MM_PER_INCH } from './app/fabrication.js';
 import { TabGuard, secondaryTabMessage } from './app/tab-guard.js';
@@ -70,6 +71,7 @@ const app = new App({
     allowanceInput: $('allowance-input'),
     sheetInput: $('sheet-input'),
     unitsSelect: $('units-select'),
+    grainSelect: $('grain-select'),
     undoButton: $('undo-button'),
     compareGroup: $('compare-group'),
     showOptimized: $('show-optimized'),
@@ -98,6 +100,14 @@ const typedMillimeters = (input) => Number(input.value) * ($('units-select').val
 $('allowance-input').addEventListener('change', (e) => app.setFabrication({ allowance: typedMillimeters(e.target) }));
 $('sheet-input').addEventListener('change', (e) => app.setFabrication({ sheet_width: typedMillimeters(e.target) }));
 $('units-select').addEventListener('change', (e) => app.setFabrication({ units: e.target.value }));
+$('grain-select').addEventListener('change', (e) => app.setGrain(e.target.value));
+// Seam allowance per seam: the list beside the pattern, opened by its button or a click on a seam.
+app.allowancePanel = new SeamAllowancePanel($('seam-allowance-panel'), $('seams-button'), {
+  pane: panes.pattern,
+  onSeamAllowance: (id, mm) => app.setSeamAllowance(id, mm),
+  onFreeEdgeAllowance: (mm) => app.setFreeEdgeAllowance(mm),
+});
+app.allowancePanel.render(app.design.fabrication);
 const exporter = new Exporter(app, viewport);
 const exportMenu = $('export-menu');
 exportMenu.addEventListener('click', (event) => {

@@ -23,6 +23,7 @@ ExportBundle exportPattern(const Pattern& pattern, const ExportOptions& options)
   out.pdf = writePdf(layout.drawing, pdf);
   out.statistics = stats.dump(2);
   for (const PanelLayout& panel : layout.panels) out.cutLines.push_back(panel.cut);
+  out.outlines = layout.outlines;
   return out;
 }
 

@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "export/export_options.hpp"
+#include "export/outline.hpp"
 #include "export/polygon.hpp"
 #include "simulate/sewn_pattern.hpp"
 
@@ -14,6 +15,7 @@ struct ExportBundle {
   std::string svg, dxf, pdf;
   std::string statistics;          // JSON (statistics.hpp)
   std::vector<Polygon2> cutLines;  // per panel, the cut line (with the allowance) in its own frame [mm]
+  Outlines outlines;               // the seams, and per panel its sewing line's loop and each edge's seam id
 };
 
 // Throws billow::Error: export.empty, export.bad-value, export.panel-shape, export.sheet-too-narrow.

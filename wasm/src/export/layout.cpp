@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
 
 #include "export/offset.hpp"
 #include "util/error.hpp"
@@ -35,7 +36,11 @@ void validate(const Pattern& pattern, const ExportOptions& o) {
   if (bad(o.allowance) || o.allowance > 200)
     throw Error("export.bad-value", "Choose a seam allowance from 0 to 200 mm.");
   for (const auto& [seam, w] : o.seamAllowance)
-    if (bad(w) || w > 200) throw Error("export.bad-value", "Choose seam allowances from 0 to 200 mm.");
+    if (bad(w) || w > 200)
+      throw Error("export.bad-value",
+                  "Choose the allowance of seam S" + std::to_string(seam + 1) + " from 0 to 200 mm.");
+  if (o.freeEdgeAllowance >= 0 ? o.freeEdgeAllowance > 200 : !(o.freeEdgeAllowance < 0))
+    throw Error("export.bad-value", "Choose the allowance of free edges from 0 to 200 mm.");
   if (bad(o.notchSpacing) || bad(o.notchLength) || bad(o.gap) || bad(o.tileOverlap))
     throw Error("export.bad-value", "Notch spacing, notch length, gap and tile overlap must be 0 or more.");
   if (!(o.sheetWidth >= 10 && o.sheetWidth <= 100000))

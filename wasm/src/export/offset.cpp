@@ -128,14 +128,25 @@ Polygon2 offsetPolygon(const Polygon2& poly, const std::vector<double>& widths, 
     const double turn = cross2(dir[h], dir[i]);  // > 0: convex corner
     Vec2 x;
     if (turn > 1e-12 && lineIntersection(endH, dir[h], startI, dir[i], x)) {
-      const double w = std::max(widths[h], widths[i]);
-      if ((x - p).norm() <= options.miterLimit * w) {
+      const double w = std::max(widths[h], widths[i]), reach = options.miterLimit * w;
+      if ((x - p).norm() <= reach) {
         push(raw, x, eps);
       } else {
         // Square the corner off at distance w from the vertex, across the bisector.
         const Vec2 bis = (normal[h] + normal[i]).normalized();
-        push(raw, endH + (w - widths[h] * normal[h].dot(bis)) / dir[h].dot(bis) * dir[h], eps);
-        push(raw, startI - (w - widths[i] * normal[i].dot(bis)) / -dir[i].dot(bis) * dir[i], eps);
+        const Vec2 a = endH + (w - widths[h] * normal[h].dot(bis)) / dir[h].dot(bis) * dir[h];
+        const Vec2 b = startI - (w - widths[i] * normal[i].dot(bis)) / -dir[i].dot(bis) * dir[i];
+        if ((a - p).norm() <= reach && (b - p).norm() <= reach) {
+          push(raw, a, eps);
+          push(raw, b, eps);
+        } else {
+          // Where the width changes at a gentle corner (two seams meeting on a curve), those points run off
+          // along the narrower edge, as the miter did. Step instead: across the corner at the narrower width,
+          // then along the wider edge's end to its width, so the wider seam keeps its allowance to its end.
+          push(raw, endH, eps);
+          push(raw, p + std::min(widths[h], widths[i]) * (widths[h] < widths[i] ? normal[i] : normal[h]), eps);
+          push(raw, startI, eps);
+        }
       }
     } else if (turn < -1e-12) {
       // Concave: go through the vertex; the crossing offset edges form a loop that outerBoundary removes.

@@ -29,9 +29,12 @@ std::string area(double m2, const ExportOptions& o) {
 nlohmann::json exportStatistics(const Pattern& pattern, const SheetLayout& s, const ExportOptions& o) {
   using nlohmann::json;
   json panels = json::array(), seams = json::array();
-  double panelArea = 0, cutArea = 0, seamLength = 0;
+  double panelArea = 0, cutArea = 0, seamLength = 0, freeLength = 0;
   for (size_t p = 0; p < s.panels.size(); ++p) {
     const PanelLayout& pl = s.panels[p];
+    const std::vector<int>& edgeSeam = s.outlines.panels[p].edgeSeam;
+    for (size_t e = 0; e < edgeSeam.size() && e < pl.sew.size(); ++e)
+      if (edgeSeam[e] < 0) freeLength += (pl.sew[(e + 1) % pl.sew.size()] - pl.sew[e]).norm();
     const Box2 box = boundingBox(transformed(pl.cut, pl.placement));
     const double a = std::abs(signedArea(pl.sew)) * 1e-6, c = std::abs(signedArea(pl.cut)) * 1e-6;
     panelArea += a, cutArea += c;
@@ -71,6 +74,7 @@ nlohmann::json exportStatistics(const Pattern& pattern, const SheetLayout& s, co
                  {"sheet_area_m2", sheetArea},
                  {"utilisation", s.nest.utilisation},
                  {"seam_length_mm", seamLength},
+                 {"free_edge_mm", freeLength},
                  {"max_seam_mismatch_mm", s.outlines.maxMismatch * 1000},
                  {"notches", s.notches.size()},
                  {"sewing_minutes", minutes},
@@ -80,6 +84,7 @@ nlohmann::json exportStatistics(const Pattern& pattern, const SheetLayout& s, co
           {"version", 1},
           {"units", {{"length", "mm"}, {"area", "m2"}, {"time", "min"}}},
           {"allowance_mm", o.allowance},
+          {"free_edge_allowance_mm", allowanceOf(-1, o)},
           {"panels", panels},
           {"seams", seams},
           {"totals", totals}};
@@ -89,8 +94,20 @@ std::vector<std::string> summaryLines(const nlohmann::json& j, const ExportOptio
   const auto& t = j["totals"];
   char buf[200];
   std::vector<std::string> lines;
+  // The seam allowance, and the seams of this pattern that have their own (up to four named).
+  std::string allowance = "seam allowance " + length(o.allowance, o);
+  std::vector<std::string> own;
+  for (const auto& seam : j["seams"])
+    if (seam["allowance_mm"].get<double>() != o.allowance)
+      own.push_back(seam["label"].get<std::string>() + " " + length(seam["allowance_mm"].get<double>(), o));
+  if (own.size() > 4)
+    allowance += " (" + std::to_string(own.size()) + " seams their own)";
+  else
+    for (const std::string& s : own) allowance += ", " + s;
+  if (t["free_edge_mm"].get<double>() > 0 && allowanceOf(-1, o) != o.allowance)
+    allowance += ", free edges " + length(allowanceOf(-1, o), o);
   lines.push_back(std::to_string(t["panels"].get<int>()) + " panels, " + std::to_string(t["seams"].get<int>()) +
-                  " seams, seam allowance " + length(o.allowance, o));
+                  " seams, " + allowance);
   std::snprintf(buf, sizeof buf, "sheet %s wide x %s long, material used %.0f %%", length(o.sheetWidth, o).c_str(),
                 length(t["sheet_length_mm"].get<double>(), o).c_str(), 100 * t["utilisation"].get<double>());
   lines.push_back(buf);

@@ -94,9 +94,25 @@ export function setMaterial(design, material) {
   return { ...design, material: { ...material } };
 }
 
-// changes: some of { allowance [mm], sheet_width [mm], units: 'mm' | 'in' }
+// changes: some of { allowance [mm], sheet_width [mm], units: 'mm' | 'in', free_edge_allowance [mm],
+// grain_lock, rotate }; a field set to undefined is removed (its default applies).
 export function setFabrication(design, changes) {
-  return { ...design, fabrication: { ...design.fabrication, ...changes } };
+  const fabrication = { ...design.fabrication, ...changes };
+  for (const [key, value] of Object.entries(changes)) if (value === undefined) delete fabrication[key];
+  return { ...design, fabrication };
+}
+
+// One seam's own allowance [mm] (seam id as in the exporter's statistics), or null: back to the seam
+// allowance. Returns the same design when nothing changes.
+export function setSeamAllowance(design, id, mm) {
+  const key = String(id);
+  const current = design.fabrication.seam_allowance ?? {};
+  if ((current[key] ?? null) === mm) return design;
+  const seams = { ...current };
+  if (mm === null) delete seams[key];
+  else seams[key] = mm;
+  const sorted = Object.fromEntries(Object.entries(seams).sort(([a], [b]) => a - b));
+  return setFabrication(design, { seam_allowance: Object.keys(sorted).length ? sorted : undefined });
 }
 
 export function setPressure(design, pascals) {

@@ -1,8 +1,12 @@
-// Fabrication settings of the design (seam allowance, sheet width, display units) and the figures a maker
-// reads: pattern statistics from the exporter, and for balloons the envelope mass, helium lift and the
-// stress safety factor. Pure functions; the Exporter (exporter.js) does the downloads.
+// Fabrication settings of the design (seam allowance, per seam and of free edges, sheet width, grain, display
+// units) and the figures a maker reads: pattern statistics from the exporter, and for balloons the envelope
+// mass, helium lift and the stress safety factor. Pure functions; the Exporter (exporter.js) does the downloads.
 import { findMaterialPreset } from './materials.js';
 
+// Optional fields, absent unless the designer sets them: seam_allowance { "<seam id>": mm } (a seam's own
+// allowance; ids as in the exporter's statistics, labelled S<id + 1>), free_edge_allowance [mm] (edges sewn
+// to nothing; absent: as the seams), grain_lock (true: panels keep their y axis along the roll), rotate
+// (false: panels are nested as drawn).
 export const DEFAULT_FABRICATION = Object.freeze({ allowance: 10, sheet_width: 1000, units: 'mm' });
 export const MAX_ALLOWANCE = 100; // [mm]
 export const MIN_SHEET = 100;
@@ -14,12 +18,17 @@ const AIR_DENSITY = 1.204;
 const HELIUM_DENSITY = 0.166;
 
 const inRange = (v, lo, hi) => typeof v === 'number' && Number.isFinite(v) && v >= lo && v <= hi;
+const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
+
+// A seam id as a key of seam_allowance: "0", "12".
+export const isSeamId = (key) => /^(0|[1-9]\d{0,5})$/.test(String(key));
+export const seamLabel = (id) => `S${Number(id) + 1}`;
 
 // Parse-and-default of design.fabrication; returns the settings and pushes warnings.
 export function parseFabrication(value, warnings) {
   const out = { ...DEFAULT_FABRICATION };
   if (value === undefined) return out;
-  if (value === null || typeof value !== 'object' || Array.isArray(value)) {
+  if (!isObject(value)) {
     warnings.push('The design\'s fabrication settings are not valid; the defaults are used.');
     return out;
   }
@@ -32,12 +41,68 @@ export function parseFabrication(value, warnings) {
     if (ok) out[key] = value[key];
     else if (value[key] !== undefined) warnings.push(warning);
   }
-  return { ...value, ...out };
+  const result = { ...value, ...out };
+  // Optional fields: a bad one is dropped (the default applies) with a warning.
+  const optional = [
+    ['free_edge_allowance', inRange(value.free_edge_allowance, 0, MAX_ALLOWANCE), `The allowance of free edges is not between 0 and ${MAX_ALLOWANCE} mm; free edges get the seam allowance.`],
+    ['grain_lock', typeof value.grain_lock === 'boolean', 'The grain setting (grain_lock) is not true or false; panels may turn when nested.'],
+    ['rotate', typeof value.rotate === 'boolean', 'The rotation setting (rotate) is not true or false; panels may turn when nested.'],
+  ];
+  for (const [key, ok, warning] of optional) {
+    if (value[key] === undefined || ok) continue;
+    delete result[key];
+    warnings.push(warning);
+  }
+  if (value.seam_allowance !== undefined) {
+    const seams = parseSeamAllowance(value.seam_allowance, warnings);
+    if (seams) result.seam_allowance = seams;
+    else delete result.seam_allowance;
+  }
+  return result;
+}
+
+// design.fabrication.seam_allowance: the valid entries sorted by seam id (null when none is left); each bad
+// entry is dropped with a warning that names it.
+function parseSeamAllowance(value, warnings) {
+  if (!isObject(value)) {
+    warnings.push('The seam allowances per seam (seam_allowance) are not a list of seam ids and widths; every seam gets the seam allowance.');
+    return null;
+  }
+  const out = {};
+  for (const key of Object.keys(value).filter(isSeamId).sort((a, b) => a - b)) {
+    if (inRange(value[key], 0, MAX_ALLOWANCE)) out[key] = value[key];
+    else warnings.push(`The allowance of seam ${seamLabel(key)} is not between 0 and ${MAX_ALLOWANCE} mm; it gets the seam allowance.`);
+  }
+  for (const key of Object.keys(value).filter((k) => !isSeamId(k)))
+    warnings.push(`The seam allowance names the seam "${key.slice(0, 40)}", which is no seam id (a whole number from 0); it is ignored.`);
+  return Object.keys(out).length ? out : null;
+}
+
+// The grain setting as one of 'free' (panels turn as they nest best), 'grain' (kept along the roll: turned
+// 0° or 180° only) or 'fixed' (as drawn), and the fabrication fields of each.
+export function grainMode(fabrication) {
+  return fabrication.grain_lock ? 'grain' : fabrication.rotate === false ? 'fixed' : 'free';
+}
+export const GRAIN_FIELDS = Object.freeze({
+  free: { grain_lock: undefined, rotate: undefined },
+  grain: { grain_lock: true, rotate: undefined },
+  fixed: { grain_lock: undefined, rotate: false },
+});
+
+// The allowance of one seam [mm]: its own, else the seam allowance.
+export function seamAllowanceOf(fabrication, id) {
+  const own = fabrication.seam_allowance?.[String(id)];
+  return own ?? fabrication.allowance;
 }
 
 // The exporter's options (wasm/src/export, lengths in mm) from the design's fabrication settings.
 export function exportOptions(fabrication, extra = {}) {
-  return { allowance: fabrication.allowance, sheet_width: fabrication.sheet_width, units: fabrication.units, ...extra };
+  const options = { allowance: fabrication.allowance, sheet_width: fabrication.sheet_width, units: fabrication.units };
+  if (fabrication.seam_allowance && Object.keys(fabrication.seam_allowance).length) options.seam_allowance = { ...fabrication.seam_allowance };
+  if (fabrication.free_edge_allowance !== undefined) options.free_edge_allowance = fabrication.free_edge_allowance;
+  if (fabrication.grain_lock !== undefined) options.grain_lock = fabrication.grain_lock;
+  if (fabrication.rotate !== undefined) options.rotate = fabrication.rotate;
+  return { ...options, ...extra };
 }
 
 // A length given in mm, in the designer's units: "123 mm" or "4.84 in".

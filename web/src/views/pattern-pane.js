@@ -1,7 +1,7 @@
 // The pattern pane: flat panels seen from above with pan and zoom (no rotation).
 import {
   OrthographicCamera, Scene, GridHelper, Box3, Vector3, Group, BufferGeometry, Float32BufferAttribute, Mesh,
-  MeshBasicMaterial, LineSegments, LineBasicMaterial, DoubleSide,
+  MeshBasicMaterial, LineSegments, LineBasicMaterial, DoubleSide, Color,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { layoutPattern } from './pattern-layout.js';
@@ -28,6 +28,11 @@ export class PatternPane {
     this.labels.className = 'pane-labels';
     element.parentElement.append(this.labels);
     this.labelAnchors = [];
+    this.seamLabelAnchors = [];
+    this.seams = null; // the exporter's seams of the shown pattern (setSeams)
+    this.selectedSeam = null; // seam id, -1 for the free edges, or null
+    this.onSeamPick = null; // (id | null) => void: a click on a seam (-1: a free edge) or beside every seam
+    this.pickSeams(element);
     viewport.add(this);
   }
 
@@ -58,6 +63,7 @@ export class PatternPane {
       if (!seamIds.has(k)) seamIds.set(k, seamIds.size);
       return seamIds.get(k);
     };
+    this.pairColor = (a, b) => seamColor(seamIndex(a, b));
     pattern.panels.forEach((panel, i) => {
       const { offset, boundary, centroid } = layout[i];
       const xy = (v) => [panel.vertices[v][0] + offset[0], panel.vertices[v][1] + offset[1], 0];
@@ -76,7 +82,7 @@ export class PatternPane {
       outline.setAttribute('position', new Float32BufferAttribute(points, 3));
       outline.setAttribute('color', new Float32BufferAttribute(colors, 3));
       const line = new LineSegments(outline, new LineBasicMaterial({ vertexColors: true }));
-      line.position.z = 0.001;
+      line.position.z = 0.002; // over the cut line: a seam cut on its sewing line (0 allowance) keeps its color
       this.content.add(line);
       const label = document.createElement('div');
       label.className = 'panel-label';
@@ -110,14 +116,198 @@ export class PatternPane {
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
     this.cutLines = new LineSegments(geometry, new LineBasicMaterial({ color: 0x1d2330 }));
-    this.cutLines.position.z = 0.002;
+    this.cutLines.position.z = 0.001;
+    this.cutLines.userData.lines = cutLines; // per panel [x0, y0, ...] in its frame [m] (for tests)
     this.content.add(this.cutLines);
     this.viewport.requestRender();
     return true;
   }
 
+  // The exporter's seams of `pattern` (ignored when another pattern is shown by now): outlines per panel
+  // { loop: [vertex], seams: [seam id of edge loop[i] -> loop[i+1], -1 free] }; seams: the statistics' seams
+  // ({ id, label, panels: [a, b] (from 1) }); widths: { [id]: allowance mm } ("-1": free edges), for picking.
+  // Seams can then be picked with a click, shown with labels (S1, S2, ... as on the cut pieces) and one
+  // highlighted.
+  setSeams(pattern, outlines, seams, widths = {}) {
+    if (pattern !== this.pattern || !this.layout) return false;
+    const runs = new Map(); // id -> [{ panel, segments: [[x0, y0, x1, y1]], length }]
+    outlines.forEach(({ loop, seams: edgeSeams }, p) => {
+      const panel = pattern.panels[p];
+      const [dx, dy] = this.layout[p].offset;
+      const n = loop.length;
+      // Start at an edge that begins a run, so that no run wraps around loop[0].
+      const start = Math.max(0, edgeSeams.findIndex((id, e) => id !== edgeSeams[(e + n - 1) % n]));
+      let run = null;
+      for (let k = 0; k < n; k++) {
+        const e = (start + k) % n;
+        const id = edgeSeams[e];
+        const [x0, y0] = panel.vertices[loop[e]], [x1, y1] = panel.vertices[loop[(e + 1) % n]];
+        if (!run || run.id !== id) {
+          run = { id, panel: p, segments: [], length: 0 };
+          if (!runs.has(id)) runs.set(id, []);
+          runs.get(id).push(run);
+        }
+        run.segments.push([x0 + dx, y0 + dy, x1 + dx, y1 + dy]);
+        run.length += Math.hypot(x1 - x0, y1 - y0);
+      }
+    });
+    const colors = new Map(seams.map((seam) => [seam.id, this.seamColorOfPanels(seam.panels[0] - 1, seam.panels[1] - 1)]));
+    colors.set(-1, seamColor(7));
+    this.seams = { outlines, runs, colors, widths, labels: new Map(seams.map((seam) => [seam.id, seam.label])) };
+    this.seamLabels();
+    this.highlightSeam();
+    return true;
+  }
+
+  // The color a seam between panels a and b (from 0) has in this pane (the same on both panels).
+  seamColorOfPanels(a, b) {
+    return a === b || !this.pairColor ? seamColor(7) : this.pairColor(a, b);
+  }
+
+  seamColorOf(id) {
+    return this.seams?.colors.get(id) ?? seamColor(7);
+  }
+
+  // Which seam to highlight (its id, -1 for the free edges, null for none) and which have their own
+  // allowance (own: a Set of ids; their labels are marked).
+  setSeamMarks({ selected = this.selectedSeam, own = this.ownSeams ?? new Set() } = {}) {
+    this.selectedSeam = selected;
+    this.ownSeams = own;
+    for (const { label, id } of this.seamLabelAnchors) {
+      label.classList.toggle('selected', id === selected);
+      label.classList.toggle('own', own.has(id));
+    }
+    this.highlightSeam();
+  }
+
+  // Seam labels (S1, S2, ... as on the cut pieces) at the middle of each seam on each of its panels.
+  setSeamLabelsShown(shown) {
+    this.seamLabelsShown = shown;
+    this.labels.classList.toggle('with-seams', shown);
+    this.viewport.requestRender();
+  }
+
+  seamLabels() {
+    for (const { label } of this.seamLabelAnchors) label.remove();
+    this.seamLabelAnchors = [];
+    if (!this.seams) return;
+    for (const [id, list] of this.seams.runs) {
+      if (id < 0) continue;
+      for (const run of list) {
+        // The point halfway along the run.
+        let rest = run.length / 2;
+        let at = run.segments[0];
+        let t = 0;
+        for (const seg of run.segments) {
+          const len = Math.hypot(seg[2] - seg[0], seg[3] - seg[1]);
+          at = seg;
+          if (rest <= len) {
+            t = len > 0 ? rest / len : 0;
+            break;
+          }
+          rest -= len;
+          t = 1;
+        }
+        const label = document.createElement('div');
+        label.className = 'seam-label';
+        label.textContent = this.seams.labels.get(id) ?? `S${id + 1}`;
+        label.dataset.seam = String(id);
+        label.style.setProperty('--seam-color', `#${this.seamColorOf(id).getHexString()}`);
+        label.classList.toggle('selected', id === this.selectedSeam);
+        label.classList.toggle('own', Boolean(this.ownSeams?.has(id)));
+        this.labels.append(label);
+        this.seamLabelAnchors.push({ label, id, at: new Vector3(at[0] + t * (at[2] - at[0]), at[1] + t * (at[3] - at[1]), 0) });
+      }
+    }
+    this.viewport.requestRender();
+  }
+
+  // World meters per screen pixel.
+  metersPerPixel() {
+    const r = this.element.getBoundingClientRect();
+    return (2 * this.halfHeight) / this.camera.zoom / Math.max(1, r.height);
+  }
+
+  // The selected seam as a band a few pixels wide along its sewing line on every panel it joins (rebuilt
+  // when the zoom changes, so it keeps its width on screen).
+  highlightSeam() {
+    if (this.highlight) {
+      this.content.remove(this.highlight);
+      this.highlight.geometry.dispose();
+      this.highlight.material.dispose();
+      this.highlight = null;
+    }
+    const runs = this.seams?.runs.get(this.selectedSeam);
+    if (!runs) return this.viewport.requestRender();
+    const half = 3 * this.metersPerPixel();
+    this.highlightScale = half;
+    const points = [];
+    for (const run of runs)
+      for (const [x0, y0, x1, y1] of run.segments) {
+        const len = Math.hypot(x1 - x0, y1 - y0) || 1;
+        const nx = (-(y1 - y0) / len) * half, ny = ((x1 - x0) / len) * half;
+        const ex = ((x1 - x0) / len) * half, ey = ((y1 - y0) / len) * half; // a little past each end: no gaps at corners
+        const a = [x0 - ex + nx, y0 - ey + ny], b = [x0 - ex - nx, y0 - ey - ny];
+        const c = [x1 + ex - nx, y1 + ey - ny], d = [x1 + ex + nx, y1 + ey + ny];
+        points.push(...a, 0, ...b, 0, ...c, 0, ...a, 0, ...c, 0, ...d, 0);
+      }
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+    const color = this.selectedSeam < 0 ? new Color('#7a8494') : new Color(this.seamColorOf(this.selectedSeam)); // free edges: gray, not black
+    this.highlight = new Mesh(geometry, new MeshBasicMaterial({ color, side: DoubleSide, transparent: true, opacity: 0.55, depthTest: false }));
+    this.highlight.position.z = 0.003;
+    this.highlight.renderOrder = 2;
+    this.content.add(this.highlight);
+    this.viewport.requestRender();
+  }
+
+  // The seam (id, -1 for a free edge) nearest a point of the pane (client pixels), within a few pixels of
+  // its sewing line or inside its allowance; null when there is none.
+  seamAt(clientX, clientY) {
+    if (!this.seams) return null;
+    const r = this.element.getBoundingClientRect();
+    const p = new Vector3(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1, 0).unproject(this.camera);
+    const pixel = this.metersPerPixel();
+    let best = null;
+    let bestScore = Infinity;
+    for (const [id, list] of this.seams.runs) {
+      const reach = Math.max(8 * pixel, Math.min((this.seams.widths[id] ?? 0) / 1000 + 3 * pixel, 40 * pixel));
+      for (const run of list)
+        for (const [x0, y0, x1, y1] of run.segments) {
+          const d = segmentDistance(p.x, p.y, x0, y0, x1, y1);
+          if (d <= reach && d / reach < bestScore) {
+            bestScore = d / reach;
+            best = id;
+          }
+        }
+    }
+    return best;
+  }
+
+  // A click (a press and release without a drag) on a seam picks it; the cursor shows where one can.
+  pickSeams(element) {
+    let down = null;
+    element.addEventListener('pointerdown', (e) => {
+      down = e.button === 0 ? { x: e.clientX, y: e.clientY } : null;
+    });
+    element.addEventListener('pointerup', (e) => {
+      if (!down || Math.hypot(e.clientX - down.x, e.clientY - down.y) > 4 || !this.seams) return;
+      down = null;
+      this.onSeamPick?.(this.seamAt(e.clientX, e.clientY));
+    });
+    element.addEventListener('pointermove', (e) => {
+      if (e.buttons) return;
+      const id = this.seamAt(e.clientX, e.clientY);
+      element.style.cursor = id === null ? '' : 'pointer';
+      element.title = id === null ? '' : this.seamTitle?.(id) ?? '';
+    });
+  }
+
   clear() {
     this.cutLines = null;
+    this.seams = null;
+    this.highlight = null;
+    this.seamLabelAnchors = [];
     for (const child of [...this.content.children]) {
       this.content.remove(child);
       child.geometry.dispose();
@@ -151,6 +341,7 @@ export class PatternPane {
       Object.assign(this.camera, { left: -h * aspect, right: h * aspect, top: h, bottom: -h });
       this.camera.updateProjectionMatrix();
     }
+    if (this.highlight && Math.abs(3 * this.metersPerPixel() / this.highlightScale - 1) > 0.05) this.highlightSeam();
     renderer.render(this.scene, this.camera);
     this.placeLabels();
   }
@@ -159,10 +350,17 @@ export class PatternPane {
     const r = this.element.getBoundingClientRect();
     const top = this.element.offsetTop;
     const p = new Vector3();
-    for (const { label, at } of this.labelAnchors) {
+    for (const { label, at } of [...this.labelAnchors, ...(this.seamLabelsShown ? this.seamLabelAnchors : [])]) {
       p.copy(at).project(this.camera);
       label.style.left = `${((p.x + 1) / 2) * r.width}px`;
       label.style.top = `${top + ((1 - p.y) / 2) * r.height}px`;
     }
   }
+}
+
+function segmentDistance(px, py, x0, y0, x1, y1) {
+  const dx = x1 - x0, dy = y1 - y0;
+  const len2 = dx * dx + dy * dy;
+  const t = len2 > 0 ? Math.min(1, Math.max(0, ((px - x0) * dx + (py - y0) * dy) / len2)) : 0;
+  return Math.hypot(px - x0 - t * dx, py - y0 - t * dy);
 }

@@ -1,0 +1,94 @@
+#include "io/export_options_json.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <string>
+
+#include "util/error.hpp"
+
+namespace billow {
+namespace {
+
+using nlohmann::json;
+
+[[noreturn]] void bad(const std::string& message) { throw Error("export.bad-value", message); }
+
+std::string millimetres(double v) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%g", v);
+  return buf;
+}
+
+// A seam id as written in JSON keys: "0", "12" (no sign, no spaces, no leading zeros beyond "0").
+bool parseSeamId(const std::string& key, int& id) {
+  if (key.empty() || key.size() > 6 ||
+      !std::all_of(key.begin(), key.end(), [](char c) { return c >= '0' && c <= '9'; }))
+    return false;
+  if (key.size() > 1 && key[0] == '0') return false;
+  id = std::stoi(key);
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::pair<int, double>> readSeamAllowanceJson(const json& value) {
+  if (!value.is_object())
+    bad("The export option seam_allowance must be an object of seam ids and widths in mm, like {\"3\": 0}.");
+  std::vector<std::pair<int, double>> out;
+  for (const auto& [key, width] : value.items()) {
+    int id = 0;
+    if (!parseSeamId(key, id))
+      bad("The seam allowance names the seam \"" + key.substr(0, 40) +
+          "\"; seams are named by their id, a whole "
+          "number from 0 (seam S1 is id 0).");
+    if (!width.is_number() || !std::isfinite(width.get<double>()) || width.get<double>() < 0 ||
+        width.get<double>() > kMaxSeamAllowance)
+      bad("The allowance of seam S" + std::to_string(id + 1) + " must be a width from 0 to " +
+          millimetres(kMaxSeamAllowance) + " mm.");
+    out.emplace_back(id, width.get<double>());
+  }
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+ExportOptions readExportOptionsJson(const json& j, ExportOptions o) {
+  if (!j.is_object()) bad("The export options are not valid.");
+  const auto number = [&](const char* key, double fallback) {
+    if (!j.contains(key)) return fallback;
+    if (!j[key].is_number()) bad(std::string("The export option ") + key + " must be a number.");
+    return j[key].get<double>();
+  };
+  const auto flag = [&](const char* key, bool fallback) {
+    if (!j.contains(key)) return fallback;
+    if (!j[key].is_boolean()) bad(std::string("The export option ") + key + " is true or false.");
+    return j[key].get<bool>();
+  };
+  const auto text = [&](const char* key, const std::string& fallback) {
+    if (!j.contains(key)) return fallback;
+    if (!j[key].is_string()) bad(std::string("The export option ") + key + " must be text.");
+    return j[key].get<std::string>();
+  };
+  o.allowance = number("allowance", o.allowance);
+  if (j.contains("free_edge_allowance")) {
+    o.freeEdgeAllowance = number("free_edge_allowance", o.freeEdgeAllowance);
+    if (!(o.freeEdgeAllowance >= 0 && o.freeEdgeAllowance <= kMaxSeamAllowance))
+      bad("The allowance of free edges must be a width from 0 to " + millimetres(kMaxSeamAllowance) + " mm.");
+  }
+  if (j.contains("seam_allowance")) o.seamAllowance = readSeamAllowanceJson(j["seam_allowance"]);
+  o.sheetWidth = number("sheet_width", o.sheetWidth);
+  o.notchSpacing = number("notch_spacing", o.notchSpacing);
+  o.tileOverlap = number("overlap", o.tileOverlap);
+  const std::string paper = text("paper", o.paper == PaperSize::A4 ? "a4" : "letter");
+  if (paper != "a4" && paper != "letter") bad("The paper is A4 or Letter.");
+  o.paper = paper == "a4" ? PaperSize::A4 : PaperSize::Letter;
+  const std::string units = text("units", o.units == DisplayUnits::Millimeters ? "mm" : "in");
+  if (units != "mm" && units != "in") bad("The units are mm or inches.");
+  o.units = units == "mm" ? DisplayUnits::Millimeters : DisplayUnits::Inches;
+  o.grainLock = flag("grain_lock", o.grainLock);
+  o.allowRotation = flag("rotate", o.allowRotation);
+  if (j.contains("title") && j["title"].is_string()) o.title = j["title"].get<std::string>().substr(0, 120);
+  return o;
+}
+
+}  // namespace billow
