@@ -282,6 +282,20 @@ test('two seam layouts compared side by side; either one can be put back, undoab
   await page.click('.compare-card[data-layout="A"] .compare-use');
   await page.waitForFunction(() => window.billow.app.design.seams.length === 3);
   await resultShown(page);
+  // While the app is idle the panel does nothing: it follows the app's changes, it does not poll.
+  const idleRenders = await page.evaluate(async () => {
+    const compare = window.billow.compare;
+    const render = compare.render;
+    let calls = 0;
+    compare.render = function counted() {
+      calls += 1;
+      return render.call(this);
+    };
+    await new Promise((resolve) => setTimeout(resolve, 1500));
+    compare.render = render;
+    return calls;
+  });
+  assert.equal(idleRenders, 0, 'no renders while idle');
   await page.click('dialog.compare-dialog .compare-close');
   assert.equal(await page.isVisible('dialog.compare-dialog'), false);
   assert.deepEqual(page.errors, []);

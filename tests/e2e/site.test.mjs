@@ -73,7 +73,7 @@ test('from a sub-path: loads, renders, then works offline through its service wo
     const ours = first.caches.filter((n) => n.startsWith(`billow-precache:${BASE}:`));
     assert.equal(ours.length, 1, `one precache of this site (${first.caches})`);
     const stored = await cachedPaths(page, ours[0]);
-    for (const p of ['index.html', 'sw.js', 'examples/spot.obj', 'examples/penguin.obj', 'examples/blub.obj', 'examples/sphere.obj'])
+    for (const p of ['index.html', 'sw.js', 'examples/spot.obj', 'examples/penguin.obj', 'examples/blub.obj', 'examples/sphere.obj', 'examples/koala.obj'])
       assert.equal(stored.includes(BASE + p), p !== 'sw.js', `${p} ${p === 'sw.js' ? 'is not' : 'is'} precached`);
     for (const ext of ['.js', '.css', '.wasm']) assert.ok(stored.some((p) => p.startsWith(`${BASE}assets/`) && p.endsWith(ext)), `the ${ext} bundle is precached`);
 

@@ -1,7 +1,7 @@
 // A plain static file server (node:http) for the built site, as any host would run it: files of a folder
-// (web/dist by default) under a sub-path, with a Content-Type from the file's extension and no other
-// headers (no COOP/COEP, no caching rules). types overrides Content-Types, e.g. { '.wasm':
-// 'application/octet-stream' } for a host that does not know wasm. Every request is recorded in
+// (BILLOW_DIST, else web/dist, as in harness.mjs) under a sub-path, with a Content-Type from the file's
+// extension and no other headers (no COOP/COEP, no caching rules). types overrides Content-Types, e.g.
+// { '.wasm': 'application/octet-stream' } for a host that does not know wasm. Every request is recorded in
 // `requests` ({ method, path }), so a test can tell what reached the network.
 // Used by tests/e2e/site.test.mjs and bench/site-bench.mjs.
 import { createServer } from 'node:http';
@@ -9,7 +9,7 @@ import { readFile, stat } from 'node:fs/promises';
 import { join, extname, normalize } from 'node:path';
 import { fileURLToPath } from 'node:url';
 
-export const DIST = fileURLToPath(new URL('../../web/dist', import.meta.url));
+export const DIST = process.env.BILLOW_DIST || fileURLToPath(new URL('../../web/dist', import.meta.url));
 
 export const TYPES = {
   '.html': 'text/html; charset=utf-8', '.js': 'text/javascript; charset=utf-8', '.mjs': 'text/javascript; charset=utf-8',

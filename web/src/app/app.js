@@ -9,8 +9,8 @@ import { encodeDesign, decodeDesign } from './share.js';
 import { PatternSession, patternForDisplay } from './pattern-session.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
-import { setHeight, setMaterial, setPressure, setFabrication } from './commands.js';
-import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions } from './fabrication.js';
+import { setHeight, setMaterial, setPressure, setFabrication, setSeamAllowance } from './commands.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel } from './fabrication.js';
 import { download } from './download.js';
 import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
@@ -44,6 +44,8 @@ export class App {
       stats: elements.inflatedStats,
     });
     this.patterns.onPatternShown = (display, text) => this.refreshCutLines(display, text);
+    this.patterns.onRunChange = () => this.notifyChange();
+    this.changeListeners = new Set();
     this.seams = new SeamEditor(this);
     this.patternTicket = 0;
     this.resolution = 1000; // triangles of the simulation mesh (view setting, not part of the design)
@@ -51,6 +53,18 @@ export class App {
 
   get design() {
     return this.history.present;
+  }
+
+  // Views of derived state (the layout comparison) subscribe here instead of polling: fn() runs after every
+  // change of the design (edits, undo, redo, a new target) or of the resolution, and whenever panels start
+  // or finish being made or inflated. Returns the function that unsubscribes.
+  onChange(fn) {
+    this.changeListeners.add(fn);
+    return () => this.changeListeners.delete(fn);
+  }
+
+  notifyChange() {
+    for (const fn of [...this.changeListeners]) fn();
   }
 
   async start() {
@@ -254,6 +268,7 @@ export class App {
     else this.history.apply(() => design, { mergeKey });
     this.showDesign();
     this.save();
+    this.notifyChange();
   }
 
   // The panels of the current seams: flattened (shown at once in the pattern pane), then optimized in the
@@ -290,6 +305,7 @@ export class App {
       },
     );
     this.optimizing = call;
+    this.notifyChange();
     try {
       const result = await call.promise;
       if (ticket !== this.patternTicket) return;
@@ -303,6 +319,7 @@ export class App {
       this.setStatus('');
     } finally {
       if (this.optimizing === call) this.optimizing = null;
+      this.notifyChange();
     }
   }
 
@@ -353,6 +370,7 @@ export class App {
 
   setResolution(triangles) {
     this.resolution = triangles;
+    this.notifyChange();
     this.remakePattern();
   }
 
@@ -372,10 +390,17 @@ export class App {
         options: exportOptions(f),
       });
       if (ticket !== this.cutTicket) return;
-      this.panes.pattern.setCutLines(display, result.cutLines);
+      const pane = this.panes.pattern;
+      pane.setCutLines(display, result.cutLines);
+      const widths = Object.fromEntries(result.statistics.seams.map((seam) => [seam.id, seam.allowance_mm]));
+      widths[-1] = result.statistics.free_edge_allowance_mm;
+      pane.setSeams(display, result.outlines, result.statistics.seams, widths);
+      this.cutStatistics = result.statistics;
+      this.allowancePanel?.setSeams(result.statistics);
       renderStats(this.el.patternStats, patternStatRows(result.statistics, f.units));
     } catch (error) {
       if (ticket !== this.cutTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
+      this.cutStatistics = null;
       renderStats(this.el.patternStats, []);
       this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`);
     }
@@ -386,6 +411,7 @@ export class App {
     const checks = {
       allowance: [0, MAX_ALLOWANCE, `The seam allowance must be between 0 and ${MAX_ALLOWANCE} mm.`],
       sheet_width: [MIN_SHEET, MAX_SHEET, `The sheet width must be between ${MIN_SHEET} and ${MAX_SHEET} mm.`],
+      free_edge_allowance: [0, MAX_ALLOWANCE, `The allowance of free edges must be between 0 and ${MAX_ALLOWANCE} mm.`],
     };
     for (const [key, [lo, hi, message]] of Object.entries(checks)) {
       const v = changes[key];
@@ -395,12 +421,39 @@ export class App {
         return;
       }
     }
-    const next = setFabrication(this.design, changes);
-    if (JSON.stringify(next.fabrication) === JSON.stringify(this.design.fabrication)) return;
-    this.history.apply(() => next, { mergeKey: `fabrication-${Object.keys(changes).join()}` });
+    this.applyFabrication(setFabrication(this.design, changes), `fabrication-${Object.keys(changes).join()}`);
+  }
+
+  applyFabrication(next, mergeKey) {
+    if (JSON.stringify(next.fabrication) === JSON.stringify(this.design.fabrication)) {
+      this.showDesign(); // a field typed back to what it was shows the stored value again
+      return;
+    }
+    this.history.apply(() => next, { mergeKey });
     this.showDesign();
     this.save();
     this.refreshCutLines();
+  }
+
+  // One seam's own allowance [mm] (id as in the exporter's statistics; labelled S<id + 1>), or null for the
+  // seam allowance; 0 for a heat-sealed seam.
+  setSeamAllowance(id, mm) {
+    if (mm !== null && !(Number.isFinite(mm) && mm >= 0 && mm <= MAX_ALLOWANCE)) {
+      this.messages.show('warning', `The allowance of seam ${seamLabel(id)} must be between 0 and ${MAX_ALLOWANCE} mm.`);
+      this.showDesign();
+      return;
+    }
+    this.applyFabrication(setSeamAllowance(this.design, id, mm), `seam-allowance-${id}`);
+  }
+
+  // The allowance of free edges [mm], or null: as the seams.
+  setFreeEdgeAllowance(mm) {
+    this.setFabrication({ free_edge_allowance: mm ?? undefined });
+  }
+
+  // How panels may turn when nested: 'free', 'grain' (kept along the roll) or 'fixed' (as drawn).
+  setGrain(mode) {
+    if (GRAIN_FIELDS[mode]) this.applyFabrication(setFabrication(this.design, GRAIN_FIELDS[mode]), 'fabrication-grain');
   }
 
   populateMaterials() {
@@ -436,6 +489,7 @@ export class App {
   amendDesign(design) {
     this.history.amend(() => design);
     this.save();
+    this.notifyChange();
   }
 
   showDesign() {
@@ -449,6 +503,8 @@ export class App {
     this.el.unitsSelect.value = f.units;
     this.el.allowanceInput.value = String(+(inches ? f.allowance / MM_PER_INCH : f.allowance).toFixed(inches ? 3 : 1));
     this.el.sheetInput.value = String(+(inches ? f.sheet_width / MM_PER_INCH : f.sheet_width).toFixed(inches ? 2 : 0));
+    if (this.el.grainSelect) this.el.grainSelect.value = grainMode(f);
+    this.allowancePanel?.render(f);
     const unit = Number(this.el.pressureUnit.value) || 1000;
     this.el.pressureInput.value = String(+(design.pressure / unit).toPrecision(6));
     this.panes.target.setScale(this.scaleFor(design));
@@ -482,6 +538,7 @@ export class App {
     this.seams.selection = null;
     this.showDesign();
     this.save();
+    this.notifyChange();
     this.seams.refresh();
     this.refreshCutLines();
   }

@@ -3,13 +3,13 @@
 // inflated optimized panels to the target (the optimizer's own figure, App.optimized.status), the largest
 // distance and the worst wrinkling, with a thumbnail of the inflated shape. "Use" puts a kept layout's
 // seams back as an ordinary edit, so Undo returns to the seams it replaced. Kept layouts live in this
-// page only (they are views of the design, not part of it).
+// page only (they are views of the design, not part of it). While open, the panel follows the app through
+// App.onChange (edits, undo, panels started, made and inflated); it does nothing while the app is idle.
 import './compare.css';
 import { formatPercent } from './units.js';
 import { dialogHeader } from '../views/dialog-header.js';
 
 const LETTERS = ['A', 'B'];
-const POLL_MS = 400;
 const THUMB_SIZE = 150;
 
 // What makes a layout: the seams and internal connections (and the mirror plane they were drawn with).
@@ -24,7 +24,7 @@ export class LayoutCompare {
     this.app = app;
     this.viewport = viewport;
     this.layouts = { A: null, B: null };
-    this.timer = null;
+    this.unsubscribe = null;
     this.shownKey = null;
     this.build();
     button?.addEventListener('click', () => (this.dialog.open ? this.close() : this.open()));
@@ -40,6 +40,10 @@ export class LayoutCompare {
       closeTitle: 'Close the comparison (kept layouts stay until the page is closed)',
       onClose: () => this.close(),
     });
+    // The header stays put and the body scrolls (a sticky header made Chromium leave a strip of the canvas
+    // below unpainted, in the pattern pane).
+    const body = document.createElement('div');
+    body.className = 'compare-body';
     this.intro = document.createElement('p');
     this.intro.className = 'compare-intro';
     this.cards = document.createElement('div');
@@ -55,7 +59,8 @@ export class LayoutCompare {
       foot.append(b);
       return b;
     });
-    dialog.append(header, this.intro, this.cards, foot);
+    body.append(this.intro, this.cards, foot);
+    dialog.append(header, body);
     dialog.addEventListener('close', () => this.stopWatching());
     document.body.append(dialog);
   }
@@ -64,13 +69,16 @@ export class LayoutCompare {
     // Over the inflated pane, whose shape the current layout's card shows anyway; not modal, so the seams
     // stay editable beside it.
     const pane = document.getElementById('pane-inflated')?.getBoundingClientRect();
-    if (pane) this.dialog.style.top = `${Math.round(pane.top + 34)}px`;
+    if (pane) {
+      // Its bottom stays in the window (its body scrolls).
+      const top = Math.round(pane.top + 34);
+      this.dialog.style.top = `${top}px`;
+      this.dialog.style.maxHeight = `max(12rem, calc(100vh - ${top + 14}px))`;
+    }
     if (!this.dialog.open) this.dialog.show();
     this.shownKey = null;
     this.render();
-    clearInterval(this.timer);
-    // The app reports no event when its panels are done: the panel looks again while it is open.
-    this.timer = setInterval(() => this.render(), POLL_MS);
+    this.unsubscribe ??= this.app.onChange(() => this.render());
   }
 
   close() {
@@ -79,8 +87,8 @@ export class LayoutCompare {
   }
 
   stopWatching() {
-    clearInterval(this.timer);
-    this.timer = null;
+    this.unsubscribe?.();
+    this.unsubscribe = null;
   }
 
   // The target the layouts are drawn on: kept layouts only apply to the same one.

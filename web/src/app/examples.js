@@ -4,6 +4,7 @@ export const EXAMPLES = [
   { id: 'blub', name: 'Blub the fish', file: 'blub.obj', height: 0.5, credit: 'Keenan Crane, public domain' },
   { id: 'sphere', name: 'Sphere', file: 'sphere.obj', height: 0.5, credit: 'Oded Stein, CC BY 4.0' },
   { id: 'penguin', name: 'Penguin', file: 'penguin.obj', height: 0.9, credit: 'Oded Stein, CC BY 4.0' },
+  { id: 'koala', name: 'Koala', file: 'koala.obj', height: 0.4, credit: 'YahooJAPAN (Thingiverse thing:182225), remeshed by Oded Stein, CC BY 3.0' },
 ];
 
 export const DEFAULT_EXAMPLE = 'spot';

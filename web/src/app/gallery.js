@@ -25,6 +25,10 @@ export const GALLERY_ITEMS = [
     teaches: 'A plush-toy cut: left and right halves sewn along the middle, optimized to bulge into the penguin.',
   },
   {
+    id: 'koala', title: 'Koala, a plush toy', thumbnail: 'koala.png', open: { design: 'koala.billow.json' },
+    teaches: 'A teddy cut: halves sewn along the middle and a seam around the neck give the head two panels of its own; with four flat panels the thin legs and ears round off into a plump body.',
+  },
+  {
     id: 'fish', title: 'Fish with an internal panel', thumbnail: 'fish.png', open: { design: 'fish.billow.json' },
     teaches: 'An internal connection: a panel inside joins the back and belly seams, so the fish stays slim instead of puffing round.',
   },
@@ -43,7 +47,9 @@ export class Gallery {
     this.app = app;
     this.dialog = document.createElement('dialog');
     this.dialog.className = 'gallery';
-    const header = dialogHeader(this.dialog, { id: 'gallery-title', title: 'Gallery', closeClass: 'gallery-close', onClose: () => this.dialog.close() });
+    const header = dialogHeader(this.dialog, {
+      id: 'gallery-title', title: 'Gallery', closeClass: 'gallery-close', closeTitle: 'Close the gallery (Esc)', onClose: () => this.dialog.close(),
+    });
     const intro = document.createElement('p');
     intro.className = 'gallery-intro';
     intro.textContent = 'Ready designs: each opens with its seams and panels, and its result is computed as it opens.';
@@ -64,6 +70,7 @@ export class Gallery {
     card.type = 'button';
     card.className = 'gallery-card';
     card.dataset.item = item.id;
+    card.title = `Open "${item.title}": it replaces the current design (save that first to keep it); its result is computed as it opens`;
     const img = document.createElement('img');
     img.src = new URL(`gallery/${item.thumbnail}`, this.app.baseUrl).href;
     img.alt = item.title;

@@ -34,6 +34,7 @@ export class Help {
     close.type = 'button';
     close.className = 'close';
     close.textContent = 'Close';
+    close.title = 'Close the shortcuts (Esc)';
     close.addEventListener('click', () => dialog.close());
     const table = document.createElement('table');
     for (const [keys, what] of [...SHORTCUTS, ...CLASSROOM_SHORTCUTS]) {
@@ -56,7 +57,10 @@ export class Help {
     const more = document.createElement('p');
     more.textContent =
       'Compare (top bar): keep the current seams as Layout A, change them, and compare panels, distance to target and wrinkles; Use puts a kept layout back, Undo returns. Classroom (top bar): a walk through the method on an example, for teaching; Full screen for a projector, Larger text for the back of the room.';
-    dialog.append(close, title, table, touch, more);
+    const pattern = document.createElement('p');
+    pattern.textContent =
+      'Seam allowance per seam (Pattern pane): click a seam, or open Seams and pick it, then type its allowance and press Enter (0 for a heat-sealed seam); an empty field or ↺ gives it the seam allowance again. The seams are labelled S1, S2, ... as on the cut pieces. Grain: Keep grain nests each panel with its up (as in the Pattern pane) along the roll.';
+    dialog.append(close, title, table, touch, more, pattern);
   }
 
   open() {

@@ -52,6 +52,7 @@ export class PatternSession {
     this.currentText = null; // the pattern shown (billow-pattern JSON text)
     this.display = null; // the same, parsed, in meters
     this.onPatternShown = null; // (display, text) => void
+    this.onRunChange = null; // () => void: an inflation started or ended (running, last and currentText changed)
   }
 
   async openExample(name, triangles = 3000) {
@@ -87,6 +88,7 @@ export class PatternSession {
       },
     });
     this.running = call;
+    this.onRunChange?.();
     try {
       const result = await call.promise;
       this.panes.inflated.setStrength(findMaterialPreset(display.material?.name)?.max_stress ?? null);
@@ -106,6 +108,7 @@ export class PatternSession {
       return null;
     } finally {
       if (this.running === call) this.running = null;
+      this.onRunChange?.();
     }
   }
 
