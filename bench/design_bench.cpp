@@ -6,9 +6,9 @@
 //   billow_design_bench [--json] [--designs sphere3,teddy] [--max-seconds S] [--manifest FILE]
 #include <sys/resource.h>
 
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <cstdlib>
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>

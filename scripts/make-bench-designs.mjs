@@ -5,24 +5,15 @@
 //   node scripts/make-bench-designs.mjs            writes bench/designs/*.billow.json
 //   node scripts/make-bench-designs.mjs --sections MESH AXIS VALUE   prints the section loops of a plane
 // Each seam is a loop of one plane section, picked by a point it must pass near, sampled at equal arc length.
-import { readFileSync, writeFileSync, mkdirSync } from 'node:fs';
+import { writeFileSync, mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { readObj } from './obj.mjs';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 const MESHES = join(ROOT, '../shared/meshes');
 const OUT = join(ROOT, 'bench/designs');
 const AXES = { x: 0, y: 1, z: 2 };
-
-function readObj(path) {
-  const v = [], t = [];
-  for (const line of readFileSync(path, 'utf8').split('\n')) {
-    const f = line.trim().split(/\s+/);
-    if (f[0] === 'v') v.push(f.slice(1, 4).map(Number));
-    else if (f[0] === 'f') t.push(f.slice(1, 4).map((s) => parseInt(s, 10) - 1));
-  }
-  return { v, t };
-}
 
 // The closed loops where the plane {p[axis] = value} cuts the mesh: arrays of 3D points.
 function sectionLoops({ v, t }, axis, value) {
@@ -108,7 +99,6 @@ if (process.argv[2] === '--sections') {
   process.exit(0);
 }
 
-export { readObj, sectionLoops, sectionSeam, bbox, design };
 
 // Teddy class (paper Table 1 "Teddy": about 17 panels): the koala, cut like a plush toy. A middle seam and
 // a seam down each side through the legs (four strips from nose to tail), bands across the back, the neck

@@ -9,9 +9,10 @@
 // `node scripts/make-gallery.mjs thumbs`, `bash scripts/build.sh web` again (the thumbnails ship in web/dist).
 // It prints how long each item takes to show its result. BILLOW_DIST=DIR serves another build of the site
 // than web/dist (as the e2e tests do); the thumbnails are written to web/public/gallery all the same.
-import { readFileSync, writeFileSync, mkdirSync } from 'node:fs';
+import { writeFileSync, mkdirSync } from 'node:fs';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { readObj } from './obj.mjs';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 const OUT = join(ROOT, 'web/public/gallery');
@@ -21,26 +22,12 @@ const design = (example, height, seams, extra = {}) => ({
   material: { name: 'foil', thickness: 2.5e-5, youngs_modulus: 3.0e9 }, pressure: 1000, ...extra,
 });
 
-// Vertices and triangles of an OBJ file (triangulated fans).
-function readObj(path) {
-  const v = [], t = [];
-  for (const line of readFileSync(path, 'utf8').split('\n')) {
-    const f = line.trim().split(/\s+/);
-    if (f[0] === 'v') v.push(f.slice(1, 4).map(Number));
-    else if (f[0] === 'f') {
-      const ids = f.slice(1).map((s) => parseInt(s, 10) - 1);
-      for (let k = 1; k + 1 < ids.length; k++) t.push([ids[0], ids[k], ids[k + 1]]);
-    }
-  }
-  return { v, t };
-}
-
-// The farthest point where the ray from o along d leaves the mesh (Moeller-Trumbore).
-function farthestHit({ v, t }, o, d) {
+// Distances along d at which the ray from o crosses the mesh's triangles (Moeller-Trumbore).
+function rayHits({ v, t }, o, d) {
   const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
   const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
   const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  let best = -1;
+  const hits = [];
   for (const [i, j, k] of t) {
     const e1 = sub(v[j], v[i]), e2 = sub(v[k], v[i]);
     const p = cross(d, e2), det = dot(e1, p);
@@ -49,31 +36,18 @@ function farthestHit({ v, t }, o, d) {
     if (u < 0 || u > 1) continue;
     const q = cross(s, e1), w = dot(d, q) / det;
     if (w < 0 || u + w > 1) continue;
-    const dist = dot(e2, q) / det;
-    if (dist > best) best = dist;
+    hits.push(dot(e2, q) / det);
   }
-  return o.map((c, a) => round(c + best * d[a]));
+  return hits;
 }
+
+const pointAlong = (o, d, dist) => o.map((c, a) => round(c + dist * d[a]));
+
+// The farthest point where the ray from o along d leaves the mesh.
+const farthestHit = (mesh, o, d) => pointAlong(o, d, Math.max(-1, ...rayHits(mesh, o, d)));
 
 // The nearest point where the ray from o (inside the mesh) along d leaves it.
-function nearestHit({ v, t }, o, d) {
-  const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
-  const cross = (a, b) => [a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]];
-  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
-  let best = Infinity;
-  for (const [i, j, k] of t) {
-    const e1 = sub(v[j], v[i]), e2 = sub(v[k], v[i]);
-    const p = cross(d, e2), det = dot(e1, p);
-    if (Math.abs(det) < 1e-12) continue;
-    const s = sub(o, v[i]), u = dot(s, p) / det;
-    if (u < 0 || u > 1) continue;
-    const q = cross(s, e1), w = dot(d, q) / det;
-    if (w < 0 || u + w > 1) continue;
-    const dist = dot(e2, q) / det;
-    if (dist > 0 && dist < best) best = dist;
-  }
-  return o.map((c, a) => round(c + best * d[a]));
-}
+const nearestHit = (mesh, o, d) => pointAlong(o, d, Math.min(Infinity, ...rayHits(mesh, o, d).filter((h) => h > 0)));
 
 // Surface points around the loop where the plane through c spanned by the unit vectors a and b cuts the
 // mesh: the nearest hits of rays from c in that plane (c inside the mesh, the cut around it convex enough).

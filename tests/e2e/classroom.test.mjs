@@ -6,7 +6,7 @@
 // target) and puts either layout back, undoably.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openFreshPage, openPage, paintedFraction, screenshot, useBrowser } from './harness.mjs';
+import { openFreshPage, openPage, optimizedResultShown, paintedFraction, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 const LONG = { timeout: 180000 }; // the panels are optimized on two shared cores
@@ -58,12 +58,7 @@ const autosaved = (page) =>
     };
   }));
 
-const resultShown = (page) =>
-  page.waitForFunction(() => {
-    const app = window.billow.app;
-    return app.optimized && app.optimized.revision === app.revision && !app.optimizing && !app.patterns.running
-      && app.patterns.currentText === app.optimized.patternText;
-  }, null, LONG);
+const resultShown = (page) => optimizedResultShown(page, LONG.timeout);
 
 test('the classroom walk shows each step of the method and gives the design back', async () => {
   const page = await openFreshPage(env.context, env.server.url);

@@ -91,6 +91,15 @@ export async function openDesignFixture(page, fileName) {
   await page.setInputFiles('#file-input', { name: fileName, mimeType: 'application/json', buffer });
 }
 
+// Waits until the panels of the current design are optimized and shown (nothing running, nothing stale).
+export function optimizedResultShown(page, timeout = 180000) {
+  return page.waitForFunction(() => {
+    const app = window.billow.app;
+    return app.optimized && app.optimized.revision === app.revision && !app.optimizing && !app.patterns.running
+      && app.patterns.currentText === app.optimized.patternText;
+  }, null, { timeout });
+}
+
 export async function screenshot(page, name) {
   await mkdir(SHOTS, { recursive: true });
   const path = join(SHOTS, `${name}.png`);

@@ -6,10 +6,9 @@
 // lack either.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openFreshPage, useBrowser } from './harness.mjs';
+import { openFreshPage, optimizedResultShown, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
-const LONG = { timeout: 180000 };
 
 // The visible controls without a tooltip or without a name, as short descriptions, and how many controls
 // were looked at. A control's tooltip is its own title or, as the browser shows it over the control, the
@@ -50,12 +49,7 @@ const audit = (page) =>
     return { count: controls.length, missing };
   });
 
-const resultShown = (page) =>
-  page.waitForFunction(() => {
-    const app = window.billow.app;
-    return app.optimized && app.optimized.revision === app.revision && !app.optimizing && !app.patterns.running
-      && app.patterns.currentText === app.optimized.patternText;
-  }, null, LONG);
+const resultShown = (page) => optimizedResultShown(page);
 
 test('every visible control has a tooltip and a name, in every state of the page', async () => {
   const page = await openFreshPage(env.context, env.server.url);
