@@ -350,3 +350,80 @@ test('free edges get their own allowance; own allowances of seams that are gone 
   assert.deepEqual(page.errors, []);
   await page.close();
 });
+
+// Per panel, the points of its path in one layer of an exported SVG, in sheet millimetres (y up, as the
+// pattern pane draws the sheet: the SVG's y runs down from the sheet's far end).
+function svgLayerPaths(svg, layer) {
+  const start = svg.indexOf(`<g id="${layer}"`);
+  const text = svg.slice(start, svg.indexOf('</g>', start));
+  const length = parseFloat(svg.match(/height="([\d.]+)mm"/)[1]);
+  return [...text.matchAll(/<path data-panel="(\d+)" d="M([^"Z]*)/g)].map(([, panel, d]) => {
+    const numbers = d.trim().split(/\s+/).map(Number);
+    const points = [];
+    for (let i = 0; i < numbers.length; i += 2) points.push([numbers[i], length - numbers[i + 1]]);
+    return { panel: Number(panel), points };
+  });
+}
+
+test('the sheet view shows the pieces nested as the cut file has them, with their notches; N switches views', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await openDesignFixture(page, 'sphere-equator.billow.json');
+  await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
+  await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines && document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
+  await page.fill('#sheet-input', '700');
+  await page.press('#sheet-input', 'Enter');
+  await page.waitForFunction(() => /^700 mm/.test(document.querySelector('#pattern-stats dd[data-stat="sheet"]').textContent));
+  await page.click('#pattern-view [data-view="sheet"]');
+  assert.equal(await page.getAttribute('#pattern-view [data-view="sheet"]', 'aria-pressed'), 'true');
+  assert.equal(await page.getAttribute('#pattern-view [data-view="panels"]', 'aria-pressed'), 'false');
+  await page.waitForFunction(() => window.billow.app.panes.pattern.sheetMesh && window.billow.app.panes.pattern.cutLines);
+  const shown = await page.evaluate(() => {
+    const pane = window.billow.app.panes.pattern;
+    const placed = (lines) =>
+      lines.map((line, i) => {
+        const place = pane.placement(i);
+        const out = [];
+        for (let k = 0; k + 1 < line.length; k += 2) out.push(place(line[k], line[k + 1]).map((v) => 1000 * v));
+        return out;
+      });
+    return {
+      sheet: pane.sheetMesh.userData.sheet,
+      cut: placed(pane.cutLines.userData.lines),
+      notches: pane.notches.userData.count,
+      captions: [...document.querySelectorAll('#pane-pattern .sheet-label')].map((l) => l.textContent),
+    };
+  });
+  assert.equal(shown.sheet.width, 0.7, 'the sheet is as wide as set');
+  assert.ok(shown.captions.some((c) => /700 mm/.test(c)) && shown.captions.some((c) => /roll .* used/.test(c)), shown.captions.join(' | '));
+  // Every piece lies on the sheet, and no two overlap (their boxes are apart: the nesting keeps a gap).
+  const boxes = shown.cut.map((points) => ({
+    x0: Math.min(...points.map((p) => p[0])), x1: Math.max(...points.map((p) => p[0])),
+    y0: Math.min(...points.map((p) => p[1])), y1: Math.max(...points.map((p) => p[1])),
+  }));
+  for (const b of boxes) {
+    assert.ok(b.x0 >= -0.01 && b.x1 <= 700.01, `across the sheet: ${b.x0} .. ${b.x1}`);
+    assert.ok(b.y0 >= -0.01 && b.y1 <= 1000 * shown.sheet.length + 0.01, `along the sheet: ${b.y0} .. ${b.y1}`);
+  }
+  assert.ok(boxes[0].x1 < boxes[1].x0 || boxes[1].x1 < boxes[0].x0 || boxes[0].y1 < boxes[1].y0 || boxes[1].y1 < boxes[0].y0, 'pieces apart');
+  // The pane's pieces are where the cut file puts them (to 0.01 mm), with as many notches.
+  const svg = (await exportFile(page, 'svg')).bytes.toString('utf8');
+  const cut = svgLayerPaths(svg, 'cut');
+  assert.equal(cut.length, 2);
+  for (const { panel, points } of cut) {
+    assert.equal(points.length, shown.cut[panel].length, `panel ${panel + 1}: cut line points`);
+    const worst = Math.max(...points.map((p, i) => Math.hypot(p[0] - shown.cut[panel][i][0], p[1] - shown.cut[panel][i][1])));
+    assert.ok(worst < 0.01, `panel ${panel + 1}: the pane's cut line is ${worst} mm from the SVG's`);
+  }
+  assert.equal(shown.notches, svgLayerPaths(svg, 'notches').length, 'the same notches as the SVG');
+  assert.ok(shown.notches > 4);
+  await screenshot(page, 'pattern-sheet-view');
+  // N (not in a field) goes back to the panels side by side; the choice is remembered on this device.
+  await page.evaluate(() => document.activeElement?.blur());
+  await page.keyboard.press('n');
+  await page.waitForFunction(() => window.billow.app.panes.pattern.view === 'panels' && !window.billow.app.panes.pattern.sheetMesh);
+  assert.equal(await page.getAttribute('#pattern-view [data-view="panels"]', 'aria-pressed'), 'true');
+  assert.equal(await page.evaluate(() => localStorage.getItem('billow.patternView')), 'panels');
+  assert.ok(await page.evaluate(() => window.billow.app.panes.pattern.notches?.userData.count > 4), 'notches in the panels view too');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

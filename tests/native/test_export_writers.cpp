@@ -198,6 +198,49 @@ TEST(Export, BundleAndStatistics) {
   EXPECT_EQ(j["panels"][0]["name"], "gore 1");
 }
 
+// The bundle's sheet (placements, size, notch ticks in each panel's frame) is the sheet the cut files draw:
+// the placed cut lines and ticks are the drawing's cut and notch paths, and no placed piece leaves the sheet.
+TEST(Export, SheetViewMatchesTheDrawing) {
+  ExampleOptions eo;
+  eo.triangles = 600;
+  const Pattern p = examplePattern("sphere3", eo);
+  ExportOptions o;
+  o.sheetWidth = 700;
+  const ExportBundle b = exportPattern(p, o);
+  const SheetLayout s = layoutSheet(p, o);
+  ASSERT_EQ(b.placements.size(), p.panels.size());
+  ASSERT_EQ(b.notchTicks.size(), p.panels.size());
+  EXPECT_EQ(b.sheetWidth, 700);
+  EXPECT_NEAR(b.sheetLength, s.drawing.length, 1e-9);
+  std::vector<Polygon2> drawnTicks(p.panels.size());
+  size_t cutPaths = 0;
+  for (const DrawnPath& path : s.drawing.paths) {
+    if (path.layer == Layer::Notch)
+      drawnTicks[path.panel].insert(drawnTicks[path.panel].end(), path.points.begin(), path.points.end());
+    if (path.layer != Layer::Cut) continue;
+    ++cutPaths;
+    const Polygon2 placed = transformed(b.cutLines[path.panel], b.placements[path.panel]);
+    ASSERT_EQ(placed.size(), path.points.size());
+    for (size_t i = 0; i < placed.size(); ++i) EXPECT_LT((placed[i] - path.points[i]).norm(), 1e-9);
+    for (const Vec2& v : placed) {
+      EXPECT_GE(v.x(), -1e-9);
+      EXPECT_LE(v.x(), b.sheetWidth + 1e-9);
+      EXPECT_GE(v.y(), -1e-9);
+      EXPECT_LE(v.y(), b.sheetLength + 1e-9);
+    }
+  }
+  EXPECT_EQ(cutPaths, p.panels.size());
+  size_t ticks = 0;
+  for (size_t panel = 0; panel < p.panels.size(); ++panel) {
+    const Polygon2 placed = transformed(b.notchTicks[panel], b.placements[panel]);
+    ASSERT_EQ(placed.size(), drawnTicks[panel].size());
+    for (size_t i = 0; i < placed.size(); ++i) EXPECT_LT((placed[i] - drawnTicks[panel][i]).norm(), 1e-9);
+    ticks += placed.size() / 2;
+  }
+  EXPECT_EQ(ticks, s.notches.size());
+  EXPECT_GT(ticks, 3u);  // junctions at least
+}
+
 TEST(Export, BadOptionsAreRefusedWithAMessage) {
   const Pattern p = examplePattern("pillow", {});
   ExportOptions o;

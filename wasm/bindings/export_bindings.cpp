@@ -1,11 +1,15 @@
 // Embind for the fabrication outputs (wasm/src/export/export.hpp):
-//   Module.exportPattern(patternJson, optionsJson) -> { svg, dxf, pdfBase64, statistics, cutLines }
+//   Module.exportPattern(patternJson, optionsJson) -> { svg, dxf, pdfBase64, statistics, cutLines, outlines, notches,
+//   sheet }
 //     options (all optional, lengths in mm; io/export_options_json.hpp): { allowance, free_edge_allowance,
 //       seam_allowance: { "<seam id>": mm }, sheet_width, notch_spacing, overlap, paper: "a4"|"letter",
 //       units: "mm"|"in", grain_lock, rotate, title }
 //     cutLines: per panel [x0, y0, x1, y1, ...] in the panel's own frame, in meters (for the pattern pane).
 //     outlines: per panel { loop: [vertex index, ...] (its sewing line, counterclockwise), seams: [seam id of
 //       loop edge i (loop[i] -> loop[i+1]), -1 for a free edge] }: where each seam of stats.json lies.
+//     notches: per panel its registration notches as tick segments [x0, y0, x1, y1, ...] in its frame [m].
+//     sheet: { width, length [m], utilisation, placements: per panel { angle [rad], x, y [m] } }: the nested
+//       sheet (sheet point = rotate(angle) * panel point + (x, y); x across the roll, y along it).
 //   The PDF is binary, so it crosses as base64 (embind strings are UTF-8 text).
 #include <emscripten/bind.h>
 
@@ -54,12 +58,22 @@ std::string exportPattern(const std::string& patternJson, const std::string& opt
   return guarded([&] {
     const billow::Pattern pattern = billow::readPatternJson(patternJson);
     const billow::ExportBundle bundle = billow::exportPattern(pattern, readOptions(optionsJson));
-    json cut = json::array();
-    for (const billow::Polygon2& line : bundle.cutLines) {
+    const auto meters = [](const billow::Polygon2& points) {
       json flat = json::array();
-      for (const billow::Vec2& p : line) flat.push_back(p.x() / 1000), flat.push_back(p.y() / 1000);
-      cut.push_back(std::move(flat));
-    }
+      for (const billow::Vec2& p : points) flat.push_back(p.x() / 1000), flat.push_back(p.y() / 1000);
+      return flat;
+    };
+    json cut = json::array();
+    for (const billow::Polygon2& line : bundle.cutLines) cut.push_back(meters(line));
+    json notches = json::array();
+    for (const billow::Polygon2& ticks : bundle.notchTicks) notches.push_back(meters(ticks));
+    json placements = json::array();
+    for (const billow::Placement2& t : bundle.placements)
+      placements.push_back({{"angle", t.angle}, {"x", t.offset.x() / 1000}, {"y", t.offset.y() / 1000}});
+    const json sheet = {{"width", bundle.sheetWidth / 1000},
+                        {"length", bundle.sheetLength / 1000},
+                        {"utilisation", bundle.utilisation},
+                        {"placements", placements}};
     json outlines = json::array();
     for (const billow::PanelOutline& o : bundle.outlines.panels)
       outlines.push_back({{"loop", o.loop}, {"seams", o.edgeSeam}});
@@ -68,7 +82,9 @@ std::string exportPattern(const std::string& patternJson, const std::string& opt
                  {"pdfBase64", base64(bundle.pdf)},
                  {"statistics", json::parse(bundle.statistics)},
                  {"cutLines", cut},
-                 {"outlines", outlines}})
+                 {"outlines", outlines},
+                 {"notches", notches},
+                 {"sheet", sheet}})
         .dump();
   });
 }

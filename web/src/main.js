@@ -136,6 +136,27 @@ const cycleColorMode = () => {
   const modes = [...colorSelect.options].filter((o) => !o.disabled).map((o) => o.value);
   setColorMode(modes[(modes.indexOf(colorSelect.value) + 1) % modes.length]);
 };
+// The pattern pane's view: the panels side by side, or nested on the sheet; remembered on this device.
+const patternView = $('pattern-view');
+const setPatternView = (view) => {
+  panes.pattern.setView(view);
+  for (const b of patternView.querySelectorAll('button')) b.setAttribute('aria-pressed', String(b.dataset.view === view));
+  try {
+    localStorage.setItem('billow.patternView', view);
+  } catch {
+    // Private browsing: the choice lasts this visit only.
+  }
+};
+patternView.addEventListener('click', (e) => {
+  const view = e.target.closest('[data-view]')?.dataset.view;
+  if (view) setPatternView(view);
+});
+const cyclePatternView = () => setPatternView(panes.pattern.view === 'sheet' ? 'panels' : 'sheet');
+try {
+  if (localStorage.getItem('billow.patternView') === 'sheet') setPatternView('sheet');
+} catch {
+  // As above.
+}
 $('undo-button').addEventListener('click', () => app.undo());
 $('redo-button').addEventListener('click', () => app.redo());
 $('save-button').addEventListener('click', () => app.saveDesignFile());
@@ -163,6 +184,8 @@ window.addEventListener('keydown', (e) => {
     app.seams.setSymmetry(axes[(axes.indexOf(app.design.symmetry?.axis ?? '') + 1) % axes.length] || null);
   } else if (!mod && !e.altKey && key === 'c') {
     cycleColorMode();
+  } else if (!mod && !e.altKey && key === 'n') {
+    cyclePatternView();
   } else if (mod && key === 'z' && !e.shiftKey) app.undo();
   else if (mod && ((key === 'z' && e.shiftKey) || key === 'y')) app.redo();
   else if (mod && key === 's') app.saveDesignFile();

@@ -22,8 +22,15 @@ ExportBundle exportPattern(const Pattern& pattern, const ExportOptions& options)
   out.dxf = writeDxf(layout.drawing);
   out.pdf = writePdf(layout.drawing, pdf);
   out.statistics = stats.dump(2);
-  for (const PanelLayout& panel : layout.panels) out.cutLines.push_back(panel.cut);
+  for (const PanelLayout& panel : layout.panels) {
+    out.cutLines.push_back(panel.cut);
+    out.placements.push_back(panel.placement);
+  }
   out.outlines = layout.outlines;
+  out.sheetWidth = layout.drawing.width;
+  out.sheetLength = layout.drawing.length;
+  out.utilisation = layout.nest.utilisation;
+  out.notchTicks = notchTicks(layout, options);
   return out;
 }
 

@@ -56,6 +56,22 @@ double allowanceOf(int seam, const ExportOptions& o) {
   return o.allowance;
 }
 
+Polygon2 notchTick(const Notch& n, const PanelLayout& panel, const ExportOptions& o) {
+  const double w = panel.widths[n.edge];
+  const double inside = w > 0 ? std::min(o.notchLength, 0.5 * w) : o.notchLength;
+  const Vec2 p = kMm * n.point;
+  return {p + (w - inside) * n.normal, p + (w + o.notchLength) * n.normal};
+}
+
+std::vector<Polygon2> notchTicks(const SheetLayout& s, const ExportOptions& o) {
+  std::vector<Polygon2> out(s.panels.size());
+  for (const Notch& n : s.notches) {
+    const Polygon2 tick = notchTick(n, s.panels[n.panel], o);
+    out[n.panel].insert(out[n.panel].end(), tick.begin(), tick.end());
+  }
+  return out;
+}
+
 SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& o) {
   validate(pattern, o);
   SheetLayout s;
@@ -95,11 +111,7 @@ SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& o) {
   // Notches: a short tick across the cut line, mostly inside the allowance so a snip does not cut the seam.
   for (const Notch& n : s.notches) {
     const PanelLayout& pl = s.panels[n.panel];
-    const double w = pl.widths[n.edge];
-    const double inside = w > 0 ? std::min(o.notchLength, 0.5 * w) : o.notchLength;
-    const Vec2 p = kMm * n.point;
-    const Polygon2 tick = {p + (w - inside) * n.normal, p + (w + o.notchLength) * n.normal};
-    d.paths.push_back({Layer::Notch, n.panel, false, transformed(tick, pl.placement)});
+    d.paths.push_back({Layer::Notch, n.panel, false, transformed(notchTick(n, pl, o), pl.placement)});
   }
   // Seam ids on both panels, inside the sewing line near the seam's middle.
   for (const Seam& seam : s.outlines.seams) {

@@ -30,6 +30,12 @@ struct SheetLayout {
 // Throws billow::Error: export.empty, export.bad-value, export.panel-shape, export.sheet-too-narrow.
 SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& options);
 
+// A registration notch as a short tick across the cut line, mostly inside the allowance so a snip does not
+// cut the seam: its two ends in the panel's frame [mm].
+Polygon2 notchTick(const Notch& notch, const PanelLayout& panel, const ExportOptions& options);
+// Per panel, its notches' ticks one after another (a0, b0, a1, b1, ...) in its frame [mm].
+std::vector<Polygon2> notchTicks(const SheetLayout& sheet, const ExportOptions& options);
+
 // Allowance [mm] of a seam (its override, else the default) or of a free edge (seam < 0).
 double allowanceOf(int seam, const ExportOptions& options);
 

@@ -7,10 +7,11 @@ import { autosave, tabRecordKey } from './autosave.js';
 import { History } from './history.js';
 import { encodeDesign, decodeDesign } from './share.js';
 import { PatternSession, patternForDisplay } from './pattern-session.js';
+import { optimizeArgs, resultKey, DEFAULT_RESOLUTION } from './stored-result.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight, setMaterial, setPressure, setFabrication, setSeamAllowance } from './commands.js';
-import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel } from './fabrication.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters } from './fabrication.js';
 import { download } from './download.js';
 import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
@@ -23,6 +24,7 @@ export const PATTERN_EXAMPLES = [
 ];
 
 const AUTOSAVE_KEY = 'current';
+const STORED_STATUS = 'Showing the stored result while it is refined live';
 const TAB_RECORD_DAYS = 30; // per-tab records older than this are deleted
 
 export class App {
@@ -48,7 +50,8 @@ export class App {
     this.changeListeners = new Set();
     this.seams = new SeamEditor(this);
     this.patternTicket = 0;
-    this.resolution = 1000; // triangles of the simulation mesh (view setting, not part of the design)
+    this.resolution = DEFAULT_RESOLUTION; // triangles of the simulation mesh (view setting, not part of the design)
+    this.stored = null; // { revision, triangles } while a stored result is shown (showStoredResult)
   }
 
   get design() {
@@ -153,7 +156,9 @@ export class App {
     return this.loadExample(value);
   }
 
-  async loadExample(id, design = null) {
+  // design: the design to open on the example (else a new one); stored: a stored result of that design
+  // (stored-result.js), shown at once when its key is the design's, as made from this very mesh file.
+  async loadExample(id, design = null, { stored = null } = {}) {
     const example = findExample(id);
     if (!example) return this.messages.show('error', `There is no example called "${id}".`);
     this.el.exampleSelect.value = id;
@@ -170,7 +175,8 @@ export class App {
         `The example "${example.name}" could not be loaded: check the connection and try again.${this.target ? ' Your current design is unchanged.' : ''}`,
       );
     }
-    return this.loadTargetBytes(example.file, bytes, design ?? newDesign(id), { quiet: true });
+    const matching = design && stored?.key === resultKey(design, this.resolution, bytes) ? stored : null;
+    return this.loadTargetBytes(example.file, bytes, design ?? newDesign(id), { quiet: true, stored: matching });
   }
 
   // A file the designer picked or dropped: a mesh becomes the target; a .json is a design or a pattern.
@@ -207,7 +213,7 @@ export class App {
     }
   }
 
-  async loadTargetBytes(fileName, bytes, design, { quiet }) {
+  async loadTargetBytes(fileName, bytes, design, { quiet, stored = null }) {
     const ticket = ++this.loadCounter;
     try {
       const result = await this.track(`Opening ${fileName}…`, () =>
@@ -218,8 +224,8 @@ export class App {
       );
       if (ticket !== this.loadCounter) return; // a newer load won
       this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
-      this.installTarget(fileName, result, design);
-      this.setStatus('Ready');
+      this.installTarget(fileName, result, design, stored);
+      if (!stored) this.setStatus('Ready');
       const shown = result.report.issues.filter((i) => i.severity !== 'error');
       for (const issue of shown) if (!quiet || issue.severity !== 'notice') this.messages.show(issue.severity, issue.message);
     } catch (error) {
@@ -241,12 +247,30 @@ export class App {
     this.setStatus('Ready');
   }
 
-  installTarget(fileName, result, design) {
+  installTarget(fileName, result, design, stored = null) {
     this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
     this.panes.target.setTarget(this.target, this.scaleFor(design));
     this.seams.reset();
     this.commitDesign(design, { reset: true });
-    this.seams.refresh();
+    // The seams (and so the live optimization) after the stored result: its inflation and cut lines are then
+    // queued in the worker first, not held back until the optimization is done.
+    if (stored) this.showStoredResult(stored).finally(() => this.seams.refresh());
+    else this.seams.refresh();
+  }
+
+  // A stored result of the design just opened (a gallery design's, made at build time by this pipeline):
+  // its optimized panels and their inflated shape, shown at once. The live optimization then runs as usual
+  // but shows none of its iterates, worse than the stored result until the last; its result replaces it.
+  async showStoredResult(stored) {
+    this.stored = { revision: this.revision, triangles: this.resolution };
+    const status = () => this.storedShown() && this.setStatus(`${STORED_STATUS}…`);
+    const result = await this.patterns.open('the stored optimized panels', stored.patternText, { status });
+    if (result) await this.measureDistance(result);
+  }
+
+  // True while the stored result belongs to the current design and resolution: no edit since it was shown.
+  storedShown() {
+    return this.stored?.revision === this.revision && this.stored.triangles === this.resolution;
   }
 
   // Mesh files carry no units: the design's height (m) fixes the scale of the target's own units.
@@ -277,30 +301,22 @@ export class App {
   async makePattern() {
     const ticket = ++this.patternTicket;
     const revision = this.revision;
-    const seams = this.design.seams.map(({ name, points, closed, weight, smooth }) => ({ name, points, closed, weight, smooth: Boolean(smooth) }));
     this.patterns.running?.cancel();
     this.optimizing?.cancel();
     const call = this.client.call(
       Op.optimizeDesign,
-      {
-        seams,
-        scale: this.scaleFor(this.design),
-        triangles: this.resolution,
-        pressure: this.design.pressure,
-        material: this.design.material,
-        connections: this.design.connections.map((c) => c.seams), // internal panels (paper Sec. 3.2)
-      },
+      { ...optimizeArgs(this.design, this.resolution), scale: this.scaleFor(this.design) },
       {
         onProgress: (p) => {
           if (ticket !== this.patternTicket) return;
-          if (p.flattenedText) {
-            this.flattenedText = p.flattenedText;
-            this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
-          }
+          if (p.flattenedText) this.flattenedText = p.flattenedText;
+          const step = p.iteration !== undefined && p.stage === 'optimizing'
+            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance to target ${(100 * p.distanceRms).toFixed(2)} %` : ''}`
+            : null;
+          if (this.storedShown()) return this.setStatus(`${STORED_STATUS}: ${step ?? p.stage}…`);
+          if (p.flattenedText) this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
           this.showIterate(p);
-          if (p.iteration !== undefined && p.stage === 'optimizing')
-            this.setStatus(`Optimizing the panels: step ${p.iteration}${p.distanceRms !== undefined ? `, distance to target ${(100 * p.distanceRms).toFixed(2)} %` : ''}…`);
-          else this.setStatus(`Making the panels: ${p.stage}…`);
+          this.setStatus(step ? `Optimizing the panels: ${step}…` : `Making the panels: ${p.stage}…`);
         },
       },
     );
@@ -310,6 +326,7 @@ export class App {
       const result = await call.promise;
       if (ticket !== this.patternTicket) return;
       this.optimized = { ...result, revision }; // the design revision these panels were made for
+      this.stored = null; // replaced by the live result
       await this.showVersion('optimized');
     } catch (error) {
       if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
@@ -390,11 +407,15 @@ export class App {
         options: exportOptions(f),
       });
       if (ticket !== this.cutTicket) return;
-      const pane = this.panes.pattern;
-      pane.setCutLines(display, result.cutLines);
       const widths = Object.fromEntries(result.statistics.seams.map((seam) => [seam.id, seam.allowance_mm]));
       widths[-1] = result.statistics.free_edge_allowance_mm;
-      pane.setSeams(display, result.outlines, result.statistics.seams, widths);
+      const totals = result.statistics.totals;
+      this.panes.pattern.setCutResult(display, {
+        ...result,
+        seams: result.statistics.seams,
+        widths,
+        captions: { width: formatMillimeters(totals.sheet_width_mm, f.units), length: formatMillimeters(totals.sheet_length_mm, f.units) },
+      });
       this.cutStatistics = result.statistics;
       this.allowancePanel?.setSeams(result.statistics);
       renderStats(this.el.patternStats, patternStatRows(result.statistics, f.units));

@@ -10,6 +10,7 @@ export const SHORTCUTS = [
   ['Delete', 'Delete the selected control point (Edit)'],
   ['M', 'Mirror symmetry: off, across X, Y, Z'],
   ['C', 'Colors of the inflated shape: wrinkles, stress, distance to target'],
+  ['N', 'Pattern view: the panels side by side, or nested on the sheet as cut'],
   ['Ctrl+Z', 'Undo'],
   ['Ctrl+Shift+Z / Ctrl+Y', 'Redo'],
   ['Ctrl+S', 'Save the design as a file'],

@@ -2,7 +2,8 @@
 // boundary edges are sewn to which panel, so both sides of a seam get the same color.
 
 // pattern: { panels: [{ name, vertices: [[x,y]], triangles: [[i,j,k]] }], stitches: [[pa, va, pb, vb]] }
-// Returns per panel { offset: [dx, dy], boundary: [[a, b, partnerPanel | -1]], centroid: [x, y] }.
+// Returns per panel { offset: [dx, dy], boundary: [[a, b, partnerPanel | -1]], center: [x, y] (of its
+// bounding box, in its frame), centroid: [x, y] (the same, laid out) }.
 export function layoutPattern(pattern, gapRatio = 0.08) {
   const partners = stitchPartners(pattern);
   const boxes = pattern.panels.map((p) => bounds(p.vertices));
@@ -24,7 +25,8 @@ export function layoutPattern(pattern, gapRatio = 0.08) {
     x += b.w + gap;
     rowHeight = Math.max(rowHeight, b.h);
     const boundary = boundaryEdges(panel.triangles).map(([a, c]) => [a, c, sharedPartner(partners, i, a, c)]);
-    return { offset, boundary, centroid: [offset[0] + (b.minX + b.maxX) / 2, offset[1] + (b.minY + b.maxY) / 2] };
+    const center = [(b.minX + b.maxX) / 2, (b.minY + b.maxY) / 2];
+    return { offset, boundary, center, centroid: [offset[0] + center[0], offset[1] + center[1]] };
   });
 }
 

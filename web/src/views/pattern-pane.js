@@ -1,4 +1,6 @@
-// The pattern pane: flat panels seen from above with pan and zoom (no rotation).
+// The pattern pane: flat panels seen from above with pan and zoom (no rotation), in one of two views:
+// 'panels' (side by side, each as drawn) or 'sheet' (as nested on the sheet for cutting, turned as the cut
+// files have them, with the sheet's outline).
 import {
   OrthographicCamera, Scene, GridHelper, Box3, Vector3, Group, BufferGeometry, Float32BufferAttribute, Mesh,
   MeshBasicMaterial, LineSegments, LineBasicMaterial, DoubleSide, Color,
@@ -30,33 +32,79 @@ export class PatternPane {
     this.labelAnchors = [];
     this.seamLabelAnchors = [];
     this.seams = null; // the exporter's seams of the shown pattern (setSeams)
+    this.view = 'panels'; // or 'sheet'
+    this.cut = null; // the exporter's figures of the shown pattern: { cutLines, notches, sheet, captions }
+    this.sheet = null; // the last nesting: { width, length, placements } [m] (kept for streamed iterates)
     this.selectedSeam = null; // seam id, -1 for the free edges, or null
     this.onSeamPick = null; // (id | null) => void: a click on a seam (-1: a free edge) or beside every seam
     this.pickSeams(element);
     viewport.add(this);
   }
 
-  // pattern: panels in meters (see docs/formats.md). Panels are laid out side by side; each seam has one
-  // color on both panels it joins; labels name the panels.
-  // The 10 cm grid over 4 m in the theme's colors (the axes, the lines).
+  // The grid's colors (the axes, the 10 cm lines), from the theme.
   setGridColors(axes, lines) {
+    this.gridColors = [axes, lines];
+    this.placeGrid(this.gridBox ?? new Box3(new Vector3(-2, -2, 0), new Vector3(2, 2, 0)));
+  }
+
+  // A grid of 10 cm squares (1 m beyond 40 m) under everything shown, lines on round figures.
+  placeGrid(box) {
     if (this.grid) {
       this.scene.remove(this.grid);
       this.grid.geometry.dispose();
       this.grid.material.dispose();
     }
-    this.grid = new GridHelper(4, 40, axes, lines);
+    this.gridBox = box;
+    const size = box.getSize(new Vector3());
+    const span = Math.max(4, Math.ceil(1.4 * Math.max(size.x, size.y) + 1));
+    const step = span > 40 ? 1 : 0.1;
+    const center = box.getCenter(new Vector3());
+    const round = (v) => Math.round(v / step) * step;
+    const extent = 2 * Math.ceil(span / 2); // even: lines stay on multiples of the step around a rounded center
+    const [, lines] = this.gridColors; // its middle is no particular place: no darker center lines
+    this.grid = new GridHelper(extent, Math.round(extent / step), lines, lines);
     this.grid.rotation.x = Math.PI / 2;
+    this.grid.position.set(round(center.x), round(center.y), -0.001);
     this.scene.add(this.grid);
     this.viewport.requestRender();
   }
 
-  // frame: fit the view to the panels (not for a streamed iterate: the designer's pan and zoom stay).
+  // pattern: panels in meters (see docs/formats.md); each seam has one color on both panels it joins;
+  // labels name the panels. frame: fit the view to the panels (not for a streamed iterate: the designer's
+  // pan and zoom stay). The exporter's figures (setCutResult) of the previous pattern are dropped; for a
+  // streamed iterate (not framed) with as many panels, its sheet placements go on being used.
   setPattern(pattern, { frame = true } = {}) {
-    this.clear();
-    const layout = layoutPattern(pattern);
     this.pattern = pattern;
-    this.layout = layout;
+    this.layout = layoutPattern(pattern);
+    this.cut = null;
+    this.seamData = null;
+    if (frame || this.sheet?.placements.length !== pattern.panels.length) this.sheet = null;
+    this.redraw({ frame });
+  }
+
+  // 'panels' or 'sheet'; the view is framed again, since the panels move.
+  setView(view) {
+    if (view !== 'panels' && view !== 'sheet') return;
+    this.view = view;
+    if (this.pattern) this.redraw({ frame: true });
+  }
+
+  // Where panel i's point (x, y) [m] is drawn in the current view.
+  placement(i) {
+    const at = this.view === 'sheet' ? this.sheet?.placements[i] : null;
+    if (!at) {
+      const [dx, dy] = this.layout[i].offset;
+      return (x, y) => [x + dx, y + dy];
+    }
+    const c = Math.cos(at.angle), s = Math.sin(at.angle);
+    return (x, y) => [c * x - s * y + at.x, s * x + c * y + at.y];
+  }
+
+  // Everything shown, drawn again from what the pane holds (after a new pattern, figures or view).
+  redraw({ frame = false } = {}) {
+    this.clear();
+    const pattern = this.pattern;
+    if (!pattern) return;
     const seamIds = new Map();
     const seamIndex = (a, b) => {
       const k = a < b ? `${a}-${b}` : `${b}-${a}`;
@@ -65,8 +113,9 @@ export class PatternPane {
     };
     this.pairColor = (a, b) => seamColor(seamIndex(a, b));
     pattern.panels.forEach((panel, i) => {
-      const { offset, boundary, centroid } = layout[i];
-      const xy = (v) => [panel.vertices[v][0] + offset[0], panel.vertices[v][1] + offset[1], 0];
+      const { boundary } = this.layout[i];
+      const place = this.placement(i);
+      const xy = (v) => [...place(panel.vertices[v][0], panel.vertices[v][1]), 0];
       const fill = new BufferGeometry();
       fill.setAttribute('position', new Float32BufferAttribute(panel.triangles.flat().flatMap(xy), 3));
       const material = new MeshBasicMaterial({ color: panelTint(i), side: DoubleSide, transparent: panel.internal, opacity: 0.6 });
@@ -88,52 +137,114 @@ export class PatternPane {
       label.className = 'panel-label';
       label.textContent = `${i + 1} ${panel.name ?? ''}`.trim();
       this.labels.append(label);
-      this.labelAnchors.push({ label, at: new Vector3(centroid[0], centroid[1], 0) });
+      this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0) });
     });
+    if (this.cut) {
+      this.drawCutLines(this.cut.cutLines);
+      this.drawNotches(this.cut.notches);
+    }
+    if (this.view === 'sheet' && this.sheet) this.drawSheet();
+    if (this.seamData) this.buildSeams();
     this.element.parentElement.querySelector('.hint')?.setAttribute('hidden', '');
+    const box = new Box3().setFromObject(this.content);
+    if (!box.isEmpty()) this.placeGrid(box);
     if (frame) this.frame(this.content);
     else this.viewport.requestRender();
   }
 
-  // The cut lines (sewing line plus seam allowance) of `pattern`'s panels, each a flat [x0, y0, x1, ...]
-  // in the panel's frame [m]; ignored when another pattern is shown by now.
-  setCutLines(pattern, cutLines) {
+  // The exporter's figures of `pattern` (ignored when another pattern is shown by now; web/src/worker/
+  // protocol.js exportPattern): cutLines (sewing line plus seam allowance) and notches (tick segments) per
+  // panel, flat [x0, y0, x1, ...] in its frame [m]; sheet: the nesting { width, length [m], placements };
+  // outlines, seams and widths as for setSeams; captions: { width, length } of the sheet, as the designer
+  // reads them.
+  setCutResult(pattern, { cutLines, notches = [], sheet = null, outlines, seams, widths = {}, captions = {} }) {
     if (pattern !== this.pattern || !this.layout) return false;
-    if (this.cutLines) {
-      this.content.remove(this.cutLines);
-      this.cutLines.geometry.dispose();
-      this.cutLines.material.dispose();
-    }
+    this.cut = { cutLines, notches, captions };
+    const before = this.sheet;
+    if (sheet?.placements?.length === pattern.panels.length) this.sheet = sheet;
+    this.seamData = outlines && seams ? { outlines, seams, widths } : null;
+    // Panels that were side by side move onto the sheet, or the sheet changed size: frame it again.
+    const moved = !before || Math.abs(before.width - this.sheet?.width) > 1e-9 || Math.abs(before.length - this.sheet?.length) > 0.05 * before.length;
+    this.redraw({ frame: this.view === 'sheet' && Boolean(this.sheet) && moved });
+    return true;
+  }
+
+  // Closed outlines, each a flat [x0, y0, x1, ...] in its panel's frame, as one set of line segments.
+  loopSegments(lines) {
     const points = [];
-    cutLines.forEach((line, i) => {
-      const [dx, dy] = this.layout[i].offset;
+    lines.forEach((line, i) => {
+      const place = this.placement(i);
       const n = line.length / 2;
       for (let k = 0; k < n; k++) {
         const j = (k + 1) % n;
-        points.push(line[2 * k] + dx, line[2 * k + 1] + dy, 0, line[2 * j] + dx, line[2 * j + 1] + dy, 0);
+        points.push(...place(line[2 * k], line[2 * k + 1]), 0, ...place(line[2 * j], line[2 * j + 1]), 0);
       }
     });
+    return points;
+  }
+
+  drawCutLines(cutLines) {
     const geometry = new BufferGeometry();
-    geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+    geometry.setAttribute('position', new Float32BufferAttribute(this.loopSegments(cutLines), 3));
     this.cutLines = new LineSegments(geometry, new LineBasicMaterial({ color: 0x1d2330 }));
     this.cutLines.position.z = 0.001;
     this.cutLines.userData.lines = cutLines; // per panel [x0, y0, ...] in its frame [m] (for tests)
     this.content.add(this.cutLines);
-    this.viewport.requestRender();
-    return true;
   }
 
-  // The exporter's seams of `pattern` (ignored when another pattern is shown by now): outlines per panel
-  // { loop: [vertex], seams: [seam id of edge loop[i] -> loop[i+1], -1 free] }; seams: the statistics' seams
-  // ({ id, label, panels: [a, b] (from 1) }); widths: { [id]: allowance mm } ("-1": free edges), for picking.
-  // Seams can then be picked with a click, shown with labels (S1, S2, ... as on the cut pieces) and one
-  // highlighted.
-  setSeams(pattern, outlines, seams, widths = {}) {
-    if (pattern !== this.pattern || !this.layout) return false;
+  // Registration notches: short ticks across the cut line, as the cut files have them.
+  drawNotches(notches) {
+    const points = [];
+    notches.forEach((ticks, i) => {
+      const place = this.placement(i);
+      for (let k = 0; k + 1 < ticks.length; k += 2) points.push(...place(ticks[k], ticks[k + 1]), 0);
+    });
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new Float32BufferAttribute(points, 3));
+    this.notches = new LineSegments(geometry, new LineBasicMaterial({ color: 0x1d2330 }));
+    this.notches.position.z = 0.001;
+    this.notches.userData.count = points.length / 6;
+    this.content.add(this.notches);
+  }
+
+  // The sheet the panels are nested on: its outline from the roll's start to the length used, its width
+  // and length written along its edges, and an arrow along the roll.
+  drawSheet() {
+    const { width: w, length: l } = this.sheet;
+    const sheetGeometry = new BufferGeometry();
+    sheetGeometry.setAttribute('position', new Float32BufferAttribute([0, 0, 0, w, 0, 0, w, l, 0, 0, 0, 0, w, l, 0, 0, l, 0], 3));
+    const [axes] = this.gridColors;
+    const sheet = new Mesh(sheetGeometry, new MeshBasicMaterial({ color: axes, transparent: true, opacity: 0.12, side: DoubleSide, depthWrite: false }));
+    sheet.position.z = -0.0005;
+    sheet.userData.sheet = { width: w, length: l };
+    this.sheetMesh = sheet;
+    const edge = new BufferGeometry();
+    edge.setAttribute('position', new Float32BufferAttribute([0, 0, 0, w, 0, 0, w, 0, 0, w, l, 0, w, l, 0, 0, l, 0, 0, l, 0, 0, 0, 0], 3));
+    const border = new LineSegments(edge, new LineBasicMaterial({ color: axes }));
+    this.content.add(sheet, border);
+    const captions = this.cut?.captions ?? {};
+    const caption = (text, x, y, className) => {
+      const label = document.createElement('div');
+      label.className = `sheet-label ${className}`;
+      label.textContent = text;
+      this.labels.append(label);
+      this.labelAnchors.push({ label, at: new Vector3(x, y, 0) });
+    };
+    caption(`← ${captions.width ?? `${Math.round(w * 1000)} mm`} →`, w / 2, 0, 'sheet-width');
+    caption(`roll ↑ ${captions.length ?? `${Math.round(l * 1000)} mm`} used`, w, l / 2, 'sheet-length');
+  }
+
+  // The exporter's seams (cf. setCutResult): outlines per panel { loop: [vertex], seams: [seam id of edge
+  // loop[i] -> loop[i+1], -1 free] }; seams: the statistics' seams ({ id, label, panels: [a, b] (from 1) });
+  // widths: { [id]: allowance mm } ("-1": free edges), for picking. Seams can then be picked with a click,
+  // shown with labels (S1, S2, ... as on the cut pieces) and one highlighted.
+  buildSeams() {
+    const { outlines, seams, widths } = this.seamData;
+    const pattern = this.pattern;
     const runs = new Map(); // id -> [{ panel, segments: [[x0, y0, x1, y1]], length }]
     outlines.forEach(({ loop, seams: edgeSeams }, p) => {
       const panel = pattern.panels[p];
-      const [dx, dy] = this.layout[p].offset;
+      const place = this.placement(p);
       const n = loop.length;
       // Start at an edge that begins a run, so that no run wraps around loop[0].
       const start = Math.max(0, edgeSeams.findIndex((id, e) => id !== edgeSeams[(e + n - 1) % n]));
@@ -141,13 +252,13 @@ export class PatternPane {
       for (let k = 0; k < n; k++) {
         const e = (start + k) % n;
         const id = edgeSeams[e];
-        const [x0, y0] = panel.vertices[loop[e]], [x1, y1] = panel.vertices[loop[(e + 1) % n]];
+        const [x0, y0] = place(...panel.vertices[loop[e]]), [x1, y1] = place(...panel.vertices[loop[(e + 1) % n]]);
         if (!run || run.id !== id) {
           run = { id, panel: p, segments: [], length: 0 };
           if (!runs.has(id)) runs.set(id, []);
           runs.get(id).push(run);
         }
-        run.segments.push([x0 + dx, y0 + dy, x1 + dx, y1 + dy]);
+        run.segments.push([x0, y0, x1, y1]);
         run.length += Math.hypot(x1 - x0, y1 - y0);
       }
     });
@@ -156,7 +267,6 @@ export class PatternPane {
     this.seams = { outlines, runs, colors, widths, labels: new Map(seams.map((seam) => [seam.id, seam.label])) };
     this.seamLabels();
     this.highlightSeam();
-    return true;
   }
 
   // The color a seam between panels a and b (from 0) has in this pane (the same on both panels).
@@ -305,6 +415,8 @@ export class PatternPane {
 
   clear() {
     this.cutLines = null;
+    this.notches = null;
+    this.sheetMesh = null;
     this.seams = null;
     this.highlight = null;
     this.seamLabelAnchors = [];

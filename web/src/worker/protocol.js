@@ -34,7 +34,7 @@ export const Op = Object.freeze({
   inflatePattern: 'inflatePattern',
   // { name, triangles } -> { patternText }: a built-in example pattern (mylar, pillow, sphere3).
   examplePattern: 'examplePattern',
-  // { patternText, options } -> { svg, dxf, pdf: Uint8Array, statistics, cutLines, outlines }: the cut files and
+  // { patternText, options } -> { svg, dxf, pdf: Uint8Array, statistics, cutLines, outlines, notches, sheet }: the cut files and
   // printable tiles of a pattern (see SolverApi.exportPattern for the options).
   exportPattern: 'exportPattern',
   // { positions (#V*3, meters), scale, triangles?, outer? } -> { distances: Float32Array #V, rms, max, diagonal }:

@@ -20,7 +20,7 @@ export class SolverApi {
   }
 
   // Fabrication outputs of a billow-pattern (JSON text): { svg, dxf, pdf: Uint8Array, statistics, cutLines,
-  // outlines } (wasm/bindings/export_bindings.cpp). options (lengths in mm): { allowance, free_edge_allowance,
+  // outlines, notches, sheet } (wasm/bindings/export_bindings.cpp). options (lengths in mm): { allowance, free_edge_allowance,
   // seam_allowance: { "<seam id>": mm }, sheet_width, notch_spacing, overlap, paper, units, grain_lock, rotate, title }
   exportPattern(patternText, options = {}) {
     const { pdfBase64, ...rest } = SolverApi.unwrap(this.module.exportPattern(patternText, JSON.stringify(options)));
