@@ -415,6 +415,14 @@ test('the sheet view shows the pieces nested as the cut file has them, with thei
     assert.ok(worst < 0.01, `panel ${panel + 1}: the pane's cut line is ${worst} mm from the SVG's`);
   }
   assert.equal(shown.notches, svgLayerPaths(svg, 'notches').length, 'the same notches as the SVG');
+  // Each piece is labelled with its size as it lies on the sheet.
+  const sizes = await page.$$eval('#pane-pattern .panel-label .panel-size', (els) => els.map((e) => e.textContent));
+  assert.equal(sizes.length, 2);
+  for (const { panel, points } of cut) {
+    const w = Math.max(...points.map((p) => p[0])) - Math.min(...points.map((p) => p[0]));
+    const h = Math.max(...points.map((p) => p[1])) - Math.min(...points.map((p) => p[1]));
+    assert.equal(sizes[panel], `${w.toFixed(0)} × ${h.toFixed(0)} mm`);
+  }
   assert.ok(shown.notches > 4);
   await screenshot(page, 'pattern-sheet-view');
   // N (not in a field) goes back to the panels side by side; the choice is remembered on this device.

@@ -11,7 +11,7 @@ import { optimizeArgs, resultKey, DEFAULT_RESOLUTION } from './stored-result.js'
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight, setMaterial, setPressure, setFabrication, setSeamAllowance } from './commands.js';
-import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters } from './fabrication.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters, formatSize } from './fabrication.js';
 import { download } from './download.js';
 import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
@@ -414,7 +414,11 @@ export class App {
         ...result,
         seams: result.statistics.seams,
         widths,
-        captions: { width: formatMillimeters(totals.sheet_width_mm, f.units), length: formatMillimeters(totals.sheet_length_mm, f.units) },
+        captions: {
+          width: formatMillimeters(totals.sheet_width_mm, f.units),
+          length: formatMillimeters(totals.sheet_length_mm, f.units),
+          size: (widthMm, heightMm) => formatSize(widthMm, heightMm, f.units),
+        },
       });
       this.cutStatistics = result.statistics;
       this.allowancePanel?.setSeams(result.statistics);

@@ -110,6 +110,13 @@ export function formatMillimeters(mm, units = 'mm') {
   return units === 'in' ? `${(mm / MM_PER_INCH).toFixed(2)} in` : `${mm.toFixed(0)} mm`;
 }
 
+// A panel's size (width by height, given in mm) in the designer's units: "412 × 380 mm" or "16.2 × 15.0 in".
+export function formatSize(widthMm, heightMm, units = 'mm') {
+  return units === 'in'
+    ? `${(widthMm / MM_PER_INCH).toFixed(1)} × ${(heightMm / MM_PER_INCH).toFixed(1)} in`
+    : `${widthMm.toFixed(0)} × ${heightMm.toFixed(0)} mm`;
+}
+
 // Rows for the pattern pane's figures box from the exporter's statistics (wasm/src/export/statistics.hpp).
 export function patternStatRows(statistics, units = 'mm') {
   const t = statistics.totals;

@@ -136,6 +136,13 @@ export class PatternPane {
       const label = document.createElement('div');
       label.className = 'panel-label';
       label.textContent = `${i + 1} ${panel.name ?? ''}`.trim();
+      const size = this.pieceSize(i);
+      if (size) {
+        const line = document.createElement('span');
+        line.className = 'panel-size';
+        line.textContent = size;
+        label.append(line);
+      }
       this.labels.append(label);
       this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0) });
     });
@@ -155,8 +162,8 @@ export class PatternPane {
   // The exporter's figures of `pattern` (ignored when another pattern is shown by now; web/src/worker/
   // protocol.js exportPattern): cutLines (sewing line plus seam allowance) and notches (tick segments) per
   // panel, flat [x0, y0, x1, ...] in its frame [m]; sheet: the nesting { width, length [m], placements };
-  // outlines, seams and widths as for setSeams; captions: { width, length } of the sheet, as the designer
-  // reads them.
+  // outlines, seams and widths as for buildSeams; captions, as the designer reads them: { width, length } of
+  // the sheet, and size(widthMm, heightMm) a piece's size.
   setCutResult(pattern, { cutLines, notches = [], sheet = null, outlines, seams, widths = {}, captions = {} }) {
     if (pattern !== this.pattern || !this.layout) return false;
     this.cut = { cutLines, notches, captions };
@@ -167,6 +174,22 @@ export class PatternPane {
     const moved = !before || Math.abs(before.width - this.sheet?.width) > 1e-9 || Math.abs(before.length - this.sheet?.length) > 0.05 * before.length;
     this.redraw({ frame: this.view === 'sheet' && Boolean(this.sheet) && moved });
     return true;
+  }
+
+  // Panel i's cut piece's width and height as drawn (turned as on the sheet in the sheet view), as the
+  // designer reads them; null before the cut lines arrive.
+  pieceSize(i) {
+    const line = this.cut?.cutLines[i];
+    const format = this.cut?.captions.size;
+    if (!line || !format) return null;
+    const place = this.placement(i);
+    let minX = Infinity, minY = Infinity, maxX = -Infinity, maxY = -Infinity;
+    for (let k = 0; k + 1 < line.length; k += 2) {
+      const [x, y] = place(line[k], line[k + 1]);
+      minX = Math.min(minX, x); maxX = Math.max(maxX, x);
+      minY = Math.min(minY, y); maxY = Math.max(maxY, y);
+    }
+    return format(1000 * (maxX - minX), 1000 * (maxY - minY));
   }
 
   // Closed outlines, each a flat [x0, y0, x1, ...] in its panel's frame, as one set of line segments.
