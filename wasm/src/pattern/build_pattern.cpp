@@ -148,6 +148,14 @@ void stitchPieces(BuiltPattern& out) {
 
 }  // namespace
 
+void stitchBuiltPattern(BuiltPattern& built) {
+  built.pattern.stitches.clear();
+  built.figures.maxEdgeLengthMismatch = built.figures.maxSeamLengthMismatch = 0;
+  built.figures.maxStitchTargetDistance = 0;
+  stitchPieces(built);
+  built.figures.stitches = static_cast<int>(built.pattern.stitches.size());
+}
+
 BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const PatternBuildOptions& options) {
   const auto t0 = Clock::now();
   BuiltPattern out;

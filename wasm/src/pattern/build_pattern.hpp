@@ -92,6 +92,10 @@ struct BuiltPattern {
 BuiltPattern buildPattern(const TriMesh& target, const Segmentation& segmentation,
                           const PatternBuildOptions& options = {});
 
+// Stitches every sample k of each piece to sample N - k of its partner (chains where three or more panel
+// vertices are one point), replacing the pattern's stitches; the mismatch figures are measured again.
+void stitchBuiltPattern(BuiltPattern& built);
+
 // h: options.edgeLength, else from the wanted triangle count over the total panel area [m^2]:
 // h = sqrt((4/3) 4 A / (sqrt(3) triangles)) (the refined meshes hold ~4/3 as many triangles as equilateral ones).
 double patternEdgeLength(double panelArea, const PatternBuildOptions& options);
