@@ -4,12 +4,18 @@
 //                                          item in headless Chromium (/usr/bin/chromium, as the e2e tests),
 //                                          waits until its inflated result shows and screenshots that pane
 //   node scripts/make-gallery.mjs thumbs ID...  only those items' thumbnails
-//   node scripts/make-gallery.mjs          both
-// To regenerate after changing an item: `node scripts/make-gallery.mjs data`, `bash scripts/build.sh web`,
-// `node scripts/make-gallery.mjs thumbs`, `bash scripts/build.sh web` again (the thumbnails ship in web/dist).
+//   node scripts/make-gallery.mjs results [ID...]  the stored results (<id>.result.json) of the design items,
+//                                          computed as the app computes them: the wasm module in Node through
+//                                          the worker's handlers (build/wasm, or BILLOW_WASM_DIR)
+//   node scripts/make-gallery.mjs          data, results and thumbs
+// To regenerate after changing an item: `node scripts/make-gallery.mjs data`, `node scripts/make-gallery.mjs
+// results`, `bash scripts/build.sh web`, `node scripts/make-gallery.mjs thumbs`, `bash scripts/build.sh web`
+// again (the thumbnails ship in web/dist). The node test tests/node/gallery-results.test.mjs fails when a
+// design changed and its result was not made again.
 // It prints how long each item takes to show its result. BILLOW_DIST=DIR serves another build of the site
 // than web/dist (as the e2e tests do); the thumbnails are written to web/public/gallery all the same.
-import { writeFileSync, mkdirSync } from 'node:fs';
+import { writeFileSync, mkdirSync, readFileSync, readdirSync } from 'node:fs';
+import { gzipSync } from 'node:zlib';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { readObj } from './obj.mjs';
@@ -231,6 +237,69 @@ async function makeThumbnails(only = []) {
   }
 }
 
+// Runs a worker handler (a generator of progress) to its end and returns its result.
+function finish(steps) {
+  let step = steps.next();
+  while (!step.done) step = steps.next();
+  return step.value;
+}
+
+// Coordinates to a micrometer: the panels' lengths then change by far less than the solver's tolerance.
+const micro = (v) => Math.round(v * 1e6) / 1e6;
+
+function roundPattern(pattern) {
+  return {
+    ...pattern,
+    panels: pattern.panels.map((p) => ({ ...p, vertices: p.vertices.map((xy) => xy.map(micro)) })),
+    inflated: pattern.inflated?.map((panel) => panel.map((xyz) => xyz.map(micro))),
+  };
+}
+
+// The stored result of one gallery design: its panels optimized by the worker's own handlers (as
+// App.makePattern asks for them), rounded, and checked to inflate in balance as stored.
+async function makeResult(api, file) {
+  const { parseDesign } = await import('../web/src/app/design.js');
+  const { findExample } = await import('../web/src/app/examples.js');
+  const { createHandlers } = await import('../web/src/worker/handlers.js');
+  const { optimizeArgs, resultKey, DEFAULT_RESOLUTION, RESULT_FORMAT, RESULT_VERSION } = await import('../web/src/app/stored-result.js');
+  const { design } = parseDesign(JSON.parse(readFileSync(join(OUT, file), 'utf8')));
+  const example = findExample(design.target.example);
+  const bytes = readFileSync(join(ROOT, 'web/public/examples', example.file));
+  const handlers = createHandlers(api);
+  const arrayBuffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
+  const { report } = finish(handlers.loadTarget({ fileName: example.file, bytes: arrayBuffer }));
+  const scale = design.size.height / (report.stats.bbox_max[1] - report.stats.bbox_min[1]); // App.scaleFor
+  const optimized = finish(handlers.optimizeDesign({ ...optimizeArgs(design, DEFAULT_RESOLUTION), scale }));
+  const pattern = roundPattern(JSON.parse(optimized.patternText));
+  const inflated = finish(handlers.inflatePattern({ patternText: JSON.stringify(pattern) }));
+  const { state, iteration, distanceRms, distanceMax, seamMismatch } = optimized.status;
+  return {
+    format: RESULT_FORMAT, version: RESULT_VERSION, design: file, key: resultKey(design, DEFAULT_RESOLUTION, bytes),
+    triangles: DEFAULT_RESOLUTION, solver: api.version(),
+    optimizer: { state, iteration, distanceRms, distanceMax, seamMismatch },
+    inflatedSteps: inflated.iterations, pattern,
+  };
+}
+
+async function makeResults(only = []) {
+  const { loadApi } = await import('../tests/node/load-module.mjs');
+  const api = await loadApi();
+  const files = readdirSync(OUT).filter((f) => f.endsWith('.billow.json')).sort();
+  for (const file of files) {
+    const id = file.replace(/\.billow\.json$/, '');
+    if (only.length && !only.includes(id)) continue;
+    const started = performance.now();
+    const result = await makeResult(api, file);
+    const text = `${JSON.stringify(result)}\n`;
+    writeFileSync(join(OUT, `${id}.result.json`), text);
+    const kb = (n) => `${(n / 1024).toFixed(0)} KB`;
+    const { state, iteration, distanceRms } = result.optimizer;
+    console.log(`${id}: ${((performance.now() - started) / 1000).toFixed(1)} s, ${iteration} steps (${state}), distance ${(100 * distanceRms).toFixed(2)} %, `
+      + `inflates in ${result.inflatedSteps} steps; ${kb(text.length)}, ${kb(gzipSync(text).length)} gzipped`);
+  }
+}
+
 const what = process.argv[2] ?? 'all';
 if (what === 'data' || what === 'all') makeData();
+if (what === 'results' || what === 'all') await makeResults(process.argv.slice(3));
 if (what === 'thumbs' || what === 'all') await makeThumbnails(process.argv.slice(3));

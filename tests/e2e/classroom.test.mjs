@@ -296,3 +296,38 @@ test('two seam layouts compared side by side; either one can be put back, undoab
   assert.deepEqual(page.errors, []);
   await page.close();
 });
+
+test('the comparison stays off the pattern pane, and its Keep buttons stay ready when only the mirror plane changes', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await resultShown(page);
+  await page.click('#compare-button');
+  await page.waitForSelector('dialog.compare-dialog [data-keep="A"]:not([disabled])');
+  const boxes = await page.evaluate(() => ({
+    dialog: document.querySelector('dialog.compare-dialog').getBoundingClientRect().toJSON(),
+    pattern: document.getElementById('pane-pattern').getBoundingClientRect().toJSON(),
+  }));
+  assert.ok(boxes.dialog.bottom <= boxes.pattern.top, `the dialog ends at ${boxes.dialog.bottom}, above the pattern pane at ${boxes.pattern.top}`);
+  // Keep: its whole card and the buttons show without scrolling.
+  await page.click('dialog.compare-dialog [data-keep="A"]');
+  await page.waitForSelector('.compare-card[data-layout="A"].current');
+  const scroll = await page.evaluate(() => { const b = document.querySelector('.compare-body'); return b.scrollHeight - b.clientHeight; });
+  assert.ok(scroll <= 1, `the comparison fits without scrolling (${scroll} px more)`);
+  await screenshot(page, 'compare-beside-pattern');
+  // The mirror plane is not something the panels are made from: they stay, and so do the figures.
+  for (const axis of ['x', null]) {
+    const revision = await page.evaluate(() => window.billow.app.revision);
+    await page.evaluate((a) => window.billow.app.seams.setSymmetry(a), axis);
+    assert.equal(await page.evaluate(() => window.billow.app.design.symmetry?.axis ?? null), axis);
+    assert.equal(await page.evaluate(() => window.billow.app.revision), revision, 'the panels still belong to the design');
+    await page.waitForSelector('dialog.compare-dialog [data-keep="B"]:not([disabled])', { timeout: 5000 });
+    assert.equal(await page.isDisabled('dialog.compare-dialog [data-keep="A"]'), false, `Keep after symmetry ${axis}`);
+  }
+  // A seam edit still makes the panels stale until they are made again.
+  await page.evaluate(() => window.billow.app.setPressure(1500));
+  assert.equal(await page.isDisabled('dialog.compare-dialog [data-keep="B"]'), true, 'Keep waits for the new panels');
+  await resultShown(page);
+  await page.waitForSelector('dialog.compare-dialog [data-keep="B"]:not([disabled])');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

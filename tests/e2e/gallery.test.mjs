@@ -2,10 +2,14 @@
 // asks for: the Mylar balloon, a three-panel sphere, a pillow, plush toys (a penguin and a teddy-like koala),
 // an animal with an internal connection, a star foil balloon), each with a loaded thumbnail and one line on
 // what it teaches; every item opens from its card and shows its inflated result (patterns inflate; designs
-// are segmented, their panels optimized and inflated).
+// are segmented, their panels optimized and inflated). A design shows its stored result (<id>.result.json)
+// while that runs, keeps it until the live result replaces it, and never shows it again after an edit; a
+// stale or damaged result file is ignored.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openFreshPage, paintedFraction, screenshot, useBrowser } from './harness.mjs';
+import { readFile } from 'node:fs/promises';
+import { join } from 'node:path';
+import { ROOT, openFreshPage, optimizedResultShown, paintedFraction, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -58,4 +62,126 @@ test('a gallery item that cannot be fetched gets a message', async () => {
   await page.evaluate(() => window.billow.gallery.open('sphere3'));
   await page.locator('.message.error', { hasText: 'could not be loaded from the gallery' }).waitFor();
   await page.close();
+});
+
+// Records every status line and, while the stored result is shown and no inflation runs, which panels and
+// which inflated shape the panes show (window.seen).
+const watch = (page) => page.evaluate(() => {
+  const app = window.billow.app;
+  const seen = { statuses: [], shown: new Set(), storedSamples: 0 };
+  window.seen = seen;
+  const status = document.querySelector('#status');
+  new MutationObserver(() => seen.statuses.push(status.textContent)).observe(status, { childList: true, characterData: true, subtree: true });
+  const look = () => {
+    if (app.storedShown() && !app.patterns.running && app.panes.inflated.shape) {
+      seen.storedSamples++;
+      seen.shown.add(`${app.panes.inflated.serial}:${app.patterns.currentText?.length}:${app.panes.pattern.pattern?.panels?.length}`);
+    }
+    requestAnimationFrame(look);
+  };
+  requestAnimationFrame(look);
+});
+
+test('a design opens with its stored result, keeps it while the live optimization runs, then shows the live result', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  // A design with its live result first: its "before optimization" must not be offered for the koala.
+  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await optimizedResultShown(page);
+  assert.equal(await page.isVisible('#show-flattened'), true);
+  await watch(page);
+  await page.click('#gallery-button');
+  await page.click('.gallery-card[data-item="koala"]');
+  // The stored result is in both panes while the worker is still optimizing the panels.
+  await page.waitForFunction(() => {
+    const app = window.billow.app;
+    return /stored result/.test(document.querySelector('#status').textContent) && app.optimizing && !app.patterns.running
+      && app.panes.inflated.shape && app.patterns.display?.panels.length === 4;
+  }, null, { timeout: 30000 });
+  const inflated = await paintedFraction(page, '#pane-inflated .pane-body');
+  const pattern = await paintedFraction(page, '#pane-pattern .pane-body');
+  await screenshot(page, 'gallery-koala-stored');
+  const during = await page.evaluate(() => ({
+    compare: !document.querySelector('#compare-group').hidden,
+    optimizing: Boolean(window.billow.app.optimizing),
+    status: document.querySelector('#status').textContent,
+    patternPanels: window.billow.app.panes.pattern.pattern?.panels.length,
+  }));
+  assert.ok(during.optimizing, 'the panes were looked at while the live optimization ran');
+  assert.match(during.status, /^Showing the stored result while it is refined live/);
+  assert.ok(inflated > 0.02, `the stored inflated shape is drawn (${inflated})`);
+  assert.ok(pattern > 0.02, `the stored panels are drawn (${pattern})`);
+  assert.equal(during.patternPanels, 4, 'the pattern pane shows the four stored panels');
+  assert.equal(during.compare, false, 'no "before optimization" of another design meanwhile');
+
+  await optimizedResultShown(page);
+  const after = await page.evaluate(() => ({
+    status: document.querySelector('#status').textContent,
+    stored: window.billow.app.stored,
+    compare: !document.querySelector('#compare-group').hidden,
+    panels: window.billow.app.patterns.display.panels.length,
+    seen: { statuses: window.seen.statuses, shown: [...window.seen.shown], storedSamples: window.seen.storedSamples },
+  }));
+  assert.match(after.status, /^Inflated the optimized panels/);
+  assert.equal(after.stored, null, 'the live result replaced the stored one');
+  assert.ok(after.compare, '"before optimization" is offered');
+  assert.equal(after.panels, 4);
+  // Until then the panes kept the stored result: the optimizer's iterates (first of all the flattened
+  // panels, worse than the stored result) were not shown over it.
+  assert.ok(after.seen.storedSamples > 5, `the stored result was looked at ${after.seen.storedSamples} times`);
+  assert.equal(after.seen.shown.length, 1, `one shape and one set of panels while the stored result was shown: ${after.seen.shown}`);
+  assert.ok(after.seen.statuses.some((s) => /stored result while it is refined live: step \d+/.test(s)), 'the status counts the live steps');
+  assert.ok(!after.seen.statuses.some((s) => /^Optimizing the panels|^Making the panels/.test(s)), 'no live-only status meanwhile');
+  assert.ok(await paintedFraction(page, '#pane-inflated .pane-body') > 0.02, 'the live result is drawn');
+  await screenshot(page, 'gallery-koala-live');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('an edit before the live result arrives ends the stored result: it does not come back, not even by undo', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.evaluate(() => window.billow.gallery.open('koala'));
+  await page.waitForFunction(() => /stored result/.test(document.querySelector('#status').textContent) && window.billow.app.optimizing,
+    null, { timeout: 30000 });
+  await watch(page);
+  // What the status says from the edit on (the same task: no live step in between).
+  await page.evaluate(() => {
+    window.seen.statuses.length = 0;
+    window.billow.app.setPressure(1200);
+  });
+  await optimizedResultShown(page);
+  const edited = await page.evaluate(() => ({ pressure: JSON.parse(window.billow.app.patterns.currentText).pressure, statuses: window.seen.statuses }));
+  assert.equal(edited.pressure, 1200, 'the panels shown are those of the edited design');
+  assert.ok(edited.statuses.some((s) => /^Optimizing the panels: step/.test(s)), 'the edited design streams its iterates as usual');
+  await page.evaluate(() => window.billow.app.undo());
+  await page.waitForFunction(() => window.billow.app.optimizing, null, { timeout: 30000 }).catch(() => {});
+  await optimizedResultShown(page);
+  const undone = await page.evaluate(() => ({
+    pressure: JSON.parse(window.billow.app.patterns.currentText).pressure,
+    statuses: window.seen.statuses,
+    stored: window.billow.app.storedShown(),
+  }));
+  assert.equal(undone.pressure, 1000, 'undo gives the gallery design back, optimized live');
+  assert.equal(undone.stored, false);
+  assert.deepEqual(undone.statuses.filter((s) => /stored result/.test(s)), [], 'the stored result was not shown again');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('a stale or damaged stored result is ignored: the result is computed live, without a message', async () => {
+  const text = await readFile(join(ROOT, 'web/public/gallery/sphere3.result.json'), 'utf8');
+  const stale = JSON.stringify({ ...JSON.parse(text), key: '0000000000000000' });
+  for (const [what, body] of [['stale', stale], ['damaged', text.slice(0, text.length / 2)]]) {
+    const page = await openFreshPage(env.context, env.server.url);
+    await page.route('**/gallery/sphere3.result.json', (route) => route.fulfill({ status: 200, contentType: 'application/json', body }));
+    await watch(page);
+    await page.evaluate(() => window.billow.gallery.open('sphere3'));
+    await optimizedResultShown(page);
+    const seen = await page.evaluate(() => ({ statuses: window.seen.statuses, samples: window.seen.storedSamples }));
+    assert.ok(!seen.statuses.some((s) => /stored result/.test(s)), `${what}: no stored result shown`);
+    assert.equal(seen.samples, 0, `${what}: no stored result shown`);
+    assert.ok(seen.statuses.some((s) => /^Optimizing the panels: step/.test(s)), `${what}: the live iterates are shown`);
+    assert.deepEqual(await page.locator('.message').allTextContents(), [], `${what}: no message`);
+    assert.deepEqual(page.errors, [], what);
+    await page.close();
+  }
 });

@@ -3,7 +3,9 @@
 // view shows why the flattened panels miss the target and how much closer the optimized ones come.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
+import { readFile } from 'node:fs/promises';
+import { join } from 'node:path';
+import { ROOT, openFreshPage, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -125,7 +127,9 @@ test('each optimization iterate streams: its shape with its distance colors, and
     requestAnimationFrame(look);
   });
   await page.evaluate(() => window.billow.app.panes.inflated.setColorMode('distance'));
-  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  // Opened as a design file: from the Gallery it would show its stored result instead of the iterates.
+  const buffer = await readFile(join(ROOT, 'web/public/gallery/sphere3.billow.json'));
+  await page.setInputFiles('#file-input', { name: 'sphere3.billow.json', mimeType: 'application/json', buffer });
   await waitInflated(page);
   const seen = await page.evaluate(() => ({
     distances: window.streamSeen.distances.size,

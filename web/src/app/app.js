@@ -7,7 +7,7 @@ import { autosave, tabRecordKey } from './autosave.js';
 import { History } from './history.js';
 import { encodeDesign, decodeDesign } from './share.js';
 import { PatternSession, patternForDisplay } from './pattern-session.js';
-import { optimizeArgs, resultKey, DEFAULT_RESOLUTION } from './stored-result.js';
+import { canonicalJson, optimizeArgs, resultKey, DEFAULT_RESOLUTION } from './stored-result.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight, setMaterial, setPressure, setFabrication, setSeamAllowance } from './commands.js';
@@ -22,6 +22,9 @@ export const PATTERN_EXAMPLES = [
   { id: 'pillow', name: 'Pillow (two squares)' },
   { id: 'sphere3', name: 'Sphere (three gores)' },
 ];
+
+// What a design's panels are made from, besides the target and the resolution, as comparable text.
+const panelInputs = (design) => canonicalJson({ height: design.size.height, ...optimizeArgs(design, 0) });
 
 const AUTOSAVE_KEY = 'current';
 const STORED_STATUS = 'Showing the stored result while it is refined live';
@@ -283,11 +286,15 @@ export class App {
 
   // Every change of the design goes through here: history, views, autosave.
   commitDesign(design, { reset = false, mergeKey = null } = {}) {
-    // Panels being made for the previous design are stale now.
-    this.revision = (this.revision ?? 0) + 1;
-    this.patternTicket += 1;
-    this.patterns.running?.cancel();
-    this.optimizing?.cancel();
+    // Panels being made for the previous design are stale now, unless the edit left all they are made from
+    // as it was (the mirror plane): those panels and any stored result still belong to the design.
+    if (reset || panelInputs(design) !== panelInputs(this.design)) {
+      this.revision = (this.revision ?? 0) + 1;
+      this.patternTicket += 1;
+      this.patterns.running?.cancel();
+      this.optimizing?.cancel();
+      this.el.compareGroup.hidden = true; // "before optimization" waits for this design's own panels
+    }
     if (reset) this.history.reset(design);
     else this.history.apply(() => design, { mergeKey });
     this.showDesign();

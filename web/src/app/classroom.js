@@ -84,7 +84,6 @@ export const STEPS = [
 
 const NEXT_KEYS = ['ArrowRight', 'PageDown', ' '];
 const BACK_KEYS = ['ArrowLeft', 'PageUp'];
-const POLL_MS = 150;
 // The 3D panes look from above the front: the three gores of the example meet at the top pole there.
 const VIEW = new Vector3(0.45, 0.85, 1).normalize();
 
@@ -136,6 +135,10 @@ export class Classroom {
     this.saved = null;
     this.naive = null; // { optimized, distance }: the first try's distance, for the panels it was measured on
     this.enteredFullscreen = false;
+    this.waiting = new Set(); // the checks of until() still waiting
+    // They look again whenever the app changes (edits, panels started, made, inflated) or the seams are cut.
+    app.onChange(() => this.wake());
+    app.seams.onChange(() => this.wake());
     this.build();
     // The seam editor redraws seams and segments as its work arrives; the early steps hide them again.
     app.seams.onChange(() => this.active && this.hideTargetLayers());
@@ -251,6 +254,7 @@ export class Classroom {
       design = parseDesign(await response.json()).design;
     } catch {
       this.failed = 'The example could not be loaded: check the connection and try again.';
+      this.wake();
       this.show();
       return;
     }
@@ -258,6 +262,7 @@ export class Classroom {
     this.example = design;
     await app.loadExample(design.target.example, design);
     if (!this.isExampleShown()) this.failed = 'The example could not be loaded: check the connection and try again.';
+    this.wake();
     this.show();
   }
 
@@ -265,14 +270,23 @@ export class Classroom {
     return this.app.design.target.example === this.example?.target.example && this.app.design.seams.length === this.example.seams.length;
   }
 
-  // Resolves true once ready() is, false when the step was superseded or the example failed. The app has
-  // no events for its results, so this looks again every POLL_MS.
-  async until(ready, ticket) {
-    for (;;) {
-      if (ticket !== this.ticket || !this.active || this.failed) return false;
-      if (ready()) return true;
-      await new Promise((resolve) => setTimeout(resolve, POLL_MS));
-    }
+  // Resolves true once ready() is, false when the step was superseded or the example failed. Looks again
+  // when the app or the walk changes (wake), never on a timer.
+  until(ready, ticket) {
+    return new Promise((resolve) => {
+      const check = () => {
+        const superseded = ticket !== this.ticket || !this.active || Boolean(this.failed);
+        if (!superseded && !ready()) return;
+        this.waiting.delete(check);
+        resolve(!superseded);
+      };
+      this.waiting.add(check);
+      check();
+    });
+  }
+
+  wake() {
+    for (const check of [...this.waiting]) check();
   }
 
   // The example's panels: made, optimized and inflated by the app (it does this by itself once the seams
@@ -302,6 +316,7 @@ export class Classroom {
   // Shows the current step: its text at once, its panes as their content is there.
   async show() {
     const ticket = ++this.ticket;
+    this.wake(); // the previous step's waits end
     const step = this.step;
     const n = this.index + 1;
     document.body.dataset.classroomStep = step.id;
@@ -547,6 +562,7 @@ export class Classroom {
     if (!this.active) return;
     this.active = false;
     this.ticket += 1;
+    this.wake();
     this.element.hidden = true;
     delete document.body.dataset.classroom;
     delete document.body.dataset.classroomStep;

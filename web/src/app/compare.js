@@ -70,10 +70,10 @@ export class LayoutCompare {
     // stay editable beside it.
     const pane = document.getElementById('pane-inflated')?.getBoundingClientRect();
     if (pane) {
-      // Its bottom stays in the window (its body scrolls).
+      // Its bottom stays in the inflated pane, off the pattern pane's figures below (its body scrolls).
       const top = Math.round(pane.top + 34);
       this.dialog.style.top = `${top}px`;
-      this.dialog.style.maxHeight = `max(12rem, calc(100vh - ${top + 14}px))`;
+      this.dialog.style.maxHeight = `max(12rem, ${Math.round(pane.bottom - top - 6)}px)`;
     }
     if (!this.dialog.open) this.dialog.show();
     this.shownKey = null;

@@ -1,12 +1,15 @@
 // The gallery: ready designs and patterns, each with a thumbnail (web/public/gallery/<id>.png, made by
-// scripts/make-gallery.mjs) and one line on what it teaches. Opening an item computes its result live:
-// a design is segmented, its panels optimized and inflated; a pattern is inflated.
+// scripts/make-gallery.mjs) and one line on what it teaches. A design opens with its stored result (its
+// optimized panels and their inflated shape, <id>.result.json, made by the same script with the app's own
+// pipeline) shown at once, while it is segmented and its panels optimized live; a pattern is inflated.
 import { parseDesign } from './design.js';
+import { parseStoredResult } from './stored-result.js';
 import './gallery.css';
 import { dialogHeader } from '../views/dialog-header.js';
 
-// open: { design: file } a billow-design in web/public/gallery; { pattern: id } a solver example
-// pattern (PATTERN_EXAMPLES in app.js); { patternFile: file } a billow-pattern in web/public/gallery.
+// open: { design: file } a billow-design in web/public/gallery (its stored result beside it, <id>.result.json);
+// { pattern: id } a solver example pattern (PATTERN_EXAMPLES in app.js); { patternFile: file } a billow-pattern
+// in web/public/gallery.
 export const GALLERY_ITEMS = [
   {
     id: 'mylar', title: 'Mylar balloon', thumbnail: 'mylar.png', open: { pattern: 'mylar' },
@@ -52,7 +55,7 @@ export class Gallery {
     });
     const intro = document.createElement('p');
     intro.className = 'gallery-intro';
-    intro.textContent = 'Ready designs: each opens with its seams and panels, and its result is computed as it opens.';
+    intro.textContent = 'Ready designs and patterns: a design opens with its seams and its optimized panels already inflated, then refines them live; a pattern is inflated as it opens.';
     this.grid = document.createElement('div');
     this.grid.className = 'gallery-grid';
     for (const item of GALLERY_ITEMS) this.grid.append(this.card(item));
@@ -70,7 +73,8 @@ export class Gallery {
     card.type = 'button';
     card.className = 'gallery-card';
     card.dataset.item = item.id;
-    card.title = `Open "${item.title}": it replaces the current design (save that first to keep it); its result is computed as it opens`;
+    card.title = `Open "${item.title}": it replaces the current design (save that first to keep it); ${item.open.design
+      ? 'its stored result shows at once and is refined live' : 'it is inflated as it opens'}`;
     const img = document.createElement('img');
     img.src = new URL(`gallery/${item.thumbnail}`, this.app.baseUrl).href;
     img.alt = item.title;
@@ -95,28 +99,43 @@ export class Gallery {
     if (!this.dialog.open) this.dialog.showModal();
   }
 
-  // Opens a gallery item by id; resolves when the app has taken it (its result is then computed live).
+  // Opens a gallery item by id; resolves when the app has taken it (a design's stored result is then shown
+  // and its live optimization under way).
   async open(id) {
     const item = findGalleryItem(id);
     if (!item) return this.app.messages.show('error', `There is no gallery item called "${id}".`);
     if (item.open.pattern) return this.app.patterns.openExample(item.open.pattern);
     const file = item.open.design ?? item.open.patternFile;
+    // A design's stored result is fetched with it; without it (offline, stale) the result is made live.
+    const storedText = item.open.design ? this.fetchText(resultFileOf(file)).catch(() => null) : null;
     let text;
     try {
-      const response = await fetch(new URL(`gallery/${file}`, this.app.baseUrl));
-      if (!response.ok) throw new Error(`HTTP ${response.status}`);
-      text = await response.text();
+      text = await this.fetchText(file);
     } catch {
       return this.app.messages.show('error', `"${item.title}" could not be loaded from the gallery: check the connection and try again.`);
     }
     if (item.open.patternFile) return this.app.patterns.open(item.title, text);
+    let design;
     try {
-      const { design, warnings } = parseDesign(JSON.parse(text));
-      for (const w of warnings) this.app.messages.show('warning', w);
+      const parsed = parseDesign(JSON.parse(text));
+      for (const w of parsed.warnings) this.app.messages.show('warning', w);
+      design = parsed.design;
       if (!design.target.example) throw new Error('its target is not a built-in example.');
-      return this.app.loadExample(design.target.example, design);
     } catch (error) {
       return this.app.messages.show('error', `"${item.title}" cannot be opened: ${error.message}`);
     }
+    const stored = parseStoredResult(await storedText);
+    return this.app.loadExample(design.target.example, design, { stored });
   }
+
+  async fetchText(file) {
+    const response = await fetch(new URL(`gallery/${file}`, this.app.baseUrl));
+    if (!response.ok) throw new Error(`HTTP ${response.status}`);
+    return response.text();
+  }
+}
+
+// The stored result beside a gallery design: sphere3.billow.json -> sphere3.result.json.
+export function resultFileOf(designFile) {
+  return designFile.replace(/\.billow\.json$/, '.result.json');
 }

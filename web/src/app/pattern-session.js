@@ -60,7 +60,8 @@ export class PatternSession {
     return this.open(`${name} pattern`, patternText);
   }
 
-  async open(fileName, text) {
+  // status: what reports the inflation's progress (a stored result's says so instead; see App.showStoredResult).
+  async open(fileName, text, { status = this.status } = {}) {
     let display;
     try {
       display = patternForDisplay(text, fileName);
@@ -84,7 +85,7 @@ export class PatternSession {
         } else if (p.positions && shown) {
           this.panes.inflated.updatePositions(p.positions);
         }
-        this.status(p.iteration !== undefined ? `Inflating ${fileName}: step ${p.iteration}…` : `Inflating ${fileName}: ${p.stage}…`);
+        status(p.iteration !== undefined ? `Inflating ${fileName}: step ${p.iteration}…` : `Inflating ${fileName}: ${p.stage}…`);
       },
     });
     this.running = call;
@@ -97,13 +98,13 @@ export class PatternSession {
       this.lastPattern = display;
       const seconds = ((performance.now() - started) / 1000).toFixed(1);
       // Optimized panels arrive in balance already: no steps to report then.
-      this.status(result.iterations ? `Inflated ${fileName} in ${seconds} s (${result.iterations} steps)` : `Inflated ${fileName}: in balance under pressure`);
+      status(result.iterations ? `Inflated ${fileName} in ${seconds} s (${result.iterations} steps)` : `Inflated ${fileName}: in balance under pressure`);
       this.renderStats(result);
       return result;
     } catch (error) {
       if (error.code === ErrorCode.cancelled) return null;
       this.messages.show('error', `The pattern "${fileName}" could not be inflated: ${error.message}`);
-      this.status(this.last ? 'The last good result is shown.' : '');
+      status(this.last ? 'The last good result is shown.' : '');
       if (this.last) this.panes.inflated.setResult(this.last, { frame: false });
       return null;
     } finally {
