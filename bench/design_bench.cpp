@@ -3,7 +3,11 @@
 // iterations, the time to preview quality (the first iterate whose inflated shape is within 5 % of the
 // model size of the final one, DESIGN.md) and to the end, the final distance to the target, the largest
 // seam mismatch and the peak RSS.
-//   billow_design_bench [--json] [--designs sphere3,teddy] [--max-seconds S] [--manifest FILE]
+//   billow_design_bench [--json] [--designs sphere3,teddy] [--max-seconds S] [--manifest FILE] [--triangles N]
+//                       [--trace] [--set NAME=VALUE ...]
+// --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
+// --set changes an optimizer option (interiorFollowsBoundary, outlineSmoothing, quality, laplace, smooth, seam,
+// maxIterations, stallIterations, tolerance: the equilibrium's) to compare variants.
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -12,6 +16,7 @@
 #include <filesystem>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -42,13 +47,43 @@ std::vector<std::string> split(const std::string& s) {
   return out;
 }
 
-json run(const json& entry, const std::filesystem::path& base, double maxSeconds) {
+struct BenchOptions {
+  double maxSeconds = 600;
+  int triangles = 0;  // > 0: overrides the manifest's
+  bool trace = false;
+  std::vector<std::pair<std::string, double>> set;
+};
+
+void applySetting(OptimizeOptions& o, const std::string& name, double v) {
+  if (name == "interiorFollowsBoundary")
+    o.interiorFollowsBoundary = v != 0;
+  else if (name == "outlineSmoothing")
+    o.outlineSmoothing = v;
+  else if (name == "quality")
+    o.weights.quality = v;
+  else if (name == "laplace")
+    o.weights.laplace = v;
+  else if (name == "smooth")
+    o.weights.smooth = v;
+  else if (name == "seam")
+    o.weights.seam = v;
+  else if (name == "maxIterations")
+    o.maxIterations = int(v);
+  else if (name == "stallIterations")
+    o.stallIterations = int(v);
+  else if (name == "tolerance")
+    o.inflate.tolerance = v;
+  else
+    throw std::runtime_error("unknown option " + name);
+}
+
+json run(const json& entry, const std::filesystem::path& base, const BenchOptions& bo) {
   const std::filesystem::path path = base / entry.at("file").get<std::string>();
   const auto t0 = Clock::now();
   auto scene = makeDesignScene(readDesignJson(readFileBytes(path.string())), path.string(),
                                {(base / entry.value("examples", "../../web/public/examples")).string()});
   PatternBuildOptions o;
-  o.triangles = entry.at("triangles").get<int>();
+  o.triangles = bo.triangles > 0 ? bo.triangles : entry.at("triangles").get<int>();
   o.material = scene->design.material;
   o.pressure = scene->design.pressure;
   useDesignConnections(scene->design, o);
@@ -63,10 +98,30 @@ json run(const json& entry, const std::filesystem::path& base, double maxSeconds
   for (const auto& s : scene->design.seams) weights.push_back(s.weight);
   OptimizeOptions oo;
   oo.keepShapes = true;
+  for (const auto& [name, value] : bo.set) applySetting(oo, name, value);
   const auto t1 = Clock::now();
   PatternOptimizer opt(scene->target, built, weights, oo);
-  while (opt.step(1) == OptimizeState::Running)
-    if (secondsSince(t1) > maxSeconds) break;
+  size_t traced = 0;
+  const auto trace = [&] {
+    for (; bo.trace && traced < opt.history().size(); ++traced) {
+      const OptimizeRecord& h = opt.history()[traced];
+      std::fprintf(stderr,
+                   "%s it %3d%s E %.6e (t %.2e s %.2e l %.2e b %.2e L %.2e q %.2e) rms %.3f%% max %.3f%% "
+                   "mismatch %.1e grad %.2e alpha %.3g newton %d %.0f ms\n",
+                   entry.at("name").get<std::string>().c_str(), h.iteration, h.projected ? "P" : " ", h.objective,
+                   h.terms.target, h.terms.seam, h.terms.length, h.terms.smooth, h.terms.laplace, h.terms.quality,
+                   100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch, h.gradient, h.stepLength,
+                   h.equilibriumIterations, h.ms);
+    }
+  };
+  while (opt.step(1) == OptimizeState::Running) {
+    trace();
+    if (secondsSince(t1) > bo.maxSeconds) break;
+  }
+  trace();
+  if (bo.trace)
+    std::fprintf(stderr, "%s: %s %s\n", entry.at("name").get<std::string>().c_str(), toString(opt.state()),
+                 opt.message().c_str());
   const double seconds = secondsSince(t1);
   const auto& history = opt.history();
   const double D = opt.objective().modelSize();
@@ -77,6 +132,24 @@ json run(const json& entry, const std::filesystem::path& base, double maxSeconds
       previewIteration = history[k].iteration, previewSeconds = history[k].ms / 1000;
   int newton = 0;
   for (const auto& h : history) newton += h.equilibriumIterations;
+  // The RMS distance weighted by the inflated surface's lumped area: unlike the per-vertex RMS it does not
+  // improve when vertices crowd where the shape is close to the target.
+  double areaRms = 0, area = 0;
+  {
+    const SewnMesh& m = opt.mesh();
+    const Vertices& x = opt.inflated();
+    for (int t = 0; t < m.numTriangles(); ++t) {
+      if (!m.outer[t]) continue;
+      const Eigen::Vector3d a = x.row(m.triangles(t, 0)), b = x.row(m.triangles(t, 1)), c = x.row(m.triangles(t, 2));
+      const double at = 0.5 * (b - a).cross(c - a).norm();
+      for (int k = 0; k < 3; ++k) {
+        const double d = opt.objective().imls().closestDistance(x.row(m.triangles(t, k)).transpose()) / D;
+        areaRms += at / 3 * d * d;
+      }
+      area += at;
+    }
+    areaRms = area > 0 ? std::sqrt(areaRms / area) : 0;
+  }
   row.update({{"elements", built.figures.triangles},
               {"panels", built.figures.panels},
               {"internalPanels", built.figures.internalPanels},
@@ -101,6 +174,7 @@ json run(const json& entry, const std::filesystem::path& base, double maxSeconds
               {"flattenedDistanceRms", history.front().distanceRms},
               {"distanceRms", history.back().distanceRms},
               {"distanceMax", history.back().distanceMax},
+              {"distanceRmsArea", areaRms},
               {"seamMismatch", history.back().seamMismatch},
               {"flattenedSeamMismatch", built.figures.maxSeamLengthMismatch},
               {"peakRssMb", peakRssMb()}});
@@ -111,7 +185,7 @@ json run(const json& entry, const std::filesystem::path& base, double maxSeconds
 
 int main(int argc, char** argv) {
   bool asJson = false;
-  double maxSeconds = 600;
+  BenchOptions bo;
   std::vector<std::string> only;
   std::string manifestPath = std::string(BILLOW_SOURCE_DIR) + "/bench/designs/manifest.json";
   for (int i = 1; i < argc; ++i) {
@@ -122,12 +196,20 @@ int main(int argc, char** argv) {
     else if (a == "--designs" && hasValue)
       only = split(argv[++i]);
     else if (a == "--max-seconds" && hasValue)
-      maxSeconds = std::stod(argv[++i]);
-    else if (a == "--manifest" && hasValue)
+      bo.maxSeconds = std::stod(argv[++i]);
+    else if (a == "--triangles" && hasValue)
+      bo.triangles = std::stoi(argv[++i]);
+    else if (a == "--trace")
+      bo.trace = true;
+    else if (a == "--set" && hasValue && std::string(argv[i + 1]).find('=') != std::string::npos) {
+      const std::string kv = argv[++i];
+      bo.set.emplace_back(kv.substr(0, kv.find('=')), std::stod(kv.substr(kv.find('=') + 1)));
+    } else if (a == "--manifest" && hasValue)
       manifestPath = argv[++i];
     else {
       std::fprintf(stderr,
-                   "usage: billow_design_bench [--json] [--designs NAME,..] [--max-seconds S] [--manifest FILE]\n");
+                   "usage: billow_design_bench [--json] [--designs NAME,..] [--max-seconds S] [--manifest FILE] "
+                   "[--triangles N] [--trace] [--set NAME=VALUE]\n");
       return 2;
     }
   }
@@ -135,14 +217,15 @@ int main(int argc, char** argv) {
   const std::filesystem::path base = std::filesystem::path(manifestPath).parent_path();
   json rows = json::array();
   if (!asJson)
-    std::printf("%-8s %-9s %6s %7s %5s %6s %9s %9s %9s %8s %8s %8s %7s %s\n", "design", "class", "elems", "panels",
-                "iters", "newton", "pattern s", "preview s", "full s", "rms %", "max %", "seam", "RSS MB", "state");
+    std::printf("%-8s %-9s %6s %7s %5s %6s %9s %9s %9s %8s %8s %8s %8s %7s %s\n", "design", "class", "elems", "panels",
+                "iters", "newton", "pattern s", "preview s", "full s", "rms %", "rmsA %", "max %", "seam", "RSS MB",
+                "state");
   for (const json& entry : manifest.at("designs")) {
     const std::string name = entry.at("name");
     if (!only.empty() && std::find(only.begin(), only.end(), name) == only.end()) continue;
     json row;
     try {
-      row = run(entry, base, maxSeconds);
+      row = run(entry, base, bo);
     } catch (const std::exception& e) {
       row = {{"design", name}, {"error", e.what()}};
     }
@@ -154,13 +237,13 @@ int main(int argc, char** argv) {
     }
     const std::string panels =
         std::to_string(row["panels"].get<int>()) + " (" + std::to_string(row["internalPanels"].get<int>()) + ")";
-    std::printf("%-8s %-9s %6d %7s %5d %6d %9.2f %9.2f %9.2f %8.3f %8.3f %8.1e %7.0f %s\n", name.c_str(),
+    std::printf("%-8s %-9s %6d %7s %5d %6d %9.2f %9.2f %9.2f %8.3f %8.3f %8.3f %8.1e %7.0f %s\n", name.c_str(),
                 row["class"].get<std::string>().c_str(), row["elements"].get<int>(), panels.c_str(),
                 row["iterations"].get<int>(), row["newtonIterations"].get<int>(), row["patternSeconds"].get<double>(),
                 row["previewSeconds"].get<double>(), row["seconds"].get<double>(),
-                100 * row["distanceRms"].get<double>(), 100 * row["distanceMax"].get<double>(),
-                row["seamMismatch"].get<double>(), row["peakRssMb"].get<double>(),
-                row["state"].get<std::string>().c_str());
+                100 * row["distanceRms"].get<double>(), 100 * row["distanceRmsArea"].get<double>(),
+                100 * row["distanceMax"].get<double>(), row["seamMismatch"].get<double>(),
+                row["peakRssMb"].get<double>(), row["state"].get<std::string>().c_str());
     std::fflush(stdout);
   }
   if (asJson) std::printf("%s\n", json({{"runtime", "native"}, {"rows", rows}}).dump(2).c_str());

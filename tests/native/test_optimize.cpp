@@ -9,6 +9,7 @@
 #include <random>
 
 #include "io/mesh_file.hpp"
+#include "optimize/harmonic_interior.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/rest_derivatives.hpp"
 #include "pattern/design_scene.hpp"
@@ -60,7 +61,7 @@ TEST(Optimize, PatternObjectiveGradientMatchesFiniteDifferences) {
   const ImlsDistance imls(f.scene->target);
   const SewnMesh mesh = sewPattern(f.built.pattern);
   OptimizeWeights w;
-  w.smooth = 1, w.laplace = 1, w.length = 1;  // every term visible
+  w.smooth = 1, w.laplace = 1, w.length = 1, w.quality = 1;  // every term visible
   const PatternObjective obj(imls, f.built, mesh, f.weights, w);
   ASSERT_FALSE(obj.edgePairs().empty());
   Eigen::VectorXd X = packPattern(f.built.pattern), g;
@@ -70,6 +71,7 @@ TEST(Optimize, PatternObjectiveGradientMatchesFiniteDifferences) {
   EXPECT_GT(t.length, 0);
   EXPECT_GT(t.smooth, 0);
   EXPECT_GT(t.laplace, 0);
+  EXPECT_GT(t.quality, 0);
   for (unsigned s = 1; s <= 3; ++s) {
     const Eigen::VectorXd v = randomDirection(X, 10 + s);
     const double eps = 1e-6;
@@ -92,9 +94,11 @@ TEST(Optimize, ShapeObjectiveGradientMatchesFiniteDifferences) {
     for (int v = 0; v < f.built.panels[p].targetPosition.rows(); ++v)
       x.row(mesh.simVertex(int(p), v)) = f.built.panels[p].targetPosition.row(v);
   for (int v = 0; v < x.rows(); ++v) x.row(v) += 0.2 * h * Eigen::RowVector3d(u(rng), u(rng), u(rng));
-  Eigen::VectorXd g;
+  Eigen::VectorXd X = packPattern(f.built.pattern);
+  X += 0.1 * obj.meanEdgeLength() * randomDirection(X, 4);  // uneven rest areas
+  Eigen::VectorXd g, gX;
   ObjectiveTerms t;
-  obj.shapeEnergy(x, &g, &t);
+  obj.shapeEnergy(x, X, &g, &gX, &t);
   EXPECT_GT(t.target, 0);
   EXPECT_GT(t.seam, 0);
   for (int s = 0; s < 3; ++s) {
@@ -102,10 +106,71 @@ TEST(Optimize, ShapeObjectiveGradientMatchesFiniteDifferences) {
     for (int v = 0; v < x.rows(); ++v) dx.row(v) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
     const double eps = 1e-7 * h;
     Vertices xp = x + eps * dx, xm = x - eps * dx;
-    const double fd = (obj.shapeEnergy(xp, nullptr) - obj.shapeEnergy(xm, nullptr)) / (2 * eps);
+    const double fd = (obj.shapeEnergy(xp, X, nullptr) - obj.shapeEnergy(xm, X, nullptr)) / (2 * eps);
     const double an = g.dot(Eigen::Map<const Eigen::VectorXd>(dx.data(), dx.size()));
     EXPECT_NEAR(fd, an, 1e-5 * std::abs(an)) << "direction " << s;
   }
+  // E_target weighs by the current rest areas: its derivative in X at fixed x.
+  ASSERT_GT(gX.norm(), 0);
+  for (unsigned s = 1; s <= 3; ++s) {
+    const Eigen::VectorXd v = randomDirection(X, 20 + s);
+    const double eps = 1e-6 * obj.meanEdgeLength();
+    const double fd = (obj.shapeEnergy(x, X + eps * v, nullptr) - obj.shapeEnergy(x, X - eps * v, nullptr)) / (2 * eps);
+    EXPECT_NEAR(fd, gX.dot(v), 1e-5 * std::abs(gX.dot(v)) + 1e-14) << "direction " << s;
+  }
+}
+
+// Sliding pattern vertices within a panel (with their inflated positions) re-samples the surface but does not
+// change it: E_target, a quadrature of the surface integral of d^2, must hardly change. With weights fixed at
+// the flattened pattern it did (the optimizer collapsed rest triangles to crowd vertices where d is small).
+TEST(Optimize, TargetDistanceDoesNotRewardSlidingVertices) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 1000);
+  const ImlsDistance imls(f.scene->target);
+  const SewnMesh mesh = sewPattern(f.built.pattern);
+  const PatternObjective obj(imls, f.built, mesh, f.weights, {});
+  // The surface: each panel laid flat through the target's centre, x = phi(X), so sliding X within the panel
+  // moves x within the same plane (the same surface, resampled); d varies smoothly over it.
+  const Eigen::RowVector3d centre = f.scene->target.V.colwise().mean();
+  const Eigen::VectorXd X0 = packPattern(f.built.pattern);
+  std::vector<Eigen::Vector2d> panelCentre;
+  for (const Panel& panel : f.built.pattern.panels) panelCentre.push_back(panel.vertices.colwise().mean().transpose());
+  const auto place = [&](const Eigen::VectorXd& X) {
+    Vertices x = Vertices::Zero(mesh.numVertices, 3);
+    for (size_t p = 0; p < f.built.pattern.panels.size(); ++p)
+      for (int v = 0; v < f.built.pattern.panels[p].vertices.rows(); ++v) {
+        const Eigen::Vector2d q = X.segment<2>(2 * (mesh.panelVertexStart[p] + v)) - panelCentre[p];
+        x.row(mesh.simVertex(int(p), v)) = centre + Eigen::RowVector3d(q.x(), q.y(), 0);
+      }
+    return x;
+  };
+  const Vertices x = place(X0);
+  // Slide every third interior vertex a third of the way toward its neighbour closest to the target.
+  Eigen::VectorXd X = X0;
+  for (size_t p = 0; p < f.built.panels.size(); ++p) {
+    const Panel& panel = f.built.pattern.panels[p];
+    const auto dist = [&](int k) { return std::abs(imls.distance(x.row(mesh.simVertex(int(p), k)).transpose())); };
+    std::vector<int> best(panel.vertices.rows(), -1);
+    for (int t = 0; t < panel.triangles.rows(); ++t)
+      for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b) {
+          const int i = panel.triangles(t, a), j = panel.triangles(t, b);
+          if (i != j && (best[i] < 0 || dist(j) < dist(best[i]))) best[i] = j;
+        }
+    for (int v = f.built.panels[p].boundaryVertices; v < panel.vertices.rows(); v += 3) {
+      const int g = mesh.panelVertexStart[p] + v, b = mesh.panelVertexStart[p] + best[v];
+      X.segment<2>(2 * g) += (X0.segment<2>(2 * b) - X0.segment<2>(2 * g)) / 3;
+    }
+  }
+  ObjectiveTerms before, after, fixedWeights;
+  obj.shapeEnergy(x, X0, nullptr, nullptr, &before);
+  obj.shapeEnergy(place(X), X, nullptr, nullptr, &after);
+  obj.shapeEnergy(place(X), X0, nullptr, nullptr, &fixedWeights);  // the weights of the unslid pattern
+  std::printf(
+      "[figures] sliding vertices toward the target: E_target %.4e -> %.4e (%.2f %%), with fixed weights %.4e "
+      "(%.2f %%)\n",
+      before.target, after.target, 100 * (after.target / before.target - 1), fixedWeights.target,
+      100 * (fixedWeights.target / before.target - 1));
+  EXPECT_LT(std::abs(after.target / before.target - 1), 0.2 * std::abs(fixedWeights.target / before.target - 1));
 }
 
 // dE/dX by the adjoint against central differences of E(x(X), X), x re-solved (and re-aligned).
@@ -130,6 +195,84 @@ TEST(Optimize, ReducedGradientMatchesFiniteDifferences) {
   }
 }
 
+// The same at an iterate of the gallery's three-gore sphere at 3k elements, where the optimizer used to stop
+// (bench/README.md), along the steepest-descent direction it would search. The rigid alignment must be
+// converged for this: with 30 Gauss-Newton steps (the old limit) the nearly rotation-invariant sphere left
+// it off by 1-2 %.
+TEST(Optimize, ReducedGradientMatchesFiniteDifferencesAt3k) {
+  const Fixture f = makeFixture("../../web/public/gallery/sphere3.billow.json", 3000);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.inflate.tolerance = 1e-10;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  opt.step(4);
+  ASSERT_EQ(opt.state(), OptimizeState::Running);
+  const Eigen::VectorXd X = packPattern(opt.pattern());
+  double E = 0;
+  Eigen::VectorXd g;
+  ASSERT_TRUE(opt.evaluate(X, &E, &g));
+  Eigen::VectorXd v = -g;
+  double longest = 0;
+  for (int k = 0; k < v.size() / 2; ++k) longest = std::max(longest, v.segment<2>(2 * k).norm());
+  v /= longest;  // the largest vertex move is 1
+  const double eps = 1e-5 * opt.objective().meanEdgeLength();
+  double Ep = 0, Em = 0;
+  ASSERT_TRUE(opt.evaluate(X + eps * v, &Ep, nullptr));
+  ASSERT_TRUE(opt.evaluate(X - eps * v, &Em, nullptr));
+  const double fd = (Ep - Em) / (2 * eps), an = g.dot(v);
+  std::printf("[figures] sphere3 at %d elements, iteration %d: adjoint %.9e, finite differences %.9e\n",
+              f.built.figures.triangles, opt.iterations(), an, fd);
+  EXPECT_NEAR(fd, an, 1e-3 * std::abs(an));
+}
+
+// harmonic_interior.hpp: an affine motion of a panel's boundary moves its interior by the same affine map
+// (cotangent weights are exact for linear functions), and the reduced gradient is the chain rule.
+TEST(Optimize, HarmonicInteriorFollowsAffineMotionsAndChainsGradients) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 400);
+  const SewnMesh mesh = sewPattern(f.built.pattern);
+  std::vector<int> boundary;
+  for (const BuiltPanel& bp : f.built.panels) boundary.push_back(bp.boundaryVertices);
+  const Eigen::VectorXd X0 = packPattern(f.built.pattern);
+  const HarmonicInterior interior(f.built.pattern, mesh.panelVertexStart, boundary, X0);
+  ASSERT_TRUE(interior.ok());
+  Eigen::Matrix2d A;
+  A << 1.03, 0.2, -0.1, 0.95;
+  const Eigen::Vector2d t(0.3, -0.1);
+  Eigen::VectorXd X = X0;
+  int interiorRows = 0;
+  for (int r = 0; r < X.size() / 2; ++r) {
+    if (interior.interior(r)) {
+      X.segment<2>(2 * r) = Eigen::Vector2d(5, 5);  // overwritten by extend
+      ++interiorRows;
+    } else {
+      X.segment<2>(2 * r) = A * X0.segment<2>(2 * r) + t;
+    }
+  }
+  ASSERT_GT(interiorRows, 0);
+  interior.extend(X);
+  double error = 0;
+  for (int r = 0; r < X.size() / 2; ++r)
+    error = std::max(error, (X.segment<2>(2 * r) - (A * X0.segment<2>(2 * r) + t)).norm());
+  EXPECT_LT(error, 1e-12);
+  // F(X) = sum_r c_r . X_r on the extended pattern: its gradient in the boundary rows by reduce() against
+  // finite differences along a boundary direction.
+  const Eigen::VectorXd c = randomDirection(X0, 7);
+  const Eigen::VectorXd v = [&] {
+    Eigen::VectorXd w = randomDirection(X0, 8);
+    for (int r = 0; r < w.size() / 2; ++r)
+      if (interior.interior(r)) w.segment<2>(2 * r).setZero();
+    return w;
+  }();
+  Eigen::VectorXd g = c;
+  interior.reduce(g);
+  for (int r = 0; r < g.size() / 2; ++r)
+    if (interior.interior(r)) EXPECT_EQ(g.segment<2>(2 * r).norm(), 0);
+  Eigen::VectorXd Xp = X0 + 1e-3 * v, Xm = X0 - 1e-3 * v;
+  interior.extend(Xp), interior.extend(Xm);
+  const double fd = (c.dot(Xp) - c.dot(Xm)) / 2e-3;
+  EXPECT_NEAR(fd, g.dot(v), 1e-9 * std::abs(fd) + 1e-12);
+}
+
 namespace {
 
 struct OptimizeRun {
@@ -137,6 +280,7 @@ struct OptimizeRun {
   OptimizeState state = OptimizeState::Running;
   double ms = 0;
   Vertices x;
+  Pattern pattern;
   double seamShift = 0;       // max distance of the sewn seam vertices from where they were drawn [m]
   int previewIteration = -1;  // first record whose shape is within 5 % of the diagonal of the final one
   double previewMs = 0;
@@ -148,7 +292,7 @@ OptimizeRun optimize(const Fixture& f, const OptimizeOptions& o, int maxIteratio
   while (opt.step(5, 500) == OptimizeState::Running && opt.iterations() < maxIterations) {
   }
   OptimizeRun r;
-  r.history = opt.history(), r.state = opt.state(), r.x = opt.inflated();
+  r.history = opt.history(), r.state = opt.state(), r.x = opt.inflated(), r.pattern = opt.pattern();
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const double D = opt.objective().modelSize();
   for (size_t k = 0; k < opt.shapes().size() && r.previewIteration < 0; ++k)
@@ -194,6 +338,37 @@ TEST(Optimize, ThreeGoreSphereGetsMuchCloser) {
     }
 }
 
+// Issue 5: on the gallery's three-gore sphere the optimizer used to stop after a few dozen iterations at
+// 1.5-3.4 % RMS: rest triangles collapsed (the fixed-weight E_target paid vertices to crowd where the shape was
+// close) until the fold check refused every step. Now it goes on, keeps its triangles, and gets well below 1 %.
+TEST(Optimize, GallerySphereGoesOnBelowOnePercent) {
+  const Fixture f = makeFixture("../../web/public/gallery/sphere3.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.maxIterations = 120;
+  const OptimizeRun r = optimize(f, o, 120);
+  const OptimizeRecord &first = r.history.front(), &last = r.history.back();
+  double quality = 1;  // smallest 2 area / longest edge^2 over the rest triangles (0.87 equilateral)
+  for (const Panel& panel : r.pattern.panels)
+    for (int t = 0; t < panel.triangles.rows(); ++t) {
+      const Eigen::Vector2d a = panel.vertices.row(panel.triangles(t, 0)).transpose(),
+                            b = panel.vertices.row(panel.triangles(t, 1)).transpose(),
+                            c = panel.vertices.row(panel.triangles(t, 2)).transpose();
+      const double cross = (b - a).x() * (c - a).y() - (b - a).y() * (c - a).x();
+      quality =
+          std::min(quality, cross / std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
+    }
+  std::printf(
+      "[figures] gallery sphere3 (%d elements): rms %.3f%% -> %.3f%%, max %.3f%% -> %.3f%%, %d iterations, %s, "
+      "%.0f ms, smallest triangle quality %.3f\n",
+      f.built.figures.triangles, 100 * first.distanceRms, 100 * last.distanceRms, 100 * first.distanceMax,
+      100 * last.distanceMax, last.iteration, toString(r.state), r.ms, quality);
+  EXPECT_GE(last.iteration, 100) << "stopped early";
+  EXPECT_LT(last.distanceRms, 0.008);
+  EXPECT_GT(quality, 1e-3);
+  EXPECT_LT(last.seamMismatch, 1e-4);
+}
+
 // Eq. 10: the heavier the seam, the closer it stays to where it was drawn.
 TEST(Optimize, HeavySeamStaysLightSeamSlides) {
   Fixture f = makeFixture("sphere-gores.billow.json", 400);
@@ -217,7 +392,15 @@ TEST(Optimize, HeavySeamStaysLightSeamSlides) {
 TEST(Optimize, RecoversFromAPoorFlattening) {
   Fixture f = makeFixture("../../bench/designs/teddy.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
-  ASSERT_GT(f.built.figures.maxSeamLengthMismatch, 0.2) << "the flattening is no longer poor: pick a harder case";
+  if (f.built.figures.maxSeamLengthMismatch < 0.2) {
+    // The flattening got better: make it poor again, every other panel 1.5 times too large (its seam sides
+    // then differ from its neighbours' by up to 50 %).
+    for (size_t p = 0; p < f.built.pattern.panels.size(); p += 2) {
+      PanelVertices& V = f.built.pattern.panels[p].vertices;
+      const Eigen::RowVector2d c = V.colwise().mean();
+      V = ((V.rowwise() - c) * 1.5).rowwise() + c;
+    }
+  }
   OptimizeOptions o;
   o.maxIterations = 6;
   const OptimizeRun r = optimize(f, o, 6);

@@ -4,6 +4,8 @@
 #include <cmath>
 #include <set>
 
+#include "optimize/rest_derivatives.hpp"
+
 namespace billow {
 
 PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern& built, const SewnMesh& mesh,
@@ -16,13 +18,46 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
 
   // E_target weights: lumped rest area of the outer surface, relative to the mean. Vertices of internal panels
   // only (not on any outer triangle) get none: they are not meant to lie on the target.
-  targetWeight_ = Eigen::VectorXd::Zero(n_);
-  for (int t = 0; t < mesh.numTriangles(); ++t)
-    if (mesh.outer[t])
-      for (int c = 0; c < 3; ++c) targetWeight_[mesh.triangles(t, c)] += mesh.rest[t].area / 3;
-  const long used = (targetWeight_.array() > 0).count();
-  const double mean = used ? targetWeight_.sum() / used : 1;
-  targetWeight_ *= w_.target * norm_ / mean;
+  const auto gid = [&](int p, int v) { return mesh.panelVertexStart[p] + v; };
+  int first = 0;
+  for (size_t p = 0; p < built.pattern.panels.size(); ++p) {
+    const Triangles& F = built.pattern.panels[p].triangles;
+    for (int k = 0; k < F.rows(); ++k)
+      if (mesh.outer[first + k]) {
+        OuterTriangle t;
+        for (int c = 0; c < 3; ++c) t.vertex[c] = mesh.triangles(first + k, c), t.pattern[c] = gid(int(p), F(k, c));
+        outer_.push_back(t);
+      }
+    first += static_cast<int>(F.rows());
+  }
+  std::vector<char> onOuter(n_, 0);
+  for (const OuterTriangle& t : outer_)
+    for (int c = 0; c < 3; ++c) onOuter[t.vertex[c]] = 1;
+  const long used = std::count(onOuter.begin(), onOuter.end(), 1);
+  targetScale_ = w_.target * norm_ * double(used);
+  targetWeight_ = targetWeights(packPattern(built.pattern));
+
+  // E_quality: every rest triangle against its flattened shape.
+  first = 0;
+  double restTotal = 0;
+  for (size_t p = 0; p < built.pattern.panels.size(); ++p) {
+    const Panel& panel = built.pattern.panels[p];
+    for (int k = 0; k < panel.triangles.rows(); ++k) {
+      RestTriangle t;
+      for (int c = 0; c < 3; ++c) t.pattern[c] = gid(int(p), panel.triangles(k, c));
+      const Eigen::Vector2d a = panel.vertices.row(panel.triangles(k, 0)).transpose(),
+                            b = panel.vertices.row(panel.triangles(k, 1)).transpose(),
+                            c = panel.vertices.row(panel.triangles(k, 2)).transpose();
+      Eigen::Matrix2d Dm;
+      Dm << b - a, c - a;
+      if (!(Dm.determinant() > 0)) continue;
+      t.DmInv = Dm.inverse();
+      t.weight = 0.5 * Dm.determinant();
+      restTotal += t.weight;
+      rest_.push_back(t);
+    }
+  }
+  for (RestTriangle& t : rest_) t.weight *= w_.quality * edge_ * edge_ * norm_ * double(rest_.size()) / restTotal;
 
   // E_seam: one entry per simulation vertex on a seam, s_j averaged over the panels that meet there.
   std::vector<Eigen::Vector3d> sum(n_, Eigen::Vector3d::Zero());
@@ -44,7 +79,6 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
 
   // E_length: edge k of a piece is sewn to edge N-1-k of its neighbour piece (rows run opposite). Pairs are
   // mutual (counted once) or one-way: an internal panel's piece names the outer piece it is sewn to.
-  const auto gid = [&](int p, int v) { return mesh.panelVertexStart[p] + v; };
   for (size_t p = 0; p < built.panels.size(); ++p) {
     const BuiltPanel& bp = built.panels[p];
     for (size_t i = 0; i < bp.pieces.size(); ++i) {
@@ -85,22 +119,58 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
   ringStart_.push_back(int(ring_.size()));
 }
 
-double PatternObjective::shapeEnergy(const Vertices& x, Eigen::VectorXd* grad, ObjectiveTerms* terms) const {
-  if (grad) grad->setZero(3 * n_);
+double PatternObjective::restArea(const OuterTriangle& t, const Eigen::VectorXd& X) const {
+  const Eigen::Vector2d a = X.segment<2>(2 * t.pattern[0]), b = X.segment<2>(2 * t.pattern[1]),
+                        c = X.segment<2>(2 * t.pattern[2]);
+  return 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
+}
+
+Eigen::VectorXd PatternObjective::targetWeights(const Eigen::VectorXd& X) const {
+  Eigen::VectorXd w = Eigen::VectorXd::Zero(n_);
+  double total = 0;
+  for (const OuterTriangle& t : outer_) {
+    const double a = restArea(t, X);
+    total += a;
+    for (int c = 0; c < 3; ++c) w[t.vertex[c]] += a / 3;
+  }
+  return total > 0 ? Eigen::VectorXd(w * (targetScale_ / total)) : w;
+}
+
+double PatternObjective::shapeEnergy(const Vertices& x, const Eigen::VectorXd& X, Eigen::VectorXd* gradx,
+                                     Eigen::VectorXd* gradX, ObjectiveTerms* terms) const {
+  if (gradx) gradx->setZero(3 * n_);
+  if (gradX) gradX->setZero(X.size());
   double Et = 0, Es = 0;
   Eigen::Vector3d g;
+  const Eigen::VectorXd weight = targetWeights(X);
+  Eigen::VectorXd d2 = Eigen::VectorXd::Zero(n_);
   for (int i = 0; i < n_; ++i) {
-    const double w = targetWeight_[i];
-    if (w == 0) continue;
-    const double d = imls_.distance(x.row(i).transpose(), grad ? &g : nullptr);
-    Et += w * d * d;  // Eq. 9, squared
-    if (grad) grad->segment<3>(3 * i) += 2 * w * d * g;
+    if (weight[i] == 0) continue;
+    const double d = imls_.distance(x.row(i).transpose(), gradx ? &g : nullptr);
+    d2[i] = d * d;
+    Et += weight[i] * d * d;  // Eq. 9, squared
+    if (gradx) gradx->segment<3>(3 * i) += 2 * weight[i] * d * g;
+  }
+  if (gradX) {
+    // E_t = s sum_t a_t q_t / A, q_t the mean d^2 of its corners: dE_t/da_t = (s q_t - E_t) / A.
+    double total = 0;
+    for (const OuterTriangle& t : outer_) total += restArea(t, X);
+    for (const OuterTriangle& t : outer_) {
+      const double q = (d2[t.vertex[0]] + d2[t.vertex[1]] + d2[t.vertex[2]]) / 3;
+      const double dEda = (targetScale_ * q - Et) / total;
+      for (int c = 0; c < 3; ++c) {
+        // d a_t / d P_c = (P_{c+1} - P_{c+2}) rotated by -90 degrees, halved.
+        const Eigen::Vector2d p1 = X.segment<2>(2 * t.pattern[(c + 1) % 3]),
+                              p2 = X.segment<2>(2 * t.pattern[(c + 2) % 3]);
+        gradX->segment<2>(2 * t.pattern[c]) += dEda * 0.5 * Eigen::Vector2d(p1.y() - p2.y(), p2.x() - p1.x());
+      }
+    }
   }
   for (const SeamVertex& s : seams_) {
     const double w = seamWeight(s);
     const Eigen::Vector3d r = x.row(s.vertex).transpose() - s.target;
     Es += w * r.squaredNorm();  // Eq. 10
-    if (grad) grad->segment<3>(3 * s.vertex) += 2 * w * r;
+    if (gradx) gradx->segment<3>(3 * s.vertex) += 2 * w * r;
   }
   if (terms) terms->target = Et, terms->seam = Es;
   return Et + Es;
@@ -138,8 +208,28 @@ double PatternObjective::patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd
     grad->segment<2>(2 * interior_[i]) += 2 * wL * L;
     for (int k = b; k < e; ++k) grad->segment<2>(2 * ring_[k]) -= 2 * wL * L / (e - b);
   }
-  if (terms) terms->length = El, terms->smooth = Eb, terms->laplace = EL;
-  return El + Eb + EL;
+  double Eq = 0;
+  if (w_.quality > 0)
+    for (const RestTriangle& t : rest_) {
+      const Eigen::Vector2d p0 = P(t.pattern[0]);
+      Eigen::Matrix2d Ds;
+      Ds << P(t.pattern[1]) - p0, P(t.pattern[2]) - p0;
+      const Eigen::Matrix2d J = Ds * t.DmInv;
+      const double det = J.determinant(), norm2 = J.squaredNorm();
+      if (!(det > 0)) {
+        Eq = INFINITY;
+        continue;
+      }
+      Eq += t.weight * (norm2 / (2 * det) - 1);  // MIPS: (s1 / s2 + s2 / s1) / 2 - 1
+      if (!grad) continue;
+      Eigen::Matrix2d cof;
+      cof << J(1, 1), -J(1, 0), -J(0, 1), J(0, 0);
+      const Eigen::Matrix2d G = t.weight * (J / det - norm2 / (2 * det * det) * cof) * t.DmInv.transpose();
+      grad->segment<2>(2 * t.pattern[1]) += G.col(0), grad->segment<2>(2 * t.pattern[2]) += G.col(1);
+      grad->segment<2>(2 * t.pattern[0]) -= G.col(0) + G.col(1);
+    }
+  if (terms) terms->length = El, terms->smooth = Eb, terms->laplace = EL, terms->quality = Eq;
+  return El + Eb + EL + Eq;
 }
 
 double PatternObjective::maxEdgeMismatch(const Eigen::VectorXd& X) const {

@@ -3,12 +3,23 @@
 // Every term is normalized to the model: residuals in meters are divided by the target's bounding-box
 // diagonal D, and sums by the number n of simulation vertices, so a weight of 1 means "one meter of this
 // residual costs as much as one meter of distance to the target at an average vertex".
-//   E_target  = w_t sum_i (A_i / A_mean) d(x_i)^2 / (n D^2), d the IMLS distance (Eq. 9 squared), A_i the
-//               lumped rest area of outer vertex i;
+//   E_target  = w_t m sum_i (A_i(X) / A(X)) d(x_i)^2 / (n D^2), d the IMLS distance (Eq. 9 squared), A_i(X)
+//               the lumped rest area of outer vertex i in the current pattern X, A(X) their sum, m the number
+//               of outer vertices (so uniform areas give w_t sum_i d^2 / (n D^2));
 //   E_seam    = w_s sum_j sigma_j |x_j - s_j|^2 / (n D^2) over seam vertices (Eq. 10);
 //   E_length  = w_l sum_e (L_a - L_b)^2 / (n D^2) over pairs of stitched boundary edges (Eq. 11);
 //   E_smooth  = w_b sum_j |Q_l - 2 Q_j + Q_r|^2 / (n D^2) over non-corner boundary vertices (Eq. 12);
 //   E_laplace = w_L sum_j |X_j - mean(X_k, k ~ j)|^2 / (n D^2) over interior vertices (Eq. 13, Tutte).
+//   E_quality = w_q l^2 sum_t (A0_t / A0_mean) (|J_t|^2 / (2 det J_t) - 1) / (n D^2) over rest triangles, J_t
+//               the 2D map from triangle t of the flattened pattern to the current one, l the mean edge length
+//               (ours, not the paper's: where the paper remeshes when elements degenerate, Sec. 5.3, this
+//               barrier keeps them from degenerating; zero for rotations and uniform scalings, infinite at a
+//               collapse, about w_q l^2 eps^2 / 2 per triangle for a small distortion eps).
+// Why E_target weighs by the *current* areas: it is then a quadrature of the surface integral of d^2, which
+// does not change (to the order of the discretization) when pattern vertices slide within a panel together
+// with their inflated positions. With weights fixed at the flattened pattern, sliding vertices into regions
+// where the inflated shape is close to the target lowers E_target without changing the shape: the optimizer
+// did exactly that, collapsing rest triangles until the fold check stopped every step (bench/README.md).
 #pragma once
 #include <Eigen/Core>
 #include <vector>
@@ -24,11 +35,12 @@ struct OptimizeWeights {
   double length = 10.0;   // E_length; the final seam-length projection makes it exact (see PatternOptimizer)
   double smooth = 0.05;   // E_smooth
   double laplace = 0.01;  // E_laplace: only needs to remove the interior sliding null space
+  double quality = 0.01;  // E_quality
 };
 
 struct ObjectiveTerms {
-  double target = 0, seam = 0, length = 0, smooth = 0, laplace = 0;
-  double total() const { return target + seam + length + smooth + laplace; }
+  double target = 0, seam = 0, length = 0, smooth = 0, laplace = 0, quality = 0;
+  double total() const { return target + seam + length + smooth + laplace + quality; }
 };
 
 class PatternObjective {
@@ -46,9 +58,12 @@ class PatternObjective {
   PatternObjective(const ImlsDistance& imls, const BuiltPattern& built, const SewnMesh& mesh,
                    const std::vector<double>& seamWeights, const OptimizeWeights& weights);
 
-  // E_target + E_seam at simulation positions x (#V by 3); grad (3 #V) when given.
-  double shapeEnergy(const Vertices& x, Eigen::VectorXd* grad, ObjectiveTerms* terms = nullptr) const;
-  // E_length + E_smooth + E_laplace at pattern coordinates X (2 per panel vertex, sewn order).
+  // E_target + E_seam at simulation positions x (#V by 3) and pattern coordinates X; gradx (3 #V) and gradX
+  // (dE/dX at fixed x, through E_target's area weights; 2 per panel vertex) when given.
+  double shapeEnergy(const Vertices& x, const Eigen::VectorXd& X, Eigen::VectorXd* gradx,
+                     Eigen::VectorXd* gradX = nullptr, ObjectiveTerms* terms = nullptr) const;
+  // E_length + E_smooth + E_laplace + E_quality at pattern coordinates X (2 per panel vertex, sewn order);
+  // E_quality is +inf when a rest triangle is folded or degenerate.
   double patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad, ObjectiveTerms* terms = nullptr) const;
 
   // Max over stitched edge pairs of |L_a - L_b| / ((L_a + L_b) / 2), and the same per piece pair.
@@ -59,7 +74,9 @@ class PatternObjective {
   const ImlsDistance& imls() const { return imls_; }
   const std::vector<EdgePair>& edgePairs() const { return pairs_; }
   const std::vector<SeamVertex>& seamVertices() const { return seams_; }
-  const Eigen::VectorXd& targetWeights() const { return targetWeight_; }  // #V, includes 1/(n D^2) and w_t
+  // E_target's weights of d(x_i)^2 (#V, include w_t / (n D^2)) in pattern X; zero off the outer surface.
+  Eigen::VectorXd targetWeights(const Eigen::VectorXd& X) const;
+  const Eigen::VectorXd& targetWeights() const { return targetWeight_; }  // in the flattened pattern
   double modelSize() const { return D_; }                                 // bounding-box diagonal [m]
   double meanEdgeLength() const { return edge_; }
   int numVertices() const { return n_; }
@@ -68,6 +85,17 @@ class PatternObjective {
   struct Triple {
     int l, j, r;
   };
+  struct OuterTriangle {
+    int vertex[3];   // simulation vertices
+    int pattern[3];  // panel-vertex ids (global), rows of X
+  };
+  double restArea(const OuterTriangle& t, const Eigen::VectorXd& X) const;
+  struct RestTriangle {
+    int pattern[3];         // rows of X
+    Eigen::Matrix2d DmInv;  // of the flattened triangle
+    double weight = 0;      // w_q l^2 (A0_t / A0_mean) / (n D^2)
+  };
+  std::vector<RestTriangle> rest_;
   struct PiecePair {
     std::vector<int> a, b;  // rows (global ids) of the two pieces, b reversed so a[k] ~ b[k]
   };
@@ -75,7 +103,9 @@ class PatternObjective {
   OptimizeWeights w_;
   int n_ = 0;
   double D_ = 1, edge_ = 1, norm_ = 1;  // norm_ = 1 / (n D^2)
+  double targetScale_ = 0;              // w_t m / (n D^2)
   Eigen::VectorXd targetWeight_;
+  std::vector<OuterTriangle> outer_;
   std::vector<SeamVertex> seams_;
   std::vector<EdgePair> pairs_;
   std::vector<PiecePair> piecePairs_;

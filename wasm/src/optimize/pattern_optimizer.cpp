@@ -42,6 +42,26 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
   material_.thickness = pattern_.material.thickness;
   material_.band = options.inflate.band;
   X_ = packPattern(pattern_);
+  for (const BuiltPanel& bp : built.panels) boundaryVertices_.push_back(bp.boundaryVertices);
+  if (options_.outlineSmoothing > 0) {
+    const double b = options_.outlineSmoothing * options_.outlineSmoothing;
+    std::vector<Eigen::Triplet<double>> trip;
+    for (int r = 0; r < X_.size(); ++r) trip.emplace_back(r, r, 1.0);
+    for (size_t p = 0; p < built.panels.size(); ++p) {
+      const int nb = built.panels[p].boundaryVertices, first = mesh_.panelVertexStart[p];
+      for (int j = 0; j < nb && nb > 2; ++j) {
+        const int u = first + j, v = first + (j + 1) % nb;
+        for (int c = 0; c < 2; ++c) {
+          trip.emplace_back(2 * u + c, 2 * u + c, b), trip.emplace_back(2 * v + c, 2 * v + c, b);
+          trip.emplace_back(2 * u + c, 2 * v + c, -b), trip.emplace_back(2 * v + c, 2 * u + c, -b);
+        }
+      }
+    }
+    Eigen::SparseMatrix<double> S(X_.size(), X_.size());
+    S.setFromTriplets(trip.begin(), trip.end());
+    smoother_.compute(S);
+    smoothing_ = smoother_.info() == Eigen::Success;
+  }
   x_ = startFromInflated(pattern_, mesh_);
   if (x_.rows() != mesh_.numVertices) x_ = sphericalStart(mesh_);
   timings_.setupMs = elapsedMs();
@@ -82,27 +102,49 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) return false;
   x = solver.positions();
   const double t1 = nowMs();
-  alignRigid(*objective_, x);
+  alignRigid(*objective_, X, x);
   timings_.alignMs += nowMs() - t1;
   return x.allFinite();
 }
 
 double PatternOptimizer::energy(const Eigen::VectorXd& X, const Vertices& x, ObjectiveTerms* terms) const {
-  return objective_->shapeEnergy(x, nullptr, terms) + objective_->patternEnergy(X, nullptr, terms);
+  return objective_->shapeEnergy(x, X, nullptr, nullptr, terms) + objective_->patternEnergy(X, nullptr, terms);
 }
 
 void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad) {
   const double t0 = nowMs();
   SewnMesh mesh = mesh_;
   rebuildRest(X, mesh);
-  Eigen::VectorXd dEdx, lambda, product = Eigen::VectorXd::Zero(X.size());
-  objective_->shapeEnergy(x, &dEdx);
+  Eigen::VectorXd dEdx, dEdX, lambda, product = Eigen::VectorXd::Zero(X.size());
+  objective_->shapeEnergy(x, X, &dEdx, &dEdX);
   const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure);
   solveAdjoint(K, dEdx, rigidPins(x), lambda);
   addRestGradientProduct(mesh, pattern_, X, x, lambda, material_, product);
   objective_->patternEnergy(X, &grad);
-  grad -= product;  // dE/dX = dE/dX|_x - lambda^T dg/dX
+  grad += dEdX - product;  // dE/dX = dE/dX|_x - lambda^T dg/dX
   timings_.adjointMs += nowMs() - t0;
+}
+
+void PatternOptimizer::variableGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad) {
+  reducedGradient(X, x, grad);
+  if (interior_) interior_->reduce(grad);
+}
+
+void PatternOptimizer::toVariables(Eigen::VectorXd& v) const {
+  if (interior_)
+    for (int r = 0; r < v.size() / 2; ++r)
+      if (interior_->interior(r)) v.segment<2>(2 * r).setZero();
+}
+
+Eigen::VectorXd PatternOptimizer::precondition(const Eigen::VectorXd& v) const {
+  if (!smoothing_) return v;
+  Eigen::VectorXd r = smoother_.solve(v);
+  toVariables(r);
+  return r;
+}
+
+void PatternOptimizer::followBoundary(Eigen::VectorXd& X) const {
+  if (interior_) interior_->extend(X);
 }
 
 bool PatternOptimizer::evaluate(const Eigen::VectorXd& X, double* E, Eigen::VectorXd* grad, Vertices* x) {
@@ -140,12 +182,13 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   if (options_.exactSeamLengths && s != OptimizeState::Failed) {
     Eigen::VectorXd X = X_;
     projectSeamLengths(objective_->edgePairs(), X);
+    followBoundary(X);
     Vertices x;
     int newton = 0;
     if (solveEquilibrium(X, x_, x, &newton)) {
       X_ = X, x_ = x;
       unpackPattern(X_, pattern_);
-      reducedGradient(X_, x_, g_);
+      variableGradient(X_, x_, g_);
       record(0, newton, true);
     } else {
       message_ += (message_.empty() ? "" : "; ") + std::string("the exact seam-length projection did not settle");
@@ -161,11 +204,12 @@ bool PatternOptimizer::iterate() {
   Eigen::VectorXd q = -g_;
   std::vector<double> a(m);
   for (int i = m - 1; i >= 0; --i) a[i] = S_[i].dot(q) / Y_[i].dot(S_[i]), q -= a[i] * Y_[i];
-  if (m > 0) q *= S_[m - 1].dot(Y_[m - 1]) / Y_[m - 1].squaredNorm();
+  q = precondition(q);
+  if (m > 0) q *= S_[m - 1].dot(Y_[m - 1]) / Y_[m - 1].dot(precondition(Y_[m - 1]));
   for (int i = 0; i < m; ++i) q += (a[i] - Y_[i].dot(q) / Y_[i].dot(S_[i])) * S_[i];
   Eigen::VectorXd d = q;
   double slope = g_.dot(d);
-  if (!(slope < 0)) d = -g_, slope = -g_.squaredNorm(), S_.clear(), Y_.clear();
+  if (!(slope < 0)) d = -precondition(g_), slope = g_.dot(d), S_.clear(), Y_.clear();
   // Cap the largest vertex move (the first step has no curvature information at all).
   double maxMove = 0;
   for (int v = 0; v < d.size() / 2; ++v) maxMove = std::max(maxMove, d.segment<2>(2 * v).norm());
@@ -175,6 +219,7 @@ bool PatternOptimizer::iterate() {
   for (int h = 0; h <= options_.maxHalvings; ++h, alpha *= 0.5) {
     Eigen::VectorXd X = X_ + alpha * d;
     if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X);
+    followBoundary(X);
     Vertices x;
     int newton = 0;
     if (!solveEquilibrium(X, x_, x, &newton)) {
@@ -187,7 +232,7 @@ bool PatternOptimizer::iterate() {
       continue;
     }
     Eigen::VectorXd g;
-    reducedGradient(X, x, g);
+    variableGradient(X, x, g);
     if (!g.allFinite()) return false;
     const Eigen::VectorXd s = X - X_, y = g - g_;
     if (s.dot(y) > 1e-12 * s.norm() * y.norm()) {
@@ -208,12 +253,17 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
   const double t0 = nowMs();
   if (!started_) {
     started_ = true;
+    if (options_.interiorFollowsBoundary) {
+      interior_ = std::make_unique<HarmonicInterior>(pattern_, mesh_.panelVertexStart, boundaryVertices_, X_);
+      if (!interior_->ok()) interior_.reset();
+    }
     if (options_.projectEveryStep) {
       // Flattened panels whose seam sides differ a lot (a segment far from developable) may fold when
       // projected at once: then the seam lengths are brought together by E_length alone while iterating,
       // and projected exactly only at the end.
       Eigen::VectorXd X = X_;
       projectSeamLengths(objective_->edgePairs(), X);
+      followBoundary(X);
       SewnMesh mesh = mesh_;
       projectTrials_ = rebuildRest(X, mesh);
       if (projectTrials_) X_ = X, unpackPattern(X_, pattern_);
@@ -226,7 +276,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     }
     x_ = std::move(x);
     E_ = energy(X_, x_, nullptr);
-    reducedGradient(X_, x_, g_);
+    variableGradient(X_, x_, g_);
     record(0, newton, false);
   }
   for (int k = 0; k < maxIterations; ++k) {

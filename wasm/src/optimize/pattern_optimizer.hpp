@@ -7,14 +7,17 @@
 // every accepted step is the true E(x(X), X) and decreases monotonically). Trial patterns with a flipped or
 // degenerate rest triangle, a failed equilibrium, or a non-finite value are rejected; the last good state
 // is never lost. Null spaces: each panel's 2D rigid motion leaves E unchanged (its gradient has no
-// component there, so L-BFGS never moves along it); interior sliding is removed by E_laplace (Eq. 13).
+// component there, so L-BFGS never moves along it); interior sliding is held by E_laplace (Eq. 13) and
+// E_quality, and E_target weighs by current areas so sliding does not pay (objectives.hpp).
 // Equal seam lengths: E_length as a penalty while iterating, then an exact projection (seam_projection.hpp)
 // and one more equilibrium solve when the optimizer stops.
 #pragma once
+#include <Eigen/SparseCholesky>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "optimize/harmonic_interior.hpp"
 #include "optimize/objectives.hpp"
 #include "simulate/inflate.hpp"
 
@@ -40,6 +43,16 @@ struct OptimizeOptions {
   // (a large final projection can fold triangles, and the last shape would then not be sewable).
   bool projectEveryStep = true;
   bool keepShapes = false;  // keep x of every accepted iterate (benchmarks: preview quality)
+  // The variables are the panel boundaries and the interior follows them (harmonic_interior.hpp) instead of
+  // every pattern vertex (the paper's X, interior vertices held by E_laplace and E_quality). Faster at first
+  // but it ends in a worse minimum: the three-gore sphere stops at 2.0 % (1k) and 0.73 % (3k) RMS, where
+  // with free interior vertices E goes on falling (1k: 0.36 % after 300 iterations; bench/README.md).
+  bool interiorFollowsBoundary = false;
+  // L-BFGS initial inverse Hessian H0 = gamma (I + b K)^-1 with K the graph Laplacian along every panel
+  // outline and b = outlineSmoothing^2 (in mean edge lengths): a smoothing (Sobolev) preconditioner, so the
+  // long, smooth changes of a panel's outline that move the inflated shape most are not left to the last
+  // iterations behind the short, stiff ones (0: H0 = gamma I).
+  double outlineSmoothing = 4;
 };
 
 enum class OptimizeState { Running, Converged, Stopped, Failed };
@@ -86,13 +99,17 @@ class PatternOptimizer {
   const std::vector<Vertices>& shapes() const { return shapes_; }  // when options.keepShapes
   const OptimizeTimings& timings() const { return timings_; }
 
-  // For tests: E(x(X), X) and its reduced gradient at pattern coordinates X, solving equilibrium from
-  // the current x. Returns false when the equilibrium fails.
+  // For tests: E(x(X), X) and its reduced gradient dE/dX (every row of X, interior ones too) at pattern
+  // coordinates X, solving equilibrium from the current x. Returns false when the equilibrium fails.
   bool evaluate(const Eigen::VectorXd& X, double* E, Eigen::VectorXd* grad, Vertices* x = nullptr);
 
  private:
   bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton);
   void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
+  // The gradient in the optimization variables (the boundary rows with options.interiorFollowsBoundary).
+  void variableGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
+  void followBoundary(Eigen::VectorXd& X) const;  // interior rows from the boundary (interiorFollowsBoundary)
+  void toVariables(Eigen::VectorXd& v) const;     // zero what is not a variable (interior rows)
   double energy(const Eigen::VectorXd& X, const Vertices& x, ObjectiveTerms* terms) const;
   bool iterate();
   void finish(OptimizeState s, const std::string& message);
@@ -103,6 +120,11 @@ class PatternOptimizer {
   OptimizeOptions options_;
   std::unique_ptr<ImlsDistance> imls_;
   std::unique_ptr<PatternObjective> objective_;
+  std::unique_ptr<HarmonicInterior> interior_;                   // options.interiorFollowsBoundary
+  std::vector<int> boundaryVertices_;                            // per panel
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> smoother_;  // I + b K (options.outlineSmoothing)
+  bool smoothing_ = false;
+  Eigen::VectorXd precondition(const Eigen::VectorXd& v) const;  // (I + b K)^-1 v in the variables
   Pattern pattern_;
   SewnMesh mesh_;
   MembraneMaterial material_;

@@ -17,10 +17,9 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
 }
 
 // Gauss-Newton normal equations of E_target + E_seam in (rotation vector, translation) about `center`.
-void normalEquations(const PatternObjective& obj, const Vertices& x, const Eigen::Vector3d& center, Matrix6d& H,
-                     Vector6d& g) {
+void normalEquations(const PatternObjective& obj, const Eigen::VectorXd& w, const Vertices& x,
+                     const Eigen::Vector3d& center, Matrix6d& H, Vector6d& g) {
   H.setZero(), g.setZero();
-  const Eigen::VectorXd& w = obj.targetWeights();
   Eigen::Vector3d n;
   for (int i = 0; i < x.rows(); ++i) {
     if (w[i] == 0) continue;
@@ -50,16 +49,18 @@ void applyRigid(Vertices& x, const Eigen::Vector3d& center, const Vector6d& step
 
 }  // namespace
 
-int alignRigid(const PatternObjective& objective, Vertices& x, int maxIterations, double tolerance) {
+int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vertices& x, int maxIterations,
+               double tolerance) {
   const double D = objective.modelSize();
-  double E = objective.shapeEnergy(x, nullptr);
+  const Eigen::VectorXd w = objective.targetWeights(X);
+  double E = objective.shapeEnergy(x, X, nullptr);
   double mu = 1e-6;
   int it = 0;
   for (; it < maxIterations; ++it) {
     const Eigen::Vector3d center = x.colwise().mean().transpose();
     Matrix6d H;
     Vector6d g;
-    normalEquations(objective, x, center, H, g);
+    normalEquations(objective, w, x, center, H, g);
     if (!g.allFinite() || g.isZero(0)) break;
     // Rotations are measured in radians, translations in meters: scale the rotation block by D.
     Vector6d s;
@@ -71,7 +72,7 @@ int alignRigid(const PatternObjective& objective, Vertices& x, int maxIterations
       const Vector6d step = -(s.asDiagonal() * A.ldlt().solve(s.asDiagonal() * g)).eval();
       Vertices trial = x;
       applyRigid(trial, center, step);
-      const double Et = objective.shapeEnergy(trial, nullptr);
+      const double Et = objective.shapeEnergy(trial, X, nullptr);
       if (std::isfinite(Et) && Et <= E) {
         const bool small = step.head<3>().norm() * D + step.tail<3>().norm() < tolerance * D;
         x = std::move(trial), E = Et, accepted = true, mu = std::max(mu * 0.1, 1e-12);
