@@ -7,6 +7,7 @@
 #include "optimize/rest_derivatives.hpp"
 #include "optimize/rigid_align.hpp"
 #include "optimize/seam_projection.hpp"
+#include "pattern/remesh_pattern.hpp"
 #include "simulate/initial_shape.hpp"
 #include "util/error.hpp"
 
@@ -34,15 +35,24 @@ const char* toString(OptimizeState s) {
 
 PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& built,
                                    const std::vector<double>& seamWeights, const OptimizeOptions& options)
-    : options_(options), pattern_(built.pattern), start_(nowMs()) {
+    : options_(options), seamWeights_(seamWeights), start_(nowMs()) {
   imls_ = std::make_unique<ImlsDistance>(target, options.imls);
-  mesh_ = sewPattern(pattern_);
-  objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights, options.weights);
-  material_.youngsModulus = pattern_.material.youngsModulus;
-  material_.thickness = pattern_.material.thickness;
+  material_.youngsModulus = built.pattern.material.youngsModulus;
+  material_.thickness = built.pattern.material.thickness;
   material_.band = options.inflate.band;
+  setUp(built);
+  timings_.setupMs = elapsedMs();
+}
+
+void PatternOptimizer::setUp(const BuiltPattern& built) {
+  built_ = built;
+  pattern_ = built.pattern;
+  mesh_ = sewPattern(pattern_);
+  objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, options_.weights);
   X_ = packPattern(pattern_);
+  boundaryVertices_.clear();
   for (const BuiltPanel& bp : built.panels) boundaryVertices_.push_back(bp.boundaryVertices);
+  smoothing_ = false;
   if (options_.outlineSmoothing > 0) {
     const double b = options_.outlineSmoothing * options_.outlineSmoothing;
     std::vector<Eigen::Triplet<double>> trip;
@@ -62,9 +72,61 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
     smoother_.compute(S);
     smoothing_ = smoother_.info() == Eigen::Success;
   }
+  interior_.reset();
+  if (started_ && options_.interiorFollowsBoundary) {
+    interior_ = std::make_unique<HarmonicInterior>(pattern_, mesh_.panelVertexStart, boundaryVertices_, X_);
+    if (!interior_->ok()) interior_.reset();
+  }
   x_ = startFromInflated(pattern_, mesh_);
   if (x_.rows() != mesh_.numVertices) x_ = sphericalStart(mesh_);
-  timings_.setupMs = elapsedMs();
+  S_.clear(), Y_.clear();
+  stalled_ = 0;
+}
+
+bool PatternOptimizer::remesh() {
+  const double t0 = nowMs();
+  BuiltPattern current = built_;
+  current.pattern = pattern_;
+  std::vector<Vertices> inflated(pattern_.panels.size());
+  for (size_t p = 0; p < pattern_.panels.size(); ++p) {
+    inflated[p].resize(pattern_.panels[p].vertices.rows(), 3);
+    for (int v = 0; v < inflated[p].rows(); ++v) inflated[p].row(v) = x_.row(mesh_.simVertex(int(p), v));
+  }
+  RemeshedPattern remeshed;
+  try {
+    remeshed = remeshPattern(current, inflated, built_.figures.edgeLength);
+  } catch (const Error&) {
+    return false;  // an outline that no longer bounds a simple polygon: go on with the old mesh
+  }
+  const Eigen::VectorXd oldX = X_;
+  const Vertices oldx = x_;
+  setUp(remeshed.built);
+  if (projectTrials_) {
+    Eigen::VectorXd X = X_;
+    projectSeamLengths(objective_->edgePairs(), X);
+    followBoundary(X);
+    SewnMesh mesh = mesh_;
+    if (rebuildRest(X, mesh)) X_ = X, unpackPattern(X_, pattern_);
+  }
+  Vertices x;
+  int newton = 0;
+  if (!solveEquilibrium(X_, x_, x, &newton)) {  // the new mesh does not settle: back to the old one
+    current.pattern.inflated = inflated;
+    setUp(current);
+    X_ = oldX, x_ = oldx;
+    E_ = energy(X_, x_, nullptr);
+    variableGradient(X_, x_, g_);
+    timings_.remeshMs += nowMs() - t0;
+    return false;
+  }
+  x_ = std::move(x);
+  E_ = energy(X_, x_, nullptr);
+  variableGradient(X_, x_, g_);
+  ++timings_.remeshings;
+  timings_.remeshMs += nowMs() - t0;
+  record(0, newton, false);
+  history_.back().remeshed = true;
+  return true;
 }
 
 PatternOptimizer::~PatternOptimizer() = default;
@@ -296,6 +358,9 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       finish(OptimizeState::Stopped, "the time limit was reached");
       break;
     }
+    if (options_.remeshBelowAngleDeg > 0 && timings_.remeshings < options_.maxRemeshings &&
+        minPanelAngleDeg(pattern_) < options_.remeshBelowAngleDeg && remesh())
+      continue;
     if (!iterate()) {
       if (S_.empty() && projectTrials_ && iteration_ == 0) {
         // Every trial folded or did not settle once projected: go on with the seam-length penalty alone.
