@@ -153,7 +153,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   row.update({{"elements", built.figures.triangles},
               {"panels", built.figures.panels},
               {"internalPanels", built.figures.internalPanels},
-              {"remeshingSteps", 0},
+              {"remeshingSteps", opt.timings().remeshings},
               {"iterations", opt.iterations()},
               {"newtonIterations", newton},
               {"equilibriumSolves", opt.timings().equilibriumSolves},

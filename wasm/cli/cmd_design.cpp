@@ -131,6 +131,7 @@ int designCommand(const std::vector<std::string>& argv) {
   json history = json::array();
   std::string optimizeState = "skipped";
   double optimizeMs = 0, edgeMismatch = bp.figures.maxEdgeLengthMismatch;
+  int remeshings = 0;
   if (optimizePanels) {
     std::vector<double> seamWeights;
     for (const DesignSeam& s : design.seams) seamWeights.push_back(s.weight);
@@ -156,16 +157,22 @@ int designCommand(const std::vector<std::string>& argv) {
                          {"seam_mismatch", h.seamMismatch},
                          {"gradient", h.gradient},
                          {"projected", h.projected},
+                         {"remeshed", h.remeshed},
                          {"ms", h.ms}});
     if (optimizer.state() != OptimizeState::Failed) {
       edgeMismatch = optimizer.history().back().seamMismatch;
-      for (size_t p = 0; p < bp.pattern.panels.size(); ++p)
-        bp.pattern.panels[p].vertices = optimizer.pattern().panels[p].vertices;
-      // Start the final inflation from the optimizer's shape (one row per panel vertex).
+      // The optimizer's panels and stitches (remeshing may have made new ones), and the final inflation
+      // starts from its shape (one row per panel vertex).
+      bp.pattern.panels = optimizer.pattern().panels;
+      bp.pattern.stitches = optimizer.pattern().stitches;
       const SewnMesh& m = optimizer.mesh();
-      for (size_t p = 0; p < bp.pattern.panels.size(); ++p)
+      bp.pattern.inflated.resize(bp.pattern.panels.size());
+      for (size_t p = 0; p < bp.pattern.panels.size(); ++p) {
+        bp.pattern.inflated[p].resize(bp.pattern.panels[p].vertices.rows(), 3);
         for (int v = 0; v < bp.pattern.panels[p].vertices.rows(); ++v)
           bp.pattern.inflated[p].row(v) = optimizer.inflated().row(m.simVertex(int(p), v));
+      }
+      remeshings = optimizer.timings().remeshings;
     }
   }
   std::filesystem::create_directories(dir);
@@ -188,7 +195,8 @@ int designCommand(const std::vector<std::string>& argv) {
       {"format", "billow-design-report"},
       {"version", 1},
       {"optimized", optimizePanels && optimizeState != "failed"},
-      {"optimize", {{"state", optimizeState}, {"ms", optimizeMs}, {"history", history}}},
+      {"optimize",
+       {{"state", optimizeState}, {"ms", optimizeMs}, {"remeshing_steps", remeshings}, {"history", history}}},
       {"panels", bp.figures.panels},
       {"internal_panels", bp.figures.internalPanels},
       {"triangles", bp.figures.triangles},
