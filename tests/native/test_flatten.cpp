@@ -1,5 +1,7 @@
 // Initial flattening (paper Sec. 5.2, Eq. 14): derivatives by finite differences, exact unrolling of
-// developable segments, curved segments of the shared corpus, and the errors a designer can meet.
+// developable segments, curved segments of the shared corpus and of the benchmark designs (far from
+// developable, with seams leaving boundary edges a thousand times shorter than the others), and the errors a
+// designer can meet.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,6 +13,9 @@
 #include <random>
 
 #include "flatten/flatten.hpp"
+#include "io/mesh_file.hpp"
+#include "pattern/design_scene.hpp"
+#include "pattern/segment_pieces.hpp"
 #include "test_support.hpp"
 #include "util/error.hpp"
 
@@ -124,6 +129,27 @@ void expectValidPanel(const TriMesh& m, const FlattenResult& r) {
   EXPECT_TRUE(isSimpleCcwPolygon(boundaryPolygon(r)));
   EXPECT_TRUE(r.uv.allFinite());
   EXPECT_LT(r.uv.colwise().mean().norm(), 0.5 * (r.uv.colwise().maxCoeff() - r.uv.colwise().minCoeff()).norm());
+}
+
+// Targets of a curved boundary: n edges of lengths in [0.5, 1.5], 3D angles pi (1 - 2 / n) + noise, so that the
+// turning angles sum to 2 pi - K with K = curvature.
+BoundaryTargets curvedTargets(int n, double curvature, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> u(-1, 1);
+  BoundaryTargets t{Eigen::VectorXd(n), Eigen::VectorXd(n)};
+  for (int j = 0; j < n; ++j) {
+    t.length[j] = 1 + 0.5 * u(rng);
+    t.angle[j] = M_PI * (1 - 2.0 / n) + 0.2 * u(rng);
+  }
+  t.angle.array() += (curvature - (t.angle.sum() - (n - 2) * M_PI)) / n;
+  return t;
+}
+
+double maxRelativeLengthError(const Points2& Q, const BoundaryTargets& t) {
+  const int n = static_cast<int>(Q.rows());
+  double e = 0;
+  for (int j = 0; j < n; ++j) e = std::max(e, std::abs((Q.row((j + 1) % n) - Q.row(j)).norm() / t.length[j] - 1));
+  return e;
 }
 
 }  // namespace
@@ -302,15 +328,136 @@ TEST(Flatten, TenThousandTrianglesAreFast) {
 }
 
 TEST(Flatten, ConcaveBoundaryIsRepairedWithoutFlips) {
-  // This quarter of spot (below the middle in z and x) has a concave boundary where neither Laplacian solve is
-  // flip-free: the repair must untangle it.
+  // This quarter of spot (below the middle in z and x), with the curvature defect spread evenly along its
+  // boundary (not where the curvature is), gets a concave boundary where neither Laplacian solve is flip-free:
+  // the repair must untangle it.
   const TriMesh target = test::loadShared("spot.obj");
   const Eigen::RowVector3d mid = 0.5 * (target.V.colwise().minCoeff() + target.V.colwise().maxCoeff());
   const TriMesh m = subMesh(target, [&](const Eigen::Vector3d& c) { return c.z() <= mid.z() && c.x() <= mid.x(); });
-  FlattenOptions noRepair;
+  FlattenOptions spread;
+  spread.conformalAngles = false;
+  FlattenOptions noRepair = spread;
   noRepair.untangleSweeps = 0;
   EXPECT_GT(flattenSegment(m, noRepair).flippedTriangles, 0);
-  const FlattenResult r = flattenSegment(m);
+  const FlattenResult r = flattenSegment(m, spread);
   expectValidPanel(m, r);
   EXPECT_NE(r.interior.find("+repair"), std::string::npos);
+  // With the conformal angle targets the same boundary needs no repair at all.
+  const FlattenResult c = flattenSegment(m);
+  expectValidPanel(m, c);
+  EXPECT_EQ(c.interior, "cotangent");
+  EXPECT_LT(c.maxBoundaryLengthError, 0.01);
+}
+
+TEST(FlattenBoundary, ConsistentTargetsTurnByTwoPi) {
+  // Gauss-Bonnet: on a segment of total curvature K the boundary turns by 2 pi - K; a closed flat polygon by 2 pi.
+  const BoundaryTargets t = curvedTargets(40, 2.5, 3);
+  const BoundaryTargets c = consistentTargets(t);
+  EXPECT_NEAR((M_PI - t.angle.array()).sum(), 2 * M_PI - 2.5, 1e-9);
+  EXPECT_NEAR((M_PI - c.angle.array()).sum(), 2 * M_PI, 1e-9);
+  EXPECT_EQ(c.length, t.length);
+  // Spread along the boundary: the defect taken at each vertex is proportional to lbar_j.
+  const Eigen::VectorXd taken = t.angle - c.angle;
+  for (int j = 0; j < 40; ++j)
+    EXPECT_NEAR(taken[j] / (t.length[(j + 39) % 40] + t.length[j]), taken[0] / (t.length[39] + t.length[0]), 1e-12);
+}
+
+TEST(FlattenBoundary, ClosedLengthStartKeepsEveryLength) {
+  for (const double curvature : {-2.0, 0.0, 3.0}) {
+    const BoundaryTargets t = curvedTargets(60, curvature, 11);
+    const BoundaryTargets c = consistentTargets(t);
+    const Points2 Q = closedLengthStart(t, blendedTurning(c, 0));
+    EXPECT_LT(maxRelativeLengthError(Q, t), 1e-6) << "K = " << curvature;
+    // The turning angles it could keep are kept in the mean: no more than the closing requires.
+    const Eigen::VectorXd turn = M_PI - polygonAngles(Q).array(), target = M_PI - c.angle.array();
+    EXPECT_LT(std::sqrt((turn - target).squaredNorm() / 60), 0.2) << "K = " << curvature;
+  }
+}
+
+TEST(FlattenBoundary, FullyBlendedBoundaryIsConvexWithItsLengths) {
+  const BoundaryTargets t = curvedTargets(50, 4.0, 5);
+  const BoundaryFlattening b = flattenBoundary(t, {}, 1.0);
+  EXPECT_EQ(b.convexBlend, 1.0);
+  EXPECT_TRUE(b.simple);
+  EXPECT_TRUE(isSimpleCcwPolygon(b.Q));
+  EXPECT_LT(maxRelativeLengthError(b.Q, t), 1e-6);
+  EXPECT_LT(polygonAngles(b.Q).maxCoeff(), M_PI);
+}
+
+// The koala of the design benchmark cut along plane sections (bench/designs): segments far from developable
+// (half legs, ears, bands around the body, total curvature up to 4.3), seams that leave boundary edges of
+// 1e-7 next to edges of 1e-2, boundaries whose development overlaps itself. Every segment must keep its
+// boundary lengths (so that both sides of a seam match) and have no flipped triangle.
+class FlattenBenchDesign : public ::testing::TestWithParam<const char*> {};
+
+TEST_P(FlattenBenchDesign, KeepsBoundaryLengthsWithoutFlips) {
+  const std::string path = std::string(BILLOW_TEST_DATA_DIR) + "/../../bench/designs/" + GetParam() + ".billow.json";
+  const auto scene = makeDesignScene(readDesignJson(readFileBytes(path)), path, {});
+  const Segmentation& seg = scene->segmentation;
+  int flattened = 0, blended = 0;
+  double worst = 0, worstArea = 1;
+  for (int s = 0; s < static_cast<int>(seg.segments.size()); ++s) {
+    if (!seg.segments[s].isDisk) continue;
+    const TriMesh m = extractSegment(seg, s).mesh;
+    const FlattenResult r = flattenSegment(m);
+    ++flattened;
+    blended += r.convexBlend > 0;
+    expectValidPanel(m, r);
+    EXPECT_LT(r.maxBoundaryLengthError, 0.02) << GetParam() << " segment " << s;
+    // Not a blob: the panel's area stays within a factor of two of the segment's.
+    EXPECT_GT(r.areaRatio, 0.5) << GetParam() << " segment " << s;
+    EXPECT_LT(r.areaRatio, 2.0) << GetParam() << " segment " << s;
+    worst = std::max(worst, r.maxBoundaryLengthError);
+    worstArea = std::abs(std::log(r.areaRatio)) > std::abs(std::log(worstArea)) ? r.areaRatio : worstArea;
+  }
+  EXPECT_GE(flattened, 18);
+  std::printf("[figures] %s: %d segments, boundary length error <= %.4f, area ratio up to %.2f, %d blended\n",
+              GetParam(), flattened, worst, worstArea, blended);
+}
+
+// The same segments with the curvature defect spread evenly along the boundary instead: some boundaries then
+// leave no room for the interior, and the flip-free fallback (turns blended toward a circle's, lengths kept)
+// must take over.
+TEST_P(FlattenBenchDesign, FallbackKeepsLengthsWithoutFlips) {
+  const std::string path = std::string(BILLOW_TEST_DATA_DIR) + "/../../bench/designs/" + GetParam() + ".billow.json";
+  const auto scene = makeDesignScene(readDesignJson(readFileBytes(path)), path, {});
+  const Segmentation& seg = scene->segmentation;
+  FlattenOptions spread;
+  spread.conformalAngles = false;
+  int blended = 0;
+  for (int s = 0; s < static_cast<int>(seg.segments.size()); ++s) {
+    if (!seg.segments[s].isDisk) continue;
+    const TriMesh m = extractSegment(seg, s).mesh;
+    const FlattenResult r = flattenSegment(m, spread);
+    blended += r.convexBlend > 0;
+    expectValidPanel(m, r);
+    EXPECT_LT(r.maxBoundaryLengthError, 0.02) << GetParam() << " segment " << s;
+  }
+  EXPECT_GT(blended, 0) << "the fallback was not exercised";
+}
+INSTANTIATE_TEST_SUITE_P(Koala, FlattenBenchDesign, ::testing::Values("teddy", "elephant"));
+
+TEST(FlattenBoundary, ConformalAngleShiftCarriesTheCurvatureToTheBoundary) {
+  // On a cylinder patch there is no curvature to move; on a spherical cap all of it (the interior angle
+  // defects) goes to the boundary, and then the lengths are kept and the cotangent interior does not flip.
+  const TriMesh cylinder = cylinderPatch(20, 8);
+  std::vector<char> isBoundary(cylinder.numVertices(), 0);
+  for (int v : findBoundaryLoop(cylinder)) isBoundary[v] = 1;
+  EXPECT_LT(conformalAngleShift(cylinder, isBoundary, 1e-3).cwiseAbs().maxCoeff(), 1e-9);
+
+  const TriMesh cap = subMesh(test::loadShared("sphere.obj"), [](const Eigen::Vector3d& c) { return c.z() > 0.5; });
+  const std::vector<int> loop = findBoundaryLoop(cap);
+  isBoundary.assign(cap.numVertices(), 0);
+  for (int v : loop) isBoundary[v] = 1;
+  const Eigen::VectorXd shift = conformalAngleShift(cap, isBoundary, 1e-3);
+  const BoundaryTargets t = measureBoundary(cap, loop);
+  double boundaryShift = 0;
+  for (int v : loop) boundaryShift += shift[v];
+  // Gauss-Bonnet: the interior defects sum to K, and the boundary turns by 2 pi - K.
+  const double K = t.angle.sum() - (static_cast<double>(loop.size()) - 2) * M_PI;
+  EXPECT_NEAR(boundaryShift, -K, 1e-9);
+  const FlattenResult r = flattenSegment(cap);
+  expectValidPanel(cap, r);
+  EXPECT_EQ(r.interior, "cotangent");
+  EXPECT_LT(r.maxBoundaryLengthError, 1e-3);
 }

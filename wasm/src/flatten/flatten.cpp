@@ -56,7 +56,7 @@ void placeOnPrincipalAxis(const Triangles& F, Points2& uv) {
 }
 
 // Interior by one Laplacian solve; falls back to uniform weights, then to the local repair.
-void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, const FlattenOptions& o,
+void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, const FlattenOptions& o, int sweeps,
                    FlattenResult& r) {
   r.interior = o.weights == LaplacianWeights::Cotangent ? "cotangent" : "uniform";
   solveInterior(segment, isBoundary, o.weights, o.cotangentClamp, r.uv);
@@ -71,8 +71,8 @@ void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, 
       r.interior = "uniform";
     }
   }
-  if (r.flippedTriangles > 0 && o.untangleSweeps > 0) {
-    r.flippedTriangles = untangle(segment.F, isBoundary, o.untangleSweeps, r.uv);
+  if (r.flippedTriangles > 0 && sweeps > 0) {
+    r.flippedTriangles = untangle(segment.F, isBoundary, sweeps, r.uv);
     r.interior += "+repair";
   }
 }
@@ -82,23 +82,36 @@ void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, 
 FlattenResult flattenSegment(const TriMesh& segment, const FlattenOptions& options) {
   FlattenResult r;
   r.boundary = findBoundaryLoop(segment);
-  const BoundaryTargets targets = measureBoundary(segment, r.boundary);
-  const BoundaryFlattening b = flattenBoundary(targets, options.newton);
-  r.newtonIterations = b.iterations;
-  r.boundaryEnergy = b.energy;
-
+  BoundaryTargets targets = measureBoundary(segment, r.boundary);
   const int nb = static_cast<int>(r.boundary.size());
-  r.uv = Points2::Zero(segment.numVertices(), 2);
   std::vector<char> isBoundary(segment.numVertices(), 0);
-  for (int j = 0; j < nb; ++j) {
-    r.uv.row(r.boundary[j]) = b.Q.row(j);
-    isBoundary[r.boundary[j]] = 1;
+  for (int j = 0; j < nb; ++j) isBoundary[r.boundary[j]] = 1;
+  if (options.conformalAngles) {
+    const Eigen::VectorXd shift = conformalAngleShift(segment, isBoundary, options.cotangentClamp);
+    for (int j = 0; j < nb; ++j) targets.angle[j] += shift[r.boundary[j]];
   }
-  for (int j = 0; j < nb; ++j) {
-    const double L = (b.Q.row((j + 1) % nb) - b.Q.row(j)).norm();
-    r.maxBoundaryLengthError = std::max(r.maxBoundaryLengthError, std::abs(L - targets.length[j]) / targets.length[j]);
+  // Eq. 14, then the interior; when the boundary is so far from convex that the interior cannot be placed
+  // without a flipped triangle, the boundary's turning angles are blended toward a circle's (lengths kept).
+  for (const double blend : {0.0, 0.25, 0.5, 0.75, 1.0}) {
+    const BoundaryFlattening b = flattenBoundary(targets, options.newton, blend);
+    r.newtonIterations += b.iterations;
+    r.boundaryEnergy = b.energy;
+    r.convexBlend = b.convexBlend;
+    r.uv = Points2::Zero(segment.numVertices(), 2);
+    for (int j = 0; j < nb; ++j) r.uv.row(r.boundary[j]) = b.Q.row(j);
+    r.maxBoundaryLengthError = 0;
+    for (int j = 0; j < nb; ++j) {
+      const double L = (b.Q.row((j + 1) % nb) - b.Q.row(j)).norm();
+      r.maxBoundaryLengthError =
+          std::max(r.maxBoundaryLengthError, std::abs(L - targets.length[j]) / targets.length[j]);
+    }
+    // A short repair while a more convex boundary remains to be tried; the full one on the last.
+    const bool last = b.convexBlend >= 1 || options.untangleSweeps == 0;
+    placeInterior(segment, isBoundary, options,
+                  last ? options.untangleSweeps : std::min(options.untangleSweeps, options.sweepsBeforeBlending), r);
+    if (r.flippedTriangles == 0 || last) break;
   }
-  placeInterior(segment, isBoundary, options, r);
+  if (r.convexBlend > 0) r.interior += "+convex";
   if (options.placeOnPrincipalAxis) placeOnPrincipalAxis(segment.F, r.uv);
 
   double area2 = 0;

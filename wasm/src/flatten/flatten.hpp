@@ -1,6 +1,9 @@
 // Initial flattening of a segment into a panel (Skouras et al. 2014, Sec. 5.2): the boundary by Newton's
 // method on Eq. 14 (after Wang 2008, length-preserved free boundary), the interior by one Laplacian solve
 // with the boundary fixed, then a rigid placement (centred, principal axis along x, CCW triangles).
+// Eq. 14's angle targets theta_j carry the segment's Gaussian curvature: a closed flat polygon turns by 2 pi
+// while the 3D boundary turns by 2 pi - K, so the lengths can only be kept if the angles absorb K; they
+// absorb it where a conformal map with the boundary lengths kept would (Sawhney and Crane 2017).
 #pragma once
 #include <string>
 #include <vector>
@@ -14,10 +17,17 @@ namespace billow {
 struct FlattenOptions {
   BoundaryNewtonOptions newton;  // Eq. 14: at most 50 Newton iterations, stop at max |grad| < 1e-9
   // Interior: cotangent weights (exact on developable segments) or uniform (Tutte). When the cotangent
-  // solve flips a triangle, the uniform one is tried; when both flip (non-convex boundary), a local repair.
+  // solve flips a triangle, the uniform one is tried; when both flip (non-convex boundary), a local repair;
+  // when that fails too, the boundary's turns are blended toward a circle's (its lengths kept) and all is
+  // tried again, up to a convex boundary, where the uniform solve cannot flip a triangle (Tutte).
+  // Eq. 14's angle targets theta_j: with the segment's Gaussian curvature moved to the boundary as a conformal
+  // map with the boundary lengths kept would (interior_map.hpp), or the 3D angle sums with the curvature
+  // defect spread along the boundary (flatten_boundary.hpp).
+  bool conformalAngles = true;
   LaplacianWeights weights = LaplacianWeights::Cotangent;
   double cotangentClamp = 1e-3;      // cotangent weights below this fraction of the mean weight are raised to it
   int untangleSweeps = 200;          // sweeps of the local flip repair (0: report flips, do not repair)
+  int sweepsBeforeBlending = 30;     // repair sweeps before the boundary's turns are blended toward a circle's
   bool placeOnPrincipalAxis = true;  // centre the panel at the origin, its longest axis along x
 };
 
@@ -29,7 +39,8 @@ struct FlattenResult {
   int flippedTriangles = 0;           // triangles that are CW or degenerate on the panel (0 unless reported)
   int newtonIterations = 0;           // Eq. 14 Newton iterations, all attempts
   double boundaryEnergy = 0;          // E_fl at the result
-  std::string interior;               // "cotangent", "uniform" or "uniform+repair": how the interior was placed
+  double convexBlend = 0;             // how far the boundary's turns were blended toward a circle's (0: Eq. 14)
+  std::string interior;  // "cotangent", "uniform", "uniform+repair", "...+convex": how the interior was placed
 };
 
 // segment: a disk-topology piece of the target (one boundary loop, CCW triangles seen from outside).

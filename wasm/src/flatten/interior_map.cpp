@@ -125,6 +125,46 @@ void solveInterior(const TriMesh& segment, const std::vector<char>& isBoundary, 
     if (index[v] >= 0) uv.row(v) = x.row(index[v]);
 }
 
+Eigen::VectorXd conformalAngleShift(const TriMesh& segment, const std::vector<char>& isBoundary, double clamp) {
+  const int n = segment.numVertices();
+  std::vector<int> index(n, -1);
+  int m = 0;
+  for (int v = 0; v < n; ++v)
+    if (!isBoundary[v]) index[v] = m++;
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(n);
+  if (m == 0) return shift;
+  Eigen::VectorXd defect = Eigen::VectorXd::Constant(m, 2 * M_PI);  // Omega_I: 2 pi minus the angle sum
+  for (int f = 0; f < segment.numTriangles(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int v = segment.F(f, c);
+      if (index[v] < 0) continue;
+      const Eigen::Vector3d a = segment.V.row(segment.F(f, (c + 1) % 3)) - segment.V.row(v);
+      const Eigen::Vector3d b = segment.V.row(segment.F(f, (c + 2) % 3)) - segment.V.row(v);
+      defect[index[v]] -= std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+  const Eigen::SparseMatrix<double> W = edgeWeights(segment, LaplacianWeights::Cotangent, clamp);
+  std::vector<Triplet> t;
+  t.reserve(W.nonZeros() + m);
+  for (int j = 0; j < W.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(W, j); it; ++it) {
+      const int i = static_cast<int>(it.row());
+      if (index[i] < 0) continue;
+      t.emplace_back(index[i], index[i], it.value());
+      if (index[j] >= 0) t.emplace_back(index[i], index[j], -it.value());
+    }
+  Eigen::SparseMatrix<double> A(m, m);
+  A.setFromTriplets(t.begin(), t.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
+  const Eigen::VectorXd u = ldlt.solve(defect);
+  if (ldlt.info() != Eigen::Success || !u.allFinite()) return shift;
+  for (int j = 0; j < W.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(W, j); it; ++it) {
+      const int b = static_cast<int>(it.row());
+      if (isBoundary[b] && index[j] >= 0) shift[b] -= it.value() * u[index[j]];
+    }
+  return shift;
+}
+
 int countFlipped(const Triangles& F, const Points2& uv) {
   int flipped = 0;
   for (int f = 0; f < F.rows(); ++f)

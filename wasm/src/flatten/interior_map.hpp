@@ -19,6 +19,14 @@ enum class LaplacianWeights {
 void solveInterior(const TriMesh& segment, const std::vector<char>& isBoundary, LaplacianWeights weights, double clamp,
                    Points2& uv);
 
+// How much of the segment's Gaussian curvature each boundary vertex's angle takes when the segment is laid
+// flat conformally with its boundary lengths kept (scale factor u = 0 on the boundary; Sawhney and Crane 2017,
+// "Boundary First Flattening"): u_I solves A_II u_I = Omega_I (A the cotangent Laplacian, clamped like
+// solveInterior's; Omega the interior angle defects), and the boundary angle sums become theta_j + (A_BI u_I)_j.
+// The shifts sum to the total interior angle defect, so the flat turning angles then sum to 2 pi. #V entries,
+// 0 away from the boundary.
+Eigen::VectorXd conformalAngleShift(const TriMesh& segment, const std::vector<char>& isBoundary, double clamp);
+
 // Triangles whose 2D signed area is not positive (CW or degenerate).
 int countFlipped(const Triangles& F, const Points2& uv);
 
