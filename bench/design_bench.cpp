@@ -69,6 +69,12 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.weights.seam = v;
   else if (name == "maxIterations")
     o.maxIterations = int(v);
+  else if (name == "windowIterations")
+    o.windowIterations = int(v);
+  else if (name == "windowMove")
+    o.windowMove = v;
+  else if (name == "relativeDecrease")
+    o.relativeDecrease = v;
   else if (name == "stallIterations")
     o.stallIterations = int(v);
   else if (name == "tolerance")

@@ -370,9 +370,9 @@ test('the sheet view shows the pieces nested as the cut file has them, with thei
   await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
   await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines && document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
-  await page.fill('#sheet-input', '700');
+  await page.fill('#sheet-input', '800');
   await page.press('#sheet-input', 'Enter');
-  await page.waitForFunction(() => /^700 mm/.test(document.querySelector('#pattern-stats dd[data-stat="sheet"]').textContent));
+  await page.waitForFunction(() => /^800 mm/.test(document.querySelector('#pattern-stats dd[data-stat="sheet"]')?.textContent ?? ''));
   await page.click('#pattern-view [data-view="sheet"]');
   assert.equal(await page.getAttribute('#pattern-view [data-view="sheet"]', 'aria-pressed'), 'true');
   assert.equal(await page.getAttribute('#pattern-view [data-view="panels"]', 'aria-pressed'), 'false');
@@ -393,15 +393,15 @@ test('the sheet view shows the pieces nested as the cut file has them, with thei
       captions: [...document.querySelectorAll('#pane-pattern .sheet-label')].map((l) => l.textContent),
     };
   });
-  assert.equal(shown.sheet.width, 0.7, 'the sheet is as wide as set');
-  assert.ok(shown.captions.some((c) => /700 mm/.test(c)) && shown.captions.some((c) => /roll .* used/.test(c)), shown.captions.join(' | '));
+  assert.equal(shown.sheet.width, 0.8, 'the sheet is as wide as set');
+  assert.ok(shown.captions.some((c) => /800 mm/.test(c)) && shown.captions.some((c) => /roll .* used/.test(c)), shown.captions.join(' | '));
   // Every piece lies on the sheet, and no two overlap (their boxes are apart: the nesting keeps a gap).
   const boxes = shown.cut.map((points) => ({
     x0: Math.min(...points.map((p) => p[0])), x1: Math.max(...points.map((p) => p[0])),
     y0: Math.min(...points.map((p) => p[1])), y1: Math.max(...points.map((p) => p[1])),
   }));
   for (const b of boxes) {
-    assert.ok(b.x0 >= -0.01 && b.x1 <= 700.01, `across the sheet: ${b.x0} .. ${b.x1}`);
+    assert.ok(b.x0 >= -0.01 && b.x1 <= 800.01, `across the sheet: ${b.x0} .. ${b.x1}`);
     assert.ok(b.y0 >= -0.01 && b.y1 <= 1000 * shown.sheet.length + 0.01, `along the sheet: ${b.y0} .. ${b.y1}`);
   }
   assert.ok(boxes[0].x1 < boxes[1].x0 || boxes[1].x1 < boxes[0].x0 || boxes[0].y1 < boxes[1].y0 || boxes[1].y1 < boxes[0].y0, 'pieces apart');

@@ -350,6 +350,17 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       finish(OptimizeState::Converged, "the objective stopped decreasing");
       break;
     }
+    if (options_.windowIterations > 0) {
+      if (windowStart_ < 0 || windowX_.rows() != x_.rows()) windowX_ = x_, windowStart_ = iteration_;
+      if (iteration_ - windowStart_ >= options_.windowIterations) {
+        const double moved = (x_ - windowX_).rowwise().norm().maxCoeff();
+        if (moved < options_.windowMove * objective_->modelSize()) {
+          finish(OptimizeState::Converged, "the shape stopped changing");
+          break;
+        }
+        windowX_ = x_, windowStart_ = iteration_;
+      }
+    }
     if (iteration_ >= options_.maxIterations) {
       finish(OptimizeState::Stopped, "the iteration limit was reached");
       break;

@@ -35,6 +35,11 @@ struct OptimizeOptions {
   double gradientTolerance = 1e-6;
   double relativeDecrease = 1e-6;
   int stallIterations = 5;
+  // Also converged when no inflated vertex moved by more than windowMove x the model size over the last
+  // windowIterations iterations: the long, slow tail where the shape no longer changes visibly (0: off; the
+  // app's setting is in wasm/bindings/target_bindings.cpp).
+  int windowIterations = 0;
+  double windowMove = 1e-3;
   int memory = 8;                // L-BFGS pairs
   double maxStep = 0.5;          // largest panel-vertex move of one step, in mean rest edge lengths
   int maxHalvings = 12;          // line search
@@ -157,6 +162,8 @@ class PatternOptimizer {
   std::string message_;
   int iteration_ = 0, stalled_ = 0;
   bool started_ = false;
+  Vertices windowX_;            // x at the start of the current window (options.windowIterations)
+  int windowStart_ = -1;        // its iteration
   bool projectTrials_ = false;  // options.projectEveryStep, unless projecting the flattened panels folds them
   double start_ = 0;            // steady-clock ms at construction
 };
