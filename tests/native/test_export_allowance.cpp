@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
 #include <string>
@@ -295,5 +296,34 @@ TEST(CliDesign, CutFileUsesTheDesignsSeamAllowancesAndGrain) {
       test::runCapture(test::cliPath() + " design " + design + " --out-dir " + dir + " --no-optimize --quiet", out), 1);
   EXPECT_NE(out.find("fabrication settings"), std::string::npos) << out;
   EXPECT_NE(out.find("seam S2"), std::string::npos) << out;
+#endif
+}
+
+// A sheet narrower than a piece: billow design still writes the pattern, the inflated shape and the report,
+// says why the cut file is missing, and ends with a non-zero status.
+TEST(CliDesign, ASheetTooNarrowLosesNothingElse) {
+#ifdef __EMSCRIPTEN__
+  GTEST_SKIP() << "the CLI is native only";
+#else
+  json doc = json::parse(readFileBytes(std::string(BILLOW_TEST_DATA_DIR) + "/sphere-gores.billow.json"));
+  doc["target"] = {{"obj", std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples/sphere.obj"}};
+  doc["fabrication"] = {{"sheet_width", 100}};
+  const std::string design = testing::TempDir() + "billow-narrow.billow.json";
+  std::ofstream(design) << doc.dump();
+  const std::string dir = testing::TempDir() + "billow-narrow-design";
+  std::filesystem::remove_all(dir);
+  std::string out;
+  EXPECT_EQ(
+      test::runCapture(
+          test::cliPath() + " design " + design + " --out-dir " + dir + " --no-optimize --resolution 600 --quiet", out),
+      1);
+  EXPECT_NE(out.find("cut file (pattern.svg) was not written"), std::string::npos) << out;
+  EXPECT_NE(out.find("Choose a wider sheet"), std::string::npos) << out;
+  EXPECT_FALSE(std::filesystem::exists(dir + "/pattern.svg"));
+  EXPECT_NO_THROW(readPatternJson(readFileBytes(dir + "/pattern.json")));
+  EXPECT_TRUE(std::filesystem::exists(dir + "/inflated.obj"));
+  const json report = json::parse(readFileBytes(dir + "/report.json"));
+  EXPECT_EQ(report["cut_file"]["written"], false);
+  EXPECT_NE(report["cut_file"]["message"].get<std::string>().find("sheet"), std::string::npos);
 #endif
 }

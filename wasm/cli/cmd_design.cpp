@@ -177,8 +177,15 @@ int designCommand(const std::vector<std::string>& argv) {
   }
   std::filesystem::create_directories(dir);
   writeTextFile(dir + "/pattern.json", writePatternJson(bp.pattern) + "\n");
-  // The cut file, with the design's fabrication settings when it has them.
-  writeTextFile(dir + "/pattern.svg", exportPattern(bp.pattern, cutOptions).svg);
+  // The cut file, with the design's fabrication settings when it has them. When the pieces cannot be laid out
+  // (a sheet narrower than a piece) the other outputs are still written and the command ends with the reason.
+  std::string cutFileProblem;
+  std::filesystem::remove(dir + "/pattern.svg");  // never leave an older cut file beside the new pattern
+  try {
+    writeTextFile(dir + "/pattern.svg", exportPattern(bp.pattern, cutOptions).svg);
+  } catch (const Error& e) {
+    cutFileProblem = e.what();
+  }
 
   // Inflate from the target shape (the pattern's "inflated" start).
   const SewnMesh mesh = sewPattern(bp.pattern);
@@ -220,13 +227,21 @@ int designCommand(const std::vector<std::string>& argv) {
         {"optimize", optimizeMs},
         {"inflate", r.timings.totalMs + r.timings.setupMs},
         {"total", msSince(t0)}}},
-      {"memory", {{"predicted_bytes", neededBytes}, {"peak_resident_bytes", peakResidentBytes()}}}};
+      {"memory", {{"predicted_bytes", neededBytes}, {"peak_resident_bytes", peakResidentBytes()}}},
+      {"cut_file", {{"written", cutFileProblem.empty()}, {"message", cutFileProblem}}}};
   writeTextFile(dir + "/report.json", report.dump(2) + "\n");
   std::fprintf(stderr,
                "%s after %d iterations; distance to target: rms %.2f %%, max %.2f %% of the diagonal (%.0f ms)\n",
                r.converged ? "settled" : "did not settle", r.iterations, 100 * d.rms, 100 * d.max, msSince(t0));
   if (!r.converged) {
     std::fprintf(stderr, "billow design: %s\n", r.message.c_str());
+    return 1;
+  }
+  if (!cutFileProblem.empty()) {
+    std::fprintf(stderr,
+                 "billow design: the cut file (pattern.svg) was not written: %s The pattern, the inflated shape "
+                 "and the report were.\n",
+                 cutFileProblem.c_str());
     return 1;
   }
   return 0;
