@@ -18,6 +18,10 @@ const gc = globalThis.gc ?? vm.runInNewContext('gc');
 const api = await loadApi();
 const MB = 1 << 20;
 const PROBE_SLACK = 256 * 1024; // allocator noise; a leaked inflation costs about 2 MB per cycle
+// The session keeps the last (cancelled) optimizer until the next one starts, and how far it got before the
+// cancel (its L-BFGS pairs, history, factorizations) depends on timing: up to a few hundred KB here. A leaked
+// optimization would add that much at every one of the 25 measured cycles.
+const OPTIMIZE_PROBE_SLACK = 1024 * 1024;
 const JS_HEAP_SLACK = 3 * MB;
 
 // The wasm heap: memory size, the address a fresh 1 MB block gets (malloc has no mmap in wasm, so a
@@ -122,6 +126,6 @@ test('30 pattern optimizations started and cancelled do not grow the wasm memory
     }
   }
   t.diagnostic(`wasm memory ${mb(baseline.size)}; top of the wasm heap ${mb(baseline.probe)} after cycle 5, at most ${mb(highestProbe)} after`);
-  assert.ok(highestProbe <= baseline.probe + PROBE_SLACK, `the wasm heap's top stayed at ${mb(baseline.probe)} (at most ${mb(highestProbe)})`);
+  assert.ok(highestProbe <= baseline.probe + OPTIMIZE_PROBE_SLACK, `the wasm heap's top stayed at ${mb(baseline.probe)} (at most ${mb(highestProbe)})`);
   assert.equal(wasmMemory().handles, baseline.handles, 'no embind handles left behind');
 });
