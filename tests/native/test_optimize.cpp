@@ -311,9 +311,9 @@ TEST(Optimize, ThreeGoreSphereGetsMuchCloser) {
   const Fixture f = makeFixture("sphere-gores.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
-  o.maxIterations = 60;
+  o.maxIterations = 90;
   o.keepShapes = true;
-  const OptimizeRun r = optimize(f, o, 60);
+  const OptimizeRun r = optimize(f, o, 90);
   std::printf(
       "[figures] three-gore sphere: preview quality (within 5 %% of the diagonal of the final shape) at "
       "iteration %d, %.0f ms\n",

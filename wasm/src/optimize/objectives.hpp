@@ -33,7 +33,7 @@ struct OptimizeWeights {
   double target = 1.0;    // E_target
   double seam = 1.0;      // multiplies every seam's sigma_i (the design's seam weight)
   double length = 10.0;   // E_length; the final seam-length projection makes it exact (see PatternOptimizer)
-  double smooth = 0.05;   // E_smooth
+  double smooth = 2.0;    // E_smooth: weaker lets the outlines zig-zag (bench/README.md)
   double laplace = 0.01;  // E_laplace: only needs to remove the interior sliding null space
   double quality = 0.01;  // E_quality
 };
