@@ -17,6 +17,7 @@
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
 #include "optimize/pattern_optimizer.hpp"
+#include "panel_checks.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/design_scene.hpp"
 #include "pattern/internal_panels.hpp"
@@ -24,6 +25,8 @@
 #include "test_support.hpp"
 
 using namespace billow;
+using billow::test::expectDisk;
+using billow::test::signedArea;
 
 namespace {
 
@@ -70,30 +73,6 @@ PatternBuildOptions optionsFor(const DesignScene& scene, std::vector<InternalCon
   o.connections = std::move(connections);
   for (const DesignSeam& s : scene.design.seams) o.seamNames.push_back(s.name);
   return o;
-}
-
-double signedArea(const Panel& p, int t) {
-  const Eigen::Vector2d a = p.vertices.row(p.triangles(t, 0)), b = p.vertices.row(p.triangles(t, 1)),
-                        c = p.vertices.row(p.triangles(t, 2));
-  return 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
-}
-
-// A disk whose first `boundaryVertices` rows are its boundary.
-void expectDisk(const Panel& p, int boundaryVertices) {
-  std::map<std::pair<int, int>, int> edges;
-  for (int t = 0; t < p.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = p.triangles(t, k), b = p.triangles(t, (k + 1) % 3);
-      ++edges[{std::min(a, b), std::max(a, b)}];
-    }
-  std::set<int> onBoundary;
-  for (const auto& [e, n] : edges) {
-    EXPECT_LE(n, 2);
-    if (n == 1) onBoundary.insert(e.first), onBoundary.insert(e.second);
-  }
-  EXPECT_EQ(static_cast<long>(p.vertices.rows()) - static_cast<long>(edges.size()) + p.triangles.rows(), 1);
-  EXPECT_EQ(static_cast<int>(onBoundary.size()), boundaryVertices);
-  if (!onBoundary.empty()) EXPECT_EQ(*onBoundary.rbegin(), boundaryVertices - 1);
 }
 
 bool hasProblem(const BuiltPattern& bp, const std::string& text) {

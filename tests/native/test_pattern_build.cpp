@@ -10,11 +10,15 @@
 #include <set>
 
 #include "io/mesh_file.hpp"
+#include "panel_checks.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/design_scene.hpp"
 #include "test_support.hpp"
 
 using namespace billow;
+using billow::test::expectDisk;
+using billow::test::panelArea;
+using billow::test::signedArea;
 
 namespace {
 
@@ -24,38 +28,6 @@ std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../w
 std::unique_ptr<DesignScene> fixture(const std::string& name) {
   const std::string path = dataPath(name);
   return makeDesignScene(readDesignJson(readFileBytes(path)), path, {examplesDir()});
-}
-
-double signedArea(const Panel& p, int t) {
-  const Eigen::Vector2d a = p.vertices.row(p.triangles(t, 0)), b = p.vertices.row(p.triangles(t, 1)),
-                        c = p.vertices.row(p.triangles(t, 2));
-  return 0.5 * ((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
-}
-
-double panelArea(const Panel& p) {
-  double a = 0;
-  for (int t = 0; t < p.triangles.rows(); ++t) a += signedArea(p, t);
-  return a;
-}
-
-// Euler characteristic and boundary edges of a panel.
-void expectDisk(const Panel& p, int boundaryVertices, const std::string& what) {
-  std::map<std::pair<int, int>, int> edges;
-  for (int t = 0; t < p.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = p.triangles(t, k), b = p.triangles(t, (k + 1) % 3);
-      ++edges[{std::min(a, b), std::max(a, b)}];
-    }
-  int boundary = 0;
-  std::set<int> onBoundary;
-  for (const auto& [e, n] : edges) {
-    EXPECT_LE(n, 2) << what;
-    if (n == 1) ++boundary, onBoundary.insert(e.first), onBoundary.insert(e.second);
-  }
-  EXPECT_EQ(static_cast<long>(p.vertices.rows()) - static_cast<long>(edges.size()) + p.triangles.rows(), 1) << what;
-  EXPECT_EQ(boundary, boundaryVertices) << what;
-  EXPECT_EQ(static_cast<int>(onBoundary.size()), boundaryVertices) << what;
-  if (!onBoundary.empty()) EXPECT_EQ(*onBoundary.rbegin(), boundaryVertices - 1) << what << ": boundary rows first";
 }
 
 // Properties every built pattern of a closed target must have.

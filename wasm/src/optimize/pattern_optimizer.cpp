@@ -73,14 +73,27 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
     smoothing_ = smoother_.info() == Eigen::Success;
   }
   interior_.reset();
-  if (started_ && options_.interiorFollowsBoundary) {
-    interior_ = std::make_unique<HarmonicInterior>(pattern_, mesh_.panelVertexStart, boundaryVertices_, X_);
-    if (!interior_->ok()) interior_.reset();
-  }
+  if (started_) startInterior();
   x_ = startFromInflated(pattern_, mesh_);
   if (x_.rows() != mesh_.numVertices) x_ = sphericalStart(mesh_);
   S_.clear(), Y_.clear();
   stalled_ = 0;
+}
+
+void PatternOptimizer::startInterior() {
+  if (!options_.interiorFollowsBoundary) return;
+  interior_ = std::make_unique<HarmonicInterior>(pattern_, mesh_.panelVertexStart, boundaryVertices_, X_);
+  if (!interior_->ok()) interior_.reset();
+}
+
+bool PatternOptimizer::projectStart() {
+  Eigen::VectorXd X = X_;
+  projectSeamLengths(objective_->edgePairs(), X);
+  followBoundary(X);
+  SewnMesh mesh = mesh_;
+  if (!rebuildRest(X, mesh)) return false;
+  X_ = X, unpackPattern(X_, pattern_);
+  return true;
 }
 
 bool PatternOptimizer::remesh() {
@@ -101,13 +114,7 @@ bool PatternOptimizer::remesh() {
   const Eigen::VectorXd oldX = X_;
   const Vertices oldx = x_;
   setUp(remeshed.built);
-  if (projectTrials_) {
-    Eigen::VectorXd X = X_;
-    projectSeamLengths(objective_->edgePairs(), X);
-    followBoundary(X);
-    SewnMesh mesh = mesh_;
-    if (rebuildRest(X, mesh)) X_ = X, unpackPattern(X_, pattern_);
-  }
+  if (projectTrials_) projectStart();
   Vertices x;
   int newton = 0;
   if (!solveEquilibrium(X_, x_, x, &newton)) {  // the new mesh does not settle: back to the old one
@@ -315,21 +322,11 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
   const double t0 = nowMs();
   if (!started_) {
     started_ = true;
-    if (options_.interiorFollowsBoundary) {
-      interior_ = std::make_unique<HarmonicInterior>(pattern_, mesh_.panelVertexStart, boundaryVertices_, X_);
-      if (!interior_->ok()) interior_.reset();
-    }
-    if (options_.projectEveryStep) {
-      // Flattened panels whose seam sides differ a lot (a segment far from developable) may fold when
-      // projected at once: then the seam lengths are brought together by E_length alone while iterating,
-      // and projected exactly only at the end.
-      Eigen::VectorXd X = X_;
-      projectSeamLengths(objective_->edgePairs(), X);
-      followBoundary(X);
-      SewnMesh mesh = mesh_;
-      projectTrials_ = rebuildRest(X, mesh);
-      if (projectTrials_) X_ = X, unpackPattern(X_, pattern_);
-    }
+    startInterior();
+    // Flattened panels whose seam sides differ a lot (a segment far from developable) may fold when
+    // projected at once: then the seam lengths are brought together by E_length alone while iterating,
+    // and projected exactly only at the end.
+    if (options_.projectEveryStep) projectTrials_ = projectStart();
     Vertices x;
     int newton = 0;
     if (!solveEquilibrium(X_, x_, x, &newton)) {

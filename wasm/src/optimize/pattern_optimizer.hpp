@@ -122,6 +122,11 @@ class PatternOptimizer {
   // Everything that follows from the (flattened or remeshed) pattern: mesh, objective, variables, the
   // preconditioner, the start x (its `inflated`); the L-BFGS memory is cleared.
   void setUp(const BuiltPattern& built);
+  // The harmonic interior (options.interiorFollowsBoundary) of the current panels.
+  void startInterior();
+  // Projects the current panels onto equal stitched edge lengths; false (nothing changed) when that folds a
+  // rest triangle.
+  bool projectStart();
   // Meshes the panels again from their current outlines (options.remeshBelowAngleDeg) and solves the new
   // equilibrium; false (the old mesh kept) when that fails.
   bool remesh();
