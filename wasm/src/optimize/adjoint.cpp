@@ -37,34 +37,61 @@ double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd&
   std::vector<char> pinned(n, 0);
   for (int p : pins) pinned[p] = 1;
   const double scale = K.diagonal().cwiseAbs().mean();
+  // A DOF without any stiffness (a vertex whose triangles are all slack and carry no pressure: the inside of
+  // a slack internal panel) is free at equilibrium: nothing there moves the shape, so lambda = 0 there, like
+  // a pin. Left in, its zero row makes K singular and no factorization would succeed.
+  Eigen::VectorXd rowMax = Eigen::VectorXd::Zero(n);
+  for (int j = 0; j < K.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
+      rowMax[it.row()] = std::max(rowMax[it.row()], std::abs(it.value()));
+  for (int i = 0; i < n; ++i)
+    if (!(rowMax[i] > 1e-14 * scale)) pinned[i] = 1;
   std::vector<Eigen::Triplet<double>> trip;
-  trip.reserve(K.nonZeros() + pins.size());
+  trip.reserve(K.nonZeros() + n);
   for (int j = 0; j < K.outerSize(); ++j)
     for (Eigen::SparseMatrix<double>::InnerIterator it(K, j); it; ++it)
       if (!pinned[it.row()] && !pinned[it.col()]) trip.emplace_back(it.row(), it.col(), it.value());
-  for (int p : pins) trip.emplace_back(p, p, scale > 0 ? scale : 1.0);
+  for (int i = 0; i < n; ++i)
+    if (pinned[i]) trip.emplace_back(i, i, scale > 0 ? scale : 1.0);
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(trip.begin(), trip.end());
   Eigen::VectorXd rhs = b;
-  for (int p : pins) rhs[p] = 0;
+  for (int i = 0; i < n; ++i)
+    if (pinned[i]) rhs[i] = 0;
   const double bn = std::max(rhs.norm(), 1e-300);
   const auto residual = [&]() { return lambda.allFinite() ? (A * lambda - rhs).norm() / bn : INFINITY; };
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  ldlt.analyzePattern(A);
+  ldlt.factorize(A);
+  if (ldlt.info() == Eigen::Success) {
+    lambda = ldlt.solve(rhs);
+    const double r = residual();
+    if (r < 1e-8) return r;
+  }
   {
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-    if (ldlt.info() == Eigen::Success) {
-      lambda = ldlt.solve(rhs);
+    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
+    lu.compute(A);
+    if (lu.info() == Eigen::Success) {
+      lambda = lu.solve(rhs);
       const double r = residual();
-      if (r < 1e-8) return r;
+      if (r < 1e-6) return r;
     }
   }
-  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-  lu.compute(A);
-  if (lu.info() != Eigen::Success) {
-    lambda = Eigen::VectorXd::Zero(n);
-    return INFINITY;
+  // Nearly singular (soft slack or wrinkled regions, whose shape is not unique): the smallest shift that
+  // factorizes, i.e. those soft directions held by a weak spring, as if the sheet had a little stiffness there.
+  Eigen::SparseMatrix<double> I(n, n);
+  I.setIdentity();
+  for (double eps = 1e-10; eps <= 1e-2; eps *= 10) {
+    const Eigen::SparseMatrix<double> shifted = A + (eps * (scale > 0 ? scale : 1.0)) * I;
+    ldlt.factorize(shifted);
+    if (ldlt.info() != Eigen::Success) continue;
+    Eigen::VectorXd l = ldlt.solve(rhs);
+    if (!l.allFinite() || (shifted * l - rhs).norm() / bn > 1e-6) continue;
+    lambda = l;
+    return residual();
   }
-  lambda = lu.solve(rhs);
-  return residual();
+  lambda = Eigen::VectorXd::Zero(n);
+  return INFINITY;
 }
 
 }  // namespace billow

@@ -17,8 +17,10 @@ namespace billow {
 // farthest vertex b, one of the vertex c farthest from the line ab.
 std::vector<int> rigidPins(const Vertices& x);
 
-// Solves K lambda = b with lambda = 0 at the pins (LDL^T; sparse LU when LDL^T fails or is inaccurate: K is
-// indefinite because of the pressure term). Returns the relative residual |K lambda - b| / |b| on free DOFs.
+// Solves K lambda = b with lambda = 0 at the pins and at DOFs without any stiffness (zero rows of K: the
+// inside of a slack internal panel) (LDL^T; sparse LU when LDL^T fails or is inaccurate: K is indefinite
+// because of the pressure term; last, the smallest diagonal shift that factorizes, for nearly singular K).
+// Returns the relative residual |K lambda - b| / |b| on free DOFs (INFINITY, lambda = 0: no solve).
 double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b, const std::vector<int>& pins,
                     Eigen::VectorXd& lambda);
 
