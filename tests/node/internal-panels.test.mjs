@@ -83,3 +83,61 @@ test('the optimizer runs on a pattern with an internal panel', () => {
     t.delete();
   }
 });
+
+// Whether an internal panel carries load (web/src/app/pattern-session.js internalPanelRow, a row of the
+// inflated pane's figures). A cushion (the sphere squashed to 40 % of its height, cut at the equator and by an
+// arc over each pole) wants to become round: a diaphragm joining the two arcs is pulled taut. The flattened
+// fish's middle-plane panel between its back and belly seams hangs slack (the inflating sides pull that
+// outline inward), so it does not shape the balloon.
+test('the figures say whether an internal panel is in tension or hangs slack', async () => {
+  const { Inflation } = await import('../../web/src/worker/solver-api.js');
+  const { internalPanelRow, internalPanelTension } = await import('../../web/src/app/pattern-session.js');
+  const inflate = (pattern) => {
+    const inflation = new Inflation(api);
+    try {
+      inflation.load(JSON.stringify(pattern));
+      let s = inflation.step(400, 0);
+      while (s.state === 'running') s = inflation.step(400, 0);
+      assert.equal(s.state, 'converged', s.message);
+      return inflation.snapshot();
+    } finally {
+      inflation.delete();
+    }
+  };
+  const build = (mesh, seamList, opts) => {
+    const t = new TargetSession(api);
+    try {
+      t.setTarget(mesh.positions, mesh.indices);
+      const b = t.buildPattern(seamList, opts);
+      assert.equal(b.ok, true, JSON.stringify(b.problems));
+      return b.pattern;
+    } finally {
+      t.delete();
+    }
+  };
+  const squashed = { positions: sphere.positions.map((v, i) => (i % 3 === 1 ? 0.4 * v : v)), indices: sphere.indices };
+  const equator = Array.from({ length: 6 }, (_, k) => [Math.cos((k * Math.PI) / 3), 0, Math.sin((k * Math.PI) / 3)]);
+  const cushionSeams = [
+    { name: 'equator', closed: true, weight: 1, points: equator },
+    { name: 'top', closed: false, weight: 1, points: [[1, 0, 0], [0, 0.4, 0], [-1, 0, 0]] },
+    { name: 'bottom', closed: false, weight: 1, points: [[1, 0, 0], [0, -0.4, 0], [-1, 0, 0]] },
+  ];
+  const cushion = build(squashed, cushionSeams, { scale: 0.25, triangles: 800, connections: [[1, 2]] });
+  const cushionResult = inflate(cushion);
+  const [diaphragm] = internalPanelTension(cushion, cushionResult);
+  assert.ok(diaphragm.tense > 0.8, `diaphragm: ${diaphragm.tense} of it in tension`);
+  assert.match(internalPanelRow(cushion, cushionResult).join(': '), /^Internal panel: in tension \(\d+ %\)$/);
+
+  const fishDesign = JSON.parse(readFileSync(new URL('../data/fish-midplane.billow.json', import.meta.url), 'utf8'));
+  const blub = readObjText(readFileSync(new URL('../../web/public/examples/blub.obj', import.meta.url), 'utf8'));
+  let low = Infinity, high = -Infinity;
+  for (let i = 1; i < blub.positions.length; i += 3) low = Math.min(low, blub.positions[i]), high = Math.max(high, blub.positions[i]);
+  const fishSeams = fishDesign.seams.map(({ name, points, closed, weight }) => ({ name, points, closed, weight }));
+  const fish = build(blub, fishSeams, { scale: fishDesign.size.height / (high - low), triangles: 600, connections: [[0, 1]] });
+  const fishResult = inflate(fish);
+  const [middle] = internalPanelTension(fish, fishResult);
+  assert.ok(middle.tense < 0.2, `middle plane: ${middle.tense} of it in tension`);
+  assert.match(internalPanelRow(fish, fishResult).join(': '), /^Internal panel: mostly slack \(\d+ %\): not shaping$/);
+  // Not the simulation's triangles (another pattern): no row rather than a wrong one.
+  assert.equal(internalPanelRow(cushion, fishResult), null);
+});

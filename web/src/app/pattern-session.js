@@ -40,6 +40,39 @@ export function summarizeWarnings(warnings) {
   return others;
 }
 
+// The internal panels' share of triangles in tension (taut or wrinkled) at equilibrium, in panel order:
+// [{ name, tense }]. A panel that hangs slack carries nothing: pressure does not pull on it, so it does not
+// shape the balloon (an internal panel works when it joins seams that pressure pushes apart). The
+// simulation's triangles are the panels' triangles in panel order.
+export function internalPanelTension(pattern, result) {
+  const panels = pattern?.panels ?? [];
+  const regime = result?.regime;
+  const total = panels.reduce((n, p) => n + (p.triangles?.length ?? 0), 0);
+  if (!regime || regime.length !== total) return [];
+  const out = [];
+  let t = 0;
+  for (const p of panels) {
+    const n = p.triangles.length;
+    if (p.internal && n > 0) {
+      let tense = 0;
+      for (let k = t; k < t + n; ++k) tense += regime[k] !== 0;
+      out.push({ name: p.name, tense: tense / n });
+    }
+    t += n;
+  }
+  return out;
+}
+
+// The figures row for them: "in tension" or "mostly slack: not shaping" (the least tense panel).
+export function internalPanelRow(pattern, result) {
+  const panels = internalPanelTension(pattern, result);
+  if (!panels.length) return null;
+  const least = Math.min(...panels.map((p) => p.tense));
+  const label = panels.length === 1 ? 'Internal panel' : 'Internal panels';
+  if (least < 0.5) return [label, `mostly slack (${Math.round(100 * (1 - least))} %): not shaping`];
+  return [label, `in tension (${Math.round(100 * least)} %)`];
+}
+
 export class PatternSession {
   constructor({ client, panes, messages, status, stats }) {
     this.client = client;
@@ -123,6 +156,8 @@ export class PatternSession {
       ['Peak stress', `${(peak / 1e6).toFixed(1)} MPa${result.maxStress > 1.5 * peak ? ` (one spot ${(result.maxStress / 1e6).toFixed(0)})` : ''}`],
       ['Solver steps', String(result.iterations)],
     ];
+    const internal = internalPanelRow(pattern, result);
+    if (internal) rows.push(internal);
     if (pattern?.material) rows.push(...balloonRows(balloonFigures(pattern, result.volume, peak)));
     renderStats(this.stats, rows);
   }
