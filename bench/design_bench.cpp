@@ -14,6 +14,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <nlohmann/json.hpp>
 #include <sstream>
 #include <stdexcept>
@@ -22,6 +23,7 @@
 
 #include "io/design_json.hpp"
 #include "io/mesh_file.hpp"
+#include "io/pattern_json.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/design_scene.hpp"
@@ -52,7 +54,26 @@ struct BenchOptions {
   int triangles = 0;  // > 0: overrides the manifest's
   bool trace = false;
   std::vector<std::pair<std::string, double>> set;
+  std::string outDir;  // non-empty: the optimized pattern of each design is written there (NAME.pattern.json)
 };
+
+// Total |turning| of each panel's outline [degrees] (its first boundaryVertices rows, in order): about 360 for
+// a smooth convex outline plus its corners; a zig-zag outline turns far more.
+std::vector<double> outlineTurning(const Pattern& pattern, const BuiltPattern& built) {
+  std::vector<double> out;
+  for (size_t p = 0; p < pattern.panels.size(); ++p) {
+    const PanelVertices& V = pattern.panels[p].vertices;
+    const int nb = built.panels[p].boundaryVertices;
+    double total = 0;
+    for (int j = 0; j < nb; ++j) {
+      const Eigen::Vector2d a = V.row((j + nb - 1) % nb), b = V.row(j), c = V.row((j + 1) % nb);
+      const Eigen::Vector2d u = b - a, v = c - b;
+      total += std::abs(std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v)));
+    }
+    out.push_back(total * 180 / M_PI);
+  }
+  return out;
+}
 
 void applySetting(OptimizeOptions& o, const std::string& name, double v) {
   if (name == "interiorFollowsBoundary")
@@ -156,7 +177,19 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
     }
     areaRms = area > 0 ? std::sqrt(areaRms / area) : 0;
   }
+  const std::vector<double> turnFlat = outlineTurning(built.pattern, built),
+                            turnOpt = outlineTurning(opt.pattern(), built);
+  double turningExcess = 0;
+  for (size_t p = 0; p < turnFlat.size(); ++p) turningExcess = std::max(turningExcess, turnOpt[p] - turnFlat[p]);
+  if (!bo.outDir.empty()) {
+    std::filesystem::create_directories(bo.outDir);
+    std::ofstream(bo.outDir + "/" + entry.at("name").get<std::string>() + ".pattern.json")
+        << writePatternJson(opt.pattern());
+  }
   row.update({{"elements", built.figures.triangles},
+              {"outlineTurningFlattened", turnFlat},
+              {"outlineTurning", turnOpt},
+              {"outlineTurningExcess", turningExcess},
               {"panels", built.figures.panels},
               {"internalPanels", built.figures.internalPanels},
               {"remeshingSteps", opt.timings().remeshings},
@@ -212,10 +245,12 @@ int main(int argc, char** argv) {
       bo.set.emplace_back(kv.substr(0, kv.find('=')), std::stod(kv.substr(kv.find('=') + 1)));
     } else if (a == "--manifest" && hasValue)
       manifestPath = argv[++i];
+    else if (a == "--out-dir" && hasValue)
+      bo.outDir = argv[++i];
     else {
       std::fprintf(stderr,
                    "usage: billow_design_bench [--json] [--designs NAME,..] [--max-seconds S] [--manifest FILE] "
-                   "[--triangles N] [--trace] [--set NAME=VALUE]\n");
+                   "[--triangles N] [--trace] [--set NAME=VALUE] [--out-dir DIR]\n");
       return 2;
     }
   }
