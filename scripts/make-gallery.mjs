@@ -76,24 +76,34 @@ function sagittalLoop(mesh, c, count) {
   return points;
 }
 
-// Open seams along the axis `axis` of the mesh, from pole to pole, at the given angles (degrees) around it.
-function lengthwiseSeams(mesh, axis, angles, names) {
-  const lo = [0, 1, 2].map((a) => Math.min(...mesh.v.map((p) => p[a])));
-  const hi = [0, 1, 2].map((a) => Math.max(...mesh.v.map((p) => p[a])));
-  const c = lo.map((l, a) => (l + hi[a]) / 2);
-  const [u, w] = [0, 1, 2].filter((a) => a !== axis);
-  const dir = (along, deg) => {
-    const d = [0, 0, 0], a = (deg * Math.PI) / 180;
-    d[axis] = along;
-    d[u] = Math.sqrt(1 - along * along) * Math.cos(a);
-    d[w] = Math.sqrt(1 - along * along) * Math.sin(a);
-    return d;
-  };
-  const start = farthestHit(mesh, c, dir(-1, 0)), end = farthestHit(mesh, c, dir(1, 0));
-  return angles.map((deg, i) => ({
-    name: names[i], closed: false, weight: 1,
-    points: [start, ...[-0.6, -0.2, 0.2, 0.6].map((t) => farthestHit(mesh, c, dir(t, deg))), end],
-  }));
+// Blub the fish (mouth towards +z, symmetric in x, the mesh's own units): back and belly seams along the
+// outline of the middle plane, from the mouth over the dorsal fin and around the forked tail to the tip of
+// its upper lobe (the belly seam passes the notch between the lobes); on each side a seam along the flank at
+// mid-height from the mouth to the notch, split just behind the head (z = 0.3) into a cheek seam and a flank
+// seam. The internal connection joins the two flank seams (see makeData).
+function fishSeams(mesh) {
+  const x = (Math.min(...mesh.v.map((p) => p[0])) + Math.max(...mesh.v.map((p) => p[0]))) / 2;
+  const top = (z) => farthestHit(mesh, [x, -3, z], [0, 1, 0]);
+  const bottom = (z) => farthestHit(mesh, [x, 3, z], [0, -1, 0]);
+  const side = (s, y, z) => nearestHit(mesh, [3 * s, y, z], [-s, 0, 0]);
+  const mouth = farthestHit(mesh, [x, 0, 0], [0, 0, 1]);
+  const tip = farthestHit(mesh, [x, 0.39, -1.5], [0, 0, -1]); // the upper tail lobe's tip
+  const lowerTip = farthestHit(mesh, [x, -0.3, -1.4], [0, 0, -1]);
+  const notch = nearestHit(mesh, [x, -0.08, -1], [0, 0, -1]); // from inside the tail stalk
+  const back = [mouth, ...[0.8, 0.6, 0.3, 0.1, -0.1, -0.3, -0.5, -0.7, -0.8, -0.9, -1, -1.2, -1.4, -1.6, -1.8].map(top), tip];
+  const belly = [mouth, ...[0.8, 0.6, 0.3, 0, -0.3, -0.6, -0.8, -1, -1.2, -1.4].map(bottom), lowerTip, notch,
+    bottom(-1.7), bottom(-1.8), tip];
+  // Mid-height of the flank [z, y]: the head, the body, the tail stalk and the tail.
+  const cheek = [[0.8, 0], [0.6, 0.02]], split = [0.3, 0.04];
+  const flank = [[0, 0.05], [-0.3, 0.05], [-0.6, 0.05], [-0.8, 0], [-1, -0.06], [-1.2, -0.055], [-1.4, -0.06]];
+  const seam = (name, points) => ({ name, closed: false, weight: 1, points });
+  const along = (s, zy) => zy.map(([z, y]) => side(s, y, z));
+  const sides = [['left', 1], ['right', -1]].map(([name, s]) => {
+    const at = side(s, split[1], split[0]);
+    return { name, cheek: [mouth, ...along(s, cheek), at], flank: [at, ...along(s, flank), notch] };
+  });
+  return [seam('back', back), seam('belly', belly), ...sides.map((d) => seam(`${d.name} cheek`, d.cheek)),
+    ...sides.map((d) => seam(`${d.name} flank`, d.flank))];
 }
 
 // A star of `tips` points, outer radius R, inner r: rings of the outline scaled towards the middle.
@@ -153,12 +163,15 @@ function makeData() {
     { name: 'neck', closed: true, weight: 1, points: planeLoop(koala, [0, 2.3, 2.25], [1, 0, 0], [0, 1, 0], 12) },
   ]));
 
-  // Fish: Blub cut in left and right halves by open seams from tail to nose along the back and the belly,
-  // with an internal panel between them (the fish's middle plane).
+  // Fish: Blub in four panels, upper and lower halves on each side (fishSeams), and an internal panel
+  // joining the left and right flank seams from behind the head to the tail. Behind the head the body, the
+  // tail stalk and the tail fin are taller than wide; pressure pushes a balloon round, so it pushes the flank
+  // seams apart and the panel between them is in tension there: it holds them in, and the rear of the fish
+  // stays narrow. (An earlier fish had its internal panel in the middle plane, between back and belly seams:
+  // the inflating sides pull those seams inward, so that panel hung slack and shaped nothing. Running the
+  // panel forward to the mouth leaves its front third slack too: the head is round.)
   const blub = readObj(join(ROOT, 'web/public/examples/blub.obj'));
-  write('fish.billow.json', design('blub', 0.5, lengthwiseSeams(blub, 2, [90, 270], ['back', 'belly']), {
-    connections: [{ seams: [0, 1] }],
-  }));
+  write('fish.billow.json', design('blub', 0.5, fishSeams(blub), { connections: [{ seams: [4, 5] }] }));
 
   // Star foil balloon: two identical five-pointed stars (0.5 m tip to tip), the back one mirrored so both
   // are drawn as seen from outside, sealed at the rim vertex by vertex.
@@ -177,7 +190,10 @@ function makeData() {
 }
 
 // Thumbnail views other than the pane's own framing: the direction to the camera and a zoom factor.
-const THUMBNAIL_VIEWS = { koala: { direction: [1, 0.4, 0.9], zoom: 1.35 } };
+const THUMBNAIL_VIEWS = {
+  koala: { direction: [1, 0.4, 0.9], zoom: 1.35 },
+  fish: { direction: [1, 0.3, 0.25], zoom: 1.05 }, // from its left side: the flank seam along the middle
+};
 
 async function makeThumbnails(only = []) {
   const { serve, launch, openFreshPage } = await import('../tests/e2e/harness.mjs');

@@ -33,7 +33,7 @@ export const GALLERY_ITEMS = [
   },
   {
     id: 'fish', title: 'Fish with an internal panel', thumbnail: 'fish.png', open: { design: 'fish.billow.json' },
-    teaches: 'An internal connection: a panel inside joins the back and belly seams, so the fish stays slim instead of puffing round.',
+    teaches: 'An internal panel works only where pressure pulls it tight: this one ties the left and right flank seams together from behind the head to the tail, so the tall, narrow body and tail stay slim instead of puffing round.',
   },
   {
     id: 'star', title: 'Star foil balloon', thumbnail: 'star.png', open: { patternFile: 'star.pattern.json' },
