@@ -64,7 +64,7 @@ function run(entry) {
   const pattern = JSON.parse(first.flattenedText);
   return {
     design: entry.name, class: entry.class, elements: first.triangles.length / 3, panels: pattern.panels.length,
-    internalPanels: pattern.panels.filter((p) => p.internal).length, remeshingSteps: 0,
+    internalPanels: pattern.panels.filter((p) => p.internal).length, remeshingSteps: last.remeshings ?? 0,
     iterations: last.iteration ?? 0, patternSeconds, previewIteration: preview?.iteration ?? -1, previewSeconds: preview?.seconds ?? 0,
     seconds, state: last.state ?? 'time limit', message: last.message ?? '',
     flattenedDistanceRms: first.distance.rms, distanceRms: last.distance.rms, distanceMax: last.distance.max,

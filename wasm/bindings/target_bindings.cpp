@@ -19,7 +19,7 @@
 //          "internal": true), figures (internalPanels among them), problems (a connection that cannot be
 //          built is one: code "pattern.connection", severity "error", seam) }
 //   t.startOptimization(seamsJson, optionsJson)  the same, and keeps a PatternOptimizer for:
-//   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, distanceRms, distanceMax,
+//   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, remeshings, distanceRms, distanceMax,
 //                                                 seamMismatch, objective }
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
@@ -129,7 +129,8 @@ class TargetSession {
       const billow::OptimizeState state = optimizer_->step(maxIterations, maxMillis);
       json out = {{"state", billow::toString(state)},
                   {"iteration", optimizer_->iterations()},
-                  {"message", optimizer_->message()}};
+                  {"message", optimizer_->message()},
+                  {"remeshings", optimizer_->timings().remeshings}};
       if (!optimizer_->history().empty()) {
         const auto& r = optimizer_->history().back();
         out["distanceRms"] = r.distanceRms;
