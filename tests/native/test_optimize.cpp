@@ -251,7 +251,36 @@ TEST(Optimize, SlackInternalPanelDoesNotStopTheOptimizer) {
   EXPECT_EQ(opt.iterations(), 30) << opt.message();
   EXPECT_LT(h.back().distanceRms, 0.65 * h.front().distanceRms);  // before: 0.73
   for (size_t k = 1; k < h.size(); ++k)
-    if (!h[k].projected) EXPECT_LE(h[k].objective, h[k - 1].objective * (1 + 1e-12));
+    if (!h[k].projected && !h[k].resettled) EXPECT_LE(h[k].objective, h[k - 1].objective * (1 + 1e-12));
+}
+
+// The gallery fish's four outer panels without its internal panel, at 600 elements: after a few steps the
+// inflated shape sits in an unstable equilibrium (a tiny change of the panels makes it snap into another one,
+// so E(X) jumps and no step passes the line search). The optimizer used to stop there ("no further decrease
+// along the gradient", 1.56 % RMS at 1k after 6 iterations); it now takes the shape the balloon snaps into
+// (a "resettled" record, the objective may rise) and goes on.
+TEST(Optimize, UnstableEquilibriumIsResettledNotTheEnd) {
+  const Fixture f = makeFixture("fish-four-panels.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions oo;
+  oo.maxIterations = 25;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, oo);
+  OptimizeState state = OptimizeState::Running;
+  while (state == OptimizeState::Running) state = opt.step(1);
+  const auto& h = opt.history();
+  int resettled = 0;
+  for (size_t k = 1; k < h.size(); ++k) {
+    resettled += h[k].resettled;
+    if (!h[k].projected && !h[k].resettled) EXPECT_LE(h[k].objective, h[k - 1].objective * (1 + 1e-12));
+  }
+  std::printf(
+      "[figures] fish without its internal panel, 600 elements: %d iterations, %d resettled, rms %.3f %% -> "
+      "%.3f %% (%s)\n",
+      opt.iterations(), resettled, 100 * h.front().distanceRms, 100 * h.back().distanceRms, opt.message().c_str());
+  EXPECT_EQ(opt.iterations(), 25) << opt.message();
+  EXPECT_GE(resettled, 1);
+  EXPECT_EQ(resettled, opt.timings().resettlings);
+  EXPECT_LT(h.back().distanceRms, h.front().distanceRms);
 }
 
 // The same at an iterate of the gallery's three-gore sphere at 3k elements, where the optimizer used to stop
@@ -392,7 +421,8 @@ TEST(Optimize, ThreeGoreSphereGetsMuchCloser) {
   EXPECT_GT(first.distanceRms / last.distanceRms, 4.0);
   EXPECT_LT(last.seamMismatch, 1e-4);
   for (size_t k = 1; k < r.history.size(); ++k)
-    if (!r.history[k].projected && !r.history[k].remeshed) {  // a new mesh is a new discretization of E
+    // A new mesh is a new discretization of E; a resettled shape is another equilibrium of the same panels.
+    if (!r.history[k].projected && !r.history[k].remeshed && !r.history[k].resettled) {
       EXPECT_LE(r.history[k].objective, r.history[k - 1].objective) << "iteration " << k;
     }
 }

@@ -285,6 +285,10 @@ bool PatternOptimizer::iterate() {
   const double cap = options_.maxStep * objective_->meanEdgeLength();
   double alpha = (m == 0 || maxMove > cap) ? cap / std::max(maxMove, 1e-300) : 1.0;
   if (m > 0) alpha = std::min(alpha, 1.0);
+  // A jump: halving the step no longer brings E down towards E_ (the excess E - E_ shrank by less than 10 %
+  // over the last `jumps` settled trials): E(X) is discontinuous here, see resettle().
+  double lastExcess = INFINITY;
+  int jumps = 0;
   for (int h = 0; h <= options_.maxHalvings; ++h, alpha *= 0.5) {
     Eigen::VectorXd X = X_ + alpha * d;
     if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X);
@@ -298,6 +302,10 @@ bool PatternOptimizer::iterate() {
     const double E = energy(X, x, nullptr);
     if (!(std::isfinite(E) && E <= E_ + 1e-4 * alpha * slope)) {
       ++timings_.rejectedTrials;
+      const double excess = E - E_;
+      jumps = std::isfinite(E) && excess > 1e-3 * std::abs(E_) && excess > 0.9 * lastExcess ? jumps + 1 : 0;
+      lastExcess = std::isfinite(E) ? excess : INFINITY;
+      if (jumps >= 2 && resettle(x)) return true;
       continue;
     }
     Eigen::VectorXd g;
@@ -315,6 +323,25 @@ bool PatternOptimizer::iterate() {
     return true;
   }
   return false;
+}
+
+bool PatternOptimizer::resettle(const Vertices& from) {
+  if (timings_.resettlings >= options_.maxResettlings || from.rows() != x_.rows()) return false;
+  Vertices x;
+  int newton = 0;
+  if (!solveEquilibrium(X_, from, x, &newton)) return false;
+  const double E = energy(X_, x, nullptr);
+  if (!std::isfinite(E) || std::abs(E - E_) <= 1e-6 * std::abs(E_)) return false;
+  Eigen::VectorXd g;
+  variableGradient(X_, x, g);
+  if (!g.allFinite()) return false;
+  x_ = std::move(x), E_ = E, g_ = std::move(g);
+  S_.clear(), Y_.clear();
+  stalled_ = 0;
+  ++timings_.resettlings;
+  record(0, newton, false);
+  history_.back().resettled = true;
+  return true;
 }
 
 OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {

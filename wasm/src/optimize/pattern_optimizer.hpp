@@ -65,6 +65,9 @@ struct OptimizeOptions {
   // 800 elements: 1.6 % RMS after 120 iterations with remeshing at 5 degrees, 0.44 % without).
   double remeshBelowAngleDeg = 0;
   int maxRemeshings = 10;
+  // An unstable equilibrium (E(X) jumps: see PatternOptimizer::resettle) is left for the one the balloon
+  // snaps into at most this many times (0: the optimizer stops there instead).
+  int maxResettlings = 10;
 };
 
 enum class OptimizeState { Running, Converged, Stopped, Failed };
@@ -82,11 +85,15 @@ struct OptimizeRecord {
   double ms = 0;                            // since the optimizer was made
   bool projected = false;                   // the final seam-length projection (not an L-BFGS step)
   bool remeshed = false;                    // the panels were meshed again (not an L-BFGS step)
+  // The inflated shape snapped to another equilibrium of the same panels (not an L-BFGS step; the objective
+  // may rise): the one it was in proved unstable (see PatternOptimizer::resettle).
+  bool resettled = false;
 };
 
 struct OptimizeTimings {
   double setupMs = 0, equilibriumMs = 0, alignMs = 0, adjointMs = 0, objectiveMs = 0, totalMs = 0;
   int equilibriumSolves = 0, rejectedTrials = 0;
+  int resettlings = 0;  // see OptimizeRecord::resettled
   int remeshings = 0;   // remeshing steps taken
   double remeshMs = 0;  // their time, their equilibrium solves included
 };
@@ -138,6 +145,11 @@ class PatternOptimizer {
   void toVariables(Eigen::VectorXd& v) const;     // zero what is not a variable (interior rows)
   double energy(const Eigen::VectorXd& X, const Vertices& x, ObjectiveTerms* terms) const;
   bool iterate();
+  // After a failed line search whose shortest trial still landed on a clearly worse shape (a jump, not a
+  // slope): the current equilibrium is unstable, a tiny change of the panels makes the balloon snap into
+  // another one. Takes that one (solved again at the current panels from where the trial ended) as the new
+  // current state. False when it is no different.
+  bool resettle(const Vertices& from);
   void finish(OptimizeState s, const std::string& message);
   void record(double alpha, int newton, bool projected);
   bool rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) const;
