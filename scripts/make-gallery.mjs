@@ -19,6 +19,7 @@ import { gzipSync } from 'node:zlib';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { readObj } from './obj.mjs';
+import { teddySeams } from './plane-sections.mjs';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 const OUT = join(ROOT, 'web/public/gallery');
@@ -54,17 +55,6 @@ const farthestHit = (mesh, o, d) => pointAlong(o, d, Math.max(-1, ...rayHits(mes
 
 // The nearest point where the ray from o (inside the mesh) along d leaves it.
 const nearestHit = (mesh, o, d) => pointAlong(o, d, Math.min(Infinity, ...rayHits(mesh, o, d).filter((h) => h > 0)));
-
-// Surface points around the loop where the plane through c spanned by the unit vectors a and b cuts the
-// mesh: the nearest hits of rays from c in that plane (c inside the mesh, the cut around it convex enough).
-function planeLoop(mesh, c, a, b, count) {
-  const points = [];
-  for (let i = 0; i < count; i++) {
-    const t = (2 * Math.PI * i) / count;
-    points.push(nearestHit(mesh, c, [0, 1, 2].map((k) => Math.cos(t) * a[k] + Math.sin(t) * b[k])));
-  }
-  return points;
-}
 
 // Surface points around the loop where the plane x = x0 cuts the mesh, seen from center c.
 function sagittalLoop(mesh, c, count) {
@@ -149,19 +139,11 @@ function makeData() {
   const center = lo.map((l, a) => (l + hi[a]) / 2);
   write('toy.billow.json', design('penguin', 0.9, [{ name: 'middle', closed: true, weight: 1, points: sagittalLoop(penguin, center, 16) }]));
 
-  // Koala plush toy (standing on all fours, head towards +z, symmetric in x): the penguin's plush-toy cut,
-  // left and right halves sewn along the middle, plus a seam around the neck just behind the ears (the plane
-  // z = 2.25 of the mesh's own units, in front of the front legs), so the head is two panels of its own:
-  // four panels. (Seams down the legs, a plush maker's underbody gusset, were tried: the optimizer then
-  // stops at a rounder shape, 5.8 % from the target instead of 1.5 %.)
-  const koala = readObj(join(ROOT, 'web/public/examples/koala.obj'));
-  const klo = [0, 1, 2].map((a) => Math.min(...koala.v.map((p) => p[a])));
-  const khi = [0, 1, 2].map((a) => Math.max(...koala.v.map((p) => p[a])));
-  const kcenter = klo.map((l, a) => (l + khi[a]) / 2);
-  write('koala.billow.json', design('koala', 0.4, [
-    { name: 'middle', closed: true, weight: 1, points: sagittalLoop(koala, kcenter, 24) },
-    { name: 'neck', closed: true, weight: 1, points: planeLoop(koala, [0, 2.3, 2.25], [1, 0, 0], [0, 1, 0], 12) },
-  ]));
+  // Koala plush toy: the design benchmark's teddy cut (teddySeams, bench/designs/teddy.billow.json) on the
+  // app's koala example, 18 panels: a middle seam, a seam down each side through the legs, bands across the
+  // back and across the head, and a ring around each ear. (A plush-toy cut of four panels, halves along the
+  // middle and a ring around the neck, inflated into a plump blob: the legs and ears rounded off.)
+  write('koala.billow.json', design('koala', 0.4, teddySeams(readObj(join(ROOT, 'web/public/examples/koala.obj')))));
 
   // Fish: Blub in four panels, upper and lower halves on each side (fishSeams), and an internal panel
   // joining the left and right flank seams from behind the head to the tail. Behind the head the body, the

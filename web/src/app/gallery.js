@@ -29,7 +29,7 @@ export const GALLERY_ITEMS = [
   },
   {
     id: 'koala', title: 'Koala, a plush toy', thumbnail: 'koala.png', open: { design: 'koala.billow.json' },
-    teaches: 'A teddy cut: halves sewn along the middle and a seam around the neck give the head two panels of its own; with four flat panels the thin legs and ears round off into a plump body.',
+    teaches: 'A teddy cut in 18 panels: seams along the middle, down each side through the legs, across the back and the head, and around each ear; narrow panels that follow the body, legs and ears let the inflated toy keep them, where a few wide panels round them off into a plump blob.',
   },
   {
     id: 'fish', title: 'Fish with an internal panel', thumbnail: 'fish.png', open: { design: 'fish.billow.json' },
