@@ -141,6 +141,48 @@ test('panes resize with the window and the pattern pane pans and zooms', async (
   await page.close();
 });
 
+test('the target and inflated panes turn together, each keeping its own zoom', async () => {
+  const page = await fresh();
+  const view = () => page.evaluate(() => {
+    const at = (pane) => {
+      const d = pane.camera.position.clone().sub(pane.controls.target);
+      return { dir: d.clone().normalize().toArray(), distance: d.length() };
+    };
+    const { target, inflated } = window.billow.app.panes;
+    return { target: at(target), inflated: at(inflated) };
+  });
+  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  const drag = async (selector, dx, dy) => {
+    const box = await page.locator(selector).boundingBox();
+    const x = box.x + box.width * 0.3, y = box.y + box.height * 0.6;
+    await page.mouse.move(x, y);
+    await page.mouse.down();
+    await page.mouse.move(x + dx, y + dy, { steps: 6 });
+    await page.mouse.up();
+  };
+  const v0 = await view();
+  assert.ok(dot(v0.target.dir, v0.inflated.dir) > 0.9999, 'both panes start from the same side');
+  await drag('#pane-target .pane-body', 160, 30);
+  const v1 = await view();
+  assert.ok(dot(v1.target.dir, v0.target.dir) < 0.98, `the target turned (${dot(v1.target.dir, v0.target.dir)})`);
+  assert.ok(dot(v1.target.dir, v1.inflated.dir) > 0.9999, 'the inflated pane turned with it');
+  await drag('#pane-inflated .pane-body', -90, -40);
+  const v2 = await view();
+  assert.ok(dot(v2.inflated.dir, v1.inflated.dir) < 0.99, 'the inflated pane turned');
+  assert.ok(dot(v2.target.dir, v2.inflated.dir) > 0.9999, 'the target pane turned with it');
+  // Zooming one pane leaves the other's distance alone.
+  const box = await page.locator('#pane-inflated .pane-body').boundingBox();
+  await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
+  await page.mouse.wheel(0, -300);
+  await page.waitForTimeout(100);
+  const v3 = await view();
+  assert.ok(v3.inflated.distance < 0.95 * v2.inflated.distance, 'the inflated pane zoomed in');
+  assert.ok(Math.abs(v3.target.distance - v2.target.distance) < 1e-9 * v2.target.distance, 'the target kept its zoom');
+  assert.ok(dot(v3.target.dir, v3.inflated.dir) > 0.9999);
+  assertNoErrors(page);
+  await page.close();
+});
+
 test('a crashed solver is replaced, the designer is told, and work goes on', async () => {
   const page = await fresh();
   const code = await page.evaluate(() => window.billow.client.request('crashForTesting').catch((e) => e.code));

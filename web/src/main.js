@@ -1,5 +1,6 @@
 // Entry point: builds the panes, the worker client and the app, and wires the page's controls.
 import { Viewport } from './views/viewport.js';
+import { linkViews } from './views/pane3d.js';
 import { TargetPane } from './views/target-pane.js';
 import { PatternPane } from './views/pattern-pane.js';
 import { InflatedPane } from './views/inflated-pane.js';
@@ -28,6 +29,7 @@ const panes = {
   inflated: new InflatedPane(body('pane-inflated'), viewport),
   pattern: new PatternPane(body('pane-pattern'), viewport),
 };
+linkViews(panes.target, panes.inflated); // the target and its inflated shape, seen from the same side
 const messages = new Messages($('messages'));
 const theme = new Theme({
   onChange: (t) => {

@@ -1,8 +1,12 @@
-// A 3D pane: scene, perspective camera, lights and orbit controls bound to the pane's element.
+// A 3D pane: scene, perspective camera, lights and orbit controls bound to the pane's element. Two panes can
+// be linked (linkViews): turning one turns the other, so the target and its inflated shape are seen from the
+// same side.
 import {
   AmbientLight, Box3, DirectionalLight, HemisphereLight, PerspectiveCamera, Scene, Sphere, Vector3,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+
+const DEFAULT_VIEW = new Vector3(0.35, 0.3, 1).normalize(); // from the front, a little right and above
 
 export class Pane3D {
   constructor(element, viewport) {
@@ -10,7 +14,7 @@ export class Pane3D {
     this.viewport = viewport;
     this.scene = new Scene();
     this.camera = new PerspectiveCamera(35, 1, 0.001, 1000);
-    this.camera.position.set(0.6, 0.5, 1.6);
+    this.camera.position.copy(DEFAULT_VIEW).multiplyScalar(1.8);
     this.scene.add(new HemisphereLight(0xffffff, 0x8890a0, 1.6));
     this.scene.add(new AmbientLight(0xffffff, 0.25));
     const key = new DirectionalLight(0xffffff, 1.6);
@@ -23,11 +27,19 @@ export class Pane3D {
     viewport.add(this);
   }
 
-  // Frames the object: camera distance from its bounding sphere and the field of view.
-  frame(object) {
+  // The unit direction from the orbit centre to the camera.
+  viewDirection() {
+    const d = this.camera.position.clone().sub(this.controls.target);
+    return d.lengthSq() > 0 ? d.normalize() : DEFAULT_VIEW.clone();
+  }
+
+  // Frames the object: camera distance from its bounding sphere and the field of view, seen from where the
+  // camera already looks (a new shape does not undo the designer's turning of the view), or with reset from
+  // the default three-quarter front view.
+  frame(object, { reset = false } = {}) {
     const sphere = new Box3().setFromObject(object).getBoundingSphere(new Sphere());
     if (!Number.isFinite(sphere.radius) || sphere.radius <= 0) return;
-    const direction = new Vector3(0.35, 0.3, 1).normalize();
+    const direction = reset ? DEFAULT_VIEW.clone() : this.viewDirection();
     const distance = (sphere.radius / Math.sin((this.camera.fov * Math.PI) / 360)) * 1.05;
     this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
     this.camera.near = distance / 100;
@@ -45,4 +57,21 @@ export class Pane3D {
     }
     renderer.render(this.scene, this.camera);
   }
+}
+
+// Turning either pane (orbit controls, or frame()) turns the other the same way: the same view direction
+// (orbit controls keep y up in both); each keeps its own centre and distance (zoom).
+export function linkViews(a, b) {
+  let following = false;
+  const follow = (from, to) => () => {
+    if (following) return;
+    following = true;
+    const distance = to.camera.position.distanceTo(to.controls.target);
+    to.camera.position.copy(to.controls.target).addScaledVector(from.viewDirection(), distance);
+    to.controls.update();
+    to.viewport.requestRender();
+    following = false;
+  };
+  a.controls.addEventListener('change', follow(a, b));
+  b.controls.addEventListener('change', follow(b, a));
 }

@@ -93,6 +93,7 @@ export class TargetPane extends Pane3D {
     this.mesh.add(this.seams);
     this.mesh.scale.setScalar(0); // forces setScale to place and frame it
     this.group.add(this.mesh);
+    this.newTarget = true; // a new target is seen from the default view
     this.setScale(scale);
   }
 
@@ -102,7 +103,8 @@ export class TargetPane extends Pane3D {
     this.mesh.scale.setScalar(scale);
     this.mesh.position.set(-scale * 0.5 * (box.min.x + box.max.x), -scale * box.min.y, -scale * 0.5 * (box.min.z + box.max.z));
     this.mesh.updateMatrixWorld(true);
-    this.frame(this.group);
+    this.frame(this.group, { reset: this.newTarget });
+    this.newTarget = false;
   }
 
   // The target cut into segments, each in its own color (segments that are not disks in red). The
