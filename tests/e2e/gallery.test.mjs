@@ -102,6 +102,19 @@ test('a design opens with its stored result, keeps it while the live optimizatio
   const inflated = await paintedFraction(page, '#pane-inflated .pane-body');
   const pattern = await paintedFraction(page, '#pane-pattern .pane-body');
   await screenshot(page, 'gallery-koala-stored');
+  // Eighteen panels, some small and close together: no two shown panel labels overlap (crowded ones show
+  // only their number, or wait for a closer view).
+  const labels = await page.$$eval('#pane-pattern .panel-label', (els) => els.map((e) => {
+    const r = e.getBoundingClientRect();
+    return { text: e.firstChild.textContent, compact: e.classList.contains('compact'), box: [r.left, r.top, r.right, r.bottom] };
+  }).filter((_, i) => !els[i].classList.contains('crowded')));
+  assert.ok(labels.length >= panels / 2, `${labels.length} of ${panels} panel labels shown`);
+  for (let i = 0; i < labels.length; i++)
+    for (let j = i + 1; j < labels.length; j++) {
+      const [a, b] = [labels[i].box, labels[j].box];
+      assert.ok(!(a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]), `labels "${labels[i].text}" and "${labels[j].text}" overlap`);
+    }
+  for (const l of labels.filter((x) => x.compact)) assert.match(l.text, /^\d+$/);
   const during = await page.evaluate(() => ({
     compare: !document.querySelector('#compare-group').hidden,
     optimizing: Boolean(window.billow.app.optimizing),

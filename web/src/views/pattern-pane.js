@@ -144,7 +144,9 @@ export class PatternPane {
         label.append(line);
       }
       this.labels.append(label);
-      this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0) });
+      label.dataset.full = label.firstChild.textContent;
+      label.dataset.short = String(i + 1);
+      this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0), area: panelArea(panel) });
     });
     if (this.cut) {
       this.drawCutLines(this.cut.cutLines);
@@ -490,7 +492,39 @@ export class PatternPane {
       label.style.left = `${((p.x + 1) / 2) * r.width}px`;
       label.style.top = `${top + ((1 - p.y) / 2) * r.height}px`;
     }
+    this.unclutterPanelLabels();
   }
+
+  // A panel label that would overlap the label of a larger panel shows only the panel's number (its name
+  // and size are on the cut file), or nothing while even that would overlap (zooming in brings it back):
+  // small pieces crowded together stay readable.
+  unclutterPanelLabels() {
+    const kept = [];
+    const panelLabels = this.labelAnchors.filter((a) => a.area !== undefined).sort((a, b) => b.area - a.area);
+    for (const { label } of panelLabels) {
+      const compact = (on) => {
+        label.classList.toggle('compact', on);
+        label.firstChild.textContent = on ? label.dataset.short : label.dataset.full;
+        return label.getBoundingClientRect();
+      };
+      label.classList.remove('crowded');
+      let box = compact(false);
+      const hits = (b) => kept.some((k) => b.left < k.right && k.left < b.right && b.top < k.bottom && k.top < b.bottom);
+      if (hits(box)) box = compact(true);
+      if (hits(box)) label.classList.add('crowded'); // even the number: hidden until zoomed in
+      else kept.push(box);
+    }
+  }
+}
+
+// A panel's area [m^2] (its triangles').
+function panelArea(panel) {
+  let area = 0;
+  for (const [a, b, c] of panel.triangles) {
+    const [ax, ay] = panel.vertices[a], [bx, by] = panel.vertices[b], [cx, cy] = panel.vertices[c];
+    area += Math.abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) / 2;
+  }
+  return area;
 }
 
 function segmentDistance(px, py, x0, y0, x1, y1) {
