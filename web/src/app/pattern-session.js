@@ -154,7 +154,8 @@ export class PatternSession {
       ['Max wrinkling', `${(100 * result.maxCompression).toFixed(1)} %`],
       // The stress the most stressed 1 % of the surface reaches; the single highest triangle beside it.
       ['Peak stress', `${(peak / 1e6).toFixed(1)} MPa${result.maxStress > 1.5 * peak ? ` (one spot ${(result.maxStress / 1e6).toFixed(0)})` : ''}`],
-      ['Solver steps', String(result.iterations)],
+      // Optimized panels arrive in balance: no step to take, which "0" alone would not say.
+      ['Solver steps', result.iterations ? String(result.iterations) : '0 (already in balance)'],
     ];
     const internal = internalPanelRow(pattern, result);
     if (internal) rows.push(internal);
