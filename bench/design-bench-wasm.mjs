@@ -67,7 +67,7 @@ function run(entry) {
     internalPanels: pattern.panels.filter((p) => p.internal).length, remeshingSteps: last.remeshings ?? 0,
     iterations: last.iteration ?? 0, patternSeconds, previewIteration: preview?.iteration ?? -1, previewSeconds: preview?.seconds ?? 0,
     seconds, state: last.state ?? 'time limit', message: last.message ?? '',
-    flattenedDistanceRms: first.distance.rms, distanceRms: last.distance.rms, distanceMax: last.distance.max,
+    flattenedDistanceRms: last.flattenedDistanceRms ?? null, distanceRms: last.distance.rms, distanceMax: last.distance.max,
     seamMismatch: last.seamMismatch, heapMb: api.memoryStats().heapBytes / 2 ** 20,
   };
 }

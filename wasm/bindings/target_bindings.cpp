@@ -20,6 +20,7 @@
 //          built is one: code "pattern.connection", severity "error", seam) }
 //   t.startOptimization(seamsJson, optionsJson)  the same, and keeps a PatternOptimizer for:
 //   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, remeshings, distanceRms, distanceMax,
+//                                                 flattenedDistanceRms (of the flattened panels' equilibrium),
 //                                                 seamMismatch, objective }
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
@@ -137,6 +138,7 @@ class TargetSession {
         out["distanceMax"] = r.distanceMax;
         out["seamMismatch"] = r.seamMismatch;
         out["objective"] = r.objective;
+        out["flattenedDistanceRms"] = optimizer_->history().front().distanceRms;  // the flattened panels'
       }
       return out.dump();
     });
