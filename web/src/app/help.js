@@ -1,7 +1,7 @@
 // The help panel: every keyboard shortcut and how to draw with a mouse, a pen or a finger. Opened with
 // the Help button or "?"; text only through textContent.
 export const SHORTCUTS = [
-  ['V', 'View: orbit (drag), zoom (wheel or pinch), pan (right drag or two fingers)'],
+  ['V', 'View: orbit (drag; the target and inflated views turn together), zoom (wheel or pinch), pan (right drag or two fingers)'],
   ['D', 'Draw seams: click points on the target; click the first point to close a loop'],
   ['E', 'Edit seams: drag control points; double-click a seam to add a point'],
   ['Enter', 'Finish the seam being drawn (or the Finish button, for touch)'],
