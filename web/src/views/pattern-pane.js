@@ -30,6 +30,7 @@ export class PatternPane {
     this.labels.className = 'pane-labels';
     element.parentElement.append(this.labels);
     this.labelAnchors = [];
+    this.panelLabels = []; // the panel labels among them, largest panel first
     this.seamLabelAnchors = [];
     this.seams = null; // the exporter's seams of the shown pattern (setSeams)
     this.view = 'panels'; // or 'sheet'
@@ -148,6 +149,8 @@ export class PatternPane {
       label.dataset.short = String(i + 1);
       this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0), area: panelArea(panel) });
     });
+    // Larger panels keep their full labels first (unclutterPanelLabels).
+    this.panelLabels = this.labelAnchors.filter((a) => a.area !== undefined).sort((a, b) => b.area - a.area);
     if (this.cut) {
       this.drawCutLines(this.cut.cutLines);
       this.drawNotches(this.cut.notches);
@@ -452,6 +455,7 @@ export class PatternPane {
     }
     this.labels.replaceChildren();
     this.labelAnchors = [];
+    this.panelLabels = [];
   }
 
   frame(object) {
@@ -500,8 +504,8 @@ export class PatternPane {
   // small pieces crowded together stay readable.
   unclutterPanelLabels() {
     const kept = [];
-    const panelLabels = this.labelAnchors.filter((a) => a.area !== undefined).sort((a, b) => b.area - a.area);
-    for (const { label } of panelLabels) {
+    const hits = (b) => kept.some((k) => b.left < k.right && k.left < b.right && b.top < k.bottom && k.top < b.bottom);
+    for (const { label } of this.panelLabels) {
       const compact = (on) => {
         label.classList.toggle('compact', on);
         label.firstChild.textContent = on ? label.dataset.short : label.dataset.full;
@@ -509,7 +513,6 @@ export class PatternPane {
       };
       label.classList.remove('crowded');
       let box = compact(false);
-      const hits = (b) => kept.some((k) => b.left < k.right && k.left < b.right && b.top < k.bottom && k.top < b.bottom);
       if (hits(box)) box = compact(true);
       if (hits(box)) label.classList.add('crowded'); // even the number: hidden until zoomed in
       else kept.push(box);
