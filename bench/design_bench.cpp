@@ -59,6 +59,20 @@ struct BenchOptions {
 
 // Total |turning| of each panel's outline [degrees] (its first boundaryVertices rows, in order): about 360 for
 // a smooth convex outline plus its corners; a zig-zag outline turns far more.
+// How far the shape a is from the final shape b: the largest vertex move when they share the mesh; else
+// (an iterate of the coarse phase, or before a remeshing) the larger of the two one-sided largest distances
+// to the other's closest vertex.
+double shapeDistance(const Vertices& a, const Vertices& b) {
+  if (a.rows() == b.rows()) return (a - b).rowwise().norm().maxCoeff();
+  const auto oneSided = [](const Vertices& p, const Vertices& q) {
+    double worst = 0;
+    for (int i = 0; i < p.rows(); ++i)
+      worst = std::max(worst, (q.rowwise() - p.row(i)).rowwise().squaredNorm().minCoeff());
+    return std::sqrt(worst);
+  };
+  return std::max(oneSided(a, b), oneSided(b, a));
+}
+
 std::vector<double> outlineTurning(const Pattern& pattern, const BuiltPattern& built) {
   std::vector<double> out;
   for (size_t p = 0; p < pattern.panels.size(); ++p) {
@@ -98,6 +112,10 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.relativeDecrease = v;
   else if (name == "stallIterations")
     o.stallIterations = int(v);
+  else if (name == "coarseFactor")
+    o.coarseFactor = v;
+  else if (name == "coarseIterations")
+    o.coarseIterations = int(v);
   else if (name == "tolerance")
     o.inflate.tolerance = v;
   else
@@ -155,7 +173,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   int previewIteration = -1;
   double previewSeconds = 0;
   for (size_t k = 0; k < opt.shapes().size() && previewIteration < 0; ++k)
-    if ((opt.shapes()[k] - opt.inflated()).rowwise().norm().maxCoeff() < 0.05 * D)
+    if (shapeDistance(opt.shapes()[k], opt.inflated()) < 0.05 * D)
       previewIteration = history[k].iteration, previewSeconds = history[k].ms / 1000;
   int newton = 0;
   for (const auto& h : history) newton += h.equilibriumIterations;

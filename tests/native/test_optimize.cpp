@@ -495,6 +495,46 @@ TEST(Optimize, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
   EXPECT_NE(opt->state(), OptimizeState::Failed) << opt->message();
 }
 
+// OptimizeOptions::coarseFactor: the first iterations run on panels meshed at twice the edge length (about a
+// quarter of the elements), then the panels are meshed at the design's resolution from their coarse outlines
+// and the optimization goes on there; the result is at the design's resolution and sews.
+TEST(Optimize, CoarseToFineEndsAtTheDesignResolution) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 1600);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.coarseFactor = 2;
+  o.coarseIterations = 15;
+  o.maxIterations = 30;
+  o.keepShapes = true;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  const auto& h = opt.history();
+  ASSERT_EQ(opt.shapes().size(), h.size());
+  ASSERT_TRUE(h.front().coarse);
+  const auto refined = std::find_if(h.begin(), h.end(), [](const OptimizeRecord& r) { return !r.coarse; });
+  ASSERT_NE(refined, h.end()) << "the coarse phase never ended";
+  EXPECT_TRUE(refined->remeshed);
+  EXPECT_EQ(refined->iteration, o.coarseIterations);
+  for (auto k = refined; k != h.end(); ++k) EXPECT_FALSE(k->coarse);
+  const double designEdge = sewPattern(f.built.pattern).meanEdgeLength;
+  const int coarseVertices = int(opt.shapes().front().rows()), fineVertices = int(opt.inflated().rows());
+  std::printf(
+      "[figures] coarse to fine: %d -> %d vertices (mean edge %.2f mm, design %.2f mm); rms %.3f%% "
+      "flattened, %.3f%% -> %.3f%% across the refinement, %.3f%% at the end\n",
+      coarseVertices, fineVertices, 1e3 * opt.mesh().meanEdgeLength, 1e3 * designEdge, 100 * h.front().distanceRms,
+      100 * (refined - 1)->distanceRms, 100 * refined->distanceRms, 100 * h.back().distanceRms);
+  EXPECT_LT(coarseVertices, 0.4 * fineVertices);
+  EXPECT_NEAR(opt.mesh().meanEdgeLength, designEdge, 0.15 * designEdge);
+  EXPECT_EQ(opt.pattern().panels.size(), f.built.pattern.panels.size());
+  EXPECT_LT((refined - 1)->distanceRms, 0.6 * h.front().distanceRms);  // the coarse phase did its work
+  EXPECT_LT(h.back().distanceRms, 0.6 * h.front().distanceRms);
+  EXPECT_LT(h.back().seamMismatch, 1e-4);
+  EXPECT_NO_THROW(sewPattern(opt.pattern()));
+  EXPECT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+  expectObjectiveNeverRises(h);
+}
+
 // Eq. 10: the heavier the seam, the closer it stays to where it was drawn.
 TEST(Optimize, HeavySeamStaysLightSeamSlides) {
   Fixture f = makeFixture("sphere-gores.billow.json", 400);

@@ -40,7 +40,23 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
   material_.youngsModulus = built.pattern.material.youngsModulus;
   material_.thickness = built.pattern.material.thickness;
   material_.band = options.inflate.band;
+  fineEdgeLength_ = built.figures.edgeLength;
   setUp(built);
+  if (options_.coarseFactor > 1 && fineEdgeLength_ > 0) {
+    // Coarse panels from the flattened outlines; their start shape is the target, as for the flattened ones.
+    try {
+      std::vector<Vertices> inflated(pattern_.panels.size());
+      for (size_t p = 0; p < pattern_.panels.size(); ++p) {
+        inflated[p].resize(pattern_.panels[p].vertices.rows(), 3);
+        for (int v = 0; v < inflated[p].rows(); ++v) inflated[p].row(v) = x_.row(mesh_.simVertex(int(p), v));
+      }
+      RemeshedPattern coarse = remeshPattern(built, inflated, options_.coarseFactor * fineEdgeLength_);
+      setUp(coarse.built);
+      coarse_ = true;
+    } catch (const Error&) {
+      setUp(built);  // no coarse phase
+    }
+  }
   timings_.setupMs = elapsedMs();
 }
 
@@ -96,7 +112,15 @@ bool PatternOptimizer::projectStart() {
   return true;
 }
 
-bool PatternOptimizer::remesh() {
+bool PatternOptimizer::refine() {
+  if (!coarse_) return false;
+  coarse_ = false;
+  if (!remesh(fineEdgeLength_)) return false;
+  windowStart_ = -1;
+  return true;
+}
+
+bool PatternOptimizer::remesh(double h) {
   const double t0 = nowMs();
   BuiltPattern current = built_;
   current.pattern = pattern_;
@@ -107,7 +131,7 @@ bool PatternOptimizer::remesh() {
   }
   RemeshedPattern remeshed;
   try {
-    remeshed = remeshPattern(current, inflated, built_.figures.edgeLength);
+    remeshed = remeshPattern(current, inflated, h);
   } catch (const Error&) {
     return false;  // an outline that no longer bounds a simple polygon: go on with the old mesh
   }
@@ -242,6 +266,7 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
   const double norm = double(objective_->numVertices()) * D;
   r.gradient = g_.size() ? g_.lpNorm<Eigen::Infinity>() * norm / 2 : 0;
   r.stepLength = alpha, r.equilibriumIterations = newton, r.ms = elapsedMs(), r.projected = projected;
+  r.coarse = coarse_;
   history_.push_back(r);
   if (options_.keepShapes) shapes_.push_back(x_);
 }
@@ -366,11 +391,14 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     record(0, newton, false);
   }
   for (int k = 0; k < maxIterations; ++k) {
+    if (coarse_ && iteration_ >= options_.coarseIterations && refine()) continue;
     if (history_.back().gradient < options_.gradientTolerance) {
+      if (refine()) continue;
       finish(OptimizeState::Converged, "");
       break;
     }
     if (stalled_ >= options_.stallIterations) {
+      if (refine()) continue;
       finish(OptimizeState::Converged, "the objective stopped decreasing");
       break;
     }
@@ -379,6 +407,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       if (iteration_ - windowStart_ >= options_.windowIterations) {
         const double moved = (x_ - windowX_).rowwise().norm().maxCoeff();
         if (moved < options_.windowMove * objective_->modelSize()) {
+          if (refine()) continue;
           finish(OptimizeState::Converged, "the shape stopped changing");
           break;
         }
@@ -386,15 +415,17 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       }
     }
     if (iteration_ >= options_.maxIterations) {
+      if (refine()) continue;
       finish(OptimizeState::Stopped, "the iteration limit was reached");
       break;
     }
     if (options_.maxMillis > 0 && elapsedMs() > options_.maxMillis) {
+      if (refine()) continue;  // the result is at the design's resolution, even when late
       finish(OptimizeState::Stopped, "the time limit was reached");
       break;
     }
     if (options_.remeshBelowAngleDeg > 0 && timings_.remeshings < options_.maxRemeshings &&
-        minPanelAngleDeg(pattern_) < options_.remeshBelowAngleDeg && remesh())
+        minPanelAngleDeg(pattern_) < options_.remeshBelowAngleDeg && remesh(built_.figures.edgeLength))
       continue;
     if (!iterate()) {
       if (S_.empty() && projectTrials_ && iteration_ == 0) {
@@ -405,6 +436,8 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       if (S_.empty()) {  // not even a short steepest-descent step helps: a (numerical) minimum
         if (iteration_ == 0)
           finish(OptimizeState::Stopped, "no change of the panels brings the inflated shape closer to the target");
+        else if (refine())
+          continue;
         else
           finish(OptimizeState::Converged, "no further decrease along the gradient");
         break;

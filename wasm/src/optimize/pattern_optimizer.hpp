@@ -65,6 +65,12 @@ struct OptimizeOptions {
   // 800 elements: 1.6 % RMS after 120 iterations with remeshing at 5 degrees, 0.44 % without).
   double remeshBelowAngleDeg = 0;
   int maxRemeshings = 10;
+  // Coarse to fine (> 1: on): the panels are first meshed again at coarseFactor x the design's edge length
+  // (about 1 / coarseFactor^2 of the elements, each iteration that much cheaper) and optimized there until a
+  // stopping rule ends that phase or after coarseIterations; then they are meshed at the design's resolution
+  // from the coarse panels' outlines (pattern/remesh_pattern.hpp) and the optimization goes on there.
+  double coarseFactor = 1;
+  int coarseIterations = 100;
   // An unstable equilibrium (E(X) jumps: see PatternOptimizer::resettle) is left for the one the balloon
   // snaps into at most this many times (0: the optimizer stops there instead).
   int maxResettlings = 10;
@@ -85,6 +91,7 @@ struct OptimizeRecord {
   double ms = 0;                            // since the optimizer was made
   bool projected = false;                   // the final seam-length projection (not an L-BFGS step)
   bool remeshed = false;                    // the panels were meshed again (not an L-BFGS step)
+  bool coarse = false;                      // an iterate of the coarse phase (OptimizeOptions::coarseFactor)
   // The inflated shape snapped to another equilibrium of the same panels (not an L-BFGS step; the objective
   // may rise): the one it was in proved unstable (see PatternOptimizer::resettle).
   bool resettled = false;
@@ -136,7 +143,10 @@ class PatternOptimizer {
   bool projectStart();
   // Meshes the panels again from their current outlines (options.remeshBelowAngleDeg) and solves the new
   // equilibrium; false (the old mesh kept) when that fails.
-  bool remesh();
+  bool remesh(double h);
+  // Ends the coarse phase (OptimizeOptions::coarseFactor): the panels meshed at the design's resolution.
+  // False when there was none (or the fine mesh failed: the coarse one is kept).
+  bool refine();
   bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton);
   void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
   // The gradient in the optimization variables (the boundary rows with options.interiorFollowsBoundary).
@@ -181,6 +191,8 @@ class PatternOptimizer {
   bool started_ = false;
   Vertices windowX_;            // x at the start of the current window (options.windowIterations)
   int windowStart_ = -1;        // its iteration
+  bool coarse_ = false;         // in the coarse phase (OptimizeOptions::coarseFactor)
+  double fineEdgeLength_ = 0;   // the design's edge length [m]
   bool projectTrials_ = false;  // options.projectEveryStep, unless projecting the flattened panels folds them
   double start_ = 0;            // steady-clock ms at construction
 };
