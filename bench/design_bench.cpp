@@ -57,8 +57,6 @@ struct BenchOptions {
   std::string outDir;  // non-empty: the optimized pattern of each design is written there (NAME.pattern.json)
 };
 
-// Total |turning| of each panel's outline [degrees] (its first boundaryVertices rows, in order): about 360 for
-// a smooth convex outline plus its corners; a zig-zag outline turns far more.
 // How far the shape a is from the final shape b: the largest vertex move when they share the mesh; else
 // (an iterate of the coarse phase, or before a remeshing) the larger of the two one-sided largest distances
 // to the other's closest vertex.
@@ -73,6 +71,8 @@ double shapeDistance(const Vertices& a, const Vertices& b) {
   return std::max(oneSided(a, b), oneSided(b, a));
 }
 
+// Total |turning| of each panel's outline [degrees] (its first boundaryVertices rows, in order): about 360 for
+// a smooth convex outline plus its corners; a zig-zag outline turns far more.
 std::vector<double> outlineTurning(const Pattern& pattern, const BuiltPattern& built) {
   std::vector<double> out;
   for (size_t p = 0; p < pattern.panels.size(); ++p) {

@@ -45,12 +45,7 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
   if (options_.coarseFactor > 1 && fineEdgeLength_ > 0) {
     // Coarse panels from the flattened outlines; their start shape is the target, as for the flattened ones.
     try {
-      std::vector<Vertices> inflated(pattern_.panels.size());
-      for (size_t p = 0; p < pattern_.panels.size(); ++p) {
-        inflated[p].resize(pattern_.panels[p].vertices.rows(), 3);
-        for (int v = 0; v < inflated[p].rows(); ++v) inflated[p].row(v) = x_.row(mesh_.simVertex(int(p), v));
-      }
-      RemeshedPattern coarse = remeshPattern(built, inflated, options_.coarseFactor * fineEdgeLength_);
+      RemeshedPattern coarse = remeshPattern(built, panelInflated(), options_.coarseFactor * fineEdgeLength_);
       setUp(coarse.built);
       coarse_ = true;
     } catch (const Error&) {
@@ -112,6 +107,15 @@ bool PatternOptimizer::projectStart() {
   return true;
 }
 
+std::vector<Vertices> PatternOptimizer::panelInflated() const {
+  std::vector<Vertices> inflated(pattern_.panels.size());
+  for (size_t p = 0; p < pattern_.panels.size(); ++p) {
+    inflated[p].resize(pattern_.panels[p].vertices.rows(), 3);
+    for (int v = 0; v < inflated[p].rows(); ++v) inflated[p].row(v) = x_.row(mesh_.simVertex(int(p), v));
+  }
+  return inflated;
+}
+
 bool PatternOptimizer::refine() {
   if (!coarse_) return false;
   coarse_ = false;
@@ -124,11 +128,7 @@ bool PatternOptimizer::remesh(double h) {
   const double t0 = nowMs();
   BuiltPattern current = built_;
   current.pattern = pattern_;
-  std::vector<Vertices> inflated(pattern_.panels.size());
-  for (size_t p = 0; p < pattern_.panels.size(); ++p) {
-    inflated[p].resize(pattern_.panels[p].vertices.rows(), 3);
-    for (int v = 0; v < inflated[p].rows(); ++v) inflated[p].row(v) = x_.row(mesh_.simVertex(int(p), v));
-  }
+  const std::vector<Vertices> inflated = panelInflated();
   RemeshedPattern remeshed;
   try {
     remeshed = remeshPattern(current, inflated, h);

@@ -144,6 +144,8 @@ class PatternOptimizer {
   // Meshes the panels again from their current outlines (options.remeshBelowAngleDeg) and solves the new
   // equilibrium; false (the old mesh kept) when that fails.
   bool remesh(double h);
+  // Per panel, the current inflated position x of each panel vertex (what remeshPattern carries over).
+  std::vector<Vertices> panelInflated() const;
   // Ends the coarse phase (OptimizeOptions::coarseFactor): the panels meshed at the design's resolution.
   // False when there was none (or the fine mesh failed: the coarse one is kept).
   bool refine();
