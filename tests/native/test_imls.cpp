@@ -81,3 +81,120 @@ TEST(Imls, GradientMatchesFiniteDifferences) {
   EXPECT_GT(blended, 5);
   EXPECT_GT(outside, 5);
 }
+
+namespace {
+
+// Eq. 9 summed over every target vertex, as in the header (no grid): the reference for the grid's search.
+struct BruteForceImls {
+  const TriMesh& T;
+  const Vertices& normals;
+  double h;
+  std::vector<double> bias;
+
+  BruteForceImls(const TriMesh& target, const ImlsDistance& imls)
+      : T(target), normals(imls.vertexNormals()), h(imls.supportRadius()), bias(target.numVertices(), 0.0) {
+    std::vector<double> b(T.numVertices(), 0.0);
+    for (int v = 0; v < T.numVertices(); ++v) {
+      double S = 0;
+      Eigen::Vector3d g;
+      b[v] = eval(T.V.row(v).transpose(), &S, &g);
+    }
+    bias = b;
+  }
+  // d (0 when no kernel reaches x); S = sum phi and grad = dd/dx.
+  double eval(const Eigen::Vector3d& x, double* S, Eigen::Vector3d* grad) const {
+    double N = 0, D = 0;
+    Eigen::Vector3d gN = Eigen::Vector3d::Zero(), gD = Eigen::Vector3d::Zero();
+    for (int v = 0; v < T.numVertices(); ++v) {
+      const Eigen::Vector3d r = x - T.V.row(v).transpose(), n = normals.row(v).transpose();
+      const double s = 1 - r.squaredNorm() / (h * h);
+      if (s <= 0) continue;
+      const double phi = std::pow(s, 4), nr = n.dot(r) - bias[v];
+      const Eigen::Vector3d gphi = -8 * std::pow(s, 3) / (h * h) * r;
+      N += nr * phi, D += phi, gN += phi * n + nr * gphi, gD += gphi;
+    }
+    *S = D;
+    if (D <= 0) return 0;
+    *grad = (gN - N / D * gD) / D;
+    return N / D;
+  }
+};
+
+// Random points within 1.5 h of the target's vertices, and the vertices themselves.
+std::vector<Eigen::Vector3d> samplesNear(const TriMesh& T, double h, int count, unsigned seed) {
+  std::mt19937 rng(seed);
+  std::uniform_int_distribution<int> vertex(0, T.numVertices() - 1);
+  std::uniform_real_distribution<double> u(-1.5 * h, 1.5 * h);
+  std::vector<Eigen::Vector3d> out;
+  for (int k = 0; k < count; ++k) {
+    const Eigen::Vector3d c = T.V.row(vertex(rng)).transpose();
+    out.push_back(k % 10 == 0 ? c : Eigen::Vector3d(c + Eigen::Vector3d(u(rng), u(rng), u(rng))));
+  }
+  return out;
+}
+
+void expectMatchesBruteForce(const TriMesh& T) {
+  const ImlsDistance imls(T);
+  const BruteForceImls reference(T, imls);
+  const double h = imls.supportRadius();
+  int reached = 0;
+  for (const Eigen::Vector3d& x : samplesNear(T, h, 400, 3)) {
+    double S0 = 0, d = 0, S = 0;
+    Eigen::Vector3d g0 = Eigen::Vector3d::Zero(), g, gS;
+    const double d0 = reference.eval(x, &S0, &g0);
+    const bool inside = imls.imls(x, &d, &g, &S, &gS);
+    ASSERT_EQ(inside, S0 > 0);
+    EXPECT_NEAR(S, S0, 1e-12 * S0);
+    if (!inside) continue;
+    ++reached;
+    // The sums run in another order: round-off only.
+    EXPECT_NEAR(d, d0, 1e-12 * h);
+    EXPECT_NEAR((g - g0).norm(), 0, 1e-9 * (1 + g0.norm()));
+    // Without gradients, the same value to the bit.
+    double d1 = 0, S1 = 0;
+    EXPECT_TRUE(imls.imls(x, &d1, nullptr, &S1));
+    EXPECT_EQ(d1, d);
+    EXPECT_EQ(S1, S);
+    EXPECT_EQ(imls.distance(x), imls.distance(x, &g));
+  }
+  EXPECT_GT(reached, 300);
+}
+
+// A thin tube lying along the diagonal: its bounding box holds far more cells of size h than it has
+// vertices, so the grid takes coarser cells.
+TriMesh diagonalTube(int segments) {
+  const int around = 8;
+  const double e = 0.01, radius = around * e / (2 * M_PI);
+  const Eigen::Vector3d axis = Eigen::Vector3d::Ones().normalized(),
+                        u = axis.cross(Eigen::Vector3d::UnitX()).normalized(), w = axis.cross(u);
+  TriMesh m;
+  m.V.resize((segments + 1) * around, 3);
+  m.F.resize(2 * segments * around, 3);
+  for (int s = 0; s <= segments; ++s)
+    for (int a = 0; a < around; ++a) {
+      const double t = 2 * M_PI * a / around;
+      m.V.row(s * around + a) = (s * e * axis + radius * (std::cos(t) * u + std::sin(t) * w)).transpose();
+    }
+  for (int s = 0; s < segments; ++s)
+    for (int a = 0; a < around; ++a) {
+      const int p = s * around + a, q = s * around + (a + 1) % around;
+      m.F.row(2 * (s * around + a)) << p, q, q + around;
+      m.F.row(2 * (s * around + a) + 1) << p, q + around, p + around;
+    }
+  return m;
+}
+
+}  // namespace
+
+TEST(Imls, GridFindsEveryKernel) { expectMatchesBruteForce(sphere()); }
+
+TEST(Imls, GridFindsEveryKernelWithCoarseCells) { expectMatchesBruteForce(diagonalTube(150)); }
+
+TEST(Imls, NoKernelReachesFarOrNonFinitePoints) {
+  const ImlsDistance imls(sphere());
+  double d = 0, S = 1;
+  EXPECT_FALSE(imls.imls(Eigen::Vector3d(1e30, 0, 0), &d, nullptr, &S));
+  EXPECT_EQ(S, 0);
+  EXPECT_FALSE(imls.imls(Eigen::Vector3d(NAN, 0, 0), &d, nullptr, &S));
+  EXPECT_FALSE(imls.imls(Eigen::Vector3d(0, -INFINITY, 0), &d, nullptr, &S));
+}

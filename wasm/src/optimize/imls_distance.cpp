@@ -1,5 +1,6 @@
 #include "optimize/imls_distance.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "util/error.hpp"
@@ -27,52 +28,115 @@ ImlsDistance::ImlsDistance(const TriMesh& target, const ImlsOptions& options)
   }
   h_ = options.supportScale * edgeSum / (3.0 * T.numTriangles());
   origin_ = T.V.colwise().minCoeff().transpose();
+  // Cells of size h, the 27 around a query's holding every kernel within h. A long, thin target lying
+  // diagonally would need ~(#V / 20)^3 of them: coarser cells bound them by ~8 #V.
+  const Eigen::Vector3d extent = T.V.colwise().maxCoeff().transpose() - origin_;
+  const auto cells = [&](double size) { return ((extent / size).array().floor() + 1).prod(); };
+  cell_ = h_;
+  if (!(cells(cell_) < INFINITY)) cell_ = INFINITY;  // degenerate (h = 0): one cell, not an endless loop
+  while (cells(cell_) > 8.0 * T.numVertices() + 4096) cell_ *= 1.25;
+  std::vector<Eigen::Vector3i> ijk(T.numVertices());
   for (int v = 0; v < T.numVertices(); ++v) {
-    const Eigen::Vector3d q = (T.V.row(v).transpose() - origin_) / h_;
-    grid_[cellKey(int(std::floor(q.x())), int(std::floor(q.y())), int(std::floor(q.z())))].push_back(v);
-  }
-  bias_ = Eigen::VectorXd::Zero(T.numVertices());
-  if (options.correctBias) {
-    Eigen::VectorXd b(T.numVertices());
-    for (int v = 0; v < T.numVertices(); ++v) {
-      double d = 0, S = 0;
-      b[v] = imls(T.V.row(v).transpose(), &d, nullptr, &S) ? d : 0;
+    const Eigen::Vector3d q = (T.V.row(v).transpose() - origin_) / cell_;
+    for (int a = 0; a < 3; ++a) {
+      ijk[v][a] = int(std::floor(std::max(0.0, q[a])));  // max: NaN to 0
+      dims_[a] = std::max(dims_[a], ijk[v][a] + 1);
     }
-    bias_ = b;
+  }
+  // Counting sort by cell, stable: vertex ids ascend within a cell.
+  std::vector<int> cellOf(T.numVertices());
+  cellStart_.assign(size_t(dims_[0]) * dims_[1] * dims_[2] + 1, 0);
+  for (int v = 0; v < T.numVertices(); ++v) {
+    cellOf[v] = (ijk[v].x() * dims_[1] + ijk[v].y()) * dims_[2] + ijk[v].z();
+    ++cellStart_[cellOf[v] + 1];
+  }
+  for (size_t c = 1; c < cellStart_.size(); ++c) cellStart_[c] += cellStart_[c - 1];
+  std::vector<int> next(cellStart_.begin(), cellStart_.end() - 1), order(T.numVertices());
+  for (int v = 0; v < T.numVertices(); ++v) order[next[cellOf[v]]++] = v;
+  kernelPos_.resize(T.numVertices()), kernelNormal_.resize(T.numVertices());
+  kernelBias_.assign(T.numVertices(), 0.0);
+  for (int k = 0; k < T.numVertices(); ++k) {
+    kernelPos_[k] = T.V.row(order[k]).transpose();
+    kernelNormal_[k] = normals_.row(order[k]).transpose();
+  }
+  if (options.correctBias) {
+    std::vector<double> b(T.numVertices());
+    for (int k = 0; k < T.numVertices(); ++k) {
+      double d = 0, S = 0;
+      b[k] = imls(kernelPos_[k], &d, nullptr, &S) ? d : 0;
+    }
+    kernelBias_ = std::move(b);
   }
 }
 
 ImlsDistance::~ImlsDistance() = default;
 
-long long ImlsDistance::cellKey(int i, int j, int k) const {
-  const long long B = 1 << 20;  // cells per axis far beyond any mesh; offsets keep keys non-negative
-  return ((static_cast<long long>(i) + B / 2) * B + (j + B / 2)) * B + (k + B / 2);
+// The sums of Eq. 9 over the kernels reaching x: returns D = sum phi_k and sets N, and with Gradient their
+// gradients gN and gD (else left alone).
+template <bool Gradient>
+double ImlsDistance::accumulate(const Eigen::Vector3d& x, double& sumN, Eigen::Vector3d& sumGN,
+                                Eigen::Vector3d& sumGD) const {
+  // Local sums: through the references, they might alias the kernels and would be stored at every kernel.
+  double N = 0, D = 0;
+  Eigen::Vector3d gN = Eigen::Vector3d::Zero(), gD = Eigen::Vector3d::Zero();
+  sumN = 0;
+  // The 27 cells around x's cell hold every kernel that reaches x (cells are at least h wide).
+  const Eigen::Vector3d q = (x - origin_) / cell_;
+  // Also keeps NaN and huge coordinates out of the int conversions.
+  if (!(q.x() >= -1 && q.x() < dims_[0] + 1 && q.y() >= -1 && q.y() < dims_[1] + 1 && q.z() >= -1 &&
+        q.z() < dims_[2] + 1))
+    return 0;
+  const int ci = int(std::floor(q.x())), cj = int(std::floor(q.y())), ck = int(std::floor(q.z()));
+  const int i0 = std::max(ci - 1, 0), i1 = std::min(ci + 1, dims_[0] - 1);
+  const int j0 = std::max(cj - 1, 0), j1 = std::min(cj + 1, dims_[1] - 1);
+  const int k0 = std::max(ck - 1, 0), k1 = std::min(ck + 1, dims_[2] - 1);
+  const double h2 = h_ * h_;
+  // Two passes: the kernels within h are gathered first, without a branch per kernel (about two thirds of
+  // those visited are farther, at random: mispredictions), then summed, in the same order.
+  constexpr int kBatch = 128;
+  int near[kBatch];
+  double nearR2[kBatch];
+  int m = 0;
+  const auto sum = [&] {
+    for (int t = 0; t < m; ++t) {
+      const int v = near[t];
+      const Eigen::Vector3d r = x - kernelPos_[v];
+      const double s = 1 - nearR2[t] / h2;
+      if (s <= 0) continue;
+      const double s3 = s * s * s, phi = s3 * s;
+      const Eigen::Vector3d& n = kernelNormal_[v];
+      const double nr = n.dot(r) - kernelBias_[v];
+      N += nr * phi, D += phi;
+      if constexpr (Gradient) {
+        const Eigen::Vector3d gphi = (-8.0 * s3 / h2) * r;  // d phi / dx
+        gN += phi * n + nr * gphi, gD += gphi;
+      }
+    }
+    m = 0;
+  };
+  for (int i = i0; i <= i1; ++i)
+    for (int j = j0; j <= j1; ++j) {
+      // A column's cells k0..k1: one contiguous run of kernels.
+      const int column = (i * dims_[1] + j) * dims_[2], end = cellStart_[column + k1 + 1];
+      for (int v = cellStart_[column + k0]; v < end; ++v) {
+        if (m == kBatch) sum();
+        const Eigen::Vector3d r = x - kernelPos_[v];
+        const double r2 = r.squaredNorm();
+        near[m] = v, nearR2[m] = r2;
+        m += r2 < h2;  // else s <= 0
+      }
+    }
+  sum();
+  sumN = N;
+  if constexpr (Gradient) sumGN = gN, sumGD = gD;
+  return D;
 }
 
 bool ImlsDistance::imls(const Eigen::Vector3d& x, double* d, Eigen::Vector3d* grad, double* weightSum,
                         Eigen::Vector3d* weightSumGrad) const {
-  const Eigen::Vector3d q = (x - origin_) / h_;
-  const int ci = int(std::floor(q.x())), cj = int(std::floor(q.y())), ck = int(std::floor(q.z()));
-  const double h2 = h_ * h_;
-  double N = 0, D = 0;  // numerator and denominator of Eq. 9
+  double N = 0;  // numerator and denominator of Eq. 9
   Eigen::Vector3d gN = Eigen::Vector3d::Zero(), gD = Eigen::Vector3d::Zero();
-  for (int i = ci - 1; i <= ci + 1; ++i)
-    for (int j = cj - 1; j <= cj + 1; ++j)
-      for (int k = ck - 1; k <= ck + 1; ++k) {
-        const auto it = grid_.find(cellKey(i, j, k));
-        if (it == grid_.end()) continue;
-        for (int v : it->second) {
-          const Eigen::Vector3d r = x - target_->V.row(v).transpose();
-          const double s = 1 - r.squaredNorm() / h2;
-          if (s <= 0) continue;
-          const double s3 = s * s * s, phi = s3 * s;
-          const Eigen::Vector3d gphi = (-8.0 * s3 / h2) * r;  // d phi / dx
-          const Eigen::Vector3d n = normals_.row(v).transpose();
-          const double nr = n.dot(r) - bias_[v];
-          N += nr * phi, D += phi;
-          gN += phi * n + nr * gphi, gD += gphi;
-        }
-      }
+  const double D = grad || weightSumGrad ? accumulate<true>(x, N, gN, gD) : accumulate<false>(x, N, gN, gD);
   *weightSum = D;
   if (D <= 0) return false;
   *d = N / D;
@@ -105,13 +169,14 @@ double ImlsDistance::closestDistance(const Eigen::Vector3d& x) const {
 double ImlsDistance::distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad) const {
   double dI = 0, S = 0;
   Eigen::Vector3d gI = Eigen::Vector3d::Zero(), gS = Eigen::Vector3d::Zero();
-  const bool inside = imls(x, &dI, &gI, &S, &gS);
+  // Without grad, no gradients at all (the optimizer's energy-only evaluations).
+  const bool inside = imls(x, &dI, grad ? &gI : nullptr, &S, grad ? &gS : nullptr);
   if (inside && S >= blend_) {
     if (grad) *grad = gI;
     return dI;
   }
   Eigen::Vector3d gF;
-  const double dF = fallback(x, &gF);
+  const double dF = fallback(x, grad ? &gF : nullptr);
   if (!inside) {
     if (grad) *grad = gF;
     return dF;

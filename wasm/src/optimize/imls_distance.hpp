@@ -2,7 +2,9 @@
 // DESIGN.md "Pattern optimization"):
 //     d(x) = sum_k n_k . (x - c_k) phi_k(x) / sum_k phi_k(x),   phi_k(x) = (1 - |x - c_k|^2 / h^2)^4,
 // c_k the target vertices, n_k their area-weighted unit normals, h = supportScale x mean target edge length.
-// Kernel neighbours come from a uniform grid of cell size h (27 cells per query).
+// Kernel neighbours come from a dense uniform grid of cell size h (coarser for a very long, thin target)
+// over the target's bounding box, the kernels stored contiguously cell by cell: 27 cells per query, read
+// as 9 runs of kernels.
 // Curvature bias: with point normals, Eq. 9 on a surface of radius R reads about -E[rho^2] / (2R) (the
 // neighbours c_k fall below the tangent plane), ~0.8 % of R at h = 2 edges on a 1280-triangle sphere. With
 // correctBias the numerator uses n_k . (x - c_k) - b_k, b_k the uncorrected d(c_k): d then vanishes at
@@ -13,7 +15,6 @@
 #pragma once
 #include <Eigen/Core>
 #include <memory>
-#include <unordered_map>
 #include <vector>
 
 #include "mesh/tri_mesh.hpp"
@@ -37,7 +38,8 @@ class ImlsDistance {
   double distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad = nullptr) const;
 
   // The IMLS part alone (no fallback): false when no kernel reaches x. weightSum = sum phi_k(x) and, when
-  // given, weightSumGrad its gradient (for the blend).
+  // given, weightSumGrad its gradient (for the blend). Gradients are only accumulated when grad or
+  // weightSumGrad is given; d is the same either way.
   bool imls(const Eigen::Vector3d& x, double* d, Eigen::Vector3d* grad, double* weightSum,
             Eigen::Vector3d* weightSumGrad = nullptr) const;
   // The fallback alone: +-|x - p|, p the closest target point, signed by the side of its face.
@@ -51,15 +53,22 @@ class ImlsDistance {
   const Vertices& vertexNormals() const { return normals_; }
 
  private:
-  long long cellKey(int i, int j, int k) const;
+  template <bool Gradient>
+  double accumulate(const Eigen::Vector3d& x, double& N, Eigen::Vector3d& gN, Eigen::Vector3d& gD) const;
   std::unique_ptr<TriMesh> target_;
   std::unique_ptr<SurfaceProjector> projector_;
   Vertices normals_;  // #V by 3, unit, area-weighted
   Vertices faceNormals_;
-  Eigen::VectorXd bias_;  // b_k, zero when !correctBias
   double h_ = 0, blend_ = 0.05;
+  // The grid: cell (i, j, k) of size cell_ from origin_ holds kernels cellStart_[c] .. cellStart_[c + 1] - 1,
+  // c = (i dims_[1] + j) dims_[2] + k, so a column's cells k0..k1 are one contiguous run. Kernels in cell
+  // order, within a cell by vertex id: the sums run (and round) as in a plain loop over the 27 cells.
   Eigen::Vector3d origin_ = Eigen::Vector3d::Zero();
-  std::unordered_map<long long, std::vector<int>> grid_;
+  double cell_ = 0;
+  int dims_[3] = {0, 0, 0};
+  std::vector<int> cellStart_;
+  std::vector<Eigen::Vector3d> kernelPos_, kernelNormal_;  // c_k, n_k
+  std::vector<double> kernelBias_;                         // b_k, zero when !correctBias
 };
 
 }  // namespace billow
