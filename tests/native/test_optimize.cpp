@@ -318,10 +318,12 @@ struct OptimizeRun {
   double previewMs = 0;
   int iterations = 0, resettlings = 0;
   std::string message;
+  CutPanelsCheck cut;  // when asked for: the final outlines meshed anew and inflated
 };
 
 // Runs until the optimizer ends (or maxIterations, checked every 5).
-OptimizeRun optimize(const Fixture& f, const OptimizeOptions& o, int maxIterations = std::numeric_limits<int>::max()) {
+OptimizeRun optimize(const Fixture& f, const OptimizeOptions& o, int maxIterations = std::numeric_limits<int>::max(),
+                     bool checkCut = false) {
   const auto t0 = std::chrono::steady_clock::now();
   PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
   while (opt.step(5, 500) == OptimizeState::Running && opt.iterations() < maxIterations) {
@@ -329,6 +331,7 @@ OptimizeRun optimize(const Fixture& f, const OptimizeOptions& o, int maxIteratio
   OptimizeRun r;
   r.history = opt.history(), r.state = opt.state(), r.x = opt.inflated(), r.pattern = opt.pattern();
   r.iterations = opt.iterations(), r.resettlings = opt.timings().resettlings, r.message = opt.message();
+  if (checkCut) r.cut = opt.checkCutPanels();
   r.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   const double D = opt.objective().modelSize();
   for (size_t k = 0; k < opt.shapes().size() && r.previewIteration < 0; ++k)
@@ -350,13 +353,18 @@ void expectObjectiveNeverRises(const std::vector<OptimizeRecord>& h, double rela
 
 }  // namespace
 
+// The optimizer's variables are the panels' outlines; the interior follows them (interiorFollowsBoundary, the
+// default), so what the optimizer shows is what the cut panels give: their outlines meshed anew and inflated
+// land within a few percent of the optimizer's own figure. With free interior vertices the optimizer reports
+// far less than that: it also gains from where it puts interior vertices, which a cut panel does not have
+// (bench/README.md, session 9: 0.52 % reported against 2.66 % cut, sphere3 at 1k).
 TEST(Optimize, ThreeGoreSphereGetsMuchCloser) {
   const Fixture f = makeFixture("sphere-gores.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
   o.maxIterations = 90;
   o.keepShapes = true;
-  const OptimizeRun r = optimize(f, o, 90);
+  const OptimizeRun r = optimize(f, o, 90, true);
   std::printf(
       "[figures] three-gore sphere: preview quality (within 5 %% of the diagonal of the final shape) at "
       "iteration %d, %.0f ms\n",
@@ -372,12 +380,16 @@ TEST(Optimize, ThreeGoreSphereGetsMuchCloser) {
         h.equilibriumIterations, h.ms);
   std::printf(
       "[figures] three-gore sphere (%d triangles): distance rms %.3f%% -> %.3f%% of the diagonal (factor %.1f), "
-      "max %.3f%% -> %.3f%%, %zu records, %s, %.0f ms\n",
+      "max %.3f%% -> %.3f%%, %zu records, %s, %.0f ms; cut panels %.3f%% (%d elements)\n",
       f.built.figures.triangles, 100 * first.distanceRms, 100 * last.distanceRms, first.distanceRms / last.distanceRms,
-      100 * first.distanceMax, 100 * last.distanceMax, r.history.size(), toString(r.state), r.ms);
-  EXPECT_GT(first.distanceRms / last.distanceRms, 4.0);
+      100 * first.distanceMax, 100 * last.distanceMax, r.history.size(), toString(r.state), r.ms,
+      100 * r.cut.distanceRms, r.cut.elements);
+  EXPECT_GT(first.distanceRms / last.distanceRms, 2.5);  // 5.8 % -> 1.96 %: three gores on fixed meridians
   EXPECT_LT(last.seamMismatch, 1e-4);
   expectObjectiveNeverRises(r.history);
+  ASSERT_TRUE(r.cut.ok) << r.cut.message;
+  EXPECT_NEAR(r.cut.distanceRms, last.distanceRms, 0.1 * last.distanceRms);
+  EXPECT_LT(r.cut.distanceRms, 0.5 * first.distanceRms);
 }
 
 // The gallery's first fish: an internal panel in the middle plane between the back and belly seams. The
@@ -424,15 +436,19 @@ TEST(Optimize, UnstableEquilibriumIsResettledNotTheEnd) {
   expectObjectiveNeverRises(h, 1e-12);
 }
 
-// Issue 5: on the gallery's three-gore sphere the optimizer used to stop after a few dozen iterations at
-// 1.5-3.4 % RMS: rest triangles collapsed (the fixed-weight E_target paid vertices to crowd where the shape was
-// close) until the fold check refused every step. Now it goes on, keeps its triangles, and gets well below 1 %.
+// Issue 5, free interior vertices (interiorFollowsBoundary = false): on the gallery's three-gore sphere the
+// optimizer used to stop after a few dozen iterations at 1.5-3.4 % RMS: rest triangles collapsed (the
+// fixed-weight E_target paid vertices to crowd where the shape was close) until the fold check refused every
+// step. Now it goes on, keeps its triangles, and gets well below 1 %: of the optimizer's own mesh. The cut
+// panels (the final outlines meshed anew and inflated) stay far above that: free interior vertices fit the
+// mesh, not the panels, which is why the outlines are the variables by default (ThreeGoreSphereGetsMuchCloser).
 TEST(Optimize, GallerySphereGoesOnBelowOnePercent) {
   const Fixture f = makeFixture("../../web/public/gallery/sphere3.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
+  o.interiorFollowsBoundary = false;
   o.maxIterations = 120;
-  const OptimizeRun r = optimize(f, o, 120);
+  const OptimizeRun r = optimize(f, o, 120, true);
   const OptimizeRecord &first = r.history.front(), &last = r.history.back();
   double quality = 1;  // smallest 2 area / longest edge^2 over the rest triangles (0.87 equilateral)
   for (const Panel& panel : r.pattern.panels)
@@ -446,13 +462,15 @@ TEST(Optimize, GallerySphereGoesOnBelowOnePercent) {
     }
   std::printf(
       "[figures] gallery sphere3 (%d elements): rms %.3f%% -> %.3f%%, max %.3f%% -> %.3f%%, %d iterations, %s, "
-      "%.0f ms, smallest triangle quality %.3f\n",
+      "%.0f ms, smallest triangle quality %.3f; cut panels %.3f%%\n",
       f.built.figures.triangles, 100 * first.distanceRms, 100 * last.distanceRms, 100 * first.distanceMax,
-      100 * last.distanceMax, last.iteration, toString(r.state), r.ms, quality);
+      100 * last.distanceMax, last.iteration, toString(r.state), r.ms, quality, 100 * r.cut.distanceRms);
   EXPECT_GE(last.iteration, 100) << "stopped early";
   EXPECT_LT(last.distanceRms, 0.008);
   EXPECT_GT(quality, 1e-3);
   EXPECT_LT(last.seamMismatch, 1e-4);
+  ASSERT_TRUE(r.cut.ok) << r.cut.message;
+  EXPECT_GT(r.cut.distanceRms, 2 * last.distanceRms);
 }
 
 // Sec. 5.3: rest triangles degrade as the optimizer moves the panels; below 10 degrees the panels are meshed
@@ -463,6 +481,7 @@ TEST(Optimize, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
   ASSERT_TRUE(f.built.ok());
   const auto run = [&](double belowAngle, double* leastAngle) {
     OptimizeOptions o;
+    o.interiorFollowsBoundary = false;  // a harmonic interior keeps its triangles (smallest angle ~37 degrees)
     o.remeshBelowAngleDeg = belowAngle;
     o.maxIterations = 40;
     auto opt = std::make_unique<PatternOptimizer>(f.scene->target, f.built, f.weights, o);

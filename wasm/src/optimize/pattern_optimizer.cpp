@@ -162,6 +162,33 @@ bool PatternOptimizer::remesh(double h) {
 
 PatternOptimizer::~PatternOptimizer() = default;
 
+CutPanelsCheck PatternOptimizer::checkCutPanels(double h) const {
+  const double t0 = nowMs();
+  CutPanelsCheck out;
+  BuiltPattern current = built_;
+  current.pattern = pattern_;
+  try {
+    const RemeshedPattern remeshed = remeshPattern(current, panelInflated(), h > 0 ? h : fineEdgeLength_);
+    OptimizeOptions settle = options_;
+    settle.maxIterations = 0, settle.keepShapes = false, settle.coarseFactor = 1, settle.maxMillis = 0;
+    PatternOptimizer check(imls_->target(), remeshed.built, seamWeights_, settle);
+    while (check.step(1) == OptimizeState::Running) {
+    }
+    out.elements = check.mesh().numTriangles();
+    if (check.state() == OptimizeState::Failed || check.history().empty()) {
+      out.message = check.message().empty() ? "the cut panels do not settle under pressure" : check.message();
+    } else {
+      out.ok = true;
+      out.distanceRms = check.history().back().distanceRms;
+      out.distanceMax = check.history().back().distanceMax;
+    }
+  } catch (const Error& e) {
+    out.message = e.what();
+  }
+  out.ms = nowMs() - t0;
+  return out;
+}
+
 double PatternOptimizer::elapsedMs() const { return nowMs() - start_; }
 
 bool PatternOptimizer::rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) const {

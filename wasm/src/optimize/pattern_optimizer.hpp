@@ -6,9 +6,10 @@
 // with a backtracking Armijo line search that re-solves equilibrium for every trial (so the objective of
 // every accepted step is the true E(x(X), X) and decreases monotonically). Trial patterns with a flipped or
 // degenerate rest triangle, a failed equilibrium, or a non-finite value are rejected; the last good state
-// is never lost. Null spaces: each panel's 2D rigid motion leaves E unchanged (its gradient has no
-// component there, so L-BFGS never moves along it); interior sliding is held by E_laplace (Eq. 13) and
-// E_quality, and E_target weighs by current areas so sliding does not pay (objectives.hpp).
+// is never lost. The variables are the panel outlines, the interior follows them (interiorFollowsBoundary).
+// Null spaces: each panel's 2D rigid motion leaves E unchanged (its gradient has no component there, so
+// L-BFGS never moves along it); with free interior vertices, interior sliding is held by E_laplace (Eq. 13)
+// and E_quality, and E_target weighs by current areas so sliding does not pay (objectives.hpp).
 // Equal seam lengths: E_length as a penalty while iterating, then an exact projection (seam_projection.hpp)
 // and one more equilibrium solve when the optimizer stops.
 #pragma once
@@ -48,11 +49,12 @@ struct OptimizeOptions {
   // (a large final projection can fold triangles, and the last shape would then not be sewable).
   bool projectEveryStep = true;
   bool keepShapes = false;  // keep x of every accepted iterate (benchmarks: preview quality)
-  // The variables are the panel boundaries and the interior follows them (harmonic_interior.hpp) instead of
-  // every pattern vertex (the paper's X, interior vertices held by E_laplace and E_quality). Faster at first
-  // but it ends in a worse minimum: the three-gore sphere stops at 2.0 % (1k) and 0.73 % (3k) RMS, where
-  // with free interior vertices E goes on falling (1k: 0.36 % after 300 iterations; bench/README.md).
-  bool interiorFollowsBoundary = false;
+  // The variables are the panel outlines and the interior follows them (harmonic_interior.hpp), as a cut panel
+  // is only its outline. With free interior vertices (false: the paper's X, held by E_laplace and E_quality)
+  // the optimizer's own RMS falls far lower, but the cut panels do not follow: it also fits where interior
+  // vertices sit, which the cut sheet does not have (checkCutPanels; sphere3 1k: 0.52 % reported, 2.66 % cut,
+  // against 1.97 % / 1.97 % with the interior following; teddy 3k: 0.27 % / 0.70 % against 0.56 % / 0.57 %).
+  bool interiorFollowsBoundary = true;
   // L-BFGS initial inverse Hessian H0 = gamma (I + b K)^-1 with K the graph Laplacian along every panel
   // outline and b = outlineSmoothing^2 (in mean edge lengths): a smoothing (Sobolev) preconditioner, so the
   // long, smooth changes of a panel's outline that move the inflated shape most are not left to the last
@@ -60,9 +62,11 @@ struct OptimizeOptions {
   double outlineSmoothing = 4;
   // Remeshing (Sec. 5.3, pattern/remesh_pattern.hpp): when the smallest angle of a rest triangle falls below
   // this [degrees], every panel is meshed again from its current outline and the optimization goes on
-  // from there (L-BFGS restarted); at most maxRemeshings times. Off (0) by default: triangles fall below
-  // 5-10 degrees within a few iterations, and the restarts cost more than they give (the gallery sphere at
-  // 800 elements: 1.6 % RMS after 120 iterations with remeshing at 5 degrees, 0.44 % without).
+  // from there (L-BFGS restarted); at most maxRemeshings times. Off (0) by default: with the interior following
+  // the outlines the triangles keep their shape (smallest angle ~37 degrees on the three-gore sphere); with
+  // free interior vertices they fall below 5-10 degrees within a few iterations, and the restarts cost more
+  // than they give (the gallery sphere at 800 elements: 1.6 % RMS after 120 iterations with remeshing at
+  // 5 degrees, 0.44 % without).
   double remeshBelowAngleDeg = 0;
   int maxRemeshings = 10;
   // Coarse to fine (> 1: on): the panels are first meshed again at coarseFactor x the design's edge length
@@ -77,6 +81,16 @@ struct OptimizeOptions {
 };
 
 enum class OptimizeState { Running, Converged, Stopped, Failed };
+
+// What the cut panels give (PatternOptimizer::checkCutPanels): a maker cuts the panels' outlines, and the sheet
+// knows nothing of the solver's interior vertices.
+struct CutPanelsCheck {
+  bool ok = false;
+  std::string message;                      // why not, when !ok
+  double distanceRms = 0, distanceMax = 0;  // as OptimizeRecord's, of the outlines meshed anew and inflated
+  int elements = 0;
+  double ms = 0;
+};
 const char* toString(OptimizeState s);
 
 struct OptimizeRecord {
@@ -127,6 +141,13 @@ class PatternOptimizer {
   const std::vector<OptimizeRecord>& history() const { return history_; }
   const std::vector<Vertices>& shapes() const { return shapes_; }  // when options.keepShapes
   const OptimizeTimings& timings() const { return timings_; }
+
+  // Meshes the current panels anew from their outlines at edge length h (<= 0: the design's), inflates them
+  // from the current shape, places them as the iterates are placed (after the exact seam-length projection)
+  // and measures their distance to the target. With free interior vertices
+  // (interiorFollowsBoundary = false) this can be far above the optimizer's own figure: the optimizer then
+  // also gains from where it puts interior vertices, which a cut panel does not have (bench/README.md).
+  CutPanelsCheck checkCutPanels(double h = 0) const;
 
   // For tests: E(x(X), X) and its reduced gradient dE/dX (every row of X, interior ones too) at pattern
   // coordinates X, solving equilibrium from the current x. Returns false when the equilibrium fails.
