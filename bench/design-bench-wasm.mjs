@@ -1,7 +1,8 @@
 // The design benchmark in wasm (Node), as the app's worker runs it (bench/README.md "Pattern optimization"):
 // per design of bench/designs/manifest.json, through the worker's handlers (web/src/worker/handlers.js),
 // so every iterate's shape and its distance to the target are computed as the app streams them.
-//   node bench/design-bench-wasm.mjs [--json] [--designs sphere3,teddy] [--max-seconds S]
+//   node bench/design-bench-wasm.mjs [--json] [--designs sphere3,teddy] [--max-seconds S] [--triangles N]
+// --triangles overrides every design's element count (quick runs), as in the native bench.
 // Needs build/wasm/billow_node.{cjs,wasm}; BILLOW_WASM_DIR overrides.
 import { readFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
@@ -16,6 +17,7 @@ const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name
 const asJson = args.includes('--json');
 const only = option('--designs', '').split(',').filter(Boolean);
 const maxSeconds = Number(option('--max-seconds', 600));
+const triangles = Number(option('--triangles', 0));
 const manifestPath = resolve(option('--manifest', join(HERE, 'designs/manifest.json')));
 const manifest = JSON.parse(readFileSync(manifestPath, 'utf8'));
 
@@ -39,7 +41,7 @@ function run(entry) {
   for (const _ of handlers.setTarget(target)); // eslint-disable-line no-unused-vars
   const seams = design.seams.map(({ points, closed, weight, name }) => ({ points, closed, weight: weight ?? 1, name }));
   const job = handlers.optimizeDesign({
-    seams, scale, triangles: entry.triangles, maxIterations: 300, pressure: design.pressure, material: design.material,
+    seams, scale, triangles: triangles > 0 ? triangles : entry.triangles, maxIterations: 300, pressure: design.pressure, material: design.material,
     connections: design.connections ?? [],
   });
   const shapes = [];
