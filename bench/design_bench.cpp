@@ -179,42 +179,39 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
       previewIteration = history[k].iteration, previewSeconds = history[k].ms / 1000;
   int newton = 0;
   for (const auto& h : history) newton += h.equilibriumIterations;
+  // Each vertex's distance to the target (relative to D), for the RMS figures below.
+  const SewnMesh& mesh = opt.mesh();
+  const Vertices& x = opt.inflated();
+  Eigen::VectorXd distance(mesh.numVertices);
+  for (int v = 0; v < mesh.numVertices; ++v)
+    distance[v] = opt.objective().imls().closestDistance(x.row(v).transpose()) / D;
   // The RMS distance weighted by the inflated surface's lumped area: unlike the per-vertex RMS it does not
   // improve when vertices crowd where the shape is close to the target.
   double areaRms = 0, area = 0;
-  {
-    const SewnMesh& m = opt.mesh();
-    const Vertices& x = opt.inflated();
-    for (int t = 0; t < m.numTriangles(); ++t) {
-      if (!m.outer[t]) continue;
-      const Eigen::Vector3d a = x.row(m.triangles(t, 0)), b = x.row(m.triangles(t, 1)), c = x.row(m.triangles(t, 2));
-      const double at = 0.5 * (b - a).cross(c - a).norm();
-      for (int k = 0; k < 3; ++k) {
-        const double d = opt.objective().imls().closestDistance(x.row(m.triangles(t, k)).transpose()) / D;
-        areaRms += at / 3 * d * d;
-      }
-      area += at;
-    }
-    areaRms = area > 0 ? std::sqrt(areaRms / area) : 0;
+  for (int t = 0; t < mesh.numTriangles(); ++t) {
+    if (!mesh.outer[t]) continue;
+    const Eigen::Vector3d a = x.row(mesh.triangles(t, 0)), b = x.row(mesh.triangles(t, 1)),
+                          c = x.row(mesh.triangles(t, 2));
+    const double at = 0.5 * (b - a).cross(c - a).norm();
+    for (int k = 0; k < 3; ++k) areaRms += at / 3 * distance[mesh.triangles(t, k)] * distance[mesh.triangles(t, k)];
+    area += at;
   }
+  areaRms = area > 0 ? std::sqrt(areaRms / area) : 0;
   // The RMS distance of the outer vertices at least a given distance (relative to D) from every seam: on a
   // seam the inflated panels meet at a crease the smooth target does not have, so "smooth regions" (the
   // issue's RMS goal) leave a band along the seams out.
   json awayFromSeams = json::array();
   {
-    const SewnMesh& m = opt.mesh();
-    const Vertices& x = opt.inflated();
     std::vector<int> seamVertices;
-    for (int v = 0; v < m.numVertices; ++v)
-      if (m.stitchedCount[v] >= 2) seamVertices.push_back(v);
+    for (int v = 0; v < mesh.numVertices; ++v)
+      if (mesh.stitchedCount[v] >= 2) seamVertices.push_back(v);
     const Eigen::VectorXd& w = opt.objective().targetWeights();
     std::vector<std::pair<double, double>> seamAndTarget;  // per outer vertex, relative to D
-    for (int v = 0; v < m.numVertices; ++v) {
+    for (int v = 0; v < mesh.numVertices; ++v) {
       if (w[v] == 0) continue;
       double nearest = INFINITY;
       for (int s : seamVertices) nearest = std::min(nearest, (x.row(v) - x.row(s)).squaredNorm());
-      seamAndTarget.push_back(
-          {std::sqrt(nearest) / D, opt.objective().imls().closestDistance(x.row(v).transpose()) / D});
+      seamAndTarget.push_back({std::sqrt(nearest) / D, distance[v]});
     }
     for (double band : {0.0, 0.01, 0.02, 0.05}) {
       double sum = 0;
@@ -224,10 +221,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
       awayFromSeams.push_back({{"band", band}, {"rms", count ? std::sqrt(sum / count) : 0}, {"vertices", count}});
     }
   }
-  // The cut panels: a maker cuts the final outlines, and the sheet knows nothing of the solver's interior
-  // vertices. The outlines meshed anew at the design's edge length (as the optimizer's remeshing does),
-  // inflated from the optimized shape and placed as the optimizer places its iterates: their RMS distance is
-  // what the cut pattern gives (bench/README.md, session 8: it can be far above the optimized mesh's).
+  // What the cut panels give (PatternOptimizer::checkCutPanels).
   json remeshed = nullptr;
   if (bo.remeshCheck) {
     const CutPanelsCheck cut = opt.checkCutPanels();

@@ -81,6 +81,7 @@ struct OptimizeOptions {
 };
 
 enum class OptimizeState { Running, Converged, Stopped, Failed };
+const char* toString(OptimizeState s);
 
 // What the cut panels give (PatternOptimizer::checkCutPanels): a maker cuts the panels' outlines, and the sheet
 // knows nothing of the solver's interior vertices.
@@ -91,7 +92,6 @@ struct CutPanelsCheck {
   int elements = 0;
   double ms = 0;
 };
-const char* toString(OptimizeState s);
 
 struct OptimizeRecord {
   int iteration = 0;
