@@ -197,7 +197,9 @@ export class SeamEditor {
 
   endDrag() {
     this.app.history.lastKey = null; // the next drag is a new step
-    this.segment();
+    // Segment only once the last position is traced and the seam ends attached to the moved seam have
+    // followed it (a drag's last re-trace may still be under way when the button comes up).
+    this.refresh();
   }
 
   // Double-click on a seam: a new control point there, between the control points around it.
