@@ -112,7 +112,7 @@ std::vector<int> panelTriangleStart(const Pattern& pattern) {
 }
 
 Eigen::SparseMatrix<double> assembleStiffness(const SewnMesh& mesh, const Vertices& x, const MembraneMaterial& material,
-                                              double pressure) {
+                                              double pressure, const SeamRods* rods) {
   const int n = 3 * mesh.numVertices;
   std::vector<Eigen::Triplet<double>> trip;
   trip.reserve(size_t(mesh.numTriangles()) * 2 * 81);
@@ -133,6 +133,7 @@ Eigen::SparseMatrix<double> assembleStiffness(const SewnMesh& mesh, const Vertic
         for (int i = 0; i < 3; ++i)
           for (int j = 0; j < 3; ++j) trip.emplace_back(3 * v[a] + i, 3 * v[b] + j, H(3 * a + i, 3 * b + j));
   }
+  if (rods) rods->forEachHessianEntry([&](int r, int c, double value) { trip.emplace_back(r, c, value); });
   Eigen::SparseMatrix<double> K(n, n);
   K.setFromTriplets(trip.begin(), trip.end());
   return K;

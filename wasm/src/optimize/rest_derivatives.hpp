@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "simulate/membrane_energy.hpp"
+#include "simulate/seam_rods.hpp"
 #include "simulate/sewn_pattern.hpp"
 
 namespace billow {
@@ -27,9 +28,11 @@ void unpackPattern(const Eigen::VectorXd& X, Pattern& pattern);
 // First sewn triangle of every panel (#panels + 1).
 std::vector<int> panelTriangleStart(const Pattern& pattern);
 
-// Exact K = sum_e d2W_e/dx2 - p d2V/dx2 (3 #V square, vertex-major DOFs), rest data from mesh.rest.
+// Exact K = sum_e d2W_e/dx2 + d2E_seams/dx2 - p d2V/dx2 (3 #V square, vertex-major DOFs), rest data from
+// mesh.rest; the seam rods' constant Hessian when given (their coefficient is fixed per design, so they do
+// not depend on X: PatternOptimizer).
 Eigen::SparseMatrix<double> assembleStiffness(const SewnMesh& mesh, const Vertices& x, const MembraneMaterial& material,
-                                              double pressure);
+                                              double pressure, const SeamRods* rods = nullptr);
 
 // g = dPi/dx (3 #V) with the rest data of X (tests; the simulator keeps its own).
 Eigen::VectorXd equilibriumGradient(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X,

@@ -11,10 +11,12 @@
 // factorization) and reused for every iteration and every later solve on the same mesh.
 #pragma once
 #include <Eigen/Sparse>
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
 
+#include "simulate/seam_rods.hpp"
 #include "simulate/sewn_pattern.hpp"
 
 namespace billow {
@@ -28,7 +30,7 @@ struct InflateOptions {
   // Converged when max |f_i| / (p * l^2) < tolerance: the largest net force on a vertex relative to the
   // pressure load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
   double tolerance = 1e-5;
-  int maxIterations = 1000;    // the Mylar balloon needs ~55 at 3k triangles, 160-350 at 15k (bench/README.md)
+  int maxIterations = 1000;    // the Mylar balloon needs ~34 at 3k triangles, ~55 at 15k, ~120 at 60k (bench/README.md)
   double band = 1e-4;          // smoothing band of the relaxed energy (MembraneMaterial::band)
   bool projectHessian = true;  // per-element PSD projection of the membrane Hessian
   double armijo = 1e-4;        // sufficient decrease constant
@@ -49,6 +51,17 @@ struct InflateOptions {
   // A Newton step moving a vertex by more than maxStep x the radius of the sphere with the pattern's area
   // is refused (the shift goes up): a guard against the unbounded energy of an over-inflated sheet.
   double maxStep = 2;
+  // Seam stiffness (seam_rods.hpp): each seam line resists bending like a rod of stiffness
+  // k = seamStiffness * p * R^4 (R: the radius of the sphere with the outer panels' area), which keeps the
+  // seams from crimping at the scale of the mesh (0: off). With 5e-4 the Mylar balloon converges to Paulsen's
+  // shape under refinement, and Newton needs 34 iterations at 3k triangles (55 without) and 64 at 15k (162).
+  double seamStiffness = 5e-4;
+  // When > 0, the rods' coefficient c_rod [N/m] instead of the one seamStiffness gives this mesh: the pattern
+  // optimizer fixes it once per design, so its equilibria depend on the panels only through the membrane.
+  double seamRodCoefficient = 0;
+  // When set, the rods' vertex triples instead of makeSeamRods' choice for this mesh (the pattern optimizer
+  // fixes them with the coefficient: which seam vertex counts as a corner must not change with X).
+  std::shared_ptr<const std::vector<std::array<int, 3>>> seamRodTriples;
   double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
 };
 
@@ -104,6 +117,7 @@ class InflationSolver {
   const std::string& message() const { return message_; }
   const Vertices& positions() const { return x_; }
   const SewnMesh& mesh() const { return mesh_; }
+  const SeamRods& seamRods() const { return rods_; }
   int iterations() const { return iterations_; }
   double residual() const { return residual_; }
   const Eigen::VectorXd& gradient() const { return grad_; }  // dPi/dx at the last assembly, pins zeroed
@@ -135,8 +149,10 @@ class InflationSolver {
   Vertices x_;
   Eigen::VectorXd grad_;
   std::unique_ptr<Sparse> sparse_;
-  std::vector<int> pinned_;  // DOF indices
-  double shift_ = 0;         // LM shift, relative to the mean diagonal
+  SeamRods rods_;
+  std::vector<int> rodSlot_;  // lower Hessian slot of each SeamRods::forEachHessianEntry visit (-1 above)
+  std::vector<int> pinned_;   // DOF indices
+  double shift_ = 0;          // LM shift, relative to the mean diagonal
   double lastAlpha_ = 0;
   bool factorValid_ = false;  // ldlt holds a positive definite factorization of an earlier Hessian
   double energy_ = 0, residual_ = 0, forceScale_ = 1;
