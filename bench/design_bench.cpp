@@ -120,6 +120,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.coarseIterations = int(v);
   else if (name == "tolerance")
     o.inflate.tolerance = v;
+  else if (name == "seamStiffness")
+    o.inflate.seamStiffness = v;
   else
     throw std::runtime_error("unknown option " + name);
 }

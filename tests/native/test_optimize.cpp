@@ -416,12 +416,15 @@ TEST(Optimize, SlackInternalPanelDoesNotStopTheOptimizer) {
 // inflated shape sits in an unstable equilibrium (a tiny change of the panels makes it snap into another one,
 // so E(X) jumps and no step passes the line search). The optimizer used to stop there ("no further decrease
 // along the gradient", 1.56 % RMS at 1k after 6 iterations); it now takes the shape the balloon snaps into
-// (a "resettled" record, the objective may rise) and goes on.
+// (a "resettled" record, the objective may rise) and goes on. The seams' stiffness (InflateOptions::
+// seamStiffness) takes that instability away on this design (1.56 % -> 1.03 % in 25 plain iterations), so the
+// test runs without it, where the instability is known to occur.
 TEST(Optimize, UnstableEquilibriumIsResettledNotTheEnd) {
   const Fixture f = makeFixture("fish-four-panels.billow.json", 600);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions oo;
   oo.maxIterations = 25;
+  oo.inflate.seamStiffness = 0;
   const OptimizeRun r = optimize(f, oo);
   const auto& h = r.history;
   const int resettled = int(std::count_if(h.begin(), h.end(), [](const OptimizeRecord& k) { return k.resettled; }));
@@ -534,7 +537,8 @@ TEST(Optimize, CoarseToFineEndsAtTheDesignResolution) {
   const auto refined = std::find_if(h.begin(), h.end(), [](const OptimizeRecord& r) { return !r.coarse; });
   ASSERT_NE(refined, h.end()) << "the coarse phase never ended";
   EXPECT_TRUE(refined->remeshed);
-  EXPECT_EQ(refined->iteration, o.coarseIterations);
+  EXPECT_LE(refined->iteration, o.coarseIterations);  // or sooner, when a stopping rule ends the coarse phase
+  EXPECT_GE(refined->iteration, 5);
   for (auto k = refined; k != h.end(); ++k) EXPECT_FALSE(k->coarse);
   const double designEdge = sewPattern(f.built.pattern).meanEdgeLength;
   const int coarseVertices = int(opt.shapes().front().rows()), fineVertices = int(opt.inflated().rows());

@@ -59,6 +59,14 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   built_ = built;
   pattern_ = built.pattern;
   mesh_ = sewPattern(pattern_);
+  // The seam rods are fixed for the phase: their coefficient (it would otherwise follow the panels' mean edge
+  // length and area) and which seam vertices carry one (a corner is judged by its rest angle), so the
+  // equilibrium forces depend on X only through the membrane (the adjoint's dg/dX) and E(X) stays smooth.
+  rodCoefficient_ = options_.inflate.seamRodCoefficient > 0
+                        ? options_.inflate.seamRodCoefficient
+                        : seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness);
+  rods_ = makeSeamRods(mesh_, rodCoefficient_);
+  rodTriples_ = std::make_shared<const std::vector<std::array<int, 3>>>(rods_.triples);
   objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, options_.weights);
   X_ = packPattern(pattern_);
   boundaryVertices_.clear();
@@ -208,13 +216,28 @@ bool PatternOptimizer::rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) con
   return true;
 }
 
-bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton) {
+bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton,
+                                        bool asCut) {
   if (!X.allFinite()) return false;
   SewnMesh mesh = mesh_;
   if (!rebuildRest(X, mesh)) return false;
   const double t0 = nowMs();
-  InflationSolver solver(std::move(mesh), pattern_.material, pattern_.pressure, options_.inflate, start);
-  while (solver.step(options_.inflate.maxIterations) == InflateState::Running) {
+  InflateOptions io = options_.inflate;
+  if (asCut) {
+    // As the cut panels inflate on their own (billow inflate, the app's stored results): their own seam rods.
+    Pattern cut = pattern_;
+    unpackPattern(X, cut);
+    try {
+      mesh = sewPattern(cut);
+    } catch (const Error&) {
+      return false;
+    }
+  } else {
+    io.seamRodCoefficient = rodCoefficient_;
+    io.seamRodTriples = rodTriples_;
+  }
+  InflationSolver solver(std::move(mesh), pattern_.material, pattern_.pressure, io, start);
+  while (solver.step(io.maxIterations) == InflateState::Running) {
   }
   ++timings_.equilibriumSolves;
   timings_.equilibriumMs += nowMs() - t0;
@@ -237,7 +260,7 @@ void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices&
   rebuildRest(X, mesh);
   Eigen::VectorXd dEdx, dEdX, lambda, product = Eigen::VectorXd::Zero(X.size());
   objective_->shapeEnergy(x, X, &dEdx, &dEdX);
-  const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure);
+  const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, &rods_);
   solveAdjoint(K, dEdx, rigidPins(x), lambda);
   addRestGradientProduct(mesh, pattern_, X, x, lambda, material_, product);
   objective_->patternEnergy(X, &grad);
@@ -306,7 +329,7 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
     followBoundary(X);
     Vertices x;
     int newton = 0;
-    if (solveEquilibrium(X, x_, x, &newton)) {
+    if (solveEquilibrium(X, x_, x, &newton, true)) {
       X_ = X, x_ = x;
       unpackPattern(X_, pattern_);
       variableGradient(X_, x_, g_);
@@ -341,7 +364,10 @@ bool PatternOptimizer::iterate() {
   // over the last `jumps` settled trials): E(X) is discontinuous here, see resettle().
   double lastExcess = INFINITY;
   int jumps = 0;
-  for (int h = 0; h <= options_.maxHalvings; ++h, alpha *= 0.5) {
+  // Backtracking: after a trial with a finite E the next alpha minimizes the quadratic through E_, the slope
+  // and E(alpha), kept within [0.1, 0.5] alpha (Nocedal & Wright, Sec. 3.5); after a failed solve, alpha / 2.
+  double next = 0.5 * alpha;
+  for (int h = 0; h <= options_.maxHalvings; ++h, alpha = next, next = 0.5 * alpha) {
     Eigen::VectorXd X = X_ + alpha * d;
     if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X);
     followBoundary(X);
@@ -354,6 +380,10 @@ bool PatternOptimizer::iterate() {
     const double E = energy(X, x, nullptr);
     if (!(std::isfinite(E) && E <= E_ + 1e-4 * alpha * slope)) {
       ++timings_.rejectedTrials;
+      if (std::isfinite(E) && E > E_ + alpha * slope) {
+        const double quadratic = -slope * alpha * alpha / (2 * (E - E_ - alpha * slope));
+        next = std::clamp(quadratic, 0.1 * alpha, 0.5 * alpha);
+      }
       const double excess = E - E_;
       jumps = std::isfinite(E) && excess > 1e-3 * std::abs(E_) && excess > 0.9 * lastExcess ? jumps + 1 : 0;
       lastExcess = std::isfinite(E) ? excess : INFINITY;

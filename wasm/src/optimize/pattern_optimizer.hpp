@@ -170,7 +170,8 @@ class PatternOptimizer {
   // Ends the coarse phase (OptimizeOptions::coarseFactor): the panels meshed at the design's resolution.
   // False when there was none (or the fine mesh failed: the coarse one is kept).
   bool refine();
-  bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton);
+  // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
+  bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton, bool asCut = false);
   void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
   // The gradient in the optimization variables (the boundary rows with options.interiorFollowsBoundary).
   void variableGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
@@ -212,9 +213,12 @@ class PatternOptimizer {
   std::string message_;
   int iteration_ = 0, stalled_ = 0;
   bool started_ = false;
-  Vertices windowX_;            // x at the start of the current window (options.windowIterations)
-  int windowStart_ = -1;        // its iteration
-  bool coarse_ = false;         // in the coarse phase (OptimizeOptions::coarseFactor)
+  Vertices windowX_;           // x at the start of the current window (options.windowIterations)
+  int windowStart_ = -1;       // its iteration
+  bool coarse_ = false;        // in the coarse phase (OptimizeOptions::coarseFactor)
+  double rodCoefficient_ = 0;  // the seam rods of every solve of this phase (setUp)
+  SeamRods rods_;
+  std::shared_ptr<const std::vector<std::array<int, 3>>> rodTriples_;
   double fineEdgeLength_ = 0;   // the design's edge length [m]
   bool projectTrials_ = false;  // options.projectEveryStep, unless projecting the flattened panels folds them
   double start_ = 0;            // steady-clock ms at construction
