@@ -10,7 +10,7 @@ import { createHandlers } from '../../web/src/worker/handlers.js';
 import { parseDesign } from '../../web/src/app/design.js';
 import { findExample } from '../../web/src/app/examples.js';
 import { patternForDisplay } from '../../web/src/app/pattern-session.js';
-import { canonicalJson, hashBytes, parseStoredResult, resultKey, DEFAULT_RESOLUTION } from '../../web/src/app/stored-result.js';
+import { canonicalJson, hashBytes, parseStoredResult, resultKey, DEFAULT_RESOLUTION, RESULT_VERSION } from '../../web/src/app/stored-result.js';
 
 const GALLERY = new URL('../../web/public/gallery/', import.meta.url);
 const read = (name) => readFileSync(new URL(name, GALLERY), 'utf8');
@@ -101,7 +101,8 @@ test('a damaged or foreign result file is not used', () => {
   assert.ok(parseStoredResult(good));
   assert.equal(parseStoredResult(good.slice(0, good.length / 2)), null, 'cut short');
   assert.equal(parseStoredResult('{"format":"billow-pattern","version":1}'), null, 'another format');
-  assert.equal(parseStoredResult(JSON.stringify({ ...JSON.parse(good), version: 2 })), null, 'a newer version');
+  assert.equal(parseStoredResult(JSON.stringify({ ...JSON.parse(good), version: RESULT_VERSION + 1 })), null, 'a newer version');
+  assert.equal(parseStoredResult(JSON.stringify({ ...JSON.parse(good), version: RESULT_VERSION - 1 })), null, 'made by an older solver');
   assert.equal(parseStoredResult(JSON.stringify({ ...JSON.parse(good), pattern: { format: 'billow-pattern', panels: [] } })), null, 'no inflated shape');
   assert.equal(parseStoredResult(null), null, 'not fetched');
 });

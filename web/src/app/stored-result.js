@@ -5,7 +5,8 @@
 // being opened (the design changed, the file is stale) is not used. The format: docs/formats.md.
 
 export const RESULT_FORMAT = 'billow-gallery-result';
-export const RESULT_VERSION = 1;
+// 2: made with the seams' stiffness (wasm/src/simulate/seam_rods.hpp); results of version 1 are not used.
+export const RESULT_VERSION = 2;
 
 // The app's resolution when it opens (App.resolution, the Panels menu's "coarse"): stored results are made at it.
 export const DEFAULT_RESOLUTION = 1000;
