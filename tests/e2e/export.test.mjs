@@ -322,7 +322,9 @@ test('one seam gets its own allowance by a click on it: only its cut line moves;
 test('free edges get their own allowance; own allowances of seams that are gone are listed and removable', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   // The sphere of three gores with an internal panel whose two tips are left unsewn: free edges inside.
-  const pattern = JSON.parse(await page.evaluate(async () => (await window.billow.client.request('examplePattern', { name: 'sphere3-internal', triangles: 800 })).patternText));
+  // (Those tips are floppy flaps without pressure: at 500-1000 triangles Newton creeps near the tolerance and
+  // stops after 1000 iterations, issue 3; at 1200 it settles in ~210.)
+  const pattern = JSON.parse(await page.evaluate(async () => (await window.billow.client.request('examplePattern', { name: 'sphere3-internal', triangles: 1200 })).patternText));
   const xs = pattern.panels[3].vertices.map(([x]) => x);
   const [lo, hi] = [Math.min(...xs), Math.max(...xs)];
   const tip = (panel, v) => panel === 3 && Math.abs(pattern.panels[3].vertices[v][0] - (lo + hi) / 2) > 0.35 * (hi - lo);
