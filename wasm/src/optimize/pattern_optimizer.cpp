@@ -62,11 +62,8 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   // The seam rods are fixed for the phase: their coefficient (it would otherwise follow the panels' mean edge
   // length and area) and which seam vertices carry one (a corner is judged by its rest angle), so the
   // equilibrium forces depend on X only through the membrane (the adjoint's dg/dX) and E(X) stays smooth.
-  rodCoefficient_ = options_.inflate.seamRodCoefficient > 0
-                        ? options_.inflate.seamRodCoefficient
-                        : seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness);
-  rods_ = makeSeamRods(mesh_, rodCoefficient_);
-  rodTriples_ = std::make_shared<const std::vector<std::array<int, 3>>>(rods_.triples);
+  rods_ = std::make_shared<const SeamRods>(
+      makeSeamRods(mesh_, seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness)));
   objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, options_.weights);
   X_ = packPattern(pattern_);
   boundaryVertices_.clear();
@@ -223,6 +220,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (!rebuildRest(X, mesh)) return false;
   const double t0 = nowMs();
   InflateOptions io = options_.inflate;
+  io.seamRods = asCut ? nullptr : rods_;
   if (asCut) {
     // As the cut panels inflate on their own (billow inflate, the app's stored results): their own seam rods.
     Pattern cut = pattern_;
@@ -232,9 +230,6 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
     } catch (const Error&) {
       return false;
     }
-  } else {
-    io.seamRodCoefficient = rodCoefficient_;
-    io.seamRodTriples = rodTriples_;
   }
   InflationSolver solver(std::move(mesh), pattern_.material, pattern_.pressure, io, start);
   while (solver.step(io.maxIterations) == InflateState::Running) {
@@ -260,7 +255,7 @@ void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices&
   rebuildRest(X, mesh);
   Eigen::VectorXd dEdx, dEdX, lambda, product = Eigen::VectorXd::Zero(X.size());
   objective_->shapeEnergy(x, X, &dEdx, &dEdX);
-  const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, &rods_);
+  const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, rods_.get());
   solveAdjoint(K, dEdx, rigidPins(x), lambda);
   addRestGradientProduct(mesh, pattern_, X, x, lambda, material_, product);
   objective_->patternEnergy(X, &grad);

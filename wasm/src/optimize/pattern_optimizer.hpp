@@ -213,15 +213,13 @@ class PatternOptimizer {
   std::string message_;
   int iteration_ = 0, stalled_ = 0;
   bool started_ = false;
-  Vertices windowX_;           // x at the start of the current window (options.windowIterations)
-  int windowStart_ = -1;       // its iteration
-  bool coarse_ = false;        // in the coarse phase (OptimizeOptions::coarseFactor)
-  double rodCoefficient_ = 0;  // the seam rods of every solve of this phase (setUp)
-  SeamRods rods_;
-  std::shared_ptr<const std::vector<std::array<int, 3>>> rodTriples_;
-  double fineEdgeLength_ = 0;   // the design's edge length [m]
-  bool projectTrials_ = false;  // options.projectEveryStep, unless projecting the flattened panels folds them
-  double start_ = 0;            // steady-clock ms at construction
+  Vertices windowX_;                      // x at the start of the current window (options.windowIterations)
+  int windowStart_ = -1;                  // its iteration
+  bool coarse_ = false;                   // in the coarse phase (OptimizeOptions::coarseFactor)
+  std::shared_ptr<const SeamRods> rods_;  // the seam rods of every solve of this phase (setUp)
+  double fineEdgeLength_ = 0;             // the design's edge length [m]
+  bool projectTrials_ = false;            // options.projectEveryStep, unless projecting the flattened panels folds them
+  double start_ = 0;                      // steady-clock ms at construction
 };
 
 }  // namespace billow

@@ -84,16 +84,10 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
   };
   for (int i = 0; i < n; ++i) trip.emplace_back(i, i, 0.0);
   forEachLowerEntry([&](int, int, int r, int c) { trip.emplace_back(r, c, 0.0); });
-  const double rodCoefficient = options_.seamRodCoefficient > 0
-                                    ? options_.seamRodCoefficient
-                                    : seamRodCoefficient(mesh_, pressure, options_.seamStiffness);
-  if (options_.seamRodTriples) {
-    rods_.coefficient = rodCoefficient;
-    rods_.triples = *options_.seamRodTriples;
-  } else {
-    rods_ = makeSeamRods(mesh_, rodCoefficient);
-  }
-  rods_.forEachHessianEntry([&](int r, int c, double) {
+  rods_ = options_.seamRods ? options_.seamRods
+                            : std::make_shared<const SeamRods>(
+                                  makeSeamRods(mesh_, seamRodCoefficient(mesh_, pressure, options_.seamStiffness)));
+  rods_->forEachHessianEntry([&](int r, int c, double) {
     if (r >= c) trip.emplace_back(r, c, 0.0);
   });
   Sparse& s = *sparse_;
@@ -110,7 +104,7 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
   s.diag.resize(n);
   for (int i = 0; i < n; ++i) s.diag[i] = find(i, i);
   rodSlot_.clear();
-  rods_.forEachHessianEntry([&](int r, int c, double) { rodSlot_.push_back(r >= c ? find(r, c) : -1); });
+  rods_->forEachHessianEntry([&](int r, int c, double) { rodSlot_.push_back(r >= c ? find(r, c) : -1); });
   choosePins();
   // Symbolic factorization, once per mesh.
   s.supernodal = options_.linearSolver != LinearSolver::SimplicialLdlt;
@@ -169,7 +163,7 @@ double InflationSolver::totalEnergy(const Vertices& x) const {
     e += membraneElementEnergy(mesh_.rest[f], a, b, c, material_);
     if (mesh_.outer[f]) v += triangleVolume(a, b, c);
   }
-  if (!rods_.empty()) e += rods_.energy(x);
+  if (!rods_->empty()) e += rods_->energy(x);
   return e - pressure_ * v;  // Pi = sum h A psi~ + E_seams - p V
 }
 
@@ -209,10 +203,10 @@ bool InflationSolver::assemble() {
       for (int col = r + 1; col < 9; ++col)
         if (slots[r * 9 + col] >= 0) s.values[slots[r * 9 + col]] += h(r, col);
   }
-  if (!rods_.empty()) {
-    rods_.addGradient(x_, grad_);
+  if (!rods_->empty()) {
+    rods_->addGradient(x_, grad_);
     size_t k = 0;
-    rods_.forEachHessianEntry([&](int, int, double value) {
+    rods_->forEachHessianEntry([&](int, int, double value) {
       const int slot = rodSlot_[k++];
       if (slot >= 0) s.values[slot] += value;
     });

@@ -11,7 +11,6 @@
 // factorization) and reused for every iteration and every later solve on the same mesh.
 #pragma once
 #include <Eigen/Sparse>
-#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -54,14 +53,12 @@ struct InflateOptions {
   // Seam stiffness (seam_rods.hpp): each seam line resists bending like a rod of stiffness
   // k = seamStiffness * p * R^4 (R: the radius of the sphere with the outer panels' area), which keeps the
   // seams from crimping at the scale of the mesh (0: off). With 5e-4 the Mylar balloon converges to Paulsen's
-  // shape under refinement, and Newton needs 34 iterations at 3k triangles (55 without) and 64 at 15k (162).
+  // shape under refinement, and Newton needs 34 iterations at 3k triangles (54 without) and 55 at 15k (162).
   double seamStiffness = 5e-4;
-  // When > 0, the rods' coefficient c_rod [N/m] instead of the one seamStiffness gives this mesh: the pattern
-  // optimizer fixes it once per design, so its equilibria depend on the panels only through the membrane.
-  double seamRodCoefficient = 0;
-  // When set, the rods' vertex triples instead of makeSeamRods' choice for this mesh (the pattern optimizer
-  // fixes them with the coefficient: which seam vertex counts as a corner must not change with X).
-  std::shared_ptr<const std::vector<std::array<int, 3>>> seamRodTriples;
+  // When set, these rods instead of the ones seamStiffness gives this mesh: the pattern optimizer fixes them
+  // per phase (coefficient and which seam vertex counts as a corner), so its equilibria depend on the panels
+  // only through the membrane.
+  std::shared_ptr<const SeamRods> seamRods;
   double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
 };
 
@@ -117,7 +114,6 @@ class InflationSolver {
   const std::string& message() const { return message_; }
   const Vertices& positions() const { return x_; }
   const SewnMesh& mesh() const { return mesh_; }
-  const SeamRods& seamRods() const { return rods_; }
   int iterations() const { return iterations_; }
   double residual() const { return residual_; }
   const Eigen::VectorXd& gradient() const { return grad_; }  // dPi/dx at the last assembly, pins zeroed
@@ -149,7 +145,7 @@ class InflationSolver {
   Vertices x_;
   Eigen::VectorXd grad_;
   std::unique_ptr<Sparse> sparse_;
-  SeamRods rods_;
+  std::shared_ptr<const SeamRods> rods_;
   std::vector<int> rodSlot_;  // lower Hessian slot of each SeamRods::forEachHessianEntry visit (-1 above)
   std::vector<int> pinned_;   // DOF indices
   double shift_ = 0;          // LM shift, relative to the mean diagonal

@@ -18,7 +18,6 @@
 // panels' area, so a balloon and a parade float of the same shape behave alike (InflateOptions).
 #pragma once
 #include <Eigen/Core>
-#include <Eigen/SparseCore>
 #include <array>
 #include <vector>
 
