@@ -43,9 +43,9 @@ using nlohmann::json;
 #include <memory>
 
 #include "io/pattern_json.hpp"
+#include "simulate/coarse_start.hpp"
 #include "simulate/example_patterns.hpp"
 #include "simulate/inflate.hpp"
-#include "simulate/initial_shape.hpp"
 #include "util/memory_budget.hpp"
 
 namespace {
@@ -79,7 +79,9 @@ class InflationSession {
                             "Use a pattern with fewer triangles, or inflate it with the billow command-line tool "
                             "on a computer with more memory.");
       billow::SewnMesh mesh = billow::sewPattern(pattern_);
-      const billow::Vertices start = billow::startFromInflated(pattern_, mesh);
+      // A bare pattern starts from its coarser versions inflated first (coarse_start.hpp).
+      billow::StartReport report;
+      const billow::Vertices start = billow::startPositions(pattern_, mesh, o, &report);
       solver_ =
           std::make_unique<billow::InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, o, start);
       const billow::SewnMesh& m = solver_->mesh();
@@ -91,6 +93,11 @@ class InflationSession {
                    {"triangles", m.numTriangles()},
                    {"panels", pattern_.panels.size()},
                    {"panelVertices", m.simVertexOf.size()},
+                   {"coarseStart",
+                    {{"levels", report.levels},
+                     {"triangles", report.coarseTriangles},
+                     {"iterations", report.coarseIterations},
+                     {"ms", report.coarseMs}}},
                    {"warnings", w}})
           .dump();
     });

@@ -8,8 +8,8 @@
 #include "io/mesh_file.hpp"
 #include "io/obj_writer.hpp"
 #include "io/pattern_json.hpp"
+#include "simulate/coarse_start.hpp"
 #include "simulate/inflate.hpp"
-#include "simulate/initial_shape.hpp"
 #include "util/error.hpp"
 #include "util/memory_budget.hpp"
 
@@ -109,12 +109,18 @@ int inflateCommand(const std::vector<std::string>& argv) {
                 "Inflating this pattern (" + std::to_string(patternTriangles) + " triangles)",
                 "Use a pattern with fewer triangles.");
   SewnMesh mesh = sewPattern(p);
-  const Vertices start = startFromInflated(p, mesh);
-  InflationSolver solver(mesh, p.material, p.pressure, o, start);
   const bool quiet = args.has("--quiet");
   if (!quiet)
     std::fprintf(stderr, "%s: %d triangles, %d simulation vertices\n", path.c_str(), mesh.numTriangles(),
                  mesh.numVertices);
+  StartReport startReport;
+  const Vertices start = startPositions(p, mesh, o, &startReport);
+  if (!quiet && startReport.levels > 0)
+    std::fprintf(
+        stderr, "  coarse start: %d coarser pattern%s inflated first (coarsest %d triangles), %d iterations, %.0f ms\n",
+        startReport.levels, startReport.levels > 1 ? "s" : "", startReport.coarseTriangles,
+        startReport.coarseIterations, startReport.coarseMs);
+  InflationSolver solver(mesh, p.material, p.pressure, o, start);
   while (solver.step(5, 500) == InflateState::Running)
     if (!quiet)
       std::fprintf(stderr, "  iteration %3d  residual %.3e  volume %.6g m^3\n", solver.iterations(), solver.residual(),

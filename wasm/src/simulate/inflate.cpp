@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "simulate/block_cholesky.hpp"
+#include "simulate/coarse_start.hpp"
 #include "simulate/enclosed_volume.hpp"
 #include "simulate/initial_shape.hpp"
 #include "util/error.hpp"
@@ -422,7 +423,7 @@ InflateResult InflationSolver::result() const {
 InflateResult inflate(const Pattern& pattern, const InflateOptions& options, const Vertices& x0) {
   SewnMesh mesh = sewPattern(pattern);
   Vertices start = x0;
-  if (start.rows() != mesh.numVertices) start = startFromInflated(pattern, mesh);
+  if (start.rows() != mesh.numVertices) start = startPositions(pattern, mesh, options);
   InflationSolver solver(std::move(mesh), pattern.material, pattern.pressure, options, start);
   while (solver.step(50) == InflateState::Running) {
   }

@@ -59,6 +59,13 @@ struct InflateOptions {
   // per phase (coefficient and which seam vertex counts as a corner), so its equilibria depend on the panels
   // only through the membrane.
   std::shared_ptr<const SeamRods> seamRods;
+  // Coarse-to-fine start (coarse_start.hpp) for patterns of at least this many triangles without start
+  // positions (0: always the spherical start); each coarser level has coarseStartRatio times fewer triangles
+  // and is solved to coarseTolerance within coarseMaxIterations.
+  int coarseStartTriangles = 2000;
+  double coarseStartRatio = 6;
+  double coarseTolerance = 1e-3;
+  int coarseMaxIterations = 200;
   double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
 };
 

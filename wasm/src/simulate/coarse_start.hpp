@@ -1,0 +1,45 @@
+// A coarse-to-fine start for a bare pattern (one without start positions). Newton from the spherical start
+// (initial_shape.hpp) needs more iterations the finer the mesh (the Mylar balloon: 29 at 0.7k triangles, 55
+// at 15k, 121 at 60k), while from a shape that is already right at a coarser scale it needs about 10 to 15 at
+// any size. So a large pattern is first coarsened (the same panels, meshed about 4.5 times coarser and sewn
+// at a subset of the same seam vertices), the coarse pattern is inflated (itself started the same way), and
+// its shape is carried onto the fine panels.
+//
+// Coarsening keeps every seam consistent: each panel's boundary loop is split at key simulation vertices
+// (corners, junctions of three or more panel vertices, the ends of free edges), and each piece between two
+// keys keeps a subset of its vertices by arc length, decided once per simulation vertex, so the panels on
+// both sides of a seam keep the same vertices and are stitched there. The interior is remeshed
+// (remesh::meshPanel). Prolongation locates each fine panel vertex in its coarse panel (barycentric) and
+// interpolates the coarse inflated positions, curved by Phong tessellation with the coarse outer surface's
+// vertex normals (a flat interpolation starts Newton with every fine triangle flat, and costs a few shifted
+// iterations more).
+#pragma once
+#include <optional>
+
+#include "simulate/inflate.hpp"
+
+namespace billow {
+
+// The coarse pattern, or nothing when a panel is not a disc (one boundary loop), a panel would keep fewer
+// than 3 boundary vertices, or meshing fails. `h`: target edge length of the coarse panels [m].
+std::optional<Pattern> coarsenPattern(const Pattern& pattern, const SewnMesh& mesh, double h);
+
+// Positions of `fine`'s simulation vertices interpolated from the coarse pattern's inflated positions `x`.
+// `fine` and `coarse` have the same panels (coarse from coarsenPattern).
+Vertices prolongate(const Pattern& coarse, const SewnMesh& coarseMesh, const Vertices& x, const Pattern& fine,
+                    const SewnMesh& fineMesh);
+
+struct StartReport {
+  int levels = 0;           // coarse patterns inflated (0: spherical or given start)
+  int coarseTriangles = 0;  // triangles of the coarsest
+  int coarseIterations = 0;
+  double coarseMs = 0;  // time spent on coarsening, coarse solves and prolongation
+};
+
+// The start positions for inflating `pattern`: its own start positions when it has them (the optimizer's
+// target shape), else the coarse-to-fine start when it has at least options.coarseStartTriangles triangles
+// (and coarsening works and the coarse solve does not fail), else the spherical start.
+Vertices startPositions(const Pattern& pattern, const SewnMesh& mesh, const InflateOptions& options = {},
+                        StartReport* report = nullptr);
+
+}  // namespace billow
