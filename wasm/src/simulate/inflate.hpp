@@ -29,7 +29,8 @@ struct InflateOptions {
   // Converged when max |f_i| / (p * l^2) < tolerance: the largest net force on a vertex relative to the
   // pressure load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
   double tolerance = 1e-5;
-  int maxIterations = 1000;    // the Mylar balloon needs ~34 at 3k triangles, ~55 at 15k, ~120 at 60k (bench/README.md)
+  int maxIterations = 1000;    // Mylar from the spherical start: ~34 at 3k triangles, ~55 at 15k, ~120 at 60k; from the
+                               // coarse-to-fine start 14-18 at any size (bench/README.md)
   double band = 1e-4;          // smoothing band of the relaxed energy (MembraneMaterial::band)
   bool projectHessian = true;  // per-element PSD projection of the membrane Hessian
   double armijo = 1e-4;        // sufficient decrease constant
@@ -105,7 +106,8 @@ struct InflateResult {
 
 class InflationSolver {
  public:
-  // x0: start positions (#V by 3), e.g. the target shape; empty = sphericalStart(mesh). Throws
+  // x0: start positions (#V by 3), e.g. the target shape; empty = sphericalStart(mesh) (callers that have the
+  // pattern use startPositions, coarse_start.hpp, which inflates a coarser version first). Throws
   // billow::Error("inflate.bad-start") when x0 has another size or invalid coordinates.
   InflationSolver(SewnMesh mesh, const Material& material, double pressure, const InflateOptions& options = {},
                   const Vertices& x0 = {});

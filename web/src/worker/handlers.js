@@ -51,7 +51,8 @@ export function createHandlers(api) {
     *[Op.inflatePattern]({ patternText, options = {} }) {
       const inflation = api.inflation();
       try {
-        yield { stage: 'reading the pattern' };
+        // load() also roughs out the shape of a large pattern by inflating a coarser version of it first.
+        yield { stage: 'reading the pattern and roughing out its shape' };
         const info = inflation.load(patternText, options);
         yield { stage: 'inflating', iteration: 0, warnings: info.warnings, ...inflation.mesh(), positions: inflation.positions() };
         let lastPreview = performance.now();
