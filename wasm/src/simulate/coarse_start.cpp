@@ -184,9 +184,14 @@ Vertices prolongate(const Pattern& coarse, const SewnMesh& coarseMesh, const Ver
     const Eigen::Vector3d n = (b - a).cross(c - a);
     for (int k = 0; k < 3; ++k) normals.row(coarseMesh.triangles(f, k)) += n.transpose();
   }
+  // Where three or more panel vertices meet (the gores' poles, an internal panel's seam) the surface has a
+  // cone point or a crease and no tangent plane: no curving there (sphere3 at 60k: 27 -> 22 fine iterations).
   for (int v = 0; v < coarseMesh.numVertices; ++v) {
     const double l = normals.row(v).norm();
-    if (l > 0) normals.row(v) /= l;
+    if (coarseMesh.stitchedCount[v] >= 3)
+      normals.row(v).setZero();
+    else if (l > 0)
+      normals.row(v) /= l;
   }
   Vertices out = Vertices::Zero(fineMesh.numVertices, 3);
   Eigen::VectorXd count = Eigen::VectorXd::Zero(fineMesh.numVertices);
