@@ -51,7 +51,9 @@ function run(entry) {
     if (v.stage !== 'optimizing') continue;
     if (v.iteration === 0 && !first) (first = v), (patternSeconds = (performance.now() - t0) / 1000), (tStart = performance.now());
     last = v;
-    shapes.push({ iteration: v.iteration ?? 0, seconds: (performance.now() - tStart) / 1000, positions: v.positions });
+    // Preview time counts from the start of the job (the target, the panels and the first inflation), as
+    // the designer waits for it; iteration 0 arrives only after that first inflation.
+    shapes.push({ iteration: v.iteration ?? 0, seconds: (performance.now() - t0) / 1000, positions: v.positions });
     if ((performance.now() - tStart) / 1000 > maxSeconds) break;
   }
   const seconds = (performance.now() - tStart) / 1000;
