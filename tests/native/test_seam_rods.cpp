@@ -69,9 +69,20 @@ TEST(SeamRods, EverySmoothSeamVertexCarriesOneRodAndCornersNone) {
   const SewnMesh pillow = exampleMesh("pillow", 700);
   const SeamRods rods = makeSeamRods(pillow, 1);
   EXPECT_EQ(int(rods.triples.size()), rimVertices(pillow) - 4);
-  // The three-gore sphere's poles, where three panels meet, carry none either.
+  // The three-gore sphere's poles, where three gore tips meet, carry none either.
   const SewnMesh sphere = exampleMesh("sphere3", 700);
   for (const auto& t : makeSeamRods(sphere, 1).triples) EXPECT_EQ(sphere.stitchedCount[t[1]], 2);
+  // A seam shared by three panels (the internal gore sewn into two seams) does, along its length: every
+  // vertex where the internal panel is sewn in, except the two ends where its sides turn away.
+  const SewnMesh internal = exampleMesh("sphere3-internal", 700);
+  int tripleSeam = 0, withRod = 0;
+  const SeamRods internalRods = makeSeamRods(internal, 1);
+  std::vector<char> centred(internal.numVertices, 0);
+  for (const auto& t : internalRods.triples) centred[t[1]] = 1;
+  for (int v = 0; v < internal.numVertices; ++v)
+    if (internal.stitchedCount[v] == 3) ++tripleSeam, withRod += centred[v];
+  EXPECT_GT(tripleSeam, 10);
+  EXPECT_GE(withRod, tripleSeam - 4);
   // No stiffness, no rods.
   EXPECT_TRUE(makeSeamRods(mylar, 0).empty());
   EXPECT_EQ(seamRodCoefficient(mylar, 1000, 0), 0);

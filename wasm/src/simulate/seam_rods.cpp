@@ -63,7 +63,7 @@ SeamRods makeSeamRods(const SewnMesh& mesh, double coefficient) {
   std::set<std::array<int, 3>> seen;
   for (const auto& [key, ns] : neighbours) {
     const int b = key.second;
-    if (ns.size() != 2 || mesh.stitchedCount[b] != 2) continue;
+    if (ns.size() != 2 || mesh.stitchedCount[b] < 2) continue;
     if (!sewn(ns[0], b) || !sewn(b, ns[1])) continue;     // the end of a seam
     if (std::abs(M_PI - angle[key]) > maxTurn) continue;  // a corner
     const std::array<int, 3> t{std::min(ns[0], ns[1]), b, std::max(ns[0], ns[1])};
