@@ -1,6 +1,8 @@
 // The triangle mesh shared by every stage: a target, a simulation mesh or a panel (z = 0).
 #pragma once
 #include <Eigen/Dense>
+#include <algorithm>
+#include <cstdint>
 
 namespace billow {
 
@@ -13,5 +15,11 @@ struct TriMesh {
   int numVertices() const { return static_cast<int>(V.rows()); }
   int numTriangles() const { return static_cast<int>(F.rows()); }
 };
+
+// The key of the undirected edge {a, b} (vertex indices >= 0), for hashing and sorting edges.
+inline std::uint64_t edgeKey(int a, int b) {
+  const auto lo = static_cast<std::uint32_t>(std::min(a, b)), hi = static_cast<std::uint32_t>(std::max(a, b));
+  return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
 
 }  // namespace billow

@@ -33,11 +33,6 @@ struct HalfEdge {
   int local;     // edge `local` runs from corner local to corner (local + 1) % 3
 };
 
-uint64_t edgeKey(int a, int b) {
-  const auto lo = static_cast<uint64_t>(std::min(a, b)), hi = static_cast<uint64_t>(std::max(a, b));
-  return (lo << 32) | hi;
-}
-
 std::string plural(int n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }

@@ -15,11 +15,6 @@
 
 namespace billow {
 
-inline std::uint64_t edgeKey(int a, int b) {
-  const auto lo = static_cast<std::uint32_t>(std::min(a, b)), hi = static_cast<std::uint32_t>(std::max(a, b));
-  return (static_cast<std::uint64_t>(lo) << 32) | hi;
-}
-
 struct CutMesh {
   TriMesh mesh;                                     // vertices: the target's first, then seam points
   std::vector<SurfacePoint> vertexOrigin;           // #mesh.V: where each vertex is on the target

@@ -6,6 +6,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "flatten/segment_boundary.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "simulate/initial_shape.hpp"
 #include "util/error.hpp"
@@ -13,43 +14,23 @@
 namespace billow {
 namespace {
 
-// The boundary loop of a panel (counter-clockwise, as its triangles), or empty when it has none or several,
-// or a vertex where the boundary touches itself.
-std::vector<int> singleBoundaryLoop(const Panel& panel) {
-  const int nv = static_cast<int>(panel.vertices.rows());
-  std::map<std::pair<int, int>, int> directed;
-  for (int t = 0; t < panel.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) ++directed[{panel.triangles(t, k), panel.triangles(t, (k + 1) % 3)}];
-  std::vector<int> next(nv, -1);
-  int edges = 0, start = -1;
-  for (const auto& [e, count] : directed) {
-    if (directed.count({e.second, e.first})) continue;
-    if (next[e.first] >= 0) return {};  // two boundary edges leave this vertex
-    next[e.first] = e.second;
-    ++edges;
-    if (start < 0) start = e.first;
-  }
-  if (start < 0) return {};
-  std::vector<int> loop;
-  for (int v = start; loop.size() <= static_cast<size_t>(edges);) {
-    loop.push_back(v);
-    v = next[v];
-    if (v < 0) return {};
-    if (v == start) break;
-  }
-  if (static_cast<int>(loop.size()) != edges) return {};  // several loops
-  return loop;
-}
-
 double turnAngle(const Panel& panel, int a, int b, int c) {
   const Eigen::Vector2d u = panel.vertices.row(b) - panel.vertices.row(a);
   const Eigen::Vector2d w = panel.vertices.row(c) - panel.vertices.row(b);
   return std::abs(std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w)));
 }
 
-std::uint64_t edgeKey(int a, int b) {
-  if (a > b) std::swap(a, b);
-  return (std::uint64_t(std::uint32_t(a)) << 32) | std::uint32_t(b);
+// The boundary loop of a panel (counter-clockwise, as its triangles), or empty when the panel is no disc.
+std::vector<int> boundaryLoop(const Panel& panel) {
+  TriMesh flat;
+  flat.V = Vertices::Zero(panel.vertices.rows(), 3);
+  flat.V.leftCols(2) = panel.vertices;
+  flat.F = panel.triangles;
+  try {
+    return findBoundaryLoop(flat);
+  } catch (const Error&) {
+    return {};
+  }
 }
 
 }  // namespace
@@ -59,7 +40,7 @@ std::optional<Pattern> coarsenPattern(const Pattern& pattern, const SewnMesh& me
   if (!(h > 0)) return std::nullopt;
   std::vector<std::vector<int>> loops(numPanels);
   for (int p = 0; p < numPanels; ++p) {
-    loops[p] = singleBoundaryLoop(pattern.panels[p]);
+    loops[p] = boundaryLoop(pattern.panels[p]);
     if (loops[p].size() < 3) return std::nullopt;
   }
   // Which panels hold each simulation boundary edge: an edge's signature is the list of panels along it.
@@ -106,7 +87,7 @@ std::optional<Pattern> coarsenPattern(const Pattern& pattern, const SewnMesh& me
     }
     if (!any) key[smallest] = 1;
   }
-  // Between keys, keep vertices about h apart by arc length; decided once per simulation vertex.
+  // Between keys, keep vertices about h apart (below); decided once per simulation vertex.
   std::vector<signed char> kept(mesh.numVertices, -1);
   for (int p = 0; p < numPanels; ++p) {
     const auto& loop = loops[p];
@@ -228,24 +209,14 @@ Vertices prolongate(const Pattern& coarse, const SewnMesh& coarseMesh, const Ver
 
 namespace {
 
-double totalPanelArea(const Pattern& pattern) {
-  double area = 0;
-  for (const auto& panel : pattern.panels)
-    for (int t = 0; t < panel.triangles.rows(); ++t) {
-      const Eigen::Vector2d a = panel.vertices.row(panel.triangles(t, 0)),
-                            b = panel.vertices.row(panel.triangles(t, 1)),
-                            c = panel.vertices.row(panel.triangles(t, 2));
-      area += 0.5 * std::abs((b - a).x() * (c - a).y() - (b - a).y() * (c - a).x());
-    }
-  return area;
-}
-
 // Inflates the coarse version of `pattern` (recursively started) and prolongates; empty when not possible.
 Vertices coarseToFine(const Pattern& pattern, const SewnMesh& mesh, const InflateOptions& options,
                       StartReport& report) {
   const double triangles = mesh.numTriangles() / options.coarseStartRatio;
+  double area = 0;  // of all panels, at rest
+  for (const ElementRest& rest : mesh.rest) area += rest.area;
   // Equilateral triangles of edge h have area sqrt(3)/4 h^2.
-  const double h = std::sqrt(4 * totalPanelArea(pattern) / (std::sqrt(3.0) * triangles));
+  const double h = std::sqrt(4 * area / (std::sqrt(3.0) * triangles));
   std::optional<Pattern> coarse = coarsenPattern(pattern, mesh, h);
   if (!coarse) return {};
   SewnMesh coarseMesh;
@@ -254,12 +225,12 @@ Vertices coarseToFine(const Pattern& pattern, const SewnMesh& mesh, const Inflat
   } catch (const Error&) {
     return {};
   }
+  // Coarsening that hardly coarsens (seams dense with corners) is no use.
+  if (coarseMesh.numTriangles() > 0.6 * mesh.numTriangles()) return {};
   InflateOptions coarseOptions = options;
   coarseOptions.seamRods = nullptr;  // the coarse mesh's own rods (same stiffness)
   coarseOptions.tolerance = std::max(options.tolerance, options.coarseTolerance);
   coarseOptions.maxIterations = std::min(options.maxIterations, options.coarseMaxIterations);
-  // Coarsening that hardly coarsens (seams dense with corners) is no use.
-  if (coarseMesh.numTriangles() > 0.6 * mesh.numTriangles()) return {};
   Vertices x0;
   if (coarseMesh.numTriangles() >= options.coarseStartTriangles)
     x0 = coarseToFine(*coarse, coarseMesh, options, report);

@@ -1,18 +1,18 @@
 // A coarse-to-fine start for a bare pattern (one without start positions). Newton from the spherical start
 // (initial_shape.hpp) needs more iterations the finer the mesh (the Mylar balloon: 29 at 0.7k triangles, 55
-// at 15k, 121 at 60k), while from a shape that is already right at a coarser scale it needs about 10 to 15 at
-// any size. So a large pattern is first coarsened (the same panels, meshed about 4.5 times coarser and sewn
+// at 15k, 121 at 60k), while from a shape that is already right at a coarser scale it needs about 15 to 20 at
+// any size. So a large pattern is first coarsened (the same panels, meshed about 6 times coarser and sewn
 // at a subset of the same seam vertices), the coarse pattern is inflated (itself started the same way), and
 // its shape is carried onto the fine panels.
 //
 // Coarsening keeps every seam consistent: each panel's boundary loop is split at key simulation vertices
-// (corners, junctions of three or more panel vertices, the ends of free edges), and each piece between two
-// keys keeps a subset of its vertices by arc length, decided once per simulation vertex, so the panels on
-// both sides of a seam keep the same vertices and are stitched there. The interior is remeshed
-// (remesh::meshPanel). Prolongation locates each fine panel vertex in its coarse panel (barycentric) and
-// interpolates the coarse inflated positions, curved by Phong tessellation with the coarse outer surface's
-// vertex normals (a flat interpolation starts Newton with every fine triangle flat, and costs a few shifted
-// iterations more).
+// (corners, and junctions: where a boundary changes partner or meets panels its edges do not join, as at
+// the ends of free edges), and each piece between two keys keeps every stride-th vertex, decided once per
+// simulation vertex, so the panels on both sides of a seam keep the same vertices and are stitched there.
+// The interior is remeshed (remesh::meshPanel). Prolongation locates each fine panel vertex in its coarse
+// panel (barycentric) and interpolates the coarse inflated positions, curved by Phong tessellation with the
+// coarse outer surface's vertex normals (a flat interpolation starts Newton with every fine triangle flat,
+// and costs a few shifted iterations more).
 #pragma once
 #include <optional>
 
