@@ -196,3 +196,33 @@ TEST(MembraneEnergy, CompressionFieldAndStress) {
   const Triangle slack = makeTriangle(0.9, 0.8, 9);
   EXPECT_EQ(membraneElementState(slack.rest, slack.x[0], slack.x[1], slack.x[2], m).regime, Regime::Slack);
 }
+
+TEST(MembraneEnergy, CornerPartsEqualTheFullElementsInEveryRegime) {
+  // membraneElementCorner (the smoother's) against the corner's rows and diagonal block of membraneElement:
+  // taut, wrinkled, slack and inside both bands, projected and exact.
+  const double cases[][2] = {{1.3, 1.1}, {1.3, 0.6}, {0.9, 0.5}, {1.01, 0.5}, {1.3, 1 / std::sqrt(1.3) + 0.005}};
+  for (const bool project : {true, false}) {
+    ElementOptions o;
+    o.projectHessian = project;
+    for (const auto& c : cases) {
+      const MembraneMaterial m = testMaterial(0.02);
+      const Triangle t = makeTriangle(c[0], c[1], 7);
+      Vector9d g;
+      Matrix9d H;
+      const double e = membraneElement(t.rest, t.x[0], t.x[1], t.x[2], m, o, &g, &H);
+      for (int k = 0; k < 3; ++k) {
+        Eigen::Vector3d gk;
+        Eigen::Matrix3d hk;
+        const double ek = membraneElementCorner(t.rest, t.x[0], t.x[1], t.x[2], m, k, o, &gk, &hk);
+        const double scale = 1e-12 * (1 + H.norm());
+        EXPECT_NEAR(ek, e, 1e-14 * (1 + std::abs(e)));
+        EXPECT_LT((gk - g.segment<3>(3 * k)).norm(), scale) << c[0] << " " << c[1] << " corner " << k;
+        EXPECT_LT((hk - H.block<3, 3>(3 * k, 3 * k)).norm(), scale) << c[0] << " " << c[1] << " corner " << k;
+      }
+      if (c[0] < 1 - 0.02)
+        EXPECT_EQ(e, 0.0);
+      else
+        EXPECT_GT(g.norm(), 0.0);
+    }
+  }
+}

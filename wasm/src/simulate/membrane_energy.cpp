@@ -111,6 +111,29 @@ Eigen::Matrix<double, N, N> clampedPsd(const Eigen::Matrix<double, N, N>& m) {
   return es.eigenvectors() * es.eigenvalues().cwiseMax(0.0).asDiagonal() * es.eigenvectors().transpose();
 }
 
+// J = dc/dx (3x9): dC11 = 2 f1.df1, dC22 = 2 f2.df2, dC12 = f1.df2 + f2.df1, df_i/dx_a = w(a,i) I.
+Eigen::Matrix<double, 3, 9> strainJacobian(const Eigen::Matrix<double, 3, 2>& F, const Eigen::Matrix<double, 3, 2>& w) {
+  const Eigen::Vector3d f1 = F.col(0), f2 = F.col(1);
+  Eigen::Matrix<double, 3, 9> J;
+  for (int a = 0; a < 3; ++a) {
+    J.block<1, 3>(0, 3 * a) = 2 * w(a, 0) * f1.transpose();
+    J.block<1, 3>(1, 3 * a) = 2 * w(a, 1) * f2.transpose();
+    J.block<1, 3>(2, 3 * a) = (w(a, 0) * f2 + w(a, 1) * f1).transpose();
+  }
+  return J;
+}
+
+// The Hessian is J^T (d2psi/dc2) J, the material part, plus the geometric part 2 (w_a^T P w_b) I with
+// P = dpsi/dC (symmetric); both clamped to PSD when projecting.
+void hessianParts(const Density& d, const ElementOptions& options, Eigen::Matrix3d* Hc, Eigen::Matrix2d* P) {
+  *P << d.grad[0], 0.5 * d.grad[2], 0.5 * d.grad[2], d.grad[1];
+  *Hc = d.hess;
+  if (options.projectHessian) {
+    *Hc = clampedPsd<3>(*Hc);
+    *P = clampedPsd<2>(*P);
+  }
+}
+
 }  // namespace
 
 double membraneElementEnergy(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
@@ -133,29 +156,43 @@ double membraneElement(const ElementRest& rest, const Eigen::Vector3d& x0, const
   if (hess) hess->setZero();
   if (slack) return 0;
 
-  // J = dc/dx (3x9): dC11 = 2 f1.df1, dC22 = 2 f2.df2, dC12 = f1.df2 + f2.df1, df_i/dx_a = w(a,i) I.
   const Eigen::Matrix<double, 3, 2> w = cornerWeights(rest.DmInv);
-  const Eigen::Vector3d f1 = F.col(0), f2 = F.col(1);
-  Eigen::Matrix<double, 3, 9> J;
-  for (int a = 0; a < 3; ++a) {
-    J.block<1, 3>(0, 3 * a) = 2 * w(a, 0) * f1.transpose();
-    J.block<1, 3>(1, 3 * a) = 2 * w(a, 1) * f2.transpose();
-    J.block<1, 3>(2, 3 * a) = (w(a, 0) * f2 + w(a, 1) * f1).transpose();
-  }
+  const Eigen::Matrix<double, 3, 9> J = strainJacobian(F, w);
   if (grad) *grad = scale * J.transpose() * d.grad;
   if (hess && options.wantHessian) {
-    // Material part J^T (d2psi/dc2) J plus the geometric part 2 (w_a^T P w_b) I, P = dpsi/dC (symmetric).
+    Eigen::Matrix3d Hc;
     Eigen::Matrix2d P;
-    P << d.grad[0], 0.5 * d.grad[2], 0.5 * d.grad[2], d.grad[1];
-    Eigen::Matrix3d Hc = d.hess;
-    if (options.projectHessian) {
-      Hc = clampedPsd<3>(Hc);
-      P = clampedPsd<2>(P);
-    }
-    *hess = J.transpose() * Hc * J;
+    hessianParts(d, options, &Hc, &P);
+    // A coefficient-wise product: Eigen sends a 9x9 result of a general product to its blocked GEMM, which is
+    // slower at this size.
+    const Eigen::Matrix<double, 9, 3> JtHc = J.transpose() * Hc;
+    *hess = JtHc.lazyProduct(J);
     const Eigen::Matrix3d Wg = 2 * w * P * w.transpose();
     for (int a = 0; a < 3; ++a)
       for (int b = 0; b < 3; ++b) hess->block<3, 3>(3 * a, 3 * b).diagonal().array() += Wg(a, b);
+    *hess *= scale;
+  }
+  return scale * d.psi;
+}
+
+double membraneElementCorner(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                             const Eigen::Vector3d& x2, const MembraneMaterial& material, int corner,
+                             const ElementOptions& options, Eigen::Vector3d* grad, Eigen::Matrix3d* hess) {
+  const Eigen::Matrix<double, 3, 2> F = deformationGradient(rest, x0, x1, x2);
+  const Density d = relaxedDensity(cauchyGreen(F), material.kappa(), material.band);
+  const double scale = material.thickness * rest.area;
+  if (grad) grad->setZero();
+  if (hess) hess->setZero();
+  if (d.psi == 0 && d.grad.isZero(0)) return 0;
+  const Eigen::Matrix<double, 3, 2> w = cornerWeights(rest.DmInv);
+  const Eigen::Matrix3d Ja = strainJacobian(F, w).block<3, 3>(0, 3 * corner);
+  if (grad) *grad = scale * Ja.transpose() * d.grad;
+  if (hess) {
+    Eigen::Matrix3d Hc;
+    Eigen::Matrix2d P;
+    hessianParts(d, options, &Hc, &P);
+    *hess = Ja.transpose() * Hc * Ja;
+    hess->diagonal().array() += 2 * w.row(corner).dot(P * w.row(corner).transpose());
     *hess *= scale;
   }
   return scale * d.psi;

@@ -62,6 +62,12 @@ double membraneElement(const ElementRest& rest, const Eigen::Vector3d& x0, const
                        const Eigen::Vector3d& x2, const MembraneMaterial& material, const ElementOptions& options,
                        Vector9d* grad, Matrix9d* hess);
 
+// The same element's gradient (3) and diagonal Hessian block (3x3) in one corner (0, 1 or 2) only: the
+// vertex-by-vertex smoother (smoothing.hpp). Equal to the corner's parts of membraneElement.
+double membraneElementCorner(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
+                             const Eigen::Vector3d& x2, const MembraneMaterial& material, int corner,
+                             const ElementOptions& options, Eigen::Vector3d* grad, Eigen::Matrix3d* hess);
+
 // Energy only (line search).
 double membraneElementEnergy(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
                              const Eigen::Vector3d& x2, const MembraneMaterial& material);
