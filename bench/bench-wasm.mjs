@@ -49,7 +49,7 @@ function run(name, triangles) {
       example: name, triangles: session.numTriangles(), vertices: session.numVertices(),
       iterations: result.iterations, factorizations: result.timings.factorizations, seconds, factorMs,
       coarseLevels: info.coarseStart.levels, coarseIterations: info.coarseStart.iterations,
-      startSeconds: info.coarseStart.ms / 1000,
+      startSeconds: info.coarseStart.ms / 1000, smoothingSeconds: info.coarseStart.smoothingMs / 1000,
       setupMs: result.timings.setupMs, heapMb: Module.HEAPU8.length / 2 ** 20, residual: result.residual,
       converged: result.converged,
     };
@@ -68,6 +68,7 @@ function run(name, triangles) {
 
 run('mylar', 300);  // warm-up: tier up the hot functions before measuring
 run('sphere3', 300);
+run('mylar', 2400);  // and those of the coarse-to-fine start (coarsening, smoothing), from 2,000 triangles up
 const rows = [];
 if (!asJson) {
   console.log(['example', 'tris', 'verts', 'iters', 'facts', 'start s', 'solve s', 'factor ms', 'setup ms', 'heap MB', 'rim/a',

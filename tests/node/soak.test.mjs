@@ -72,7 +72,9 @@ function solver(handlers) {
 const cancelled = (error) => error.code === 'cancelled';
 
 test('200 inflations started and cancelled (every 20th run to the end) leave no memory behind', async (t) => {
-  const patternText = JSON.stringify(api.examplePattern('mylar', 600));
+  // 1,500 triangles: the solve spans several of the worker's 30 ms steps, so every cancel point below comes
+  // before it converges (at 600 a faster assembly let it finish in one step).
+  const patternText = JSON.stringify(api.examplePattern('mylar', 1500));
   const { call } = solver(createHandlers(api));
   const started = performance.now();
   let baseline = null;

@@ -97,7 +97,8 @@ class InflationSession {
                     {{"levels", report.levels},
                      {"triangles", report.coarseTriangles},
                      {"iterations", report.coarseIterations},
-                     {"ms", report.coarseMs}}},
+                     {"ms", report.coarseMs},
+                     {"smoothingMs", report.smoothingMs}}},
                    {"warnings", w}})
           .dump();
     });

@@ -9,6 +9,7 @@
 #include "flatten/segment_boundary.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "simulate/initial_shape.hpp"
+#include "simulate/smoothing.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -233,7 +234,7 @@ Vertices coarseToFine(const Pattern& pattern, const SewnMesh& mesh, const Inflat
   coarseOptions.maxIterations = std::min(options.maxIterations, options.coarseMaxIterations);
   Vertices x0;
   if (coarseMesh.numTriangles() >= options.coarseStartTriangles)
-    x0 = coarseToFine(*coarse, coarseMesh, options, report);
+    x0 = coarseToFine(*coarse, coarseMesh, coarseOptions, report);
   const int coarseTriangles = coarseMesh.numTriangles();
   InflationSolver solver(std::move(coarseMesh), pattern.material, pattern.pressure, coarseOptions, x0);
   while (solver.step(50) == InflateState::Running) {
@@ -242,7 +243,13 @@ Vertices coarseToFine(const Pattern& pattern, const SewnMesh& mesh, const Inflat
   report.coarseIterations += solver.iterations();
   if (report.coarseTriangles == 0 || coarseTriangles < report.coarseTriangles) report.coarseTriangles = coarseTriangles;
   if (solver.state() == InflateState::Failed || !solver.positions().allFinite()) return {};
-  return prolongate(*coarse, solver.mesh(), solver.positions(), pattern, mesh);
+  Vertices x = prolongate(*coarse, solver.mesh(), solver.positions(), pattern, mesh);
+  const SmoothingReport smoothing =
+      smoothShape(mesh, pattern.material, pattern.pressure, options, x, options.smoothingSweeps);
+  report.smoothingMs += smoothing.ms;
+  report.residualProlongated = smoothing.residualBefore;
+  report.residualSmoothed = smoothing.residualAfter;
+  return x;
 }
 
 }  // namespace

@@ -33,7 +33,10 @@ struct StartReport {
   int levels = 0;           // coarse patterns inflated (0: spherical or given start)
   int coarseTriangles = 0;  // triangles of the coarsest
   int coarseIterations = 0;
-  double coarseMs = 0;  // time spent on coarsening, coarse solves and prolongation
+  double coarseMs = 0;  // time spent on coarsening, coarse solves, prolongation and smoothing
+  double smoothingMs = 0;
+  double residualProlongated = 0;  // the fine level's relative force residual before and after smoothing
+  double residualSmoothed = 0;
 };
 
 // The start positions for inflating `pattern`: its own start positions when it has them (the optimizer's

@@ -68,6 +68,8 @@ struct InflateOptions {
   double coarseStartRatio = 6;
   double coarseTolerance = 1e-3;
   int coarseMaxIterations = 200;
+  // Nonlinear Gauss-Seidel sweeps (smoothing.hpp) over each prolongated shape before Newton takes it up.
+  int smoothingSweeps = 10;
   double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
 };
 
