@@ -12,7 +12,8 @@
 // The interior is remeshed (remesh::meshPanel). Prolongation locates each fine panel vertex in its coarse
 // panel (barycentric) and interpolates the coarse inflated positions, curved by Phong tessellation with the
 // coarse outer surface's vertex normals (a flat interpolation starts Newton with every fine triangle flat,
-// and costs a few shifted iterations more).
+// and costs a few shifted iterations more). The prolongated shape is then smoothed (smoothing.hpp): it is
+// right at the coarse scale only, and Newton from it needed twice as many iterations.
 #pragma once
 #include <optional>
 

@@ -30,7 +30,7 @@ struct InflateOptions {
   // pressure load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
   double tolerance = 1e-5;
   int maxIterations = 1000;    // Mylar from the spherical start: ~34 at 3k triangles, ~55 at 15k, ~120 at 60k; from the
-                               // coarse-to-fine start 14-18 at any size (bench/README.md)
+                               // coarse-to-fine start, smoothed, 7-18 at any size (bench/README.md)
   double band = 1e-4;          // smoothing band of the relaxed energy (MembraneMaterial::band)
   bool projectHessian = true;  // per-element PSD projection of the membrane Hessian
   double armijo = 1e-4;        // sufficient decrease constant
