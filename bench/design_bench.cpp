@@ -253,6 +253,14 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
               {"newtonIterations", newton},
               {"equilibriumSolves", opt.timings().equilibriumSolves},
               {"rejectedTrials", opt.timings().rejectedTrials},
+              {"timingsMs",
+               {{"setup", opt.timings().setupMs},
+                {"equilibrium", opt.timings().equilibriumMs},
+                {"adjoint", opt.timings().adjointMs},
+                {"align", opt.timings().alignMs},
+                {"objective", opt.timings().objectiveMs},
+                {"remesh", opt.timings().remeshMs},
+                {"total", opt.timings().totalMs}}},
               {"objectives",
                [&] {
                  json e = json::array();
