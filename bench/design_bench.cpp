@@ -7,7 +7,7 @@
 //                       [--trace] [--set NAME=VALUE ...] [--no-remesh-check] [--out-dir DIR]
 // --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
 // --set changes an optimizer option (interiorFollowsBoundary, outlineSmoothing, quality, laplace, smooth, seam,
-// maxIterations, stallIterations, tolerance: the equilibrium's) to compare variants. After each run the final
+// maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants. After each run the final
 // outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check skips it).
 #include <sys/resource.h>
 
@@ -120,6 +120,10 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.coarseIterations = int(v);
   else if (name == "tolerance")
     o.inflate.tolerance = v;
+  else if (name == "projectEveryStep")
+    o.projectEveryStep = v != 0;
+  else if (name == "band")
+    o.inflate.band = v;
   else if (name == "seamStiffness")
     o.inflate.seamStiffness = v;
   else
