@@ -10,6 +10,7 @@
 #include "simulate/example_patterns.hpp"
 #include "simulate/inflate.hpp"
 #include "simulate/initial_shape.hpp"
+#include "util/error.hpp"
 
 using namespace billow;
 
@@ -156,6 +157,38 @@ TEST(Inflate, StartsFromACallerShapeAndReusesTheFactorizationOnRestart) {
   }
   EXPECT_EQ(s.state(), InflateState::Converged);
   EXPECT_GT(s.volume(), first.volume);
+}
+
+TEST(Inflate, RestartWithNewRestShapesMatchesAFreshSolver) {
+  // The pattern optimizer keeps one solver per mesh and hands it new rest shapes: the equilibrium must be
+  // the one a new solver finds for those panels.
+  ExampleOptions eo;
+  eo.triangles = 600;
+  const Pattern p = examplePattern("sphere3", eo);
+  const SewnMesh mesh = sewPattern(p);
+  InflationSolver kept(mesh, p.material, p.pressure);
+  while (kept.step(50) == InflateState::Running) {
+  }
+  ASSERT_EQ(kept.state(), InflateState::Converged);
+  const double volumeBefore = kept.volume();
+  // The panels 2 % larger across the gores (x), the same along them.
+  SewnMesh wider = mesh;
+  Pattern q = p;
+  for (auto& panel : q.panels) panel.vertices.col(0) *= 1.02;
+  const SewnMesh widerMesh = sewPattern(q);
+  wider.rest = widerMesh.rest;
+  kept.restartWithRest(wider.rest, kept.positions());
+  while (kept.step(50) == InflateState::Running) {
+  }
+  ASSERT_EQ(kept.state(), InflateState::Converged) << kept.message();
+  InflationSolver fresh(wider, p.material, p.pressure, {}, kept.positions());
+  while (fresh.step(50) == InflateState::Running) {
+  }
+  ASSERT_EQ(fresh.state(), InflateState::Converged);
+  EXPECT_LE(fresh.iterations(), 1);  // already at its equilibrium
+  EXPECT_NEAR(kept.volume(), fresh.volume(), 1e-9 * fresh.volume());
+  EXPECT_GT(kept.volume(), 1.02 * volumeBefore);  // wider gores hold more
+  EXPECT_THROW(kept.restartWithRest(std::vector<ElementRest>(3), kept.positions()), Error);
 }
 
 TEST(Inflate, AnInternalPanelPullsTwoSeamsTogether) {

@@ -379,6 +379,13 @@ void InflationSolver::restart(const Vertices& x0, double pressure) {
   if (!std::isfinite(energy_)) fail("The start shape is invalid (a triangle is collapsed). Try another start.");
 }
 
+void InflationSolver::restartWithRest(const std::vector<ElementRest>& rest, const Vertices& x0) {
+  if (rest.size() != mesh_.rest.size())
+    throw Error("inflate.bad-start", "The panels' rest shapes do not fit the pattern.");
+  mesh_.rest = rest;
+  restart(x0, pressure_);
+}
+
 double InflationSolver::timeFactorization() {
   assemble();
   Sparse& s = *sparse_;

@@ -121,6 +121,9 @@ class InflationSolver {
 
   // Restarts from new positions or pressure, keeping the symbolic factorization.
   void restart(const Vertices& x0, double pressure);
+  // Restarts from x0 with new rest shapes of the same triangles (the pattern optimizer's trial panels),
+  // keeping the symbolic factorization. Throws billow::Error("inflate.bad-start") on another count.
+  void restartWithRest(const std::vector<ElementRest>& rest, const Vertices& x0);
 
   InflateState state() const { return state_; }
   const std::string& message() const { return message_; }
