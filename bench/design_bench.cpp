@@ -122,6 +122,12 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.inflate.tolerance = v;
   else if (name == "projectEveryStep")
     o.projectEveryStep = v != 0;
+  else if (name == "maxStep")
+    o.maxStep = v;
+  else if (name == "warmSmoothingSweeps")
+    o.warmSmoothingSweeps = int(v);
+  else if (name == "warmSmoothingThreshold")
+    o.warmSmoothingThreshold = v;
   else if (name == "band")
     o.inflate.band = v;
   else if (name == "seamStiffness")

@@ -9,6 +9,7 @@
 #include "optimize/seam_projection.hpp"
 #include "pattern/remesh_pattern.hpp"
 #include "simulate/initial_shape.hpp"
+#include "simulate/smoothing.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -59,6 +60,7 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   built_ = built;
   pattern_ = built.pattern;
   mesh_ = sewPattern(pattern_);
+  solver_.reset();
   // The seam rods are fixed for the phase: their coefficient (it would otherwise follow the panels' mean edge
   // length and area) and which seam vertices carry one (a corner is judged by its rest angle), so the
   // equilibrium forces depend on X only through the membrane (the adjoint's dg/dX) and E(X) stays smooth.
@@ -231,7 +233,19 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
       return false;
     }
   }
-  InflationSolver solver(std::move(mesh), pattern_.material, pattern_.pressure, io, start);
+  Vertices from = start;
+  if (options_.warmSmoothingSweeps > 0)
+    smoothShape(mesh, pattern_.material, pattern_.pressure, io, from, options_.warmSmoothingSweeps,
+                options_.warmSmoothingThreshold);
+  // The cut panels have their own mesh: a solver of their own. Otherwise the phase's solver, new rest shapes.
+  std::unique_ptr<InflationSolver> own;
+  if (asCut)
+    own = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
+  else if (solver_)
+    solver_->restartWithRest(mesh.rest, from);
+  else
+    solver_ = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
+  InflationSolver& solver = own ? *own : *solver_;
   while (solver.step(io.maxIterations) == InflateState::Running) {
   }
   ++timings_.equilibriumSolves;

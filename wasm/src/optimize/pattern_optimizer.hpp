@@ -41,6 +41,13 @@ struct OptimizeOptions {
   // app's setting is in wasm/bindings/target_bindings.cpp).
   int windowIterations = 0;
   double windowMove = 1e-3;
+  // Before each equilibrium solve from the last shape, nonlinear Gauss-Seidel sweeps (smoothing.hpp) down to
+  // a relative vertex force of warmSmoothingThreshold. A step of the panels changes rest lengths by up to a
+  // few percent, ten times the foil's strain at equilibrium, so parts of the sheet start slack; those are
+  // pushed out by the pressure, vertex by vertex, before Newton (teddy 3k: 10-12 Newton iterations and 15
+  // factorizations per solve -> 5-7 and as many; bench/README.md). 0 sweeps: off.
+  int warmSmoothingSweeps = 10;
+  double warmSmoothingThreshold = 0.01;
   int memory = 8;                // L-BFGS pairs
   double maxStep = 0.5;          // largest panel-vertex move of one step, in mean rest edge lengths
   int maxHalvings = 12;          // line search
@@ -217,9 +224,11 @@ class PatternOptimizer {
   int windowStart_ = -1;                  // its iteration
   bool coarse_ = false;                   // in the coarse phase (OptimizeOptions::coarseFactor)
   std::shared_ptr<const SeamRods> rods_;  // the seam rods of every solve of this phase (setUp)
-  double fineEdgeLength_ = 0;             // the design's edge length [m]
-  bool projectTrials_ = false;            // options.projectEveryStep, unless projecting the flattened panels folds them
-  double start_ = 0;                      // steady-clock ms at construction
+  // The equilibrium solver of this phase's mesh, kept from solve to solve for its symbolic factorization.
+  std::unique_ptr<InflationSolver> solver_;
+  double fineEdgeLength_ = 0;   // the design's edge length [m]
+  bool projectTrials_ = false;  // options.projectEveryStep, unless projecting the flattened panels folds them
+  double start_ = 0;            // steady-clock ms at construction
 };
 
 }  // namespace billow
