@@ -47,7 +47,7 @@ struct OptimizeOptions {
   // pushed out by the pressure, vertex by vertex, before Newton (teddy 3k: 10-12 Newton iterations and 15
   // factorizations per solve -> 5-7 and as many; bench/README.md). 0 sweeps: off.
   int warmSmoothingSweeps = 10;
-  double warmSmoothingThreshold = 0.01;
+  double warmSmoothingThreshold = 0.1;
   int memory = 8;                // L-BFGS pairs
   double maxStep = 0.5;          // largest panel-vertex move of one step, in mean rest edge lengths
   int maxHalvings = 12;          // line search
