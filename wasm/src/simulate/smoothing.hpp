@@ -11,6 +11,9 @@
 // of its star (membrane, pressure work and seam rods). A sweep costs a few assemblies, far less than one
 // factorization, and Newton then starts from forces of tens instead of thousands (bench/README.md
 // "Smoothing the coarse start").
+// The pattern optimizer smooths before each of its equilibrium solves too, to a lower force: a step of the
+// panels leaves parts of the sheet slack at the last shape, where a vertex feels only the pressure, about
+// 0.4 p l^2 (bench/README.md "Smoothing before each equilibrium solve").
 #pragma once
 #include "simulate/inflate.hpp"
 
