@@ -18,35 +18,60 @@ double maxMismatch(const std::vector<PatternObjective::EdgePair>& pairs, const E
   return m;
 }
 
+// r = L_a - L_b per pair and J = dr/dX.
+void seamLengthResiduals(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
+                         Eigen::VectorXd& r, Eigen::SparseMatrix<double>& J) {
+  const int m = static_cast<int>(pairs.size());
+  std::vector<Eigen::Triplet<double>> trip;
+  trip.reserve(size_t(m) * 8);
+  r.resize(m);
+  for (int k = 0; k < m; ++k) {
+    const auto& e = pairs[k];
+    const Eigen::Vector2d ea = X.segment<2>(2 * e.a1) - X.segment<2>(2 * e.a0);
+    const Eigen::Vector2d eb = X.segment<2>(2 * e.b1) - X.segment<2>(2 * e.b0);
+    const double La = ea.norm(), Lb = eb.norm();
+    r[k] = La - Lb;
+    const Eigen::Vector2d ua = ea / La, ub = eb / Lb;
+    for (int c = 0; c < 2; ++c) {
+      trip.emplace_back(k, 2 * e.a1 + c, ua[c]), trip.emplace_back(k, 2 * e.a0 + c, -ua[c]);
+      trip.emplace_back(k, 2 * e.b1 + c, -ub[c]), trip.emplace_back(k, 2 * e.b0 + c, ub[c]);
+    }
+  }
+  J.resize(m, X.size());
+  J.setFromTriplets(trip.begin(), trip.end());  // duplicates (shared vertices) are summed
+}
+
+// Solves (J J^T) mu = b; false when J J^T does not factorize.
+bool solveNormal(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& b, Eigen::VectorXd& mu) {
+  Eigen::SparseMatrix<double> JJt = J * J.transpose();
+  for (int k = 0; k < JJt.rows(); ++k) JJt.coeffRef(k, k) += 1e-12;  // pairs that share both edges' vertices
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(JJt);
+  if (ldlt.info() != Eigen::Success) return false;
+  mu = ldlt.solve(b);
+  return mu.allFinite();
+}
+
 }  // namespace
+
+Eigen::VectorXd tangentToSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
+                                     const Eigen::VectorXd& v) {
+  if (pairs.empty()) return v;
+  Eigen::VectorXd r, mu;
+  Eigen::SparseMatrix<double> J;
+  seamLengthResiduals(pairs, X, r, J);
+  if (!solveNormal(J, J * v, mu)) return v;
+  return v - J.transpose() * mu;
+}
 
 double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, Eigen::VectorXd& X, int maxIterations,
                           double tolerance) {
   const int m = static_cast<int>(pairs.size());
   if (m == 0) return 0;
   for (int it = 0; it < maxIterations && maxMismatch(pairs, X) > tolerance; ++it) {
-    std::vector<Eigen::Triplet<double>> trip;
-    Eigen::VectorXd r(m);
-    for (int k = 0; k < m; ++k) {
-      const auto& e = pairs[k];
-      const Eigen::Vector2d ea = X.segment<2>(2 * e.a1) - X.segment<2>(2 * e.a0);
-      const Eigen::Vector2d eb = X.segment<2>(2 * e.b1) - X.segment<2>(2 * e.b0);
-      const double La = ea.norm(), Lb = eb.norm();
-      r[k] = La - Lb;
-      const Eigen::Vector2d ua = ea / La, ub = eb / Lb;
-      for (int c = 0; c < 2; ++c) {
-        trip.emplace_back(k, 2 * e.a1 + c, ua[c]), trip.emplace_back(k, 2 * e.a0 + c, -ua[c]);
-        trip.emplace_back(k, 2 * e.b1 + c, -ub[c]), trip.emplace_back(k, 2 * e.b0 + c, ub[c]);
-      }
-    }
-    Eigen::SparseMatrix<double> J(m, X.size());
-    J.setFromTriplets(trip.begin(), trip.end());  // duplicates (shared vertices) are summed
-    Eigen::SparseMatrix<double> JJt = J * J.transpose();
-    for (int k = 0; k < m; ++k) JJt.coeffRef(k, k) += 1e-12;  // pairs that share both edges' vertices
-    Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(JJt);
-    if (ldlt.info() != Eigen::Success) break;
-    const Eigen::VectorXd mu = ldlt.solve(r);
-    if (!mu.allFinite()) break;
+    Eigen::VectorXd r, mu;
+    Eigen::SparseMatrix<double> J;
+    seamLengthResiduals(pairs, X, r, J);
+    if (!solveNormal(J, r, mu)) break;
     X -= J.transpose() * mu;
   }
   return maxMismatch(pairs, X);

@@ -13,4 +13,10 @@ namespace billow {
 double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, Eigen::VectorXd& X,
                           int maxIterations = 10, double tolerance = 1e-12);
 
+// v minus its part normal to the constraint set at X: v - J^T (J J^T)^-1 J v with J = dr/dX, so that
+// J (result) = 0 (to first order a move along the result keeps the seam lengths equal). Zero rows of v
+// (interior vertices, which J never touches) stay zero.
+Eigen::VectorXd tangentToSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
+                                     const Eigen::VectorXd& v);
+
 }  // namespace billow
