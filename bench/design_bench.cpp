@@ -128,6 +128,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.warmSmoothingSweeps = int(v);
   else if (name == "warmSmoothingThreshold")
     o.warmSmoothingThreshold = v;
+  else if (name == "tangentSteps")
+    o.tangentSteps = v != 0;
   else if (name == "band")
     o.inflate.band = v;
   else if (name == "seamStiffness")

@@ -15,6 +15,7 @@
 #include "optimize/harmonic_interior.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/rest_derivatives.hpp"
+#include "optimize/seam_projection.hpp"
 #include "pattern/design_scene.hpp"
 #include "pattern/remesh_pattern.hpp"
 
@@ -390,6 +391,58 @@ TEST(Optimize, ThreeGoreSphereGetsMuchCloser) {
   ASSERT_TRUE(r.cut.ok) << r.cut.message;
   EXPECT_NEAR(r.cut.distanceRms, last.distanceRms, 0.1 * last.distanceRms);
   EXPECT_LT(r.cut.distanceRms, 0.5 * first.distanceRms);
+}
+
+TEST(Optimize, TangentToSeamLengthsIsAProjectionThatKeepsLengthsToFirstOrder) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, {});
+  const auto& pairs = opt.objective().edgePairs();
+  ASSERT_GT(pairs.size(), 10u);
+  Eigen::VectorXd X = packPattern(f.built.pattern);
+  projectSeamLengths(pairs, X);
+  const Eigen::VectorXd v = randomDirection(X, 3);
+  const Eigen::VectorXd t = tangentToSeamLengths(pairs, X, v);
+  // Idempotent, and the removed part is normal to the tangent (orthogonal projection).
+  EXPECT_LT((tangentToSeamLengths(pairs, X, t) - t).norm(), 1e-9 * v.norm());
+  EXPECT_LT(std::abs((v - t).dot(t)), 1e-9 * v.squaredNorm());
+  EXPECT_GT(t.norm(), 0.1 * v.norm());
+  // A small move along it keeps every pair's lengths equal to second order; along v they part at first order.
+  const auto mismatch = [&](const Eigen::VectorXd& Y) {
+    double m = 0;
+    for (const auto& e : pairs)
+      m = std::max(m, std::abs((Y.segment<2>(2 * e.a1) - Y.segment<2>(2 * e.a0)).norm() -
+                               (Y.segment<2>(2 * e.b1) - Y.segment<2>(2 * e.b0)).norm()));
+    return m;
+  };
+  const double h = 1e-4 * opt.objective().meanEdgeLength() / v.lpNorm<Eigen::Infinity>();
+  const double alongV = mismatch(X + h * v), alongT = mismatch(X + h * (v.norm() / t.norm()) * t);
+  EXPECT_GT(alongV, 1e-9 * opt.objective().meanEdgeLength());
+  EXPECT_LT(alongT, 1e-3 * alongV) << alongT << " vs " << alongV;
+}
+
+TEST(Optimize, TangentStepsEndWhereTheTangentialGradientIsSmall) {
+  // With every trial projected onto equal seam lengths, the part of a step across that set is undone by the
+  // projection; L-BFGS on the tangential part (OptimizeOptions::tangentSteps) ends at a stationary point of
+  // the constrained problem, where the recorded (tangential) gradient is small, and no farther from the target.
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  double rms[2] = {0, 0}, gradient[2] = {0, 0};
+  for (const bool tangent : {false, true}) {
+    OptimizeOptions o;
+    o.tangentSteps = tangent;
+    const OptimizeRun r = optimize(f, o, 80);
+    ASSERT_GE(r.history.size(), 3u);
+    EXPECT_LT(r.history.back().seamMismatch, 1e-4);
+    expectObjectiveNeverRises(r.history);
+    rms[tangent] = r.history.back().distanceRms;
+    gradient[tangent] = r.history.back().gradient;
+    std::printf("[figures] sphere gores 800, tangent steps %d: %d iterations, rms %.3f%%, gradient %.2e, %s\n",
+                int(tangent), r.iterations, 100 * rms[tangent], gradient[tangent], r.message.c_str());
+  }
+  EXPECT_LT(gradient[1], 2e-3);
+  EXPECT_LT(gradient[1], 0.2 * gradient[0]);
+  EXPECT_LT(rms[1], 1.01 * rms[0]);
 }
 
 TEST(Optimize, SmoothingBeforeEachSolveSavesNewtonIterations) {

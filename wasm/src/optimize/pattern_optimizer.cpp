@@ -323,7 +323,7 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
   r.distanceRms = count ? std::sqrt(r.distanceRms / count) : 0;
   r.seamMismatch = objective_->maxEdgeMismatch(X_);
   const double norm = double(objective_->numVertices()) * D;
-  r.gradient = g_.size() ? g_.lpNorm<Eigen::Infinity>() * norm / 2 : 0;
+  r.gradient = g_.size() ? searchGradient(X_, g_).lpNorm<Eigen::Infinity>() * norm / 2 : 0;
   r.stepLength = alpha, r.equilibriumIterations = newton, r.ms = elapsedMs(), r.projected = projected;
   r.coarse = coarse_;
   history_.push_back(r);
@@ -352,17 +352,30 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
 }
 
 // One L-BFGS iteration (two-loop recursion, Armijo backtracking with equilibrium re-solves).
+Eigen::VectorXd PatternOptimizer::searchGradient(const Eigen::VectorXd& X, const Eigen::VectorXd& g) const {
+  if (!(projectTrials_ && options_.tangentSteps)) return g;
+  return tangentToSeamLengths(objective_->edgePairs(), X, g);
+}
+
 bool PatternOptimizer::iterate() {
   const int m = static_cast<int>(S_.size());
-  Eigen::VectorXd q = -g_;
+  // With every trial projected onto equal seam lengths, a step's part across that constraint set is undone by
+  // the projection: L-BFGS works with the gradient's tangential part and its steps are made tangential.
+  const bool tangent = projectTrials_ && options_.tangentSteps;
+  const Eigen::VectorXd gt = searchGradient(X_, g_);
+  Eigen::VectorXd q = -gt;
   std::vector<double> a(m);
   for (int i = m - 1; i >= 0; --i) a[i] = S_[i].dot(q) / Y_[i].dot(S_[i]), q -= a[i] * Y_[i];
   q = precondition(q);
   if (m > 0) q *= S_[m - 1].dot(Y_[m - 1]) / Y_[m - 1].dot(precondition(Y_[m - 1]));
   for (int i = 0; i < m; ++i) q += (a[i] - Y_[i].dot(q) / Y_[i].dot(S_[i])) * S_[i];
-  Eigen::VectorXd d = q;
+  Eigen::VectorXd d = tangent ? tangentToSeamLengths(objective_->edgePairs(), X_, q) : q;
   double slope = g_.dot(d);
-  if (!(slope < 0)) d = -precondition(g_), slope = g_.dot(d), S_.clear(), Y_.clear();
+  if (!(slope < 0)) {
+    d = -precondition(gt);
+    if (tangent) d = tangentToSeamLengths(objective_->edgePairs(), X_, d);
+    slope = g_.dot(d), S_.clear(), Y_.clear();
+  }
   // Cap the largest vertex move (the first step has no curvature information at all).
   double maxMove = 0;
   for (int v = 0; v < d.size() / 2; ++v) maxMove = std::max(maxMove, d.segment<2>(2 * v).norm());
@@ -402,7 +415,7 @@ bool PatternOptimizer::iterate() {
     Eigen::VectorXd g;
     variableGradient(X, x, g);
     if (!g.allFinite()) return false;
-    const Eigen::VectorXd s = X - X_, y = g - g_;
+    const Eigen::VectorXd s = X - X_, y = searchGradient(X, g) - gt;
     if (s.dot(y) > 1e-12 * s.norm() * y.norm()) {
       S_.push_back(s), Y_.push_back(y);
       if (static_cast<int>(S_.size()) > options_.memory) S_.erase(S_.begin()), Y_.erase(Y_.begin());
