@@ -10,16 +10,13 @@
 #include "simulate/coarse_start.hpp"
 #include "simulate/example_patterns.hpp"
 #include "simulate/initial_shape.hpp"
+#include "test_support.hpp"
 
 using namespace billow;
+using billow::test::example;
+using billow::test::solve;
 
 namespace {
-
-Pattern example(const std::string& name, int triangles) {
-  ExampleOptions eo;
-  eo.triangles = triangles;
-  return examplePattern(name, eo);
-}
 
 double panelArea(const Pattern& p) {
   double a = 0;
@@ -37,13 +34,6 @@ int junctions(const SewnMesh& m, int count) {
   int n = 0;
   for (int v = 0; v < m.numVertices; ++v) n += m.stitchedCount[v] >= count;
   return n;
-}
-
-InflateResult solve(const Pattern& p, const Vertices& x0, const InflateOptions& o = {}) {
-  InflationSolver s(sewPattern(p), p.material, p.pressure, o, x0);
-  while (s.step(50) == InflateState::Running) {
-  }
-  return s.result();
 }
 
 }  // namespace

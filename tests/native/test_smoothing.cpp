@@ -6,16 +6,12 @@
 #include "simulate/coarse_start.hpp"
 #include "simulate/example_patterns.hpp"
 #include "simulate/smoothing.hpp"
+#include "test_support.hpp"
 
 using namespace billow;
+using billow::test::example;
 
 namespace {
-
-Pattern example(const std::string& name, int triangles) {
-  ExampleOptions eo;
-  eo.triangles = triangles;
-  return examplePattern(name, eo);
-}
 
 // Pi and the largest relative vertex force at x (the solver's own measures).
 struct State {
@@ -29,12 +25,10 @@ State stateAt(const SewnMesh& mesh, const Pattern& p, const Vertices& x, Inflate
   return {s.energy(), s.gradient().lpNorm<Eigen::Infinity>() / scale};
 }
 
-int newtonIterations(const SewnMesh& mesh, const Pattern& p, const Vertices& x0) {
-  InflationSolver s(mesh, p.material, p.pressure, {}, x0);
-  while (s.step(50) == InflateState::Running) {
-  }
-  EXPECT_EQ(s.state(), InflateState::Converged);
-  return s.iterations();
+int newtonIterations(const Pattern& p, const Vertices& x0) {
+  const InflateResult r = billow::test::solve(p, x0);
+  EXPECT_TRUE(r.converged);
+  return r.iterations;
 }
 
 }  // namespace
@@ -64,7 +58,7 @@ TEST_P(SmoothExample, RemovesMostOfTheProlongatedForcesAndSavesNewtonIterations)
   EXPECT_LT(s.residualAfter, s.residualBefore / 5) << s.residualBefore << " -> " << s.residualAfter;
   EXPECT_LT(after.residual, before.residual / 5) << before.residual << " -> " << after.residual;
   // Fewer Newton iterations from the smoothed shape, and the same equilibrium.
-  const int fromRaw = newtonIterations(mesh, p, raw), fromSmoothed = newtonIterations(mesh, p, x);
+  const int fromRaw = newtonIterations(p, raw), fromSmoothed = newtonIterations(p, x);
   EXPECT_LT(fromSmoothed, fromRaw) << GetParam();
 }
 

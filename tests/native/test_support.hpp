@@ -10,6 +10,8 @@
 
 #include "io/mesh_file.hpp"
 #include "mesh/tri_mesh.hpp"
+#include "simulate/example_patterns.hpp"
+#include "simulate/inflate.hpp"
 
 namespace billow::test {
 
@@ -41,6 +43,21 @@ inline int runCapture(const std::string& command, std::string& output) {
   for (size_t n; (n = fread(buf, 1, sizeof buf, pipe)) > 0;) output.append(buf, n);
   const int status = pclose(pipe);
   return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
+// An example pattern (example_patterns.hpp) of about this many triangles, with its other defaults.
+inline Pattern example(const std::string& name, int triangles) {
+  ExampleOptions eo;
+  eo.triangles = triangles;
+  return examplePattern(name, eo);
+}
+
+// Inflates `p` from x0 until it converges or fails.
+inline InflateResult solve(const Pattern& p, const Vertices& x0, const InflateOptions& o = {}) {
+  InflationSolver s(sewPattern(p), p.material, p.pressure, o, x0);
+  while (s.step(50) == InflateState::Running) {
+  }
+  return s.result();
 }
 
 }  // namespace billow::test

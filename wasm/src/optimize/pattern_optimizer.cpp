@@ -38,9 +38,7 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
                                    const std::vector<double>& seamWeights, const OptimizeOptions& options)
     : options_(options), seamWeights_(seamWeights), start_(nowMs()) {
   imls_ = std::make_unique<ImlsDistance>(target, options.imls);
-  material_.youngsModulus = built.pattern.material.youngsModulus;
-  material_.thickness = built.pattern.material.thickness;
-  material_.band = options.inflate.band;
+  material_ = membraneMaterial(built.pattern.material, options.inflate);
   fineEdgeLength_ = built.figures.edgeLength;
   setUp(built);
   if (options_.coarseFactor > 1 && fineEdgeLength_ > 0) {
@@ -236,7 +234,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   Vertices from = start;
   if (options_.warmSmoothingSweeps > 0)
     smoothShape(mesh, pattern_.material, pattern_.pressure, io, from, options_.warmSmoothingSweeps,
-                options_.warmSmoothingThreshold);
+                options_.warmSmoothingThreshold, false);
   // The cut panels have their own mesh: a solver of their own. Otherwise the phase's solver, new rest shapes.
   std::unique_ptr<InflationSolver> own;
   if (asCut)
@@ -323,7 +321,7 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
   r.distanceRms = count ? std::sqrt(r.distanceRms / count) : 0;
   r.seamMismatch = objective_->maxEdgeMismatch(X_);
   const double norm = double(objective_->numVertices()) * D;
-  r.gradient = g_.size() ? searchGradient(X_, g_).lpNorm<Eigen::Infinity>() * norm / 2 : 0;
+  r.gradient = g_.size() ? tangential(X_, g_).lpNorm<Eigen::Infinity>() * norm / 2 : 0;
   r.stepLength = alpha, r.equilibriumIterations = newton, r.ms = elapsedMs(), r.projected = projected;
   r.coarse = coarse_;
   history_.push_back(r);
@@ -351,31 +349,27 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   timings_.totalMs = elapsedMs();
 }
 
-// One L-BFGS iteration (two-loop recursion, Armijo backtracking with equilibrium re-solves).
-Eigen::VectorXd PatternOptimizer::searchGradient(const Eigen::VectorXd& X, const Eigen::VectorXd& g) const {
-  if (!(projectTrials_ && options_.tangentSteps)) return g;
-  return tangentToSeamLengths(objective_->edgePairs(), X, g);
+Eigen::VectorXd PatternOptimizer::tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const {
+  if (!(projectTrials_ && options_.tangentSteps)) return v;
+  return tangentToSeamLengths(objective_->edgePairs(), X, v);
 }
 
+// One L-BFGS iteration (two-loop recursion, Armijo backtracking with equilibrium re-solves).
 bool PatternOptimizer::iterate() {
   const int m = static_cast<int>(S_.size());
   // With every trial projected onto equal seam lengths, a step's part across that constraint set is undone by
-  // the projection: L-BFGS works with the gradient's tangential part and its steps are made tangential.
-  const bool tangent = projectTrials_ && options_.tangentSteps;
-  const Eigen::VectorXd gt = searchGradient(X_, g_);
+  // the projection: with tangentSteps L-BFGS works with the gradient's tangential part and its steps are
+  // made tangential (tangential() is the identity otherwise).
+  const Eigen::VectorXd gt = tangential(X_, g_);
   Eigen::VectorXd q = -gt;
   std::vector<double> a(m);
   for (int i = m - 1; i >= 0; --i) a[i] = S_[i].dot(q) / Y_[i].dot(S_[i]), q -= a[i] * Y_[i];
   q = precondition(q);
   if (m > 0) q *= S_[m - 1].dot(Y_[m - 1]) / Y_[m - 1].dot(precondition(Y_[m - 1]));
   for (int i = 0; i < m; ++i) q += (a[i] - Y_[i].dot(q) / Y_[i].dot(S_[i])) * S_[i];
-  Eigen::VectorXd d = tangent ? tangentToSeamLengths(objective_->edgePairs(), X_, q) : q;
+  Eigen::VectorXd d = tangential(X_, q);
   double slope = g_.dot(d);
-  if (!(slope < 0)) {
-    d = -precondition(gt);
-    if (tangent) d = tangentToSeamLengths(objective_->edgePairs(), X_, d);
-    slope = g_.dot(d), S_.clear(), Y_.clear();
-  }
+  if (!(slope < 0)) d = -tangential(X_, precondition(gt)), slope = g_.dot(d), S_.clear(), Y_.clear();
   // Cap the largest vertex move (the first step has no curvature information at all).
   double maxMove = 0;
   for (int v = 0; v < d.size() / 2; ++v) maxMove = std::max(maxMove, d.segment<2>(2 * v).norm());
@@ -415,7 +409,7 @@ bool PatternOptimizer::iterate() {
     Eigen::VectorXd g;
     variableGradient(X, x, g);
     if (!g.allFinite()) return false;
-    const Eigen::VectorXd s = X - X_, y = searchGradient(X, g) - gt;
+    const Eigen::VectorXd s = X - X_, y = tangential(X, g) - gt;
     if (s.dot(y) > 1e-12 * s.norm() * y.norm()) {
       S_.push_back(s), Y_.push_back(y);
       if (static_cast<int>(S_.size()) > options_.memory) S_.erase(S_.begin()), Y_.erase(Y_.begin());

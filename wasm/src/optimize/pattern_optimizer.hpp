@@ -213,8 +213,8 @@ class PatternOptimizer {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> smoother_;  // I + b K (options.outlineSmoothing)
   bool smoothing_ = false;
   Eigen::VectorXd precondition(const Eigen::VectorXd& v) const;  // (I + b K)^-1 v in the variables
-  // g, or its part tangent to equal seam lengths at X when steps are (OptimizeOptions::tangentSteps).
-  Eigen::VectorXd searchGradient(const Eigen::VectorXd& X, const Eigen::VectorXd& g) const;
+  // v, or its part tangent to equal seam lengths at X when steps are (OptimizeOptions::tangentSteps).
+  Eigen::VectorXd tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const;
   Pattern pattern_;
   SewnMesh mesh_;
   MembraneMaterial material_;

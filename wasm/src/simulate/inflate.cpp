@@ -20,6 +20,20 @@ double msSince(Clock::time_point t) { return std::chrono::duration<double, std::
 
 }  // namespace
 
+MembraneMaterial membraneMaterial(const Material& material, const InflateOptions& options) {
+  MembraneMaterial m;
+  m.youngsModulus = material.youngsModulus;
+  m.thickness = material.thickness;
+  m.band = options.band;
+  return m;
+}
+
+std::shared_ptr<const SeamRods> seamRodsFor(const SewnMesh& mesh, double pressure, const InflateOptions& options) {
+  if (options.seamRods) return options.seamRods;
+  return std::make_shared<const SeamRods>(
+      makeSeamRods(mesh, seamRodCoefficient(mesh, pressure, options.seamStiffness)));
+}
+
 const char* toString(InflateState s) {
   switch (s) {
     case InflateState::Running:
@@ -62,9 +76,7 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
                                  const InflateOptions& options, const Vertices& x0)
     : mesh_(std::move(mesh)), pressure_(pressure), options_(options), sparse_(std::make_unique<Sparse>()) {
   const auto start = Clock::now();
-  material_.youngsModulus = material.youngsModulus;
-  material_.thickness = material.thickness;
-  material_.band = options.band;
+  material_ = membraneMaterial(material, options);
   if (x0.rows() != 0 && (x0.rows() != mesh_.numVertices || !x0.allFinite()))
     throw Error("inflate.bad-start", "The start shape does not fit the pattern (" + std::to_string(x0.rows()) +
                                          " positions for " + std::to_string(mesh_.numVertices) + " vertices).");
@@ -85,9 +97,7 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
   };
   for (int i = 0; i < n; ++i) trip.emplace_back(i, i, 0.0);
   forEachLowerEntry([&](int, int, int r, int c) { trip.emplace_back(r, c, 0.0); });
-  rods_ = options_.seamRods ? options_.seamRods
-                            : std::make_shared<const SeamRods>(
-                                  makeSeamRods(mesh_, seamRodCoefficient(mesh_, pressure, options_.seamStiffness)));
+  rods_ = seamRodsFor(mesh_, pressure, options_);
   rods_->forEachHessianEntry([&](int r, int c, double) {
     if (r >= c) trip.emplace_back(r, c, 0.0);
   });

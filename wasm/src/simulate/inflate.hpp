@@ -73,6 +73,12 @@ struct InflateOptions {
   double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
 };
 
+// The terms of Pi for these options, shared by InflationSolver, the smoother (smoothing.hpp) and the pattern
+// optimizer: the pattern's material with the options' smoothing band, and options.seamRods when given, else
+// the rods of options.seamStiffness on this mesh.
+MembraneMaterial membraneMaterial(const Material& material, const InflateOptions& options);
+std::shared_ptr<const SeamRods> seamRodsFor(const SewnMesh& mesh, double pressure, const InflateOptions& options);
+
 enum class InflateState { Running, Converged, Failed };
 const char* toString(InflateState s);
 

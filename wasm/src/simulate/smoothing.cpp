@@ -12,19 +12,13 @@
 namespace billow {
 
 SmoothingReport smoothShape(const SewnMesh& mesh, const Material& material, double pressure,
-                            const InflateOptions& options, Vertices& x, int sweeps, double threshold) {
+                            const InflateOptions& options, Vertices& x, int sweeps, double threshold, bool measure) {
   const auto start = std::chrono::steady_clock::now();
   SmoothingReport report;
   const int n = mesh.numVertices, F = mesh.numTriangles();
   if (x.rows() != n || n == 0) return report;
-  MembraneMaterial membrane;
-  membrane.youngsModulus = material.youngsModulus;
-  membrane.thickness = material.thickness;
-  membrane.band = options.band;
-  std::shared_ptr<const SeamRods> rods = options.seamRods
-                                             ? options.seamRods
-                                             : std::make_shared<const SeamRods>(makeSeamRods(
-                                                   mesh, seamRodCoefficient(mesh, pressure, options.seamStiffness)));
+  const MembraneMaterial membrane = membraneMaterial(material, options);
+  const std::shared_ptr<const SeamRods> rods = seamRodsFor(mesh, pressure, options);
   // The triangles and rod triples around each vertex, with the vertex's corner in each.
   std::vector<int> triangleStart(n + 1, 0), triangleOf, cornerOf;
   for (int f = 0; f < F; ++f)
@@ -109,7 +103,7 @@ SmoothingReport smoothShape(const SewnMesh& mesh, const Material& material, doub
     return largest;
   };
   if (sweeps <= 0) return report;
-  report.residualBefore = largestForce();
+  if (measure) report.residualBefore = largestForce();
   // A vertex is visited again only when it or a vertex whose terms involve it (a neighbour in a triangle or a
   // rod) moved since its last visit: otherwise its force and stiffness are what they were, and so would be
   // the outcome.
@@ -153,7 +147,7 @@ SmoothingReport smoothShape(const SewnMesh& mesh, const Material& material, doub
     std::fill(next.begin(), next.end(), 0);
     ++report.sweeps;
   }
-  report.residualAfter = largestForce();
+  if (measure) report.residualAfter = largestForce();
   report.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   return report;
 }

@@ -23,14 +23,15 @@ struct SmoothingReport {
   int sweeps = 0;
   int moves = 0;              // accepted vertex steps over all sweeps
   double residualBefore = 0;  // largest relative vertex force before and after (the units of
-  double residualAfter = 0;   // InflateOptions::tolerance; no vertex pinned); 0 when no sweeps
+  double residualAfter = 0;   // InflateOptions::tolerance; no vertex pinned); 0 when no sweeps or not measured
   double ms = 0;
 };
 
 // `sweeps` sweeps over the vertices of `mesh` (in index order) with the energy of InflationSolver for these
 // options (band, seam rods); vertices whose relative force is below `threshold` stay where they are. Never
-// increases Pi; x stays finite.
+// increases Pi; x stays finite. `measure`: fill in residualBefore and residualAfter (a force pass each).
 SmoothingReport smoothShape(const SewnMesh& mesh, const Material& material, double pressure,
-                            const InflateOptions& options, Vertices& x, int sweeps, double threshold = 1.0);
+                            const InflateOptions& options, Vertices& x, int sweeps, double threshold = 1.0,
+                            bool measure = true);
 
 }  // namespace billow
