@@ -128,8 +128,14 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.warmSmoothingSweeps = int(v);
   else if (name == "warmSmoothingThreshold")
     o.warmSmoothingThreshold = v;
+  else if (name == "predictEquilibrium")
+    o.predictEquilibrium = v != 0;
   else if (name == "tangentSteps")
     o.tangentSteps = v != 0;
+  else if (name == "projectHessian")
+    o.inflate.projectHessian = v != 0;
+  else if (name == "minPivot")
+    o.inflate.minPivot = v;
   else if (name == "band")
     o.inflate.band = v;
   else if (name == "seamStiffness")

@@ -228,6 +228,35 @@ TEST(Optimize, AdjointSolvesAroundAVertexWithoutStiffness) {
   EXPECT_LT(r.norm(), 1e-10 * b.norm());
 }
 
+// PinnedStiffness keeps solveAdjoint's factorization: another right-hand side solves with the same K (the
+// optimizer's prediction of the next equilibrium), held at the pins and the DOFs without stiffness.
+TEST(Optimize, PinnedStiffnessSolvesAgainWithTheSameFactorization) {
+  const int n = 12;
+  std::vector<Eigen::Triplet<double>> trip;
+  for (int i = 0; i < n; ++i) {
+    if (i >= 6 && i < 9) continue;
+    trip.emplace_back(i, i, 4.0 + i);
+    if (i + 1 < n && !(i + 1 >= 6 && i + 1 < 9)) trip.emplace_back(i, i + 1, -1.0), trip.emplace_back(i + 1, i, -1.0);
+  }
+  Eigen::SparseMatrix<double> K(n, n);
+  K.setFromTriplets(trip.begin(), trip.end());
+  PinnedStiffness s;
+  Eigen::VectorXd y;
+  EXPECT_FALSE(s.solveAgain(Eigen::VectorXd::Ones(n), y));  // nothing factorized yet
+  Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(n, 1.0, 2.0), lambda;
+  EXPECT_LT(s.solve(K, b, {0}, lambda), 1e-10);
+  const Eigen::VectorXd c = Eigen::VectorXd::LinSpaced(n, -3.0, 5.0);
+  ASSERT_TRUE(s.solveAgain(c, y));
+  EXPECT_EQ(y[0], 0);
+  EXPECT_EQ(y.segment<3>(6).norm(), 0);
+  Eigen::VectorXd r = K * y - c;
+  r[0] = 0, r.segment<3>(6).setZero();  // the pin's reaction; the free DOFs
+  EXPECT_LT(r.norm(), 1e-10 * c.norm());
+  Eigen::VectorXd direct;
+  solveAdjoint(K, c, {0}, direct);
+  EXPECT_LT((direct - y).norm(), 1e-12 * y.norm());
+}
+
 // The same at an iterate of the gallery's three-gore sphere at 3k elements, where the optimizer used to stop
 // (bench/README.md), along the steepest-descent direction it would search. The rigid alignment must be
 // converged for this: with 30 Gauss-Newton steps (the old limit) the nearly rotation-invariant sphere left
@@ -454,6 +483,7 @@ TEST(Optimize, SmoothingBeforeEachSolveSavesNewtonIterations) {
   for (int sweeps : {0, 10}) {
     OptimizeOptions o;
     o.warmSmoothingSweeps = sweeps;
+    o.predictEquilibrium = false;  // from the last shape, as before the prediction (next test)
     PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
     while (opt.step(1) == OptimizeState::Running && opt.iterations() < 15) {
     }
@@ -466,6 +496,29 @@ TEST(Optimize, SmoothingBeforeEachSolveSavesNewtonIterations) {
                 sweeps, perSolve[sweeps > 0], 100 * opt.history().back().distanceRms);
   }
   EXPECT_LT(perSolve[1], 0.8 * perSolve[0]);
+}
+
+TEST(Optimize, PredictedStartSavesNewtonIterations) {
+  // Each trial's solve starts from x + dx, dx = -K^-1 dg/dX dX with the adjoint's factorization
+  // (OptimizeOptions::predictEquilibrium), instead of from the last shape.
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  double perSolve[2] = {0, 0};
+  for (bool predict : {false, true}) {
+    OptimizeOptions o;
+    o.predictEquilibrium = predict;
+    PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+    while (opt.step(1) == OptimizeState::Running && opt.iterations() < 15) {
+    }
+    ASSERT_GE(opt.iterations(), 15) << opt.message();
+    int newton = 0;
+    for (size_t k = 1; k < opt.history().size(); ++k) newton += opt.history()[k].equilibriumIterations;
+    perSolve[predict] = double(newton) / (opt.history().size() - 1);
+    expectObjectiveNeverRises(opt.history());
+    std::printf("[figures] sphere gores 800, prediction %s: %.1f Newton iterations per accepted solve, rms %.3f%%\n",
+                predict ? "on" : "off", perSolve[predict], 100 * opt.history().back().distanceRms);
+  }
+  EXPECT_LT(perSolve[1], 0.7 * perSolve[0]);
 }
 
 // The gallery's first fish: an internal panel in the middle plane between the back and belly seams. The

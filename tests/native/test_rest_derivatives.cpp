@@ -115,3 +115,38 @@ TEST(RestDerivative, StiffnessMatchesFiniteDifferences) {
   }
   EXPECT_LT(worst, 1e-4);
 }
+
+// dg/dX dX (the optimizer's prediction of the next equilibrium) against central differences of the assembled
+// gradient in X, and consistent with the adjoint's transpose product: lambda . (J dX) = (J^T lambda) . dX.
+TEST(RestDerivative, JacobianProductMatchesFiniteDifferencesAndTranspose) {
+  ExampleOptions eo;
+  eo.triangles = 60, eo.size = 0.1;
+  const Pattern pattern = examplePattern("mylar", eo);
+  const SewnMesh mesh = sewPattern(pattern);
+  const Eigen::VectorXd X = packPattern(pattern);
+  MembraneMaterial mat;
+  mat.youngsModulus = pattern.material.youngsModulus, mat.thickness = pattern.material.thickness;
+  Vertices x(mesh.numVertices, 3);
+  for (size_t p = 0; p < pattern.panels.size(); ++p)
+    for (int v = 0; v < pattern.panels[p].vertices.rows(); ++v) {
+      const Eigen::Vector2d P = pattern.panels[p].vertices.row(v);
+      const double z = (p == 0 ? 1 : -1) * 0.3 * (0.1 * 0.1 - P.squaredNorm()) / 0.1;
+      x.row(mesh.simVertex(int(p), v)) << 1.002 * P.x(), 1.002 * P.y(), z;
+    }
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-1, 1);
+  Eigen::VectorXd dX(X.size()), lambda(3 * mesh.numVertices);
+  for (int i = 0; i < dX.size(); ++i) dX[i] = u(rng);
+  for (int i = 0; i < lambda.size(); ++i) lambda[i] = u(rng);
+  Eigen::VectorXd product = Eigen::VectorXd::Zero(3 * mesh.numVertices);
+  addRestJacobianProduct(mesh, pattern, X, x, dX, mat, product);
+  const double eps = 1e-8;
+  const Eigen::VectorXd fd = (equilibriumGradient(mesh, pattern, X + eps * dX, x, mat, pattern.pressure) -
+                              equilibriumGradient(mesh, pattern, X - eps * dX, x, mat, pattern.pressure)) /
+                             (2 * eps);
+  ASSERT_GT(product.norm(), 0);
+  EXPECT_LT((fd - product).norm(), 1e-5 * product.norm());
+  Eigen::VectorXd transposed = Eigen::VectorXd::Zero(X.size());
+  addRestGradientProduct(mesh, pattern, X, x, lambda, mat, transposed);
+  EXPECT_NEAR(lambda.dot(product), transposed.dot(dX), 1e-10 * std::abs(lambda.dot(product)));
+}

@@ -1,7 +1,5 @@
 #include "optimize/adjoint.hpp"
 
-#include <Eigen/SparseCholesky>
-#include <Eigen/SparseLU>
 #include <cmath>
 
 namespace billow {
@@ -33,8 +31,27 @@ std::vector<int> rigidPins(const Vertices& x) {
 
 double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b, const std::vector<int>& pins,
                     Eigen::VectorXd& lambda) {
+  PinnedStiffness s;
+  return s.solve(K, b, pins, lambda);
+}
+
+bool PinnedStiffness::solveAgain(const Eigen::VectorXd& b, Eigen::VectorXd& y) const {
+  if (kind_ == Kind::None || b.size() != static_cast<long>(pinned_.size())) return false;
+  Eigen::VectorXd rhs = b;
+  for (long i = 0; i < rhs.size(); ++i)
+    if (pinned_[i]) rhs[i] = 0;
+  y = kind_ == Kind::Lu ? Eigen::VectorXd(lu_.solve(rhs)) : Eigen::VectorXd(ldlt_.solve(rhs));
+  for (long i = 0; i < y.size(); ++i)
+    if (pinned_[i]) y[i] = 0;
+  return y.allFinite();
+}
+
+double PinnedStiffness::solve(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b,
+                              const std::vector<int>& pins, Eigen::VectorXd& lambda) {
+  kind_ = Kind::None;
   const int n = static_cast<int>(K.rows());
-  std::vector<char> pinned(n, 0);
+  std::vector<char>& pinned = pinned_;
+  pinned.assign(n, 0);
   for (int p : pins) pinned[p] = 1;
   const double scale = K.diagonal().cwiseAbs().mean();
   // A DOF without any stiffness (a vertex whose triangles are all slack and carry no pressure: the inside of
@@ -60,21 +77,26 @@ double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd&
     if (pinned[i]) rhs[i] = 0;
   const double bn = std::max(rhs.norm(), 1e-300);
   const auto residual = [&]() { return lambda.allFinite() ? (A * lambda - rhs).norm() / bn : INFINITY; };
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt = ldlt_;
   ldlt.analyzePattern(A);
   ldlt.factorize(A);
   if (ldlt.info() == Eigen::Success) {
     lambda = ldlt.solve(rhs);
     const double r = residual();
-    if (r < 1e-8) return r;
+    if (r < 1e-8) {
+      kind_ = Kind::Ldlt;
+      return r;
+    }
   }
   {
-    Eigen::SparseLU<Eigen::SparseMatrix<double>> lu;
-    lu.compute(A);
-    if (lu.info() == Eigen::Success) {
-      lambda = lu.solve(rhs);
+    lu_.compute(A);
+    if (lu_.info() == Eigen::Success) {
+      lambda = lu_.solve(rhs);
       const double r = residual();
-      if (r < 1e-6) return r;
+      if (r < 1e-6) {
+        kind_ = Kind::Lu;
+        return r;
+      }
     }
   }
   // Nearly singular (soft slack or wrinkled regions, whose shape is not unique): the smallest shift that
@@ -88,6 +110,7 @@ double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd&
     Eigen::VectorXd l = ldlt.solve(rhs);
     if (!l.allFinite() || (shifted * l - rhs).norm() / bn > 1e-6) continue;
     lambda = l;
+    kind_ = Kind::Shifted;
     return residual();
   }
   lambda = Eigen::VectorXd::Zero(n);

@@ -7,6 +7,8 @@
 // no rigid component and every choice of pins gives the same dE/dX.
 #pragma once
 #include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseLU>
 #include <vector>
 
 #include "mesh/tri_mesh.hpp"
@@ -23,5 +25,23 @@ std::vector<int> rigidPins(const Vertices& x);
 // Returns the relative residual |K lambda - b| / |b| on free DOFs (INFINITY, lambda = 0: no solve).
 double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b, const std::vector<int>& pins,
                     Eigen::VectorXd& lambda);
+
+// solveAdjoint that keeps its factorization for further right-hand sides with the same K (K is symmetric, so
+// it also gives the equilibrium's first-order change dx = -K^-1 dg/dX dX: PatternOptimizer's prediction).
+class PinnedStiffness {
+ public:
+  // As solveAdjoint.
+  double solve(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b, const std::vector<int>& pins,
+               Eigen::VectorXd& lambda);
+  // K y = b with the last factorization (y = 0 at pins and stiffness-free DOFs); false when there is none.
+  bool solveAgain(const Eigen::VectorXd& b, Eigen::VectorXd& y) const;
+
+ private:
+  enum class Kind { None, Ldlt, Lu, Shifted };
+  Kind kind_ = Kind::None;
+  std::vector<char> pinned_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
+  Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
+};
 
 }  // namespace billow

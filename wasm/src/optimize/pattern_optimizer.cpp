@@ -59,6 +59,7 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   pattern_ = built.pattern;
   mesh_ = sewPattern(pattern_);
   solver_.reset();
+  stiffness_.reset();
   // The seam rods are fixed for the phase: their coefficient (it would otherwise follow the panels' mean edge
   // length and area) and which seam vertices carry one (a corner is judged by its rest angle), so the
   // equilibrium forces depend on X only through the membrane (the adjoint's dg/dX) and E(X) stays smooth.
@@ -268,11 +269,25 @@ void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices&
   Eigen::VectorXd dEdx, dEdX, lambda, product = Eigen::VectorXd::Zero(X.size());
   objective_->shapeEnergy(x, X, &dEdx, &dEdX);
   const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, rods_.get());
-  solveAdjoint(K, dEdx, rigidPins(x), lambda);
+  if (!stiffness_) stiffness_ = std::make_unique<PinnedStiffness>();
+  stiffness_->solve(K, dEdx, rigidPins(x), lambda);
+  stiffnessX_ = X, stiffnessx_ = x;
   addRestGradientProduct(mesh, pattern_, X, x, lambda, material_, product);
   objective_->patternEnergy(X, &grad);
   grad += dEdX - product;  // dE/dX = dE/dX|_x - lambda^T dg/dX
   timings_.adjointMs += nowMs() - t0;
+}
+
+Vertices PatternOptimizer::predictEquilibrium(const Eigen::VectorXd& X) const {
+  if (!options_.predictEquilibrium || !stiffness_ || stiffnessX_.size() != X_.size() || stiffnessX_ != X_ ||
+      stiffnessx_.rows() != x_.rows() || stiffnessx_ != x_ || X.size() != X_.size())
+    return x_;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * x_.rows()), dx;
+  addRestJacobianProduct(mesh_, pattern_, X_, x_, X - X_, material_, b);
+  if (!stiffness_->solveAgain(b, dx)) return x_;
+  Vertices x = x_;
+  for (int v = 0; v < x.rows(); ++v) x.row(v) -= dx.segment<3>(3 * v).transpose();
+  return x;
 }
 
 void PatternOptimizer::variableGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad) {
@@ -389,7 +404,7 @@ bool PatternOptimizer::iterate() {
     followBoundary(X);
     Vertices x;
     int newton = 0;
-    if (!solveEquilibrium(X, x_, x, &newton)) {
+    if (!solveEquilibrium(X, predictEquilibrium(X), x, &newton)) {
       ++timings_.rejectedTrials;
       continue;
     }

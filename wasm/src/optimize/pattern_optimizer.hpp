@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "optimize/adjoint.hpp"
 #include "optimize/harmonic_interior.hpp"
 #include "optimize/objectives.hpp"
 #include "simulate/inflate.hpp"
@@ -49,6 +50,9 @@ struct OptimizeOptions {
   // 0 sweeps: off.
   int warmSmoothingSweeps = 10;
   double warmSmoothingThreshold = 0.1;
+  // Each trial's equilibrium solve starts from the first-order prediction x + dx, dx = -K^-1 dg/dX dX, with
+  // the adjoint's factorization of K at the current iterate (one more back-substitution), instead of from x.
+  bool predictEquilibrium = true;
   int memory = 8;                // L-BFGS pairs
   double maxStep = 0.5;          // largest panel-vertex move of one step, in mean rest edge lengths
   int maxHalvings = 12;          // line search
@@ -187,6 +191,9 @@ class PatternOptimizer {
   // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
   bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton, bool asCut = false);
   void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
+  // Where the equilibrium of panels X should be to first order from the current one (options.predictEquilibrium;
+  // x_ when there is no factorization at the current iterate).
+  Vertices predictEquilibrium(const Eigen::VectorXd& X) const;
   // The gradient in the optimization variables (the boundary rows with options.interiorFollowsBoundary).
   void variableGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
   void followBoundary(Eigen::VectorXd& X) const;  // interior rows from the boundary (interiorFollowsBoundary)
@@ -235,6 +242,10 @@ class PatternOptimizer {
   std::shared_ptr<const SeamRods> rods_;  // the seam rods of every solve of this phase (setUp)
   // The equilibrium solver of this phase's mesh, kept from solve to solve for its symbolic factorization.
   std::unique_ptr<InflationSolver> solver_;
+  // The adjoint's factorization of K, and the (X, x) it was made at (predictEquilibrium).
+  std::unique_ptr<PinnedStiffness> stiffness_;
+  Eigen::VectorXd stiffnessX_;
+  Vertices stiffnessx_;
   double fineEdgeLength_ = 0;   // the design's edge length [m]
   bool projectTrials_ = false;  // options.projectEveryStep, unless projecting the flattened panels folds them
   double start_ = 0;            // steady-clock ms at construction

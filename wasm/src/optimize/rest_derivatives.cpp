@@ -170,4 +170,18 @@ void addRestGradientProduct(const SewnMesh& mesh, const Pattern& pattern, const 
   });
 }
 
+void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
+                            const Eigen::VectorXd& dX, const MembraneMaterial& material, Eigen::VectorXd& out) {
+  Matrix96d J;
+  forEachElement(mesh, pattern, X, [&](int t, const int* gid, const Eigen::Vector2d* R) {
+    const int v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
+    Eigen::Matrix<double, 6, 1> d;
+    for (int c = 0; c < 3; ++c) d.segment<2>(2 * c) = dX.segment<2>(2 * gid[c]);
+    if (d.isZero(0)) return;
+    membraneElementRestJacobian(R[0], R[1], R[2], x.row(v[0]), x.row(v[1]), x.row(v[2]), material, &J);
+    const Vector9d r = J * d;
+    for (int c = 0; c < 3; ++c) out.segment<3>(3 * v[c]) += r.segment<3>(3 * c);
+  });
+}
+
 }  // namespace billow

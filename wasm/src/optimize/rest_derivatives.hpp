@@ -42,4 +42,8 @@ Eigen::VectorXd equilibriumGradient(const SewnMesh& mesh, const Pattern& pattern
 void addRestGradientProduct(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
                             const Eigen::VectorXd& lambda, const MembraneMaterial& material, Eigen::VectorXd& out);
 
+// out += dg/dX dX (3 #V), dX 2 per panel vertex: how the equilibrium forces change with the panels.
+void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
+                            const Eigen::VectorXd& dX, const MembraneMaterial& material, Eigen::VectorXd& out);
+
 }  // namespace billow
