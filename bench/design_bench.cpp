@@ -110,6 +110,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.windowIterations = int(v);
   else if (name == "windowMove")
     o.windowMove = v;
+  else if (name == "windowDecrease")
+    o.windowDecrease = v;
   else if (name == "relativeDecrease")
     o.relativeDecrease = v;
   else if (name == "stallIterations")

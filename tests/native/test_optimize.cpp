@@ -688,6 +688,29 @@ TEST(Optimize, CoarseToFineEndsAtTheDesignResolution) {
 }
 
 // Eq. 10: the heavier the seam, the closer it stays to where it was drawn.
+// OptimizeOptions::windowDecrease: converged at the first iteration where the objective fell by less than
+// that fraction over the last windowIterations iterations, and not before.
+TEST(Optimize, StopsWhenTheObjectiveNoLongerDecreasesNoticeably) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.windowIterations = 5, o.windowMove = 0, o.windowDecrease = 0.05;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_EQ(opt.state(), OptimizeState::Converged);
+  EXPECT_EQ(opt.message(), "the objective no longer decreases noticeably");
+  std::vector<double> E(opt.iterations() + 1, NAN);
+  for (const OptimizeRecord& r : opt.history())
+    if (!r.projected) E[r.iteration] = r.objective;  // not the final seam-length projection
+  const int n = opt.iterations();
+  ASSERT_GE(n, 5);
+  EXPECT_LT(E[n - 5] - E[n], 0.05 * E[n]);
+  for (int k = 5; k < n; ++k) EXPECT_GE(E[k - 5] - E[k], 0.05 * E[k]) << "iteration " << k;
+  std::printf("[figures] sphere gores 800: stopped at iteration %d, objective %.4e (5 before: %.4e)\n", n, E[n],
+              E[n - 5]);
+}
+
 TEST(Optimize, HeavySeamStaysLightSeamSlides) {
   Fixture f = makeFixture("sphere-gores.billow.json", 400);
   OptimizeOptions o;

@@ -501,6 +501,20 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
         }
         windowX_ = x_, windowStart_ = iteration_;
       }
+      if (options_.windowDecrease > 0 && iteration_ >= options_.windowIterations) {
+        // The objective windowIterations iterations ago (its last record: resettling may add one).
+        double before = NAN;
+        for (auto r = history_.rbegin(); r != history_.rend(); ++r)
+          if (r->iteration == iteration_ - options_.windowIterations) {
+            before = r->objective;
+            break;
+          }
+        if (std::isfinite(before) && before - E_ < options_.windowDecrease * std::abs(E_)) {
+          if (refine()) continue;
+          finish(OptimizeState::Converged, "the objective no longer decreases noticeably");
+          break;
+        }
+      }
     }
     if (iteration_ >= options_.maxIterations) {
       if (refine()) continue;

@@ -42,6 +42,11 @@ struct OptimizeOptions {
   // app's setting is in wasm/bindings/target_bindings.cpp).
   int windowIterations = 0;
   double windowMove = 1e-3;
+  // Also converged when the objective fell by less than windowDecrease (relative) over the last
+  // windowIterations iterations (0: off): the line search's tail, where steps shrink to a few percent of the
+  // L-BFGS step against unstable equilibria and the RMS moves in its third digit (elephant 14k: iterations
+  // 90-131 took 140 s for 0.365 -> 0.363 %; bench/README.md).
+  double windowDecrease = 0;
   // Before each equilibrium solve from the last shape, nonlinear Gauss-Seidel sweeps (smoothing.hpp) down to
   // a relative vertex force of warmSmoothingThreshold. A step of the panels changes rest lengths by up to a
   // few percent, ten times the foil's strain at equilibrium, so parts of the sheet start slack; those are
