@@ -4,11 +4,12 @@
 // model size of the final one, DESIGN.md) and to the end, the final distance to the target, the largest
 // seam mismatch and the peak RSS.
 //   billow_design_bench [--json] [--designs sphere3,teddy] [--max-seconds S] [--manifest FILE] [--triangles N]
-//                       [--trace] [--set NAME=VALUE ...] [--no-remesh-check] [--out-dir DIR]
+//                       [--trace] [--set NAME=VALUE ...] [--no-remesh-check] [--cut-scale F] [--out-dir DIR]
 // --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
 // --set changes an optimizer option (interiorFollowsBoundary, outlineSmoothing, quality, laplace, smooth, seam,
 // maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants. After each run the final
-// outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check skips it).
+// outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check skips it;
+// --cut-scale F meshes them at F x the design's edge length).
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -56,6 +57,7 @@ struct BenchOptions {
   bool trace = false;
   std::vector<std::pair<std::string, double>> set;
   bool remeshCheck = true;  // --no-remesh-check: skip the cut-panel figure (remeshedOutlines)
+  double cutScale = 1;      // --cut-scale F: the cut panels are meshed at F x the design's edge length
   std::string outDir;       // non-empty: the optimized pattern of each design is written there (NAME.pattern.json)
 };
 
@@ -246,7 +248,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   // What the cut panels give (PatternOptimizer::checkCutPanels).
   json remeshed = nullptr;
   if (bo.remeshCheck) {
-    const CutPanelsCheck cut = opt.checkCutPanels();
+    const CutPanelsCheck cut = opt.checkCutPanels(bo.cutScale * built.figures.edgeLength);
     remeshed = cut.ok ? json{{"distanceRms", cut.distanceRms},
                              {"distanceMax", cut.distanceMax},
                              {"elements", cut.elements},
@@ -328,6 +330,8 @@ int main(int argc, char** argv) {
       bo.trace = true;
     else if (a == "--no-remesh-check")
       bo.remeshCheck = false;
+    else if (a == "--cut-scale" && hasValue)
+      bo.cutScale = std::stod(argv[++i]);
     else if (a == "--set" && hasValue && std::string(argv[i + 1]).find('=') != std::string::npos) {
       const std::string kv = argv[++i];
       bo.set.emplace_back(kv.substr(0, kv.find('=')), std::stod(kv.substr(kv.find('=') + 1)));
