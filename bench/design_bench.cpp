@@ -118,6 +118,10 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.relativeDecrease = v;
   else if (name == "stallIterations")
     o.stallIterations = int(v);
+  else if (name == "remeshBelowAngleDeg")
+    o.remeshBelowAngleDeg = v;
+  else if (name == "maxRemeshings")
+    o.maxRemeshings = int(v);
   else if (name == "coarseFactor")
     o.coarseFactor = v;
   else if (name == "coarseIterations")

@@ -502,9 +502,10 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
         windowX_ = x_, windowStart_ = iteration_;
       }
       if (options_.windowDecrease > 0 && iteration_ >= options_.windowIterations) {
-        // The objective windowIterations iterations ago (its last record: resettling may add one).
+        // The objective windowIterations iterations ago (its last record). Not over a window with a resettling
+        // in it: the objective may rise there (the balloon snapped into another equilibrium), which is no stall.
         double before = NAN;
-        for (auto r = history_.rbegin(); r != history_.rend(); ++r)
+        for (auto r = history_.rbegin(); r != history_.rend() && !r->resettled; ++r)
           if (r->iteration == iteration_ - options_.windowIterations) {
             before = r->objective;
             break;
