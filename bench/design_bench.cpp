@@ -120,6 +120,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.stallIterations = int(v);
   else if (name == "remeshBelowAngleDeg")
     o.remeshBelowAngleDeg = v;
+  else if (name == "remeshEvery")
+    o.remeshEvery = int(v);
   else if (name == "maxRemeshings")
     o.maxRemeshings = int(v);
   else if (name == "coarseFactor")

@@ -646,6 +646,39 @@ TEST(Optimize, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
   EXPECT_NE(opt->state(), OptimizeState::Failed) << opt->message();
 }
 
+// A fresh mesh may itself have an angle below the threshold: it is not meshed again before the next iteration
+// (it used to be remeshed in a loop until maxRemeshings ran out); remeshEvery remeshes on a schedule.
+TEST(Optimize, RemeshingAtMostOncePerIteration) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  for (const bool everyThird : {false, true}) {
+    OptimizeOptions o;
+    o.maxIterations = 6, o.maxRemeshings = 100;
+    if (everyThird)
+      o.remeshEvery = 3;
+    else
+      o.remeshBelowAngleDeg = 60;  // every triangle mesh has an angle below 60 degrees
+    PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+    while (opt.step(1) == OptimizeState::Running) {
+    }
+    ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+    std::vector<int> at;
+    for (const OptimizeRecord& r : opt.history())
+      if (r.remeshed) at.push_back(r.iteration);
+    std::printf("[figures] %s: %d iterations, %d remeshings\n", everyThird ? "every 3" : "below 60 degrees",
+                opt.iterations(), opt.timings().remeshings);
+    ASSERT_FALSE(at.empty());
+    for (size_t k = 1; k < at.size(); ++k) EXPECT_GT(at[k], at[k - 1]) << "two remeshings at iteration " << at[k];
+    if (everyThird) {
+      for (int i : at) EXPECT_EQ(i % 3, 0) << i;
+      EXPECT_EQ(opt.timings().remeshings, (opt.iterations() - 1) / 3);  // none after the last iteration
+    } else {
+      EXPECT_LE(opt.timings().remeshings, opt.iterations());
+    }
+    EXPECT_EQ(opt.pattern().panels.size(), f.built.pattern.panels.size());
+  }
+}
+
 // OptimizeOptions::coarseFactor: the first iterations run on panels meshed at twice the edge length (about a
 // quarter of the elements), then the panels are meshed at the design's resolution from their coarse outlines
 // and the optimization goes on there; the result is at the design's resolution and sews.

@@ -527,9 +527,14 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       finish(OptimizeState::Stopped, "the time limit was reached");
       break;
     }
-    if (options_.remeshBelowAngleDeg > 0 && timings_.remeshings < options_.maxRemeshings &&
-        minPanelAngleDeg(pattern_) < options_.remeshBelowAngleDeg && remesh(built_.figures.edgeLength))
-      continue;
+    // At most once per iteration: a fresh mesh may itself have an angle below the threshold, and meshing it
+    // again at once gives nothing new (it used to spend every remaining remeshing there).
+    if (timings_.remeshings < options_.maxRemeshings && iteration_ > remeshedAt_ &&
+        ((options_.remeshBelowAngleDeg > 0 && minPanelAngleDeg(pattern_) < options_.remeshBelowAngleDeg) ||
+         (options_.remeshEvery > 0 && iteration_ - std::max(remeshedAt_, 0) >= options_.remeshEvery))) {
+      remeshedAt_ = iteration_;
+      if (remesh(built_.figures.edgeLength)) continue;
+    }
     if (!iterate()) {
       if (S_.empty() && projectTrials_ && iteration_ == 0) {
         // Every trial folded or did not settle once projected: go on with the seam-length penalty alone.

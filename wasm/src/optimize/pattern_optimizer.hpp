@@ -91,6 +91,10 @@ struct OptimizeOptions {
   // than they give (the gallery sphere at 800 elements: 1.6 % RMS after 120 iterations with remeshing at
   // 5 degrees, 0.44 % without).
   double remeshBelowAngleDeg = 0;
+  // Also every remeshEvery iterations (0: off): the optimizer then cannot fit its own mesh's discretization
+  // for long (bench/README.md, session 13: three gores with free seams, 0.53 % on the optimizer's mesh against
+  // 1.40 % for the same outlines meshed anew).
+  int remeshEvery = 0;
   int maxRemeshings = 10;
   // Coarse to fine (> 1: on): the panels are first meshed again at coarseFactor x the design's edge length
   // (about 1 / coarseFactor^2 of the elements, each iteration that much cheaper) and optimized there until a
@@ -244,6 +248,7 @@ class PatternOptimizer {
   Vertices windowX_;                      // x at the start of the current window (options.windowIterations)
   int windowStart_ = -1;                  // its iteration
   bool coarse_ = false;                   // in the coarse phase (OptimizeOptions::coarseFactor)
+  int remeshedAt_ = -1;                   // the iteration of the last remeshing (or attempt)
   std::shared_ptr<const SeamRods> rods_;  // the seam rods of every solve of this phase (setUp)
   // The equilibrium solver of this phase's mesh, kept from solve to solve for its symbolic factorization.
   std::unique_ptr<InflationSolver> solver_;
