@@ -140,6 +140,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.warmSmoothingThreshold = v;
   else if (name == "predictEquilibrium")
     o.predictEquilibrium = v != 0;
+  else if (name == "smoothSeamProjection")
+    o.smoothSeamProjection = v != 0;
   else if (name == "tangentSteps")
     o.tangentSteps = v != 0;
   else if (name == "projectHessian")

@@ -450,6 +450,78 @@ TEST(Optimize, TangentToSeamLengthsIsAProjectionThatKeepsLengthsToFirstOrder) {
   EXPECT_LT(alongT, 1e-3 * alongV) << alongT << " vs " << alongV;
 }
 
+// OptimizeOptions::smoothSeamProjection: in the metric M = I + b L (L the Laplacian along each panel outline),
+// the projection still lands on equal seam lengths (no rougher than the Euclidean one: the flattened
+// mismatches are edge by edge, so is any correction), and the tangent part of a smooth direction keeps closer
+// to its smoothness, is M-orthogonal to what it removes and keeps the lengths to first order.
+TEST(Optimize, SeamProjectionInAnOutlineMetricIsSmoother) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, {});
+  const auto& pairs = opt.objective().edgePairs();
+  const Eigen::VectorXd X0 = packPattern(f.built.pattern);
+  const int n = static_cast<int>(X0.size());
+  std::vector<Eigen::Triplet<double>> trip;
+  std::vector<std::pair<int, int>> outlineEdges;  // consecutive outline vertices
+  const double b = 16;
+  for (int r = 0; r < n; ++r) trip.emplace_back(r, r, 1.0);
+  for (size_t p = 0; p < f.built.panels.size(); ++p) {
+    const int nb = f.built.panels[p].boundaryVertices, first = opt.mesh().panelVertexStart[p];
+    for (int j = 0; j < nb; ++j) {
+      const int u = first + j, w = first + (j + 1) % nb;
+      outlineEdges.emplace_back(u, w);
+      for (int c = 0; c < 2; ++c) {
+        trip.emplace_back(2 * u + c, 2 * u + c, b), trip.emplace_back(2 * w + c, 2 * w + c, b);
+        trip.emplace_back(2 * u + c, 2 * w + c, -b), trip.emplace_back(2 * w + c, 2 * u + c, -b);
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> M(n, n);
+  M.setFromTriplets(trip.begin(), trip.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(M);
+  ASSERT_EQ(ldlt.info(), Eigen::Success);
+  const SeamMetric metric = [&](const Eigen::VectorXd& v) { return Eigen::VectorXd(ldlt.solve(v)); };
+  // Roughness of a move along the outlines: its second differences (kinks) relative to its size.
+  const auto roughness = [&](const Eigen::VectorXd& d) {
+    double diff = 0, size = 0;
+    for (size_t k = 0; k + 1 < outlineEdges.size(); ++k) {
+      const auto [u, w] = outlineEdges[k];
+      if (outlineEdges[k + 1].first != w) continue;  // the next panel
+      const int z = outlineEdges[k + 1].second;
+      diff += (d.segment<2>(2 * u) - 2 * d.segment<2>(2 * w) + d.segment<2>(2 * z)).squaredNorm();
+      size += d.segment<2>(2 * w).squaredNorm();
+    }
+    return std::sqrt(diff / size);
+  };
+  Eigen::VectorXd Xe = X0, Xm = X0;
+  const double before = projectSeamLengths(pairs, Xe, 0);  // 0 iterations: the flattened mismatch
+  ASSERT_GT(before, 1e-6);
+  EXPECT_LT(projectSeamLengths(pairs, Xe), 1e-10);
+  EXPECT_LT(projectSeamLengths(pairs, Xm, 10, 1e-12, metric), 1e-10);
+  EXPECT_LE(roughness(Xm - X0), roughness(Xe - X0));
+  // The tangent part of a smooth direction: the Euclidean one subtracts J^T mu, a kink at every stitched
+  // edge; the metric's subtracts M^-1 J^T mu.
+  const Eigen::VectorXd v = randomDirection(Xm, 5);
+  const Eigen::VectorXd t = tangentToSeamLengths(pairs, Xm, v, metric);
+  const double euclidean = roughness(tangentToSeamLengths(pairs, Xm, v)), smooth = roughness(t);
+  std::printf(
+      "[figures] tangent part of a smooth direction along the gores' outlines: roughness %.3f Euclidean, "
+      "%.3f in the outline metric (the direction itself %.3f)\n",
+      euclidean, smooth, roughness(v));
+  EXPECT_LT(smooth - roughness(v), 0.75 * (euclidean - roughness(v)));
+  EXPECT_LT(std::abs((v - t).dot(M * t)), 1e-9 * v.dot(M * v));
+  EXPECT_LT((tangentToSeamLengths(pairs, Xm, t, metric) - t).norm(), 1e-9 * v.norm());
+  const auto mismatch = [&](const Eigen::VectorXd& Y) {
+    double m = 0;
+    for (const auto& e : pairs)
+      m = std::max(m, std::abs((Y.segment<2>(2 * e.a1) - Y.segment<2>(2 * e.a0)).norm() -
+                               (Y.segment<2>(2 * e.b1) - Y.segment<2>(2 * e.b0)).norm()));
+    return m;
+  };
+  const double h = 1e-4 * opt.objective().meanEdgeLength() / v.lpNorm<Eigen::Infinity>();
+  EXPECT_LT(mismatch(Xm + h * (v.norm() / t.norm()) * t), 1e-3 * mismatch(Xm + h * v));
+}
+
 TEST(Optimize, TangentStepsEndWhereTheTangentialGradientIsSmall) {
   // With every trial projected onto equal seam lengths, the part of a step across that set is undone by the
   // projection; L-BFGS on the tangential part (OptimizeOptions::tangentSteps) ends at a stationary point of

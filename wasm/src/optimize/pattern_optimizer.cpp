@@ -105,7 +105,7 @@ void PatternOptimizer::startInterior() {
 
 bool PatternOptimizer::projectStart() {
   Eigen::VectorXd X = X_;
-  projectSeamLengths(objective_->edgePairs(), X);
+  projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
   followBoundary(X);
   SewnMesh mesh = mesh_;
   if (!rebuildRest(X, mesh)) return false;
@@ -347,7 +347,7 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   message_ = message;
   if (options_.exactSeamLengths && s != OptimizeState::Failed) {
     Eigen::VectorXd X = X_;
-    projectSeamLengths(objective_->edgePairs(), X);
+    projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
     followBoundary(X);
     Vertices x;
     int newton = 0;
@@ -364,9 +364,14 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   timings_.totalMs = elapsedMs();
 }
 
+SeamMetric PatternOptimizer::seamMetric() const {
+  if (!(options_.smoothSeamProjection && smoothing_)) return {};
+  return [this](const Eigen::VectorXd& v) { return Eigen::VectorXd(smoother_.solve(v)); };
+}
+
 Eigen::VectorXd PatternOptimizer::tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const {
   if (!(projectTrials_ && options_.tangentSteps)) return v;
-  return tangentToSeamLengths(objective_->edgePairs(), X, v);
+  return tangentToSeamLengths(objective_->edgePairs(), X, v, seamMetric());
 }
 
 // One L-BFGS iteration (two-loop recursion, Armijo backtracking with equilibrium re-solves).
@@ -400,7 +405,7 @@ bool PatternOptimizer::iterate() {
   double next = 0.5 * alpha;
   for (int h = 0; h <= options_.maxHalvings; ++h, alpha = next, next = 0.5 * alpha) {
     Eigen::VectorXd X = X_ + alpha * d;
-    if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X);
+    if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
     followBoundary(X);
     Vertices x;
     int newton = 0;

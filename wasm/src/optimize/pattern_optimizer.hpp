@@ -21,6 +21,7 @@
 #include "optimize/adjoint.hpp"
 #include "optimize/harmonic_interior.hpp"
 #include "optimize/objectives.hpp"
+#include "optimize/seam_projection.hpp"
 #include "simulate/inflate.hpp"
 
 namespace billow {
@@ -71,6 +72,11 @@ struct OptimizeOptions {
   // 1.49 %, teddy's outlines smoother), but the gores turn lumpy, with kinks no designer would cut
   // (bench/README.md "Tangent steps"); it waits for an outline regularizer that holds them.
   bool tangentSteps = false;
+  // The seam-length projections (trials, tangent steps, the end) minimal in the outline smoothing's metric
+  // I + b K (outlineSmoothing) instead of the Euclidean one: the correction spreads along the outline instead
+  // of edge by edge, which left the outlines zig-zagging under tangent steps. Off: it costs one solve per
+  // stitched edge pair and projection.
+  bool smoothSeamProjection = false;
   bool keepShapes = false;  // keep x of every accepted iterate (benchmarks: preview quality)
   // The variables are the panel outlines and the interior follows them (harmonic_interior.hpp), as a cut panel
   // is only its outline. With free interior vertices (false: the paper's X, held by E_laplace and E_quality)
@@ -231,6 +237,7 @@ class PatternOptimizer {
   Eigen::VectorXd precondition(const Eigen::VectorXd& v) const;  // (I + b K)^-1 v in the variables
   // v, or its part tangent to equal seam lengths at X when steps are (OptimizeOptions::tangentSteps).
   Eigen::VectorXd tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const;
+  SeamMetric seamMetric() const;  // options.smoothSeamProjection's metric, or none
   Pattern pattern_;
   SewnMesh mesh_;
   MembraneMaterial material_;

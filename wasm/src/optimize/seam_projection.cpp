@@ -1,5 +1,6 @@
 #include "optimize/seam_projection.hpp"
 
+#include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
@@ -51,26 +52,50 @@ bool solveNormal(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& b,
   return mu.allFinite();
 }
 
+// The metric's version: Z = M^-1 J^T (column by column) and mu = (J Z)^-1 b; the step is Z mu.
+bool metricStep(const Eigen::SparseMatrix<double>& J, const SeamMetric& metric, const Eigen::VectorXd& b,
+                Eigen::VectorXd& step) {
+  const Eigen::SparseMatrix<double> Jt = J.transpose();
+  Eigen::MatrixXd Z(J.cols(), J.rows());
+  for (int k = 0; k < J.rows(); ++k) Z.col(k) = metric(Eigen::VectorXd(Jt.col(k)));
+  Eigen::MatrixXd G = J * Z;
+  G.diagonal().array() += 1e-12 * std::max(G.diagonal().cwiseAbs().maxCoeff(), 1e-300);
+  const Eigen::LDLT<Eigen::MatrixXd> ldlt(G);
+  if (ldlt.info() != Eigen::Success) return false;
+  step = Z * ldlt.solve(b);
+  return step.allFinite();
+}
+
 }  // namespace
 
 Eigen::VectorXd tangentToSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
-                                     const Eigen::VectorXd& v) {
+                                     const Eigen::VectorXd& v, const SeamMetric& metric) {
   if (pairs.empty()) return v;
   Eigen::VectorXd r, mu;
   Eigen::SparseMatrix<double> J;
   seamLengthResiduals(pairs, X, r, J);
+  if (metric) {
+    Eigen::VectorXd step;
+    return metricStep(J, metric, J * v, step) ? Eigen::VectorXd(v - step) : v;
+  }
   if (!solveNormal(J, J * v, mu)) return v;
   return v - J.transpose() * mu;
 }
 
 double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, Eigen::VectorXd& X, int maxIterations,
-                          double tolerance) {
+                          double tolerance, const SeamMetric& metric) {
   const int m = static_cast<int>(pairs.size());
   if (m == 0) return 0;
   for (int it = 0; it < maxIterations && maxMismatch(pairs, X) > tolerance; ++it) {
     Eigen::VectorXd r, mu;
     Eigen::SparseMatrix<double> J;
     seamLengthResiduals(pairs, X, r, J);
+    if (metric) {
+      Eigen::VectorXd step;
+      if (!metricStep(J, metric, r, step)) break;
+      X -= step;
+      continue;
+    }
     if (!solveNormal(J, r, mu)) break;
     X -= J.transpose() * mu;
   }
