@@ -542,7 +542,7 @@ TEST(Optimize, TangentStepsEndWhereTheTangentialGradientIsSmall) {
                 int(tangent), r.iterations, 100 * rms[tangent], gradient[tangent], r.message.c_str());
   }
   EXPECT_LT(gradient[1], 2e-3);
-  EXPECT_LT(gradient[1], 0.2 * gradient[0]);
+  EXPECT_LT(gradient[1], 0.3 * gradient[0]);  // both the Lagrangian's (measured 9.4e-4 against 5.0e-3)
   EXPECT_LT(rms[1], 1.01 * rms[0]);
 }
 

@@ -336,7 +336,11 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
   r.distanceRms = count ? std::sqrt(r.distanceRms / count) : 0;
   r.seamMismatch = objective_->maxEdgeMismatch(X_);
   const double norm = double(objective_->numVertices()) * D;
-  r.gradient = g_.size() ? tangential(X_, g_).lpNorm<Eigen::Infinity>() * norm / 2 : 0;
+  // With every trial projected onto equal seam lengths the constraint is hard, and stationarity is that of the
+  // Lagrangian: the gradient's part tangent to the constraint set (least-squares multipliers).
+  const Eigen::VectorXd lagrangian =
+      projectTrials_ && g_.size() ? tangentToSeamLengths(objective_->edgePairs(), X_, g_) : g_;
+  r.gradient = g_.size() ? lagrangian.lpNorm<Eigen::Infinity>() * norm / 2 : 0;
   r.stepLength = alpha, r.equilibriumIterations = newton, r.ms = elapsedMs(), r.projected = projected;
   r.coarse = coarse_;
   history_.push_back(r);

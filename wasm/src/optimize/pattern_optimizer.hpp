@@ -132,13 +132,14 @@ struct OptimizeRecord {
   double objective = 0;
   double distanceRms = 0, distanceMax = 0;  // closest-point distance of outer vertices / bbox diagonal
   double seamMismatch = 0;                  // max relative stitched-edge length difference
-  double gradient = 0;                      // scaled ||dE/dX||_inf (see gradientTolerance)
-  double stepLength = 0;                    // line-search alpha
-  int equilibriumIterations = 0;            // Newton iterations of the accepted solve
-  double ms = 0;                            // since the optimizer was made
-  bool projected = false;                   // the final seam-length projection (not an L-BFGS step)
-  bool remeshed = false;                    // the panels were meshed again (not an L-BFGS step)
-  bool coarse = false;                      // an iterate of the coarse phase (OptimizeOptions::coarseFactor)
+  double gradient = 0;    // scaled ||dE/dX||_inf (see gradientTolerance); its part tangent to equal seam lengths
+                          // (the Lagrangian's) while every trial is projected onto them
+  double stepLength = 0;  // line-search alpha
+  int equilibriumIterations = 0;  // Newton iterations of the accepted solve
+  double ms = 0;                  // since the optimizer was made
+  bool projected = false;         // the final seam-length projection (not an L-BFGS step)
+  bool remeshed = false;          // the panels were meshed again (not an L-BFGS step)
+  bool coarse = false;            // an iterate of the coarse phase (OptimizeOptions::coarseFactor)
   // The inflated shape snapped to another equilibrium of the same panels (not an L-BFGS step; the objective
   // may rise): the one it was in proved unstable (see PatternOptimizer::resettle).
   bool resettled = false;
