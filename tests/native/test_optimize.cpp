@@ -59,6 +59,15 @@ Eigen::VectorXd randomDirection(const Eigen::VectorXd& X, unsigned seed) {
   return v / v.lpNorm<Eigen::Infinity>();
 }
 
+// The largest absolute length difference of two stitched edges [m].
+double largestLengthDifference(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& Y) {
+  double m = 0;
+  for (const auto& e : pairs)
+    m = std::max(m, std::abs((Y.segment<2>(2 * e.a1) - Y.segment<2>(2 * e.a0)).norm() -
+                             (Y.segment<2>(2 * e.b1) - Y.segment<2>(2 * e.b0)).norm()));
+  return m;
+}
+
 }  // namespace
 
 TEST(Optimize, PatternObjectiveGradientMatchesFiniteDifferences) {
@@ -437,13 +446,7 @@ TEST(Optimize, TangentToSeamLengthsIsAProjectionThatKeepsLengthsToFirstOrder) {
   EXPECT_LT(std::abs((v - t).dot(t)), 1e-9 * v.squaredNorm());
   EXPECT_GT(t.norm(), 0.1 * v.norm());
   // A small move along it keeps every pair's lengths equal to second order; along v they part at first order.
-  const auto mismatch = [&](const Eigen::VectorXd& Y) {
-    double m = 0;
-    for (const auto& e : pairs)
-      m = std::max(m, std::abs((Y.segment<2>(2 * e.a1) - Y.segment<2>(2 * e.a0)).norm() -
-                               (Y.segment<2>(2 * e.b1) - Y.segment<2>(2 * e.b0)).norm()));
-    return m;
-  };
+  const auto mismatch = [&](const Eigen::VectorXd& Y) { return largestLengthDifference(pairs, Y); };
   const double h = 1e-4 * opt.objective().meanEdgeLength() / v.lpNorm<Eigen::Infinity>();
   const double alongV = mismatch(X + h * v), alongT = mismatch(X + h * (v.norm() / t.norm()) * t);
   EXPECT_GT(alongV, 1e-9 * opt.objective().meanEdgeLength());
@@ -511,13 +514,7 @@ TEST(Optimize, SeamProjectionInAnOutlineMetricIsSmoother) {
   EXPECT_LT(smooth - roughness(v), 0.75 * (euclidean - roughness(v)));
   EXPECT_LT(std::abs((v - t).dot(M * t)), 1e-9 * v.dot(M * v));
   EXPECT_LT((tangentToSeamLengths(pairs, Xm, t, metric) - t).norm(), 1e-9 * v.norm());
-  const auto mismatch = [&](const Eigen::VectorXd& Y) {
-    double m = 0;
-    for (const auto& e : pairs)
-      m = std::max(m, std::abs((Y.segment<2>(2 * e.a1) - Y.segment<2>(2 * e.a0)).norm() -
-                               (Y.segment<2>(2 * e.b1) - Y.segment<2>(2 * e.b0)).norm()));
-    return m;
-  };
+  const auto mismatch = [&](const Eigen::VectorXd& Y) { return largestLengthDifference(pairs, Y); };
   const double h = 1e-4 * opt.objective().meanEdgeLength() / v.lpNorm<Eigen::Infinity>();
   EXPECT_LT(mismatch(Xm + h * (v.norm() / t.norm()) * t), 1e-3 * mismatch(Xm + h * v));
 }

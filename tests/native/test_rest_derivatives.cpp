@@ -62,6 +62,34 @@ void checkElement(double s1, double s2, unsigned seed) {
   }
 }
 
+// Two small discs sewn together (mylar, 60 triangles) in a slightly stretched, bulged shape: every element
+// taut or wrinkled.
+struct BulgedDiscs {
+  Pattern pattern;
+  SewnMesh mesh;
+  Eigen::VectorXd X;
+  MembraneMaterial material;
+  Vertices x;
+};
+
+BulgedDiscs bulgedDiscs() {
+  ExampleOptions eo;
+  eo.triangles = 60, eo.size = 0.1;
+  BulgedDiscs d;
+  d.pattern = examplePattern("mylar", eo);
+  d.mesh = sewPattern(d.pattern);
+  d.X = packPattern(d.pattern);
+  d.material.youngsModulus = d.pattern.material.youngsModulus, d.material.thickness = d.pattern.material.thickness;
+  d.x.resize(d.mesh.numVertices, 3);
+  for (size_t p = 0; p < d.pattern.panels.size(); ++p)
+    for (int v = 0; v < d.pattern.panels[p].vertices.rows(); ++v) {
+      const Eigen::Vector2d P = d.pattern.panels[p].vertices.row(v);
+      const double z = (p == 0 ? 1 : -1) * 0.3 * (0.1 * 0.1 - P.squaredNorm()) / 0.1;
+      d.x.row(d.mesh.simVertex(int(p), v)) << 1.002 * P.x(), 1.002 * P.y(), z;
+    }
+  return d;
+}
+
 }  // namespace
 
 TEST(RestDerivative, ElementTautMatchesFiniteDifferences) {
@@ -82,23 +110,10 @@ TEST(RestDerivative, SlackElementHasNoForce) {
 
 // K = dg/dx on a small sewn pattern (two discs) against central differences of the assembled gradient.
 TEST(RestDerivative, StiffnessMatchesFiniteDifferences) {
-  ExampleOptions eo;
-  eo.triangles = 60, eo.size = 0.1;
-  const Pattern pattern = examplePattern("mylar", eo);
-  const SewnMesh mesh = sewPattern(pattern);
-  const Eigen::VectorXd X = packPattern(pattern);
-  MembraneMaterial mat;
-  mat.youngsModulus = pattern.material.youngsModulus, mat.thickness = pattern.material.thickness;
-  // A slightly stretched, bulged shape: every element taut or wrinkled.
+  const auto [pattern, mesh, X, mat, bulged] = bulgedDiscs();
   std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
-  Vertices x(mesh.numVertices, 3);
-  for (size_t p = 0; p < pattern.panels.size(); ++p)
-    for (int v = 0; v < pattern.panels[p].vertices.rows(); ++v) {
-      const Eigen::Vector2d P = pattern.panels[p].vertices.row(v);
-      const double z = (p == 0 ? 1 : -1) * 0.3 * (0.1 * 0.1 - P.squaredNorm()) / 0.1;
-      x.row(mesh.simVertex(int(p), v)) << 1.002 * P.x(), 1.002 * P.y(), z;
-    }
+  Vertices x = bulged;
   for (int v = 0; v < x.rows(); ++v) x.row(v) += 1e-4 * Eigen::RowVector3d(u(rng), u(rng), u(rng));
   const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, mat, pattern.pressure);
   const Eigen::MatrixXd Kd = K;
@@ -119,20 +134,7 @@ TEST(RestDerivative, StiffnessMatchesFiniteDifferences) {
 // dg/dX dX (the optimizer's prediction of the next equilibrium) against central differences of the assembled
 // gradient in X, and consistent with the adjoint's transpose product: lambda . (J dX) = (J^T lambda) . dX.
 TEST(RestDerivative, JacobianProductMatchesFiniteDifferencesAndTranspose) {
-  ExampleOptions eo;
-  eo.triangles = 60, eo.size = 0.1;
-  const Pattern pattern = examplePattern("mylar", eo);
-  const SewnMesh mesh = sewPattern(pattern);
-  const Eigen::VectorXd X = packPattern(pattern);
-  MembraneMaterial mat;
-  mat.youngsModulus = pattern.material.youngsModulus, mat.thickness = pattern.material.thickness;
-  Vertices x(mesh.numVertices, 3);
-  for (size_t p = 0; p < pattern.panels.size(); ++p)
-    for (int v = 0; v < pattern.panels[p].vertices.rows(); ++v) {
-      const Eigen::Vector2d P = pattern.panels[p].vertices.row(v);
-      const double z = (p == 0 ? 1 : -1) * 0.3 * (0.1 * 0.1 - P.squaredNorm()) / 0.1;
-      x.row(mesh.simVertex(int(p), v)) << 1.002 * P.x(), 1.002 * P.y(), z;
-    }
+  const auto [pattern, mesh, X, mat, x] = bulgedDiscs();
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> u(-1, 1);
   Eigen::VectorXd dX(X.size()), lambda(3 * mesh.numVertices);
