@@ -75,7 +75,7 @@ struct OptimizeOptions {
   // The seam-length projections (trials, tangent steps, the end) minimal in the outline smoothing's metric
   // I + b K (outlineSmoothing) instead of the Euclidean one: the correction spreads along the outline instead
   // of edge by edge, which left the outlines zig-zagging under tangent steps. Off: it costs one solve per
-  // stitched edge pair and projection.
+  // stitched edge pair and projection, and a dense (#X by #pairs) matrix, so it suits small designs only.
   bool smoothSeamProjection = false;
   bool keepShapes = false;  // keep x of every accepted iterate (benchmarks: preview quality)
   // The variables are the panel outlines and the interior follows them (harmonic_interior.hpp), as a cut panel
