@@ -748,6 +748,27 @@ TEST(Optimize, RemeshingAtMostOncePerIteration) {
   }
 }
 
+// Outlines that zig-zag below the edge length (free seams, tangent steps, a weak E_smooth) resample into chords
+// that differ across a seam. Such a remeshing is refused and the old mesh kept, so every iterate still sews
+// (one used to go on with stitched edges 1.5 times apart).
+TEST(Optimize, RemeshingThatWouldNotSewKeepsTheOldMesh) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.tangentSteps = true, o.weights.seam = 0, o.weights.smooth = 0.05;
+  o.remeshEvery = 5, o.maxRemeshings = 100, o.maxIterations = 60;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+  EXPECT_GE(opt.timings().remeshings, 3);
+  double worst = 0;
+  for (const OptimizeRecord& r : opt.history()) worst = std::max(worst, r.seamMismatch);
+  std::printf("[figures] %d iterations, %d remeshings, largest seam mismatch of any iterate %.1e\n", opt.iterations(),
+              opt.timings().remeshings, worst);
+  EXPECT_LT(worst, 1e-4);
+}
+
 // OptimizeOptions::coarseFactor: the first iterations run on panels meshed at twice the edge length (about a
 // quarter of the elements), then the panels are meshed at the design's resolution from their coarse outlines
 // and the optimization goes on there; the result is at the design's resolution and sews.

@@ -144,10 +144,12 @@ bool PatternOptimizer::remesh(double h) {
   const Eigen::VectorXd oldX = X_;
   const Vertices oldx = x_;
   setUp(remeshed.built);
-  if (projectTrials_) projectStart();
+  // The new panels must still sew. An outline that zig-zags below the edge length resamples into chords that
+  // differ across a seam; when projecting them back onto equal lengths fails, the old mesh is kept.
+  const bool sewable = !projectTrials_ || (projectStart() && objective_->maxEdgeMismatch(X_) < 1e-6);
   Vertices x;
   int newton = 0;
-  if (!solveEquilibrium(X_, x_, x, &newton)) {  // the new mesh does not settle: back to the old one
+  if (!sewable || !solveEquilibrium(X_, x_, x, &newton)) {  // back to the old mesh
     current.pattern.inflated = inflated;
     setUp(current);
     X_ = oldX, x_ = oldx;
