@@ -42,19 +42,18 @@ void seamLengthResiduals(const std::vector<PatternObjective::EdgePair>& pairs, c
   J.setFromTriplets(trip.begin(), trip.end());  // duplicates (shared vertices) are summed
 }
 
-// Solves (J J^T) mu = b; false when J J^T does not factorize.
-bool solveNormal(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& b, Eigen::VectorXd& mu) {
-  Eigen::SparseMatrix<double> JJt = J * J.transpose();
-  for (int k = 0; k < JJt.rows(); ++k) JJt.coeffRef(k, k) += 1e-12;  // pairs that share both edges' vertices
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(JJt);
-  if (ldlt.info() != Eigen::Success) return false;
-  mu = ldlt.solve(b);
-  return mu.allFinite();
-}
-
-// The metric's version: Z = M^-1 J^T (column by column) and mu = (J Z)^-1 b; the step is Z mu.
-bool metricStep(const Eigen::SparseMatrix<double>& J, const SeamMetric& metric, const Eigen::VectorXd& b,
+// The minimum-norm step that changes J X by b: J^T (J J^T)^-1 b, or with a metric M^-1 J^T (J M^-1 J^T)^-1 b
+// (M^-1 J^T column by column). False when the normal matrix does not factorize.
+bool normalStep(const Eigen::SparseMatrix<double>& J, const SeamMetric& metric, const Eigen::VectorXd& b,
                 Eigen::VectorXd& step) {
+  if (!metric) {
+    Eigen::SparseMatrix<double> JJt = J * J.transpose();
+    for (int k = 0; k < JJt.rows(); ++k) JJt.coeffRef(k, k) += 1e-12;  // pairs that share both edges' vertices
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(JJt);
+    if (ldlt.info() != Eigen::Success) return false;
+    step = J.transpose() * ldlt.solve(b);
+    return step.allFinite();
+  }
   const Eigen::SparseMatrix<double> Jt = J.transpose();
   Eigen::MatrixXd Z(J.cols(), J.rows());
   for (int k = 0; k < J.rows(); ++k) Z.col(k) = metric(Eigen::VectorXd(Jt.col(k)));
@@ -71,15 +70,10 @@ bool metricStep(const Eigen::SparseMatrix<double>& J, const SeamMetric& metric, 
 Eigen::VectorXd tangentToSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
                                      const Eigen::VectorXd& v, const SeamMetric& metric) {
   if (pairs.empty()) return v;
-  Eigen::VectorXd r, mu;
+  Eigen::VectorXd r, step;
   Eigen::SparseMatrix<double> J;
   seamLengthResiduals(pairs, X, r, J);
-  if (metric) {
-    Eigen::VectorXd step;
-    return metricStep(J, metric, J * v, step) ? Eigen::VectorXd(v - step) : v;
-  }
-  if (!solveNormal(J, J * v, mu)) return v;
-  return v - J.transpose() * mu;
+  return normalStep(J, metric, J * v, step) ? Eigen::VectorXd(v - step) : v;
 }
 
 double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, Eigen::VectorXd& X, int maxIterations,
@@ -87,17 +81,11 @@ double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, 
   const int m = static_cast<int>(pairs.size());
   if (m == 0) return 0;
   for (int it = 0; it < maxIterations && maxMismatch(pairs, X) > tolerance; ++it) {
-    Eigen::VectorXd r, mu;
+    Eigen::VectorXd r, step;
     Eigen::SparseMatrix<double> J;
     seamLengthResiduals(pairs, X, r, J);
-    if (metric) {
-      Eigen::VectorXd step;
-      if (!metricStep(J, metric, r, step)) break;
-      X -= step;
-      continue;
-    }
-    if (!solveNormal(J, r, mu)) break;
-    X -= J.transpose() * mu;
+    if (!normalStep(J, metric, r, step)) break;
+    X -= step;
   }
   return maxMismatch(pairs, X);
 }
