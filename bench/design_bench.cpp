@@ -144,6 +144,12 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.smoothSeamProjection = v != 0;
   else if (name == "tangentSteps")
     o.tangentSteps = v != 0;
+  else if (name == "slidingSeamWeight")
+    o.slidingSeamWeight = v;
+  else if (name == "slidingRemeshEvery")
+    o.slidingRemeshEvery = int(v);
+  else if (name == "regularizerEdgeLength")
+    o.regularizerEdgeLength = v;
   else if (name == "projectHessian")
     o.inflate.projectHessian = v != 0;
   else if (name == "minPivot")
@@ -279,6 +285,10 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
               {"panels", built.figures.panels},
               {"internalPanels", built.figures.internalPanels},
               {"remeshingSteps", opt.timings().remeshings},
+              {"slidingSeams", opt.slidingSeams()},
+              {"edgeLengthRelative", built.figures.edgeLength / opt.objective().modelSize()},
+              {"outlineSmoothing", opt.options().outlineSmoothing},
+              {"smoothWeight", opt.options().weights.smooth},
               {"iterations", opt.iterations()},
               {"newtonIterations", newton},
               {"equilibriumSolves", opt.timings().equilibriumSolves},

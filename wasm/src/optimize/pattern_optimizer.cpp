@@ -34,9 +34,40 @@ const char* toString(OptimizeState s) {
   return "?";
 }
 
+bool hasSlidingSeams(const OptimizeOptions& options, const std::vector<double>& seamWeights) {
+  for (double sigma : seamWeights)
+    if (sigma * options.weights.seam < options.slidingSeamWeight) return true;
+  return false;
+}
+
+OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector<double>& seamWeights, double h,
+                               double D) {
+  OptimizeOptions o = options;
+  if (!hasSlidingSeams(options, seamWeights)) return o;
+  o.tangentSteps = true;
+  if (o.slidingRemeshEvery > 0) {
+    o.remeshEvery = o.remeshEvery > 0 ? std::min(o.remeshEvery, o.slidingRemeshEvery) : o.slidingRemeshEvery;
+    o.maxRemeshings = std::max(o.maxRemeshings, o.maxIterations / o.remeshEvery + 1);
+  }
+  const double k = h > 0 && D > 0 ? std::max(1.0, o.regularizerEdgeLength * D / h) : 1.0;
+  o.outlineSmoothing *= k;
+  o.maxStep *= k;
+  o.weights.smooth *= k * k;
+  return o;
+}
+
+namespace {
+double boundingDiagonal(const TriMesh& mesh) {
+  return mesh.V.rows() ? (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm() : 0.0;
+}
+}  // namespace
+
 PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& built,
                                    const std::vector<double>& seamWeights, const OptimizeOptions& options)
-    : options_(options), seamWeights_(seamWeights), start_(nowMs()) {
+    : options_(slidingOptions(options, seamWeights, built.figures.edgeLength, boundingDiagonal(target))),
+      sliding_(hasSlidingSeams(options, seamWeights)),
+      seamWeights_(seamWeights),
+      start_(nowMs()) {
   imls_ = std::make_unique<ImlsDistance>(target, options.imls);
   material_ = membraneMaterial(built.pattern.material, options.inflate);
   fineEdgeLength_ = built.figures.edgeLength;
@@ -514,9 +545,10 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       }
       if (options_.windowDecrease > 0 && iteration_ >= options_.windowIterations) {
         // The objective windowIterations iterations ago (its last record). Not over a window with a resettling
-        // in it: the objective may rise there (the balloon snapped into another equilibrium), which is no stall.
+        // in it: the objective may rise there (the balloon snapped into another equilibrium), which is no stall;
+        // nor over a remeshing (the objective of another discretization).
         double before = NAN;
-        for (auto r = history_.rbegin(); r != history_.rend() && !r->resettled; ++r)
+        for (auto r = history_.rbegin(); r != history_.rend() && !r->resettled && !r->remeshed; ++r)
           if (r->iteration == iteration_ - options_.windowIterations) {
             before = r->objective;
             break;

@@ -102,6 +102,18 @@ struct OptimizeOptions {
   // 1.40 % for the same outlines meshed anew).
   int remeshEvery = 0;
   int maxRemeshings = 10;
+  // Sliding seams (paper Sec. 6, "Seam Placement": a seam of small weight may move to where the shape fits
+  // best; the paper's sphere is designed so). When some seam's sigma x weights.seam is below slidingSeamWeight
+  // (<= 0: never), nothing but E_smooth holds its outline, and the optimizer changes how it works
+  // (slidingOptions): steps tangent to equal seam lengths, the panels meshed anew every slidingRemeshEvery
+  // iterations (as often as needed), and the outline regularizers and the step held at a physical length:
+  // designed at an edge length of regularizerEdgeLength x the model size (the three-gore sphere at 800
+  // elements), at an edge length h that many times finer outlineSmoothing and maxStep grow with 1/h and
+  // weights.smooth with 1/h^2, else the outlines zig-zag below the edge length and the seams take longer to
+  // slide (bench/README.md "Sliding seams").
+  double slidingSeamWeight = 0.1;
+  int slidingRemeshEvery = 20;
+  double regularizerEdgeLength = 0.055;
   // Coarse to fine (> 1: on): the panels are first meshed again at coarseFactor x the design's edge length
   // (about 1 / coarseFactor^2 of the elements, each iteration that much cheaper) and optimized there until a
   // stopping rule ends that phase or after coarseIterations; then they are meshed at the design's resolution
@@ -112,6 +124,13 @@ struct OptimizeOptions {
   // snaps into at most this many times (0: the optimizer stops there instead).
   int maxResettlings = 10;
 };
+
+// Whether some seam slides (OptimizeOptions::slidingSeamWeight); seamWeights as PatternOptimizer's.
+bool hasSlidingSeams(const OptimizeOptions& options, const std::vector<double>& seamWeights);
+// The options a design with sliding seams is optimized with, at edge length h and model size D [m]: options
+// unchanged when no seam slides.
+OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector<double>& seamWeights, double h,
+                               double D);
 
 enum class OptimizeState { Running, Converged, Stopped, Failed };
 const char* toString(OptimizeState s);
@@ -175,6 +194,8 @@ class PatternOptimizer {
   const std::vector<OptimizeRecord>& history() const { return history_; }
   const std::vector<Vertices>& shapes() const { return shapes_; }  // when options.keepShapes
   const OptimizeTimings& timings() const { return timings_; }
+  const OptimizeOptions& options() const { return options_; }  // as used (slidingOptions)
+  bool slidingSeams() const { return sliding_; }
 
   // Meshes the current panels anew from their outlines at edge length h (<= 0: the design's), inflates them
   // from the current shape, places them as the iterates are placed (after the exact seam-length projection)
@@ -227,6 +248,7 @@ class PatternOptimizer {
   double elapsedMs() const;
 
   OptimizeOptions options_;
+  bool sliding_ = false;  // some seam slides (options_ are slidingOptions)
   std::vector<double> seamWeights_;
   BuiltPattern built_;  // as flattened or last remeshed (its pattern's X is not kept up to date)
   std::unique_ptr<ImlsDistance> imls_;
