@@ -61,18 +61,19 @@ int positiveInt(const Args& args, const std::string& name, int fallback) {
 }  // namespace
 
 int designCommand(const std::vector<std::string>& argv) {
-  const Args args = parseArgs(argv, {"--out-dir", "--resolution", "--max-memory"});
+  const Args args = parseArgs(argv, {"--out-dir", "--resolution", "--max-memory", "--max-iterations"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir")) {
     std::fprintf(args.has("--help") ? stdout : stderr,
                  "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize]\n"
-                 "                     [--max-memory MB] [--quiet]\n\n"
+                 "                     [--max-iterations N] [--max-memory MB] [--quiet]\n\n"
                  "Makes the sewn pattern of a design (its segments flattened into panels of about TRIANGLES\n"
                  "triangles in all, default 3000, and an internal panel for each internal connection), inflates it "
                  "from the target shape and writes\n"
                  "DIR/pattern.json, DIR/pattern.svg (the cut file, with the design's \"fabrication\" settings:\n"
                  "seam allowances, grain, sheet width), DIR/inflated.obj and DIR/report.json.\n"
                  "The panels are optimized so that the inflated shape comes close to the target, unless\n"
-                 "--no-optimize.\n"
+                 "--no-optimize, for at most N iterations (default 300). Seams of weight below 0.1 slide to where\n"
+                 "the shape fits best.\n"
                  "Exit code 0 when the inflated shape settles, 1 when the design cannot be patterned or\n"
                  "the simulation does not settle (the files written so far stay). A resolution whose predicted\n"
                  "memory need exceeds --max-memory (default: this computer's memory) is refused before work.\n");
@@ -132,11 +133,18 @@ int designCommand(const std::vector<std::string>& argv) {
   std::string optimizeState = "skipped";
   double optimizeMs = 0, edgeMismatch = bp.figures.maxEdgeLengthMismatch;
   int remeshings = 0;
+  bool slidingSeams = false;
   if (optimizePanels) {
     std::vector<double> seamWeights;
     for (const DesignSeam& s : design.seams) seamWeights.push_back(s.weight);
     const auto t1 = Clock::now();
-    PatternOptimizer optimizer(scene->target, bp, seamWeights);
+    OptimizeOptions optimizeOptions;
+    optimizeOptions.maxIterations = positiveInt(args, "--max-iterations", optimizeOptions.maxIterations);
+    PatternOptimizer optimizer(scene->target, bp, seamWeights, optimizeOptions);
+    slidingSeams = optimizer.slidingSeams();
+    if (slidingSeams && !quiet)
+      std::fprintf(stderr, "optimize: some seams have a weight below %g and slide to where the shape fits best\n",
+                   optimizer.options().slidingSeamWeight);
     while (optimizer.step(5, 1000) == OptimizeState::Running)
       if (!quiet && !optimizer.history().empty()) {
         const OptimizeRecord& h = optimizer.history().back();
@@ -203,7 +211,11 @@ int designCommand(const std::vector<std::string>& argv) {
       {"version", 1},
       {"optimized", optimizePanels && optimizeState != "failed"},
       {"optimize",
-       {{"state", optimizeState}, {"ms", optimizeMs}, {"remeshing_steps", remeshings}, {"history", history}}},
+       {{"state", optimizeState},
+        {"ms", optimizeMs},
+        {"remeshing_steps", remeshings},
+        {"sliding_seams", slidingSeams},
+        {"history", history}}},
       {"panels", bp.figures.panels},
       {"internal_panels", bp.figures.internalPanels},
       {"triangles", bp.figures.triangles},
