@@ -19,7 +19,9 @@
 //          "internal": true), figures (internalPanels among them), problems (a connection that cannot be
 //          built is one: code "pattern.connection", severity "error", seam) }
 //   t.startOptimization(seamsJson, optionsJson)  the same, and keeps a PatternOptimizer for:
-//   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, remeshings, distanceRms, distanceMax,
+//   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, remeshings, slidingSeams (some seam's
+//                                                 weight lets it slide: OptimizeOptions::slidingSeamWeight),
+//                                                 distanceRms, distanceMax,
 //                                                 flattenedDistanceRms (of the flattened panels' equilibrium),
 //                                                 seamMismatch, objective }
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
@@ -132,7 +134,8 @@ class TargetSession {
       json out = {{"state", billow::toString(state)},
                   {"iteration", optimizer_->iterations()},
                   {"message", optimizer_->message()},
-                  {"remeshings", optimizer_->timings().remeshings}};
+                  {"remeshings", optimizer_->timings().remeshings},
+                  {"slidingSeams", optimizer_->slidingSeams()}};
       if (!optimizer_->history().empty()) {
         const auto& r = optimizer_->history().back();
         out["distanceRms"] = r.distanceRms;

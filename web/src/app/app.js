@@ -318,7 +318,7 @@ export class App {
           if (ticket !== this.patternTicket) return;
           if (p.flattenedText) this.flattenedText = p.flattenedText;
           const step = p.iteration !== undefined && p.stage === 'optimizing'
-            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance to target ${(100 * p.distanceRms).toFixed(2)} %` : ''}`
+            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance to target ${(100 * p.distanceRms).toFixed(2)} %` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
             : null;
           if (this.storedShown()) return this.setStatus(`${STORED_STATUS}: ${step ?? p.stage}…`);
           if (p.flattenedText) this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
