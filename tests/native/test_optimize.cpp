@@ -837,21 +837,29 @@ TEST(Optimize, StopsWhenTheObjectiveNoLongerDecreasesNoticeably) {
 
 // A window with a remeshing in it is no stall either: the objective there is that of another mesh. With the
 // panels meshed anew every 4 iterations every 5-iteration window holds one, and the rule never ends the run
-// (without that, this run stopped at iteration 9).
+// (without that, this run stopped at iteration 9). Every 5 iterations, a window may start on a fresh mesh and
+// is judged as any other.
 TEST(Optimize, ObjectiveWindowDoesNotSpanARemeshing) {
   const Fixture f = makeFixture("sphere-gores.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
-  OptimizeOptions o;
-  o.windowIterations = 5, o.windowMove = 0, o.windowDecrease = 0.05;
-  o.remeshEvery = 4, o.maxRemeshings = 100, o.maxIterations = 24;
-  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
-  while (opt.step(1) == OptimizeState::Running) {
+  for (const int every : {4, 5}) {
+    OptimizeOptions o;
+    o.windowIterations = 5, o.windowMove = 0, o.windowDecrease = 0.05;
+    o.remeshEvery = every, o.maxRemeshings = 100, o.maxIterations = 40;
+    PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+    while (opt.step(1) == OptimizeState::Running) {
+    }
+    std::printf("[figures] remeshing every %d: %s (%s) at iteration %d, %d remeshings\n", every, toString(opt.state()),
+                opt.message().c_str(), opt.iterations(), opt.timings().remeshings);
+    EXPECT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+    EXPECT_GE(opt.timings().remeshings, every == 4 ? 5 : 1);
+    if (every == 4) {
+      EXPECT_NE(opt.message(), "the objective no longer decreases noticeably");
+    } else {
+      EXPECT_EQ(opt.message(), "the objective no longer decreases noticeably");
+      EXPECT_EQ(opt.iterations() % 5, 0) << "a window over a remeshing was judged";
+    }
   }
-  std::printf("[figures] remeshing every 4: %s (%s) at iteration %d, %d remeshings\n", toString(opt.state()),
-              opt.message().c_str(), opt.iterations(), opt.timings().remeshings);
-  EXPECT_NE(opt.message(), "the objective no longer decreases noticeably");
-  EXPECT_GE(opt.timings().remeshings, 3);
-  EXPECT_NE(opt.state(), OptimizeState::Failed) << opt.message();
 }
 
 // OptimizeOptions::slidingSeamWeight: a seam whose weight (times weights.seam) is below it slides, and the

@@ -546,13 +546,15 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       if (options_.windowDecrease > 0 && iteration_ >= options_.windowIterations) {
         // The objective windowIterations iterations ago (its last record). Not over a window with a resettling
         // in it: the objective may rise there (the balloon snapped into another equilibrium), which is no stall;
-        // nor over a remeshing (the objective of another discretization).
+        // nor over a remeshing (the objective of another discretization). A window may start with either.
         double before = NAN;
-        for (auto r = history_.rbegin(); r != history_.rend() && !r->resettled && !r->remeshed; ++r)
+        for (auto r = history_.rbegin(); r != history_.rend(); ++r) {
           if (r->iteration == iteration_ - options_.windowIterations) {
             before = r->objective;
             break;
           }
+          if (r->resettled || r->remeshed) break;
+        }
         if (std::isfinite(before) && before - E_ < options_.windowDecrease * std::abs(E_)) {
           if (refine()) continue;
           finish(OptimizeState::Converged, "the objective no longer decreases noticeably");
