@@ -1,5 +1,6 @@
 // Makes the gallery's files in web/public/gallery (see web/src/app/gallery.js):
-//   node scripts/make-gallery.mjs data     the design files (sphere3, toy, koala, fish) and star.pattern.json
+//   node scripts/make-gallery.mjs data     the design files (sphere3, sphere-sliding, toy, koala, fish) and
+//                                          star.pattern.json
 //   node scripts/make-gallery.mjs thumbs   the thumbnails (<id>.png, 320x240): serves web/dist, opens every
 //                                          item in headless Chromium (/usr/bin/chromium, as the e2e tests),
 //                                          waits until its inflated result shows and screenshots that pane
@@ -131,6 +132,9 @@ function makeData() {
     return { name, closed: false, weight: 1, points: [[0, 1, 0], at(Math.PI / 4), at(0), at(-Math.PI / 4), [0, -1, 0]] };
   };
   write('sphere3.billow.json', design('sphere', 0.5, [meridian(0, 'meridian 1'), meridian(120, 'meridian 2'), meridian(240, 'meridian 3')]));
+  // The same seams of weight 0, free to slide (paper Sec. 6: its sphere was designed so).
+  const sliding = (seam) => ({ ...seam, weight: 0 });
+  write('sphere-sliding.billow.json', design('sphere', 0.5, [meridian(0, 'meridian 1'), meridian(120, 'meridian 2'), meridian(240, 'meridian 3')].map(sliding)));
 
   // Penguin toy: one closed seam around the middle plane (x = center), left and right halves.
   const penguin = readObj(join(ROOT, 'web/public/examples/penguin.obj'));
@@ -177,6 +181,9 @@ const THUMBNAIL_VIEWS = {
   fish: { direction: [1, 0.3, 0.25], zoom: 1.05 }, // from its left side: the flank seam along the middle
 };
 
+// Items whose lesson shows in another pane: the sliding sphere's target looks like sphere3's, its panels do not.
+const THUMBNAIL_PANES = { 'sphere-sliding': 'pattern' };
+
 async function makeThumbnails(only = []) {
   const { serve, launch, openFreshPage } = await import('../tests/e2e/harness.mjs');
   const server = await serve();
@@ -194,7 +201,7 @@ async function makeThumbnails(only = []) {
       const seconds = ((Date.now() - started) / 1000).toFixed(1);
       await page.waitForTimeout(500);
       // Designs: the target with its seams; patterns: the inflated shape. Without the figures and legends.
-      const pane = /^Inflated the optimized panels/.test(await page.textContent('#status')) ? 'target' : 'inflated';
+      const pane = THUMBNAIL_PANES[id] ?? (/^Inflated the optimized panels/.test(await page.textContent('#status')) ? 'target' : 'inflated');
       const overlays = '.pane .stats, .pane .legend, .pane .seam-panel, .pane .hint, .pane .panel-label';
       // A long target is seen from its side and closer than the pane frames it.
       if (pane === 'target' && THUMBNAIL_VIEWS[id]) {

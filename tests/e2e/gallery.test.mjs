@@ -27,7 +27,7 @@ test('each gallery item opens from its card and shows its result', async () => {
     width: el.querySelector('img').naturalWidth,
   })));
   assert.ok(items.length >= 6, `${items.length} gallery items`);
-  for (const id of ['mylar', 'sphere3', 'pillow', 'toy', 'koala', 'fish', 'star'])
+  for (const id of ['mylar', 'sphere3', 'sphere-sliding', 'pillow', 'toy', 'koala', 'fish', 'star'])
     assert.ok(items.some((item) => item.id === id), `the gallery has "${id}"`);
   for (const item of items) {
     assert.ok(item.width > 0, `${item.id}: thumbnail loaded`);

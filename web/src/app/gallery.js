@@ -20,6 +20,10 @@ export const GALLERY_ITEMS = [
     teaches: 'Three meridian seams from pole to pole: the optimizer shapes the gores so the inflated ball is round.',
   },
   {
+    id: 'sphere-sliding', title: 'Sphere, sliding seams', thumbnail: 'sphere-sliding.png', open: { design: 'sphere-sliding.billow.json' },
+    teaches: 'The same three gores with seams of weight 0: free to slide, they curve into S-shaped strips like a tennis ball\'s, and the ball comes out far rounder.',
+  },
+  {
     id: 'pillow', title: 'Pillow', thumbnail: 'pillow.png', open: { pattern: 'pillow' },
     teaches: 'Two squares sewn at the edges: the corners pucker and the sides pull in under pressure.',
   },
