@@ -868,6 +868,7 @@ TEST(Optimize, ObjectiveWindowDoesNotSpanARemeshing) {
 TEST(Optimize, SlidingSeamsChangeHowTheOptimizerWorks) {
   OptimizeOptions o;
   o.maxIterations = 300;
+  o.windowDecrease = 0.01;
   EXPECT_FALSE(hasSlidingSeams(o, {1, 1, 1}));
   EXPECT_FALSE(hasSlidingSeams(o, {}));
   EXPECT_TRUE(hasSlidingSeams(o, {1, 0.05, 1}));
@@ -882,6 +883,8 @@ TEST(Optimize, SlidingSeamsChangeHowTheOptimizerWorks) {
   const double D = 2, atReference = o.regularizerEdgeLength * D;
   const OptimizeOptions held = slidingOptions(o, {1, 1}, atReference / 2, D);
   EXPECT_FALSE(held.tangentSteps);
+  EXPECT_EQ(held.maxIterations, o.maxIterations);
+  EXPECT_EQ(held.windowDecrease, o.windowDecrease);
   EXPECT_EQ(held.remeshEvery, o.remeshEvery);
   EXPECT_EQ(held.outlineSmoothing, o.outlineSmoothing);
   EXPECT_EQ(held.weights.smooth, o.weights.smooth);
@@ -889,7 +892,9 @@ TEST(Optimize, SlidingSeamsChangeHowTheOptimizerWorks) {
   const OptimizeOptions coarse = slidingOptions(o, {1, 0}, 2 * atReference, D);  // coarser than the reference
   EXPECT_TRUE(coarse.tangentSteps);
   EXPECT_EQ(coarse.remeshEvery, o.slidingRemeshEvery);
-  EXPECT_GE(coarse.maxRemeshings * coarse.remeshEvery, o.maxIterations);
+  EXPECT_EQ(coarse.maxIterations, 2 * o.maxIterations);  // slidingIterationFactor
+  EXPECT_EQ(coarse.windowDecrease, 0);
+  EXPECT_GE(coarse.maxRemeshings * coarse.remeshEvery, coarse.maxIterations);
   EXPECT_EQ(coarse.outlineSmoothing, o.outlineSmoothing);
   EXPECT_EQ(coarse.weights.smooth, o.weights.smooth);
   EXPECT_EQ(coarse.maxStep, o.maxStep);

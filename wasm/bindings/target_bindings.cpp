@@ -103,7 +103,8 @@ class TargetSession {
 
   // The app's optimization: it stops once the inflated shape no longer changes visibly (no vertex moving
   // by 0.2 % of the model size over 20 iterations), or the objective fell by less than 1 % over 20 iterations,
-  // or after 150 iterations (the CLI and the native benchmark go on to full convergence; bench/README.md).
+  // or after 150 iterations (300 when seams slide: OptimizeOptions::slidingIterationFactor; the CLI and the
+  // native benchmark go on to full convergence; bench/README.md).
   static billow::OptimizeOptions interactiveOptions() {
     billow::OptimizeOptions o;
     o.maxIterations = 150;

@@ -72,8 +72,8 @@ int designCommand(const std::vector<std::string>& argv) {
                  "DIR/pattern.json, DIR/pattern.svg (the cut file, with the design's \"fabrication\" settings:\n"
                  "seam allowances, grain, sheet width), DIR/inflated.obj and DIR/report.json.\n"
                  "The panels are optimized so that the inflated shape comes close to the target, unless\n"
-                 "--no-optimize, for at most N iterations (default 300). Seams of weight below 0.1 slide to where\n"
-                 "the shape fits best.\n"
+                 "--no-optimize, for at most N iterations (default 300, 600 when seams slide: seams of weight below\n"
+                 "0.1 slide to where the shape fits best).\n"
                  "Exit code 0 when the inflated shape settles, 1 when the design cannot be patterned or\n"
                  "the simulation does not settle (the files written so far stay). A resolution whose predicted\n"
                  "memory need exceeds --max-memory (default: this computer's memory) is refused before work.\n");
@@ -139,7 +139,10 @@ int designCommand(const std::vector<std::string>& argv) {
     for (const DesignSeam& s : design.seams) seamWeights.push_back(s.weight);
     const auto t1 = Clock::now();
     OptimizeOptions optimizeOptions;
-    optimizeOptions.maxIterations = positiveInt(args, "--max-iterations", optimizeOptions.maxIterations);
+    if (args.has("--max-iterations")) {  // as given, also when seams slide (slidingIterationFactor)
+      optimizeOptions.maxIterations = positiveInt(args, "--max-iterations", optimizeOptions.maxIterations);
+      optimizeOptions.slidingIterationFactor = 1;
+    }
     PatternOptimizer optimizer(scene->target, bp, seamWeights, optimizeOptions);
     slidingSeams = optimizer.slidingSeams();
     if (slidingSeams && !quiet)

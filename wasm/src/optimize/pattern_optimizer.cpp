@@ -45,6 +45,8 @@ OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector
   OptimizeOptions o = options;
   if (!hasSlidingSeams(options, seamWeights)) return o;
   o.tangentSteps = true;
+  if (o.slidingIterationFactor > 1) o.maxIterations = int(std::lround(o.maxIterations * o.slidingIterationFactor));
+  o.windowDecrease = 0;
   if (o.slidingRemeshEvery > 0) {
     o.remeshEvery = o.remeshEvery > 0 ? std::min(o.remeshEvery, o.slidingRemeshEvery) : o.slidingRemeshEvery;
     o.maxRemeshings = std::max(o.maxRemeshings, o.maxIterations / o.remeshEvery + 1);
