@@ -93,6 +93,25 @@ TEST(Optimize, PatternObjectiveGradientMatchesFiniteDifferences) {
     const double fd = (obj.patternEnergy(X + eps * v, nullptr) - obj.patternEnergy(X - eps * v, nullptr)) / (2 * eps);
     EXPECT_NEAR(fd, g.dot(v), 1e-5 * std::abs(g.dot(v)) + 1e-14) << "direction " << s;
   }
+  // E_smooth weighs a sliding seam's outline slidingSmooth times as much, and only that seam's: with the first
+  // of the three seams sliding, E_smooth lies strictly between the held and the all-sliding values; its gradient
+  // still matches.
+  OptimizeWeights sliding = w;
+  sliding.slidingSmooth = 5, sliding.slidingBelow = 0.1;
+  ObjectiveTerms held, one, all;
+  PatternObjective(imls, f.built, mesh, {1, 1, 1}, sliding).patternEnergy(X, nullptr, &held);
+  const PatternObjective oneSliding(imls, f.built, mesh, {0, 1, 1}, sliding);
+  oneSliding.patternEnergy(X, &g, &one);
+  PatternObjective(imls, f.built, mesh, {0, 0, 0}, sliding).patternEnergy(X, nullptr, &all);
+  EXPECT_NEAR(held.smooth, t.smooth, 1e-12 * t.smooth);
+  EXPECT_NEAR(all.smooth, 5 * held.smooth, 1e-9 * all.smooth);
+  EXPECT_GT(one.smooth, 1.2 * held.smooth);
+  EXPECT_LT(one.smooth, 0.8 * all.smooth);
+  const Eigen::VectorXd v = randomDirection(X, 21);
+  const double eps = 1e-6;
+  const double fd =
+      (oneSliding.patternEnergy(X + eps * v, nullptr) - oneSliding.patternEnergy(X - eps * v, nullptr)) / (2 * eps);
+  EXPECT_NEAR(fd, g.dot(v), 1e-5 * std::abs(g.dot(v)) + 1e-14);
 }
 
 TEST(Optimize, ShapeObjectiveGradientMatchesFiniteDifferences) {
@@ -888,6 +907,7 @@ TEST(Optimize, SlidingSeamsChangeHowTheOptimizerWorks) {
   EXPECT_EQ(held.remeshEvery, o.remeshEvery);
   EXPECT_EQ(held.outlineSmoothing, o.outlineSmoothing);
   EXPECT_EQ(held.weights.smooth, o.weights.smooth);
+  EXPECT_EQ(held.weights.slidingBelow, o.weights.slidingBelow);
 
   const OptimizeOptions coarse = slidingOptions(o, {1, 0}, 2 * atReference, D);  // coarser than the reference
   EXPECT_TRUE(coarse.tangentSteps);
@@ -897,12 +917,15 @@ TEST(Optimize, SlidingSeamsChangeHowTheOptimizerWorks) {
   EXPECT_GE(coarse.maxRemeshings * coarse.remeshEvery, coarse.maxIterations);
   EXPECT_EQ(coarse.outlineSmoothing, o.outlineSmoothing);
   EXPECT_EQ(coarse.weights.smooth, o.weights.smooth);
+  EXPECT_EQ(coarse.weights.slidingSmooth, o.weights.slidingSmooth);
   EXPECT_EQ(coarse.maxStep, o.maxStep);
 
   const OptimizeOptions fine = slidingOptions(o, {1, 0}, atReference / 2, D);  // twice as fine
   EXPECT_NEAR(fine.outlineSmoothing, 2 * o.outlineSmoothing, 1e-12);           // the same length in meters
   EXPECT_NEAR(fine.maxStep, 2 * o.maxStep, 1e-12);
-  EXPECT_NEAR(fine.weights.smooth, 4 * o.weights.smooth, 1e-12);
+  EXPECT_EQ(fine.weights.smooth, o.weights.smooth);  // held seams' outlines as they were
+  EXPECT_NEAR(fine.weights.slidingSmooth, 4 * o.weights.slidingSmooth, 1e-12);
+  EXPECT_EQ(fine.weights.slidingBelow, o.slidingSeamWeight);
   EXPECT_EQ(fine.weights.target, o.weights.target);
 }
 

@@ -101,9 +101,13 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
   for (size_t p = 0; p < built.panels.size(); ++p) {
     const BuiltPanel& bp = built.panels[p];
     const int nb = bp.boundaryVertices;
-    for (int j = 0; j < nb; ++j)
-      if (!bp.corner[j])
-        boundary_.push_back({gid(int(p), (j + nb - 1) % nb), gid(int(p), j), gid(int(p), (j + 1) % nb)});
+    for (int j = 0; j < nb; ++j) {
+      if (bp.corner[j]) continue;
+      const int seam = bp.seam[j];
+      const double seamSigma = seam < 0 ? INFINITY : seam < int(seamWeights.size()) ? seamWeights[seam] : 1.0;
+      const double relative = seamSigma * w_.seam < w_.slidingBelow ? w_.slidingSmooth : 1.0;
+      boundary_.push_back({gid(int(p), (j + nb - 1) % nb), gid(int(p), j), gid(int(p), (j + 1) % nb), relative});
+    }
     const Panel& panel = built.pattern.panels[p];
     std::vector<std::set<int>> ring(panel.vertices.rows());
     for (int t = 0; t < panel.triangles.rows(); ++t)
@@ -192,10 +196,11 @@ double PatternObjective::patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd
   }
   for (const Triple& t : boundary_) {  // Eq. 12
     const Eigen::Vector2d q = P(t.l) - 2 * P(t.j) + P(t.r);
-    Eb += wb * q.squaredNorm();
+    const double w = wb * t.weight;
+    Eb += w * q.squaredNorm();
     if (!grad) continue;
-    grad->segment<2>(2 * t.l) += 2 * wb * q, grad->segment<2>(2 * t.r) += 2 * wb * q;
-    grad->segment<2>(2 * t.j) -= 4 * wb * q;
+    grad->segment<2>(2 * t.l) += 2 * w * q, grad->segment<2>(2 * t.r) += 2 * w * q;
+    grad->segment<2>(2 * t.j) -= 4 * w * q;
   }
   for (size_t i = 0; i < interior_.size(); ++i) {  // Eq. 13
     const int b = ringStart_[i], e = ringStart_[i + 1];

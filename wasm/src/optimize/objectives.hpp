@@ -30,10 +30,14 @@
 namespace billow {
 
 struct OptimizeWeights {
-  double target = 1.0;    // E_target
-  double seam = 1.0;      // multiplies every seam's sigma_i (the design's seam weight)
-  double length = 10.0;   // E_length; the final seam-length projection makes it exact (see PatternOptimizer)
-  double smooth = 2.0;    // E_smooth: weaker lets the outlines zig-zag (bench/README.md)
+  double target = 1.0;   // E_target
+  double seam = 1.0;     // multiplies every seam's sigma_i (the design's seam weight)
+  double length = 10.0;  // E_length; the final seam-length projection makes it exact (see PatternOptimizer)
+  double smooth = 2.0;   // E_smooth: weaker lets the outlines zig-zag (bench/README.md)
+  // E_smooth's weight is smooth x slidingSmooth along a sliding seam (sigma x seam below slidingBelow), which
+  // nothing else holds (OptimizeOptions::slidingSeamWeight sets both).
+  double slidingSmooth = 1.0;
+  double slidingBelow = 0;
   double laplace = 0.01;  // E_laplace: only needs to remove the interior sliding null space
   double quality = 0.01;  // E_quality
 };
@@ -84,6 +88,7 @@ class PatternObjective {
  private:
   struct Triple {
     int l, j, r;
+    double weight = 1;  // relative (OptimizeWeights::slidingSmooth)
   };
   struct OuterTriangle {
     int vertex[3];   // simulation vertices

@@ -54,7 +54,8 @@ OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector
   const double k = h > 0 && D > 0 ? std::max(1.0, o.regularizerEdgeLength * D / h) : 1.0;
   o.outlineSmoothing *= k;
   o.maxStep *= k;
-  o.weights.smooth *= k * k;
+  o.weights.slidingSmooth *= k * k;  // only along sliding seams: held ones keep their outlines as they were
+  o.weights.slidingBelow = o.slidingSeamWeight;
   return o;
 }
 
