@@ -109,8 +109,8 @@ struct OptimizeOptions {
   // iterations (as often as needed), and the outline regularizers and the step held at a physical length:
   // designed at an edge length of regularizerEdgeLength x the model size (the three-gore sphere at 800
   // elements), at an edge length h that many times finer outlineSmoothing and maxStep grow with 1/h and
-  // weights.smooth with 1/h^2, else the outlines zig-zag below the edge length and the seams take longer to
-  // slide (bench/README.md "Sliding seams").
+  // E_smooth along the sliding seams (weights.slidingSmooth) with 1/h^2, else the outlines zig-zag below the
+  // edge length and the seams take longer to slide (bench/README.md "Sliding seams").
   // Sliding takes longer: the layout first sits near the held-seam optimum for 40-50 iterations, then the
   // seams move and the shape keeps visibly improving for a few hundred (three gores at 3k: 0.46 % after 150,
   // 0.32 % after 300), so maxIterations is multiplied by slidingIterationFactor, and the objective window
