@@ -200,3 +200,40 @@ test('a stale or damaged stored result is ignored: the result is computed live, 
     await page.close();
   }
 });
+
+test('a seam\'s weight slider set to 0 lets the seams slide, and the status says so while the panels are optimized', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await optimizedResultShown(page);
+  await watch(page);
+  const slider = page.locator('input[aria-label="Weight of meridian 1"]');
+  assert.match(await slider.getAttribute('title'), /below 0\.1 it slides/);
+  await slider.fill('0');
+  await page.waitForFunction(() => window.seen.statuses.some((s) => /light seams sliding/.test(s)), null, { timeout: 60000 })
+    .catch(async (error) => {
+      throw new Error(`no status said the seams slide; the last ones: ${JSON.stringify((await page.evaluate(() => window.seen.statuses)).slice(-3))} (${error.message})`);
+    });
+  const state = await page.evaluate(() => ({ weights: window.billow.app.design.seams.map((s) => s.weight), statuses: window.seen.statuses }));
+  assert.deepEqual(state.weights, [0, 1, 1]);
+  assert.ok(state.statuses.some((s) => /^Optimizing the panels: step \d+, distance to target [\d.]+ %, light seams sliding/.test(s)), state.statuses.slice(-3).join(' | '));
+  await screenshot(page, 'gallery-sphere3-sliding-live');
+  await page.evaluate(() => window.billow.app.optimizing?.cancel());
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('deleting an internal connection makes the panels again, without the internal panel', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.evaluate(() => window.billow.gallery.open('fish'));
+  await optimizedResultShown(page);
+  const before = await page.evaluate(() => window.billow.app.patterns.display.panels.length);
+  await page.click('#seam-panel .connection .delete');
+  assert.equal(await page.evaluate(() => window.billow.app.design.connections.length), 0);
+  await page.waitForFunction((n) => window.billow.app.patterns.display?.panels.length === n - 1, before, { timeout: 60000 })
+    .catch(async (error) => {
+      throw new Error(`the panels were not made again: ${await page.evaluate(() => window.billow.app.patterns.display?.panels.length)} of ${before} (${error.message})`);
+    });
+  await page.evaluate(() => window.billow.app.optimizing?.cancel());
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

@@ -268,19 +268,24 @@ export class SeamEditor {
     this.refresh();
   }
 
+  // Weights and internal connections leave the segments as they are but not the panels: the edit cancelled
+  // the optimization running (commitDesign), and the panels are made again at once.
   setWeight(seam, weight) {
     this.app.commitDesign(this.withTwin(seam, (d, i) => cmd.setSeamWeight(d, i, weight)), { mergeKey: `weight:${seam}` });
     this.draw();
+    this.app.remakePattern();
   }
 
   connect(a, b) {
     this.app.commitDesign(cmd.addConnection(this.design, a, b));
     this.draw();
+    this.app.remakePattern();
   }
 
   deleteConnection(index) {
     this.app.commitDesign(cmd.deleteConnection(this.design, index));
     this.draw();
+    this.app.remakePattern();
   }
 
   // The segmentation of the target by the current seams (latest request wins).
