@@ -31,6 +31,7 @@ test('each optimizer iterate streams its shape and its distance to the target, t
     assert.ok(it.distance.max >= it.distance.rms);
   }
   assert.ok(rest.at(-1).distance.rms < rest[0].distance.rms, 'the iterates come closer to the target');
+  assert.ok(rest.every((it) => it.slidingSeams === false), 'seams of weight 1 are held');
   for (const it of rest) if (it.patternText) assert.equal(JSON.parse(it.patternText).panels.length, 3, 'streamed panels'); // every 0.5 s
   // Points on the target are at distance 0; pushed out along the sphere's radius they are outside.
   const scale = 0.25;
@@ -40,4 +41,19 @@ test('each optimizer iterate streams its shape and its distance to the target, t
   assert.ok(on.max < 1e-9, `on the target: ${on.max}`);
   assert.ok(out.distances.every((d) => d > 0), 'outside: positive');
   assert.ok(Math.abs(out.rms * out.diagonal - 0.02 * scale) < 0.002 * scale, `2 % out: ${out.rms * out.diagonal} m`);
+});
+
+test('seams of weight 0 slide, and every iterate says so; the panels are meshed anew on the way', () => {
+  const handlers = createHandlers(api);
+  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
+  for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
+  const design = JSON.parse(read('../../web/public/gallery/sphere-sliding.billow.json'));
+  assert.ok(design.seams.every((s) => s.weight === 0), 'the gallery\'s sliding sphere has seams of weight 0');
+  const seams = design.seams.map(({ points, closed, weight }) => ({ points, closed, weight }));
+  const iterates = [];
+  const run = handlers.optimizeDesign({ seams, scale: 0.25, triangles: 600, maxIterations: 25 });
+  for (let step = run.next(); !step.done; step = run.next()) if (step.value.stage === 'optimizing' && step.value.state) iterates.push(step.value);
+  assert.ok(iterates.length >= 20, `${iterates.length} iterates`);
+  assert.ok(iterates.every((it) => it.slidingSeams === true), 'every iterate says the seams slide');
+  assert.ok(iterates.at(-1).remeshings >= 1, `remeshed ${iterates.at(-1).remeshings} times by iteration ${iterates.at(-1).iteration}`);
 });
