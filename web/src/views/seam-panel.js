@@ -109,7 +109,7 @@ export class SeamPanel {
     weight.max = '10';
     weight.step = '0.1';
     weight.value = String(seam.weight);
-    weight.title = `Weight σ = ${seam.weight}: how firmly the seam stays where it is drawn; below 0.1 it slides to where the shape fits best`;
+    weight.title = `Weight σ = ${seam.weight}: how firmly the seam stays where it is drawn; below 0.1 it slides to where the shape fits best, and the panels take longer to optimize`;
     weight.setAttribute('aria-label', `Weight of ${seam.name ?? `seam ${i + 1}`}`);
     weight.addEventListener('input', () => this.editor.setWeight(i, Number(weight.value)));
     const remove = el('button', 'delete', '×');
