@@ -167,6 +167,7 @@ test('an edit before the live result arrives ends the stored result: it does not
   const edited = await page.evaluate(() => ({ pressure: JSON.parse(window.billow.app.patterns.currentText).pressure, statuses: window.seen.statuses }));
   assert.equal(edited.pressure, 1200, 'the panels shown are those of the edited design');
   assert.ok(edited.statuses.some((s) => /^Optimizing the panels: step/.test(s)), 'the edited design streams its iterates as usual');
+  assert.equal(await page.evaluate(() => document.querySelector('#inflated-stats').classList.contains('stale')), false, 'the new result\'s figures are not marked as old');
   await page.evaluate(() => window.billow.app.undo());
   await page.waitForFunction(() => window.billow.app.optimizing, null, { timeout: 30000 }).catch(() => {});
   await optimizedResultShown(page);
@@ -213,7 +214,12 @@ test('a seam\'s weight slider set to 0 lets the seams slide, and the status says
     .catch(async (error) => {
       throw new Error(`no status said the seams slide; the last ones: ${JSON.stringify((await page.evaluate(() => window.seen.statuses)).slice(-3))} (${error.message})`);
     });
-  const state = await page.evaluate(() => ({ weights: window.billow.app.design.seams.map((s) => s.weight), statuses: window.seen.statuses }));
+  const state = await page.evaluate(() => ({
+    weights: window.billow.app.design.seams.map((s) => s.weight),
+    statuses: window.seen.statuses,
+    stale: document.querySelector('#inflated-stats').classList.contains('stale'),
+  }));
+  assert.ok(state.stale, 'the inflated figures of the last result are marked as such while the panels are optimized');
   assert.deepEqual(state.weights, [0, 1, 1]);
   assert.ok(state.statuses.some((s) => /^Optimizing the panels: step \d+, distance to target [\d.]+ %, light seams sliding/.test(s)), state.statuses.slice(-3).join(' | '));
   await screenshot(page, 'gallery-sphere3-sliding-live');

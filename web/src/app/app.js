@@ -351,7 +351,10 @@ export class App {
   // chosen view) and, now and then, its panels. The final result replaces both.
   showIterate(p) {
     const pane = this.panes.inflated;
-    if (p.triangles) pane.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer }, { frame: !pane.shape });
+    if (p.triangles) {
+      pane.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer }, { frame: !pane.shape });
+      this.patterns.markStatsStale();
+    }
     else if (p.positions && pane.shape && pane.position?.count * 3 === p.positions.length) pane.updatePositions(p.positions);
     if (p.distances && pane.shape) pane.setDistances(p.distances, p.distance);
     if (p.patternText) this.panes.pattern.setPattern(patternForDisplay(p.patternText, 'the panels being optimized'), { frame: false });

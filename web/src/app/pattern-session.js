@@ -146,7 +146,17 @@ export class PatternSession {
     }
   }
 
+  // While new panels are optimized the inflated pane streams their iterates, and these figures are still the
+  // last inflated result's: dimmed, and they say so, until the next result replaces them.
+  markStatsStale() {
+    if (!this.stats.firstChild) return;
+    this.stats.classList.add('stale');
+    this.stats.title = 'The figures of the last inflated result: the panels are being optimized';
+  }
+
   renderStats(result, pattern = this.lastPattern) {
+    this.stats.classList.remove('stale');
+    this.stats.removeAttribute('title');
     const peak = peakStress(result);
     const rows = [
       ['Volume', formatVolume(result.volume)],
