@@ -59,6 +59,8 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
   }
   for (RestTriangle& t : rest_) t.weight *= w_.quality * edge_ * edge_ * norm_ * double(rest_.size()) / restTotal;
 
+  const auto sigmaOf = [&](int seam) { return seam < int(seamWeights.size()) ? seamWeights[seam] : 1.0; };
+
   // E_seam: one entry per simulation vertex on a seam, s_j averaged over the panels that meet there.
   std::vector<Eigen::Vector3d> sum(n_, Eigen::Vector3d::Zero());
   std::vector<int> count(n_, 0);
@@ -71,7 +73,7 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
       const int sv = mesh.simVertex(int(p), v);
       sum[sv] += bp.targetPosition.row(v).transpose();
       ++count[sv];
-      sigma[sv] = std::max(sigma[sv], s < int(seamWeights.size()) ? seamWeights[s] : 1.0);
+      sigma[sv] = std::max(sigma[sv], sigmaOf(s));
     }
   }
   for (int v = 0; v < n_; ++v)
@@ -104,8 +106,8 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
     for (int j = 0; j < nb; ++j) {
       if (bp.corner[j]) continue;
       const int seam = bp.seam[j];
-      const double seamSigma = seam < 0 ? INFINITY : seam < int(seamWeights.size()) ? seamWeights[seam] : 1.0;
-      const double relative = seamSigma * w_.seam < w_.slidingBelow ? w_.slidingSmooth : 1.0;
+      const bool sliding = seam >= 0 && sigmaOf(seam) * w_.seam < w_.slidingBelow;
+      const double relative = sliding ? w_.slidingSmooth : 1.0;
       boundary_.push_back({gid(int(p), (j + nb - 1) % nb), gid(int(p), j), gid(int(p), (j + 1) % nb), relative});
     }
     const Panel& panel = built.pattern.panels[p];
