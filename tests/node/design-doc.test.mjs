@@ -1,13 +1,10 @@
-// The design document's pure modules: parse-with-defaults, undo/redo history, URL sharing.
+// The design document's pure modules: parse-with-defaults, undo/redo history, URL sharing (links with the
+// designer's own mesh: share-link.test.mjs).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { newDesign, parseDesign } from '../../web/src/app/design.js';
 import { History } from '../../web/src/app/history.js';
-import { encodeDesign, decodeDesign, packMesh, unpackMesh, MAX_LINK_CHARS } from '../../web/src/app/share.js';
-import { readFileSync } from 'node:fs';
-import { readObjText } from './obj.mjs';
-
-const readObj = (name) => readObjText(readFileSync(new URL(`../../../shared/meshes/${name}`, import.meta.url), 'utf8'));
+import { encodeDesign, decodeDesign, MAX_LINK_CHARS } from '../../web/src/app/share.js';
 
 test('parseDesign keeps good fields and unknown ones, defaults bad ones with a warning', () => {
   const good = { ...newDesign('sphere'), size: { height: 0.8 }, extra: { keep: [1, 2] } };
@@ -77,41 +74,4 @@ test('damaged, foreign and oversized links get a message, and no hash means no d
   const huge = { ...newDesign(), seams: Array.from({ length: 4000 }, (_, i) => ({ points: [{ face: i, bary: [Math.random(), Math.random(), Math.random()] }] })) };
   await assert.rejects(encodeDesign(huge), new RegExp(`too large for a link`));
   assert.ok(MAX_LINK_CHARS > 1000);
-});
-
-test('a target mesh travels in the link: same triangles, positions within 1/65535 of the box', async () => {
-  const mesh = readObj('blub.obj');
-  const design = { ...newDesign(), target: { file: 'blub.obj' }, seams: [{ name: 'fin', closed: false, weight: 1, points: [{ face: 1885, bary: [0.1, 0.2, 0.7] }] }] };
-  const fragment = await encodeDesign(design, mesh);
-  assert.match(fragment, /^design=[A-Za-z0-9_-]+&mesh=[A-Za-z0-9_-]+$/);
-  const back = await decodeDesign(`#${fragment}`);
-  assert.equal(back.design.target.file, 'blub.obj');
-  assert.deepEqual(Array.from(back.mesh.indices), Array.from(mesh.indices), 'triangle order kept: seam points stay on their faces');
-  let span = 0;
-  for (let a = 0; a < 3; a++) {
-    const axis = Array.from(mesh.positions).filter((_, i) => i % 3 === a);
-    span = Math.max(span, Math.max(...axis) - Math.min(...axis));
-  }
-  let worst = 0;
-  for (let i = 0; i < mesh.positions.length; i++) worst = Math.max(worst, Math.abs(back.mesh.positions[i] - mesh.positions[i]));
-  assert.ok(worst <= span / 65535 + 1e-6 * span, `worst position error ${worst} of a box of ${span}`);
-  assert.ok(worst > 0, 'positions are quantized, not sent as floats');
-  const designOnly = await decodeDesign(`#${await encodeDesign(newDesign())}`);
-  assert.equal(designOnly.mesh, null);
-});
-
-test('damaged meshes in links are refused with a message; meshes too large for a link say so', async () => {
-  const mesh = readObj('sphere.obj');
-  const packed = packMesh(mesh);
-  assert.equal(unpackMesh(packed).indices.length, mesh.indices.length);
-  assert.throws(() => unpackMesh(packed.subarray(0, packed.length - 3)), /truncated|trailing/);
-  assert.throws(() => unpackMesh(Uint8Array.of(1, 2, 3, 4)), /not a mesh/);
-  const badIndex = packMesh({ positions: mesh.positions, indices: Uint32Array.of(0, 1, 642) });
-  assert.throws(() => unpackMesh(badIndex), /bad index/);
-  const fragment = await encodeDesign({ ...newDesign(), target: { file: 'sphere.obj' } }, mesh);
-  const [designPart, meshPart] = fragment.split('&');
-  await assert.rejects(decodeDesign(`#${designPart}&${meshPart.slice(0, meshPart.length / 2)}`), /target shape in this link is damaged/);
-  await assert.rejects(decodeDesign(`#${designPart}&mesh=AAAA`), /target shape in this link is damaged/);
-  const big = readObj('hand.obj');
-  await assert.rejects(encodeDesign({ ...newDesign(), target: { file: 'hand.obj' } }, big), /too large for a link.*target mesh.*Save it to a file/);
 });
