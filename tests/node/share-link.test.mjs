@@ -1,15 +1,16 @@
-// Share links with the designer's own mesh (web/src/app/share.js, mesh-link.js): every mesh of
-// ../shared/meshes travels in a link with a typical design, comes back with the same triangles and
+// Share links with the designer's own mesh (web/src/app/share.js, mesh-link.js, shared-link.js): every
+// mesh of ../shared/meshes travels in a link with a typical design, comes back with the same triangles and
 // positions within the grid's half step, and the design's seam points land where they were; damaged mesh
-// parts give the designer's message.
+// parts give the designer's message; a mesh too large for a link leaves a link that asks for its file.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
-import { encodeDesign, decodeDesign, MAX_LINK_CHARS } from '../../web/src/app/share.js';
+import { encodeDesign, decodeDesign, linkNotice, MAX_LINK_CHARS } from '../../web/src/app/share.js';
 import { packMesh, unpackMesh } from '../../web/src/app/mesh-link.js';
 import { QUANT_BITS } from '../../web/src/app/mesh-grid.js';
 import { deflate, toBase64Url } from '../../web/src/app/link-bytes.js';
+import { awaitTarget } from '../../web/src/app/shared-link.js';
 import { parseDesign } from '../../web/src/app/design.js';
 import { readObjText } from './obj.mjs';
 
@@ -154,6 +155,7 @@ test('every mesh up to 20,000 triangles travels in its link with a typical desig
     assert.match(fragment, /^design=[A-Za-z0-9_-]+&mesh=[A-Za-z0-9_-]+$/, `${name} travels with its mesh`);
     assert.ok(fragment.length < MAX_LINK_CHARS, `${name}: ${fragment.length} characters`);
     const back = await decodeDesign(`#${fragment}`);
+    assert.equal(back.awaiting, null);
     assertClosedSurface(back.mesh, name);
 
     // The same triangles on a grid step of 1/64 of the mean edge (finer only where thin triangles need it).
@@ -214,6 +216,7 @@ test('a version-1 link still opens: same triangles, positions within 1/65535 of 
   assert.deepEqual(Array.from(back.mesh.indices), [0, 1, 2, 0, 3, 1, 1, 3, 2, 0, 2, 3]);
   assert.deepEqual(Array.from(back.mesh.positions), [0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1]);
   assert.deepEqual(back.design.seams[0].points[0], { face: 3, bary: [0.2, 0.3, 0.5] }, 'faces as they were: version 1 kept the order');
+  assert.equal(back.awaiting, null);
 });
 
 test('damaged, truncated and garbage mesh parts give the designer\'s message, never another error', async () => {
@@ -249,8 +252,57 @@ test('damaged, truncated and garbage mesh parts give the designer\'s message, ne
   assert.ok(refused > tries.length / 2, `${refused} of ${tries.length} damaged parts refused`);
 });
 
-test('a mesh too large for a link is refused with a message', async () => {
+test('a mesh too large for a link leaves a link that asks for its file; that file, and only that one, takes the design', async () => {
   const mesh = subdivide(readMesh('hand.obj'));
-  assert.ok(mesh.indices.length / 3 > LINKED_TRIANGLES);
-  await assert.rejects(encodeDesign(typicalDesign('my hand.obj', mesh.indices.length / 3), mesh), /too large for a link.*target mesh.*Save it to a file/);
+  const triangles = mesh.indices.length / 3;
+  assert.ok(triangles > LINKED_TRIANGLES);
+  const design = typicalDesign('my hand.obj', triangles);
+  const fragment = await encodeDesign(design, mesh);
+  console.log(`hand.obj subdivided: ${triangles} triangles, link without the mesh ${fragment.length} characters`);
+  assert.match(fragment, /^design=[A-Za-z0-9_-]+&target=63928\.\d+\.[0-9a-f]{8}$/);
+  assert.match(linkNotice(fragment, design), /copied.*"my hand\.obj" \(63,928 triangles\) is too large.*send the file/);
+  assert.equal(linkNotice('design=abc', design), 'A link to this design was copied to the clipboard.');
+
+  const back = await decodeDesign(`#${fragment}`);
+  assert.equal(back.mesh, null);
+  assert.deepEqual(back.design, parseDesign(design).design, 'the design as drawn: its faces are the file\'s own');
+  const shown = [];
+  const messages = {
+    show: (severity, text) => {
+      const message = { severity, text, removed: false, remove: () => (message.removed = true) };
+      shown.push(message);
+      return message;
+    },
+  };
+  const awaited = awaitTarget(back, messages);
+  assert.match(shown[0].text, /drawn on your mesh "my hand\.obj" \(63,928 triangles\).*too large.*Open that file/);
+  assert.equal(shown[0].severity, 'warning');
+
+  const blank = { ...design, seams: [], target: { file: 'other.obj' } };
+  const hand = readMesh('hand.obj');
+  assert.equal(awaited.attach('hand.obj', hand, { ...blank, target: { file: 'hand.obj' } }).seams.length, 0, 'another mesh opens on its own');
+  assert.match(shown.at(-1).text, /"hand\.obj" is not the mesh the shared design was drawn on \(this file has 15,982 triangles.*still waits: open "my hand\.obj"/);
+  const moved = { positions: mesh.positions.map((x, i) => (i === 0 ? x + 0.01 : x)), indices: mesh.indices };
+  assert.equal(awaited.attach('moved.obj', moved, { ...blank, target: { file: 'moved.obj' } }).seams.length, 0, 'a vertex moved');
+  assert.match(shown.at(-1).text, /not where they were/);
+  assert.equal(shown.filter((m) => !m.removed).length, 1, 'one message at a time about the waiting design');
+  assert.equal(awaited.attach('spot.obj', mesh, { ...blank, target: { example: 'spot' } }).seams.length, 0, 'examples are not the file');
+
+  const attached = awaited.attach('hand-fine.obj', mesh, { ...blank, target: { file: 'hand-fine.obj' } });
+  assert.deepEqual(attached.seams, back.design.seams, 'the same mesh takes the design, seams on the same triangles');
+  assert.deepEqual(attached.target, { file: 'hand-fine.obj' });
+  assert.ok(shown.every((m) => m.removed), 'the waiting design\'s messages are gone once it is on its mesh');
+  assert.equal(awaited.attach('hand-fine.obj', mesh, blank), blank, 'once only');
+
+  const linked = await decodeDesign(`#${await encodeDesign(design, readMesh('sphere.obj'))}`);
+  assert.equal(awaitTarget(linked, messages), null, 'a link with its mesh waits for nothing');
+  const bare = await decodeDesign(`#${fragment.split('&')[0]}`);
+  assert.equal(awaitTarget(bare, messages), null);
+  assert.match(shown.at(-1).text, /refers to the file "my hand\.obj", which is not in the link/);
+});
+
+test('a design too large even without its mesh is refused with a message', async () => {
+  const huge = typicalDesign('big.obj', 1000);
+  huge.seams = Array.from({ length: 400 }, (_, i) => typicalDesign('x', 1000, i).seams[0]);
+  await assert.rejects(encodeDesign(huge, readMesh('sphere.obj')), /too large for a link.*Save it to a file/);
 });

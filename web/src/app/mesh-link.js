@@ -10,7 +10,7 @@
 import { ByteWriter, ByteReader } from './link-bytes.js';
 import { Frontier } from './mesh-frontier.js';
 import { writeIndexed, readIndexed } from './mesh-link-v1.js';
-import { gridFor } from './mesh-grid.js';
+import { gridOf, gridFor, quantize } from './mesh-grid.js';
 
 const MAGIC = [0x42, 0x4d]; // "BM"
 const VERSION_INDEXED = 1;
@@ -270,4 +270,26 @@ export function unpackMesh(bytes) {
   if (version === VERSION_INDEXED) return readIndexed(input);
   if (version === VERSION_TRAVERSED) return unpackTraversed(input);
   throw new Error('not a mesh');
+}
+
+// What identifies the designer's mesh when it stays out of a link: counts and a hash of its triangles and
+// of its positions on the link's grid (a file read the same way gives the same numbers).
+export function meshFingerprint({ positions, indices }) {
+  let grid = { lo: [0, 0, 0], step: 1 };
+  try {
+    grid = gridOf(positions, indices);
+  } catch {
+    // a mesh without size: its positions as they are
+  }
+  const q = quantize(positions, grid);
+  let hash = 0x811c9dc5; // FNV-1a, 32 bits
+  const mix = (x) => {
+    for (let k = 0; k < 4; k++) {
+      hash ^= (x >>> (8 * k)) & 0xff;
+      hash = Math.imul(hash, 0x01000193);
+    }
+  };
+  for (const x of q) mix(x | 0);
+  for (const i of indices) mix(i);
+  return { triangles: indices.length / 3, vertices: positions.length / 3, hash: (hash >>> 0).toString(16).padStart(8, '0') };
 }
