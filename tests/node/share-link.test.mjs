@@ -255,6 +255,14 @@ test('damaged, truncated and garbage mesh parts give the designer\'s message, ne
   assert.ok(refused > tries.length / 2, `${refused} of ${tries.length} damaged parts refused`);
 });
 
+test('a mesh over 20,000 triangles still travels when its link fits (spot subdivided, 23,424)', async () => {
+  const mesh = subdivide(readMesh('spot.obj'));
+  const fragment = await encodeDesign(typicalDesign('fine spot.obj', mesh.indices.length / 3), mesh);
+  console.log(`spot.obj subdivided: ${mesh.indices.length / 3} triangles, link with the mesh ${fragment.length} characters`);
+  assert.match(fragment, /&mesh=/);
+  assert.ok(fragment.length <= MAX_LINK_CHARS);
+});
+
 test('a mesh too large for a link leaves a link that asks for its file; that file, and only that one, takes the design', async () => {
   const mesh = subdivide(readMesh('hand.obj'));
   const triangles = mesh.indices.length / 3;

@@ -15,6 +15,9 @@ export const TARGET_KEY = 'target';
 export const MAX_LINK_CHARS = 60000; // links longer than this are unreliable in browsers and chat apps
 const MAX_DESIGN_BYTES = 4 * 1024 * 1024;
 const MAX_MESH_BYTES = 16 * 1024 * 1024; // a link's mesh inflates to a few hundred kB at most
+// Real meshes take 1.2 to 2.5 characters per triangle in a link, a perfectly regular torus 0.49: past this
+// none fits, and packing one would hold the page for seconds (4 s for 250,000 triangles).
+const MAX_LINKED_TRIANGLES = 125000;
 
 function tooLarge(length) {
   return new Error(
@@ -30,7 +33,7 @@ async function designPart(design) {
 // "&target=..." when that mesh is too large for a link); throws a designer-facing Error when even the
 // design alone is too long.
 export async function encodeDesign(design, mesh = null) {
-  if (mesh) {
+  if (mesh && mesh.indices.length / 3 <= MAX_LINKED_TRIANGLES) {
     const { bytes, renumbering } = packMesh(mesh);
     const carried = renumbering ? renumberDesign(design, renumbering) : design;
     const fragment = `${await designPart(carried)}&${MESH_KEY}=${toBase64Url(await deflate(bytes))}`;
