@@ -7,8 +7,6 @@
 namespace billow {
 namespace {
 
-constexpr double kFooterMm = 56;  // check square (50 mm) and page label below every tile
-
 std::string num(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f", v);
@@ -24,14 +22,6 @@ std::string rgb(Layer layer, const char* op) {
   return num(r / 255.0) + " " + num(g / 255.0) + " " + num(b / 255.0) + " " + op + "\n";
 }
 
-// Rough Helvetica advance widths (em) for centring labels; exact metrics are not needed for that.
-double textWidth(const std::string& s, double size) {
-  double w = 0;
-  for (unsigned char c : s)
-    w += (c == ' ' || c == 'i' || c == 'l' || c == '.' || c == ',') ? 0.28 : (c >= 'A' && c <= 'Z') ? 0.67 : 0.55;
-  return w * size;
-}
-
 std::string text(double x, double y, double size, const std::string& s) {
   return "BT /F1 " + num(size) + " Tf " + num(x) + " " + num(y) + " Td (" + escapePdfText(s) + ") Tj ET\n";
 }
@@ -44,7 +34,7 @@ std::string pathOps(const DrawnPath& p) {
 }
 
 // The drawing's paths and texts that touch `view`, in sheet millimetres (the caller sets the transform).
-std::string drawingOps(const Drawing& d, const Box2& view, bool labels, double textScale = 1) {
+std::string drawingOps(const Drawing& d, const Box2& view, bool labels) {
   std::string s;
   for (Layer layer : kLayers) {
     if (layer == Layer::Label) continue;
@@ -55,12 +45,9 @@ std::string drawingOps(const Drawing& d, const Box2& view, bool labels, double t
   }
   if (!labels) return s;
   s += rgb(Layer::Label, "rg");
-  for (const DrawnText& t : d.texts) {
-    const double size = t.height * textScale, w = textWidth(t.text, size);
-    Box2 b;
-    b.add(t.at - Vec2(w / 2, 0)), b.add(t.at + Vec2(w / 2, size));
-    if (b.overlaps(view)) s += text(t.at.x() - w / 2, t.at.y(), size, t.text);
-  }
+  for (const DrawnText& t : d.texts)
+    if (pdfTextBox(t).overlaps(view))
+      s += text(t.at.x() - pdfTextWidth(t.text, t.height) / 2, t.at.y(), t.height, t.text);
   return s;
 }
 
@@ -117,54 +104,61 @@ std::string escapePdfText(const std::string& utf8) {
   return out;
 }
 
-PdfTiling pdfTiling(const Drawing& d, const PdfOptions& o) {
-  PdfTiling t;
-  t.pageWidth = o.paper == PaperSize::A4 ? 210.0 : 215.9;
-  t.pageHeight = o.paper == PaperSize::A4 ? 297.0 : 279.4;
-  t.contentWidth = t.pageWidth - 2 * o.margin;
-  t.contentHeight = t.pageHeight - 2 * o.margin - kFooterMm;
-  const double overlap = std::clamp(o.overlap, 0.0, 0.5 * std::min(t.contentWidth, t.contentHeight));
-  t.stepX = t.contentWidth - overlap;
-  t.stepY = t.contentHeight - overlap;
-  t.columns = std::max(1, int(std::ceil((d.width - overlap) / t.stepX - 1e-9)));
-  t.rows = std::max(1, int(std::ceil((d.length - overlap) / t.stepY - 1e-9)));
-  t.height = (t.rows - 1) * t.stepY + t.contentHeight;
-  return t;
-}
+PdfTiling pdfTiling(const Drawing& d, const PdfOptions& o) { return pdfTiling(d, o.paper, o.overlap, o.margin); }
 
 std::string writePdf(const Drawing& d, const PdfOptions& o) {
   const PdfTiling t = pdfTiling(d, o);
-  const double k = kPointsPerMm, m = o.margin, overlap = t.contentWidth - t.stepX;
+  const double k = kPointsPerMm, m = o.margin, overlap = t.overlap;
   const int pages = t.pageCount();
   std::vector<std::string> streams, labels;
 
   // Page 1: the overview, scaled to fit above the footer.
   {
-    const double titleSpace = 14 + 5 * double(o.summary.size());
-    const double availH = t.pageHeight - 2 * m - kFooterMm - titleSpace;
+    std::vector<std::string> summary = o.summary;
+    if (t.skippedTiles() > 0)
+      summary.push_back(std::to_string(t.skippedTiles()) + " of " + std::to_string(t.tiles()) +
+                        " tiles have nothing to cut and are not printed; they are crossed out on the grid.");
+    const double titleSpace = 14 + 5 * double(summary.size());
+    const double availH = t.pageHeight - 2 * m - kPdfFooterMm - titleSpace;
     // Fit the tile grid (which reaches past the sheet), not just the sheet.
     const double gridW = (t.columns - 1) * t.stepX + t.contentWidth;
     const double scale = std::min(t.contentWidth / gridW, availH / t.height);
-    const double ox = m + (t.contentWidth - scale * gridW) / 2, oy = m + kFooterMm;
+    const double ox = m + (t.contentWidth - scale * gridW) / 2, oy = m + kPdfFooterMm;
     std::string s = "q " + num(k * scale) + " 0 0 " + num(k * scale) + " " + num(k * ox) + " " + num(k * oy) + " cm\n";
     Box2 all;
     all.add({-1e9, -1e9}), all.add({1e9, 1e9});
     s += "0.6 0.6 0.6 RG " + num(0.5 / scale) + " w 0 0 " + num(d.width) + " " + num(d.length) + " re S\n";
-    s += drawingOps(d, all, true, 1);
-    // The tile grid with each tile's row and column, so a maker knows where each page goes.
-    s += "0.2 0.6 0.2 RG 0.2 0.6 0.2 rg " + num(0.3 / scale) + " w [] 0 d\n";
+    auto tileRect = [&](int r, int c) {
+      const Box2 b = t.tileBox(r, c);
+      return num(b.lo.x()) + " " + num(b.lo.y()) + " " + num(t.contentWidth) + " " + num(t.contentHeight) + " re";
+    };
+    s += "0.92 0.92 0.92 rg\n";  // skipped tiles shaded under the drawing, which may reach into their strips
     for (int r = 0; r < t.rows; ++r)
-      for (int c = 0; c < t.columns; ++c) {
-        const double x0 = c * t.stepX, y0 = t.height - r * t.stepY - t.contentHeight;
-        s += num(x0) + " " + num(y0) + " " + num(t.contentWidth) + " " + num(t.contentHeight) + " re S\n";
-        const std::string lab = std::to_string(r + 1) + "," + std::to_string(c + 1);
-        const double size = std::min(0.15 * t.contentWidth, 4 / scale);
-        s += text(x0 + 0.5 * t.contentWidth - textWidth(lab, size) / 2, y0 + 0.5 * t.contentHeight, size, lab);
-      }
+      for (int c = 0; c < t.columns; ++c)
+        if (!t.isPrinted(r, c)) s += tileRect(r, c) + " f\n";
+    s += drawingOps(d, all, true);
+    // The tile grid with each tile's row and column, so a maker knows where each page goes; skipped tiles
+    // are grey and crossed out, drawn first so that the printed tiles' edges stay green where they overlap.
+    s += num(0.3 / scale) + " w [] 0 d\n";
+    for (bool printed : {false, true})
+      for (int r = 0; r < t.rows; ++r)
+        for (int c = 0; c < t.columns; ++c) {
+          if (t.isPrinted(r, c) != printed) continue;
+          const Box2 b = t.tileBox(r, c);
+          s += printed ? "0.2 0.6 0.2 RG 0.2 0.6 0.2 rg\n" : "0.6 0.6 0.6 RG 0.6 0.6 0.6 rg\n";
+          s += tileRect(r, c) + " S\n";
+          if (!printed)
+            s += num(b.lo.x()) + " " + num(b.lo.y()) + " m " + num(b.hi.x()) + " " + num(b.hi.y()) + " l " +
+                 num(b.lo.x()) + " " + num(b.hi.y()) + " m " + num(b.hi.x()) + " " + num(b.lo.y()) + " l S\n";
+          const std::string lab = std::to_string(r + 1) + "," + std::to_string(c + 1);
+          const double size = std::min(0.15 * t.contentWidth, 4 / scale);
+          s += text(b.lo.x() + 0.5 * t.contentWidth - pdfTextWidth(lab, size) / 2, b.lo.y() + 0.5 * t.contentHeight,
+                    size, lab);
+        }
     s += "Q\nq 0 0 0 rg\n";
     double y = t.pageHeight - m - 6;
     s += text(k * m, k * y, 14, o.title + " - overview (not to scale)");
-    for (const std::string& line : o.summary) y -= 5, s += text(k * m, k * y, 8, line);
+    for (const std::string& line : summary) y -= 5, s += text(k * m, k * y, 8, line);
     s += "Q\n";
     streams.push_back(s + footer(o, "overview", 1, pages));
     labels.push_back("overview");
@@ -172,12 +166,12 @@ std::string writePdf(const Drawing& d, const PdfOptions& o) {
   // Tiles at true scale: sheet millimetres -> page points with the tile's origin at the content box.
   for (int r = 0; r < t.rows; ++r)
     for (int c = 0; c < t.columns; ++c) {
-      const double x0 = c * t.stepX, y0 = t.height - r * t.stepY - t.contentHeight;
-      Box2 view;
-      view.add({x0, y0}), view.add({x0 + t.contentWidth, y0 + t.contentHeight});
-      std::string s = "q " + num(k * m) + " " + num(k * (m + kFooterMm)) + " " + num(k * t.contentWidth) + " " +
+      if (!t.isPrinted(r, c)) continue;
+      const Box2 view = t.tileBox(r, c);
+      const double x0 = view.lo.x(), y0 = view.lo.y();
+      std::string s = "q " + num(k * m) + " " + num(k * (m + kPdfFooterMm)) + " " + num(k * t.contentWidth) + " " +
                       num(k * t.contentHeight) + " re W n\n";
-      s += num(k) + " 0 0 " + num(k) + " " + num(k * (m - x0)) + " " + num(k * (m + kFooterMm - y0)) + " cm\n";
+      s += num(k) + " 0 0 " + num(k) + " " + num(k * (m - x0)) + " " + num(k * (m + kPdfFooterMm - y0)) + " cm\n";
       s += drawingOps(d, view, true);
       // Alignment crosshairs in the middle of the overlap strips; each appears on every tile that shares it.
       s += "0 0 0 RG 0.2 w [] 0 d\n";

@@ -1,5 +1,6 @@
 // Printable PDF 1.4 (written by hand, no library): page 1 is an overview of the whole sheet scaled to fit,
-// with the tile grid; then the sheet at true scale in tiles of A4 or US Letter, row by row from the top.
+// with the tile grid; then the sheet at true scale in tiles of A4 or US Letter, row by row from the top,
+// leaving out the tiles with nothing to cut (pdf_tiling.hpp), which the overview crosses out and counts.
 // Neighbouring tiles share `overlap` mm; crosshair alignment marks sit in the middle of each overlap strip at
 // the tile corners. Every page carries a 50 mm check square (drawn in points, outside any scaling) with its
 // label, and its page label ("row 2, column 3"), also set as the PDF's /PageLabels.
@@ -9,6 +10,7 @@
 
 #include "export/drawing.hpp"
 #include "export/export_options.hpp"
+#include "export/pdf_tiling.hpp"
 
 namespace billow {
 
@@ -21,14 +23,7 @@ struct PdfOptions {
   std::vector<std::string> summary;  // lines printed on the overview
 };
 
-struct PdfTiling {
-  double pageWidth = 0, pageHeight = 0;        // [mm]
-  double contentWidth = 0, contentHeight = 0;  // [mm] sheet area shown per tile
-  double stepX = 0, stepY = 0;                 // content minus overlap
-  int rows = 1, columns = 1;
-  double height = 0;  // [mm] sheet height the rows cover (>= drawing length); row 0 is the top
-  int pageCount() const { return 1 + rows * columns; }
-};
+// The tiles of `drawing` for these options (pdf_tiling.hpp).
 PdfTiling pdfTiling(const Drawing& drawing, const PdfOptions& options);
 
 constexpr double kPointsPerMm = 72.0 / 25.4;
