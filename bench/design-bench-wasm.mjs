@@ -72,13 +72,14 @@ function run(entry) {
     iterations: last.iteration ?? 0, patternSeconds, previewIteration: preview?.iteration ?? -1, previewSeconds: preview?.seconds ?? 0,
     seconds, state: last.state ?? 'time limit', message: last.message ?? '',
     flattenedDistanceRms: last.flattenedDistanceRms ?? null, distanceRms: last.distance.rms, distanceMax: last.distance.max,
+    targetDistanceRms: last.distance.targetRms, targetDistanceMax: last.distance.targetMax,
     seamMismatch: last.seamMismatch, heapMb: api.memoryStats().heapBytes / 2 ** 20,
   };
 }
 
 const rows = [];
 if (!asJson)
-  console.log(['design', 'class', 'elems', 'panels', 'iters', 'pattern s', 'preview s', 'full s', 'rms %', 'max %', 'seam', 'heap MB', 'state'].map((h, i) => (i < 2 ? h.padEnd(9) : h.padStart(9))).join(' '));
+  console.log(['design', 'class', 'elems', 'panels', 'iters', 'pattern s', 'preview s', 'full s', 'rms %', 'max %', 'tgt %', 'seam', 'heap MB', 'state'].map((h, i) => (i < 2 ? h.padEnd(9) : h.padStart(9))).join(' '));
 for (const entry of manifest.designs) {
   if (only.length && !only.includes(entry.name)) continue;
   let row;
@@ -97,7 +98,7 @@ for (const entry of manifest.designs) {
     row.design.padEnd(9), row.class.padEnd(9), String(row.elements).padStart(9), `${row.panels} (${row.internalPanels})`.padStart(9),
     String(row.iterations).padStart(9), row.patternSeconds.toFixed(2).padStart(9), row.previewSeconds.toFixed(2).padStart(9),
     row.seconds.toFixed(2).padStart(9), (100 * row.distanceRms).toFixed(3).padStart(9), (100 * row.distanceMax).toFixed(3).padStart(9),
-    (row.seamMismatch ?? 0).toExponential(1).padStart(9), row.heapMb.toFixed(0).padStart(9), row.state,
+    (100 * row.targetDistanceRms).toFixed(3).padStart(9), (row.seamMismatch ?? 0).toExponential(1).padStart(9), row.heapMb.toFixed(0).padStart(9), row.state,
   ].join(' '));
 }
 if (asJson) console.log(JSON.stringify({ runtime: 'wasm (node)', rows }, null, 2));

@@ -12,6 +12,7 @@
 
 #include "cli/commands.hpp"
 #include "export/export.hpp"
+#include "io/distance_json.hpp"
 #include "io/export_options_json.hpp"
 #include "io/obj_writer.hpp"
 #include "io/pattern_json.hpp"
@@ -40,11 +41,10 @@ std::string objText(const SewnMesh& mesh, const Vertices& x) {
   return writeObj(x, outerTriangles(mesh), "billow inflated shape (outer surface, meters)");
 }
 
-// Distance of the outer surface's simulation vertices to the target surface (the inside of internal
-// panels is not meant to lie on it), relative to the target's bounding-box diagonal.
-DistanceSummary distanceToTarget(const DesignScene& scene, const SewnMesh& mesh, const Vertices& x) {
-  const double diag = (scene.target.V.colwise().maxCoeff() - scene.target.V.colwise().minCoeff()).norm();
-  return summarizeDistances(signedDistances(scene.target, *scene.projector, x), outerTriangles(mesh), diag);
+// The outer surface against the target both ways (the inside of internal panels is not meant to lie on it),
+// relative to the target's bounding-box diagonal.
+TwoWayDistance distanceToTarget(const DesignScene& scene, const SewnMesh& mesh, const Vertices& x) {
+  return measureDistance(scene.target, *scene.projector, x, outerTriangles(mesh));
 }
 
 int positiveInt(const Args& args, const std::string& name, int fallback) {
@@ -151,8 +151,10 @@ int designCommand(const std::vector<std::string>& argv) {
     while (optimizer.step(5, 1000) == OptimizeState::Running)
       if (!quiet && !optimizer.history().empty()) {
         const OptimizeRecord& h = optimizer.history().back();
-        std::fprintf(stderr, "  optimize: iteration %3d  distance rms %.3f %%  max %.3f %%  seam mismatch %.1e\n",
-                     h.iteration, 100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch);
+        std::fprintf(stderr,
+                     "  optimize: iteration %3d  distance rms: target to inflated %.3f %%, inflated to target %.3f %%  "
+                     "seam mismatch %.1e\n",
+                     h.iteration, 100 * h.targetDistanceRms, 100 * h.distanceRms, h.seamMismatch);
       }
     optimizeMs = msSince(t1);
     optimizeState = toString(optimizer.state());
@@ -165,6 +167,8 @@ int designCommand(const std::vector<std::string>& argv) {
                          {"objective", h.objective},
                          {"distance_rms", h.distanceRms},
                          {"distance_max", h.distanceMax},
+                         {"target_distance_rms", h.targetDistanceRms},
+                         {"target_distance_max", h.targetDistanceMax},
                          {"seam_mismatch", h.seamMismatch},
                          {"gradient", h.gradient},
                          {"projected", h.projected},
@@ -207,7 +211,7 @@ int designCommand(const std::vector<std::string>& argv) {
                    solver.residual(), solver.volume());
   const InflateResult r = solver.result();
   writeTextFile(dir + "/inflated.obj", objText(mesh, r.positions));
-  const DistanceSummary d = distanceToTarget(*scene, mesh, r.positions);
+  const TwoWayDistance d = distanceToTarget(*scene, mesh, r.positions);
 
   const json report = {
       {"format", "billow-design-report"},
@@ -223,7 +227,7 @@ int designCommand(const std::vector<std::string>& argv) {
       {"internal_panels", bp.figures.internalPanels},
       {"triangles", bp.figures.triangles},
       {"edge_length", bp.figures.edgeLength},
-      {"distance_to_target", {{"rms", d.rms}, {"max", d.max}, {"relative_to", "bounding-box diagonal"}}},
+      {"distance_to_target", distanceReportJson(d)},
       {"seam_length_mismatch", {{"max_piece", bp.figures.maxSeamLengthMismatch}, {"max_edge", edgeMismatch}}},
       {"inflate",
        {{"state", toString(r.state)},
@@ -246,8 +250,12 @@ int designCommand(const std::vector<std::string>& argv) {
       {"cut_file", {{"written", cutFileProblem.empty()}, {"message", cutFileProblem}}}};
   writeTextFile(dir + "/report.json", report.dump(2) + "\n");
   std::fprintf(stderr,
-               "%s after %d iterations; distance to target: rms %.2f %%, max %.2f %% of the diagonal (%.0f ms)\n",
-               r.converged ? "settled" : "did not settle", r.iterations, 100 * d.rms, 100 * d.max, msSince(t0));
+               "%s after %d iterations; distance to target, rms (max) %% of the diagonal: target to inflated %.2f "
+               "(%.2f), inflated to target %.2f (%.2f) (%.0f ms)\n",
+               r.converged ? "settled" : "did not settle", r.iterations, 100 * d.targetToInflated.summary.rms,
+               100 * d.targetToInflated.summary.max, 100 * d.inflatedToTarget.rms, 100 * d.inflatedToTarget.max,
+               msSince(t0));
+  for (const UncoveredRegion& u : d.uncovered) std::fprintf(stderr, "billow design: %s\n", uncoveredMessage(u).c_str());
   if (!r.converged) {
     std::fprintf(stderr, "billow design: %s\n", r.message.c_str());
     return 1;

@@ -8,6 +8,7 @@
 #include "optimize/rigid_align.hpp"
 #include "optimize/seam_projection.hpp"
 #include "pattern/remesh_pattern.hpp"
+#include "seams/surface_distance.hpp"
 #include "simulate/initial_shape.hpp"
 #include "simulate/smoothing.hpp"
 #include "util/error.hpp"
@@ -223,6 +224,8 @@ CutPanelsCheck PatternOptimizer::checkCutPanels(double h) const {
       out.ok = true;
       out.distanceRms = check.history().back().distanceRms;
       out.distanceMax = check.history().back().distanceMax;
+      out.targetDistanceRms = check.history().back().targetDistanceRms;
+      out.targetDistanceMax = check.history().back().targetDistanceMax;
     }
   } catch (const Error& e) {
     out.message = e.what();
@@ -370,6 +373,8 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
     r.distanceRms += d * d, r.distanceMax = std::max(r.distanceMax, d), ++count;
   }
   r.distanceRms = count ? std::sqrt(r.distanceRms / count) : 0;
+  const DistanceSummary coverage = targetCoverage(imls_->target(), x_, outerTriangles(mesh_), D).summary;
+  r.targetDistanceRms = coverage.rms, r.targetDistanceMax = coverage.max;
   r.seamMismatch = objective_->maxEdgeMismatch(X_);
   const double norm = double(objective_->numVertices()) * D;
   // With every trial projected onto equal seam lengths the constraint is hard, and stationarity is that of the
@@ -591,7 +596,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       }
       if (S_.empty()) {  // not even a short steepest-descent step helps: a (numerical) minimum
         if (iteration_ == 0)
-          finish(OptimizeState::Stopped, "no change of the panels brings the inflated shape closer to the target");
+          finish(OptimizeState::Converged, "no change of the panels brings the inflated shape closer to the target");
         else if (refine())
           continue;
         else

@@ -138,6 +138,7 @@ bool hasSlidingSeams(const OptimizeOptions& options, const std::vector<double>& 
 OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector<double>& seamWeights, double h,
                                double D);
 
+// Stopped: at the iteration or time limit, before the optimizer settled.
 enum class OptimizeState { Running, Converged, Stopped, Failed };
 const char* toString(OptimizeState s);
 
@@ -147,6 +148,7 @@ struct CutPanelsCheck {
   bool ok = false;
   std::string message;                      // why not, when !ok
   double distanceRms = 0, distanceMax = 0;  // as OptimizeRecord's, of the outlines meshed anew and inflated
+  double targetDistanceRms = 0, targetDistanceMax = 0;
   int elements = 0;
   double ms = 0;
 };
@@ -156,10 +158,12 @@ struct OptimizeRecord {
   ObjectiveTerms terms;
   double objective = 0;
   double distanceRms = 0, distanceMax = 0;  // closest-point distance of outer vertices / bbox diagonal
-  double seamMismatch = 0;                  // max relative stitched-edge length difference
-  double gradient = 0;    // scaled ||dE/dX||_inf (see gradientTolerance); its part tangent to equal seam lengths
-                          // (the Lagrangian's) while every trial is projected onto them
-  double stepLength = 0;  // line-search alpha
+  // The other way: of the target's vertices to the outer surface (targetCoverage), which sees what is left out.
+  double targetDistanceRms = 0, targetDistanceMax = 0;
+  double seamMismatch = 0;  // max relative stitched-edge length difference
+  double gradient = 0;      // scaled ||dE/dX||_inf (see gradientTolerance); its part tangent to equal seam lengths
+                            // (the Lagrangian's) while every trial is projected onto them
+  double stepLength = 0;    // line-search alpha
   int equilibriumIterations = 0;  // Newton iterations of the accepted solve
   double ms = 0;                  // since the optimizer was made
   bool projected = false;         // the final seam-length projection (not an L-BFGS step)

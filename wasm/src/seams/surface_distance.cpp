@@ -2,7 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <numeric>
 #include <vector>
+
+#include "mesh/location.hpp"
+#include "util/union_find.hpp"
 
 namespace billow {
 
@@ -34,6 +39,117 @@ DistanceSummary summarizeDistances(const Eigen::VectorXd& distances, const Trian
   s.rms = n ? std::sqrt(s.rms / n) / diagonal : 0;
   s.max /= diagonal;
   return s;
+}
+
+namespace {
+
+double triangleArea(const TriMesh& m, int f) {
+  const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+  return 0.5 * (b - a).cross(c - a).norm();
+}
+
+}  // namespace
+
+TargetCoverage targetCoverage(const TriMesh& target, const Vertices& points, const Triangles& surface,
+                              double diagonal) {
+  TargetCoverage c;
+  c.distances = Eigen::VectorXd::Zero(target.numVertices());
+  if (surface.rows() == 0 || target.numVertices() == 0) return c;
+  const TriMesh shape{points, surface};
+  const SurfaceProjector projector(shape);
+  for (int v = 0; v < target.numVertices(); ++v) projector.project(target.V.row(v).transpose(), &c.distances[v]);
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(target.numVertices());
+  for (int f = 0; f < target.numTriangles(); ++f)
+    for (int k = 0; k < 3; ++k) area[target.F(f, k)] += triangleArea(target, f) / 3;
+  const double total = area.sum();
+  if (total > 0) c.summary.rms = std::sqrt(area.dot(c.distances.cwiseAbs2()) / total) / diagonal;
+  c.summary.max = c.distances.maxCoeff() / diagonal;
+  return c;
+}
+
+std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen::VectorXd& distances, double diagonal,
+                                              double threshold, double minAreaFraction) {
+  const int nf = target.numTriangles();
+  const double limit = threshold * diagonal;
+  std::vector<char> far(nf, 0);
+  for (int f = 0; f < nf; ++f)
+    far[f] =
+        distances[target.F(f, 0)] > limit && distances[target.F(f, 1)] > limit && distances[target.F(f, 2)] > limit;
+  // Far triangles sharing a vertex belong together (edges would split a region along a thin waist).
+  UnionFind groups(target.numVertices());
+  for (int f = 0; f < nf; ++f)
+    if (far[f]) groups.unite(target.F(f, 0), target.F(f, 1)), groups.unite(target.F(f, 0), target.F(f, 2));
+  double total = 0;
+  std::vector<double> area(target.numVertices(), 0.0);
+  for (int f = 0; f < nf; ++f) {
+    const double a = triangleArea(target, f);
+    total += a;
+    if (far[f]) area[groups.find(target.F(f, 0))] += a;
+  }
+  const Eigen::Vector3d lo = target.V.colwise().minCoeff().transpose(), hi = target.V.colwise().maxCoeff().transpose();
+  std::vector<UncoveredRegion> regions;
+  std::vector<int> regionOf(target.numVertices(), -1);
+  for (int f = 0; f < nf; ++f) {
+    if (!far[f]) continue;
+    const int root = groups.find(target.F(f, 0));
+    if (!(area[root] >= minAreaFraction * total)) continue;
+    if (regionOf[root] < 0) {
+      regionOf[root] = int(regions.size());
+      regions.emplace_back().areaFraction = area[root] / total;
+      regions.back().maxDistance = -1;
+    }
+    UncoveredRegion& r = regions[regionOf[root]];
+    for (int k = 0; k < 3; ++k) {
+      const int v = target.F(f, k);
+      if (distances[v] > r.maxDistance) r.maxDistance = distances[v], r.farthest = target.V.row(v).transpose();
+    }
+  }
+  // The ball about the farthest vertex that holds each region, for a view to frame it.
+  for (int f = 0; f < nf; ++f) {
+    if (!far[f]) continue;
+    const int i = regionOf[groups.find(target.F(f, 0))];
+    if (i < 0) continue;
+    for (int k = 0; k < 3; ++k)
+      regions[i].radius =
+          std::max(regions[i].radius, (target.V.row(target.F(f, k)).transpose() - regions[i].farthest).norm());
+  }
+  for (UncoveredRegion& r : regions) r.maxDistance /= diagonal, r.where = describeLocation(r.farthest, lo, hi);
+  std::sort(regions.begin(), regions.end(),
+            [](const UncoveredRegion& a, const UncoveredRegion& b) { return a.areaFraction > b.areaFraction; });
+  return regions;
+}
+
+std::string uncoveredMessage(const UncoveredRegion& r) {
+  const auto percent = [](double f) {
+    char buf[32];
+    std::snprintf(buf, sizeof buf, "%.1f %%", 100 * f);
+    return std::string(buf);
+  };
+  // Much of the target missed is no part left out but panels that cannot take its shape.
+  if (r.areaFraction > 0.3)
+    return "The inflated shape falls short of much of the target: " + percent(r.areaFraction) +
+           " of its surface lies up to " + percent(r.maxDistance) + " of its size away, farthest " + r.where +
+           ". More seams let the panels follow its shape.";
+  return "The inflated shape leaves out part of the target " + r.where + ": " + percent(r.areaFraction) +
+         " of its surface, up to " + percent(r.maxDistance) +
+         " of its size away. A seam around that part, or a panel of its own, lets the balloon reach it.";
+}
+
+DistanceSummary TwoWayDistance::worse() const {
+  return {std::max(inflatedToTarget.rms, targetToInflated.summary.rms),
+          std::max(inflatedToTarget.max, targetToInflated.summary.max)};
+}
+
+TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points,
+                               const Triangles& surface) {
+  TwoWayDistance d;
+  d.diagonal = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
+  d.signedDistances = signedDistances(target, projector, points);
+  d.inflatedToTarget = summarizeDistances(d.signedDistances, surface, d.diagonal);
+  if (surface.rows() == 0) return d;
+  d.targetToInflated = targetCoverage(target, points, surface, d.diagonal);
+  d.uncovered = uncoveredRegions(target, d.targetToInflated.distances, d.diagonal);
+  return d;
 }
 
 }  // namespace billow

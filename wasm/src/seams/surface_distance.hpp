@@ -2,6 +2,8 @@
 // inflated shape: positive outside the target (the shape bulges), negative inside (it falls short).
 #pragma once
 #include <Eigen/Core>
+#include <string>
+#include <vector>
 
 #include "mesh/tri_mesh.hpp"
 #include "seams/surface_point.hpp"
@@ -21,5 +23,53 @@ struct DistanceSummary {
 // rows: the outer surface of an inflated shape, since internal panels are not meant to lie on the target),
 // divided by `diagonal` (the target's bounding-box diagonal).
 DistanceSummary summarizeDistances(const Eigen::VectorXd& distances, const Triangles& surface, double diagonal);
+
+// The other way round: how far each target vertex lies from a shape's surface. Measured one way only, a shape
+// that leaves out a whole wing reads close, since every point it has lies on the target.
+struct TargetCoverage {
+  Eigen::VectorXd distances;  // per target vertex, unsigned, in the target's units
+  DistanceSummary summary;    // RMS weighted by the vertices' areas (so the figure does not follow the meshing), max
+};
+
+// Distances from the target's vertices to the triangles `surface` of `points` (all in the target's units).
+TargetCoverage targetCoverage(const TriMesh& target, const Vertices& points, const Triangles& surface, double diagonal);
+
+// A part of the target the shape leaves out: target triangles whose corners all lie farther than a threshold
+// from the shape, joined across shared edges.
+struct UncoveredRegion {
+  double areaFraction = 0;                             // of the target's area
+  double maxDistance = 0;                              // over the diagonal
+  Eigen::Vector3d farthest = Eigen::Vector3d::Zero();  // its vertex farthest from the shape (target units)
+  double radius = 0;                                   // of the ball about `farthest` holding the region (target units)
+  std::string where;                                   // "near the top left of the shape"
+};
+
+// What a designer reads about a region: where, how much, and what helps.
+std::string uncoveredMessage(const UncoveredRegion& region);
+
+// What counts as left out: farther than 3 % of the diagonal (the distance colours' full scale, well beyond what a
+// good design misses), over at least 1 % of the target's area.
+constexpr double kUncoveredDistance = 0.03, kUncoveredArea = 0.01;
+
+// The parts of the target farther than `threshold` (a fraction of the diagonal) from the shape, largest first,
+// those smaller than `minAreaFraction` of the target's area left out. distances: TargetCoverage's.
+std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen::VectorXd& distances, double diagonal,
+                                              double threshold = kUncoveredDistance,
+                                              double minAreaFraction = kUncoveredArea);
+
+// A shape against its target both ways, as every figure of the app, the CLI and the bench reads it.
+struct TwoWayDistance {
+  Eigen::VectorXd signedDistances;   // per point of the shape (signedDistances), target units
+  DistanceSummary inflatedToTarget;  // over the corners of the surface
+  TargetCoverage targetToInflated;   // empty when there is no surface
+  std::vector<UncoveredRegion> uncovered;
+  double diagonal = 0;  // of the target's box, target units
+  // The worse way, which leads wherever one figure is shown.
+  DistanceSummary worse() const;
+};
+
+// points: the shape in the target's units; surface: its outer triangles (none: one way only, over every point).
+TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points,
+                               const Triangles& surface);
 
 }  // namespace billow
