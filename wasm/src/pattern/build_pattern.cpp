@@ -36,18 +36,11 @@ namespace {
 using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
-Eigen::Vector3d segmentCentre(const Segmentation& seg, int s) {
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
-  for (int t : seg.segments[s].triangles)
-    for (int k = 0; k < 3; ++k) c += seg.mesh.V.row(seg.mesh.F(t, k)).transpose() / 3.0;
-  return seg.segments[s].triangles.empty() ? c : c / static_cast<double>(seg.segments[s].triangles.size());
-}
-
 void addProblem(BuiltPattern& out, const Segmentation& seg, int s, const std::string& code, const std::string& severity,
                 const std::string& message) {
   SegmentationProblem p;
   p.code = code, p.severity = severity, p.message = message, p.segment = s;
-  p.location = segmentCentre(seg, s);
+  p.location = seg.segments[s].labelPoint;
   out.problems.push_back(p);
 }
 
@@ -207,7 +200,7 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
     }
     flatPanel[f] = static_cast<int>(out.panels.size());
     out.segmentPanel[flats[f].segment] = flatPanel[f];
-    panel.name = "Panel " + std::to_string(out.panels.size() + 1);
+    panel.name = "Panel " + std::to_string(flats[f].segment + 1);  // the number of its segment on the model
     panel.internal = false;
     out.pattern.inflated.push_back(built.targetPosition);
     out.pattern.panels.push_back(std::move(panel));
@@ -223,7 +216,7 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
         pp.neighborPiece = it->second.second;
       } else {
         addProblem(out, seg, flats[f].segment, "pattern.open-seam", "warning",
-                   "A seam of panel " + std::to_string(flatPanel[f] + 1) +
+                   "A seam of panel " + std::to_string(flats[f].segment + 1) +
                        " has no panel on its other side, so it stays open.");
       }
     }

@@ -47,31 +47,33 @@ std::string plural(int n, const std::string& word) { return std::to_string(n) + 
 
 void segmentProblems(const Box& box, double totalArea, const SegmentationOptions& options, Segmentation& out) {
   for (int s = 0; s < static_cast<int>(out.segments.size()); ++s) {
-    const Segment& seg = out.segments[s];
+    Segment& seg = out.segments[s];
+    seg.labelPoint = segmentPoint(out.mesh, seg);
     SegmentationProblem p;
-    p.segment = s, p.location = segmentPoint(out.mesh, seg);
-    const std::string where = box.where(p.location);
+    p.segment = s, p.location = seg.labelPoint;
+    // "Segment 3, near the top left of the shape,": the number the model shows, and where it is.
+    const std::string where = std::to_string(s + 1) + ", " + box.where(p.location) + ",";
     const int loops = static_cast<int>(seg.loops.size());
     if (!seg.isDisk) {
       p.code = "segment.not-disk", p.severity = "error";
       if (loops == 0)
-        p.message = "The segment " + where +
+        p.message = "Segment " + where +
                     " has no seam around it yet: draw a closed seam to cut the shape into "
                     "panels.";
       else if (seg.genus > 0)
-        p.message = "The segment " + where + " wraps around a handle: add a seam across it so it can be cut open.";
+        p.message = "Segment " + where + " wraps around a handle: add a seam across it so it can be cut open.";
       else if (loops == 2)
-        p.message = "The segment " + where +
+        p.message = "Segment " + where +
                     " wraps around a limb like a tube: add a seam along it so it can be "
                     "cut open.";
       else
-        p.message = "The segment " + where + " has " + plural(loops - 1, "hole") +
+        p.message = "Segment " + where + " has " + plural(loops - 1, "hole") +
                     ": connect its inner seams to its outer seam so it can be flattened.";
       out.problems.push_back(p);
     }
     if (seg.area < options.minSegmentAreaRatio * totalArea) {
       p.code = "segment.sliver", p.severity = "warning";
-      p.message = "The segment " + where + " is tiny: move its seams apart or remove one of them.";
+      p.message = "Segment " + where + " is tiny: move its seams apart or remove one of them.";
       out.problems.push_back(p);
     }
   }
@@ -90,7 +92,7 @@ void seamProblems(const Box& box, const CutMesh& cut, Segmentation& out) {
     if (seam < 0 || !reported.insert(seam).second) continue;  // TODO: stray degree-1 seam vertices (see report)
     SegmentationProblem p;
     p.code = "seam.dangling", p.severity = "warning", p.seam = seam, p.location = j.position;
-    p.message = "A seam ends in the middle of a segment " + box.where(j.position) +
+    p.message = "Seam " + std::to_string(seam + 1) + " ends in the middle of a segment " + box.where(j.position) +
                 "; it will be cut as a slit. Extend it to another seam to close the region.";
     out.problems.push_back(p);
   }
@@ -99,7 +101,8 @@ void seamProblems(const Box& box, const CutMesh& cut, Segmentation& out) {
     if (!crossed.insert(c.seam).second) continue;
     SegmentationProblem p;
     p.code = "seam.self-crossing", p.severity = "warning", p.seam = c.seam, p.location = c.position;
-    p.message = "A seam crosses itself " + box.where(c.position) + ": move its points so it does not loop over itself.";
+    p.message = "Seam " + std::to_string(c.seam + 1) + " crosses itself " + box.where(c.position) +
+                ": move its points so it does not loop over itself.";
     out.problems.push_back(p);
   }
   if (cut.unrecoveredPieces > 0) {

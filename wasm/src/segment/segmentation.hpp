@@ -27,6 +27,9 @@ struct Segment {
   int genus = 0;
   bool isDisk = false;  // eulerCharacteristic == 1 with one boundary loop
   std::vector<BoundaryLoop> loops;
+  // Where the segment is shown and named ("Segment 3" on the model; its problems are located there): the
+  // centroid of the triangle nearest the segment's centroid, so it lies on the surface.
+  Eigen::Vector3d labelPoint = Eigen::Vector3d::Zero();
 };
 
 struct SeamJunction {
