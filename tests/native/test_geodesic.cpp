@@ -9,6 +9,7 @@
 #include "seams/geodesic.hpp"
 #include "seams/seam_curve.hpp"
 #include "seams/surface_distance.hpp"
+#include "segment/segmentation.hpp"
 #include "test_support.hpp"
 
 using namespace billow;
@@ -233,4 +234,41 @@ TEST(SeamCurve, SmoothSeamFollowsTheCircleThroughItsPointsWhereGeodesicsCutCorne
   EXPECT_LT(smoothError, 0.03);
   EXPECT_NEAR(smooth.length, circle, 0.02 * circle);
   EXPECT_LT(plain.length, smooth.length) << "the geodesic hexagon is shorter than the circle";
+}
+
+TEST(SeamCurve, SmoothSpansThatWouldCrossTheSeamFallBackToTheSurfacePath) {
+  // A square loop with a deep, narrow notch: the spline through the notch's three points overshoots, and its
+  // two sides crossed each other (a self-crossing seam and sliver segments). Those spans keep the surface
+  // path; the square's sides stay smooth.
+  const TriMesh m = test::loadShared("sphere.obj");
+  const MeshTopology topo = buildTopology(m);
+  const SurfaceProjector projector(m);
+  const GeodesicSolver solver(m, topo);
+  SeamSpec spec;
+  spec.closed = true;
+  const double uv[7][2] = {{-0.5, -0.5}, {0.5, -0.5}, {0.5, 0.5}, {0.03, 0.5}, {0, 0}, {-0.03, 0.5}, {-0.5, 0.5}};
+  for (const auto& p : uv) spec.controls.push_back(projector.project(Eigen::Vector3d(p[0], p[1], 1).normalized()));
+  spec.smooth = false;
+  const SeamCurve plain = buildSeamCurve(solver, projector, spec);
+  spec.smooth = true;
+  const SeamCurve smooth = buildSeamCurve(solver, projector, spec);
+  for (const SeamCurve* c : {&plain, &smooth}) {
+    const Segmentation s = segmentTarget(m, topo, {*c});
+    int crossings = 0;
+    for (const SegmentationProblem& p : s.problems) crossings += p.code == "seam.self-crossing";
+    EXPECT_EQ(crossings, 0) << (c == &plain ? "plain" : "smooth");
+    EXPECT_EQ(s.segments.size(), 2u);
+    EXPECT_TRUE(s.ok());
+  }
+  ASSERT_EQ(smooth.controlIndices.size(), 7u);
+  // The notch's spans are the plain ones; a side of the square is not.
+  const auto spanLength = [](const SeamCurve& c, int k) {
+    const int end = k + 1 < int(c.controlIndices.size()) ? c.controlIndices[k + 1] : int(c.points.size()) - 1;
+    double length = 0;
+    for (int i = c.controlIndices[k]; i < end; ++i) length += (c.points[i + 1].position - c.points[i].position).norm();
+    return length;
+  };
+  EXPECT_NEAR(spanLength(smooth, 3), spanLength(plain, 3), 1e-12);
+  EXPECT_NEAR(spanLength(smooth, 4), spanLength(plain, 4), 1e-12);
+  EXPECT_GT(std::abs(spanLength(smooth, 0) - spanLength(plain, 0)), 1e-4) << "the square's sides stay smoothed";
 }

@@ -141,7 +141,22 @@ TEST(Segmentation, OpenSeamIsASlitWithAWarning) {
   ASSERT_EQ(s.segments.size(), 1u);
   EXPECT_EQ(s.segments[0].loops.size(), 1u);  // a sphere cut along a slit is a disk, with the slit as its rim
   EXPECT_EQ(count(s, "seam.dangling"), 1);
+  // One piece makes no pattern, and the designer is told why (with the dangling seam named).
+  EXPECT_EQ(count(s, "segment.one-piece"), 1);
+  EXPECT_FALSE(s.ok());
+  for (const SegmentationProblem& p : s.problems)
+    if (p.code == "seam.dangling") EXPECT_EQ(p.message.rfind("Seam 1 ends", 0), 0u) << p.message;
   expectSound(scene, s);
+}
+
+TEST(Segmentation, ProblemsNameTheirSegmentAndWhereItIs) {
+  // No seam: one closed segment, named by its number on the model and located on its surface.
+  Scene scene("sphere.obj");
+  const Segmentation s = segmentTarget(scene.mesh, scene.topo, scene.seams);
+  ASSERT_EQ(s.problems.size(), 1u);
+  EXPECT_EQ(s.problems[0].message.rfind("Segment 1, near ", 0), 0u) << s.problems[0].message;
+  EXPECT_NEAR(s.problems[0].location.norm(), 1.0, 0.02) << "on the unit sphere's surface";
+  EXPECT_EQ(s.problems[0].location, s.segments[0].labelPoint);
 }
 
 TEST(Segmentation, SeamCrossingItselfIsReported) {

@@ -1,8 +1,11 @@
 // Seam curves and snapping (see seam_curve.hpp).
 #include "seams/seam_curve.hpp"
 
+#include <cmath>
 #include <limits>
+#include <unordered_map>
 
+#include "seams/mesh_topology.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -60,6 +63,52 @@ GeodesicPath smoothSpan(const GeodesicSolver& solver, const SurfaceProjector& pr
   return out;
 }
 
+// Whether 2D segments ab and cd cross or touch (barycentric coordinates of one face: an affine frame, so
+// crossing there is crossing on the face).
+bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                  const Eigen::Vector2d& d) {
+  const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
+  const double eps = 1e-12;
+  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  if (((d1 > eps && d2 < -eps) || (d1 < -eps && d2 > eps)) && ((d3 > eps && d4 < -eps) || (d3 < -eps && d4 > eps)))
+    return true;
+  const auto onSegment = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
+    return std::abs(cross(q - p, r - p)) <= eps && (r - p).dot(r - q) <= eps;  // r on pq
+  };
+  return onSegment(a, b, c) || onSegment(a, b, d) || onSegment(c, d, a) || onSegment(c, d, b);
+}
+
+// The spans (by index) whose pieces cross or touch a piece of another span, or of the same span away from it:
+// a seam that loops over itself cuts no sound region. Pieces are compared within the faces they share.
+std::vector<char> crossingSpans(const GeodesicSolver& solver, const std::vector<GeodesicPath>& spans, bool closed) {
+  struct Piece {
+    int span, index;
+    Eigen::Vector2d a, b;
+  };
+  std::unordered_map<int, std::vector<Piece>> byFace;
+  int index = 0;
+  for (int k = 0; k < static_cast<int>(spans.size()); ++k)
+    for (size_t i = 0; i < spans[k].faces.size(); ++i, ++index) {
+      SurfacePoint pa, pb;
+      const int f = spans[k].faces[i];
+      if (!expressInFace(solver.mesh(), solver.topology(), spans[k].points[i].point, f, pa) ||
+          !expressInFace(solver.mesh(), solver.topology(), spans[k].points[i + 1].point, f, pb))
+        continue;
+      byFace[f].push_back({k, index, pa.bary.tail<2>(), pb.bary.tail<2>()});
+    }
+  const int total = index;
+  std::vector<char> crossing(spans.size(), 0);
+  for (const auto& [face, pieces] : byFace)
+    for (size_t i = 0; i < pieces.size(); ++i)
+      for (size_t j = i + 1; j < pieces.size(); ++j) {
+        const int gap = std::abs(pieces[i].index - pieces[j].index);
+        if (gap <= 1 || (closed && gap == total - 1)) continue;  // neighbours share their joint
+        if (segmentsMeet(pieces[i].a, pieces[i].b, pieces[j].a, pieces[j].b))
+          crossing[pieces[i].span] = crossing[pieces[j].span] = 1;
+      }
+  return crossing;
+}
+
 }  // namespace
 
 SeamCurve buildSeamCurve(const GeodesicSolver& solver, const SurfaceProjector& projector, const SeamSpec& spec,
@@ -73,15 +122,25 @@ SeamCurve buildSeamCurve(const GeodesicSolver& solver, const SurfaceProjector& p
   std::vector<Eigen::Vector3d> c(n);
   for (int i = 0; i < n; ++i) c[i] = position(solver.mesh(), spec.controls[i]);
   const std::vector<Eigen::Vector3d> m = tangents(c, spec.closed);
-  const int spans = spec.closed ? n : n - 1;
-  for (int i = 0; i < spans; ++i) {
+  const int count = spec.closed ? n : n - 1;
+  std::vector<GeodesicPath> direct(count), spans(count);
+  for (int i = 0; i < count; ++i) {
     const int j = (i + 1) % n;
-    curve.controlIndices.push_back(curve.points.empty() ? 0 : static_cast<int>(curve.points.size()) - 1);
-    GeodesicPath span = solver.path(spec.controls[i], spec.controls[j], options.geodesic);
+    spans[i] = direct[i] = solver.path(spec.controls[i], spec.controls[j], options.geodesic);
     if (spec.smooth && options.samplesPerSpan > 0) {
       const Eigen::Vector3d data[4] = {c[i], m[i], c[j], m[j]};
-      span = smoothSpan(solver, projector, spec.controls[i], spec.controls[j], data, span, options);
+      spans[i] = smoothSpan(solver, projector, spec.controls[i], spec.controls[j], data, direct[i], options);
     }
+  }
+  // A smoothed span that makes the seam cross itself (the spline overshooting on a tight or concave turn)
+  // falls back to the surface path, where the designer's points put it.
+  if (spec.smooth) {
+    const std::vector<char> crossing = crossingSpans(solver, spans, spec.closed);
+    for (int i = 0; i < count; ++i)
+      if (crossing[i]) spans[i] = direct[i];
+  }
+  for (const GeodesicPath& span : spans) {
+    curve.controlIndices.push_back(curve.points.empty() ? 0 : static_cast<int>(curve.points.size()) - 1);
     appendPath(curve, span);
   }
   if (!spec.closed) curve.controlIndices.push_back(static_cast<int>(curve.points.size()) - 1);

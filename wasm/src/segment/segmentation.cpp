@@ -137,6 +137,15 @@ Segmentation segmentTarget(const TriMesh& target, const MeshTopology& topo, cons
   for (const Segment& s : out.segments) area += s.area;
   segmentProblems(box, area, options, out);
   seamProblems(box, cut, out);
+  // Seams that cut nothing apart make no pattern: say so, or the designer sees seams and nothing else.
+  if (out.segments.size() == 1 && !seams.empty()) {
+    SegmentationProblem p;
+    p.code = "segment.one-piece", p.severity = "error", p.segment = 0, p.location = out.segments[0].labelPoint;
+    p.message =
+        "The seams do not cut the shape apart yet: it is still one piece, and a balloon needs at least two panels. "
+        "Close a seam into a loop, or run its ends into other seams.";
+    out.problems.push_back(p);
+  }
   return out;
 }
 
