@@ -29,6 +29,11 @@ test('each optimizer iterate streams its shape and its distance to the target, t
     assert.equal(it.distances.length, n);
     assert.ok(Math.abs(it.distance.rms - it.distanceRms) < 1e-6 * Math.max(1, it.distanceRms), `iteration ${it.iteration}: ${it.distance.rms} vs ${it.distanceRms}`);
     assert.ok(it.distance.max >= it.distance.rms);
+    // The other way, the target's vertices to the shape: the optimizer's figure and the colors' alike.
+    assert.equal(it.targetDistances.length, sphere.positions.length / 3);
+    assert.ok(Math.abs(it.distance.targetRms - it.targetDistanceRms) < 1e-6 * Math.max(1, it.targetDistanceRms), `iteration ${it.iteration}: ${it.distance.targetRms} vs ${it.targetDistanceRms}`);
+    assert.ok(it.distance.targetMax >= it.distance.targetRms && it.distance.targetRms > 0);
+    assert.ok(Array.isArray(it.distance.uncovered) && it.distance.uncoveredDistance > 0);
   }
   assert.ok(rest.at(-1).distance.rms < rest[0].distance.rms, 'the iterates come closer to the target');
   assert.ok(rest.every((it) => it.slidingSeams === false), 'seams of weight 1 are held');
@@ -56,4 +61,9 @@ test('seams of weight 0 slide, and every iterate says so; the panels are meshed 
   assert.ok(iterates.length >= 20, `${iterates.length} iterates`);
   assert.ok(iterates.every((it) => it.slidingSeams === true), 'every iterate says the seams slide');
   assert.ok(iterates.at(-1).remeshings >= 1, `remeshed ${iterates.at(-1).remeshings} times by iteration ${iterates.at(-1).iteration}`);
+  // A remeshed iterate brings its new sewn mesh, and its distances fit that mesh.
+  const remeshed = iterates.find((it, i) => i > 0 && it.remeshings !== iterates[i - 1].remeshings);
+  assert.ok(remeshed?.triangles?.length > 0, 'the remeshed iterate carries its triangles');
+  assert.equal(remeshed.distances.length, remeshed.positions.length / 3);
+  assert.ok(Math.max(...remeshed.triangles) < remeshed.positions.length / 3, 'its triangles index its own vertices');
 });

@@ -7,7 +7,8 @@
 //     -> { positions: [x,y,z,...], faces: [...], barys: [...], controls: [x,y,z,...], controlIndices, length }
 //        (faces/barys: a surface point per curve point; curve points of closed seams end at the start)
 //   t.segment(seamsJson)   seams: [{ points, closed, weight, smooth }]
-//     -> { vertices, triangles, segments: [{ area, isDisk, eulerCharacteristic, genus, loops, triangles }],
+//     -> { vertices, triangles, segments: [{ area, isDisk, eulerCharacteristic, genus, loops, triangles, label
+//          (Segment::labelPoint) }],
 //          junctions: [{ position, segments }], problems: [{ code, severity, message, segment, seam, location }] }
 //        and fills the cut mesh: cutPositionsPtr() #V*3 f64, cutTrianglesPtr() #F*3 i32, faceSegmentPtr() #F i32
 //   t.buildPattern(seamsJson, optionsJson)
@@ -21,7 +22,8 @@
 //   t.startOptimization(seamsJson, optionsJson)  the same, and keeps a PatternOptimizer for:
 //   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, remeshings, slidingSeams (some seam's
 //                                                 weight lets it slide: OptimizeOptions::slidingSeamWeight),
-//                                                 distanceRms, distanceMax,
+//                                                 distanceRms, distanceMax, targetDistanceRms,
+//                                                 targetDistanceMax (the target's to the shape),
 //                                                 flattenedDistanceRms (of the flattened panels' equilibrium),
 //                                                 seamMismatch, objective }
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
@@ -30,7 +32,10 @@
 //   t.distanceToTarget(positionsPtr, numVertices, scale, surfacePtr, numSurfaceTriangles) -> { rms, max, diagonal }
 //     (rms and max of |d| over the diagonal of the target's box, over the corners of the #S x 3 int32 surface
 //     triangles, e.g. the outer surface; over all points when there are none) and distancesPtr() #V f64: per
-//     point [m], the signed distance to the target scaled by `scale` (positive outside)
+//     point [m], the signed distance to the target scaled by `scale` (positive outside); with surface triangles
+//     also the other way (targetCoverage): targetRms, targetMax, uncovered: [{ area (fraction of the target's),
+//     max, position (target units), radius, where, message }] (uncoveredRegions, io/distance_json.hpp),
+//     uncoveredDistance (the threshold, over the diagonal) and targetDistancesPtr() #target V f64 [m]
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -39,6 +44,7 @@
 #include <nlohmann/json.hpp>
 
 #include "guarded.hpp"
+#include "io/distance_json.hpp"
 #include "io/pattern_json.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "pattern/build_pattern.hpp"
@@ -141,6 +147,8 @@ class TargetSession {
         const auto& r = optimizer_->history().back();
         out["distanceRms"] = r.distanceRms;
         out["distanceMax"] = r.distanceMax;
+        out["targetDistanceRms"] = r.targetDistanceRms;
+        out["targetDistanceMax"] = r.targetDistanceMax;
         out["seamMismatch"] = r.seamMismatch;
         out["objective"] = r.objective;
         out["flattenedDistanceRms"] = optimizer_->history().front().distanceRms;  // the flattened panels'
@@ -210,13 +218,22 @@ class TargetSession {
           Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(surface), numSurfaceTriangles, 3);
       if (F.size() && (F.minCoeff() < 0 || F.maxCoeff() >= numVertices))
         throw billow::Error("seams.bad-input", "The shape's surface refers to points it does not have.");
-      distances_ = scale * billow::signedDistances(mesh_, *projector_, x);
-      const double diagonal = scale * (mesh_.V.colwise().maxCoeff() - mesh_.V.colwise().minCoeff()).norm();
-      const billow::DistanceSummary d = billow::summarizeDistances(distances_, F, diagonal);
-      return json({{"rms", d.rms}, {"max", d.max}, {"diagonal", diagonal}}).dump();
+      const billow::TwoWayDistance d = billow::measureDistance(mesh_, *projector_, x, F);
+      distances_ = scale * d.signedDistances;
+      targetDistances_ = scale * d.targetToInflated.distances;
+      const double diagonal = scale * d.diagonal;
+      json out = {{"rms", d.inflatedToTarget.rms}, {"max", d.inflatedToTarget.max}, {"diagonal", diagonal}};
+      if (F.rows()) {
+        out["targetRms"] = d.targetToInflated.summary.rms;
+        out["targetMax"] = d.targetToInflated.summary.max;
+        out["uncoveredDistance"] = billow::kUncoveredDistance;
+        out["uncovered"] = billow::uncoveredJson(d.uncovered);
+      }
+      return out.dump();
     });
   }
   uintptr_t distancesPtr() const { return reinterpret_cast<uintptr_t>(distances_.data()); }
+  uintptr_t targetDistancesPtr() const { return reinterpret_cast<uintptr_t>(targetDistances_.data()); }
 
   // Reads { scale, triangles, pressure, material } (see the top of this file) into build options.
   static billow::PatternBuildOptions readBuildOptions(const std::string& optionsJson, double& scale) {
@@ -393,7 +410,8 @@ class TargetSession {
                           {"eulerCharacteristic", s.eulerCharacteristic},
                           {"genus", s.genus},
                           {"loops", s.loops.size()},
-                          {"triangles", s.triangles.size()}});
+                          {"triangles", s.triangles.size()},
+                          {"label", vec(s.labelPoint)}});
     for (const auto& p : seg.problems)
       problems.push_back({{"code", p.code},
                           {"severity", p.severity},
@@ -433,8 +451,9 @@ class TargetSession {
   std::unique_ptr<billow::SurfaceProjector> projector_;
   std::unique_ptr<billow::GeodesicSolver> geodesic_;
   std::vector<int> faceSegment_;
-  Eigen::VectorXd distances_;  // of the last distanceToTarget
-  std::vector<int> outer_;     // optimizedOuterPtr's copy
+  Eigen::VectorXd distances_;        // of the last distanceToTarget
+  Eigen::VectorXd targetDistances_;  // of the target's vertices to that shape [m]
+  std::vector<int> outer_;           // optimizedOuterPtr's copy
 };
 
 }  // namespace
@@ -460,5 +479,6 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("cutTrianglesPtr", &TargetSession::cutTrianglesPtr)
       .function("faceSegmentPtr", &TargetSession::faceSegmentPtr)
       .function("distanceToTarget", &TargetSession::distanceToTarget)
-      .function("distancesPtr", &TargetSession::distancesPtr);
+      .function("distancesPtr", &TargetSession::distancesPtr)
+      .function("targetDistancesPtr", &TargetSession::targetDistancesPtr);
 }

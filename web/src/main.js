@@ -131,6 +131,7 @@ const setColorMode = (mode) => {
   panes.inflated.setColorMode(mode);
 };
 colorSelect.addEventListener('change', () => setColorMode(colorSelect.value));
+app.setColorMode = setColorMode; // a problem's "Show where" picks the colors that show it
 panes.inflated.onFieldsChanged = () => {
   colorSelect.querySelector('option[value="distance"]').disabled = !panes.inflated.hasDistances;
 };

@@ -5,7 +5,8 @@ import { EXAMPLES, findExample } from './examples.js';
 import { newDesign, parseDesign, clampHeight } from './design.js';
 import { autosave, tabRecordKey } from './autosave.js';
 import { History } from './history.js';
-import { encodeDesign, decodeDesign } from './share.js';
+import { encodeDesign, decodeDesign, linkNotice } from './share.js';
+import { awaitTarget } from './shared-link.js';
 import { PatternSession, patternForDisplay } from './pattern-session.js';
 import { canonicalJson, optimizeArgs, resultKey, DEFAULT_RESOLUTION } from './stored-result.js';
 import { renderTargetStats } from './target-stats.js';
@@ -15,6 +16,7 @@ import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, expo
 import { download } from './download.js';
 import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
+import { formatDistance } from './units.js';
 
 // Example patterns computed by the solver (wasm/src/simulate/example_patterns.cpp).
 export const PATTERN_EXAMPLES = [
@@ -29,6 +31,14 @@ const panelInputs = (design) => canonicalJson({ height: design.size.height, ...o
 const AUTOSAVE_KEY = 'current';
 const STORED_STATUS = 'Showing the stored result while it is refined live';
 const TAB_RECORD_DAYS = 30; // per-tab records older than this are deleted
+
+// How the optimizer ended (its state, OptimizeState in pattern_optimizer.hpp), in a designer's words: a run
+// that reached its limit is not one that settled.
+export function optimizerEnd({ state, iteration }) {
+  const steps = `${iteration} step${iteration === 1 ? '' : 's'}`;
+  if (state === 'converged') return `settled after ${steps}`;
+  return `stopped at the optimizer's limit (${steps}) before settling; the panels may fit a little better than shown`;
+}
 
 export class App {
   constructor({ client, panes, messages, elements, baseUrl }) {
@@ -106,6 +116,7 @@ export class App {
       return false;
     }
     if (!decoded) return false;
+    this.awaited = awaitTarget(decoded, this.messages); // a design whose mesh stayed out of the link waits for that file (shared-link.js)
     for (const w of decoded.warnings) this.messages.show('warning', w);
     history.replaceState(null, '', location.pathname + location.search); // the design is autosaved from now on
     if (decoded.design.target.example) {
@@ -113,7 +124,6 @@ export class App {
       return true;
     }
     if (!decoded.mesh) {
-      this.messages.show('warning', `The link refers to the file "${decoded.design.target.file}", which is not in the link. Open that file to continue.`);
       await this.loadExample(newDesign().target.example);
       return true;
     }
@@ -227,10 +237,15 @@ export class App {
       );
       if (ticket !== this.loadCounter) return; // a newer load won
       this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
+      if (this.awaited) design = this.awaited.attach(fileName, result, design); // the linked design, if this file is its mesh
       this.installTarget(fileName, result, design, stored);
       if (!stored) this.setStatus('Ready');
+      // What the mesh report says belongs to this target: it goes with it (and the genus warning once seams cut
+      // the handles open: SeamEditor.segment).
+      this.messages.resolve('target.', { prefix: true });
       const shown = result.report.issues.filter((i) => i.severity !== 'error');
-      for (const issue of shown) if (!quiet || issue.severity !== 'notice') this.messages.show(issue.severity, issue.message);
+      for (const issue of shown)
+        if (!quiet || issue.severity !== 'notice') this.messages.show(issue.severity, issue.message, [], { cause: `target.${issue.code}` });
     } catch (error) {
       const report = error.details?.report;
       const items = report ? report.issues.filter((i) => i.severity === 'error').map((i) => i.message) : [];
@@ -318,7 +333,7 @@ export class App {
           if (ticket !== this.patternTicket) return;
           if (p.flattenedText) this.flattenedText = p.flattenedText;
           const step = p.iteration !== undefined && p.stage === 'optimizing'
-            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance to target ${(100 * p.distanceRms).toFixed(2)} %` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
+            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance ${formatDistance({ rms: p.distanceRms, targetRms: p.targetDistanceRms })}` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
             : null;
           if (this.storedShown()) return this.setStatus(`${STORED_STATUS}: ${step ?? p.stage}…`);
           if (p.flattenedText) this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
@@ -334,12 +349,14 @@ export class App {
       if (ticket !== this.patternTicket) return;
       this.optimized = { ...result, revision }; // the design revision these panels were made for
       this.stored = null; // replaced by the live result
-      await this.showVersion('optimized');
+      this.messages.resolve('pattern');
+      const shown = await this.showVersion('optimized');
+      if (shown && ticket === this.patternTicket) this.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
     } catch (error) {
       if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
       // Memory messages say what to do on their own; others are about the seams.
       const text = error.code?.startsWith('memory') ? error.message : `The panels could not be made from these seams: ${error.message}`;
-      this.messages.show('error', text);
+      this.messages.show('error', text, [], { cause: 'pattern' });
       this.setStatus('');
     } finally {
       if (this.optimizing === call) this.optimizing = null;
@@ -356,7 +373,7 @@ export class App {
       this.patterns.markStatsStale();
     }
     else if (p.positions && pane.shape && pane.position?.count * 3 === p.positions.length) pane.updatePositions(p.positions);
-    if (p.distances && pane.shape) pane.setDistances(p.distances, p.distance);
+    if (p.distances && pane.shape) pane.setDistances(p.distances, p.distance, p.targetDistances);
     if (p.patternText) this.panes.pattern.setPattern(patternForDisplay(p.patternText, 'the panels being optimized'), { frame: false });
   }
 
@@ -382,17 +399,35 @@ export class App {
     return this.client.call(Op.distanceToTarget, { positions, triangles, outer, scale: this.scaleFor(this.design) }).promise;
   }
 
-  // The signed distance of the shown inflated shape to the target, for the "distance to target" colors.
+  // The signed distance of the shown inflated shape to the target, for the "distance to target" colors, and the
+  // other way: the parts of the target it leaves out, each a warning that shows where.
   async measureDistance(result) {
     const pane = this.panes.inflated;
     const serial = pane.serial;
     try {
       const d = await this.distanceOf(result);
-      if (pane.serial === serial) pane.setDistances(d.distances, d);
+      if (pane.serial !== serial) return;
+      pane.setDistances(d.distances, d, d.targetDistances);
+      this.warnUncovered(d.uncovered ?? []);
     } catch (error) {
       // Without distances the pane keeps its other colors; a crashed worker says so elsewhere.
       if (error.code !== 'cancelled' && error.code !== 'worker.crashed') console.warn('distance to target:', error.message);
     }
+  }
+
+  // The parts of the target the shown inflated shape leaves out (UncoveredRegion in surface_distance.hpp): where,
+  // how much, and what helps.
+  warnUncovered(regions) {
+    this.messages.resolve('distance.uncovered', { prefix: true });
+    regions.slice(0, 3).forEach((r, i) => {
+      this.messages.show('warning', r.message, [], { cause: `distance.uncovered.${i}`, locate: () => this.showPlace(r.position, { radius: r.radius, colors: 'distance' }) });
+    });
+  }
+
+  // Turns the target and inflated panes towards a place on the target (its own units) and marks it there.
+  showPlace(position, { radius = 0, colors = null } = {}) {
+    this.panes.target.showPlace(position, radius);
+    if (colors) this.setColorMode?.(colors);
   }
 
   setResolution(triangles) {
@@ -431,13 +466,14 @@ export class App {
         },
       });
       this.cutStatistics = result.statistics;
+      this.messages.resolve('cut-lines');
       this.allowancePanel?.setSeams(result.statistics);
       renderStats(this.el.patternStats, patternStatRows(result.statistics, f.units));
     } catch (error) {
       if (ticket !== this.cutTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
       this.cutStatistics = null;
       renderStats(this.el.patternStats, []);
-      this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`);
+      this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`, [], { cause: 'cut-lines' });
     }
   }
 
@@ -451,10 +487,11 @@ export class App {
     for (const [key, [lo, hi, message]] of Object.entries(checks)) {
       const v = changes[key];
       if (v !== undefined && !(Number.isFinite(v) && v >= lo && v <= hi)) {
-        this.messages.show('warning', message);
+        this.messages.show('warning', message, [], { cause: `fabrication.${key}` });
         this.showDesign();
         return;
       }
+      if (v !== undefined) this.messages.resolve(`fabrication.${key}`);
     }
     this.applyFabrication(setFabrication(this.design, changes), `fabrication-${Object.keys(changes).join()}`);
   }
@@ -511,10 +548,11 @@ export class App {
 
   setPressure(pascals) {
     if (!Number.isFinite(pascals) || pascals < MIN_PRESSURE || pascals > MAX_PRESSURE) {
-      this.messages.show('warning', `The pressure must be between ${formatPressure(MIN_PRESSURE)} and ${formatPressure(MAX_PRESSURE)}.`);
+      this.messages.show('warning', `The pressure must be between ${formatPressure(MIN_PRESSURE)} and ${formatPressure(MAX_PRESSURE)}.`, [], { cause: 'pressure' });
       this.showDesign();
       return;
     }
+    this.messages.resolve('pressure');
     if (pascals === this.design.pressure) return;
     this.commitDesign(setPressure(this.design, pascals), { mergeKey: 'pressure' });
     this.remakePattern();
@@ -543,6 +581,8 @@ export class App {
     const unit = Number(this.el.pressureUnit.value) || 1000;
     this.el.pressureInput.value = String(+(design.pressure / unit).toPrecision(6));
     this.panes.target.setScale(this.scaleFor(design));
+    if (this.panes.inflated.targetScale !== this.scaleFor(design) || this.panes.inflated.targetOf !== this.target)
+      this.panes.inflated.setTarget(this.target, this.scaleFor(design));
     renderTargetStats(this.el.stats, this.target, this.scaleFor(design));
     this.el.undoButton.disabled = !this.history.canUndo;
     this.el.redoButton.disabled = !this.history.canRedo;
@@ -550,10 +590,11 @@ export class App {
 
   setHeight(meters) {
     if (!Number.isFinite(meters) || meters <= 0) {
-      this.messages.show('warning', 'The height must be a positive number of meters.');
+      this.messages.show('warning', 'The height must be a positive number of meters.', [], { cause: 'height' });
       this.el.heightInput.value = String(this.design.size.height);
       return;
     }
+    this.messages.resolve('height');
     const height = clampHeight(meters);
     if (height === this.design.size.height) return;
     this.commitDesign(setHeight(this.design, height), { mergeKey: 'height' });
@@ -585,7 +626,7 @@ export class App {
       const fragment = await encodeDesign(this.design, this.ownMesh());
       const url = `${location.origin}${location.pathname}${location.search}#${fragment}`;
       await navigator.clipboard?.writeText(url).catch(() => {});
-      this.messages.show('notice', 'A link to this design was copied to the clipboard.');
+      this.messages.show('notice', linkNotice(fragment, this.design));
       return url;
     } catch (error) {
       this.messages.show('warning', error.message);

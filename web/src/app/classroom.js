@@ -12,7 +12,7 @@ import { Box3, Sphere, Vector3 } from 'three';
 import { parseDesign } from './design.js';
 import { History } from './history.js';
 import { patternForDisplay } from './pattern-session.js';
-import { formatPercent } from './units.js';
+import { formatPercent, worseDistance } from './units.js';
 import { formatPressure } from './materials.js';
 import { Op } from '../worker/protocol.js';
 import './classroom.css';
@@ -118,6 +118,17 @@ function frameView(pane, object, direction = VIEW) {
   pane.controls.target.copy(sphere.center);
   pane.controls.update();
   pane.viewport.requestRender();
+}
+
+// A shape's distance to the target, both ways (units.formatDistance), the worse one as the lead figure.
+function distanceFigures(d) {
+  const value = (f) => (d ? formatPercent(f(d)) : '…');
+  return [
+    ['Distance to target', value(worseDistance), 'Average distance between the inflated shape and the target, the worse of the two ways, in % of its size'],
+    ['Inflated → target', value((x) => x.rms), 'How far the inflated shape lies from the target, on average'],
+    ['Target → inflated', value((x) => x.targetRms ?? x.rms), 'How far the target lies from the inflated shape, on average: high where the shape leaves a part out'],
+    ['Largest distance', value((x) => Math.max(x.max, x.targetMax ?? 0))],
+  ];
 }
 
 export class Classroom {
@@ -373,14 +384,10 @@ export class Classroom {
     if (step.id === 'optimized' && !this.naive) await this.measureNaive(ticket);
     if (ticket !== this.ticket) return;
     const figures = {
-      naive: () => [
-        ['Pressure', formatPressure(app.design.pressure)],
-        ['Distance to target', naive === null ? '…' : formatPercent(naive.rms), 'Average distance from the target, in % of its size'],
-        ['Largest distance', naive === null ? '…' : formatPercent(naive.max)],
-      ],
+      naive: () => [['Pressure', formatPressure(app.design.pressure)], ...distanceFigures(naive)],
       optimized: () => [
-        ['Distance to target', this.optimizedDistance() ? formatPercent(this.optimizedDistance().rms) : '…', 'Average distance from the target, in % of its size'],
-        ['First try', this.naive ? formatPercent(this.naive.distance.rms) : '—'],
+        ...distanceFigures(this.optimizedDistance()),
+        ['First try', this.naive ? formatPercent(worseDistance(this.naive.distance)) : '—'],
         ['Optimizer steps', String(optimized.status?.iteration ?? '—')],
       ],
       wrinkles: () => [['Most wrinkled', formatPercent(app.patterns.last?.maxCompression ?? 0), 'The largest share of the sheet taken up by wrinkles']],

@@ -6,7 +6,7 @@
 // page only (they are views of the design, not part of it). While open, the panel follows the app through
 // App.onChange (edits, undo, panels started, made and inflated); it does nothing while the app is idle.
 import './compare.css';
-import { formatPercent } from './units.js';
+import { formatDistance, formatPercent } from './units.js';
 import { dialogHeader } from '../views/dialog-header.js';
 
 const LETTERS = ['A', 'B'];
@@ -113,6 +113,8 @@ export class LayoutCompare {
       panels: app.patterns.display?.panels.length ?? 0,
       distance: o.status?.distanceRms ?? null,
       distanceMax: o.status?.distanceMax ?? null,
+      targetDistance: o.status?.targetDistanceRms ?? null,
+      targetDistanceMax: o.status?.targetDistanceMax ?? null,
       wrinkling: app.patterns.last.maxCompression ?? null,
     };
   }
@@ -248,8 +250,8 @@ export class LayoutCompare {
     const rows = figures
       ? [
           ['Panels', String(figures.panels), 'panels'],
-          ['Distance to target', figures.distance === null ? '—' : formatPercent(figures.distance), 'distance', 'Average distance of the inflated optimized panels from the target, in % of its size'],
-          ['Largest distance', figures.distanceMax === null ? '—' : formatPercent(figures.distanceMax), 'distance-max'],
+          ['Distance to target', figures.distance === null ? '—' : formatDistance({ rms: figures.distance, targetRms: figures.targetDistance }, 1), 'distance', 'Average distance between the inflated optimized panels and the target, both ways (target → inflated is high where the shape leaves a part out), in % of its size'],
+          ['Largest distance', figures.distanceMax === null ? '—' : formatPercent(Math.max(figures.distanceMax, figures.targetDistanceMax ?? 0)), 'distance-max'],
           ['Most wrinkled', figures.wrinkling === null ? '—' : formatPercent(figures.wrinkling), 'wrinkling', 'The largest share of the sheet taken up by wrinkles'],
         ]
       : [];

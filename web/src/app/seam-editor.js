@@ -181,6 +181,12 @@ export class SeamEditor {
     this.draw();
   }
 
+  // A segmentation problem, shown: the view turned to its place, marked, and its seam selected.
+  showProblem(problem) {
+    if (problem.seam >= 0 && problem.seam < this.design.seams.length) this.selectSeam(problem.seam);
+    if (problem.location) this.app.showPlace(problem.location);
+  }
+
   selectSeam(seam) {
     this.selection = seam === null ? null : { seam, index: null };
     this.draw();
@@ -306,10 +312,13 @@ export class SeamEditor {
       this.pane.setSegments(result);
       for (const fn of this.listeners) fn();
       const patternable = result.segments.length >= 2 && result.segments.every((s) => s.isDisk);
+      this.app.messages.resolve('segment');
+      // Seams that cut every handle open leave no handle to warn of.
+      if (patternable) this.app.messages.resolve('target.mesh.genus');
       if (patternable) this.app.makePattern();
     } catch (error) {
       if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
-      this.app.messages.show('error', `The target could not be cut along the seams: ${error.message}`);
+      this.app.messages.show('error', `The target could not be cut along the seams: ${error.message}`, [], { cause: 'segment' });
     }
   }
 

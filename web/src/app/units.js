@@ -17,3 +17,22 @@ export function formatVolume(m3) {
 export function formatPercent(fraction) {
   return `${(100 * fraction).toFixed(1)} %`;
 }
+
+// The distance between an inflated shape and its target, both ways ({ rms, targetRms } over the target's size),
+// the worse first: "6.70 % target → inflated, 0.35 % inflated → target". One way alone reads close for a
+// shape that leaves out a whole wing, since every point it has lies on the target.
+export function formatDistance({ rms, targetRms }, digits = 2) {
+  const percent = (f) => `${(100 * f).toFixed(digits)} %`;
+  if (targetRms === undefined || targetRms === null) return percent(rms);
+  const ways = [
+    [targetRms, `${percent(targetRms)} target → inflated`],
+    [rms, `${percent(rms)} inflated → target`],
+  ];
+  if (rms > targetRms) ways.reverse();
+  return ways.map((w) => w[1]).join(', ');
+}
+
+// The worse of the two ways (formatDistance), for comparisons and a single figure.
+export function worseDistance({ rms, targetRms }) {
+  return Math.max(rms, targetRms ?? 0);
+}

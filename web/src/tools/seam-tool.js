@@ -8,7 +8,8 @@
 // reach farther to snap or grab; the seam panel shows Finish / Close / Cancel buttons while drawing, since
 // there is no Enter key or reliable double-tap.
 const CLICK_SLOP_PX = { mouse: 4, pen: 6, touch: 12 };
-const SNAP_PX = { mouse: 12, pen: 16, touch: 28 };
+const SNAP_PX = { mouse: 12, pen: 16, touch: 28 }; // to control points and the start of the loop being drawn
+const CURVE_SNAP_PX = { mouse: 6, pen: 9, touch: 18 }; // to a seam's curve between its points
 const PICK_PX = { mouse: 10, pen: 14, touch: 26 }; // mouse: SeamEditor's default
 const reach = (table, event) => table[event.pointerType] ?? table.mouse;
 
@@ -47,33 +48,33 @@ export class SeamTool {
     return this.snap(event) ?? { ...hit, snapped: false };
   }
 
+  // Only points the designer sees can be snapped to: a seam or a start point behind the model is not where
+  // they aimed, however close on screen. A seam's curve snaps within a few pixels (a click beside a seam is a
+  // point beside it, not a tiny segment against it); its control points and the loop's start a little farther.
   snap(event) {
+    const candidates = [];
     // The first point of the seam being drawn closes it.
     if (this.drawing?.points.length >= 2) {
       const d = this.pane.screenDistance(event, this.drawing.positions[0]);
-      if (d < reach(SNAP_PX, event)) return { point: this.drawing.points[0], position: this.drawing.positions[0], snapped: true, closes: true };
+      if (d < reach(SNAP_PX, event)) candidates.push({ d: d - 3, hit: { point: this.drawing.points[0], position: this.drawing.positions[0], snapped: true, closes: true } });
     }
-    let best = null;
-    let bestDistance = reach(SNAP_PX, event);
     // A snapped point remembers its host seam ("on"), so it follows when that seam is edited.
-    const consider = (point, position, seam, bias = 0) => {
-      const d = this.pane.screenDistance(event, position) - bias;
-      if (d < bestDistance) {
-        bestDistance = d;
-        best = { point: { face: point.face, bary: point.bary, on: seam }, position, snapped: true };
-      }
+    const consider = (point, position, seam, within, bias = 0) => {
+      const d = this.pane.screenDistance(event, position);
+      if (d < within) candidates.push({ d: d - bias, hit: { point: { face: point.face, bary: point.bary, on: seam }, position, snapped: true } });
     };
     this.app.seamTraces().forEach((trace, seam) => {
       if (!trace) return;
       const controls = this.app.design.seams[seam].points;
-      trace.controls.forEach((c, k) => consider(controls[k], c, seam, 3)); // control points win close calls
+      trace.controls.forEach((c, k) => consider(controls[k], c, seam, reach(SNAP_PX, event), 3)); // control points win close calls
       for (let i = 0; i < trace.faces.length; i++) {
         const position = [trace.curve[3 * i], trace.curve[3 * i + 1], trace.curve[3 * i + 2]];
         const point = { face: trace.faces[i], bary: [trace.barys[3 * i], trace.barys[3 * i + 1], trace.barys[3 * i + 2]] };
-        consider(point, position, seam);
+        consider(point, position, seam, reach(CURVE_SNAP_PX, event));
       }
     });
-    return best;
+    candidates.sort((a, b) => a.d - b.d);
+    return candidates.find((c) => this.pane.isVisible(c.hit.position))?.hit ?? null;
   }
 
   onDown(event) {

@@ -4,6 +4,7 @@
 import { BufferAttribute, BufferGeometry, Color, DoubleSide, Group, Mesh, MeshStandardMaterial } from 'three';
 import { Pane3D } from './pane3d.js';
 import { peakStress } from '../app/fabrication.js';
+import { formatDistance } from '../app/units.js';
 
 const TAUT = new Color('#9ec3e6');
 const WRINKLED = new Color('#f0c05a');
@@ -51,6 +52,9 @@ export class InflatedPane extends Pane3D {
     this.scene.add(this.group);
     this.outerMaterial = new MeshStandardMaterial({ vertexColors: true, roughness: 0.35, metalness: 0.15, side: DoubleSide });
     this.innerMaterial = new MeshStandardMaterial({ color: 0xb0b6c4, transparent: true, opacity: 0.35, side: DoubleSide, depthWrite: false });
+    // The parts of the target the shape leaves out, drawn with the distance colors as a translucent ghost.
+    this.uncoveredMaterial = new MeshStandardMaterial({ color: INSIDE, transparent: true, opacity: 0.4, side: DoubleSide, depthWrite: false });
+    this.target = null; // { positions (meters), indices }: the target, for its uncovered parts
     this.legend = document.createElement('div');
     this.legend.className = 'legend';
     this.legend.hidden = true;
@@ -102,13 +106,48 @@ export class InflatedPane extends Pane3D {
     if (this.colorMode === 'stress') this.recolor();
   }
 
-  // Signed distances (#V, meters) of the shown shape to the target, and their summary { rms, max, diagonal }.
-  setDistances(distances, summary) {
+  // The target ({ positions, indices } in its own units, scale: meters per unit), for the parts of it a shape
+  // leaves out.
+  setTarget(target, scale) {
+    this.targetOf = target;
+    this.targetScale = scale;
+    this.target = target && { positions: Float32Array.from(target.positions, (x) => x * scale), indices: target.indices };
+  }
+
+  // Signed distances (#V, meters) of the shown shape to the target and their summary (SolverApi.distanceToTarget:
+  // both ways, with uncoveredDistance); targetDistances (#target vertices, meters) the other way, when known.
+  setDistances(distances, summary, targetDistances = null) {
     if (!this.fields || !this.position || distances.length * 3 !== this.position.count * 3) return;
     this.fields.distances = distances;
     this.fields.distance = summary;
+    this.showUncovered(targetDistances, summary);
     if (this.colorMode === 'distance') this.recolor();
     this.onFieldsChanged?.();
+  }
+
+  // The target's triangles lying farther from the shape than the uncovered threshold, all three corners.
+  showUncovered(targetDistances, summary) {
+    if (this.uncoveredMesh) {
+      this.group.remove(this.uncoveredMesh);
+      this.uncoveredMesh.geometry.dispose();
+      this.uncoveredMesh = null;
+    }
+    const t = this.target;
+    if (!t || !targetDistances || targetDistances.length * 3 !== t.positions.length || !summary.uncoveredDistance) return;
+    const limit = summary.uncoveredDistance * summary.diagonal;
+    const far = [];
+    for (let f = 0; f < t.indices.length; f += 3)
+      if (targetDistances[t.indices[f]] > limit && targetDistances[t.indices[f + 1]] > limit && targetDistances[t.indices[f + 2]] > limit)
+        far.push(t.indices[f], t.indices[f + 1], t.indices[f + 2]);
+    if (!far.length) return;
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new BufferAttribute(t.positions, 3));
+    geometry.setIndex(far);
+    geometry.computeVertexNormals();
+    this.uncoveredMesh = new Mesh(geometry, this.uncoveredMaterial);
+    this.uncoveredMesh.name = 'uncovered target';
+    this.uncoveredMesh.visible = this.colorMode === 'distance';
+    this.group.add(this.uncoveredMesh);
   }
 
   get hasDistances() {
@@ -128,6 +167,7 @@ export class InflatedPane extends Pane3D {
     const n = this.position.count;
     let mode = this.colorMode;
     if (mode === 'distance' && !fields.distances) mode = 'wrinkles';
+    if (this.uncoveredMesh) this.uncoveredMesh.visible = mode === 'distance';
     if (mode === 'stress' && !fields.stress) mode = 'wrinkles';
     this.legend.hidden = mode === 'wrinkles' && !fields.compression; // a streamed iterate: nothing to explain
     const source = mode === 'stress' ? fields.stress : fields.compression;
@@ -182,11 +222,13 @@ export class InflatedPane extends Pane3D {
         ends('0', mpa(maxStress));
       }
     } else {
-      const { rms, max } = this.fields.distance;
+      const d = this.fields.distance;
       const mm = `${Math.round(distanceScale * 1000)} mm`;
       this.legendTitle.textContent = 'Distance to target';
       ends(`${mm} inside`, 'on target', `${mm} outside`);
-      note = `Average ${(100 * rms).toFixed(2)} %, largest ${(100 * max).toFixed(2)} % of the size`;
+      const largest = Math.max(d.max, d.targetMax ?? 0);
+      note = `Average ${formatDistance(d)}; largest ${(100 * largest).toFixed(2)} % of the size`;
+      if (this.uncoveredMesh) note += '. Translucent blue: parts of the target the inflated shape leaves out';
     }
     this.legendNote.textContent = note;
     this.legendNote.hidden = !note;
@@ -234,7 +276,7 @@ export class InflatedPane extends Pane3D {
       this.group.remove(child);
       child.geometry.dispose();
     }
-    this.outerMesh = this.innerMesh = null;
+    this.outerMesh = this.innerMesh = this.uncoveredMesh = null;
     this.shape = null;
     this.position = null;
     this.fields = null;

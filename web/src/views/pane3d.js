@@ -50,6 +50,17 @@ export class Pane3D {
     this.viewport.requestRender();
   }
 
+  // Turns the view about its centre until `point` (a Vector3 in the scene) faces the viewer, keeping the zoom:
+  // how a problem's place is shown.
+  turnTowards(point) {
+    const direction = point.clone().sub(this.controls.target);
+    if (!(direction.lengthSq() > 0)) return;
+    const distance = this.camera.position.distanceTo(this.controls.target);
+    this.camera.position.copy(this.controls.target).addScaledVector(direction.normalize(), distance);
+    this.controls.update();
+    this.controls.dispatchEvent({ type: 'change' });
+  }
+
   render(renderer, aspect) {
     if (this.camera.aspect !== aspect) {
       this.camera.aspect = aspect;

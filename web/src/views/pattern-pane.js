@@ -136,7 +136,9 @@ export class PatternPane {
       this.content.add(line);
       const label = document.createElement('div');
       label.className = 'panel-label';
-      label.textContent = `${i + 1} ${panel.name ?? ''}`.trim();
+      // "Panel 3" carries its segment's number (the target pane shows it on the model); other names get their place.
+      const number = /^Panel (\d+)$/.exec(panel.name ?? '')?.[1];
+      label.textContent = number ? panel.name : `${i + 1} ${panel.name ?? ''}`.trim();
       const size = this.pieceSize(i);
       if (size) {
         const line = document.createElement('span');
@@ -146,7 +148,7 @@ export class PatternPane {
       }
       this.labels.append(label);
       label.dataset.full = label.firstChild.textContent;
-      label.dataset.short = String(i + 1);
+      label.dataset.short = number ?? String(i + 1);
       this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0), area: panelArea(panel) });
     });
     // Larger panels keep their full labels first (unclutterPanelLabels).

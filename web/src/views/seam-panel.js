@@ -75,8 +75,14 @@ export class SeamPanel {
     this.connections.replaceChildren(...design.connections.map((c, i) => this.connectionRow(c, i)));
     this.problems.replaceChildren(
       ...(segmentation?.problems ?? []).map((p) => {
-        const li = el('li', `problem ${p.severity}`, p.message);
+        const li = el('li', `problem ${p.severity}`);
         li.dataset.code = p.code ?? '';
+        // Clicked, a problem turns the view to its place and marks it (and selects its seam).
+        const show = el('button', 'problem-text', p.message);
+        show.type = 'button';
+        show.title = 'Show where on the model';
+        show.addEventListener('click', () => this.editor.showProblem(p));
+        li.append(show);
         return li;
       }),
     );

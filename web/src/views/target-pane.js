@@ -1,7 +1,7 @@
 // The target pane: the target mesh at its real size (meters), its seams and segments, and picking of
 // surface points (triangle + barycentric coordinates) for the seam tool.
 import {
-  BufferAttribute, BufferGeometry, DoubleSide, Group, Mesh, MeshBasicMaterial, MeshStandardMaterial, PlaneGeometry, Raycaster, Triangle,
+  BufferAttribute, BufferGeometry, DoubleSide, Group, Mesh, MeshBasicMaterial, MeshStandardMaterial, PlaneGeometry, Raycaster, SphereGeometry, Triangle,
   Vector2, Vector3,
 } from 'three';
 import { Pane3D } from './pane3d.js';
@@ -54,6 +54,11 @@ const SYMMETRY_MATERIAL = new MeshBasicMaterial({
   color: 0x0072b2, transparent: true, opacity: 0.12, side: DoubleSide, depthWrite: false,
 });
 
+const PLACE_MATERIAL = new MeshBasicMaterial({
+  // A problem's place: a ring of color seen through the target.
+  color: 0xd55e00, transparent: true, opacity: 0.35, depthTest: false, depthWrite: false,
+});
+
 const PUSH_BACK = { polygonOffset: true, polygonOffsetFactor: 1, polygonOffsetUnits: 1 };
 
 export class TargetPane extends Pane3D {
@@ -66,6 +71,11 @@ export class TargetPane extends Pane3D {
     this.mesh = null;
     this.seams = null;
     this.raycaster = new Raycaster();
+    // Segment numbers on the model ("3"), the same as their panels' ("Panel 3") and their problems'.
+    this.labels = document.createElement('div');
+    this.labels.className = 'pane-labels';
+    element.parentElement.append(this.labels);
+    this.segmentLabels = []; // { label, at (target units), problem }
   }
 
   requestRender() {
@@ -89,6 +99,8 @@ export class TargetPane extends Pane3D {
     this.mesh = new Mesh(geometry, this.material);
     this.connections = null;
     this.symmetry = null;
+    this.placeMark = null;
+    this.setSegmentLabels();
     this.seams = new SeamLayer(geometry.boundingSphere.radius * 0.012);
     this.mesh.add(this.seams);
     this.mesh.scale.setScalar(0); // forces setScale to place and frame it
@@ -109,8 +121,9 @@ export class TargetPane extends Pane3D {
 
   // The target cut into segments, each in its own color (segments that are not disks in red). The
   // original target stays for picking, undrawn; the segments mesh shares its transform.
-  setSegments({ positions, indices, faceSegment, segments }) {
+  setSegments({ positions, indices, faceSegment, segments, problems }) {
     this.clearSegments();
+    this.setSegmentLabels(segments, problems);
     if (!this.mesh || !segments || segments.length < 2) {
       this.material.visible = true;
       this.requestRender();
@@ -132,6 +145,40 @@ export class TargetPane extends Pane3D {
     this.mesh.add(this.segmentsMesh);
     this.material.visible = false;
     this.requestRender();
+  }
+
+  // segments: the segmentation's ({ label: [x, y, z] in target units, isDisk }); problems mark their labels.
+  setSegmentLabels(segments = [], problems = []) {
+    this.labels.replaceChildren();
+    this.segmentLabels = [];
+    if (segments.length < 2) return this.requestRender();
+    const troubled = new Set(problems.filter((p) => p.segment >= 0).map((p) => p.segment));
+    segments.forEach((segment, i) => {
+      if (!segment.label) return;
+      const label = document.createElement('div');
+      label.className = `segment-label${troubled.has(i) || segment.isDisk === false ? ' problem' : ''}`;
+      label.textContent = String(i + 1);
+      label.title = `Segment ${i + 1}: it becomes panel ${i + 1}`;
+      label.dataset.segment = String(i + 1);
+      this.labels.append(label);
+      this.segmentLabels.push({ label, at: new Vector3(...segment.label) });
+    });
+    this.requestRender();
+  }
+
+  // Each segment label over its point, hidden where the model is in front of it.
+  placeLabels() {
+    if (!this.mesh || !this.segmentLabels.length) return;
+    const r = this.element.getBoundingClientRect();
+    const top = this.element.offsetTop;
+    const p = new Vector3();
+    for (const { label, at } of this.segmentLabels) {
+      p.copy(at);
+      this.mesh.localToWorld(p).project(this.camera);
+      label.hidden = Math.abs(p.x) > 1 || Math.abs(p.y) > 1 || !this.isVisible(at);
+      label.style.left = `${((p.x + 1) / 2) * r.width}px`;
+      label.style.top = `${top + ((1 - p.y) / 2) * r.height}px`;
+    }
   }
 
   clearSegments() {
@@ -211,6 +258,43 @@ export class TargetPane extends Pane3D {
     return { point: { face: hit.faceIndex, bary: [bary.x, bary.y, bary.z] }, position: [local.x, local.y, local.z] };
   }
 
+  // Turns the view towards a place on the target (its own units) and rings it: where a problem is. radius in
+  // the target's units (0: a size that reads at the target's scale). null clears the mark.
+  showPlace(position, radius = 0) {
+    if (this.placeMark) {
+      this.placeMark.parent?.remove(this.placeMark);
+      this.placeMark.geometry.dispose();
+      this.placeMark = null;
+    }
+    if (!this.mesh || !position) return this.requestRender();
+    const local = new Vector3(...position);
+    const size = this.mesh.geometry.boundingSphere.radius;
+    const r = radius > 0 ? Math.min(radius, 0.3 * size) : 0.08 * size;
+    this.placeMark = new Mesh(new SphereGeometry(r, 24, 16), PLACE_MATERIAL);
+    this.placeMark.position.copy(local);
+    this.placeMark.renderOrder = 3;
+    this.placeMark.raycast = () => {};
+    this.placeMark.name = 'place';
+    this.mesh.add(this.placeMark);
+    this.mesh.updateMatrixWorld(true);
+    this.turnTowards(this.mesh.localToWorld(local.clone()));
+    this.requestRender();
+  }
+
+  // Whether a point on the target's surface (its own units, a Vector3 or [x, y, z]) is seen from the camera:
+  // nothing of the target lies between (a point behind the model is not one to click, snap to or label).
+  isVisible(position) {
+    if (!this.mesh) return false;
+    const world = this.mesh.localToWorld(Array.isArray(position) ? new Vector3(...position) : position.clone());
+    const eye = this.camera.position;
+    const distance = eye.distanceTo(world);
+    this.raycaster.set(eye, world.clone().sub(eye).normalize());
+    const hit = this.raycaster.intersectObject(this.mesh, false)[0];
+    // A point on the surface is hit at its own distance, give or take a sliver of the model's size.
+    const tolerance = 0.002 * this.mesh.geometry.boundingSphere.radius * this.mesh.scale.x;
+    return !hit || hit.distance >= distance - tolerance;
+  }
+
   // Screen distance in pixels between a pointer event and a point in the target's own coordinates.
   screenDistance(event, position) {
     const r = this.element.getBoundingClientRect();
@@ -224,5 +308,6 @@ export class TargetPane extends Pane3D {
     const r = this.element.getBoundingClientRect();
     this.seams?.setResolution(r.width, r.height);
     super.render(renderer, aspect);
+    this.placeLabels();
   }
 }

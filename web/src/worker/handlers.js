@@ -7,6 +7,11 @@ const STEP_MILLIS = 30; // short steps keep cancel responsive
 const PANELS_EVERY_MS = 500; // how often an optimization streams its panels (their JSON costs a little)
 const PREVIEW_MILLIS = 120; // how often the inflating shape is streamed to the page
 
+// A distanceToTarget's figures without its per-vertex arrays (both ways: see SolverApi.distanceToTarget).
+function distanceSummary({ rms, max, diagonal, targetRms, targetMax, uncovered, uncoveredDistance }) {
+  return { rms, max, diagonal, targetRms, targetMax, uncovered, uncoveredDistance };
+}
+
 export function createHandlers(api) {
   const state = { target: null };
 
@@ -101,23 +106,32 @@ export function createHandlers(api) {
       const flattenedText = JSON.stringify(start.pattern);
       // Every iterate streams: its inflated shape with its distance to the target, and every half second
       // the panels themselves (paper Sec. 5: the designer watches the optimization).
-      const mesh = session.optimizedMesh();
-      const surface = outerSurface(mesh.triangles, mesh.outer);
+      let mesh = session.optimizedMesh();
+      let surface = outerSurface(mesh.triangles, mesh.outer);
       const iterate = () => {
         const positions = session.optimizedPositions();
         const d = scale > 0 ? session.distanceToTarget(positions, scale, surface) : null;
-        return { positions: new Float32Array(positions), distances: d?.distances, distance: d && { rms: d.rms, max: d.max, diagonal: d.diagonal } };
+        return { positions: new Float32Array(positions), distances: d?.distances, targetDistances: d?.targetDistances, distance: d && distanceSummary(d) };
       };
       // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
-      yield { stage: 'optimizing', iteration: 0, flattenedText, triangles: mesh.triangles.slice(), outer: mesh.outer.slice(), ...iterate() };
+      const meshOf = () => ({ triangles: mesh.triangles.slice(), outer: mesh.outer.slice() });
+      yield { stage: 'optimizing', iteration: 0, flattenedText, ...meshOf(), ...iterate() };
       let status;
+      let remeshings = 0;
       let lastPanels = performance.now();
       for (;;) {
         status = session.optimizeStep(1, STEP_MILLIS);
         if (status.state === 'failed') throw new SolverError('optimize.failed', status.message);
+        // Panels meshed anew (sliding seams) make a new sewn mesh: its triangles go with the iterate.
+        const remeshed = status.remeshings !== remeshings;
+        if (remeshed) {
+          remeshings = status.remeshings;
+          mesh = session.optimizedMesh();
+          surface = outerSurface(mesh.triangles, mesh.outer);
+        }
         const panels = performance.now() - lastPanels > PANELS_EVERY_MS ? { patternText: JSON.stringify(session.optimizedPattern()) } : {};
         if (panels.patternText) lastPanels = performance.now();
-        yield { stage: 'optimizing', ...status, ...iterate(), ...panels };
+        yield { stage: 'optimizing', ...status, ...iterate(), ...(remeshed ? meshOf() : {}), ...panels };
         if (status.state !== 'running' || status.iteration >= maxIterations) break;
       }
       return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status };

@@ -179,6 +179,7 @@ export class TargetSession {
     const pos = Float64Array.from(positions);
     const idx = Int32Array.from(indices);
     this.api.withHeap([pos, idx], (p, i) => SolverApi.unwrap(this.session.setTarget(p, pos.length / 3, i, idx.length / 3)));
+    this.targetVertices = pos.length / 3;
   }
 
   // seam: { points: [{ face, bary }], closed } -> { curve, faces, barys, controls, controlSamples, length }
@@ -238,13 +239,19 @@ export class TargetSession {
 
   // positions (#V*3, meters) -> { distances: Float32Array #V (signed, meters, positive outside the target),
   // rms, max (of |d| over the target box's diagonal, over the corners of `surface`, #S*3 vertex indices such
-  // as the outer triangles; over all points when empty), diagonal [m] }; scale: meters per target unit.
+  // as the outer triangles; over all points when empty), diagonal [m] }; scale: meters per target unit. With a
+  // surface also the other way, the target's to the shape: targetRms, targetMax, uncovered (the parts of the
+  // target left out: [{ area, max, position, radius, where }]) and targetDistances (Float32Array #target vertices,
+  // meters).
   distanceToTarget(positions, scale, surface = []) {
     const pos = Float64Array.from(positions);
     const tris = Int32Array.from(surface);
     const n = pos.length / 3;
     const summary = this.api.withHeap([pos, tris], (p, t) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale, t, tris.length / 3)));
-    return { ...summary, distances: new Float32Array(this.api.fromHeap(Float64Array, this.session.distancesPtr(), n)) };
+    const distances = new Float32Array(this.api.fromHeap(Float64Array, this.session.distancesPtr(), n));
+    if (summary.targetRms === undefined) return { ...summary, distances };
+    const targetDistances = new Float32Array(this.api.fromHeap(Float64Array, this.session.targetDistancesPtr(), this.targetVertices));
+    return { ...summary, distances, targetDistances };
   }
 
   // The sewn pattern of the current seams: { ok, pattern (object), figures, problems }.

@@ -1,0 +1,94 @@
+// A designer's own shape: figures that do not mislead and problems that say where. The distance to the
+// target is measured both ways, and a part of the target the inflated shape leaves out is a warning that
+// turns the view to it and shows it (the target's uncovered parts, translucent, in the distance colors).
+// Segments carry the numbers of their panels on the model; a problem in the seam panel, clicked, shows its
+// place. A run stopped at its limit says so.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openFreshPage, openDesignFixture, optimizedResultShown, screenshot, useBrowser } from './harness.mjs';
+
+const env = useBrowser({ before, after });
+
+test('two discs for a sphere: distance both ways, the parts left out shown where they are', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  const statuses = [];
+  await page.exposeFunction('recordStatus', (s) => statuses.push(s));
+  await page.evaluate(() => new MutationObserver(() => window.recordStatus(document.querySelector('#status').textContent))
+    .observe(document.querySelector('#status'), { childList: true, subtree: true, characterData: true }));
+  await openDesignFixture(page, 'sphere-equator.billow.json');
+  await optimizedResultShown(page);
+  // Every optimizing status gives both ways, the worse first.
+  const steps = statuses.filter((s) => /^Optimizing the panels: step [1-9]/.test(s));
+  assert.ok(steps.length > 0, statuses.slice(-5).join(' | '));
+  for (const s of steps) assert.match(s, /distance [\d.]+ % (target → inflated|inflated → target), [\d.]+ % (inflated → target|target → inflated)/);
+  const status = await page.evaluate(() => window.billow.app.optimized.status);
+  assert.ok(status.targetDistanceRms > status.distanceRms, `two flat discs miss the sphere's poles: ${JSON.stringify(status)}`);
+  assert.match(steps.at(-1), /distance [\d.]+ % target → inflated, [\d.]+ % inflated → target/, 'the worse way leads');
+  // The end says how the optimizer ended.
+  await page.waitForFunction(() => /^Inflated the optimized panels: (settled after \d+ steps?|stopped at the optimizer's limit)/.test(document.querySelector('#status').textContent));
+
+  // Segments 1 and 2 on the model, panels 1 and 2 in the pattern.
+  assert.deepEqual(await page.$$eval('#pane-target .segment-label, .segment-label', (els) => els.map((e) => e.textContent).sort()), ['1', '2']);
+  assert.ok(await page.$$eval('.segment-label', (els) => els.some((e) => !e.hidden)), 'a segment number is in view');
+  assert.deepEqual(await page.$$eval('.panel-label', (els) => els.map((e) => e.firstChild.textContent).sort()), ['Panel 1', 'Panel 2']);
+
+  // What the discs leave out of the sphere: a warning that says where and shows it.
+  const warning = page.locator('.message.warning', { hasText: /of the target/ }).first();
+  await warning.waitFor({ timeout: 30000 });
+  const text = await warning.textContent();
+  assert.match(text, /near the (top|bottom|left|right|front|back|middle)/);
+  assert.match(text, /More seams|A seam around that part/);
+  assert.equal(await page.inputValue('#color-select'), 'wrinkles');
+  await warning.locator('button.locate').click();
+  assert.equal(await page.inputValue('#color-select'), 'distance', 'showing it picks the distance colors');
+  const shown = await page.evaluate(() => {
+    const app = window.billow.app;
+    const ghost = app.panes.inflated.uncoveredMesh;
+    return { mark: Boolean(app.panes.target.placeMark), ghost: Boolean(ghost?.visible), triangles: ghost ? ghost.geometry.index.count / 3 : 0,
+      note: document.querySelector('#pane-inflated .legend .note').textContent };
+  });
+  assert.ok(shown.mark, 'the place is marked on the target');
+  assert.ok(shown.ghost && shown.triangles > 10, `the uncovered target is drawn (${shown.triangles} triangles)`);
+  assert.match(shown.note, /target → inflated.*inflated → target|inflated → target.*target → inflated/);
+  assert.match(shown.note, /Translucent blue: parts of the target the inflated shape leaves out/);
+  await page.waitForTimeout(100);
+  await screenshot(page, 'designer-shape-uncovered');
+  // Back to wrinkles: the ghost goes with the distance colors.
+  await page.selectOption('#color-select', 'wrinkles');
+  assert.equal(await page.evaluate(() => window.billow.app.panes.inflated.uncoveredMesh.visible), false);
+  // A new seam layout takes the warning away with its cause until the new result says otherwise.
+  await page.evaluate(() => window.billow.app.warnUncovered([]));
+  assert.equal(await page.locator('.message.warning', { hasText: /of the target/ }).count(), 0);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('a problem in the seam panel, clicked, turns the view to its place and selects its seam', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  // A seam across the sphere that does not close: it cuts a slit, not a panel.
+  const design = {
+    format: 'billow-design', version: 1, target: { example: 'sphere' }, size: { height: 0.5 },
+    seams: [{ name: 'slit', closed: false, weight: 1, points: [[1, 0, 0], [0, 0, 1], [-1, 0, 0]] }],
+  };
+  await page.setInputFiles('#file-input', { name: 'slit.billow.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(design)) });
+  const problem = page.locator('#seam-panel .problem .problem-text').first();
+  await problem.waitFor({ timeout: 30000 });
+  const texts = await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent));
+  assert.equal(new Set(texts).size, texts.length, `no two problems share a text: ${texts.join(' | ')}`);
+  assert.ok(texts.some((t) => /^(Segment 1, near|Seam 1 )/.test(t)), texts.join(' | '));
+  const before = await page.evaluate(() => window.billow.app.panes.target.viewDirection().toArray());
+  await page.locator('#seam-panel .problem .problem-text', { hasText: 'Seam 1' }).first().click();
+  const after = await page.evaluate(() => ({
+    direction: window.billow.app.panes.target.viewDirection().toArray(),
+    mark: window.billow.app.panes.target.placeMark?.position.toArray() ?? null,
+    selection: window.billow.app.seams.selection,
+  }));
+  assert.ok(after.mark, 'the place is marked');
+  assert.equal(after.selection?.seam, 0, 'its seam is selected');
+  // The view looks at the mark from outside: the direction from the centre to the mark.
+  const turned = Math.hypot(...after.direction.map((d, i) => d - before[i]));
+  assert.ok(turned > 0.01 || Math.hypot(...after.mark) > 0, `the view turned (${turned})`);
+  await screenshot(page, 'designer-shape-problem');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
