@@ -8,6 +8,7 @@ import {
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { layoutPattern } from './pattern-layout.js';
 import { panelTint, seamColor } from './palette.js';
+import { unclutterLabels } from './label-rule.js';
 
 export class PatternPane {
   constructor(element, viewport) {
@@ -151,7 +152,7 @@ export class PatternPane {
       label.dataset.short = number ?? String(i + 1);
       this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0), area: panelArea(panel) });
     });
-    // Larger panels keep their full labels first (unclutterPanelLabels).
+    // Larger panels keep their full labels first (labelOrder).
     this.panelLabels = this.labelAnchors.filter((a) => a.area !== undefined).sort((a, b) => b.area - a.area);
     if (this.cut) {
       this.drawCutLines(this.cut.cutLines);
@@ -356,7 +357,7 @@ export class PatternPane {
         label.classList.toggle('selected', id === this.selectedSeam);
         label.classList.toggle('own', Boolean(this.ownSeams?.has(id)));
         this.labels.append(label);
-        this.seamLabelAnchors.push({ label, id, at: new Vector3(at[0] + t * (at[2] - at[0]), at[1] + t * (at[3] - at[1]), 0) });
+        this.seamLabelAnchors.push({ label, id, length: run.length, at: new Vector3(at[0] + t * (at[2] - at[0]), at[1] + t * (at[3] - at[1]), 0) });
       }
     }
     this.viewport.requestRender();
@@ -498,27 +499,20 @@ export class PatternPane {
       label.style.left = `${((p.x + 1) / 2) * r.width}px`;
       label.style.top = `${top + ((1 - p.y) / 2) * r.height}px`;
     }
-    this.unclutterPanelLabels();
+    unclutterLabels(this.labelOrder());
   }
 
-  // A panel label that would overlap the label of a larger panel shows only the panel's number (its name
-  // and size are on the cut file), or nothing while even that would overlap (zooming in brings it back):
-  // small pieces crowded together stay readable.
-  unclutterPanelLabels() {
-    const kept = [];
-    const hits = (b) => kept.some((k) => b.left < k.right && k.left < b.right && b.top < k.bottom && k.top < b.bottom);
-    for (const { label } of this.panelLabels) {
-      const compact = (on) => {
-        label.classList.toggle('compact', on);
-        label.firstChild.textContent = on ? label.dataset.short : label.dataset.full;
-        return label.getBoundingClientRect();
-      };
-      label.classList.remove('crowded');
-      let box = compact(false);
-      if (hits(box)) box = compact(true);
-      if (hits(box)) label.classList.add('crowded'); // even the number: hidden until zoomed in
-      else kept.push(box);
-    }
+  // The order in which labels keep their places (label-rule.js): the sheet's size, the selected seam, the
+  // panels (larger first: their names and sizes are read most), then the other seams (longer first).
+  labelOrder() {
+    const seams = this.seamLabelsShown ? this.seamLabelAnchors : [];
+    const selected = (s) => s.id === this.selectedSeam;
+    return [
+      ...this.labelAnchors.filter((a) => a.area === undefined).map(({ label }) => ({ label, always: true })),
+      ...seams.filter(selected).map(({ label }) => ({ label, always: true })),
+      ...this.panelLabels,
+      ...seams.filter((s) => !selected(s)).sort((a, b) => b.length - a.length),
+    ];
   }
 }
 
