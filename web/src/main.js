@@ -19,6 +19,7 @@ import { Theme } from './app/theme.js';
 import { Help } from './app/help.js';
 import { Classroom, classroomRequested } from './app/classroom.js';
 import { LayoutCompare } from './app/compare.js';
+import { statusTooltip } from './views/status-line.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -30,6 +31,7 @@ const panes = {
   pattern: new PatternPane(body('pane-pattern'), viewport),
 };
 linkViews(panes.target, panes.inflated); // the target and its inflated shape, seen from the same side
+statusTooltip($('status'));
 const messages = new Messages($('messages'));
 const theme = new Theme({
   onChange: (t) => {
