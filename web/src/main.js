@@ -20,6 +20,7 @@ import { Help } from './app/help.js';
 import { Classroom, classroomRequested } from './app/classroom.js';
 import { LayoutCompare } from './app/compare.js';
 import { statusTooltip } from './views/status-line.js';
+import { dockBoxes } from './views/boxes.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -31,6 +32,8 @@ const panes = {
   pattern: new PatternPane(body('pane-pattern'), viewport),
 };
 linkViews(panes.target, panes.inflated); // the target and its inflated shape, seen from the same side
+$('inflated-dock').append(panes.inflated.legend); // the colors' legend under the figures, beside the shape
+dockBoxes();
 statusTooltip($('status'));
 const messages = new Messages($('messages'));
 const theme = new Theme({

@@ -5,6 +5,7 @@ import {
   AmbientLight, Box3, DirectionalLight, HemisphereLight, PerspectiveCamera, Scene, Sphere, Vector3,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
+import { freeArea, watchOverlays } from './free-area.js';
 
 const DEFAULT_VIEW = new Vector3(0.35, 0.3, 1).normalize(); // from the front, a little right and above
 
@@ -24,7 +25,36 @@ export class Pane3D {
     this.controls = new OrbitControls(this.camera, element);
     this.controls.enableDamping = false;
     this.controls.addEventListener('change', () => viewport.requestRender());
+    this.square = null; // where the view is framed: { left, top, side } in client pixels (fitView)
+    this.fitKey = '';
     viewport.add(this);
+    watchOverlays(element.parentElement, () => viewport.requestRender()); // a box opened, closed or shown
+  }
+
+  // The view is framed in the free part of the pane (free-area.js): the largest square that fits there, centred
+  // in it, spans the field of view, and the rest of the pane shows what lies around it (setViewOffset), so a
+  // framed shape is never under a box and keeps its size while the boxes' contents change. With nothing over the
+  // pane the pane is the view, as three.js has it (the field of view spans its height; the classroom frames so).
+  fitView() {
+    const body = this.element.getBoundingClientRect();
+    if (!(body.width > 0 && body.height > 0)) return;
+    const free = freeArea(this.element);
+    const whole = free.left <= body.left + 0.5 && free.top <= body.top + 0.5 && free.right >= body.right - 0.5 && free.bottom >= body.bottom - 0.5;
+    const side = whole ? Math.min(body.width, body.height) : Math.min(free.right - free.left, free.bottom - free.top);
+    const x = whole ? (body.width - side) / 2 : free.left - body.left + (free.right - free.left - side) / 2;
+    const y = whole ? (body.height - side) / 2 : free.top - body.top + (free.bottom - free.top - side) / 2;
+    this.square = { left: body.left + x, top: body.top + y, side };
+    const key = whole ? `${body.width} ${body.height}` : `${body.width} ${body.height} ${x} ${y} ${side}`;
+    if (key === this.fitKey) return;
+    this.fitKey = key;
+    if (whole) {
+      this.camera.clearViewOffset();
+      this.camera.aspect = body.width / body.height;
+      this.camera.updateProjectionMatrix();
+    } else {
+      this.camera.aspect = 1;
+      this.camera.setViewOffset(side, side, -x, -y, body.width, body.height);
+    }
   }
 
   // The unit direction from the orbit centre to the camera.
@@ -33,14 +63,18 @@ export class Pane3D {
     return d.lengthSq() > 0 ? d.normalize() : DEFAULT_VIEW.clone();
   }
 
-  // Frames the object: camera distance from its bounding sphere and the field of view, seen from where the
-  // camera already looks (a new shape does not undo the designer's turning of the view), or with reset from
-  // the default three-quarter front view.
+  // Frames the object: camera distance from its bounding sphere and the field of view, whole in the free part
+  // of the pane (fitView), seen from where the camera already looks (a new shape does not undo the designer's
+  // turning of the view), or with reset from the default three-quarter front view.
   frame(object, { reset = false } = {}) {
     const sphere = new Box3().setFromObject(object).getBoundingSphere(new Sphere());
     if (!Number.isFinite(sphere.radius) || sphere.radius <= 0) return;
     const direction = reset ? DEFAULT_VIEW.clone() : this.viewDirection();
-    const distance = (sphere.radius / Math.sin((this.camera.fov * Math.PI) / 360)) * 1.05;
+    this.fitView();
+    const half = (this.camera.fov * Math.PI) / 360;
+    // The framed square spans the field of view; a whole pane narrower than tall spans less of it across.
+    const across = this.camera.view?.enabled ? half : Math.atan(Math.tan(half) * Math.min(1, this.camera.aspect));
+    const distance = (sphere.radius / Math.sin(across)) * 1.05;
     this.camera.position.copy(sphere.center).addScaledVector(direction, distance);
     this.camera.near = distance / 100;
     this.camera.far = distance * 100;
@@ -61,11 +95,8 @@ export class Pane3D {
     this.controls.dispatchEvent({ type: 'change' });
   }
 
-  render(renderer, aspect) {
-    if (this.camera.aspect !== aspect) {
-      this.camera.aspect = aspect;
-      this.camera.updateProjectionMatrix();
-    }
+  render(renderer) {
+    this.fitView();
     renderer.render(this.scene, this.camera);
   }
 }

@@ -9,6 +9,7 @@ import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { layoutPattern } from './pattern-layout.js';
 import { panelTint, seamColor } from './palette.js';
 import { unclutterLabels } from './label-rule.js';
+import { freeArea, watchOverlays } from './free-area.js';
 
 export class PatternPane {
   constructor(element, viewport) {
@@ -40,7 +41,14 @@ export class PatternPane {
     this.selectedSeam = null; // seam id, -1 for the free edges, or null
     this.onSeamPick = null; // (id | null) => void: a click on a seam (-1: a free edge) or beside every seam
     this.pickSeams(element);
+    // The pieces stay framed in the free part of the pane when it changes (the window resized, the seam
+    // allowances opened beside them) until the designer pans or zooms.
+    this.framed = false;
+    this.controls.addEventListener('start', () => {
+      this.framed = false;
+    });
     viewport.add(this);
+    watchOverlays(element.parentElement, () => this.resize());
   }
 
   // The grid's colors (the axes, the 10 cm lines), from the theme.
@@ -461,22 +469,31 @@ export class PatternPane {
     this.panelLabels = [];
   }
 
+  // Fits the object in the free part of the pane (free-area.js: beside the figures, the messages and the seam
+  // allowances), with a margin: the view's centre moves so that the object's centre is the free part's.
   frame(object) {
     const box = new Box3().setFromObject(object);
     if (box.isEmpty()) return;
     const center = box.getCenter(new Vector3());
     const size = box.getSize(new Vector3());
-    this.halfHeight = 0.6 * Math.max(size.y, size.x / this.aspect());
+    const body = this.element.getBoundingClientRect();
+    if (!(body.width > 0 && body.height > 0)) return;
+    const free = freeArea(this.element, size.y > 0 ? size.x / size.y : 1);
+    const pixels = 1.2 * Math.max(size.y / (free.bottom - free.top), size.x / (free.right - free.left)); // meters per pixel
+    this.halfHeight = (pixels * body.height) / 2;
+    const dx = ((free.left + free.right) / 2 - (body.left + body.right) / 2) * pixels;
+    const dy = ((free.top + free.bottom) / 2 - (body.top + body.bottom) / 2) * pixels;
     this.camera.zoom = 1;
-    this.controls.target.set(center.x, center.y, 0);
-    this.camera.position.set(center.x, center.y, 5);
+    this.controls.target.set(center.x - dx, center.y + dy, 0);
+    this.camera.position.set(center.x - dx, center.y + dy, 5);
     this.controls.update();
+    this.framed = true;
     this.viewport.requestRender();
   }
 
-  aspect() {
-    const r = this.element.getBoundingClientRect();
-    return r.height > 0 ? r.width / r.height : 1;
+  // The pane or its free part changed size (Viewport, watchOverlays).
+  resize() {
+    if (this.framed && this.pattern) this.frame(this.content);
   }
 
   render(renderer, aspect) {
