@@ -216,6 +216,82 @@ TEST(DesignJson, TargetsFromExamplesFilesAndInlineMeshes) {
   EXPECT_EQ(dirs[2], "/opt/billow/bin/../../web/public/examples");
 }
 
+// target.up: the values of tests/data/up-axis-cases.json, which tests/node/up-axis.test.mjs feeds to the app's
+// reader; the good ones are read and written back, the bad ones refused naming the field (or dropped with a
+// warning when not strict).
+TEST(DesignJson, UpAxisIsReadByTheSameRulesAsTheApp) {
+  const json cases = json::parse(readFileBytes(dataPath("up-axis-cases.json")));
+  for (const json& value : cases["good"]) {
+    const Design d = readDesignJson(with(minimal(), "/target/up"_json_pointer, value).dump());
+    EXPECT_EQ(toString(d.target.up), value.get<std::string>());
+    const json written = json::parse(writeDesignJson(d));
+    EXPECT_EQ(written["target"].contains("up"), value != "+y") << "Y up, the default, is left out";
+    EXPECT_EQ(readDesignJson(written.dump()).target.up, d.target.up);
+    Eigen::Matrix3d frame;
+    for (int i = 0; i < 3; ++i)
+      for (int k = 0; k < 3; ++k) frame(i, k) = cases["frames"][value.get<std::string>()][i][k].get<double>();
+    EXPECT_EQ(upFrame(d.target.up), frame) << value;
+    EXPECT_DOUBLE_EQ(frame.determinant(), 1.0) << value << " turns the target without mirroring it";
+  }
+  DesignReadOptions lenient;
+  lenient.strict = false;
+  for (const json& value : cases["bad"]) {
+    const json doc = with(minimal(), "/target/up"_json_pointer, value);
+    expectRefused(doc, "design.bad-value", "target.up");
+    std::vector<DesignWarning> warnings;
+    const Design d = readDesignJson(doc.dump(), lenient, &warnings);
+    ASSERT_EQ(warnings.size(), 1u) << value;
+    EXPECT_EQ(warnings[0].field, "target.up");
+    EXPECT_EQ(d.target.up, UpAxis{}) << "Y up instead of " << value;
+    EXPECT_EQ(d.target.name, "sphere") << "the target itself is kept";
+  }
+}
+
+// The height is the target's extent along its up axis (the app's heightScale has the same rule and the same
+// cases): koala.obj is 5.34 units high standing Y up and 9.21 long, its height when the file is read Z up.
+TEST(DesignJson, HeightIsMeasuredAlongTheUpAxis) {
+  const json cases = json::parse(readFileBytes(dataPath("up-axis-cases.json")));
+  for (const json& c : cases["sizes"]) {
+    const TriMesh mesh = test::loadShared(c["mesh"].get<std::string>());
+    Design d;
+    d.height = 0.6;
+    ASSERT_TRUE(parseUpAxis(c["up"].get<std::string>(), d.target.up));
+    const double height = c["size"][1].get<double>();
+    EXPECT_NEAR(designScale(d, mesh), 0.6 / height, 1e-9 * 0.6 / height) << c["up"];
+    const Vertices turned = mesh.V * upFrame(d.target.up).transpose();
+    const Eigen::Vector3d size = turned.colwise().maxCoeff() - turned.colwise().minCoeff();
+    for (int i = 0; i < 3; ++i) EXPECT_NEAR(size[i], c["size"][i].get<double>(), 1e-9) << c["up"] << " axis " << i;
+  }
+  // A target flat along its up axis has no height to scale by.
+  TriMesh flat = test::loadShared("koala.obj");
+  flat.V.col(2).setZero();
+  Design d;
+  d.target.up = {2, 1};
+  try {
+    designScale(d, flat);
+    ADD_FAILURE();
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "design.bad-target");
+    EXPECT_NE(std::string(e.what()).find("up axis (z)"), std::string::npos) << e.what();
+  }
+}
+
+// Problems say where as the target stands: a seam ending near the sphere's +z pole ends "near the front" of a
+// Y-up target and "near the top" of the same target read Z up.
+TEST(DesignJson, ProblemPlacesAreWordedAsTheTargetStands) {
+  json doc = minimal();
+  doc["seams"] = {{{"points", {{0.15, 0.1, 0.98}, {-0.15, 0.1, 0.98}}}}};
+  const auto endsWhere = [&](const json& design) {
+    const auto scene = makeDesignScene(readDesignJson(design.dump()), "", {examplesDir()});
+    for (const SegmentationProblem& p : scene->segmentation.problems)
+      if (p.message.find("ends in the middle") != std::string::npos) return p.message;
+    return std::string("(no problem about the seam's end)");
+  };
+  EXPECT_NE(endsWhere(doc).find("near the front of"), std::string::npos) << endsWhere(doc);
+  const std::string zUp = endsWhere(with(doc, "/target/up"_json_pointer, "+z"));
+  EXPECT_NE(zUp.find("near the top of"), std::string::npos) << zUp;
+}
+
 // ---- The CLI (native only: it runs the billow executable next to this test binary) ----
 
 TEST(CliDesign, SegmentWritesSegmentsAndFailsOnNonDisks) {

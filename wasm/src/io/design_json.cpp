@@ -147,6 +147,10 @@ bool readInlineMesh(FieldReader& r, const json& t, TriMesh& mesh) {
 
 bool readTarget(FieldReader& r, const json& t, DesignTarget& out) {
   if (!t.is_object()) return r.bad("target", "The target must be an object such as {\"example\": \"spot\"}.");
+  if (t.contains("up") && !(t["up"].is_string() && parseUpAxis(t["up"].get<std::string>(), out.up)))
+    r.bad("target.up",
+          "The target's up axis (target.up) must be one of \"+y\", \"-y\", \"+z\", \"-z\", \"+x\", \"-x\", not " +
+              t["up"].dump() + ".");
   const int kinds =
       int(t.contains("example")) + int(t.contains("obj")) + int(t.contains("file")) + int(t.contains("vertices"));
   if (kinds != 1)
@@ -275,6 +279,7 @@ std::string writeDesignJson(const Design& d, int indent) {
                                                              : "file";
     target[key] = d.target.name;
   }
+  if (d.target.up != UpAxis{}) target["up"] = toString(d.target.up);
   doc["target"] = target;
   json size = base("size");
   size.erase("height"), size.erase("scale");
@@ -347,9 +352,11 @@ TriMesh loadDesignTarget(const Design& d, const std::string& designPath, const s
 
 double designScale(const Design& d, const TriMesh& target) {
   if (d.scale > 0) return d.scale;
-  const double extent = target.numVertices() ? target.V.col(1).maxCoeff() - target.V.col(1).minCoeff() : 0.0;
+  const int k = d.target.up.axis;
+  const double extent = target.numVertices() ? target.V.col(k).maxCoeff() - target.V.col(k).minCoeff() : 0.0;
   if (!(extent > 0))
-    throw Error("design.bad-target", "The target is flat along its y axis, so its height cannot set its size.");
+    throw Error("design.bad-target", std::string("The target is flat along its up axis (") + char('x' + k) +
+                                         "), so its height cannot set its size.");
   return d.height / extent;
 }
 

@@ -3,20 +3,22 @@
 // validated; unknown fields are kept and written back.
 //   { "format": "billow-design", "version": 1,
 //     "target": { "example": "spot" } | { "obj": "cow.obj" } | { "file": "cow.obj" }
-//               | { "vertices": [[x, y, z], ...], "triangles": [[i, j, k], ...] },
+//               | { "vertices": [[x, y, z], ...], "triangles": [[i, j, k], ...] }, with "up": "+z" optional,
 //     "size": { "height": 0.6 } | { "scale": 0.01 },
 //     "seams": [ { "name": "belly", "closed": true, "weight": 1.0, "smooth": false,
 //                  "points": [ { "face": 812, "bary": [0.2, 0.3, 0.5] }, [0.01, 0.12, -0.03] ] } ],
 //     "connections": [ { "seams": [0, 3] } ],
 //     "material": { "name": "foil", "thickness": 2.5e-5, "youngs_modulus": 3.0e9 },
 //     "pressure": 1000.0 }
-// Sizes are meters along the target's own y axis; 3D seam points are in the target's own coordinates.
+// The height is meters along the target's up axis (its own y unless target.up names another); 3D seam points
+// are in the target's own coordinates.
 #pragma once
 #include <nlohmann/json.hpp>
 #include <string>
 #include <string_view>
 #include <vector>
 
+#include "mesh/up_axis.hpp"
 #include "seams/seam_curve.hpp"
 #include "simulate/sewn_pattern.hpp"
 
@@ -46,12 +48,13 @@ struct DesignTarget {
   // written, relative to the design file's folder (any format readMeshBytes knows, by extension).
   std::string name = "spot";
   TriMesh mesh;  // Inline
+  UpAxis up;     // which of its own axes points up ("up"): where it stands, and what its height is measured along
 };
 
 struct Design {
   int version = 1;
   DesignTarget target;
-  double height = 0.6;  // [m] along y; used when scale is 0
+  double height = 0.6;  // [m] along target.up; used when scale is 0
   double scale = 0;     // meters per target unit, when given instead of a height
   std::vector<DesignSeam> seams;
   std::vector<DesignConnection> connections;
@@ -86,7 +89,8 @@ std::vector<std::string> exampleSearchPath(const std::string& exeDir = "");
 TriMesh loadDesignTarget(const Design& design, const std::string& designPath,
                          const std::vector<std::string>& exampleDirs);
 
-// Meters per target unit: size.scale, else size.height / (y extent of the target).
+// Meters per target unit: size.scale, else size.height / (the target's extent along its up axis). The app's
+// scale (web/src/app/up-axis.js heightScale) has the same rule.
 double designScale(const Design& design, const TriMesh& targetOwnUnits);
 
 // The seams as SeamSpec on `target` (any uniform scale of the target the points were written for:

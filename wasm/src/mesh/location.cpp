@@ -14,14 +14,19 @@ int third(double v, double lo, double hi) {
 }
 }  // namespace
 
-std::string describeLocation(const Eigen::Vector3d& p, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi) {
+std::string describeLocation(const Eigen::Vector3d& p, const Eigen::Vector3d& lo, const Eigen::Vector3d& hi,
+                             const UpAxis& up) {
   static const char* kY[] = {"bottom", "", "top"};
   static const char* kX[] = {"left", "", "right"};
   static const char* kZ[] = {"back", "", "front"};
+  // The box turned into the up frame is still a box: its corners' min and max along each up-frame axis.
+  const Eigen::Matrix3d r = upFrame(up);
+  const Eigen::Vector3d a = r * lo, b = r * hi, q = r * p;
+  const Eigen::Vector3d boxLo = a.cwiseMin(b), boxHi = a.cwiseMax(b);
   std::vector<std::string> words;
-  const int y = third(p.y(), lo.y(), hi.y());
-  const int x = third(p.x(), lo.x(), hi.x());
-  const int z = third(p.z(), lo.z(), hi.z());
+  const int y = third(q.y(), boxLo.y(), boxHi.y());
+  const int x = third(q.x(), boxLo.x(), boxHi.x());
+  const int z = third(q.z(), boxLo.z(), boxHi.z());
   if (y != 1) words.push_back(kY[y]);
   if (x != 1) words.push_back(kX[x]);
   if (z != 1) words.push_back(kZ[z]);

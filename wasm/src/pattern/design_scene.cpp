@@ -40,7 +40,9 @@ std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::st
     scene->curves.push_back(buildSeamCurve(*scene->geodesic, *scene->projector, spec));
   scene->seamsMs = msSince(t1);
   const auto t2 = Clock::now();
-  scene->segmentation = segmentTarget(scene->target, scene->topology, scene->curves);
+  SegmentationOptions so;
+  so.up = design.target.up;  // the problems' places as the target stands
+  scene->segmentation = segmentTarget(scene->target, scene->topology, scene->curves, so);
   scene->segmentMs = msSince(t2);
   return scene;
 }

@@ -12,7 +12,8 @@ namespace {
 
 struct Box {
   Eigen::Vector3d lo, hi;
-  std::string where(const Eigen::Vector3d& p) const { return describeLocation(p, lo, hi); }
+  UpAxis up;
+  std::string where(const Eigen::Vector3d& p) const { return describeLocation(p, lo, hi, up); }
 };
 
 // A representative point of a segment: the centroid of its triangle nearest to its area centroid.
@@ -132,7 +133,7 @@ Segmentation segmentTarget(const TriMesh& target, const MeshTopology& topo, cons
   out.seamVertices = cut.seamVertices;
   labelSegments(cut, out);
   junctions(cut, out);
-  const Box box{target.V.colwise().minCoeff().transpose(), target.V.colwise().maxCoeff().transpose()};
+  const Box box{target.V.colwise().minCoeff().transpose(), target.V.colwise().maxCoeff().transpose(), options.up};
   double area = 0;
   for (const Segment& s : out.segments) area += s.area;
   segmentProblems(box, area, options, out);

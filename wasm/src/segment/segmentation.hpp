@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "mesh/up_axis.hpp"
 #include "segment/cut_mesh.hpp"
 
 namespace billow {
@@ -13,6 +14,7 @@ namespace billow {
 struct SegmentationOptions {
   double minSegmentAreaRatio = 1e-3;  // a segment below this share of the target's area is a sliver
   double tolerance = 1e-9;            // barycentric merge tolerance for seam points
+  UpAxis up;                          // the problems' places ("near the top left") as the target stands
 };
 
 struct BoundaryLoop {
