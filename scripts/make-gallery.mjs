@@ -267,13 +267,14 @@ async function makeResult(api, file) {
   const { findExample } = await import('../web/src/app/examples.js');
   const { createHandlers } = await import('../web/src/worker/handlers.js');
   const { optimizeArgs, resultKey, DEFAULT_RESOLUTION, RESULT_FORMAT, RESULT_VERSION } = await import('../web/src/app/stored-result.js');
+  const { heightScale } = await import('../web/src/app/up-axis.js');
   const { design } = parseDesign(JSON.parse(readFileSync(join(OUT, file), 'utf8')));
   const example = findExample(design.target.example);
   const bytes = readFileSync(join(ROOT, 'web/public/examples', example.file));
   const handlers = createHandlers(api);
   const arrayBuffer = bytes.buffer.slice(bytes.byteOffset, bytes.byteOffset + bytes.byteLength);
   const { report } = finish(handlers.loadTarget({ fileName: example.file, bytes: arrayBuffer }));
-  const scale = design.size.height / (report.stats.bbox_max[1] - report.stats.bbox_min[1]); // App.scaleFor
+  const scale = heightScale(design, report.stats); // App.scaleFor: the height along the target's up axis
   const optimized = finish(handlers.optimizeDesign({ ...optimizeArgs(design, DEFAULT_RESOLUTION), scale }));
   const pattern = roundPattern(JSON.parse(optimized.patternText));
   const inflated = finish(handlers.inflatePattern({ patternText: JSON.stringify(pattern) }));

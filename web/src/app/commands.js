@@ -89,6 +89,14 @@ export function setHeight(design, height) {
   return { ...design, size: { ...design.size, height } };
 }
 
+// up: which of the target's own axes points up ('+y', '-y', '+z', '-z', '+x', '-x'; up-axis.js). Y up, the
+// default, is written by leaving the field out, so designs made before it existed keep their stored results.
+export function setUp(design, up) {
+  const { up: old, ...target } = design.target;
+  if ((old ?? '+y') === up) return design;
+  return { ...design, target: up === '+y' ? target : { ...target, up } };
+}
+
 // material: { name, thickness [m], youngs_modulus [Pa], density? }
 export function setMaterial(design, material) {
   return { ...design, material: { ...material } };

@@ -7,6 +7,7 @@ import {
 } from './materials.js';
 import { DEFAULT_FABRICATION, parseFabrication } from './fabrication.js';
 import { parseSymmetry } from './symmetry.js';
+import { parseUp } from './up-axis.js';
 
 export const DESIGN_FORMAT = 'billow-design';
 export const DESIGN_VERSION = 1;
@@ -77,6 +78,7 @@ export function parseDesign(value) {
     warnings.push('The design names no target Billow knows; the default example is used instead.');
     design.target = { example: DEFAULT_EXAMPLE };
   }
+  design.target = parseUp(design.target, warnings);
   const height = value.size?.height;
   if (typeof height === 'number' && Number.isFinite(height) && height >= MIN_HEIGHT && height <= MAX_HEIGHT) {
     design.size = { ...value.size, height };

@@ -1,11 +1,13 @@
-// The target's statistics box: counts from validation, sizes in real units after the design's scale.
+// The target's statistics box: counts from validation, sizes in real units after the design's scale, width ×
+// height × depth as the target stands on its up axis (up-axis.js).
 import { formatLength, formatArea, formatVolume } from './units.js';
+import { upFrameSize } from './up-axis.js';
 import { renderStats } from '../views/stats-list.js';
 
-export function renderTargetStats(container, target, scale) {
+export function renderTargetStats(container, target, scale, up = '+y') {
   if (!target) return container.replaceChildren();
   const st = target.report.stats;
-  const size = [0, 1, 2].map((k) => (st.bbox_max[k] - st.bbox_min[k]) * scale);
+  const size = upFrameSize(st, up).map((extent) => extent * scale);
   const rows = [
     ['File', target.fileName],
     ['Vertices', st.vertices.toLocaleString('en')],
