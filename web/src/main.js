@@ -71,6 +71,7 @@ const app = new App({
     inflatedStats: $('inflated-stats'),
     exampleSelect: $('example-select'),
     heightInput: $('height-input'),
+    upSelect: $('up-select'),
     materialSelect: $('material-select'),
     pressureInput: $('pressure-input'),
     pressureUnit: $('pressure-unit'),
@@ -98,6 +99,7 @@ $('file-input').addEventListener('change', (event) => {
 });
 $('example-select').addEventListener('change', (event) => event.target.value && app.openExample(event.target.value));
 $('height-input').addEventListener('change', (event) => app.setHeight(Number(event.target.value)));
+$('up-select').addEventListener('change', (event) => app.setUp(event.target.value));
 $('material-select').addEventListener('change', (event) => app.setMaterialPreset(event.target.value));
 const pressureChanged = () => app.setPressure(Number($('pressure-input').value) * Number($('pressure-unit').value));
 $('pressure-input').addEventListener('change', pressureChanged);

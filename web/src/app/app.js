@@ -11,7 +11,9 @@ import { PatternSession, patternForDisplay } from './pattern-session.js';
 import { canonicalJson, optimizeArgs, resultKey, DEFAULT_RESOLUTION } from './stored-result.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
-import { setHeight, setMaterial, setPressure, setFabrication, setSeamAllowance } from './commands.js';
+import { setHeight, setUp, setMaterial, setPressure, setFabrication, setSeamAllowance } from './commands.js';
+import { upOf, heightScale, withGuessedUp } from './up-axis.js';
+import { standUp } from '../views/up-frame.js';
 import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters, formatSize } from './fabrication.js';
 import { download } from './download.js';
 import { renderStats } from '../views/stats-list.js';
@@ -26,7 +28,7 @@ export const PATTERN_EXAMPLES = [
 ];
 
 // What a design's panels are made from, besides the target and the resolution, as comparable text.
-const panelInputs = (design) => canonicalJson({ height: design.size.height, ...optimizeArgs(design, 0) });
+const panelInputs = (design) => canonicalJson({ height: design.size.height, up: design.target.up, ...optimizeArgs(design, 0) });
 
 const AUTOSAVE_KEY = 'current';
 const STORED_STATUS = 'Showing the stored result while it is refined live';
@@ -237,12 +239,17 @@ export class App {
       );
       if (ticket !== this.loadCounter) return; // a newer load won
       this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
+      const opened = design;
       if (this.awaited) design = this.awaited.attach(fileName, result, design); // the linked design, if this file is its mesh
+      // A designer's own file may be Z up (CAD, 3D printing): the guess goes into its new design (up-axis.js).
+      const guess = !quiet && design === opened ? withGuessedUp(design, result, fileName) : { design, notice: null };
+      design = guess.design;
       this.installTarget(fileName, result, design, stored);
       if (!stored) this.setStatus('Ready');
       // What the mesh report says belongs to this target: it goes with it (and the genus warning once seams cut
       // the handles open: SeamEditor.segment).
       this.messages.resolve('target.', { prefix: true });
+      if (guess.notice) this.messages.show('notice', guess.notice, [], { cause: 'target.up' });
       const shown = result.report.issues.filter((i) => i.severity !== 'error');
       for (const issue of shown)
         if (!quiet || issue.severity !== 'notice') this.messages.show(issue.severity, issue.message, [], { cause: `target.${issue.code}` });
@@ -291,12 +298,9 @@ export class App {
     return this.stored?.revision === this.revision && this.stored.triangles === this.resolution;
   }
 
-  // Mesh files carry no units: the design's height (m) fixes the scale of the target's own units.
+  // Mesh files carry no units: the design's height (m) along the target's up axis fixes the scale of its units.
   scaleFor(design) {
-    const st = this.target?.report.stats;
-    if (!st) return 1;
-    const height = st.bbox_max[1] - st.bbox_min[1];
-    return height > 0 ? design.size.height / height : 1;
+    return heightScale(design, this.target?.report.stats);
   }
 
   // Every change of the design goes through here: history, views, autosave.
@@ -581,9 +585,11 @@ export class App {
     const unit = Number(this.el.pressureUnit.value) || 1000;
     this.el.pressureInput.value = String(+(design.pressure / unit).toPrecision(6));
     this.panes.target.setScale(this.scaleFor(design));
+    this.el.upSelect.value = upOf(design);
+    standUp(this.panes, upOf(design)); // the target and its inflated shape stand on the design's up axis
     if (this.panes.inflated.targetScale !== this.scaleFor(design) || this.panes.inflated.targetOf !== this.target)
       this.panes.inflated.setTarget(this.target, this.scaleFor(design));
-    renderTargetStats(this.el.stats, this.target, this.scaleFor(design));
+    renderTargetStats(this.el.stats, this.target, this.scaleFor(design), upOf(design));
     this.el.undoButton.disabled = !this.history.canUndo;
     this.el.redoButton.disabled = !this.history.canRedo;
   }
@@ -598,7 +604,17 @@ export class App {
     const height = clampHeight(meters);
     if (height === this.design.size.height) return;
     this.commitDesign(setHeight(this.design, height), { mergeKey: 'height' });
+    this.remakePattern(); // the panels' size changed: the edit cancelled the running optimization (commitDesign)
   }
+  // Which of the target's own axes points up (up-axis.js): it stands on it and Height is measured along it, so
+  // like the height it changes the panels' size.
+  setUp(up) {
+    this.messages.resolve('target.up');
+    if (up === upOf(this.design)) return;
+    this.commitDesign(setUp(this.design, up));
+    this.remakePattern();
+  }
+
 
   undo() {
     this.history.undo();
