@@ -92,8 +92,8 @@ test('every visible control has a tooltip and a name, in every state of the page
   await check('mirror symmetry');
   await page.selectOption('#seam-panel select.symmetry', '');
   await page.click('#seam-panel button[data-tool="draw"]');
-  const body = await page.locator('#pane-target .pane-body').boundingBox();
-  await page.mouse.click(body.x + body.width / 2, body.y + body.height / 2);
+  const square = await page.evaluate(() => window.billow.app.panes.target.square); // where the target is framed
+  await page.mouse.click(square.left + square.side / 2, square.top + square.side / 2);
   await page.waitForSelector('#seam-panel .drawbar:not([hidden])');
   await check('drawing a seam');
   await page.keyboard.press('Escape');

@@ -119,7 +119,7 @@ export class LayoutCompare {
     };
   }
 
-  // The middle square of the inflated pane (where the shape is framed) as a small PNG (the renderer keeps
+  // The square of the inflated pane where the shape is framed, as a small PNG (the renderer keeps
   // its drawing buffer), or null.
   thumbnail() {
     const pane = document.querySelector('#pane-inflated .pane-body');
@@ -127,12 +127,12 @@ export class LayoutCompare {
     if (!pane || !canvas) return null;
     this.viewport.render();
     const box = canvas.getBoundingClientRect();
-    const r = pane.getBoundingClientRect();
-    if (r.width <= 0 || r.height <= 0) return null;
+    const square = this.app.panes.inflated.square; // where the shape is framed, beside the figures (Pane3D.fitView)
+    if (!(square?.side > 0)) return null;
     const scale = canvas.width / box.width;
-    const side = Math.min(r.width, r.height);
-    const left = r.left - box.left + (r.width - side) / 2;
-    const top = r.top - box.top + (r.height - side) / 2;
+    const { side } = square;
+    const left = square.left - box.left;
+    const top = square.top - box.top;
     const out = document.createElement('canvas');
     out.width = out.height = THUMB_SIZE;
     out.getContext('2d').drawImage(canvas, left * scale, top * scale, side * scale, side * scale, 0, 0, THUMB_SIZE, THUMB_SIZE);

@@ -66,7 +66,8 @@ export class SeamTool {
     this.app.seamTraces().forEach((trace, seam) => {
       if (!trace) return;
       const controls = this.app.design.seams[seam].points;
-      trace.controls.forEach((c, k) => consider(controls[k], c, seam, reach(SNAP_PX, event), 3)); // control points win close calls
+      // trace.controls is flat (x, y, z per control point); control points win close calls.
+      controls.forEach((point, k) => consider(point, Array.from(trace.controls.slice(3 * k, 3 * k + 3)), seam, reach(SNAP_PX, event), 3));
       for (let i = 0; i < trace.faces.length; i++) {
         const position = [trace.curve[3 * i], trace.curve[3 * i + 1], trace.curve[3 * i + 2]];
         const point = { face: trace.faces[i], bary: [trace.barys[3 * i], trace.barys[3 * i + 1], trace.barys[3 * i + 2]] };

@@ -6,6 +6,7 @@ import {
 } from 'three';
 import { Pane3D } from './pane3d.js';
 import { SeamLayer } from './seam-layer.js';
+import { unclutterLabels } from './label-rule.js';
 import { segmentColor, PROBLEM_COLOR } from './palette.js';
 
 const CONNECTION_MATERIAL = new MeshStandardMaterial({
@@ -179,6 +180,10 @@ export class TargetPane extends Pane3D {
       label.style.left = `${((p.x + 1) / 2) * r.width}px`;
       label.style.top = `${top + ((1 - p.y) / 2) * r.height}px`;
     }
+    // Numbers that would overlap: a segment with a problem keeps its number first, another one waits for a
+    // closer view (label-rule.js).
+    const shown = this.segmentLabels.filter(({ label }) => !label.hidden);
+    unclutterLabels(shown.sort((a, b) => b.label.classList.contains('problem') - a.label.classList.contains('problem')));
   }
 
   clearSegments() {
