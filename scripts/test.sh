@@ -44,8 +44,9 @@ suite() {
 suite native ctest ctest --test-dir "$NATIVE_DIR" --output-on-failure -j2
 suite wasm ctest ctest --test-dir "$WASM_DIR" --output-on-failure -j2
 suite node node node --test --test-timeout=120000 "$ROOT/tests/node/"
-# The timeout is per file as well as per test: the gallery file runs eight designs live (about 160 s here).
-suite e2e node node --test --test-concurrency=1 --test-timeout=300000 "$ROOT/tests/e2e/"
+# The timeout is per file as well as per test: the gallery file runs eight designs live (160 s alone, 300 s
+# and more with a build beside it on the second core).
+suite e2e node node --test --test-concurrency=1 --test-timeout=600000 "$ROOT/tests/e2e/"
 # A short libFuzzer run of every reader under ASan+UBSan (npm run fuzz runs longer): counts as one test.
 suite fuzz exit bash "$ROOT/scripts/fuzz.sh" "${BILLOW_FUZZ_SECONDS:-10}"
 
