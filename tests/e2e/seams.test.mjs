@@ -286,6 +286,49 @@ test('Escape cancels a seam being drawn and Backspace removes its last point', a
   await page.close();
 });
 
+test('a seam that would cross itself or cut off a tiny piece is shown as such while it is drawn', async () => {
+  const page = await openPage(env.context, env.server.url);
+  await openSphere(page);
+  await page.keyboard.press('d');
+  const note = page.locator('#pane-target ~ .pane-labels .draft-warning, .draft-warning').first();
+  const previewColor = () => page.evaluate(() => window.billow.app.panes.target.seams.items.children.at(-1)?.material.color.getHexString());
+  // A bow tie: a, b, c clicked, the cursor at d: the stretch c-d crosses a-b.
+  const [a, b, c, d] = await surfaceScreenPoints(page, [[0.6, 0.6, 1], [-0.6, -0.6, 1], [0.6, -0.6, 1], [-0.6, 0.6, 1]]);
+  for (const p of [a, b, c]) await clickAt(page, p);
+  assert.equal(await note.isHidden(), true, 'three points that do not cross: no note');
+  await page.mouse.move(d.x, d.y, { steps: 4 });
+  await note.waitFor({ state: 'visible', timeout: 10000 });
+  assert.equal(await note.textContent(), 'Crosses itself here');
+  assert.equal(await previewColor(), 'c62828', 'the preview turns red');
+  // The note sits by the crossing, between the four points on screen.
+  const box = await note.boundingBox();
+  assert.ok(box.x > Math.min(a.x, d.x) - 40 && box.x < Math.max(a.x, c.x) + 40, JSON.stringify({ box, a, c }));
+  await screenshot(page, 'seams-draft-crossing');
+  // Back off to a point that does not cross: the note goes.
+  const [e] = await surfaceScreenPoints(page, [[0.9, -0.1, 1]]);
+  await page.mouse.move(e.x, e.y, { steps: 4 });
+  await note.waitFor({ state: 'hidden', timeout: 10000 });
+  assert.equal(await previewColor(), '2f6fdd');
+  await page.keyboard.press('Escape');
+
+  // Zoomed in, a loop of three clicks a few pixels apart: closing it would cut off a tiny piece.
+  const [centre] = await surfaceScreenPoints(page, [[0, 0, 1]]);
+  await page.mouse.move(centre.x, centre.y);
+  for (let k = 0; k < 4; k++) await page.mouse.wheel(0, -300);
+  await page.waitForTimeout(300);
+  const [m] = await surfaceScreenPoints(page, [[0.2, 0.1, 1]]);
+  const loop = [{ x: m.x - 10, y: m.y + 8 }, { x: m.x + 10, y: m.y + 8 }, { x: m.x, y: m.y - 13 }];
+  for (const p of loop) await clickAt(page, p);
+  await page.mouse.move(loop[0].x, loop[0].y, { steps: 3 });
+  await note.waitFor({ state: 'visible', timeout: 10000 });
+  assert.equal(await note.textContent(), 'Closing here: cuts off a tiny piece');
+  await page.keyboard.press('Escape');
+  await note.waitFor({ state: 'hidden', timeout: 5000 });
+  assert.equal(await page.evaluate(() => window.billow.app.design.seams.length), 0, 'nothing was committed');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 test('an internal connection joins two seams: listed, drawn translucent, undoable and deletable', async () => {
   const page = await openPage(env.context, env.server.url);
   await openSphere(page);

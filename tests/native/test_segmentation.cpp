@@ -134,6 +134,31 @@ TEST(Segmentation, TwoCrossingGreatCirclesGiveFourDisks) {
   expectSound(scene, s);
 }
 
+TEST(Segmentation, TwoSeamsSideBySideMakeThinStripsWithAWarning) {
+  // Two great circles a small angle apart: the lunes between them are strips about 2θ/π wide (0.3 % of the
+  // diagonal), more than a sliver's area but too thin to sew. A wider angle is no problem.
+  for (const double angle : {0.015, 0.3}) {
+    Scene scene("sphere.obj");
+    scene.greatCircle({1, 0, 0}, {0, 1, 0});
+    scene.greatCircle({1, 0, 0}, {0, std::cos(angle), std::sin(angle)});
+    const Segmentation s = segmentTarget(scene.mesh, scene.topo, scene.seams);
+    ASSERT_EQ(s.segments.size(), 4u);
+    EXPECT_EQ(count(s, "segment.sliver"), 0);
+    if (angle < 0.1)
+      EXPECT_GE(count(s, "segment.thin"), 1) << "angle " << angle;
+    else
+      EXPECT_EQ(count(s, "segment.thin"), 0) << "angle " << angle;
+    EXPECT_TRUE(s.ok()) << "a thin strip is a warning: it can still be cut";
+    for (const SegmentationProblem& p : s.problems)
+      if (p.code == "segment.thin") {
+        EXPECT_NE(p.message.find("is a thin strip (about 0."), std::string::npos) << p.message;
+        EXPECT_LT(std::abs(p.location.y()), 1.0) << "placed on its own strip";
+        EXPECT_EQ(p.location, s.segments[p.segment].labelPoint);
+      }
+    expectSound(scene, s);
+  }
+}
+
 TEST(Segmentation, OpenSeamIsASlitWithAWarning) {
   Scene scene("sphere.obj");
   scene.add({scene.at({1, 0.2, 0}), scene.at({0.3, 0.2, 1}), scene.at({-0.5, 0.5, 0.7})}, false);

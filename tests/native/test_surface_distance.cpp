@@ -66,7 +66,7 @@ TEST(TargetCoverage, OneWayAloneMissesAHalfLeftOutAndBothWaysSeeIt) {
   const SurfaceProjector projector(spot);
   const double midZ = 0.5 * (spot.V.col(2).minCoeff() + spot.V.col(2).maxCoeff());
   const Triangles back = trianglesWhere(spot, [&](const Eigen::Vector3d& c) { return c.z() < midZ; });
-  const TwoWayDistance d = measureDistance(spot, projector, spot.V, back);
+  const TwoWayDistance d = measureDistance(spot, projector, spot.V, back, UpAxis{});
   EXPECT_LT(d.inflatedToTarget.rms, 1e-12);
   EXPECT_GT(d.targetToInflated.summary.rms, 0.05);
   EXPECT_GT(d.targetToInflated.summary.max, 0.2);
@@ -79,11 +79,11 @@ TEST(TargetCoverage, OneWayAloneMissesAHalfLeftOutAndBothWaysSeeIt) {
   EXPECT_NEAR(front.maxDistance, d.targetToInflated.summary.max, 1e-12);
   EXPECT_GT(front.farthest.z(), midZ);
   // And the whole of Spot against itself: nothing left out either way.
-  const TwoWayDistance same = measureDistance(spot, projector, spot.V, spot.F);
+  const TwoWayDistance same = measureDistance(spot, projector, spot.V, spot.F, UpAxis{});
   EXPECT_LT(same.worse().max, 1e-12);
   EXPECT_TRUE(same.uncovered.empty());
   // Without a surface there is one way only (the points of a shape with no triangles).
-  const TwoWayDistance oneWay = measureDistance(spot, projector, spot.V, Triangles());
+  const TwoWayDistance oneWay = measureDistance(spot, projector, spot.V, Triangles(), UpAxis{});
   EXPECT_EQ(oneWay.targetToInflated.distances.size(), 0);
   EXPECT_TRUE(oneWay.uncovered.empty());
 }
@@ -94,10 +94,14 @@ TEST(UncoveredRegions, SeparatePartsAreSeparateRegionsLargestFirstAndSmallOnesIg
   const TriMesh square = grid(50, 10, [](int i) { return i / 50.0; });
   const Triangles middle = trianglesWhere(square, [](const Eigen::Vector3d& c) { return c.x() > 0.3 && c.x() < 0.85; });
   const TargetCoverage c = targetCoverage(square, square.V, middle, 1.0);
-  const std::vector<UncoveredRegion> regions = uncoveredRegions(square, c.distances, 1.0, 0.03, 0.01);
+  const std::vector<UncoveredRegion> regions = uncoveredRegions(square, c.distances, 1.0, UpAxis{}, 0.03, 0.01);
   ASSERT_EQ(regions.size(), 2u);
   EXPECT_NE(regions[0].where.find("left"), std::string::npos) << regions[0].where;
   EXPECT_NE(regions[1].where.find("right"), std::string::npos) << regions[1].where;
+  // Stood on its x axis, the left strip is the bottom of the shape.
+  const std::vector<UncoveredRegion> standing = uncoveredRegions(square, c.distances, 1.0, UpAxis{0, 1}, 0.03, 0.01);
+  ASSERT_EQ(standing.size(), 2u);
+  EXPECT_NE(standing[0].where.find("bottom"), std::string::npos) << standing[0].where;
   // Beyond 0.03 from the band: x < 0.27 (27 %) and x > 0.88 (12 %) of the area.
   EXPECT_NEAR(regions[0].areaFraction, 0.26, 0.02);
   EXPECT_NEAR(regions[1].areaFraction, 0.12, 0.02);
@@ -105,9 +109,9 @@ TEST(UncoveredRegions, SeparatePartsAreSeparateRegionsLargestFirstAndSmallOnesIg
   EXPECT_NEAR(regions[0].farthest.x(), 0.0, 1e-12);
   EXPECT_GT(regions[0].radius, 0.25);
   // A region smaller than the area asked for is not one.
-  EXPECT_EQ(uncoveredRegions(square, c.distances, 1.0, 0.03, 0.2).size(), 1u);
+  EXPECT_EQ(uncoveredRegions(square, c.distances, 1.0, UpAxis{}, 0.03, 0.2).size(), 1u);
   // Nearer than the threshold is not left out.
-  EXPECT_TRUE(uncoveredRegions(square, c.distances, 1.0, 0.31, 0.0).empty());
+  EXPECT_TRUE(uncoveredRegions(square, c.distances, 1.0, UpAxis{}, 0.31, 0.0).empty());
   // A part: where it is and what helps.
   const std::string part = uncoveredMessage(regions[0]);
   EXPECT_NE(part.find("leaves out part of the target " + regions[0].where + ": 26."), std::string::npos) << part;
@@ -115,7 +119,7 @@ TEST(UncoveredRegions, SeparatePartsAreSeparateRegionsLargestFirstAndSmallOnesIg
   // Most of it: more seams, not a seam around it.
   const Triangles corner = trianglesWhere(square, [](const Eigen::Vector3d& c) { return c.x() > 0.9; });
   const std::vector<UncoveredRegion> most =
-      uncoveredRegions(square, targetCoverage(square, square.V, corner, 1.0).distances, 1.0, 0.03, 0.01);
+      uncoveredRegions(square, targetCoverage(square, square.V, corner, 1.0).distances, 1.0, UpAxis{}, 0.03, 0.01);
   ASSERT_EQ(most.size(), 1u);
   EXPECT_GT(most[0].areaFraction, 0.8);
   const std::string much = uncoveredMessage(most[0]);
@@ -127,7 +131,7 @@ TEST(DistanceJson, ReportLeadsWithTheWorseWayAndListsWhatIsLeftOut) {
   const TriMesh square = grid(20, 20, [](int i) { return i / 20.0; });
   const SurfaceProjector projector(square);
   const Triangles left = trianglesWhere(square, [](const Eigen::Vector3d& c) { return c.x() < 0.5; });
-  const TwoWayDistance d = measureDistance(square, projector, square.V, left);
+  const TwoWayDistance d = measureDistance(square, projector, square.V, left, UpAxis{});
   const nlohmann::json j = distanceReportJson(d);
   EXPECT_DOUBLE_EQ(j["rms"].get<double>(), d.targetToInflated.summary.rms);
   EXPECT_DOUBLE_EQ(j["target_to_inflated"]["max"].get<double>(), d.targetToInflated.summary.max);

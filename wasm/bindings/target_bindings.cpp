@@ -6,13 +6,14 @@
 //   t.traceSeam(seamJson)  seam: { points: [{face, bary} | [x,y,z]], closed, smooth }
 //     -> { positions: [x,y,z,...], faces: [...], barys: [...], controls: [x,y,z,...], controlIndices, length }
 //        (faces/barys: a surface point per curve point; curve points of closed seams end at the start)
-//   t.segment(seamsJson)   seams: [{ points, closed, weight, smooth }]
+//   t.segment(seamsJson, optionsJson)   seams: [{ points, closed, weight, smooth }]; options: { up } (the target's
+//     up axis, "+y" when absent: problems are placed as the target stands)
 //     -> { vertices, triangles, segments: [{ area, isDisk, eulerCharacteristic, genus, loops, triangles, label
 //          (Segment::labelPoint) }],
 //          junctions: [{ position, segments }], problems: [{ code, severity, message, segment, seam, location }] }
 //        and fills the cut mesh: cutPositionsPtr() #V*3 f64, cutTrianglesPtr() #F*3 i32, faceSegmentPtr() #F i32
 //   t.buildPattern(seamsJson, optionsJson)
-//     options: { scale (meters per target unit), triangles, pressure [Pa],
+//     options: { scale (meters per target unit), triangles, pressure [Pa], up,
 //                material: { name (a preset: foil, pvc, ripstop, tpu), thickness [m], youngs_modulus [Pa] },
 //                connections: [[i, j], ...] or [{ seams: [i, j] }, ...] (internal connections: an internal
 //                panel between seams i and j, indices into seamsJson; a seam's "name" is used in messages) }
@@ -29,7 +30,8 @@
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
 //   optimizedTrianglesPtr() #F*3 i32 / optimizedTriangles(), optimizedOuterPtr() #F i32: the optimizer's sewn mesh
-//   t.distanceToTarget(positionsPtr, numVertices, scale, surfacePtr, numSurfaceTriangles) -> { rms, max, diagonal }
+//   t.distanceToTarget(positionsPtr, numVertices, scale, surfacePtr, numSurfaceTriangles, up)
+//     -> { rms, max, diagonal }
 //     (rms and max of |d| over the diagonal of the target's box, over the corners of the #S x 3 int32 surface
 //     triangles, e.g. the outer surface; over all points when there are none) and distancesPtr() #V f64: per
 //     point [m], the signed distance to the target scaled by `scale` (positive outside); with surface triangles
@@ -89,14 +91,16 @@ class TargetSession {
     });
   }
 
-  std::string segment(const std::string& seamsJson) {
+  std::string segment(const std::string& seamsJson, const std::string& optionsJson) {
     return guarded([&] {
       requireTarget();
       const json seams = parse(seamsJson);
       if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
       std::vector<billow::SeamCurve> curves;
       for (const auto& s : seams) curves.push_back(billow::buildSeamCurve(*geodesic_, *projector_, readSeam(s)));
-      billow::Segmentation seg = billow::segmentTarget(mesh_, topology_, curves);
+      billow::SegmentationOptions options;
+      options.up = readUp(parse(optionsJson));
+      billow::Segmentation seg = billow::segmentTarget(mesh_, topology_, curves, options);
       cut_ = std::move(seg.mesh);
       faceSegment_ = seg.faceSegment;
       return segmentationJson(seg).dump();
@@ -203,7 +207,7 @@ class TargetSession {
   }
 
   std::string distanceToTarget(uintptr_t positions, int numVertices, double scale, uintptr_t surface,
-                               int numSurfaceTriangles) {
+                               int numSurfaceTriangles, const std::string& up) {
     return guarded([&] {
       requireTarget();
       if (!(scale > 0) || !std::isfinite(scale))
@@ -218,7 +222,7 @@ class TargetSession {
           Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(surface), numSurfaceTriangles, 3);
       if (F.size() && (F.minCoeff() < 0 || F.maxCoeff() >= numVertices))
         throw billow::Error("seams.bad-input", "The shape's surface refers to points it does not have.");
-      const billow::TwoWayDistance d = billow::measureDistance(mesh_, *projector_, x, F);
+      const billow::TwoWayDistance d = billow::measureDistance(mesh_, *projector_, x, F, readUp(json{{"up", up}}));
       distances_ = scale * d.signedDistances;
       targetDistances_ = scale * d.targetToInflated.distances;
       const double diagonal = scale * d.diagonal;
@@ -307,7 +311,9 @@ class TargetSession {
     std::vector<billow::SeamCurve> curves;
     for (const auto& s : seams)
       curves.push_back(billow::buildSeamCurve(*scaledGeodesic_, *scaledProjector_, readSeam(s)));
-    const billow::Segmentation seg = billow::segmentTarget(scaled_, scaledTopology_, curves);
+    billow::SegmentationOptions segmentation;
+    segmentation.up = readUp(parse(optionsJson));
+    const billow::Segmentation seg = billow::segmentTarget(scaled_, scaledTopology_, curves, segmentation);
     const billow::BuiltPattern built = billow::buildPattern(scaled_, seg, options);
     return built;
   }
@@ -344,6 +350,17 @@ class TargetSession {
     json j = json::parse(text, nullptr, false);
     if (j.is_discarded()) throw billow::Error("seams.bad-input", "The seam description is not valid JSON.");
     return j;
+  }
+
+  // The options' "up" (the design's target.up): absent means +y.
+  static billow::UpAxis readUp(const json& options) {
+    billow::UpAxis up;
+    if (!options.is_object() || !options.contains("up") || options["up"].is_null() ||
+        (options["up"].is_string() && options["up"].get<std::string>().empty()))
+      return up;
+    if (!options["up"].is_string() || !billow::parseUpAxis(options["up"].get<std::string>(), up))
+      throw billow::Error("target.bad-up", "The target's up axis must be one of +y, -y, +z, -z, +x, -x.");
+    return up;
   }
 
   void requireTarget() const {

@@ -44,7 +44,7 @@ std::string objText(const SewnMesh& mesh, const Vertices& x) {
 // The outer surface against the target both ways (the inside of internal panels is not meant to lie on it),
 // relative to the target's bounding-box diagonal.
 TwoWayDistance distanceToTarget(const DesignScene& scene, const SewnMesh& mesh, const Vertices& x) {
-  return measureDistance(scene.target, *scene.projector, x, outerTriangles(mesh));
+  return measureDistance(scene.target, *scene.projector, x, outerTriangles(mesh), scene.design.target.up);
 }
 
 int positiveInt(const Args& args, const std::string& name, int fallback) {

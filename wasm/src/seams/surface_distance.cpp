@@ -68,7 +68,7 @@ TargetCoverage targetCoverage(const TriMesh& target, const Vertices& points, con
 }
 
 std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen::VectorXd& distances, double diagonal,
-                                              double threshold, double minAreaFraction) {
+                                              const UpAxis& up, double threshold, double minAreaFraction) {
   const int nf = target.numTriangles();
   const double limit = threshold * diagonal;
   std::vector<char> far(nf, 0);
@@ -113,7 +113,7 @@ std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen
       regions[i].radius =
           std::max(regions[i].radius, (target.V.row(target.F(f, k)).transpose() - regions[i].farthest).norm());
   }
-  for (UncoveredRegion& r : regions) r.maxDistance /= diagonal, r.where = describeLocation(r.farthest, lo, hi);
+  for (UncoveredRegion& r : regions) r.maxDistance /= diagonal, r.where = describeLocation(r.farthest, lo, hi, up);
   std::sort(regions.begin(), regions.end(),
             [](const UncoveredRegion& a, const UncoveredRegion& b) { return a.areaFraction > b.areaFraction; });
   return regions;
@@ -141,14 +141,14 @@ DistanceSummary TwoWayDistance::worse() const {
 }
 
 TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points,
-                               const Triangles& surface) {
+                               const Triangles& surface, const UpAxis& up) {
   TwoWayDistance d;
   d.diagonal = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
   d.signedDistances = signedDistances(target, projector, points);
   d.inflatedToTarget = summarizeDistances(d.signedDistances, surface, d.diagonal);
   if (surface.rows() == 0) return d;
   d.targetToInflated = targetCoverage(target, points, surface, d.diagonal);
-  d.uncovered = uncoveredRegions(target, d.targetToInflated.distances, d.diagonal);
+  d.uncovered = uncoveredRegions(target, d.targetToInflated.distances, d.diagonal, up);
   return d;
 }
 

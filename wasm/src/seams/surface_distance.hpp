@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "mesh/tri_mesh.hpp"
+#include "mesh/up_axis.hpp"
 #include "seams/surface_point.hpp"
 
 namespace billow {
@@ -53,9 +54,10 @@ std::string uncoveredMessage(const UncoveredRegion& region);
 constexpr double kUncoveredDistance = 0.06, kUncoveredArea = 0.01;
 
 // The parts of the target farther than `threshold` (a fraction of the diagonal) from the shape, largest first,
-// those smaller than `minAreaFraction` of the target's area left out. distances: TargetCoverage's.
+// those smaller than `minAreaFraction` of the target's area left out, each placed ("near the left") as the
+// target stands on `up`. distances: TargetCoverage's.
 std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen::VectorXd& distances, double diagonal,
-                                              double threshold = kUncoveredDistance,
+                                              const UpAxis& up, double threshold = kUncoveredDistance,
                                               double minAreaFraction = kUncoveredArea);
 
 // A shape against its target both ways, as every figure of the app, the CLI and the bench reads it.
@@ -69,8 +71,9 @@ struct TwoWayDistance {
   DistanceSummary worse() const;
 };
 
-// points: the shape in the target's units; surface: its outer triangles (none: one way only, over every point).
+// points: the shape in the target's units; surface: its outer triangles (none: one way only, over every point);
+// up: how the target stands, for the places of the parts left out.
 TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points,
-                               const Triangles& surface);
+                               const Triangles& surface, const UpAxis& up);
 
 }  // namespace billow

@@ -1,6 +1,8 @@
 // Segmentation and its problem report (see segmentation.hpp).
 #include "segment/segmentation.hpp"
 
+#include <cstdio>
+#include <limits>
 #include <set>
 
 #include "mesh/location.hpp"
@@ -14,7 +16,18 @@ struct Box {
   Eigen::Vector3d lo, hi;
   UpAxis up;
   std::string where(const Eigen::Vector3d& p) const { return describeLocation(p, lo, hi, up); }
+  double diagonal() const { return (hi - lo).norm(); }
 };
+
+// A segment's mean width: twice its area over its boundary's length (a strip of width w and length L has
+// area wL and boundary about 2L; a disk of radius r gives r).
+double meanWidth(const TriMesh& m, const Segment& s) {
+  double perimeter = 0;
+  for (const BoundaryLoop& loop : s.loops)
+    for (size_t i = 0; i < loop.vertices.size(); ++i)
+      perimeter += (m.V.row(loop.vertices[(i + 1) % loop.vertices.size()]) - m.V.row(loop.vertices[i])).norm();
+  return perimeter > 0 ? 2 * s.area / perimeter : std::numeric_limits<double>::infinity();
+}
 
 // A representative point of a segment: the centroid of its triangle nearest to its area centroid.
 Eigen::Vector3d segmentPoint(const TriMesh& m, const Segment& s) {
@@ -75,6 +88,14 @@ void segmentProblems(const Box& box, double totalArea, const SegmentationOptions
     if (seg.area < options.minSegmentAreaRatio * totalArea) {
       p.code = "segment.sliver", p.severity = "warning";
       p.message = "Segment " + where + " is tiny: move its seams apart or remove one of them.";
+      out.problems.push_back(p);
+    } else if (const double width = meanWidth(out.mesh, seg); width < options.minSegmentWidthRatio * box.diagonal()) {
+      // Two seams run side by side (a loop closed early, a seam drawn along another): a strip too thin to sew.
+      char percent[32];
+      std::snprintf(percent, sizeof percent, "%.1f %%", 100 * width / box.diagonal());
+      p.code = "segment.thin", p.severity = "warning";
+      p.message = "Segment " + where + " is a thin strip (about " + percent +
+                  " of the shape's size wide): move its seams apart or remove one of them.";
       out.problems.push_back(p);
     }
   }

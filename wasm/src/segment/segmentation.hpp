@@ -12,9 +12,10 @@
 namespace billow {
 
 struct SegmentationOptions {
-  double minSegmentAreaRatio = 1e-3;  // a segment below this share of the target's area is a sliver
-  double tolerance = 1e-9;            // barycentric merge tolerance for seam points
-  UpAxis up;                          // the problems' places ("near the top left") as the target stands
+  double minSegmentAreaRatio = 1e-3;   // a segment below this share of the target's area is a sliver
+  double minSegmentWidthRatio = 5e-3;  // a segment narrower on average than this share of the diagonal is thin
+  double tolerance = 1e-9;             // barycentric merge tolerance for seam points
+  UpAxis up;                           // the problems' places ("near the top left") as the target stands
 };
 
 struct BoundaryLoop {
@@ -42,7 +43,7 @@ struct SeamJunction {
 };
 
 struct SegmentationProblem {
-  std::string code;      // "segment.not-disk", "seam.dangling", "seam.self-crossing", "segment.sliver", ...
+  std::string code;      // "segment.not-disk", "segment.sliver", "segment.thin", "seam.self-crossing", ...
   std::string severity;  // "error" (cannot be flattened) or "warning"
   std::string message;   // the designer's words
   int segment = -1, seam = -1;

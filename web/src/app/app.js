@@ -331,7 +331,7 @@ export class App {
     this.optimizing?.cancel();
     const call = this.client.call(
       Op.optimizeDesign,
-      { ...optimizeArgs(this.design, this.resolution), scale: this.scaleFor(this.design) },
+      { ...optimizeArgs(this.design, this.resolution), scale: this.scaleFor(this.design), up: upOf(this.design) },
       {
         onProgress: (p) => {
           if (ticket !== this.patternTicket) return;
@@ -400,7 +400,7 @@ export class App {
   // { distances (per vertex, m), rms, max (outer surface, over the target's diagonal), diagonal }.
   distanceOf(shape) {
     const { positions, triangles, outer } = shape;
-    return this.client.call(Op.distanceToTarget, { positions, triangles, outer, scale: this.scaleFor(this.design) }).promise;
+    return this.client.call(Op.distanceToTarget, { positions, triangles, outer, scale: this.scaleFor(this.design), up: upOf(this.design) }).promise;
   }
 
   // The signed distance of the shown inflated shape to the target, for the "distance to target" colors, and the
@@ -607,12 +607,13 @@ export class App {
     this.remakePattern(); // the panels' size changed: the edit cancelled the running optimization (commitDesign)
   }
   // Which of the target's own axes points up (up-axis.js): it stands on it and Height is measured along it, so
-  // like the height it changes the panels' size.
+  // like the height it changes the panels' size; the problems' places ("near the top") are read in it too, so
+  // the target is segmented again, which makes the panels anew.
   setUp(up) {
     this.messages.resolve('target.up');
     if (up === upOf(this.design)) return;
     this.commitDesign(setUp(this.design, up));
-    this.remakePattern();
+    this.seams.segment();
   }
 
 

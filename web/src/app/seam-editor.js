@@ -3,6 +3,7 @@
 // history, and asks the worker for the segmentation after each committed edit.
 import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
+import { upOf } from './up-axis.js';
 import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf } from './symmetry.js';
 
 const keyOf = (seam) => JSON.stringify([seam.points, seam.closed, Boolean(seam.smooth)]);
@@ -14,6 +15,7 @@ export class SeamEditor {
     this.cache = new Map(); // keyOf(seam) -> trace
     this.pending = new Map(); // keyOf(seam) -> promise
     this.preview = null; // Float32Array of the seam being drawn
+    this.draftWarning = null; // { text, location } of what the seam being drawn would make wrong (checkDraft)
     this.previewTicket = 0;
     this.selection = null; // { seam, index | null }
     this.segmentation = null;
@@ -92,28 +94,59 @@ export class SeamEditor {
       selected: this.selection?.seam === i,
       selectedPoint: this.selection?.seam === i ? this.selection.index : null,
     }));
-    this.pane.seams.update(seams, this.preview);
+    this.pane.seams.update(seams, this.preview, Boolean(this.preview && this.draftWarning));
+    this.pane.setDraftWarning(this.preview ? this.draftWarning : null);
     this.pane.setConnections(this.design.connections.map((c) => c.seams.map((k) => traces[k]?.curve ?? null)));
     this.pane.setSymmetryPlane(this.plane);
     this.pane.requestRender();
     for (const fn of this.listeners) fn();
   }
 
-  // The dashed curve of the seam being drawn (latest request wins); null clears it.
-  async previewSeam(points) {
+  // The dashed curve of the seam being drawn (latest request wins); null clears it. closed: the cursor is on
+  // the loop's start, so the seam would close there.
+  async previewSeam(points, { closed = false } = {}) {
     const ticket = ++this.previewTicket;
     if (!points || points.length < 2) {
       this.preview = null;
+      this.draftWarning = null;
       this.draw();
       return;
     }
     try {
-      const t = await this.trace(points, false, true); // as the new seam will be: smooth
+      const t = await this.trace(points, closed, true); // as the new seam will be: smooth
       if (ticket !== this.previewTicket) return;
       this.preview = t.curve;
       this.draw();
+      this.checkDraft({ points, closed, smooth: true }, ticket);
     } catch {
       // a preview that fails (e.g. the cursor left the surface) is simply not shown
+    }
+  }
+
+  // What the seam being drawn would make, before it is committed: a seam that crosses itself, a tiny piece or
+  // a strip too thin to sew is shown as such (the preview in red, a note where it happens). One check at a
+  // time: the cursor moves faster than the target is cut, so a check starts when the last one is back.
+  async checkDraft(draft, ticket) {
+    this.nextDraft = { draft, ticket };
+    if (this.checkingDraft) return;
+    this.checkingDraft = true;
+    try {
+      while (this.nextDraft) {
+        const { draft: next, ticket: nextTicket } = this.nextDraft;
+        this.nextDraft = null;
+        const seams = [...this.design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) })), next];
+        let result = null;
+        try {
+          result = await this.app.client.request(Op.checkSeams, { seams, up: upOf(this.design) });
+        } catch {
+          // a check that fails says nothing about the seam: no warning
+        }
+        if (nextTicket !== this.previewTicket) continue; // drawing moved on (or ended) meanwhile
+        this.draftWarning = result && draftProblem(result.problems, seams.length - 1, this.segmentation?.problems ?? [], next.closed);
+        this.draw();
+      }
+    } finally {
+      this.checkingDraft = false;
     }
   }
 
@@ -306,7 +339,7 @@ export class SeamEditor {
     }
     const seams = this.design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
     try {
-      const result = await this.app.client.request(Op.segment, { seams });
+      const result = await this.app.client.request(Op.segment, { seams, up: upOf(this.design) });
       if (ticket !== this.segmentTicket) return;
       this.segmentation = result;
       this.pane.setSegments(result);
@@ -326,9 +359,28 @@ export class SeamEditor {
   reset() {
     this.cache.clear();
     this.preview = null;
+    this.draftWarning = null;
     this.selection = null;
     this.segmentation = null;
   }
+}
+
+const DRAFT_WORDS = {
+  'seam.self-crossing': 'Crosses itself here',
+  'segment.sliver': 'Cuts off a tiny piece',
+  'segment.thin': 'Leaves a strip too thin to sew',
+};
+
+// The problem a seam being drawn (index `draft`) would make, in a few words for the note beside it, or null:
+// its own crossing, or a tiny or thin segment the committed seams do not make (`before`: their problems; a
+// segment that stays as it was keeps its place, so it is found there).
+export function draftProblem(problems, draft, before, closed = false) {
+  const same = (p, q) => p.code === q.code && Math.hypot(...p.location.map((x, k) => x - q.location[k])) < 1e-9;
+  const found = problems.find((p) => p.code === 'seam.self-crossing' && p.seam === draft)
+    ?? problems.find((p) => (p.code === 'segment.sliver' || p.code === 'segment.thin') && !before.some((q) => same(p, q)));
+  if (!found) return null;
+  const words = DRAFT_WORDS[found.code];
+  return { code: found.code, location: found.location, text: closed && found.code !== 'seam.self-crossing' ? `Closing here: ${words.toLowerCase()}` : words };
 }
 
 function chunks(flat) {

@@ -101,7 +101,10 @@ export class SeamTool {
     }
     const hit = this.pick(event);
     this.pane.seams.showCursor(hit ? { x: hit.position[0], y: hit.position[1], z: hit.position[2] } : null, hit?.snapped);
-    if (this.drawing && hit) this.app.previewSeam([...this.drawing.points, hit.point]);
+    if (this.drawing && hit) {
+      if (hit.closes) this.app.previewSeam(this.drawing.points, { closed: true });
+      else this.app.previewSeam([...this.drawing.points, hit.point]);
+    }
     this.pane.requestRender();
   }
 

@@ -1,5 +1,6 @@
 // Seams drawn over the target: each seam's curve as a screen-space-wide line (width shows its weight σ),
-// its control points as dots, the curve being drawn as a dashed preview, and the snap cursor.
+// its control points as dots, the curve being drawn as a dashed preview (red when it would make a problem),
+// and the snap cursor.
 import { Color, Group, Mesh, MeshBasicMaterial, SphereGeometry, Vector2 } from 'three';
 import { Line2 } from 'three/addons/lines/Line2.js';
 import { LineGeometry } from 'three/addons/lines/LineGeometry.js';
@@ -9,6 +10,7 @@ const SEAM_COLOR = new Color('#1d2330');
 const SELECTED_COLOR = new Color('#2f6fdd');
 const PREVIEW_COLOR = new Color('#2f6fdd');
 const SNAP_COLOR = new Color('#d55e00');
+const WARNING_COLOR = new Color('#c62828'); // a seam being drawn that would cross itself or cut a sliver
 
 export function seamWidth(weight) {
   return 2 + 1.5 * Math.min(6, Math.sqrt(Math.max(0, weight)) * 2); // px
@@ -46,8 +48,8 @@ export class SeamLayer extends Group {
   }
 
   // seams: [{ curve: Float32Array (x,y,z...), controls: [[x,y,z]], weight, selected, selectedPoint }]
-  // preview: Float32Array | null (the seam being drawn, to the cursor)
-  update(seams, preview = null) {
+  // preview: Float32Array | null (the seam being drawn, to the cursor); warn: it would make a problem
+  update(seams, preview = null, warn = false) {
     for (const child of [...this.items.children]) {
       this.items.remove(child);
       if (child.geometry !== this.dot) child.geometry.dispose?.();
@@ -65,7 +67,7 @@ export class SeamLayer extends Group {
         this.items.add(dot);
       });
     }
-    if (preview?.length >= 6) this.items.add(this.line(preview, PREVIEW_COLOR, 2.5, true));
+    if (preview?.length >= 6) this.items.add(this.line(preview, warn ? WARNING_COLOR : PREVIEW_COLOR, warn ? 3.5 : 2.5, true));
   }
 
   // A cursor dot at position (local coordinates), orange when it snaps to a seam.

@@ -77,6 +77,22 @@ export class TargetPane extends Pane3D {
     this.labels.className = 'pane-labels';
     element.parentElement.append(this.labels);
     this.segmentLabels = []; // { label, at (target units), problem }
+    // The note beside a seam being drawn that would make a problem ("Crosses itself here").
+    this.draftNote = document.createElement('div');
+    this.draftNote.className = 'draft-warning';
+    this.draftNote.setAttribute('role', 'status');
+    this.draftNote.hidden = true;
+    this.labels.append(this.draftNote);
+    this.draftAt = null;
+  }
+
+  // warning: { text, location (target units) } or null.
+  setDraftWarning(warning) {
+    this.draftAt = warning ? new Vector3(...warning.location) : null;
+    this.draftNote.textContent = warning?.text ?? '';
+    this.draftNote.dataset.code = warning?.code ?? '';
+    this.draftNote.hidden = !warning;
+    this.requestRender();
   }
 
   requestRender() {
@@ -150,7 +166,7 @@ export class TargetPane extends Pane3D {
 
   // segments: the segmentation's ({ label: [x, y, z] in target units, isDisk }); problems mark their labels.
   setSegmentLabels(segments = [], problems = []) {
-    this.labels.replaceChildren();
+    this.labels.replaceChildren(this.draftNote);
     this.segmentLabels = [];
     if (segments.length < 2) return this.requestRender();
     const troubled = new Set(problems.filter((p) => p.segment >= 0).map((p) => p.segment));
@@ -167,12 +183,21 @@ export class TargetPane extends Pane3D {
     this.requestRender();
   }
 
-  // Each segment label over its point, hidden where the model is in front of it.
+  // Each segment label over its point, hidden where the model is in front of it; the note on a seam being
+  // drawn beside its place (kept inside the pane: the place may be on the far side).
   placeLabels() {
-    if (!this.mesh || !this.segmentLabels.length) return;
+    if (!this.mesh) return;
     const r = this.element.getBoundingClientRect();
     const top = this.element.offsetTop;
     const p = new Vector3();
+    if (this.draftAt && !this.draftNote.hidden) {
+      p.copy(this.draftAt);
+      this.mesh.localToWorld(p).project(this.camera);
+      const clamp = (v) => Math.min(0.9, Math.max(-0.9, v));
+      this.draftNote.style.left = `${((clamp(p.x) + 1) / 2) * r.width}px`;
+      this.draftNote.style.top = `${top + ((1 - clamp(p.y)) / 2) * r.height}px`;
+    }
+    if (!this.segmentLabels.length) return;
     for (const { label, at } of this.segmentLabels) {
       p.copy(at);
       this.mesh.localToWorld(p).project(this.camera);

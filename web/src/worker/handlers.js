@@ -81,10 +81,14 @@ export function createHandlers(api) {
     *[Op.traceSeam](seam) {
       return requireSession().traceSeam(seam);
     },
-    // { seams } -> the segmentation (see TargetSession.segment).
-    *[Op.segment]({ seams }) {
+    // { seams, up } -> the segmentation (see TargetSession.segment).
+    *[Op.segment]({ seams, up }) {
       yield { stage: 'cutting the target along the seams' };
-      return requireSession().segment(seams);
+      return requireSession().segment(seams, { up });
+    },
+    // { seams, up } -> the segmentation's summary: what a seam being drawn would make.
+    *[Op.checkSeams]({ seams, up }) {
+      return requireSession().checkSeams(seams, { up });
     },
     // { seams, scale, triangles, pressure, material } -> { ok, patternText, figures, problems }
     *[Op.buildPattern]({ seams, triangles = 3000, ...physics }) {
@@ -110,7 +114,7 @@ export function createHandlers(api) {
       let surface = outerSurface(mesh.triangles, mesh.outer);
       const iterate = () => {
         const positions = session.optimizedPositions();
-        const d = scale > 0 ? session.distanceToTarget(positions, scale, surface) : null;
+        const d = scale > 0 ? session.distanceToTarget(positions, scale, surface, physics.up) : null;
         return { positions: new Float32Array(positions), distances: d?.distances, targetDistances: d?.targetDistances, distance: d && distanceSummary(d) };
       };
       // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
@@ -140,8 +144,8 @@ export function createHandlers(api) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);
     },
-    *[Op.distanceToTarget]({ positions, scale, triangles = null, outer = null }) {
-      return requireSession().distanceToTarget(positions, scale, outerSurface(triangles, outer));
+    *[Op.distanceToTarget]({ positions, scale, triangles = null, outer = null, up }) {
+      return requireSession().distanceToTarget(positions, scale, outerSurface(triangles, outer), up);
     },
     *[Op.memoryStats]() {
       return api.memoryStats();

@@ -18,9 +18,12 @@ export const Op = Object.freeze({
   setTarget: 'setTarget',
   // { points: [{ face, bary }], closed } -> { curve, faces, barys, controls, controlSamples, length }
   traceSeam: 'traceSeam',
-  // { seams: [{ points, closed, weight }] } -> { segments, problems, junctions, positions, indices, faceSegment }
+  // { seams: [{ points, closed, weight }], up } -> { segments, problems, junctions, positions, indices, faceSegment }
+  // (up: the target's up axis, '+y' when absent; problems say where as the target stands)
   segment: 'segment',
-  // { seams, scale, triangles, pressure, material } -> { ok, patternText, figures, problems }: flattened
+  // { seams, up } -> { segments, problems, junctions }: what these seams would make, for a seam being drawn.
+  checkSeams: 'checkSeams',
+  // { seams, scale, triangles, pressure, material, up } -> { ok, patternText, figures, problems }: flattened
   // panels of the segments, sewn, with the target shape as the simulation's start. scale: meters per target
   // unit; pressure [Pa]; material { name (preset), thickness [m], youngs_modulus [Pa] }.
   buildPattern: 'buildPattern',
@@ -37,7 +40,7 @@ export const Op = Object.freeze({
   // { patternText, options } -> { svg, dxf, pdf: Uint8Array, statistics, cutLines, outlines, notches, sheet }: the cut files and
   // printable tiles of a pattern (see SolverApi.exportPattern for the options).
   exportPattern: 'exportPattern',
-  // { positions (#V*3, meters), scale, triangles?, outer? } -> { distances: Float32Array #V, rms, max, diagonal }:
+  // { positions (#V*3, meters), scale, triangles?, outer?, up? } -> { distances: Float32Array #V, rms, max, diagonal }:
   // signed distance of each point to the target (positive outside), for the inflated pane's "distance to
   // target" colors; rms and max over the diagonal, of the outer surface's vertices when triangles/outer are given.
   distanceToTarget: 'distanceToTarget',
@@ -50,7 +53,7 @@ export const Op = Object.freeze({
 
 // Quick operations that only read the worker's state: they run at once, even between the steps of a
 // long operation, so drawing stays responsive while the panels inflate.
-export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.distanceToTarget, Op.materialPresets, Op.memoryStats]);
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.distanceToTarget, Op.materialPresets, Op.memoryStats]);
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);

@@ -195,9 +195,10 @@ export class TargetSession {
     };
   }
 
-  // seams: [{ points, closed, weight }] -> summary (segments, problems, junctions) and the cut mesh.
-  segment(seams) {
-    const summary = SolverApi.unwrap(this.session.segment(JSON.stringify(seams)));
+  // seams: [{ points, closed, weight }]; options: { up } (the target's up axis: problems are placed as it
+  // stands) -> summary (segments, problems, junctions) and the cut mesh.
+  segment(seams, options = {}) {
+    const summary = this.checkSeams(seams, options);
     const s = this.session;
     return {
       ...summary,
@@ -205,6 +206,11 @@ export class TargetSession {
       indices: new Uint32Array(this.api.fromHeap(Int32Array, s.cutTrianglesPtr(), s.cutTriangles() * 3).buffer),
       faceSegment: this.api.fromHeap(Int32Array, s.faceSegmentPtr(), s.cutTriangles()),
     };
+  }
+
+  // The segmentation's summary alone (segments, problems, junctions): what seams being drawn would make.
+  checkSeams(seams, options = {}) {
+    return SolverApi.unwrap(this.session.segment(JSON.stringify(seams), JSON.stringify(options)));
   }
 
   // Starts optimizing the panels of these seams; returns the flattened pattern like buildPattern.
@@ -241,13 +247,13 @@ export class TargetSession {
   // rms, max (of |d| over the target box's diagonal, over the corners of `surface`, #S*3 vertex indices such
   // as the outer triangles; over all points when empty), diagonal [m] }; scale: meters per target unit. With a
   // surface also the other way, the target's to the shape: targetRms, targetMax, uncovered (the parts of the
-  // target left out: [{ area, max, position, radius, where }]) and targetDistances (Float32Array #target vertices,
-  // meters).
-  distanceToTarget(positions, scale, surface = []) {
+  // target left out: [{ area, max, position, radius, where }], placed as the target stands on `up`) and
+  // targetDistances (Float32Array #target vertices, meters).
+  distanceToTarget(positions, scale, surface = [], up = '+y') {
     const pos = Float64Array.from(positions);
     const tris = Int32Array.from(surface);
     const n = pos.length / 3;
-    const summary = this.api.withHeap([pos, tris], (p, t) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale, t, tris.length / 3)));
+    const summary = this.api.withHeap([pos, tris], (p, t) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale, t, tris.length / 3, up)));
     const distances = new Float32Array(this.api.fromHeap(Float64Array, this.session.distancesPtr(), n));
     if (summary.targetRms === undefined) return { ...summary, distances };
     const targetDistances = new Float32Array(this.api.fromHeap(Float64Array, this.session.targetDistancesPtr(), this.targetVertices));
