@@ -89,6 +89,22 @@ test('a problem in the seam panel, clicked, turns the view to its place and sele
   const turned = Math.hypot(...after.direction.map((d, i) => d - before[i]));
   assert.ok(turned > 0.01 || Math.hypot(...after.mark) > 0, `the view turned (${turned})`);
   await screenshot(page, 'designer-shape-problem');
+  // Panels the builder refuses (a segment that would overlap itself laid flat): each problem is its own message
+  // with "Show where", and new panels take them away.
+  await page.evaluate(() => window.billow.app.patternFailed({
+    code: 'pattern.not-built', message: 'two problems',
+    details: { problems: [
+      { code: 'pattern.overlaps', severity: 'error', message: 'Segment 1 would overlap itself when laid flat, near the top of the shape: a seam across it there lets it lie flat as two panels.', location: [0, 1, 0] },
+      { code: 'pattern.not-sewn', severity: 'error', message: 'Panel 2 would be sewn to itself near the left of the shape: its seams touch there.', location: [-1, 0, 0] },
+    ] },
+  }));
+  const refused = page.locator('.message.error', { hasText: 'The panels could not be made from these seams' });
+  assert.equal(await refused.count(), 2);
+  await refused.filter({ hasText: 'Panel 2' }).locator('button.locate').click();
+  const mark = await page.evaluate(() => window.billow.app.panes.target.placeMark?.position.toArray());
+  assert.deepEqual(mark, [-1, 0, 0], 'the mark is at the place the problem names');
+  await page.evaluate(() => window.billow.app.messages.resolve('pattern', { prefix: true }));
+  assert.equal(await refused.count(), 0);
   assert.deepEqual(page.errors, []);
   await page.close();
 });

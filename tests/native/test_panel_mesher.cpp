@@ -273,3 +273,23 @@ TEST(PanelMeshTiming, TenAndHundredThousandTriangles) {
     expectGoodPanel(m, b.points, h);
   }
 }
+
+TEST(OutlineCrossing, SaysWhereAPolygonMeetsItself) {
+  Points2 square(4, 2);
+  square << 0, 0, 1, 0, 1, 1, 0, 1;
+  EXPECT_EQ(outlineCrossing(square), -1);
+  // A bow tie: edge 0 (bottom) is fine, edge 1 crosses edge 3.
+  Points2 bowTie(4, 2);
+  bowTie << 0, 0, 1, 0, 0, 1, 1, 1;
+  EXPECT_EQ(outlineCrossing(bowTie), 1);
+  // A C shape whose tips touch: edges meeting at a point count.
+  Points2 touching(8, 2);
+  touching << 0, 0, 3, 0, 3, 1, 1, 1, 1, 2, 3, 2, 3, 3, 0, 3;
+  EXPECT_EQ(outlineCrossing(touching), -1);
+  touching.row(2) << 3, 2;  // the lower arm's tip reaches the upper arm's: edge 1 ends on edge (4, 5)
+  EXPECT_EQ(outlineCrossing(touching), 1);
+  // The lower arm bent up across the upper one: the mesher refuses it, and the crossing is found.
+  touching.row(2) << 2, 2.5;
+  EXPECT_EQ(outlineCrossing(touching), 1);
+  EXPECT_THROW(meshPanel(touching, 0.5), Error);
+}

@@ -13,6 +13,9 @@
 #include "panel_checks.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/design_scene.hpp"
+#include "pattern/panel_stages.hpp"
+#include "pattern/segment_pieces.hpp"
+#include "remesh/panel_mesher.hpp"
 #include "test_support.hpp"
 
 using namespace billow;
@@ -206,6 +209,49 @@ TEST(PatternBuild, NonDiskSegmentIsAProblemNotAThrow) {
   ASSERT_FALSE(bp.problems.empty());
   EXPECT_EQ(bp.problems[0].code, "pattern.not-disk");
   EXPECT_NE(bp.problems[0].message.find("cannot be laid flat"), std::string::npos);
+}
+
+TEST(PatternBuild, PanelsThatOverlapOrAreSewnToThemselvesAreProblemsWithAPlace) {
+  const auto scene = fixture("sphere-equator.billow.json");
+  const Segmentation& seg = scene->segmentation;
+  // A flattened outline that runs into itself (two of its points swapped across the disc): the mesher's
+  // refusal becomes an instruction placed where the outline first meets itself.
+  pattern::FlatSegment fs = pattern::flattenForPattern(seg, analyzeSeams(seg), 0);
+  const std::vector<int>& loop = fs.flat.boundary;
+  const int n = static_cast<int>(loop.size());
+  ASSERT_GT(n, 20);
+  fs.flat.uv.row(loop[n / 4]).swap(fs.flat.uv.row(loop[3 * n / 4]));
+  remesh::Points2 polygon(n, 2);
+  for (int i = 0; i < n; ++i) polygon.row(i) = fs.flat.uv.row(loop[i]);
+  const int crossing = remesh::outlineCrossing(polygon);
+  ASSERT_GE(crossing, 0);
+  const SegmentationProblem overlap =
+      pattern::meshProblem(seg, fs, Error("panel.self-intersecting", "The panel outline crosses itself."));
+  EXPECT_EQ(overlap.code, "pattern.overlaps");
+  EXPECT_EQ(overlap.severity, "error");
+  EXPECT_EQ(overlap.segment, 0);
+  EXPECT_EQ(overlap.location, fs.sub.mesh.V.row(loop[crossing]).transpose());
+  EXPECT_EQ(overlap.message.rfind("Segment 1 would overlap itself when laid flat, near the ", 0), 0u)
+      << overlap.message;
+  EXPECT_NE(overlap.message.find("a seam across it there"), std::string::npos) << overlap.message;
+  // Any other refusal keeps the mesher's words, placed on the segment.
+  const SegmentationProblem other = pattern::meshProblem(seg, fs, Error("panel.bad-input", "Too few points."));
+  EXPECT_EQ(other.code, "pattern.mesh-failed");
+  EXPECT_EQ(other.location, seg.segments[0].labelPoint);
+
+  // A sewing error names a panel vertex: the problem is placed there, on the panel's segment.
+  const BuiltPattern bp = buildPattern(scene->target, seg);
+  ASSERT_TRUE(bp.ok());
+  const SegmentationProblem sewn =
+      sewingProblem(bp, seg, Error("pattern.degenerate", "two corners sewn together", 1, 0));
+  EXPECT_EQ(sewn.code, "pattern.not-sewn");
+  EXPECT_EQ(sewn.segment, bp.panels[1].segment);
+  EXPECT_EQ(sewn.location, bp.panels[1].targetPosition.row(0).transpose());
+  EXPECT_EQ(sewn.message.rfind(bp.pattern.panels[1].name + " would be sewn to itself near the ", 0), 0u)
+      << sewn.message;
+  // Without a place it still says what is wrong.
+  const SegmentationProblem unplaced = sewingProblem(bp, seg, Error("pattern.open", "An edge is not sewn."));
+  EXPECT_EQ(unplaced.message, "A panel cannot be sewn: An edge is not sewn.");
 }
 
 TEST(PatternBuild, SlitFromTheEquatorIsSewnBackOnItself) {

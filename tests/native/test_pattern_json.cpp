@@ -130,6 +130,33 @@ TEST(PatternJson, EveryErrorHasItsCode) {
   }
 }
 
+TEST(PatternJson, SewingErrorsSayWhichPanelAndVertex) {
+  // The front's corners 0 and 1 both sewn to the back's corner 0: its triangle has two corners sewn together.
+  json j = tinyPattern();
+  j["stitches"] = json::parse("[[0, 0, 1, 0], [0, 1, 1, 0], [0, 2, 1, 2], [0, 1, 1, 1]]");
+  try {
+    readPatternJson(j.dump());
+    FAIL() << "sewn together";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "pattern.degenerate");
+    EXPECT_EQ(e.panel, 0);
+    EXPECT_EQ(e.vertex, 0);
+  }
+  // An edge sewn to nothing: its panel and one of its ends.
+  j = tinyPattern();
+  j["stitches"].erase(2);
+  try {
+    readPatternJson(j.dump());
+    FAIL() << "open";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "pattern.open");
+    ASSERT_GE(e.panel, 0);
+    EXPECT_LT(e.panel, 2);
+    EXPECT_GE(e.vertex, 0);
+    EXPECT_LT(e.vertex, 3);
+  }
+}
+
 TEST(PatternJson, StitchesMustJoinBoundaryVertices) {
   ExampleOptions eo;
   eo.triangles = 32;  // pillow: 2 x 2 cells per side, vertex 4 is inside the panel

@@ -108,6 +108,16 @@ TEST(UncoveredRegions, SeparatePartsAreSeparateRegionsLargestFirstAndSmallOnesIg
   EXPECT_NEAR(regions[0].maxDistance, 0.3, 1e-12);
   EXPECT_NEAR(regions[0].farthest.x(), 0.0, 1e-12);
   EXPECT_GT(regions[0].radius, 0.25);
+  // Each region's triangles, to draw it: its area, and all lying on its side.
+  for (const UncoveredRegion& r : regions) {
+    double area = 0;
+    for (int f : r.triangles)
+      area += 0.5 * (square.V.row(square.F(f, 1)) - square.V.row(square.F(f, 0)))
+                        .cross(square.V.row(square.F(f, 2)) - square.V.row(square.F(f, 0)))
+                        .norm();
+    EXPECT_NEAR(area, r.areaFraction, 1e-12) << "the unit square's area is 1";
+  }
+  for (int f : regions[0].triangles) EXPECT_LT(square.V(square.F(f, 0), 0), 0.3);
   // A region smaller than the area asked for is not one.
   EXPECT_EQ(uncoveredRegions(square, c.distances, 1.0, UpAxis{}, 0.03, 0.2).size(), 1u);
   // Nearer than the threshold is not left out.

@@ -30,7 +30,10 @@ test('each optimizer iterate streams its shape and its distance to the target, t
     assert.ok(Math.abs(it.distance.rms - it.distanceRms) < 1e-6 * Math.max(1, it.distanceRms), `iteration ${it.iteration}: ${it.distance.rms} vs ${it.distanceRms}`);
     assert.ok(it.distance.max >= it.distance.rms);
     // The other way, the target's vertices to the shape: the optimizer's figure and the colors' alike.
-    assert.equal(it.targetDistances.length, sphere.positions.length / 3);
+    // The parts left out come as target triangles: indices of the target's vertices, three each.
+    assert.equal(it.uncoveredTriangles.length % 3, 0);
+    assert.ok(it.uncoveredTriangles.every((v) => v < sphere.positions.length / 3));
+    assert.equal(it.uncoveredTriangles.length > 0, it.distance.uncovered.length > 0, 'drawn when warned of');
     assert.ok(Math.abs(it.distance.targetRms - it.targetDistanceRms) < 1e-6 * Math.max(1, it.targetDistanceRms), `iteration ${it.iteration}: ${it.distance.targetRms} vs ${it.targetDistanceRms}`);
     assert.ok(it.distance.targetMax >= it.distance.targetRms && it.distance.targetRms > 0);
     assert.ok(Array.isArray(it.distance.uncovered) && it.distance.uncoveredDistance > 0);
@@ -66,4 +69,26 @@ test('seams of weight 0 slide, and every iterate says so; the panels are meshed 
   assert.ok(remeshed?.triangles?.length > 0, 'the remeshed iterate carries its triangles');
   assert.equal(remeshed.distances.length, remeshed.positions.length / 3);
   assert.ok(Math.max(...remeshed.triangles) < remeshed.positions.length / 3, 'its triangles index its own vertices');
+});
+
+test('panels that cannot be made are refused with each problem and its place on the target, in its own units', () => {
+  const handlers = createHandlers(api);
+  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
+  for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
+  // No seam: the sphere stays one closed piece, which no panel can be.
+  const seams = [];
+  const run = handlers.optimizeDesign({ seams, scale: 0.25, triangles: 600, maxIterations: 5, up: '+y' });
+  assert.throws(() => { for (let step = run.next(); !step.done; step = run.next()); }, (error) => {
+    assert.equal(error.code, 'pattern.not-built');
+    const problems = error.details?.problems ?? [];
+    assert.ok(problems.length >= 1, JSON.stringify(error.details));
+    for (const p of problems) {
+      assert.equal(p.severity, 'error');
+      assert.ok(error.message.includes(p.message), 'every problem is in the message too');
+      assert.equal(p.location.length, 3);
+      // On the unit sphere (target units), not the 0.25 m one the panels are made at.
+      assert.ok(Math.abs(Math.hypot(...p.location) - 1) < 0.05, `${p.location}`);
+    }
+    return true;
+  });
 });

@@ -18,8 +18,9 @@
 //                connections: [[i, j], ...] or [{ seams: [i, j] }, ...] (internal connections: an internal
 //                panel between seams i and j, indices into seamsJson; a seam's "name" is used in messages) }
 //     -> { ok, pattern (billow-pattern JSON, "inflated" = the target shape; internal panels last, with
-//          "internal": true), figures (internalPanels among them), problems (a connection that cannot be
-//          built is one: code "pattern.connection", severity "error", seam) }
+//          "internal": true), figures (internalPanels among them), problems ({ code, severity, message,
+//          segment, seam, location (target units) }; a connection that cannot be built is one: code
+//          "pattern.connection", severity "error", seam) }
 //   t.startOptimization(seamsJson, optionsJson)  the same, and keeps a PatternOptimizer for:
 //   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, remeshings, slidingSeams (some seam's
 //                                                 weight lets it slide: OptimizeOptions::slidingSeamWeight),
@@ -37,7 +38,8 @@
 //     point [m], the signed distance to the target scaled by `scale` (positive outside); with surface triangles
 //     also the other way (targetCoverage): targetRms, targetMax, uncovered: [{ area (fraction of the target's),
 //     max, position (target units), radius, where, message }] (uncoveredRegions, io/distance_json.hpp),
-//     uncoveredDistance (the threshold, over the diagonal) and targetDistancesPtr() #target V f64 [m]
+//     uncoveredDistance (the threshold, over the diagonal) and uncoveredTrianglesPtr() #U x 3 i32 (the regions'
+//     target triangles as vertex indices, U = uncoveredTriangles(): what the inflated pane draws as left out)
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -224,7 +226,10 @@ class TargetSession {
         throw billow::Error("seams.bad-input", "The shape's surface refers to points it does not have.");
       const billow::TwoWayDistance d = billow::measureDistance(mesh_, *projector_, x, F, readUp(json{{"up", up}}));
       distances_ = scale * d.signedDistances;
-      targetDistances_ = scale * d.targetToInflated.distances;
+      uncoveredTriangles_.clear();
+      for (const billow::UncoveredRegion& r : d.uncovered)
+        for (int f : r.triangles)
+          for (int k = 0; k < 3; ++k) uncoveredTriangles_.push_back(mesh_.F(f, k));
       const double diagonal = scale * d.diagonal;
       json out = {{"rms", d.inflatedToTarget.rms}, {"max", d.inflatedToTarget.max}, {"diagonal", diagonal}};
       if (F.rows()) {
@@ -237,7 +242,8 @@ class TargetSession {
     });
   }
   uintptr_t distancesPtr() const { return reinterpret_cast<uintptr_t>(distances_.data()); }
-  uintptr_t targetDistancesPtr() const { return reinterpret_cast<uintptr_t>(targetDistances_.data()); }
+  uintptr_t uncoveredTrianglesPtr() const { return reinterpret_cast<uintptr_t>(uncoveredTriangles_.data()); }
+  int uncoveredTriangles() const { return static_cast<int>(uncoveredTriangles_.size() / 3); }
 
   // Reads { scale, triangles, pressure, material } (see the top of this file) into build options.
   static billow::PatternBuildOptions readBuildOptions(const std::string& optionsJson, double& scale) {
@@ -318,14 +324,19 @@ class TargetSession {
     return built;
   }
 
-  static json patternJson(const billow::BuiltPattern& built) {
+  // The built pattern of the scaled target (scale_): problems are placed in the target's own units, as the
+  // segmentation's are.
+  json patternJson(const billow::BuiltPattern& built) const {
     json problems = json::array();
-    for (const auto& p : built.problems)
+    for (const auto& p : built.problems) {
+      const Eigen::Vector3d at = p.location / scale_;
       problems.push_back({{"code", p.code},
                           {"severity", p.severity},
                           {"message", p.message},
                           {"segment", p.segment},
-                          {"seam", p.seam}});
+                          {"seam", p.seam},
+                          {"location", json::array({at.x(), at.y(), at.z()})}});
+    }
     const auto& f = built.figures;
     return json({{"ok", built.ok()},
                  {"pattern", json::parse(billow::writePatternJson(built.pattern))},
@@ -468,9 +479,9 @@ class TargetSession {
   std::unique_ptr<billow::SurfaceProjector> projector_;
   std::unique_ptr<billow::GeodesicSolver> geodesic_;
   std::vector<int> faceSegment_;
-  Eigen::VectorXd distances_;        // of the last distanceToTarget
-  Eigen::VectorXd targetDistances_;  // of the target's vertices to that shape [m]
-  std::vector<int> outer_;           // optimizedOuterPtr's copy
+  Eigen::VectorXd distances_;            // of the last distanceToTarget
+  std::vector<int> uncoveredTriangles_;  // the parts of the target that shape leaves out: #U x 3 vertex indices
+  std::vector<int> outer_;               // optimizedOuterPtr's copy
 };
 
 }  // namespace
@@ -497,5 +508,6 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("faceSegmentPtr", &TargetSession::faceSegmentPtr)
       .function("distanceToTarget", &TargetSession::distanceToTarget)
       .function("distancesPtr", &TargetSession::distancesPtr)
-      .function("targetDistancesPtr", &TargetSession::targetDistancesPtr);
+      .function("uncoveredTrianglesPtr", &TargetSession::uncoveredTrianglesPtr)
+      .function("uncoveredTriangles", &TargetSession::uncoveredTriangles);
 }

@@ -9,6 +9,7 @@
 #include "pattern/internal_panels.hpp"
 #include "pattern/panel_stages.hpp"
 #include "remesh/panel_mesher.hpp"
+#include "simulate/sewn_pattern.hpp"
 #include "util/error.hpp"
 #include "util/union_find.hpp"
 
@@ -43,6 +44,27 @@ void addProblem(BuiltPattern& out, const Segmentation& seg, int s, const std::st
   p.location = seg.segments[s].labelPoint;
   out.problems.push_back(p);
 }
+
+}  // namespace
+
+SegmentationProblem sewingProblem(const BuiltPattern& out, const Segmentation& seg, const Error& e) {
+  const bool placed = e.panel >= 0 && e.panel < static_cast<int>(out.panels.size()) && e.vertex >= 0 &&
+                      e.vertex < out.panels[e.panel].targetPosition.rows();
+  const int s = placed ? out.panels[e.panel].segment : -1;
+  SegmentationProblem p;
+  p.code = "pattern.not-sewn", p.severity = "error", p.segment = s;
+  if (placed) p.location = out.panels[e.panel].targetPosition.row(e.vertex).transpose();
+  const std::string panel = placed ? out.pattern.panels[e.panel].name : "A panel";
+  const std::string where = placed ? " " + seg.where(p.location) : "";
+  if (e.code == "pattern.degenerate" || e.code == "pattern.non-manifold")
+    p.message = panel + " would be sewn to itself" + where +
+                ": its seams touch there. Move them apart there, or add a seam across the panel.";
+  else
+    p.message = panel + " cannot be sewn" + where + ": " + e.what();
+  return p;
+}
+
+namespace {
 
 std::string notDiskMessage(const Segment& s, int index) {
   std::string why = s.loops.empty() ? "it has no seam around it (a closed surface cannot be laid flat)"
@@ -194,8 +216,7 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
     try {
       pattern::meshFlatSegment(target, seg, flats[f], h, panel, built);
     } catch (const Error& e) {
-      addProblem(out, seg, flats[f].segment, "pattern.mesh-failed", "error",
-                 "The panel of segment " + std::to_string(flats[f].segment + 1) + " could not be meshed: " + e.what());
+      out.problems.push_back(pattern::meshProblem(seg, flats[f], e));
       continue;
     }
     flatPanel[f] = static_cast<int>(out.panels.size());
@@ -228,6 +249,14 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
 
   // 4. Stitches (of the outer and the internal panels).
   stitchPieces(out);
+  // 5. The panels sewn, as the simulation will sew them: a seam that touches itself or another where the
+  // segmentation saw none (two corners of a triangle stitched together) is a problem with a place here, not
+  // an error when the optimization starts.
+  if (out.ok()) try {
+      (void)sewPattern(out.pattern);
+    } catch (const Error& e) {
+      out.problems.push_back(sewingProblem(out, seg, e));
+    }
   PatternFigures& fig = out.figures;
   fig.panels = static_cast<int>(out.pattern.panels.size());
   for (const Panel& p : out.pattern.panels) {

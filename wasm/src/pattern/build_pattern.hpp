@@ -19,6 +19,7 @@
 
 #include "segment/segmentation.hpp"
 #include "simulate/sewn_pattern.hpp"
+#include "util/error.hpp"
 
 namespace billow {
 
@@ -91,6 +92,9 @@ struct BuiltPattern {
 // face each other across the inside) is a problem of severity "error" too; the other panels are still built.
 BuiltPattern buildPattern(const TriMesh& target, const Segmentation& segmentation,
                           const PatternBuildOptions& options = {});
+
+// The problem of built panels that cannot be sewn (e: sewPattern's), placed at the panel vertex it names.
+SegmentationProblem sewingProblem(const BuiltPattern& built, const Segmentation& seg, const Error& e);
 
 // Stitches every sample k of each piece to sample N - k of its partner (chains where three or more panel
 // vertices are one point), replacing the pattern's stitches; the mismatch figures are measured again.

@@ -109,4 +109,24 @@ void meshFlatSegment(const TriMesh& target, const Segmentation& seg, const FlatS
   }
 }
 
+SegmentationProblem meshProblem(const Segmentation& seg, const pattern::FlatSegment& fs, const Error& e) {
+  SegmentationProblem p;
+  p.segment = fs.segment, p.severity = "error", p.location = seg.segments[fs.segment].labelPoint;
+  const std::string segment = "Segment " + std::to_string(fs.segment + 1);
+  if (e.code != "panel.self-intersecting" && e.code != "panel.repeated-vertex" && e.code != "panel.clockwise") {
+    p.code = "pattern.mesh-failed";
+    p.message = segment + " could not be made into a panel: " + e.what();
+    return p;
+  }
+  const std::vector<int>& loop = fs.flat.boundary;
+  remesh::Points2 polygon(loop.size(), 2);
+  for (size_t i = 0; i < loop.size(); ++i) polygon.row(i) = fs.flat.uv.row(loop[i]);
+  const int crossing = remesh::outlineCrossing(polygon);
+  if (crossing >= 0) p.location = fs.sub.mesh.V.row(loop[crossing]).transpose();
+  p.code = "pattern.overlaps";
+  p.message = segment + " would overlap itself when laid flat, " + seg.where(p.location) +
+              ": a seam across it there lets it lie flat as two panels.";
+  return p;
+}
+
 }  // namespace billow::pattern

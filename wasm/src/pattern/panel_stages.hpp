@@ -6,6 +6,7 @@
 #include "flatten/flatten.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/segment_pieces.hpp"
+#include "util/error.hpp"
 
 namespace billow::pattern {
 
@@ -29,5 +30,9 @@ void meshFlatSegment(const TriMesh& target, const Segmentation& seg, const FlatS
 
 // The point of cut-mesh triangle t with weights w, as a surface point of the target.
 SurfacePoint targetPointOf(const TriMesh& target, const Segmentation& seg, int t, const Eigen::Vector3d& w);
+
+// The problem of a flattened segment the panel mesher refused (e: its error). An outline that overlaps itself
+// in the plane (a long curling part laid flat runs into itself) is placed where it first meets itself.
+SegmentationProblem meshProblem(const Segmentation& seg, const FlatSegment& fs, const Error& e);
 
 }  // namespace billow::pattern

@@ -7,6 +7,7 @@
 #include <limits>
 #include <string>
 
+#include "remesh/predicates.hpp"
 #include "remesh/refine.hpp"
 #include "util/error.hpp"
 
@@ -173,6 +174,23 @@ ResampledBoundary resampleBoundary(const Points2& polygon, const std::vector<int
   if (c.size() == 1) counts[0] = std::max(counts[0], 3);
   if (c.size() == 2) counts[0] = std::max(counts[0], 2);
   return resampleBoundary(polygon, c, counts);
+}
+
+int outlineCrossing(const Points2& polygon) {
+  const int n = static_cast<int>(polygon.rows());
+  const auto meet = [&](int i, int j) {
+    const Eigen::Vector2d a = polygon.row(i), b = polygon.row((i + 1) % n), c = polygon.row(j),
+                          d = polygon.row((j + 1) % n);
+    const int o1 = orient2d(a, b, c), o2 = orient2d(a, b, d), o3 = orient2d(c, d, a), o4 = orient2d(c, d, b);
+    if (o1 == 0 && o2 == 0)  // collinear: they meet where their extents overlap
+      return a.cwiseMin(b).x() <= c.cwiseMax(d).x() && c.cwiseMin(d).x() <= a.cwiseMax(b).x() &&
+             a.cwiseMin(b).y() <= c.cwiseMax(d).y() && c.cwiseMin(d).y() <= a.cwiseMax(b).y();
+    return o1 * o2 <= 0 && o3 * o4 <= 0;
+  };
+  for (int i = 0; i < n; ++i)
+    for (int j = i + 2; j < n; ++j)
+      if ((j + 1) % n != i && meet(i, j)) return i;
+  return -1;
 }
 
 TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& options) {

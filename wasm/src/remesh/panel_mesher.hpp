@@ -50,6 +50,11 @@ struct PanelMeshOptions {
 // "panel.self-intersecting".
 TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& options = {});
 
+// Where a closed polygon (#P by 2) crosses or touches itself: the index i of its first edge (i, i + 1 mod P)
+// that meets an edge other than its neighbours, or -1 when it is simple. For saying where a panel that
+// meshPanel refuses overlaps itself.
+int outlineCrossing(const Points2& polygon);
+
 // Where a point lies on a 2D triangle mesh (z ignored): triangle and barycentric weights (sum 1, mesh
 // vertex order). Outside the mesh: the closest point of the closest triangle (inside = false).
 struct BarycentricPoint {

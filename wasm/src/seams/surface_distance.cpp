@@ -99,6 +99,7 @@ std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen
       regions.back().maxDistance = -1;
     }
     UncoveredRegion& r = regions[regionOf[root]];
+    r.triangles.push_back(f);
     for (int k = 0; k < 3; ++k) {
       const int v = target.F(f, k);
       if (distances[v] > r.maxDistance) r.maxDistance = distances[v], r.farthest = target.V.row(v).transpose();

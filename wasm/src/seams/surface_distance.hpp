@@ -36,13 +36,14 @@ struct TargetCoverage {
 TargetCoverage targetCoverage(const TriMesh& target, const Vertices& points, const Triangles& surface, double diagonal);
 
 // A part of the target the shape leaves out: target triangles whose corners all lie farther than a threshold
-// from the shape, joined across shared edges.
+// from the shape, joined where they share a vertex.
 struct UncoveredRegion {
   double areaFraction = 0;                             // of the target's area
   double maxDistance = 0;                              // over the diagonal
   Eigen::Vector3d farthest = Eigen::Vector3d::Zero();  // its vertex farthest from the shape (target units)
   double radius = 0;                                   // of the ball about `farthest` holding the region (target units)
   std::string where;                                   // "near the top left of the shape"
+  std::vector<int> triangles;                          // rows of the target's F: what is left out, to draw
 };
 
 // What a designer reads about a region: where, how much, and what helps.

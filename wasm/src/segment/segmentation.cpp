@@ -138,6 +138,8 @@ void seamProblems(const Box& box, const CutMesh& cut, Segmentation& out) {
 
 }  // namespace
 
+std::string Segmentation::where(const Eigen::Vector3d& p) const { return describeLocation(p, boxMin, boxMax, up); }
+
 bool Segmentation::ok() const {
   for (const SegmentationProblem& p : problems)
     if (p.severity == "error") return false;
@@ -155,6 +157,7 @@ Segmentation segmentTarget(const TriMesh& target, const MeshTopology& topo, cons
   labelSegments(cut, out);
   junctions(cut, out);
   const Box box{target.V.colwise().minCoeff().transpose(), target.V.colwise().maxCoeff().transpose(), options.up};
+  out.boxMin = box.lo, out.boxMax = box.hi, out.up = box.up;
   double area = 0;
   for (const Segment& s : out.segments) area += s.area;
   segmentProblems(box, area, options, out);

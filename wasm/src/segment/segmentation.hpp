@@ -60,6 +60,11 @@ struct Segmentation {
   std::vector<std::vector<int>> seamVertices;  // per seam: cut-mesh vertices of its points, in order
   std::vector<SegmentationProblem> problems;
   bool ok() const;  // no problem of severity "error"
+  // A place on the target in a designer's words ("near the top left of the shape"), as it stands on
+  // SegmentationOptions::up: for the problems of the later stages too.
+  std::string where(const Eigen::Vector3d& p) const;
+  Eigen::Vector3d boxMin = Eigen::Vector3d::Zero(), boxMax = Eigen::Vector3d::Zero();  // of the target
+  UpAxis up;
 };
 
 Segmentation segmentTarget(const TriMesh& target, const MeshTopology& topo, const std::vector<SeamCurve>& seams,

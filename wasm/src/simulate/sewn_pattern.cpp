@@ -129,7 +129,8 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
       if (m.triangles(t, 0) == m.triangles(t, 1) || m.triangles(t, 1) == m.triangles(t, 2) ||
           m.triangles(t, 0) == m.triangles(t, 2))
         throw Error("pattern.degenerate",
-                    panelLabel(p, i) + " has a triangle (" + std::to_string(k) + ") with two corners sewn together.");
+                    panelLabel(p, i) + " has a triangle (" + std::to_string(k) + ") with two corners sewn together.", i,
+                    panel.triangles(k, 0));
       m.outer[t] = !panel.internal;
       m.trianglePanel[t] = i;
       if (!panel.internal) m.outerArea += m.rest[t].area;
@@ -150,18 +151,29 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
     }
   }
   if (uses.empty()) throw Error("pattern.open", "The pattern has no outer panel: nothing holds the air.");
+  // The panel of an outer triangle and its vertex at sewn vertex v: where an edge fails, for Error's place.
+  const auto panelVertexAt = [&](int f, int v) {
+    const int i = m.trianglePanel[f];
+    for (int k = m.panelVertexStart[i]; k < m.panelVertexStart[i + 1]; ++k)
+      if (m.simVertexOf[k] == v) return std::pair{i, k - m.panelVertexStart[i]};
+    return std::pair{i, -1};
+  };
   for (const auto& [e, u] : uses) {
     const std::string where = panelLabel(p, m.trianglePanel[u.second]);
+    const auto [panel, vertex] = panelVertexAt(u.second, e.first);
     if (u.first > 1)
       throw Error(
           uses.count({e.second, e.first}) ? "pattern.non-manifold" : "pattern.orientation",
           uses.count({e.second, e.first})
               ? "More than two outer panels meet along one edge of " + where + "; use an internal panel instead."
-              : "Two outer panels along a seam of " + where + " face opposite ways; one panel is flipped.");
+              : "Two outer panels along a seam of " + where + " face opposite ways; one panel is flipped.",
+          panel, vertex);
     if (!uses.count({e.second, e.first}))
-      throw Error("pattern.open", "An edge of " + where +
-                                      " is not sewn to another panel, so the balloon would leak. Stitch both ends of "
-                                      "every outer panel edge to a matching edge.");
+      throw Error("pattern.open",
+                  "An edge of " + where +
+                      " is not sewn to another panel, so the balloon would leak. Stitch both ends of "
+                      "every outer panel edge to a matching edge.",
+                  panel, vertex);
   }
 
   // Warnings: sewn boundary edges of different lengths (DESIGN.md, Eq. 11 wants them equal).

@@ -353,19 +353,32 @@ export class App {
       if (ticket !== this.patternTicket) return;
       this.optimized = { ...result, revision }; // the design revision these panels were made for
       this.stored = null; // replaced by the live result
-      this.messages.resolve('pattern');
+      this.messages.resolve('pattern', { prefix: true });
       const shown = await this.showVersion('optimized');
       if (shown && ticket === this.patternTicket) this.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
     } catch (error) {
       if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
-      // Memory messages say what to do on their own; others are about the seams.
-      const text = error.code?.startsWith('memory') ? error.message : `The panels could not be made from these seams: ${error.message}`;
-      this.messages.show('error', text, [], { cause: 'pattern' });
+      this.patternFailed(error);
       this.setStatus('');
     } finally {
       if (this.optimizing === call) this.optimizing = null;
       this.notifyChange();
     }
+  }
+
+  // Panels that could not be made: each problem the builder placed is its own message, with "Show where"; memory
+  // messages say what to do on their own; others are about the seams.
+  patternFailed(error) {
+    this.messages.resolve('pattern', { prefix: true });
+    const placed = (error.details?.problems ?? []).filter((p) => p.location);
+    if (error.code === 'pattern.not-built' && placed.length) {
+      placed.slice(0, 3).forEach((p, i) => {
+        this.messages.show('error', `The panels could not be made from these seams: ${p.message}`, [], { cause: `pattern.${i}`, locate: () => this.showPlace(p.location) });
+      });
+      return;
+    }
+    const text = error.code?.startsWith('memory') ? error.message : `The panels could not be made from these seams: ${error.message}`;
+    this.messages.show('error', text, [], { cause: 'pattern' });
   }
 
   // An optimization iterate: its inflated shape (colored by its distance to the target when that is the
@@ -377,7 +390,7 @@ export class App {
       this.patterns.markStatsStale();
     }
     else if (p.positions && pane.shape && pane.position?.count * 3 === p.positions.length) pane.updatePositions(p.positions);
-    if (p.distances && pane.shape) pane.setDistances(p.distances, p.distance, p.targetDistances);
+    if (p.distances && pane.shape) pane.setDistances(p.distances, p.distance, p.uncoveredTriangles);
     if (p.patternText) this.panes.pattern.setPattern(patternForDisplay(p.patternText, 'the panels being optimized'), { frame: false });
   }
 
@@ -411,7 +424,7 @@ export class App {
     try {
       const d = await this.distanceOf(result);
       if (pane.serial !== serial) return;
-      pane.setDistances(d.distances, d, d.targetDistances);
+      pane.setDistances(d.distances, d, d.uncoveredTriangles);
       this.warnUncovered(d.uncovered ?? []);
     } catch (error) {
       // Without distances the pane keeps its other colors; a crashed worker says so elsewhere.

@@ -115,34 +115,28 @@ export class InflatedPane extends Pane3D {
   }
 
   // Signed distances (#V, meters) of the shown shape to the target and their summary (SolverApi.distanceToTarget:
-  // both ways, with uncoveredDistance); targetDistances (#target vertices, meters) the other way, when known.
-  setDistances(distances, summary, targetDistances = null) {
+  // both ways); uncoveredTriangles (3 target vertex indices each) the parts of the target it leaves out, when known.
+  setDistances(distances, summary, uncoveredTriangles = null) {
     if (!this.fields || !this.position || distances.length * 3 !== this.position.count * 3) return;
     this.fields.distances = distances;
     this.fields.distance = summary;
-    this.showUncovered(targetDistances, summary);
+    this.showUncovered(uncoveredTriangles);
     if (this.colorMode === 'distance') this.recolor();
     this.onFieldsChanged?.();
   }
 
-  // The target's triangles lying farther from the shape than the uncovered threshold, all three corners.
-  showUncovered(targetDistances, summary) {
+  // The target's parts the shape leaves out (UncoveredRegion::triangles), drawn translucent over it.
+  showUncovered(triangles) {
     if (this.uncoveredMesh) {
       this.group.remove(this.uncoveredMesh);
       this.uncoveredMesh.geometry.dispose();
       this.uncoveredMesh = null;
     }
     const t = this.target;
-    if (!t || !targetDistances || targetDistances.length * 3 !== t.positions.length || !summary.uncoveredDistance) return;
-    const limit = summary.uncoveredDistance * summary.diagonal;
-    const far = [];
-    for (let f = 0; f < t.indices.length; f += 3)
-      if (targetDistances[t.indices[f]] > limit && targetDistances[t.indices[f + 1]] > limit && targetDistances[t.indices[f + 2]] > limit)
-        far.push(t.indices[f], t.indices[f + 1], t.indices[f + 2]);
-    if (!far.length) return;
+    if (!t || !triangles?.length || triangles.reduce((a, b) => Math.max(a, b), 0) * 3 >= t.positions.length) return; // none, or another target's
     const geometry = new BufferGeometry();
     geometry.setAttribute('position', new BufferAttribute(t.positions, 3));
-    geometry.setIndex(far);
+    geometry.setIndex(new BufferAttribute(triangles, 1));
     geometry.computeVertexNormals();
     this.uncoveredMesh = new Mesh(geometry, this.uncoveredMaterial);
     this.uncoveredMesh.name = 'uncovered target';

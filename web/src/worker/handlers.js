@@ -104,8 +104,8 @@ export function createHandlers(api) {
       const session = requireSession();
       const start = session.startOptimization(seams, { triangles, ...physics });
       if (!start.ok) {
-        const messages = start.problems.filter((p) => p.severity === 'error').map((p) => p.message);
-        throw new SolverError('pattern.not-built', messages.join('\n') || 'These seams do not give panels yet.');
+        const errors = start.problems.filter((p) => p.severity === 'error');
+        throw new SolverError('pattern.not-built', errors.map((p) => p.message).join('\n') || 'These seams do not give panels yet.', { problems: errors });
       }
       const flattenedText = JSON.stringify(start.pattern);
       // Every iterate streams: its inflated shape with its distance to the target, and every half second
@@ -115,7 +115,7 @@ export function createHandlers(api) {
       const iterate = () => {
         const positions = session.optimizedPositions();
         const d = scale > 0 ? session.distanceToTarget(positions, scale, surface, physics.up) : null;
-        return { positions: new Float32Array(positions), distances: d?.distances, targetDistances: d?.targetDistances, distance: d && distanceSummary(d) };
+        return { positions: new Float32Array(positions), distances: d?.distances, uncoveredTriangles: d?.uncoveredTriangles, distance: d && distanceSummary(d) };
       };
       // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
       const meshOf = () => ({ triangles: mesh.triangles.slice(), outer: mesh.outer.slice() });

@@ -179,7 +179,6 @@ export class TargetSession {
     const pos = Float64Array.from(positions);
     const idx = Int32Array.from(indices);
     this.api.withHeap([pos, idx], (p, i) => SolverApi.unwrap(this.session.setTarget(p, pos.length / 3, i, idx.length / 3)));
-    this.targetVertices = pos.length / 3;
   }
 
   // seam: { points: [{ face, bary }], closed } -> { curve, faces, barys, controls, controlSamples, length }
@@ -248,7 +247,7 @@ export class TargetSession {
   // as the outer triangles; over all points when empty), diagonal [m] }; scale: meters per target unit. With a
   // surface also the other way, the target's to the shape: targetRms, targetMax, uncovered (the parts of the
   // target left out: [{ area, max, position, radius, where }], placed as the target stands on `up`) and
-  // targetDistances (Float32Array #target vertices, meters).
+  // uncoveredTriangles (Uint32Array, 3 target vertex indices per triangle of those parts, to draw them).
   distanceToTarget(positions, scale, surface = [], up = '+y') {
     const pos = Float64Array.from(positions);
     const tris = Int32Array.from(surface);
@@ -256,8 +255,8 @@ export class TargetSession {
     const summary = this.api.withHeap([pos, tris], (p, t) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale, t, tris.length / 3, up)));
     const distances = new Float32Array(this.api.fromHeap(Float64Array, this.session.distancesPtr(), n));
     if (summary.targetRms === undefined) return { ...summary, distances };
-    const targetDistances = new Float32Array(this.api.fromHeap(Float64Array, this.session.targetDistancesPtr(), this.targetVertices));
-    return { ...summary, distances, targetDistances };
+    const uncoveredTriangles = new Uint32Array(this.api.fromHeap(Int32Array, this.session.uncoveredTrianglesPtr(), 3 * this.session.uncoveredTriangles()).buffer);
+    return { ...summary, distances, uncoveredTriangles };
   }
 
   // The sewn pattern of the current seams: { ok, pattern (object), figures, problems }.
