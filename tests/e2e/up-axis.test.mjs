@@ -93,6 +93,9 @@ test('a Z-up file opens standing Z up; Up turns it, undo turns it back, Height f
   near(h, height, 0.001, 'H is the height');
   near(w / h, 3.76012 / 5.33893, 0.01, 'W / H standing Z up');
   near(d / h, 9.21337 / 5.33893, 0.01, 'D / H standing Z up');
+  // The classroom's figure for the target reads its height as it stands too.
+  const classroomHeight = await page.evaluate(() => window.billow.classroom.targetFigures('target')[0][1]);
+  assert.equal(classroomHeight, `${Math.round(100 * height)} cm`);
   const upright = await standing(page);
   assert.ok(upright.zAxis[1] > 0.999, `the file's z axis points up on screen: ${upright.zAxis}`);
   assert.ok(upright.headY < upright.feetY - 0.5 * upright.height, `the head is above the feet: ${JSON.stringify(upright)}`);

@@ -104,7 +104,10 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
     const BuiltPanel& bp = built.panels[p];
     const int nb = bp.boundaryVertices;
     for (int j = 0; j < nb; ++j) {
-      if (bp.corner[j]) continue;
+      // A corner is where seams meet, and the outline may turn there; the one corner of a panel bounded by a
+      // single loop is only where the loop starts, and left free there it bent into a hook (58 degrees on the
+      // two-disc sphere's Panel 1, its other points 8).
+      if (bp.corner[j] && bp.pieces.size() > 1) continue;
       const int seam = bp.seam[j];
       const bool sliding = seam >= 0 && sigmaOf(seam) * w_.seam < w_.slidingBelow;
       const double relative = sliding ? w_.slidingSmooth : 1.0;

@@ -10,6 +10,7 @@
 // puts the designer's target, design and undo history back.
 import { Box3, Sphere, Vector3 } from 'three';
 import { parseDesign } from './design.js';
+import { upFrameSize, upOf } from './up-axis.js';
 import { History } from './history.js';
 import { patternForDisplay } from './pattern-session.js';
 import { formatPercent, worseDistance } from './units.js';
@@ -435,7 +436,7 @@ export class Classroom {
       const st = app.target?.report.stats;
       if (!st) return [];
       const scale = app.scaleFor(app.design);
-      return [['Height', `${Math.round(100 * scale * (st.bbox_max[1] - st.bbox_min[1]))} cm`]];
+      return [['Height', `${Math.round(100 * scale * upFrameSize(st, upOf(app.design))[1])} cm`]]; // as it stands
     }
     if (id === 'seams') return [['Seams', String(app.design.seams.length)]];
     const segments = app.seams.segmentation?.segments.length;
