@@ -134,26 +134,7 @@ TEST(Optimize, ShapeObjectiveGradientMatchesFiniteDifferences) {
   ObjectiveTerms t;
   obj.shapeEnergy(x, X, &g, &gX, &t);
   EXPECT_GT(t.target, 0);
-  EXPECT_GT(t.cover, 0);
   EXPECT_GT(t.seam, 0);
-  // E_cover alone (the target's points to their closest points on the shape), by finite differences too.
-  OptimizeWeights coverOnly;
-  coverOnly.target = 0, coverOnly.seam = 0;
-  const PatternObjective cover(imls, f.built, mesh, f.weights, coverOnly);
-  Eigen::VectorXd gc;
-  ObjectiveTerms tc;
-  cover.shapeEnergy(x, X, &gc, nullptr, &tc);
-  EXPECT_NEAR(tc.cover, t.cover, 1e-12 * t.cover);
-  EXPECT_EQ(tc.target, 0);
-  for (int s = 0; s < 3; ++s) {
-    Vertices dx(x.rows(), 3);
-    for (int v = 0; v < x.rows(); ++v) dx.row(v) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
-    const double eps = 1e-7 * h;
-    const double fd =
-        (cover.shapeEnergy(x + eps * dx, X, nullptr) - cover.shapeEnergy(x - eps * dx, X, nullptr)) / (2 * eps);
-    const double an = gc.dot(Eigen::Map<const Eigen::VectorXd>(dx.data(), dx.size()));
-    EXPECT_NEAR(fd, an, 1e-5 * std::abs(an)) << "E_cover, direction " << s;
-  }
   for (int s = 0; s < 3; ++s) {
     Vertices dx(x.rows(), 3);
     for (int v = 0; v < x.rows(); ++v) dx.row(v) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
@@ -641,11 +622,8 @@ TEST(Optimize, SlackInternalPanelDoesNotStopTheOptimizer) {
   oo.maxIterations = 30;
   const OptimizeRun r = optimize(f, oo);
   const auto& h = r.history;
-  std::printf(
-      "[figures] fish with a slack internal panel, 600 elements: %d iterations, rms %.3f %% -> %.3f %%, target to "
-      "inflated %.3f %% -> %.3f %% (%s)\n",
-      r.iterations, 100 * h.front().distanceRms, 100 * h.back().distanceRms, 100 * h.front().targetDistanceRms,
-      100 * h.back().targetDistanceRms, r.message.c_str());
+  std::printf("[figures] fish with a slack internal panel, 600 elements: %d iterations, rms %.3f %% -> %.3f %% (%s)\n",
+              r.iterations, 100 * h.front().distanceRms, 100 * h.back().distanceRms, r.message.c_str());
   EXPECT_EQ(r.iterations, 30) << r.message;
   EXPECT_LT(h.back().distanceRms, 0.65 * h.front().distanceRms);  // before: 0.73
   expectObjectiveNeverRises(h, 1e-12);
@@ -681,11 +659,10 @@ TEST(Optimize, UnstableEquilibriumIsResettledNotTheEnd) {
 // Issue 5, free interior vertices (interiorFollowsBoundary = false): on the gallery's three-gore sphere the
 // optimizer used to stop after a few dozen iterations at 1.5-3.4 % RMS: rest triangles collapsed (the
 // fixed-weight E_target paid vertices to crowd where the shape was close) until the fold check refused every
-// step. Now it goes on, keeps its triangles, and gets to about 1 % (0.7 % with E_target alone, whose figure this
-// is; with E_cover the target's side falls from 6.1 % to 1.8 % too): of the optimizer's own mesh. The cut panels
-// (the final outlines meshed anew and inflated) stay far above that: free interior vertices fit the mesh, not
-// the panels, which is why the outlines are the variables by default (ThreeGoreSphereGetsMuchCloser).
-TEST(Optimize, GallerySphereGoesOnWithFreeInteriorVertices) {
+// step. Now it goes on, keeps its triangles, and gets well below 1 %: of the optimizer's own mesh. The cut
+// panels (the final outlines meshed anew and inflated) stay far above that: free interior vertices fit the
+// mesh, not the panels, which is why the outlines are the variables by default (ThreeGoreSphereGetsMuchCloser).
+TEST(Optimize, GallerySphereGoesOnBelowOnePercent) {
   const Fixture f = makeFixture("../../web/public/gallery/sphere3.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
@@ -704,18 +681,16 @@ TEST(Optimize, GallerySphereGoesOnWithFreeInteriorVertices) {
           std::min(quality, cross / std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
     }
   std::printf(
-      "[figures] gallery sphere3 (%d elements): rms %.3f%% -> %.3f%%, max %.3f%% -> %.3f%%, target to inflated "
-      "%.3f%% -> %.3f%%, %d iterations, %s, %.0f ms, smallest triangle quality %.3f; cut panels %.3f%%\n",
+      "[figures] gallery sphere3 (%d elements): rms %.3f%% -> %.3f%%, max %.3f%% -> %.3f%%, %d iterations, %s, "
+      "%.0f ms, smallest triangle quality %.3f; cut panels %.3f%%\n",
       f.built.figures.triangles, 100 * first.distanceRms, 100 * last.distanceRms, 100 * first.distanceMax,
-      100 * last.distanceMax, 100 * first.targetDistanceRms, 100 * last.targetDistanceRms, last.iteration,
-      toString(r.state), r.ms, quality, 100 * r.cut.distanceRms);
+      100 * last.distanceMax, last.iteration, toString(r.state), r.ms, quality, 100 * r.cut.distanceRms);
   EXPECT_GE(last.iteration, 100) << "stopped early";
-  EXPECT_LT(last.distanceRms, 0.012);
-  EXPECT_LT(last.targetDistanceRms, 0.4 * first.targetDistanceRms);
+  EXPECT_LT(last.distanceRms, 0.008);
   EXPECT_GT(quality, 1e-3);
   EXPECT_LT(last.seamMismatch, 1e-4);
   ASSERT_TRUE(r.cut.ok) << r.cut.message;
-  EXPECT_GT(r.cut.distanceRms, 1.5 * last.distanceRms);
+  EXPECT_GT(r.cut.distanceRms, 2 * last.distanceRms);
 }
 
 // Sec. 5.3: rest triangles degrade as the optimizer moves the panels; below 10 degrees the panels are meshed
@@ -1050,25 +1025,4 @@ TEST(Optimize, APanelBoundedByOneLoopStaysSmoothWhereTheLoopStarts) {
                 turn[corner] * 180 / M_PI, median * 180 / M_PI, sorted.back() * 180 / M_PI);
     EXPECT_LT(turn[corner], 3 * median + 0.05) << "panel " << p;
   }
-}
-
-TEST(Optimize, CoverKeepsTheTargetsSideInView) {
-  // Two discs for a sphere, 3k elements: with E_target alone the first rigid alignment already slid the lens
-  // towards the sphere's bottom (the inflated shape's points near the target, its top left out: 18.6 % the
-  // other way) and the optimizer went on from there; E_cover places it where the target is covered best.
-  const Fixture f = makeFixture("sphere-equator.billow.json", 3000);
-  ASSERT_TRUE(f.built.ok());
-  double first[2] = {0, 0}, last[2] = {0, 0};
-  for (int cover = 0; cover < 2; ++cover) {
-    OptimizeOptions o;
-    o.maxIterations = 10;
-    o.weights.cover = cover;
-    const OptimizeRun r = optimize(f, o, 10);
-    first[cover] = r.history.front().targetDistanceRms, last[cover] = r.history.back().targetDistanceRms;
-    std::printf(
-        "[figures] two-disc sphere, 3k, E_cover weight %d: target to inflated %.2f %% -> %.2f %% (%d iterations)\n",
-        cover, 100 * first[cover], 100 * last[cover], r.iterations);
-  }
-  EXPECT_LT(first[1], 0.7 * first[0]);  // 10.1 % against 18.6 %
-  EXPECT_LT(last[1], 0.4 * last[0]);    // and then 5.2 % against 19.7 %
 }
