@@ -230,6 +230,12 @@ export class App {
 
   async loadTargetBytes(fileName, bytes, design, { quiet, stored = null }) {
     const ticket = ++this.loadCounter;
+    // The worker takes one long operation at a time: panels still being made for the design on screen would
+    // hold the new target back until they are done.
+    const interrupted = Boolean(this.optimizing || this.patterns.running);
+    this.patternTicket += 1;
+    this.optimizing?.cancel();
+    this.patterns.running?.cancel();
     try {
       const result = await this.track(`Opening ${fileName}…`, () =>
         this.client.request(Op.loadTarget, { fileName, bytes }, {
@@ -261,6 +267,7 @@ export class App {
         : `${error.message}${this.target ? ' Your current design is unchanged.' : ''}`;
       this.messages.show('error', text, items);
       if (!this.target) this.setStatus('');
+      if (interrupted) this.remakePattern(); // the design stays: so do its panels
     }
   }
 
