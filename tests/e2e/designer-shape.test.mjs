@@ -59,6 +59,21 @@ test('two discs for a sphere: distance both ways, the parts left out shown where
   // A new seam layout takes the warning away with its cause until the new result says otherwise.
   await page.evaluate(() => window.billow.app.warnUncovered([]));
   assert.equal(await page.locator('.message.warning', { hasText: /of the target/ }).count(), 0);
+
+  // A seam that makes the layout unpatternable (a slit inside the top disc): the panels shown are marked out of
+  // date, and the status says why, until an undo brings panels back.
+  await page.evaluate(() => {
+    const app = window.billow.app;
+    const slit = { name: 'slit', closed: false, weight: 1, points: [[0.3, 0.9, 0.3], [-0.3, 0.9, 0.3]] };
+    app.commitDesign({ ...app.design, seams: [...app.design.seams, slit] });
+    app.seams.refresh();
+  });
+  await page.waitForFunction(() => document.querySelector('#pane-inflated').hasAttribute('data-stale'), null, { timeout: 30000 });
+  assert.ok(await page.evaluate(() => document.querySelector('#pane-pattern').hasAttribute('data-stale')));
+  assert.match(await page.textContent('#status'), /These seams make no panels yet/);
+  await screenshot(page, 'designer-shape-outdated');
+  await page.click('#undo-button').catch(() => page.evaluate(() => window.billow.app.undo()));
+  await page.waitForFunction(() => !document.querySelector('#pane-inflated').hasAttribute('data-stale'), null, { timeout: 30000 });
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -159,6 +159,31 @@ TEST(Segmentation, TwoSeamsSideBySideMakeThinStripsWithAWarning) {
   }
 }
 
+TEST(Segmentation, APartBetweenTwoLoopsNamesThemAndIsPlacedOnTheShorter) {
+  // A loop near the top and a smaller one at the front: the rest of the sphere lies between them.
+  Scene scene("sphere.obj");
+  const auto loop = [&](const Eigen::Vector3d& axis, double radius) {
+    const Eigen::Vector3d n = axis.normalized(), u = n.unitOrthogonal(), v = n.cross(u);
+    std::vector<SurfacePoint> c;
+    for (int k = 0; k < 6; ++k)
+      c.push_back(scene.at(std::sqrt(1 - radius * radius) * n +
+                           radius * (std::cos(2 * kPi * k / 6) * u + std::sin(2 * kPi * k / 6) * v)));
+    scene.add(c, true);
+  };
+  loop({0, 1, 0}, 0.5);
+  loop({0, 0, 1}, 0.25);
+  const Segmentation s = segmentTarget(scene.mesh, scene.topo, scene.seams);
+  ASSERT_EQ(s.segments.size(), 3u);
+  ASSERT_EQ(count(s, "segment.not-disk"), 1);
+  for (const SegmentationProblem& p : s.problems) {
+    if (p.code != "segment.not-disk") continue;
+    EXPECT_NE(p.message.find("lies between two separate seam loops (seams 1 and 2), near the front"), std::string::npos)
+        << p.message;
+    EXPECT_NE(p.message.find("Add a seam from one loop to the other"), std::string::npos) << p.message;
+    EXPECT_GT(p.location.z(), 0.9) << "on the smaller loop, at the front";
+  }
+}
+
 TEST(Segmentation, OpenSeamIsASlitWithAWarning) {
   Scene scene("sphere.obj");
   scene.add({scene.at({1, 0.2, 0}), scene.at({0.3, 0.2, 1}), scene.at({-0.5, 0.5, 0.7})}, false);

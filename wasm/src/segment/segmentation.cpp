@@ -76,11 +76,27 @@ void segmentProblems(const Box& box, double totalArea, const SegmentationOptions
                     "panels.";
       else if (seg.genus > 0)
         p.message = "Segment " + where + " wraps around a handle: add a seam across it so it can be cut open.";
-      else if (loops == 2)
-        p.message = "Segment " + where +
-                    " wraps around a limb like a tube: add a seam along it so it can be "
-                    "cut open.";
-      else
+      else if (loops == 2) {
+        // A tube, or a part with a loop drawn inside it: either way two separate seam loops bound it, and a
+        // seam from one to the other opens it. It is placed on the shorter loop, where that seam would start.
+        const auto length = [&](const BoundaryLoop& l) {
+          double sum = 0;
+          for (size_t i = 0; i < l.vertices.size(); ++i)
+            sum += (out.mesh.V.row(l.vertices[(i + 1) % l.vertices.size()]) - out.mesh.V.row(l.vertices[i])).norm();
+          return sum;
+        };
+        const BoundaryLoop& inner = length(seg.loops[0]) <= length(seg.loops[1]) ? seg.loops[0] : seg.loops[1];
+        const auto seamOf = [](const BoundaryLoop& l) { return l.seams.empty() ? -1 : l.seams.front(); };
+        const int a = seamOf(seg.loops[0]), b = seamOf(seg.loops[1]);
+        p.location = out.mesh.V.row(inner.vertices.front()).transpose();
+        const std::string between = a >= 0 && b >= 0 && a != b ? " (seams " + std::to_string(std::min(a, b) + 1) +
+                                                                     " and " + std::to_string(std::max(a, b) + 1) + ")"
+                                                               : "";
+        p.message = "Segment " + std::to_string(s + 1) + " lies between two separate seam loops" + between + ", " +
+                    box.where(p.location) +
+                    ": a tube, or a part with a loop drawn inside it. Add a seam from one loop to the other so it "
+                    "can be cut open.";
+      } else
         p.message = "Segment " + where + " has " + plural(loops - 1, "hole") +
                     ": connect its inner seams to its outer seam so it can be flattened.";
       out.problems.push_back(p);

@@ -283,6 +283,7 @@ export class App {
     this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
     this.panes.target.setTarget(this.target, this.scaleFor(design));
     this.seams.reset();
+    this.setPanelsOutdated(false);
     this.commitDesign(design, { reset: true });
     // The seams (and so the live optimization) after the stored result: its inflation and cut lines are then
     // queued in the worker first, not held back until the optimization is done.
@@ -332,6 +333,7 @@ export class App {
   // worker so their inflated shape matches the target (paper Sec. 5), then inflated for the panes. A newer
   // edit supersedes this one (commitDesign cancels it).
   async makePattern() {
+    this.setPanelsOutdated(false);
     const ticket = ++this.patternTicket;
     const revision = this.revision;
     this.patterns.running?.cancel();
@@ -371,6 +373,16 @@ export class App {
       if (this.optimizing === call) this.optimizing = null;
       this.notifyChange();
     }
+  }
+
+  // The panels shown were made from seams that have changed and now make none (SeamEditor.segment): they stay in
+  // view, dimmed and marked, the status says so, and what was said about their shape goes, until new panels.
+  setPanelsOutdated(outdated) {
+    const shown = Boolean(this.panes.inflated.shape || this.panes.pattern.pattern);
+    for (const pane of [this.panes.inflated, this.panes.pattern]) pane.element.closest('.pane')?.toggleAttribute('data-stale', outdated && shown);
+    if (!outdated || !shown) return;
+    this.messages.resolve('distance.uncovered', { prefix: true });
+    this.setStatus('These seams make no panels yet (see the seam panel): the panels shown are from the seams before');
   }
 
   // Panels that could not be made: each problem the builder placed is its own message, with "Show where"; memory

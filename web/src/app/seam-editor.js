@@ -349,6 +349,7 @@ export class SeamEditor {
       // Seams that cut every handle open leave no handle to warn of.
       if (patternable) this.app.messages.resolve('target.mesh.genus');
       if (patternable) this.app.makePattern();
+      else this.app.setPanelsOutdated(true);
     } catch (error) {
       if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
       this.app.messages.show('error', `The target could not be cut along the seams: ${error.message}`, [], { cause: 'segment' });
