@@ -38,6 +38,10 @@ test('two discs for a sphere: distance both ways, the parts left out shown where
   const text = await warning.textContent();
   assert.match(text, /near the (top|bottom|left|right|front|back|middle)/);
   assert.match(text, /More seams|A seam around that part/);
+  // The stack shows the newest on top: the largest part left out is put in last, so it leads.
+  const areas = await page.$$eval('.message.warning', (els) => els.map((e) => e.textContent)
+    .filter((t) => /of the target/.test(t)).map((t) => Number(t.match(/([\d.]+) % of its surface/)[1])));
+  assert.equal(areas.at(-1), Math.max(...areas), `the largest leads: ${areas}`);
   assert.equal(await page.inputValue('#color-select'), 'wrinkles');
   await warning.locator('button.locate').click();
   assert.equal(await page.inputValue('#color-select'), 'distance', 'showing it picks the distance colors');

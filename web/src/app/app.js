@@ -391,7 +391,7 @@ export class App {
     this.messages.resolve('pattern', { prefix: true });
     const placed = (error.details?.problems ?? []).filter((p) => p.location);
     if (error.code === 'pattern.not-built' && placed.length) {
-      placed.slice(0, 3).forEach((p, i) => {
+      placed.slice(0, 3).reverse().forEach((p, i) => { // the first problem in last, to lead the stack
         this.messages.show('error', `The panels could not be made from these seams: ${p.message}`, [], { cause: `pattern.${i}`, locate: () => this.showPlace(p.location) });
       });
       return;
@@ -455,9 +455,12 @@ export class App {
   // how much, and what helps.
   warnUncovered(regions) {
     this.messages.resolve('distance.uncovered', { prefix: true });
-    regions.slice(0, 3).forEach((r, i) => {
+    // The newest message is on top of the stack (messages.js): the largest part goes in last, to lead.
+    const shown = regions.slice(0, 3);
+    for (let i = shown.length - 1; i >= 0; i--) {
+      const r = shown[i];
       this.messages.show('warning', r.message, [], { cause: `distance.uncovered.${i}`, locate: () => this.showPlace(r.position, { radius: r.radius, colors: 'distance' }) });
-    });
+    }
   }
 
   // Turns the target and inflated panes towards a place on the target (its own units) and marks it there.
