@@ -163,9 +163,9 @@ export class PatternSession {
       ['Pressure', `${(result.pressure / 1000).toFixed(2)} kPa`],
       ['Max wrinkling', `${(100 * result.maxCompression).toFixed(1)} %`],
       // The stress the most stressed 1 % of the surface reaches; the single highest triangle beside it.
-      ['Peak stress', `${(peak / 1e6).toFixed(1)} MPa${result.maxStress > 1.5 * peak ? ` (one spot ${(result.maxStress / 1e6).toFixed(0)})` : ''}`],
-      // Optimized panels arrive in balance: no step to take, which "0" alone would not say.
-      ['Solver steps', result.iterations ? String(result.iterations) : '0 (already in balance)'],
+      ['Peak stress', `${(peak / 1e6).toFixed(1)} MPa${result.maxStress > 1.5 * peak ? ` (${(result.maxStress / 1e6).toFixed(0)} MPa at one spot)` : ''}`],
+      // The steps of this inflation, not the optimizer's: optimized panels arrive in balance and take none.
+      ['Inflation steps', result.iterations ? String(result.iterations) : 'none: the optimized shape is in balance'],
     ];
     const internal = internalPanelRow(pattern, result);
     if (internal) rows.push(internal);
