@@ -12,20 +12,18 @@ namespace billow {
 
 namespace {
 
-struct Box {
-  Eigen::Vector3d lo, hi;
-  UpAxis up;
-  std::string where(const Eigen::Vector3d& p) const { return describeLocation(p, lo, hi, up); }
-  double diagonal() const { return (hi - lo).norm(); }
-};
+double loopLength(const TriMesh& m, const BoundaryLoop& loop) {
+  double sum = 0;
+  for (size_t i = 0; i < loop.vertices.size(); ++i)
+    sum += (m.V.row(loop.vertices[(i + 1) % loop.vertices.size()]) - m.V.row(loop.vertices[i])).norm();
+  return sum;
+}
 
 // A segment's mean width: twice its area over its boundary's length (a strip of width w and length L has
 // area wL and boundary about 2L; a disk of radius r gives r).
 double meanWidth(const TriMesh& m, const Segment& s) {
   double perimeter = 0;
-  for (const BoundaryLoop& loop : s.loops)
-    for (size_t i = 0; i < loop.vertices.size(); ++i)
-      perimeter += (m.V.row(loop.vertices[(i + 1) % loop.vertices.size()]) - m.V.row(loop.vertices[i])).norm();
+  for (const BoundaryLoop& loop : s.loops) perimeter += loopLength(m, loop);
   return perimeter > 0 ? 2 * s.area / perimeter : std::numeric_limits<double>::infinity();
 }
 
@@ -59,14 +57,15 @@ void junctions(const CutMesh& cut, Segmentation& out) {
 
 std::string plural(int n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
-void segmentProblems(const Box& box, double totalArea, const SegmentationOptions& options, Segmentation& out) {
+void segmentProblems(double totalArea, const SegmentationOptions& options, Segmentation& out) {
+  const double diagonal = (out.boxMax - out.boxMin).norm();
   for (int s = 0; s < static_cast<int>(out.segments.size()); ++s) {
     Segment& seg = out.segments[s];
     seg.labelPoint = segmentPoint(out.mesh, seg);
     SegmentationProblem p;
     p.segment = s, p.location = seg.labelPoint;
     // "Segment 3, near the top left of the shape,": the number the model shows, and where it is.
-    const std::string where = std::to_string(s + 1) + ", " + box.where(p.location) + ",";
+    const std::string where = std::to_string(s + 1) + ", " + out.where(p.location) + ",";
     const int loops = static_cast<int>(seg.loops.size());
     if (!seg.isDisk) {
       p.code = "segment.not-disk", p.severity = "error";
@@ -79,13 +78,8 @@ void segmentProblems(const Box& box, double totalArea, const SegmentationOptions
       else if (loops == 2) {
         // A tube, or a part with a loop drawn inside it: either way two separate seam loops bound it, and a
         // seam from one to the other opens it. It is placed on the shorter loop, where that seam would start.
-        const auto length = [&](const BoundaryLoop& l) {
-          double sum = 0;
-          for (size_t i = 0; i < l.vertices.size(); ++i)
-            sum += (out.mesh.V.row(l.vertices[(i + 1) % l.vertices.size()]) - out.mesh.V.row(l.vertices[i])).norm();
-          return sum;
-        };
-        const BoundaryLoop& inner = length(seg.loops[0]) <= length(seg.loops[1]) ? seg.loops[0] : seg.loops[1];
+        const BoundaryLoop& inner =
+            loopLength(out.mesh, seg.loops[0]) <= loopLength(out.mesh, seg.loops[1]) ? seg.loops[0] : seg.loops[1];
         const auto seamOf = [](const BoundaryLoop& l) { return l.seams.empty() ? -1 : l.seams.front(); };
         const int a = seamOf(seg.loops[0]), b = seamOf(seg.loops[1]);
         p.location = out.mesh.V.row(inner.vertices.front()).transpose();
@@ -93,7 +87,7 @@ void segmentProblems(const Box& box, double totalArea, const SegmentationOptions
                                                                      " and " + std::to_string(std::max(a, b) + 1) + ")"
                                                                : "";
         p.message = "Segment " + std::to_string(s + 1) + " lies between two separate seam loops" + between + ", " +
-                    box.where(p.location) +
+                    out.where(p.location) +
                     ": a tube, or a part with a loop drawn inside it. Add a seam from one loop to the other so it "
                     "can be cut open.";
       } else
@@ -105,10 +99,10 @@ void segmentProblems(const Box& box, double totalArea, const SegmentationOptions
       p.code = "segment.sliver", p.severity = "warning";
       p.message = "Segment " + where + " is tiny: move its seams apart or remove one of them.";
       out.problems.push_back(p);
-    } else if (const double width = meanWidth(out.mesh, seg); width < options.minSegmentWidthRatio * box.diagonal()) {
+    } else if (const double width = meanWidth(out.mesh, seg); width < options.minSegmentWidthRatio * diagonal) {
       // Two seams run side by side (a loop closed early, a seam drawn along another): a strip too thin to sew.
       char percent[32];
-      std::snprintf(percent, sizeof percent, "%.1f %%", 100 * width / box.diagonal());
+      std::snprintf(percent, sizeof percent, "%.1f %%", 100 * width / diagonal);
       p.code = "segment.thin", p.severity = "warning";
       p.message = "Segment " + where + " is a thin strip (about " + percent +
                   " of the shape's size wide): move its seams apart or remove one of them.";
@@ -117,7 +111,7 @@ void segmentProblems(const Box& box, double totalArea, const SegmentationOptions
   }
 }
 
-void seamProblems(const Box& box, const CutMesh& cut, Segmentation& out) {
+void seamProblems(const CutMesh& cut, Segmentation& out) {
   std::set<int> reported;
   for (const SeamJunction& j : out.junctions) {
     if (j.seamEdges != 1) continue;
@@ -130,7 +124,7 @@ void seamProblems(const Box& box, const CutMesh& cut, Segmentation& out) {
     if (seam < 0 || !reported.insert(seam).second) continue;  // TODO: stray degree-1 seam vertices (see report)
     SegmentationProblem p;
     p.code = "seam.dangling", p.severity = "warning", p.seam = seam, p.location = j.position;
-    p.message = "Seam " + std::to_string(seam + 1) + " ends in the middle of a segment " + box.where(j.position) +
+    p.message = "Seam " + std::to_string(seam + 1) + " ends in the middle of a segment " + out.where(j.position) +
                 "; it will be cut as a slit. Extend it to another seam to close the region.";
     out.problems.push_back(p);
   }
@@ -139,7 +133,7 @@ void seamProblems(const Box& box, const CutMesh& cut, Segmentation& out) {
     if (!crossed.insert(c.seam).second) continue;
     SegmentationProblem p;
     p.code = "seam.self-crossing", p.severity = "warning", p.seam = c.seam, p.location = c.position;
-    p.message = "Seam " + std::to_string(c.seam + 1) + " crosses itself " + box.where(c.position) +
+    p.message = "Seam " + std::to_string(c.seam + 1) + " crosses itself " + out.where(c.position) +
                 ": move its points so it does not loop over itself.";
     out.problems.push_back(p);
   }
@@ -172,12 +166,12 @@ Segmentation segmentTarget(const TriMesh& target, const MeshTopology& topo, cons
   out.seamVertices = cut.seamVertices;
   labelSegments(cut, out);
   junctions(cut, out);
-  const Box box{target.V.colwise().minCoeff().transpose(), target.V.colwise().maxCoeff().transpose(), options.up};
-  out.boxMin = box.lo, out.boxMax = box.hi, out.up = box.up;
+  out.boxMin = target.V.colwise().minCoeff().transpose(), out.boxMax = target.V.colwise().maxCoeff().transpose();
+  out.up = options.up;
   double area = 0;
   for (const Segment& s : out.segments) area += s.area;
-  segmentProblems(box, area, options, out);
-  seamProblems(box, cut, out);
+  segmentProblems(area, options, out);
+  seamProblems(cut, out);
   // Seams that cut nothing apart make no pattern: say so, or the designer sees seams and nothing else.
   if (out.segments.size() == 1 && !seams.empty()) {
     SegmentationProblem p;

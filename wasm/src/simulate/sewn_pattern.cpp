@@ -159,6 +159,7 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
     return std::pair{i, -1};
   };
   for (const auto& [e, u] : uses) {
+    if (u.first <= 1 && uses.count({e.second, e.first})) continue;  // sewn once each way: as it should be
     const std::string where = panelLabel(p, m.trianglePanel[u.second]);
     const auto [panel, vertex] = panelVertexAt(u.second, e.first);
     if (u.first > 1)
@@ -168,12 +169,11 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
               ? "More than two outer panels meet along one edge of " + where + "; use an internal panel instead."
               : "Two outer panels along a seam of " + where + " face opposite ways; one panel is flipped.",
           panel, vertex);
-    if (!uses.count({e.second, e.first}))
-      throw Error("pattern.open",
-                  "An edge of " + where +
-                      " is not sewn to another panel, so the balloon would leak. Stitch both ends of "
-                      "every outer panel edge to a matching edge.",
-                  panel, vertex);
+    throw Error("pattern.open",
+                "An edge of " + where +
+                    " is not sewn to another panel, so the balloon would leak. Stitch both ends of "
+                    "every outer panel edge to a matching edge.",
+                panel, vertex);
   }
 
   // Warnings: sewn boundary edges of different lengths (DESIGN.md, Eq. 11 wants them equal).

@@ -134,7 +134,7 @@ export class SeamEditor {
       while (this.nextDraft) {
         const { draft: next, ticket: nextTicket } = this.nextDraft;
         this.nextDraft = null;
-        const seams = [...this.design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) })), next];
+        const seams = [...requestSeams(this.design), next];
         let result = null;
         try {
           result = await this.app.client.request(Op.checkSeams, { seams, up: upOf(this.design) });
@@ -337,7 +337,7 @@ export class SeamEditor {
       for (const fn of this.listeners) fn();
       return;
     }
-    const seams = this.design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
+    const seams = requestSeams(this.design);
     try {
       const result = await this.app.client.request(Op.segment, { seams, up: upOf(this.design) });
       if (ticket !== this.segmentTicket) return;
@@ -365,6 +365,9 @@ export class SeamEditor {
     this.segmentation = null;
   }
 }
+
+// The design's seams as the worker's segmentation takes them.
+const requestSeams = (design) => design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
 
 const DRAFT_WORDS = {
   'seam.self-crossing': 'Crosses itself here',
