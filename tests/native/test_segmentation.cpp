@@ -159,6 +159,35 @@ TEST(Segmentation, TwoSeamsSideBySideMakeThinStripsWithAWarning) {
   }
 }
 
+TEST(Segmentation, ASegmentFarLargerThanAFlatPanelInsideItsSeamIsNamed) {
+  // One loop of radius r on the unit sphere: the cap inside is a disk a flat panel can nearly cover; the rest of
+  // the sphere has the same seam around it and 4 pi - (cap) of area, which a flat panel of that perimeter covers
+  // (2 pi r)^2 / (4 pi) / area of. Below a quarter it is named; the equator's halves (a half each) are not.
+  for (const double radius : {0.3, 0.6, 0.999}) {
+    Scene scene("sphere.obj");
+    std::vector<SurfacePoint> c;
+    const Eigen::Vector3d n(0, 0, 1);
+    for (int k = 0; k < 8; ++k)
+      c.push_back(scene.at(std::sqrt(1 - radius * radius) * n +
+                           radius * Eigen::Vector3d(std::cos(2 * kPi * k / 8), std::sin(2 * kPi * k / 8), 0)));
+    scene.add(c, true);
+    const Segmentation s = segmentTarget(scene.mesh, scene.topo, scene.seams);
+    ASSERT_EQ(s.segments.size(), 2u);
+    EXPECT_TRUE(s.ok()) << "a warning: the panels can still be made";
+    const double height = 1 - std::sqrt(1 - radius * radius);
+    const double rest = 4 * kPi - 2 * kPi * height, share = radius * radius * kPi / rest;
+    EXPECT_EQ(count(s, "segment.too-big-for-seam"), share < 0.25 ? 1 : 0) << "radius " << radius;
+    for (const SegmentationProblem& p : s.problems)
+      if (p.code == "segment.too-big-for-seam") {
+        EXPECT_GT(s.segments[p.segment].area, 3.0) << "the rest of the sphere, not the cap";
+        EXPECT_LT(p.location.z(), 0.5) << "placed on its own segment";
+        char percent[32];
+        std::snprintf(percent, sizeof percent, "covers at most %.0f %% of it", 100 * share);
+        EXPECT_NE(p.message.find(percent), std::string::npos) << p.message;
+      }
+  }
+}
+
 TEST(Segmentation, APartBetweenTwoLoopsNamesThemAndIsPlacedOnTheShorter) {
   // A loop near the top and a smaller one at the front: the rest of the sphere lies between them.
   Scene scene("sphere.obj");

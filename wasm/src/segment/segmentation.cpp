@@ -1,8 +1,10 @@
 // Segmentation and its problem report (see segmentation.hpp).
 #include "segment/segmentation.hpp"
 
+#include <cmath>
 #include <cstdio>
 #include <limits>
+#include <queue>
 #include <set>
 
 #include "mesh/location.hpp"
@@ -27,12 +29,58 @@ double meanWidth(const TriMesh& m, const Segment& s) {
   return perimeter > 0 ? 2 * s.area / perimeter : std::numeric_limits<double>::infinity();
 }
 
-// A representative point of a segment: the centroid of its triangle nearest to its area centroid.
-Eigen::Vector3d segmentPoint(const TriMesh& m, const Segment& s) {
-  Eigen::Vector3d c = Eigen::Vector3d::Zero();
+// Each vertex's distance to the nearest seam along the mesh's edges (multi-source Dijkstra from the segments'
+// boundaries). A path into another segment crosses a seam first, so it is the distance within its own segment.
+std::vector<double> distanceToSeams(const TriMesh& m, const std::vector<Segment>& segments) {
+  const int nv = m.numVertices();
+  std::vector<int> start(nv + 1, 0), next;
+  for (int t = 0; t < m.numTriangles(); ++t)
+    for (int k = 0; k < 3; ++k) start[m.F(t, k) + 1] += 2;
+  for (int v = 0; v < nv; ++v) start[v + 1] += start[v];
+  next.resize(start[nv]);
+  std::vector<int> fill(start.begin(), start.end() - 1);
+  for (int t = 0; t < m.numTriangles(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int v = m.F(t, k);
+      next[fill[v]++] = m.F(t, (k + 1) % 3), next[fill[v]++] = m.F(t, (k + 2) % 3);
+    }
+  std::vector<double> d(nv, std::numeric_limits<double>::infinity());
+  using Entry = std::pair<double, int>;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<Entry>> queue;
+  for (const Segment& s : segments)
+    for (const BoundaryLoop& loop : s.loops)
+      for (int v : loop.vertices)
+        if (d[v] > 0) d[v] = 0, queue.push({0.0, v});
+  while (!queue.empty()) {
+    const auto [dv, v] = queue.top();
+    queue.pop();
+    if (dv > d[v]) continue;
+    for (int e = start[v]; e < start[v + 1]; ++e) {
+      const int w = next[e];
+      const double dw = dv + (m.V.row(w) - m.V.row(v)).norm();
+      if (dw < d[w]) d[w] = dw, queue.push({dw, w});
+    }
+  }
+  return d;
+}
+
+// Where a segment is shown and named: the centroid of its triangle farthest from its seams, in its middle rather
+// than beside a seam (the area centroid of most of a sphere lies inside it, as near one seam as any); without
+// seams, the triangle nearest its area centroid.
+Eigen::Vector3d segmentPoint(const TriMesh& m, const Segment& s, const std::vector<double>& toSeams) {
   auto centroid = [&](int t) {
     return ((m.V.row(m.F(t, 0)) + m.V.row(m.F(t, 1)) + m.V.row(m.F(t, 2))) / 3.0).transpose().eval();
   };
+  if (!s.loops.empty()) {
+    int best = s.triangles.front();
+    double farthest = -1;
+    for (int t : s.triangles) {
+      const double d = toSeams[m.F(t, 0)] + toSeams[m.F(t, 1)] + toSeams[m.F(t, 2)];
+      if (d > farthest) farthest = d, best = t;
+    }
+    return centroid(best);
+  }
+  Eigen::Vector3d c = Eigen::Vector3d::Zero();
   for (int t : s.triangles) c += centroid(t) / static_cast<double>(s.triangles.size());
   Eigen::Vector3d best = centroid(s.triangles.front());
   for (int t : s.triangles)
@@ -59,9 +107,10 @@ std::string plural(int n, const std::string& word) { return std::to_string(n) + 
 
 void segmentProblems(double totalArea, const SegmentationOptions& options, Segmentation& out) {
   const double diagonal = (out.boxMax - out.boxMin).norm();
+  const std::vector<double> toSeams = distanceToSeams(out.mesh, out.segments);
   for (int s = 0; s < static_cast<int>(out.segments.size()); ++s) {
     Segment& seg = out.segments[s];
-    seg.labelPoint = segmentPoint(out.mesh, seg);
+    seg.labelPoint = segmentPoint(out.mesh, seg, toSeams);
     SegmentationProblem p;
     p.segment = s, p.location = seg.labelPoint;
     // "Segment 3, near the top left of the shape,": the number the model shows, and where it is.
@@ -107,6 +156,22 @@ void segmentProblems(double totalArea, const SegmentationOptions& options, Segme
       p.message = "Segment " + where + " is a thin strip (about " + percent +
                   " of the shape's size wide): move its seams apart or remove one of them.";
       out.problems.push_back(p);
+    }
+    if (seg.isDisk) {
+      // A flat panel inside a seam of length P has at most the disk's area P^2/(4 pi): a segment far larger (a
+      // fingertip's loop around a whole hand, a limb closed by a ring at its root) inflates to a small ball that
+      // leaves most of it out, however its panel is optimized.
+      const double perimeter = loopLength(out.mesh, seg.loops.front());
+      const double share = perimeter * perimeter / (4 * M_PI * seg.area);
+      if (share < options.minFlatShare) {
+        char percent[32];
+        std::snprintf(percent, sizeof percent, "%.0f %%", std::max(1.0, std::round(100 * share)));
+        p.code = "segment.too-big-for-seam", p.severity = "warning";
+        p.message = "Segment " + where + " is too big for the seam around it: a flat panel inside that seam covers " +
+                    "at most " + percent + " of it, so its panel inflates to a small ball. Add seams across it " +
+                    "(along a limb, around a bump) so each part can lie nearly flat.";
+        out.problems.push_back(p);
+      }
     }
   }
 }

@@ -14,8 +14,9 @@ namespace billow {
 struct SegmentationOptions {
   double minSegmentAreaRatio = 1e-3;   // a segment below this share of the target's area is a sliver
   double minSegmentWidthRatio = 5e-3;  // a segment narrower on average than this share of the diagonal is thin
-  double tolerance = 1e-9;             // barycentric merge tolerance for seam points
-  UpAxis up;                           // the problems' places ("near the top left") as the target stands
+  double minFlatShare = 0.25;  // a disk segment of which a flat panel inside its seam covers less is too big for it
+  double tolerance = 1e-9;     // barycentric merge tolerance for seam points
+  UpAxis up;                   // the problems' places ("near the top left") as the target stands
 };
 
 struct BoundaryLoop {
@@ -30,8 +31,8 @@ struct Segment {
   int genus = 0;
   bool isDisk = false;  // eulerCharacteristic == 1 with one boundary loop
   std::vector<BoundaryLoop> loops;
-  // Where the segment is shown and named ("Segment 3" on the model; its problems are located there): the
-  // centroid of the triangle nearest the segment's centroid, so it lies on the surface.
+  // Where the segment is shown and named ("Segment 3" on the model; its problems are located there): on the
+  // surface, in the middle of the segment, as far from its seams as it reaches.
   Eigen::Vector3d labelPoint = Eigen::Vector3d::Zero();
 };
 
