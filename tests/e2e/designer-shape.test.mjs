@@ -52,6 +52,19 @@ test('two discs for a sphere: distance both ways, the parts left out shown where
       note: document.querySelector('#pane-inflated .legend .note').textContent };
   });
   assert.ok(shown.mark, 'the place is marked on the target');
+  const outside = await page.evaluate(() => {
+    const pane = window.billow.app.panes.inflated;
+    const Vector3 = pane.camera.position.constructor;
+    const mesh = pane.uncoveredMesh, positions = mesh.geometry.attributes.position, index = mesh.geometry.index;
+    mesh.updateMatrixWorld(true);
+    let far = 0;
+    for (let i = 0; i < index.count; i++) {
+      const p = new Vector3().fromBufferAttribute(positions, index.getX(i)).applyMatrix4(mesh.matrixWorld).project(pane.camera);
+      far = Math.max(far, Math.abs(p.x), Math.abs(p.y));
+    }
+    return far;
+  });
+  assert.ok(outside <= 1.05, `the parts left out are framed in the inflated pane (${outside.toFixed(2)} of the half-width)`);
   assert.ok(shown.ghost && shown.triangles > 10, `the uncovered target is drawn (${shown.triangles} triangles)`);
   assert.match(shown.note, /target → inflated.*inflated → target|inflated → target.*target → inflated/);
   assert.match(shown.note, /Translucent blue: parts of the target the inflated shape leaves out/);
@@ -124,6 +137,60 @@ test('a problem in the seam panel, clicked, turns the view to its place and sele
   assert.deepEqual(mark, [-1, 0, 0], 'the mark is at the place the problem names');
   await page.evaluate(() => window.billow.app.messages.resolve('pattern', { prefix: true }));
   assert.equal(await refused.count(), 0);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('the wheel zooms towards the point under the cursor, in the target and the pattern', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.waitForFunction(() => window.billow.app.panes.target.mesh);
+  const box = await page.locator('#pane-target').boundingBox();
+  // Off the centre of the view, on the model: the point there stays under the cursor as the view closes in.
+  const at = await page.evaluate(({ left, top, width, height }) => {
+    const pane = window.billow.app.panes.target;
+    for (let dy = -0.2; dy <= 0.2; dy += 0.05)
+      for (let dx = 0.25; dx >= 0.08; dx -= 0.03) {
+        const x = left + width * (0.5 + dx), y = top + height * (0.5 + dy);
+        const hit = pane.pick({ clientX: x, clientY: y });
+        if (hit) return { x, y, position: hit.position };
+      }
+    return null;
+  }, { left: box.x, top: box.y, width: box.width, height: box.height });
+  assert.ok(at, 'a point of the model off the centre');
+  const distance = () => page.evaluate(() => {
+    const pane = window.billow.app.panes.target;
+    return pane.camera.position.distanceTo(pane.controls.target);
+  });
+  const before = await distance();
+  await page.mouse.move(at.x, at.y);
+  for (let i = 0; i < 4; i++) await page.mouse.wheel(0, -200);
+  await page.waitForTimeout(200);
+  assert.ok(await distance() < 0.8 * before, 'the view closed in');
+  const drift = await page.evaluate(({ x, y, position }) => {
+    const pane = window.billow.app.panes.target;
+    const p = pane.mesh.localToWorld(new (pane.camera.position.constructor)(...position)).project(pane.camera);
+    const r = pane.element.getBoundingClientRect();
+    return Math.hypot(r.left + (p.x + 1) / 2 * r.width - x, r.top + (1 - p.y) / 2 * r.height - y);
+  }, at);
+  assert.ok(drift < 8, `the point under the cursor stays there (${drift.toFixed(1)} px)`);
+  // The pattern pane too: the sheet point under the cursor stays.
+  const pattern = await page.locator('#pane-pattern').boundingBox();
+  const px = pattern.x + pattern.width * 0.3, py = pattern.y + pattern.height * 0.4;
+  const sheetPoint = (x, y) => page.evaluate(({ x, y }) => {
+    const pane = window.billow.app.panes.pattern;
+    const r = pane.element.getBoundingClientRect();
+    const v = new (pane.camera.position.constructor)(((x - r.left) / r.width) * 2 - 1, 1 - ((y - r.top) / r.height) * 2, 0).unproject(pane.camera);
+    return [v.x, v.y];
+  }, { x, y });
+  const p0 = await sheetPoint(px, py);
+  await page.mouse.move(px, py);
+  for (let i = 0; i < 3; i++) await page.mouse.wheel(0, -200);
+  await page.waitForTimeout(200);
+  const p1 = await sheetPoint(px, py);
+  const zoom = await page.evaluate(() => window.billow.app.panes.pattern.camera.zoom);
+  assert.ok(zoom > 1.2, `the pattern closed in (zoom ${zoom})`);
+  const span = await page.evaluate(() => { const c = window.billow.app.panes.pattern.camera; return (c.right - c.left) / c.zoom; });
+  assert.ok(Math.hypot(p1[0] - p0[0], p1[1] - p0[1]) < 0.01 * span, `the sheet point under the cursor stays (${p0} -> ${p1})`);
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -467,6 +467,7 @@ export class App {
   showPlace(position, { radius = 0, colors = null } = {}) {
     this.panes.target.showPlace(position, radius);
     if (colors) this.setColorMode?.(colors);
+    if (colors === 'distance') this.panes.inflated.frameWithUncovered();
   }
 
   setResolution(triangles) {

@@ -144,6 +144,12 @@ export class InflatedPane extends Pane3D {
     this.group.add(this.uncoveredMesh);
   }
 
+  // Frames the shape with the parts of the target it leaves out, when they are shown: a shape far smaller than
+  // its target (a fingertip's panels against a whole hand) would leave them outside the pane.
+  frameWithUncovered() {
+    if (this.uncoveredMesh?.visible) this.frame(this.group);
+  }
+
   get hasDistances() {
     return Boolean(this.fields?.distances);
   }

@@ -24,6 +24,7 @@ export class Pane3D {
     this.scene.add(this.camera);
     this.controls = new OrbitControls(this.camera, element);
     this.controls.enableDamping = false;
+    this.controls.zoomToCursor = true; // a thin part under the cursor stays there as it grows, to click on
     this.controls.addEventListener('change', () => viewport.requestRender());
     this.square = null; // where the view is framed: { left, top, side } in client pixels (fitView)
     this.fitKey = '';

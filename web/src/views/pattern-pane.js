@@ -23,6 +23,7 @@ export class PatternPane {
     this.controls = new OrbitControls(this.camera, element);
     this.controls.enableRotate = false;
     this.controls.screenSpacePanning = true;
+    this.controls.zoomToCursor = true; // a piece's corner under the cursor stays there as it grows
     this.controls.mouseButtons = { LEFT: 2, MIDDLE: 1, RIGHT: 2 }; // PAN, DOLLY, PAN
     this.controls.touches = { ONE: 1, TWO: 2 }; // PAN, DOLLY_PAN
     this.controls.addEventListener('change', () => viewport.requestRender());
