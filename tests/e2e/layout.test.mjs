@@ -146,6 +146,15 @@ test('the docked boxes and the messages leave the target, the inflated shape and
     assertClear(await framing(page), `${width}x${height}`);
     await screenshot(page, `layout-koala-${width}x${height}`);
   }
+  // A wide allowance: the cut lines, drawn after the pieces, stand out past the margin they were framed with, and
+  // the view takes them in.
+  await page.setViewportSize({ width: 1400, height: 900 });
+  await page.fill('#allowance-input', '100');
+  await page.press('#allowance-input', 'Enter');
+  await page.waitForFunction(() => Math.max(...window.billow.app.cutStatistics.seams.map((s) => s.allowance_mm)) === 100, null, { timeout: 30000 });
+  await nextFrames(page);
+  assertClear(await framing(page), 'a 100 mm allowance');
+  await screenshot(page, 'layout-koala-wide-allowance');
   // Newest first: the error came last, and is on top of the stack.
   assert.match(await page.locator('.messages .message').last().textContent(), /solver stopped/);
   assert.ok(await page.evaluate(() => {

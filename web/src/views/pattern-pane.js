@@ -189,7 +189,9 @@ export class PatternPane {
     this.seamData = outlines && seams ? { outlines, seams, widths } : null;
     // Panels that were side by side move onto the sheet, or the sheet changed size: frame it again.
     const moved = !before || Math.abs(before.width - this.sheet?.width) > 1e-9 || Math.abs(before.length - this.sheet?.length) > 0.05 * before.length;
-    this.redraw({ frame: this.view === 'sheet' && Boolean(this.sheet) && moved });
+    const frame = this.view === 'sheet' && Boolean(this.sheet) && moved;
+    this.redraw({ frame });
+    if (!frame && this.outgrewFrame()) this.frame(this.content);
     return true;
   }
 
@@ -484,12 +486,23 @@ export class PatternPane {
     this.halfHeight = (pixels * body.height) / 2;
     const dx = ((free.left + free.right) / 2 - (body.left + body.right) / 2) * pixels;
     const dy = ((free.top + free.bottom) / 2 - (body.top + body.bottom) / 2) * pixels;
+    this.framedBox = box;
     this.camera.zoom = 1;
     this.controls.target.set(center.x - dx, center.y + dy, 0);
     this.camera.position.set(center.x - dx, center.y + dy, 5);
     this.controls.update();
     this.framed = true;
     this.viewport.requestRender();
+  }
+
+  // Whether what is shown now reaches past the margin the last frame() left around the pieces (the cut lines,
+  // drawn after them, stand out by the seam allowance: 10 mm around a 66 mm piece is more than its margin), while
+  // the view still follows the pieces.
+  outgrewFrame() {
+    if (!this.framed || !this.framedBox) return false;
+    const box = new Box3().setFromObject(this.content);
+    const room = this.framedBox.clone().expandByVector(this.framedBox.getSize(new Vector3()).multiplyScalar(0.09));
+    return !box.isEmpty() && !room.containsBox(box);
   }
 
   // The pane or its free part changed size (Viewport, watchOverlays).
