@@ -4,43 +4,16 @@
 // gallery's koala). Each seam is a loop of one plane section, picked by a point it must pass near, sampled
 // at equal arc length.
 
+import { planeSection } from '../web/src/app/section.js';
+
 export const AXES = { x: 0, y: 1, z: 2 };
 
-// The closed loops where the plane {p[axis] = value} cuts the mesh: arrays of 3D points.
+// The closed loops where the plane {p[axis] = value} cuts the mesh: arrays of 3D points (planeSection, the
+// section seam tool's own rule).
 export function sectionLoops({ v, t }, axis, value) {
-  const d = v.map((p) => p[axis] - value + 1e-9); // no vertex exactly on the plane
-  const key = (a, b) => (a < b ? `${a},${b}` : `${b},${a}`);
-  const point = (a, b) => {
-    const s = d[a] / (d[a] - d[b]);
-    return v[a].map((x, k) => x + s * (v[b][k] - x));
-  };
-  const next = new Map(); // edge key -> [edge key, point]: one crossing segment per cut face
-  const points = new Map();
-  for (const [a, b, c] of t) {
-    const crossing = [[a, b], [b, c], [c, a]].filter(([p, q]) => d[p] < 0 !== d[q] < 0);
-    if (crossing.length !== 2) continue;
-    const [e0, e1] = crossing.map(([p, q]) => key(p, q));
-    for (const [p, q] of crossing) points.set(key(p, q), point(p, q));
-    if (!next.has(e0)) next.set(e0, []);
-    if (!next.has(e1)) next.set(e1, []);
-    next.get(e0).push(e1);
-    next.get(e1).push(e0);
-  }
-  const seen = new Set(), loops = [];
-  for (const start of next.keys()) {
-    if (seen.has(start)) continue;
-    const loop = [];
-    let prev = null, cur = start;
-    while (cur && !seen.has(cur)) {
-      seen.add(cur);
-      loop.push(points.get(cur));
-      const n = next.get(cur).find((e) => e !== prev && !seen.has(e));
-      prev = cur;
-      cur = n;
-    }
-    loops.push(loop);
-  }
-  return loops;
+  const normal = [0, 0, 0];
+  normal[axis] = 1;
+  return planeSection({ positions: v.flat(), indices: t.flat() }, normal, value).map((loop) => loop.map((p) => p.position));
 }
 
 const dist = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);

@@ -183,7 +183,7 @@ window.addEventListener('keydown', (e) => {
   }
   const mod = e.ctrlKey || e.metaKey;
   const key = e.key.toLowerCase();
-  const tools = { v: 'orbit', d: 'draw', e: 'edit' };
+  const tools = { v: 'orbit', d: 'draw', s: 'section', e: 'edit' };
   if (!mod && !e.altKey && tools[key]) {
     seamTool.setMode(tools[key]);
     seamPanel.render();

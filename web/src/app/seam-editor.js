@@ -31,6 +31,10 @@ export class SeamEditor {
     return this.app.panes.target;
   }
 
+  get target() {
+    return this.app.target;
+  }
+
   onChange(fn) {
     this.listeners.add(fn);
   }
@@ -166,8 +170,16 @@ export class SeamEditor {
     return mirrorPoint(design, this.app.target, this.plane, point);
   }
 
-  commitSeam(points, closed) {
-    let next = cmd.addSeam(this.design, { points, closed });
+  // A loop laid in one action (the section tool): positions [[x, y, z]] shown as the seam-to-be; null clears it.
+  previewLoop(positions) {
+    this.previewTicket++;
+    this.preview = positions ? Float32Array.from([...positions, positions[0]].flat()) : null;
+    this.draftWarning = null;
+    this.draw();
+  }
+
+  commitSeam(points, closed, { smooth = true } = {}) {
+    let next = cmd.addSeam(this.design, { points, closed, smooth });
     const index = next.seams.length - 1;
     if (this.plane) next = addMirroredTwin(next, this.app.target, this.plane, index);
     this.app.commitDesign(next);

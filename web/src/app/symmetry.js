@@ -30,7 +30,8 @@ export function reflect(position, plane) {
 }
 
 const boundsCache = new WeakMap();
-function bounds(target) {
+// The target's bounding box { lo, hi } and its diagonal, in its own units (kept per target).
+export function bounds(target) {
   let b = boundsCache.get(target);
   if (!b) {
     const lo = [Infinity, Infinity, Infinity];

@@ -3,22 +3,29 @@
 // a double-click finishes, clicking the first point closes a loop, Backspace removes the last point,
 // Esc cancels. Near an existing seam or control point the cursor snaps (shown in orange before the click).
 // Edit: drag a control point (the seam follows live), double-click a seam to insert a point, Delete
-// removes the selected point.
+// removes the selected point. Section: a click lays a seam all around the target where a plane through the
+// clicked point cuts it (across the model's x, y or z as shown, or the view), previewed under the pointer.
 // Touch and pen input: a fingertip covers more pixels than a mouse pointer, so taps may wander more and
 // reach farther to snap or grab; the seam panel shows Finish / Close / Cancel buttons while drawing, since
 // there is no Enter key or reliable double-tap.
+import { Matrix4, Vector3 } from 'three';
+import { sectionSeamPoints, sectionThrough } from '../app/section.js';
+
 const CLICK_SLOP_PX = { mouse: 4, pen: 6, touch: 12 };
 const SNAP_PX = { mouse: 12, pen: 16, touch: 28 }; // to control points and the start of the loop being drawn
 const CURVE_SNAP_PX = { mouse: 6, pen: 9, touch: 18 }; // to a seam's curve between its points
 const PICK_PX = { mouse: 10, pen: 14, touch: 26 }; // mouse: SeamEditor's default
 const reach = (table, event) => table[event.pointerType] ?? table.mouse;
+export const SECTION_AXES = ['x', 'y', 'z', 'view'];
 
 export class SeamTool {
-  // pane: TargetPane; app: the App (seam commands and traces)
+  // pane: TargetPane; app: the SeamEditor (seam commands and traces)
   constructor(pane, app) {
     this.pane = pane;
     this.app = app;
-    this.mode = 'orbit'; // 'orbit' | 'draw' | 'edit'
+    this.mode = 'orbit'; // 'orbit' | 'draw' | 'edit' | 'section'
+    this.sectionAxis = 'y'; // across which the section tool's plane lies: SECTION_AXES
+    this.section = null; // the section loop under the pointer (section.js planeSection), for the click
     this.drawing = null; // { points: [surface point], positions: [[x,y,z]] }
     this.drag = null; // { seam, index }
     this.down = null;
@@ -35,6 +42,7 @@ export class SeamTool {
 
   setMode(mode) {
     if (this.drawing) this.cancel();
+    this.clearSection();
     this.mode = mode;
     this.pane.element.dataset.tool = mode;
     this.pane.seams.showCursor(null);
@@ -94,6 +102,7 @@ export class SeamTool {
 
   onMove(event) {
     if (this.mode === 'orbit') return;
+    if (this.mode === 'section') return this.previewSection(event);
     if (this.drag) {
       const hit = this.pane.pick(event);
       if (hit) this.app.moveControlPoint(this.drag.seam, this.drag.index, hit.point);
@@ -116,10 +125,11 @@ export class SeamTool {
       this.app.endDrag();
       return;
     }
-    if (!this.down || this.mode !== 'draw') return;
+    if (!this.down || (this.mode !== 'draw' && this.mode !== 'section')) return;
     const moved = Math.hypot(event.clientX - this.down.x, event.clientY - this.down.y);
     this.down = null;
     if (moved > reach(CLICK_SLOP_PX, event)) return; // that was an orbit drag
+    if (this.mode === 'section') return this.laySection(event);
     const hit = this.pick(event);
     if (!hit) return;
     if (hit.closes) {
@@ -155,6 +165,43 @@ export class SeamTool {
   cancel() {
     this.drawing = null;
     this.app.previewSeam(null);
+  }
+
+  setSectionAxis(axis) {
+    if (!SECTION_AXES.includes(axis)) return;
+    this.sectionAxis = axis;
+    this.clearSection();
+  }
+
+  // The plane's normal in the target's own coordinates: the axis as the target is shown (standing on its up
+  // axis), or the view direction.
+  sectionNormal() {
+    const mesh = this.pane.mesh;
+    const world = this.sectionAxis === 'view' ? this.pane.viewDirection() : new Vector3(...[0, 1, 2].map((k) => (SECTION_AXES[k] === this.sectionAxis ? 1 : 0)));
+    mesh.updateMatrixWorld(true);
+    return world.transformDirection(new Matrix4().copy(mesh.matrixWorld).invert()).toArray();
+  }
+
+  previewSection(event) {
+    const hit = this.pane.pick(event);
+    this.section = hit ? sectionThrough(this.app.target, { position: hit.position, face: hit.point.face }, this.sectionNormal()) : null;
+    this.pane.seams.showCursor(hit ? { x: hit.position[0], y: hit.position[1], z: hit.position[2] } : null, false);
+    this.app.previewLoop(this.section?.map((p) => p.position) ?? null);
+  }
+
+  laySection(event) {
+    this.previewSection(event);
+    const loop = this.section;
+    if (!loop) return;
+    const points = sectionSeamPoints(this.app.target, loop);
+    this.clearSection();
+    this.app.commitSeam(points, true, { smooth: false });
+  }
+
+  clearSection() {
+    if (!this.section && this.mode !== 'section') return;
+    this.section = null;
+    this.app.previewLoop(null);
   }
 
   // For the Finish / Close loop buttons: what the seam being drawn allows.

@@ -172,7 +172,7 @@ export class PatternPane {
     this.element.parentElement.querySelector('.hint')?.setAttribute('hidden', '');
     const box = new Box3().setFromObject(this.content);
     if (!box.isEmpty()) this.placeGrid(box);
-    if (frame) this.frame(this.content);
+    if (frame || this.outgrewFrame()) this.frame(this.content);
     else this.viewport.requestRender();
   }
 
@@ -189,9 +189,7 @@ export class PatternPane {
     this.seamData = outlines && seams ? { outlines, seams, widths } : null;
     // Panels that were side by side move onto the sheet, or the sheet changed size: frame it again.
     const moved = !before || Math.abs(before.width - this.sheet?.width) > 1e-9 || Math.abs(before.length - this.sheet?.length) > 0.05 * before.length;
-    const frame = this.view === 'sheet' && Boolean(this.sheet) && moved;
-    this.redraw({ frame });
-    if (!frame && this.outgrewFrame()) this.frame(this.content);
+    this.redraw({ frame: this.view === 'sheet' && Boolean(this.sheet) && moved });
     return true;
   }
 
@@ -495,9 +493,9 @@ export class PatternPane {
     this.viewport.requestRender();
   }
 
-  // Whether what is shown now reaches past the margin the last frame() left around the pieces (the cut lines,
-  // drawn after them, stand out by the seam allowance: 10 mm around a 66 mm piece is more than its margin), while
-  // the view still follows the pieces.
+  // Whether what is shown now reaches past the margin the last frame() left around the pieces, while the view
+  // still follows them: the optimizer's panels grow as they are streamed, and the cut lines, drawn after the
+  // pieces, stand out by the seam allowance (10 mm around a 66 mm piece is more than its margin).
   outgrewFrame() {
     if (!this.framed || !this.framedBox) return false;
     const box = new Box3().setFromObject(this.content);

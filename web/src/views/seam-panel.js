@@ -1,10 +1,12 @@
 // The seam panel beside the target: tool buttons, the list of seams (select, weight σ, delete), the
 // segment count and the problems the segmentation found. Text only through textContent.
 import { seamWidth } from './seam-layer.js';
+import { SECTION_AXES } from '../tools/seam-tool.js';
 
 const TOOLS = [
   ['orbit', 'View', 'Orbit the view (V)'],
   ['draw', 'Draw seam', 'Click points on the surface; Enter or double-click finishes; click the first point to close a loop (D)'],
+  ['section', 'Section', 'Click the target: a seam all around it where a plane through that point cuts it, across the axis chosen beside (S)'],
   ['edit', 'Edit', 'Drag control points; double-click a seam to add a point; Delete removes the selected point (E)'],
 ];
 
@@ -26,6 +28,15 @@ export class SeamPanel {
       this.toolbar.append(b);
       return b;
     });
+    // The section tool's plane: across the model's x, y or z as it is shown, or across the view.
+    this.sectionAxis = document.createElement('select');
+    this.sectionAxis.className = 'section-axis';
+    this.sectionAxis.title = 'The plane of a section seam: across the width (X), the height (Y) or the depth (Z) of the model as it stands, or across the view';
+    this.sectionAxis.setAttribute('aria-label', 'Section plane');
+    const labels = { x: 'Across X', y: 'Across Y', z: 'Across Z', view: 'Across the view' };
+    for (const axis of SECTION_AXES) this.sectionAxis.append(new Option(labels[axis], axis));
+    this.sectionAxis.addEventListener('change', () => tool.setSectionAxis(this.sectionAxis.value));
+    this.toolbar.append(this.sectionAxis);
     // Mirror symmetry (symmetry.js): new seams get a twin across the chosen plane of the target.
     this.symmetry = document.createElement('select');
     this.symmetry.className = 'symmetry';
@@ -64,13 +75,15 @@ export class SeamPanel {
     for (const b of this.toolButtons) b.setAttribute('aria-pressed', String(b.dataset.tool === this.tool.mode));
     const { design, segmentation, selection } = this.editor;
     this.symmetry.value = design.symmetry?.axis ?? '';
+    this.sectionAxis.hidden = this.tool.mode !== 'section';
+    this.sectionAxis.value = this.tool.sectionAxis;
     this.drawbar.hidden = !this.tool.drawing;
     this.finishButton.disabled = !this.tool.canFinish;
     this.closeButton.disabled = !this.tool.canClose;
     const count = segmentation?.segments?.length;
     this.summary.textContent = design.seams.length
       ? `${design.seams.length} seam${design.seams.length === 1 ? '' : 's'}${count ? `, ${count} segment${count === 1 ? '' : 's'}` : ''}`
-      : 'No seams yet: choose "Draw seam" and click on the target.';
+      : 'No seams yet: choose "Draw seam" and click on the target, or "Section" for a seam all around it in one click.';
     this.list.replaceChildren(...design.seams.map((s, i) => this.seamRow(s, i, selection)));
     this.connections.replaceChildren(...design.connections.map((c, i) => this.connectionRow(c, i)));
     this.problems.replaceChildren(

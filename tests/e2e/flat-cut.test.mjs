@@ -1,0 +1,76 @@
+// Flat-cut layouts in one action. The section tool: the plane through the clicked point, across the model's
+// x, y or z as it stands or across the view, previewed under the pointer; a click lays the loop through that
+// point as an ordinary seam (control points, undo, saved with the design).
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
+
+const env = useBrowser({ before, after });
+
+// The client point at the middle of the target pane's framed square (on the model for the examples).
+const middleOfView = (page) => page.evaluate(() => {
+  const s = window.billow.app.panes.target.square;
+  return { x: s.left + s.side / 2, y: s.top + s.side / 2 };
+});
+
+// The control points of seam i, as positions in the target's own units, once traced.
+const controls = (page, i) => page.waitForFunction((i) => {
+  const trace = window.billow.app.seams.seamTraces()[i];
+  if (!trace) return null;
+  const c = Array.from(trace.controls);
+  return Array.from({ length: c.length / 3 }, (_, k) => c.slice(3 * k, 3 * k + 3));
+}, i, { timeout: 30000 }).then((h) => h.jsonValue());
+
+test('a section seam is laid in one click, across the model or the view, and undone like any seam', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.waitForFunction(() => window.billow.app.panes.target.mesh);
+  assert.equal(await page.isVisible('.section-axis'), false, 'the plane is chosen only for sections');
+  await page.keyboard.press('s');
+  assert.equal(await page.getAttribute('#seam-panel button[data-tool="section"]', 'aria-pressed'), 'true');
+  assert.equal(await page.isVisible('.section-axis'), true);
+  await page.selectOption('.section-axis', 'y');
+  const at = await middleOfView(page);
+  await page.mouse.move(at.x + 3, at.y);
+  await page.mouse.move(at.x, at.y);
+  const preview = await page.evaluate(() => window.billow.app.seams.preview?.length ?? 0);
+  assert.ok(preview > 3 * 20, `the loop is previewed under the pointer (${preview / 3} points)`);
+  await screenshot(page, 'flat-cut-section-preview');
+  await page.mouse.click(at.x, at.y);
+  await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 2, null, { timeout: 30000 });
+  const seam = await page.evaluate(() => window.billow.app.design.seams[0]);
+  assert.equal(seam.closed, true);
+  assert.equal(seam.smooth, false, 'surface paths between the points follow the section');
+  assert.ok(seam.points.length >= 12 && seam.points.every((p) => Number.isInteger(p.face) && p.bary.length === 3), JSON.stringify(seam.points[0]));
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), [], 'a clean cut: no problem');
+  // Across Y as the model stands (Y up here): every control point at one height.
+  const ys = (await controls(page, 0)).map((p) => p[1]);
+  assert.ok(Math.max(...ys) - Math.min(...ys) < 1e-6, `one plane: heights ${Math.min(...ys)} to ${Math.max(...ys)}`);
+  assert.equal(await page.evaluate(() => window.billow.app.seams.preview), null, 'the preview gives way to the seam');
+  await page.waitForTimeout(300);
+  await screenshot(page, 'flat-cut-section-laid');
+
+  // Undo takes it away, redo brings it back.
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 0);
+  await page.click('#redo-button');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 1);
+
+  // Across the view: a plane facing the viewer through the clicked point, the front/back split as seen.
+  await page.selectOption('.section-axis', 'view');
+  const side = { x: at.x + 8, y: at.y - 40 };
+  await page.mouse.move(side.x, side.y);
+  const normal = await page.evaluate(() => {
+    const pane = window.billow.app.panes.target;
+    const n = pane.viewDirection().transformDirection(pane.mesh.matrixWorld.clone().invert());
+    return n.toArray();
+  });
+  await page.mouse.click(side.x, side.y);
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 2);
+  const heights = (await controls(page, 1)).map((p) => p[0] * normal[0] + p[1] * normal[1] + p[2] * normal[2]);
+  assert.ok(Math.max(...heights) - Math.min(...heights) < 1e-5, `one plane across the view: ${Math.min(...heights)} to ${Math.max(...heights)}`);
+  // Esc goes back to viewing, the plane's choice with it.
+  await page.keyboard.press('Escape');
+  assert.equal(await page.isVisible('.section-axis'), false);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

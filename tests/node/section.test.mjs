@@ -1,0 +1,80 @@
+// Section seams (web/src/app/section.js, the section tool): the loop where a plane through a point cuts the
+// target, as an ordinary seam of surface points. On every mesh of ../shared/meshes, sections across x, y and z
+// through the middle make seams that never cross themselves and leave no tiny or thin segment.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync, readdirSync } from 'node:fs';
+import { loadApi } from './load-module.mjs';
+import { readObjText } from './obj.mjs';
+import { createHandlers } from '../../web/src/worker/handlers.js';
+import { planeSection, sectionSeamPoints, sectionThrough } from '../../web/src/app/section.js';
+import { positionOf } from '../../web/src/app/symmetry.js';
+
+const MESHES = new URL('../../../shared/meshes/', import.meta.url);
+const api = await loadApi();
+const handlers = createHandlers(api);
+const run = (generator) => {
+  for (let step = generator.next(); ; step = generator.next()) if (step.done) return step.value;
+};
+const load = (name) => readObjText(readFileSync(new URL(name, MESHES), 'utf8'));
+const middle = ({ positions }) => {
+  const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
+  for (let i = 0; i < positions.length; i++) lo[i % 3] = Math.min(lo[i % 3], positions[i]), hi[i % 3] = Math.max(hi[i % 3], positions[i]);
+  return { center: lo.map((l, k) => (l + hi[k]) / 2), diagonal: Math.hypot(...hi.map((h, k) => h - lo[k])) };
+};
+
+test('a section of the unit sphere is its circle, through the clicked triangle, with valid surface points', () => {
+  const sphere = load('sphere.obj');
+  const loops = planeSection(sphere, [0, 1, 0], 0.5);
+  assert.equal(loops.length, 1);
+  for (const p of loops[0]) {
+    assert.ok(Math.abs(p.position[1] - 0.5) < 1e-6, 'on the plane');
+    assert.ok(Math.abs(Math.hypot(...p.position) - 1) < 0.02, 'on the sphere');
+    const back = positionOf(sphere, p);
+    assert.ok(Math.hypot(...back.map((x, k) => x - p.position[k])) < 1e-9, 'its face and weights give its position');
+  }
+  const at = loops[0][5];
+  const through = sectionThrough(sphere, { position: at.position, face: at.face }, [0, 1, 0]);
+  assert.ok(through.some((p) => p.face === at.face), 'the loop through the clicked triangle');
+  const points = sectionSeamPoints(sphere, through);
+  // A circle of radius 0.87 over a diagonal of 3.46: 2 pi 0.87 / (0.02 * 3.46) = 79 points.
+  assert.ok(points.length > 60 && points.length < 100, `${points.length} points`);
+  for (const p of points) {
+    const position = positionOf(sphere, p);
+    assert.ok(Math.abs(position[1] - 0.5) < 1e-6, `each control point on the plane: ${position}`);
+    assert.ok(Math.abs(p.bary.reduce((a, b) => a + b) - 1) < 1e-9 && p.bary.every((b) => b >= -1e-12), JSON.stringify(p.bary));
+  }
+});
+
+test('where a plane cuts a shape in several loops, the one through the click is laid', () => {
+  const hand = load('hand.obj');
+  const { center, diagonal } = middle(hand);
+  const height = center[1] + 0.35 * diagonal / Math.sqrt(3); // across the fingers
+  const loops = planeSection(hand, [0, 1, 0], height);
+  assert.ok(loops.length >= 3, `the fingers: ${loops.length} loops`);
+  for (const loop of loops) {
+    const through = sectionThrough(hand, { position: loop[0].position, face: loop[0].face }, [0, 1, 0]);
+    const faces = (l) => l.map((p) => p.face).sort((a, b) => a - b);
+    assert.deepEqual(faces(through), faces(loop));
+  }
+});
+
+for (const file of readdirSync(MESHES).filter((f) => f.endsWith('.obj')).sort()) {
+  test(`sections of ${file} across x, y and z make seams that neither cross themselves nor leave slivers`, () => {
+    const mesh = load(file);
+    for (const _ of handlers.setTarget({ positions: mesh.positions, indices: mesh.indices }));
+    const { center } = middle(mesh);
+    for (const axis of [0, 1, 2]) {
+      const normal = [0, 0, 0];
+      normal[axis] = 1;
+      const loops = planeSection(mesh, normal, center[axis]);
+      assert.ok(loops.length > 0, `${file}: the middle plane across ${'xyz'[axis]} cuts it`);
+      const largest = loops.reduce((a, b) => (b.length > a.length ? b : a));
+      const seam = { closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, largest) };
+      const result = run(handlers.checkSeams({ seams: [seam] }));
+      const bad = result.problems.filter((p) => ['seam.self-crossing', 'segment.sliver', 'segment.thin'].includes(p.code));
+      assert.deepEqual(bad.map((p) => p.message), [], `${file} across ${'xyz'[axis]}`);
+      assert.ok(result.segments.length >= 2, `${file} across ${'xyz'[axis]}: the loop cuts it apart (${result.segments.length} segments)`);
+    }
+  });
+}
