@@ -74,3 +74,38 @@ test('a section seam is laid in one click, across the model or the view, and und
   assert.deepEqual(page.errors, []);
   await page.close();
 });
+
+test('the outline as seen is laid in one action: a front and a back panel, and a note on what it joined', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.waitForFunction(() => window.billow.app.panes.target.mesh);
+  // Spot seen from its side (+x), as a foil balloon of a cow is drawn.
+  await page.evaluate(() => {
+    const pane = window.billow.app.panes.target;
+    const distance = pane.camera.position.distanceTo(pane.controls.target);
+    pane.camera.position.copy(pane.controls.target).addScaledVector(new (pane.camera.position.constructor)(1, 0, 0), distance);
+    pane.controls.update();
+    pane.controls.dispatchEvent({ type: 'change' });
+  });
+  await page.click('#seam-panel button.outline');
+  await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 2, null, { timeout: 30000 });
+  const seam = await page.evaluate(() => window.billow.app.design.seams[0]);
+  assert.equal(seam.closed, true);
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), [], 'a clean cut: no problem');
+  // Front and back: two halves of about the same area, the seam where the surface turns away (x near the
+  // middle plane of a cow seen from its side: its control points face neither way).
+  const areas = await page.evaluate(() => window.billow.app.seams.segmentation.segments.map((s) => s.area));
+  assert.ok(Math.min(...areas) > 0.3 * (areas[0] + areas[1]), `front and back halves: ${areas}`);
+  const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
+  await note.waitFor({ timeout: 10000 });
+  assert.match(await note.textContent(), /small parts? turned away .* went with the panel around/);
+  await page.waitForTimeout(300);
+  await screenshot(page, 'flat-cut-outline');
+  // Laid again from the front: a second seam, and the note of the first gives way to the second's.
+  await page.keyboard.press('o');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 2);
+  assert.ok(await note.count() <= 1);
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 1);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

@@ -1,13 +1,14 @@
-// Section seams (web/src/app/section.js, the section tool): the loop where a plane through a point cuts the
-// target, as an ordinary seam of surface points. On every mesh of ../shared/meshes, sections across x, y and z
-// through the middle make seams that never cross themselves and leave no tiny or thin segment.
+// Section and outline seams (web/src/app/section.js, the section tool and the Outline button): the loop where a
+// plane through a point cuts the target, or where its surface turns away from the viewer, as an ordinary seam
+// of surface points. On every mesh of ../shared/meshes, sections across x, y and z through the middle and the
+// outlines seen along x, y and z make seams that never cross themselves and leave no tiny or thin segment.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync, readdirSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
 import { readObjText } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
-import { planeSection, sectionSeamPoints, sectionThrough } from '../../web/src/app/section.js';
+import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough } from '../../web/src/app/section.js';
 import { positionOf } from '../../web/src/app/symmetry.js';
 
 const MESHES = new URL('../../../shared/meshes/', import.meta.url);
@@ -59,8 +60,24 @@ test('where a plane cuts a shape in several loops, the one through the click is 
   }
 });
 
+// The loop as the tools lay it: no crossing, no tiny or thin segment, and the target cut in two.
+function expectClean(mesh, loop, label) {
+  const seam = { closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, loop) };
+  const result = run(handlers.checkSeams({ seams: [seam] }));
+  const bad = result.problems.filter((p) => ['seam.self-crossing', 'segment.sliver', 'segment.thin'].includes(p.code));
+  assert.deepEqual(bad.map((p) => p.message), [], label);
+  assert.equal(result.segments.length, 2, `${label}: the loop cuts it in two`);
+}
+
+test('the outline of the sphere seen along z is its equator, with nothing turned away', () => {
+  const sphere = load('sphere.obj');
+  const outline = outlineLoop(sphere, [0, 0, 1]);
+  assert.deepEqual([outline.toBack, outline.toFront, outline.loops], [0, 0, 1]);
+  for (const p of outline.loop) assert.ok(Math.abs(p.position[2]) < 0.05, `on the equator: ${p.position}`);
+});
+
 for (const file of readdirSync(MESHES).filter((f) => f.endsWith('.obj')).sort()) {
-  test(`sections of ${file} across x, y and z make seams that neither cross themselves nor leave slivers`, () => {
+  test(`sections of ${file} across x, y and z and its outlines make seams that neither cross themselves nor leave slivers`, () => {
     const mesh = load(file);
     for (const _ of handlers.setTarget({ positions: mesh.positions, indices: mesh.indices }));
     const { center } = middle(mesh);
@@ -70,11 +87,11 @@ for (const file of readdirSync(MESHES).filter((f) => f.endsWith('.obj')).sort())
       const loops = planeSection(mesh, normal, center[axis]);
       assert.ok(loops.length > 0, `${file}: the middle plane across ${'xyz'[axis]} cuts it`);
       const largest = loops.reduce((a, b) => (b.length > a.length ? b : a));
-      const seam = { closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, largest) };
-      const result = run(handlers.checkSeams({ seams: [seam] }));
-      const bad = result.problems.filter((p) => ['seam.self-crossing', 'segment.sliver', 'segment.thin'].includes(p.code));
-      assert.deepEqual(bad.map((p) => p.message), [], `${file} across ${'xyz'[axis]}`);
-      assert.ok(result.segments.length >= 2, `${file} across ${'xyz'[axis]}: the loop cuts it apart (${result.segments.length} segments)`);
+      expectClean(mesh, largest, `${file} across ${'xyz'[axis]}`);
+      const outline = outlineLoop(mesh, normal);
+      assert.ok(outline, `${file} seen along ${'xyz'[axis]} has an outline`);
+      assert.equal(outline.loops, 1, `${file} seen along ${'xyz'[axis]}: one loop (genus 0)`);
+      expectClean(mesh, outline.loop, `${file} outline along ${'xyz'[axis]}`);
     }
   });
 }

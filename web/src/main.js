@@ -187,6 +187,8 @@ window.addEventListener('keydown', (e) => {
   if (!mod && !e.altKey && tools[key]) {
     seamTool.setMode(tools[key]);
     seamPanel.render();
+  } else if (!mod && !e.altKey && key === 'o') {
+    seamTool.layOutline();
   } else if (e.key === '?') {
     help.open();
   } else if (!mod && !e.altKey && key === 'm') {

@@ -5,6 +5,7 @@ import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
 import { upOf } from './up-axis.js';
 import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf } from './symmetry.js';
+import { sectionSeamPoints } from './section.js';
 
 const keyOf = (seam) => JSON.stringify([seam.points, seam.closed, Boolean(seam.smooth)]);
 const PICK_PX = 10;
@@ -176,6 +177,19 @@ export class SeamEditor {
     this.preview = positions ? Float32Array.from([...positions, positions[0]].flat()) : null;
     this.draftWarning = null;
     this.draw();
+  }
+
+  // A loop laid in one action (section.js: a plane section or the outline) as a closed seam of surface paths
+  // between its resampled points; `note` says what was done to make it one loop.
+  commitLoop(loop, note = null) {
+    this.commitSeam(sectionSeamPoints(this.app.target, loop), true, { smooth: false });
+    this.noteLaid(note);
+  }
+
+  // What laying a seam in one action did, or why it laid none (severity 'warning'); the next one replaces it.
+  noteLaid(text, severity = 'notice') {
+    this.app.messages.resolve('seam.laid');
+    if (text) this.app.messages.show(severity, text, [], { cause: 'seam.laid' });
   }
 
   commitSeam(points, closed, { smooth = true } = {}) {

@@ -7,12 +7,18 @@ import { bounds } from './symmetry.js';
 // The loops where the plane {p · normal = offset} cuts the mesh ({ positions, indices }, flat arrays). Each
 // loop is an array of { position: [x, y, z], face, bary: [3] }, in walking order (a point on an edge, with
 // the face the walk crossed to reach it).
-export function planeSection({ positions, indices }, normal, offset) {
-  const nv = positions.length / 3;
-  // Signed heights above the plane; no vertex exactly on it, so every crossing is inside an edge.
-  const h = new Float64Array(nv);
-  for (let v = 0; v < nv; v++)
-    h[v] = positions[3 * v] * normal[0] + positions[3 * v + 1] * normal[1] + positions[3 * v + 2] * normal[2] - offset + 1e-9;
+export function planeSection(mesh, normal, offset) {
+  const { positions } = mesh;
+  const h = new Float64Array(positions.length / 3);
+  for (let v = 0; v < h.length; v++)
+    h[v] = positions[3 * v] * normal[0] + positions[3 * v + 1] * normal[1] + positions[3 * v + 2] * normal[2] - offset;
+  return zeroLoops(mesh, h);
+}
+
+// The loops where a field given at the vertices (linear over each triangle) is zero, as planeSection's.
+export function zeroLoops({ positions, indices }, values) {
+  // No vertex exactly on the zero set, so every crossing is inside an edge.
+  const h = Float64Array.from(values, (x) => x + 1e-9);
   const key = (a, b) => (a < b ? `${a},${b}` : `${b},${a}`);
   const next = new Map(); // edge key -> [{ edge, face }]: the cut faces on each crossed edge
   const edges = new Map(); // edge key -> [a, b]
@@ -113,4 +119,100 @@ export function sectionSeamPoints(mesh, loop) {
   const { diagonal } = bounds(mesh);
   const n = Math.round(Math.min(SECTION_POINTS[1], Math.max(SECTION_POINTS[0], loopLength(loop) / (SECTION_SPACING * diagonal))));
   return resampleLoop(mesh, loop, n).map(({ face, bary }) => ({ face, bary }));
+}
+
+// The outline of the target as seen from `towards` (the unit direction from the target to the viewer, in its
+// own coordinates): the zero set of n · towards over the vertex normals, the contour where the surface turns
+// away, cleaned into one loop. Front-facing parts that are not the largest front (a fold, an arm's far side)
+// go with the back, then back-facing parts that are not the largest back go with the front, so front and back
+// are each one piece. Returns { loop, toBack, toFront, loops } (loops: how many the contour still makes, more
+// than one on a shape with a handle; loop is the longest), or null when the shape has no front or back.
+export function outlineLoop(mesh, towards) {
+  const { positions, indices } = mesh;
+  const nv = positions.length / 3;
+  const normal = new Float64Array(3 * nv);
+  const area = new Float64Array(nv);
+  const at = (v, k) => positions[3 * v + k];
+  for (let f = 0; f < indices.length / 3; f++) {
+    const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
+    const u = [0, 1, 2].map((k) => at(b, k) - at(a, k));
+    const w = [0, 1, 2].map((k) => at(c, k) - at(a, k));
+    const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]; // twice the area
+    for (const v of [a, b, c]) {
+      for (let k = 0; k < 3; k++) normal[3 * v + k] += n[k];
+      area[v] += Math.hypot(...n) / 6;
+    }
+  }
+  const facing = new Float64Array(nv);
+  for (let v = 0; v < nv; v++) {
+    const n = [normal[3 * v], normal[3 * v + 1], normal[3 * v + 2]];
+    facing[v] = (n[0] * towards[0] + n[1] * towards[1] + n[2] * towards[2]) / (Math.hypot(...n) || 1);
+    // Away from zero, so the sides read the same here as where the contour is drawn (zeroLoops).
+    if (Math.abs(facing[v]) < 1e-6) facing[v] = facing[v] > 0 ? 1e-6 : -1e-6;
+  }
+  // Keeps only the largest edge-connected part of each side: the others change sides.
+  const keepLargest = (front) => {
+    const part = new Int32Array(nv).fill(-1);
+    const sizes = [];
+    const neighbours = vertexNeighbours(indices, nv);
+    for (let s = 0; s < nv; s++) {
+      if (part[s] >= 0 || facing[s] > 0 !== front) continue;
+      const id = sizes.length;
+      let size = 0;
+      const stack = [s];
+      part[s] = id;
+      while (stack.length) {
+        const v = stack.pop();
+        size += area[v];
+        for (const w of neighbours[v])
+          if (part[w] < 0 && facing[w] > 0 === front) (part[w] = id), stack.push(w);
+      }
+      sizes.push(size);
+    }
+    if (!sizes.length) return -1;
+    const largest = sizes.indexOf(Math.max(...sizes));
+    for (let v = 0; v < nv; v++) if (part[v] >= 0 && part[v] !== largest) facing[v] = front ? -Math.max(facing[v], 1e-6) : Math.max(-facing[v], 1e-6);
+    return sizes.length - 1;
+  };
+  // A vertex whose ring of neighbours changes side more than twice pinches its side there: the contour would
+  // pass it twice, as two loops touching. It goes to the other side, which joins across it; the parts of its
+  // own side it held together are sorted again by keepLargest.
+  const pinches = () => {
+    const changes = new Int32Array(nv);
+    for (let f = 0; f < indices.length / 3; f++)
+      for (let k = 0; k < 3; k++) {
+        const a = indices[3 * f + ((k + 1) % 3)];
+        const b = indices[3 * f + ((k + 2) % 3)];
+        if (facing[a] > 0 !== facing[b] > 0) changes[indices[3 * f + k]]++;
+      }
+    let flipped = 0;
+    for (let v = 0; v < nv; v++) if (changes[v] > 2) (facing[v] = facing[v] > 0 ? -1e-6 : 1e-6), flipped++;
+    return flipped;
+  };
+  let toBack = 0;
+  let toFront = 0;
+  for (let round = 0; round < 20; round++) {
+    const back = keepLargest(true);
+    const front = keepLargest(false);
+    if (back < 0 || front < 0) return null;
+    toBack += back;
+    toFront += front;
+    if (!pinches()) break;
+  }
+  const loops = zeroLoops(mesh, facing);
+  if (!loops.length) return null;
+  const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
+  return { loop, toBack, toFront, loops: loops.length };
+}
+
+function vertexNeighbours(indices, nv) {
+  const neighbours = Array.from({ length: nv }, () => []);
+  for (let f = 0; f < indices.length / 3; f++)
+    for (let k = 0; k < 3; k++) {
+      const a = indices[3 * f + k];
+      const b = indices[3 * f + ((k + 1) % 3)];
+      neighbours[a].push(b);
+      neighbours[b].push(a);
+    }
+  return neighbours;
 }

@@ -9,7 +9,7 @@
 // reach farther to snap or grab; the seam panel shows Finish / Close / Cancel buttons while drawing, since
 // there is no Enter key or reliable double-tap.
 import { Matrix4, Vector3 } from 'three';
-import { sectionSeamPoints, sectionThrough } from '../app/section.js';
+import { outlineLoop, sectionThrough } from '../app/section.js';
 
 const CLICK_SLOP_PX = { mouse: 4, pen: 6, touch: 12 };
 const SNAP_PX = { mouse: 12, pen: 16, touch: 28 }; // to control points and the start of the loop being drawn
@@ -176,10 +176,7 @@ export class SeamTool {
   // The plane's normal in the target's own coordinates: the axis as the target is shown (standing on its up
   // axis), or the view direction.
   sectionNormal() {
-    const mesh = this.pane.mesh;
-    const world = this.sectionAxis === 'view' ? this.pane.viewDirection() : new Vector3(...[0, 1, 2].map((k) => (SECTION_AXES[k] === this.sectionAxis ? 1 : 0)));
-    mesh.updateMatrixWorld(true);
-    return world.transformDirection(new Matrix4().copy(mesh.matrixWorld).invert()).toArray();
+    return this.toTarget(this.sectionAxis === 'view' ? this.pane.viewDirection() : new Vector3(...[0, 1, 2].map((k) => (SECTION_AXES[k] === this.sectionAxis ? 1 : 0))));
   }
 
   previewSection(event) {
@@ -193,9 +190,27 @@ export class SeamTool {
     this.previewSection(event);
     const loop = this.section;
     if (!loop) return;
-    const points = sectionSeamPoints(this.app.target, loop);
     this.clearSection();
-    this.app.commitSeam(points, true, { smooth: false });
+    this.app.commitLoop(loop);
+  }
+
+  // The outline as seen from here, in one action: the seam that splits the shape into a front and a back panel.
+  layOutline() {
+    if (!this.pane.mesh) return;
+    const outline = outlineLoop(this.app.target, this.toTarget(this.pane.viewDirection()));
+    if (!outline) return this.app.noteLaid('The shape shows no outline from here: turn the view and try again.', 'warning');
+    const notes = [];
+    const parts = outline.toBack + outline.toFront;
+    if (parts) notes.push(`${parts} small ${parts === 1 ? 'part' : 'parts'} turned away from the rest of ${parts === 1 ? 'its' : 'their'} side (a fold, a limb in front of the body) went with the panel around ${parts === 1 ? 'it' : 'them'}; a section seam around a limb gives it panels of its own`);
+    if (outline.loops > 1) notes.push(`the shape has a handle, so the outline makes ${outline.loops} loops: the longest was laid; a seam across the handle opens it`);
+    this.app.commitLoop(outline.loop, notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null);
+  }
+
+  // A direction in the view (world) as one in the target's own coordinates.
+  toTarget(direction) {
+    const mesh = this.pane.mesh;
+    mesh.updateMatrixWorld(true);
+    return direction.clone().transformDirection(new Matrix4().copy(mesh.matrixWorld).invert()).toArray();
   }
 
   clearSection() {

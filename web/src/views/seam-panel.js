@@ -28,6 +28,12 @@ export class SeamPanel {
       this.toolbar.append(b);
       return b;
     });
+    // The outline as seen: laid at once, not a mode.
+    const outline = el('button', 'tool outline', 'Outline');
+    outline.type = 'button';
+    outline.title = 'Lay a seam around the shape as seen from here: a front and a back panel, as foil balloons are made (O)';
+    outline.addEventListener('click', () => tool.layOutline());
+    this.toolbar.append(outline);
     // The section tool's plane: across the model's x, y or z as it is shown, or across the view.
     this.sectionAxis = document.createElement('select');
     this.sectionAxis.className = 'section-axis';
