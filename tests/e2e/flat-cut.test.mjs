@@ -109,3 +109,26 @@ test('the outline as seen is laid in one action: a front and a back panel, and a
   assert.deepEqual(page.errors, []);
   await page.close();
 });
+
+test('a sheet narrower than a piece: the pattern pane offers the width that fits, in one click', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.evaluate(() => window.billow.gallery.open('koala'));
+  await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines, null, { timeout: 60000 });
+  await page.fill('#sheet-input', '150');
+  await page.press('#sheet-input', 'Enter');
+  const warning = page.locator('.message.warning', { hasText: 'The cut outline could not be drawn' });
+  await warning.waitFor({ timeout: 30000 });
+  assert.match(await warning.textContent(), /at its narrowest; the sheet leaves/);
+  const offer = warning.locator('button.action');
+  const label = await offer.textContent();
+  const width = Number(label.match(/Use a (\d+) mm sheet/)?.[1]);
+  assert.ok(width > 150 && width <= 1000, label);
+  await screenshot(page, 'flat-cut-sheet-offer');
+  await offer.click();
+  await page.waitForFunction((w) => window.billow.app.cutStatistics?.totals.sheet_width_mm === w, width, { timeout: 30000 });
+  assert.equal(await page.inputValue('#sheet-input'), String(width));
+  assert.equal(await warning.count(), 0, 'the warning goes with its cause');
+  assert.ok(await page.evaluate(() => Boolean(window.billow.app.panes.pattern.cutLines)), 'the cut outline is drawn');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});

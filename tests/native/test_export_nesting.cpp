@@ -115,5 +115,12 @@ TEST(Nesting, TooNarrowSheetNamesThePanel) {
   } catch (const Error& e) {
     EXPECT_EQ(e.code, "export.sheet-too-narrow");
     EXPECT_NE(std::string(e.what()).find("'front'"), std::string::npos);
+    // The width offered instead fits: the same pattern lays out on it, and 10 mm less would not.
+    EXPECT_GT(e.sheetWidth, 600);
+    EXPECT_LT(e.sheetWidth, 700);
+    xo.sheetWidth = e.sheetWidth;
+    EXPECT_NO_THROW(layoutSheet(examplePattern("mylar", eo), xo));
+    xo.sheetWidth = e.sheetWidth - 10;
+    EXPECT_THROW(layoutSheet(examplePattern("mylar", eo), xo), Error);
   }
 }

@@ -1,5 +1,6 @@
 // The error boundary of every binding: runs fn (returning JSON text) and wraps its result as
-// {"status":"ok","result":...}, or turns any exception into {"status":"error","code","message"}.
+// {"status":"ok","result":...}, or turns any exception into {"status":"error","code","message"} (with
+// "details": {"sheet_width"} when an error carries the sheet width that fits).
 #pragma once
 #include <new>
 #include <nlohmann/json.hpp>
@@ -15,7 +16,9 @@ std::string guarded(Fn fn) {
   try {
     return "{\"status\":\"ok\",\"result\":" + fn() + "}";
   } catch (const billow::Error& e) {
-    return json({{"status", "error"}, {"code", e.code}, {"message", e.what()}}).dump();
+    json reply = {{"status", "error"}, {"code", e.code}, {"message", e.what()}};
+    if (e.sheetWidth > 0) reply["details"] = {{"sheet_width", e.sheetWidth}};
+    return reply.dump();
   } catch (const std::bad_alloc&) {
     return json({{"status", "error"},
                  {"code", "memory"},

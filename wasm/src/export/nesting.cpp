@@ -66,6 +66,24 @@ double principalAxisAngle(const Polygon2& p) {
   return 0.5 * std::atan2(sxy, sxx - syy);  // (the common 1/12 and 1/24 factors cancel in the ratio)
 }
 
+namespace {
+
+// The turns a piece may be laid at: as drawn and upside down with the grain locked, else also its principal
+// axis along the sheet and the quarter turns of both.
+std::vector<double> turns(const Polygon2& piece, const NestOptions& o) {
+  std::vector<double> angles = {0};
+  if (o.grainLock) {
+    angles.push_back(M_PI);
+  } else if (o.allowRotation) {
+    const double axis = principalAxisAngle(piece);
+    for (int k = 1; k < 4; ++k) angles.push_back(k * M_PI / 2);
+    for (int k = 0; k < 4; ++k) angles.push_back(-axis + k * M_PI / 2);
+  }
+  return angles;
+}
+
+}  // namespace
+
 NestResult nestPieces(const std::vector<Polygon2>& pieces, const NestOptions& o,
                       const std::vector<std::string>& names) {
   if (!(o.sheetWidth > 2 * o.gap && std::isfinite(o.sheetWidth)))
@@ -83,14 +101,7 @@ NestResult nestPieces(const std::vector<Polygon2>& pieces, const NestOptions& o,
   double total = 0;
   for (size_t i : order) {
     const Polygon2& piece = pieces[i];
-    std::vector<double> angles = {0};
-    if (o.grainLock) {
-      angles.push_back(M_PI);
-    } else if (o.allowRotation) {
-      const double axis = principalAxisAngle(piece);
-      for (int k = 1; k < 4; ++k) angles.push_back(k * M_PI / 2);
-      for (int k = 0; k < 4; ++k) angles.push_back(-axis + k * M_PI / 2);
-    }
+    const std::vector<double> angles = turns(piece, o);
     double bestTop = 1e300, bestX = 0;
     Placement2 best;
     bool found = false;
@@ -118,8 +129,18 @@ NestResult nestPieces(const std::vector<Polygon2>& pieces, const NestOptions& o,
       char buf[160];
       std::snprintf(buf, sizeof buf, "is %.0f mm wide at its narrowest; the sheet leaves %.0f mm.", narrowest, usable);
       const std::string name = i < names.size() ? "'" + names[i] + "'" : "a piece";
-      throw Error("export.sheet-too-narrow",
-                  "The panel " + name + " (with its seam allowance) " + buf + " Choose a wider sheet.");
+      // The width every piece fits in, turned its narrowest way, rounded up to 10 mm: what the app offers.
+      double widest = 0;
+      for (const Polygon2& p : pieces) {
+        double narrow = 1e300;
+        for (double angle : turns(p, o))
+          narrow = std::min(narrow, boundingBox(transformed(p, {angle, Vec2(0, 0)})).size().x());
+        widest = std::max(widest, narrow);
+      }
+      Error e("export.sheet-too-narrow",
+              "The panel " + name + " (with its seam allowance) " + buf + " Choose a wider sheet.");
+      e.sheetWidth = 10 * std::ceil((widest + 2 * o.gap) / 10);
+      throw e;
     }
     result.placements[i] = best;
     const Box2 placed = boundingBox(transformed(piece, best));

@@ -25,7 +25,7 @@ struct NestResult {
 };
 
 // Throws billow::Error("export.sheet-too-narrow") naming the piece that fits in no orientation (its message
-// assumes millimetres).
+// assumes millimetres), with the sheet width that fits every piece (Error::sheetWidth).
 NestResult nestPieces(const std::vector<Polygon2>& pieces, const NestOptions& options,
                       const std::vector<std::string>& names = {});
 

@@ -513,7 +513,10 @@ export class App {
       if (ticket !== this.cutTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
       this.cutStatistics = null;
       renderStats(this.el.patternStats, []);
-      this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`, [], { cause: 'cut-lines' });
+      // A piece wider than the sheet: the width that fits every piece, in one click.
+      const fits = error.code === 'export.sheet-too-narrow' && error.details?.sheet_width <= MAX_SHEET && error.details.sheet_width;
+      const action = fits ? { label: `Use a ${formatMillimeters(fits, f.units)} sheet`, run: () => this.setFabrication({ sheet_width: fits }) } : null;
+      this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`, [], { cause: 'cut-lines', action });
     }
   }
 

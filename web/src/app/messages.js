@@ -8,8 +8,9 @@ export class Messages {
   // The same message twice in a row is shown once (the newer replaces the older, so it comes last).
   // cause: what the message is about ('cut-lines', 'target.mesh.genus', ...): a newer message of the same cause
   // replaces it, and resolve(cause) takes it away once the cause is gone. locate: shows where the problem is
-  // (a "Show where" button).
-  show(severity, text, items = [], { cause = null, locate = null } = {}) {
+  // (a "Show where" button). action: { label, run }, what the message offers to do (a button; the message goes
+  // when it is done).
+  show(severity, text, items = [], { cause = null, locate = null, action = null } = {}) {
     const key = `${severity}\n${text}\n${items.join('\n')}`;
     for (const old of [...this.container.children]) if (old.dataset.key === key || (cause && old.dataset.cause === cause)) old.remove();
     const box = document.createElement('div');
@@ -43,6 +44,17 @@ export class Messages {
       show.textContent = 'Show where';
       show.addEventListener('click', locate);
       body.append(show);
+    }
+    if (action) {
+      const act = document.createElement('button');
+      act.type = 'button';
+      act.className = 'action';
+      act.textContent = action.label;
+      act.addEventListener('click', () => {
+        box.remove();
+        action.run();
+      });
+      body.append(act);
     }
     box.append(body, close);
     this.container.append(box);

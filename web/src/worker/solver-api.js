@@ -71,7 +71,7 @@ export class SolverApi {
   // Parses the {"status": ...} JSON that every binding returns; throws SolverError on "error".
   static unwrap(text) {
     const reply = JSON.parse(text);
-    if (reply.status !== 'ok') throw new SolverError(reply.code || 'internal', reply.message || 'Unknown solver error');
+    if (reply.status !== 'ok') throw new SolverError(reply.code || 'internal', reply.message || 'Unknown solver error', reply.details);
     return reply.result;
   }
 
