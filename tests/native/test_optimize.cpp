@@ -134,7 +134,33 @@ TEST(Optimize, ShapeObjectiveGradientMatchesFiniteDifferences) {
   ObjectiveTerms t;
   obj.shapeEnergy(x, X, &g, &gX, &t);
   EXPECT_GT(t.target, 0);
+  EXPECT_GT(t.cover, 0);
   EXPECT_GT(t.seam, 0);
+  // E_cover alone (the target's points to their closest points on the shape), by finite differences too: with
+  // the default kernel (its scale far above these distances: nearly d^2) and a kernel scale among the distances
+  // (most points on the kernel's bend or beyond it).
+  for (const double reach : {OptimizeWeights{}.coverReach, 0.003}) {
+    OptimizeWeights coverOnly;
+    coverOnly.target = 0, coverOnly.seam = 0, coverOnly.coverReach = reach;
+    const PatternObjective cover(imls, f.built, mesh, f.weights, coverOnly);
+    Eigen::VectorXd gc;
+    ObjectiveTerms tc;
+    cover.shapeEnergy(x, X, &gc, nullptr, &tc);
+    EXPECT_EQ(tc.target, 0);
+    if (reach == OptimizeWeights{}.coverReach)
+      EXPECT_NEAR(tc.cover, t.cover, 1e-12 * t.cover);
+    else
+      EXPECT_LT(tc.cover, 0.7 * t.cover) << "the kernel's bend is not exercised";
+    for (int s = 0; s < 3; ++s) {
+      Vertices dx(x.rows(), 3);
+      for (int v = 0; v < x.rows(); ++v) dx.row(v) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
+      const double eps = 1e-7 * h;
+      const double fd =
+          (cover.shapeEnergy(x + eps * dx, X, nullptr) - cover.shapeEnergy(x - eps * dx, X, nullptr)) / (2 * eps);
+      const double an = gc.dot(Eigen::Map<const Eigen::VectorXd>(dx.data(), dx.size()));
+      EXPECT_NEAR(fd, an, 1e-5 * std::abs(an)) << "E_cover, reach " << reach << ", direction " << s;
+    }
+  }
   for (int s = 0; s < 3; ++s) {
     Vertices dx(x.rows(), 3);
     for (int v = 0; v < x.rows(); ++v) dx.row(v) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
@@ -622,10 +648,14 @@ TEST(Optimize, SlackInternalPanelDoesNotStopTheOptimizer) {
   oo.maxIterations = 30;
   const OptimizeRun r = optimize(f, oo);
   const auto& h = r.history;
-  std::printf("[figures] fish with a slack internal panel, 600 elements: %d iterations, rms %.3f %% -> %.3f %% (%s)\n",
-              r.iterations, 100 * h.front().distanceRms, 100 * h.back().distanceRms, r.message.c_str());
+  std::printf(
+      "[figures] fish with a slack internal panel, 600 elements: %d iterations, rms %.3f %% -> %.3f %%, target to "
+      "inflated %.3f %% -> %.3f %% (%s)\n",
+      r.iterations, 100 * h.front().distanceRms, 100 * h.back().distanceRms, 100 * h.front().targetDistanceRms,
+      100 * h.back().targetDistanceRms, r.message.c_str());
   EXPECT_EQ(r.iterations, 30) << r.message;
-  EXPECT_LT(h.back().distanceRms, 0.65 * h.front().distanceRms);  // before: 0.73
+  // before: 0.73; E_target alone 0.65; with E_cover 0.68 (it trades some of this figure for the target's side)
+  EXPECT_LT(h.back().distanceRms, 0.72 * h.front().distanceRms);
   expectObjectiveNeverRises(h, 1e-12);
 }
 
@@ -659,10 +689,11 @@ TEST(Optimize, UnstableEquilibriumIsResettledNotTheEnd) {
 // Issue 5, free interior vertices (interiorFollowsBoundary = false): on the gallery's three-gore sphere the
 // optimizer used to stop after a few dozen iterations at 1.5-3.4 % RMS: rest triangles collapsed (the
 // fixed-weight E_target paid vertices to crowd where the shape was close) until the fold check refused every
-// step. Now it goes on, keeps its triangles, and gets well below 1 %: of the optimizer's own mesh. The cut
-// panels (the final outlines meshed anew and inflated) stay far above that: free interior vertices fit the
-// mesh, not the panels, which is why the outlines are the variables by default (ThreeGoreSphereGetsMuchCloser).
-TEST(Optimize, GallerySphereGoesOnBelowOnePercent) {
+// step. Now it goes on, keeps its triangles, and gets to about 1 % (0.7 % with E_target alone, whose figure this
+// is; with E_cover the target's side falls from 6.1 % to 1.8 % too): of the optimizer's own mesh. The cut panels
+// (the final outlines meshed anew and inflated) stay far above that: free interior vertices fit the mesh, not
+// the panels, which is why the outlines are the variables by default (ThreeGoreSphereGetsMuchCloser).
+TEST(Optimize, GallerySphereGoesOnWithFreeInteriorVertices) {
   const Fixture f = makeFixture("../../web/public/gallery/sphere3.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
@@ -681,16 +712,18 @@ TEST(Optimize, GallerySphereGoesOnBelowOnePercent) {
           std::min(quality, cross / std::max({(b - a).squaredNorm(), (c - b).squaredNorm(), (a - c).squaredNorm()}));
     }
   std::printf(
-      "[figures] gallery sphere3 (%d elements): rms %.3f%% -> %.3f%%, max %.3f%% -> %.3f%%, %d iterations, %s, "
-      "%.0f ms, smallest triangle quality %.3f; cut panels %.3f%%\n",
+      "[figures] gallery sphere3 (%d elements): rms %.3f%% -> %.3f%%, max %.3f%% -> %.3f%%, target to inflated "
+      "%.3f%% -> %.3f%%, %d iterations, %s, %.0f ms, smallest triangle quality %.3f; cut panels %.3f%%\n",
       f.built.figures.triangles, 100 * first.distanceRms, 100 * last.distanceRms, 100 * first.distanceMax,
-      100 * last.distanceMax, last.iteration, toString(r.state), r.ms, quality, 100 * r.cut.distanceRms);
+      100 * last.distanceMax, 100 * first.targetDistanceRms, 100 * last.targetDistanceRms, last.iteration,
+      toString(r.state), r.ms, quality, 100 * r.cut.distanceRms);
   EXPECT_GE(last.iteration, 100) << "stopped early";
-  EXPECT_LT(last.distanceRms, 0.008);
+  EXPECT_LT(last.distanceRms, 0.012);
+  EXPECT_LT(last.targetDistanceRms, 0.4 * first.targetDistanceRms);
   EXPECT_GT(quality, 1e-3);
   EXPECT_LT(last.seamMismatch, 1e-4);
   ASSERT_TRUE(r.cut.ok) << r.cut.message;
-  EXPECT_GT(r.cut.distanceRms, 2 * last.distanceRms);
+  EXPECT_GT(r.cut.distanceRms, 1.5 * last.distanceRms);
 }
 
 // Sec. 5.3: rest triangles degrade as the optimizer moves the panels; below 10 degrees the panels are meshed
@@ -1025,4 +1058,50 @@ TEST(Optimize, APanelBoundedByOneLoopStaysSmoothWhereTheLoopStarts) {
                 turn[corner] * 180 / M_PI, median * 180 / M_PI, sorted.back() * 180 / M_PI);
     EXPECT_LT(turn[corner], 3 * median + 0.05) << "panel " << p;
   }
+}
+
+TEST(Optimize, CoverKeepsTheTargetsSideInView) {
+  // Two discs for a sphere, 3k elements: with E_target alone the first rigid alignment already slid the lens
+  // towards the sphere's bottom (the inflated shape's points near the target, its top left out: 18.6 % the
+  // other way) and the optimizer went on from there; E_cover brings the target's side back. On plain d^2 the
+  // first alignment alone did much of that (10.1 %); its robust kernel lets the far top pull little, so the
+  // first alignment moves the lens only a little (17.9 %) and the optimizer does the rest.
+  const Fixture f = makeFixture("sphere-equator.billow.json", 3000);
+  ASSERT_TRUE(f.built.ok());
+  double first[2] = {0, 0}, last[2] = {0, 0};
+  for (int cover = 0; cover < 2; ++cover) {
+    OptimizeOptions o;
+    o.maxIterations = 10;
+    o.weights.cover = cover;
+    const OptimizeRun r = optimize(f, o, 10);
+    first[cover] = r.history.front().targetDistanceRms, last[cover] = r.history.back().targetDistanceRms;
+    std::printf(
+        "[figures] two-disc sphere, 3k, E_cover weight %d: target to inflated %.2f %% -> %.2f %% (%d iterations)\n",
+        cover, 100 * first[cover], 100 * last[cover], r.iterations);
+  }
+  EXPECT_LT(first[1], first[0]);      // 17.9 % against 18.6 % (plain d^2: 10.1 %)
+  EXPECT_LT(last[1], 0.4 * last[0]);  // and then 6.4 % against 19.7 % (plain d^2: 5.2 %)
+}
+
+TEST(Optimize, CoverDoesNotPullASmallLoopsLensInward) {
+  // One small triangular seam loop on the sphere (what the drawing tests draw): a lens that cannot cover the
+  // sphere. With E_cover on plain d^2 the far side of the sphere pulled the lens towards the sphere's middle
+  // (after 20 iterations inflated -> target 3.0 % -> 13.7 %) and every iteration took 12x as long (E_target's
+  // far fallback for every vertex). The kernel saturates at 6 % of the diagonal: the far target weighs nothing.
+  const Fixture f = makeFixture("sphere-lens.billow.json", 1000);
+  ASSERT_TRUE(f.built.ok());
+  double rms[2] = {0, 0}, msPerIteration[2] = {0, 0};
+  for (int cover = 0; cover < 2; ++cover) {
+    OptimizeOptions o;
+    o.weights.cover = cover;
+    const OptimizeRun r = optimize(f, o, 20);
+    rms[cover] = r.history.back().distanceRms, msPerIteration[cover] = r.ms / std::max(r.iterations, 1);
+    std::printf(
+        "[figures] lens on a sphere, 1k, E_cover weight %d: inflated to target %.2f %% -> %.2f %%, target to "
+        "inflated %.2f %% -> %.2f %%, %d iterations, %.0f ms each\n",
+        cover, 100 * r.history.front().distanceRms, 100 * rms[cover], 100 * r.history.front().targetDistanceRms,
+        100 * r.history.back().targetDistanceRms, r.iterations, msPerIteration[cover]);
+  }
+  EXPECT_LT(rms[1], 1.5 * rms[0] + 0.003);              // plain d^2: 13.7 %
+  EXPECT_LT(msPerIteration[1], 4 * msPerIteration[0]);  // plain d^2: 12x
 }

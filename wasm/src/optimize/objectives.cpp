@@ -5,6 +5,7 @@
 #include <set>
 
 #include "optimize/rest_derivatives.hpp"
+#include "seams/surface_point.hpp"
 
 namespace billow {
 
@@ -36,6 +37,34 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
   const long used = std::count(onOuter.begin(), onOuter.end(), 1);
   targetScale_ = w_.target * norm_ * double(used);
   targetWeight_ = targetWeights(packPattern(built.pattern));
+
+  // E_cover: the target's vertices by lumped area; on a target with more than twice as many vertices as the
+  // outer surface, every k-th of them (their areas renormalized), so it costs about what E_target does.
+  const TriMesh& target = imls.target();
+  Eigen::VectorXd lumped = Eigen::VectorXd::Zero(target.numVertices());
+  for (int f = 0; f < target.numTriangles(); ++f) {
+    const Eigen::Vector3d a = target.V.row(target.F(f, 0)).transpose(), b = target.V.row(target.F(f, 1)).transpose(),
+                          c = target.V.row(target.F(f, 2)).transpose();
+    for (int k = 0; k < 3; ++k) lumped[target.F(f, k)] += (b - a).cross(c - a).norm() / 6;
+  }
+  const long stride = std::max<long>(1, (target.numVertices() + 2 * used - 1) / std::max<long>(2 * used, 1));
+  double sampled = 0;
+  for (int v = 0; v < target.numVertices(); v += int(stride)) coverVertex_.push_back(v), sampled += lumped[v];
+  coverWeight_.resize(long(coverVertex_.size()));
+  for (size_t k = 0; k < coverVertex_.size(); ++k)
+    coverWeight_[long(k)] = sampled > 0 ? w_.cover * norm_ * double(used) * lumped[coverVertex_[k]] / sampled : 0;
+  coverTau2_ = (w_.coverReach * D_) * (w_.coverReach * D_);
+  std::vector<std::vector<int>> at(n_);
+  for (size_t t = 0; t < outer_.size(); ++t)
+    for (int c = 0; c < 3; ++c) at[outer_[t].vertex[c]].push_back(int(t));
+  aroundStart_.assign(1, 0);
+  for (size_t t = 0; t < outer_.size(); ++t) {
+    std::set<int> near;
+    for (int c = 0; c < 3; ++c) near.insert(at[outer_[t].vertex[c]].begin(), at[outer_[t].vertex[c]].end());
+    near.erase(int(t));
+    around_.insert(around_.end(), near.begin(), near.end());
+    aroundStart_.push_back(int(around_.size()));
+  }
 
   // E_quality: every rest triangle against its flattened shape.
   first = 0;
@@ -145,6 +174,60 @@ Eigen::VectorXd PatternObjective::targetWeights(const Eigen::VectorXd& X) const 
   return total > 0 ? Eigen::VectorXd(w * (targetScale_ / total)) : w;
 }
 
+double PatternObjective::coverKernel(double d2, double* irls) const {
+  const double s = coverTau2_ / (d2 + coverTau2_);  // rho = tau^2 d^2 / (d^2 + tau^2) = s d^2
+  if (irls) *irls = s * s;                          // rho'(d) / (2 d) = tau^4 / (d^2 + tau^2)^2
+  return s * d2;
+}
+
+void PatternObjective::trackCover(const Vertices& x) const {
+  coverTriangle_.clear();
+  if (!(w_.cover > 0) || coverVertex_.empty() || outer_.empty()) return;
+  TriMesh surface;
+  surface.V = x;
+  surface.F.resize(long(outer_.size()), 3);
+  for (size_t t = 0; t < outer_.size(); ++t)
+    for (int c = 0; c < 3; ++c) surface.F(long(t), c) = outer_[t].vertex[c];
+  const SurfaceProjector projector(surface);
+  const Vertices& T = imls_.target().V;
+  for (int v : coverVertex_) coverTriangle_.push_back(projector.project(T.row(v).transpose()).face);
+}
+
+void PatternObjective::coverPoints(const Vertices& x, std::vector<CoverPoint>& out) const {
+  out.clear();
+  if (!(w_.cover > 0) || coverVertex_.empty() || outer_.empty()) return;
+  if (coverTriangle_.size() != coverVertex_.size()) trackCover(x);  // the first evaluation
+  const Vertices& T = imls_.target().V;
+  const auto closest = [&](int t, const Eigen::Vector3d& q, CoverPoint& p) {
+    const OuterTriangle& o = outer_[t];
+    const Eigen::Vector3d a = x.row(o.vertex[0]).transpose(), b = x.row(o.vertex[1]).transpose(),
+                          c = x.row(o.vertex[2]).transpose();
+    p.bary = closestPointBarycentric(q, a, b, c);
+    p.closest = p.bary[0] * a + p.bary[1] * b + p.bary[2] * c;
+    p.triangle = t;
+    return (p.closest - q).squaredNorm();
+  };
+  out.resize(coverVertex_.size());
+  for (size_t k = 0; k < coverVertex_.size(); ++k) {
+    CoverPoint& best = out[k];
+    best.target = T.row(coverVertex_[k]).transpose();
+    best.weight = coverWeight_[long(k)];
+    double d2 = closest(coverTriangle_[k], best.target, best);
+    // Walk to a neighbouring triangle while one is closer (a bounded number of steps: the shape moved little).
+    for (int step = 0; step < 64; ++step) {
+      CoverPoint trial = best;
+      int next = -1;
+      for (int i = aroundStart_[best.triangle]; i < aroundStart_[best.triangle + 1]; ++i) {
+        CoverPoint p = best;
+        const double e = closest(around_[i], best.target, p);
+        if (e < d2) d2 = e, trial = p, next = around_[i];
+      }
+      if (next < 0) break;
+      best = trial;
+    }
+  }
+}
+
 double PatternObjective::shapeEnergy(const Vertices& x, const Eigen::VectorXd& X, Eigen::VectorXd* gradx,
                                      Eigen::VectorXd* gradX, ObjectiveTerms* terms) const {
   if (gradx) gradx->setZero(3 * n_);
@@ -175,14 +258,25 @@ double PatternObjective::shapeEnergy(const Vertices& x, const Eigen::VectorXd& X
       }
     }
   }
+  double Ec = 0;
+  std::vector<CoverPoint> cover;
+  coverPoints(x, cover);
+  for (const CoverPoint& c : cover) {
+    const Eigen::Vector3d r = c.closest - c.target;
+    double irls = 1;
+    Ec += c.weight * coverKernel(r.squaredNorm(), gradx ? &irls : nullptr);
+    if (gradx)
+      for (int k = 0; k < 3; ++k)
+        gradx->segment<3>(3 * outer_[c.triangle].vertex[k]) += 2 * c.weight * irls * c.bary[k] * r;
+  }
   for (const SeamVertex& s : seams_) {
     const double w = seamWeight(s);
     const Eigen::Vector3d r = x.row(s.vertex).transpose() - s.target;
     Es += w * r.squaredNorm();  // Eq. 10
     if (gradx) gradx->segment<3>(3 * s.vertex) += 2 * w * r;
   }
-  if (terms) terms->target = Et, terms->seam = Es;
-  return Et + Es;
+  if (terms) terms->target = Et, terms->cover = Ec, terms->seam = Es;
+  return Et + Ec + Es;
 }
 
 double PatternObjective::patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad, ObjectiveTerms* terms) const {

@@ -10,6 +10,13 @@
 //   E_length  = w_l sum_e (L_a - L_b)^2 / (n D^2) over pairs of stitched boundary edges (Eq. 11);
 //   E_smooth  = w_b sum_j |Q_l - 2 Q_j + Q_r|^2 / (n D^2) over non-corner boundary vertices (Eq. 12);
 //   E_laplace = w_L sum_j |X_j - mean(X_k, k ~ j)|^2 / (n D^2) over interior vertices (Eq. 13, Tutte).
+//   E_cover   = w_c m sum_j (a_j / A_T) |c_j(x) - t_j|^2 / (n D^2) over target vertices t_j (a sample of them on a
+//               target finer than the outer surface), a_j their lumped areas, A_T their sum, c_j the closest point
+//               of the outer surface (ours: E_target sees only the inflated shape's points, so a part of the
+//               target the shape leaves out costs it nothing; docs/architecture.md "Distance to target, both
+//               ways"). Its gradient reaches x through c_j's barycentric weights (the envelope theorem).
+//               Robust: |c_j - t_j|^2 enters through rho(d) = tau^2 d^2 / (d^2 + tau^2), tau = coverReach D
+//               (OptimizeWeights::coverReach), so target points far from the shape saturate instead of pulling.
 //   E_quality = w_q l^2 sum_t (A0_t / A0_mean) (|J_t|^2 / (2 det J_t) - 1) / (n D^2) over rest triangles, J_t
 //               the 2D map from triangle t of the flattened pattern to the current one, l the mean edge length
 //               (ours, not the paper's: where the paper remeshes when elements degenerate, Sec. 5.3, this
@@ -30,7 +37,14 @@
 namespace billow {
 
 struct OptimizeWeights {
-  double target = 1.0;   // E_target
+  double target = 1.0;  // E_target
+  double cover = 1.0;   // E_cover
+  // E_cover's kernel scale tau, a fraction of the target's diagonal D: each target point costs
+  // rho(d) = tau^2 d^2 / (d^2 + tau^2) (Geman-McClure), about d^2 near the shape and at most tau^2 far from it,
+  // so a part of the target the shape cannot reach does not pull it (a small loop's lens on a sphere). 6 %: the
+  // "left out" threshold of uncoveredRegions (bench/README.md: 3 % leaves the two-disc sphere's lens where it
+  // slid, 12 % lets a small loop's lens drift).
+  double coverReach = 0.06;
   double seam = 1.0;     // multiplies every seam's sigma_i (the design's seam weight)
   double length = 10.0;  // E_length; the final seam-length projection makes it exact (see PatternOptimizer)
   double smooth = 2.0;   // E_smooth: weaker lets the outlines zig-zag (bench/README.md)
@@ -43,8 +57,8 @@ struct OptimizeWeights {
 };
 
 struct ObjectiveTerms {
-  double target = 0, seam = 0, length = 0, smooth = 0, laplace = 0, quality = 0;
-  double total() const { return target + seam + length + smooth + laplace + quality; }
+  double target = 0, cover = 0, seam = 0, length = 0, smooth = 0, laplace = 0, quality = 0;
+  double total() const { return target + cover + seam + length + smooth + laplace + quality; }
 };
 
 class PatternObjective {
@@ -62,7 +76,25 @@ class PatternObjective {
   PatternObjective(const ImlsDistance& imls, const BuiltPattern& built, const SewnMesh& mesh,
                    const std::vector<double>& seamWeights, const OptimizeWeights& weights);
 
-  // E_target + E_seam at simulation positions x (#V by 3) and pattern coordinates X; gradx (3 #V) and gradX
+  // E_cover's terms at x: per target sample its closest point c on the outer surface, the outer triangle and
+  // barycentric weights of c there, the target point t and the weight w of |c - t|^2.
+  struct CoverPoint {
+    Eigen::Vector3d closest, target, bary;
+    int triangle = -1;  // of the outer surface (OuterTriangle order)
+    double weight = 0;
+  };
+  // E_cover's kernel at squared distance d2: rho(d) (the cost, in length^2) and rho'(d) / (2 d) (the IRLS weight
+  // of d^2: the gradient is weight * 2 * irls * (c - t), and the rigid alignment's Gauss-Newton rows use it).
+  double coverKernel(double d2, double* irls) const;
+  // The closest points are tracked, not searched for: each sample walks from its triangle at the last tracked
+  // shape to the nearest of the triangles around it, so an evaluation needs no search tree and gives the same
+  // energy for the same x between two trackCover calls (the line search compares them).
+  void coverPoints(const Vertices& x, std::vector<CoverPoint>& out) const;
+  // Each sample's closest triangle on shape x, searched for over the whole outer surface: at every accepted shape
+  // (a cache: the energy it gives is that of x either way).
+  void trackCover(const Vertices& x) const;
+
+  // E_target + E_cover + E_seam at simulation positions x (#V by 3) and pattern coordinates X; gradx (3 #V) and gradX
   // (dE/dX at fixed x, through E_target's area weights; 2 per panel vertex) when given.
   double shapeEnergy(const Vertices& x, const Eigen::VectorXd& X, Eigen::VectorXd* gradx,
                      Eigen::VectorXd* gradX = nullptr, ObjectiveTerms* terms = nullptr) const;
@@ -116,6 +148,13 @@ class PatternObjective {
   std::vector<PiecePair> piecePairs_;
   std::vector<Triple> boundary_;
   std::vector<int> interior_, ringStart_, ring_;  // interior vertex -> neighbours ring_[ringStart_[i]..]
+  // E_cover: the target samples (vertex ids of imls_.target()) and their weights (w_c m a_j / (A_T n D^2));
+  // outer triangles around each outer triangle (sharing a vertex) for the walk; each sample's tracked triangle.
+  std::vector<int> coverVertex_;
+  Eigen::VectorXd coverWeight_;
+  std::vector<int> aroundStart_, around_;
+  mutable std::vector<int> coverTriangle_;
+  double coverTau2_ = 0;  // tau^2 of E_cover's kernel (0: plain d^2)
 };
 
 }  // namespace billow

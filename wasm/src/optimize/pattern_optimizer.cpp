@@ -361,6 +361,7 @@ bool PatternOptimizer::evaluate(const Eigen::VectorXd& X, double* E, Eigen::Vect
 }
 
 void PatternOptimizer::record(double alpha, int newton, bool projected) {
+  objective_->trackCover(x_);  // E_cover's closest points walk from the accepted shape's
   OptimizeRecord r;
   r.iteration = iteration_;
   r.objective = energy(X_, x_, &r.terms);

@@ -16,7 +16,7 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   return S;
 }
 
-// Gauss-Newton normal equations of E_target + E_seam in (rotation vector, translation) about `center`.
+// Gauss-Newton normal equations of E_target + E_cover + E_seam in (rotation vector, translation) about `center`.
 void normalEquations(const PatternObjective& obj, const Eigen::VectorXd& w, const Vertices& x,
                      const Eigen::Vector3d& center, Matrix6d& H, Vector6d& g) {
   H.setZero(), g.setZero();
@@ -28,6 +28,24 @@ void normalEquations(const PatternObjective& obj, const Eigen::VectorXd& w, cons
     Vector6d J;
     J << (xi - center).cross(n), n;  // d(d)/d(omega, t)
     H += w[i] * J * J.transpose(), g += w[i] * d * J;
+  }
+  std::vector<PatternObjective::CoverPoint> cover;
+  obj.coverPoints(x, cover);
+  for (const auto& c : cover) {
+    // E_cover's residual is the distance |c - t|: moved rigidly, c slides over the shape too, which changes the
+    // distance only to second order, so only the motion along u = (c - t) / |c - t| counts (point-to-plane;
+    // the point-to-point Jacobian converged linearly, hundreds of steps per alignment).
+    const Eigen::Vector3d r = c.closest - c.target;
+    const double d = r.norm();
+    if (!(d > 0)) continue;
+    const Eigen::Vector3d u = r / d;
+    Vector6d J;
+    J << (c.closest - center).cross(u), u;
+    // The robust kernel by iteratively reweighted least squares: rho(d) enters as irls * d^2, irls = rho'(d)/(2d)
+    // at the current d, which gives the kernel's exact gradient (a point far from the shape weighs little).
+    double irls = 1;
+    obj.coverKernel(d * d, &irls);
+    H += c.weight * irls * J * J.transpose(), g += c.weight * irls * d * J;
   }
   for (const auto& s : obj.seamVertices()) {
     // Same weight as PatternObjective::shapeEnergy's seam term (w_s sigma / (n D^2)).

@@ -1,6 +1,6 @@
 // Rigid placement of the inflated shape. The equilibrium x(X) is only defined up to a rigid motion (the
-// simulator pins one); E_target and E_seam are not rigid-invariant. We place x at the rigid motion that
-// minimizes E_target + E_seam (Levenberg-damped Gauss-Newton over a rotation vector and a translation).
+// simulator pins one); E_target, E_cover and E_seam are not rigid-invariant. We place x at the rigid motion that
+// minimizes E_target + E_cover + E_seam (Levenberg-damped Gauss-Newton over a rotation vector and a translation).
 // At that minimum dE/dx is orthogonal to the rigid motions, so the adjoint gradient does not depend on the
 // pins (adjoint.hpp) and, by the envelope theorem, the optimizer sees the best-aligned shape's energy.
 #pragma once
