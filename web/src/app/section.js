@@ -151,10 +151,10 @@ export function outlineLoop(mesh, towards) {
     if (Math.abs(facing[v]) < 1e-6) facing[v] = facing[v] > 0 ? 1e-6 : -1e-6;
   }
   // Keeps only the largest edge-connected part of each side: the others change sides.
+  const neighbours = vertexNeighbours(indices, nv);
   const keepLargest = (front) => {
     const part = new Int32Array(nv).fill(-1);
     const sizes = [];
-    const neighbours = vertexNeighbours(indices, nv);
     for (let s = 0; s < nv; s++) {
       if (part[s] >= 0 || facing[s] > 0 !== front) continue;
       const id = sizes.length;
