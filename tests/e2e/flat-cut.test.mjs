@@ -32,9 +32,12 @@ test('a section seam is laid in one click, across the model or the view, and und
   const at = await middleOfView(page);
   await page.mouse.move(at.x + 3, at.y);
   await page.mouse.move(at.x, at.y);
-  const preview = await page.evaluate(() => window.billow.app.seams.preview?.length ?? 0);
+  const preview = await page.evaluate(() => window.billow.app.seams.preview?.[0]?.length ?? 0);
   assert.ok(preview > 3 * 20, `the loop is previewed under the pointer (${preview / 3} points)`);
   await screenshot(page, 'flat-cut-section-preview');
+  await page.mouse.move(5, 5); // out of the pane: no section previewed there
+  assert.equal(await page.evaluate(() => window.billow.app.seams.preview), null, 'the preview goes with the pointer');
+  await page.mouse.move(at.x, at.y);
   await page.mouse.click(at.x, at.y);
   await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 2, null, { timeout: 30000 });
   const seam = await page.evaluate(() => window.billow.app.design.seams[0]);
@@ -129,6 +132,39 @@ test('a sheet narrower than a piece: the pattern pane offers the width that fits
   assert.equal(await page.inputValue('#sheet-input'), String(width));
   assert.equal(await warning.count(), 0, 'the warning goes with its cause');
   assert.ok(await page.evaluate(() => Boolean(window.billow.app.panes.pattern.cutLines)), 'the cut outline is drawn');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('a gusset band: one click lays two sections the chosen width apart and a seam across the strip, undone at once', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.selectOption('#example-select', 'sphere');
+  await page.waitForFunction(() => window.billow.app.design.target.example === 'sphere' && window.billow.app.panes.target.mesh);
+  await page.click('#seam-panel button[data-tool="section"]');
+  await page.selectOption('.section-axis', 'y');
+  await page.fill('.section-band input', '40');
+  await page.press('.section-band input', 'Enter');
+  const at = await middleOfView(page);
+  await page.mouse.move(at.x + 3, at.y);
+  await page.mouse.move(at.x, at.y);
+  assert.equal(await page.evaluate(() => window.billow.app.seams.preview?.length), 2, 'both seams of the band are previewed');
+  await page.mouse.click(at.x, at.y);
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 3 && window.billow.app.seams.segmentation?.segments?.length === 3, null, { timeout: 30000 });
+  const names = await page.evaluate(() => window.billow.app.design.seams.map((s) => s.name));
+  assert.deepEqual(names, ['Band 40 mm, side 1', 'Band 40 mm, side 2', 'Band 40 mm, across']);
+  // The strip is one panel: a disk once the seam across opens it, its ends on both sides.
+  const across = await page.evaluate(() => window.billow.app.design.seams[2]);
+  assert.deepEqual(across.points.map((p) => p.on), [0, 1]);
+  assert.ok(await page.evaluate(() => window.billow.app.seams.segmentation.segments.every((s) => s.isDisk)));
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
+  // 40 mm apart on the model at its height: the planes' heights differ by 40 mm over the scale.
+  const [a, b] = [(await controls(page, 0))[0][1], (await controls(page, 1))[0][1]];
+  const unitsPerMm = await page.evaluate(() => 1 / (1000 * window.billow.app.scaleFor(window.billow.app.design)));
+  assert.ok(Math.abs(Math.abs(a - b) - 40 * unitsPerMm) < 1e-6, `${Math.abs(a - b)} units apart, ${40 * unitsPerMm} asked`);
+  await page.waitForTimeout(300);
+  await screenshot(page, 'flat-cut-band');
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 0);
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -3,7 +3,7 @@
 export const SHORTCUTS = [
   ['V', 'View: orbit (drag; the target and inflated views turn together), zoom (wheel or pinch), pan (right drag or two fingers)'],
   ['D', 'Draw seams: click points on the target; click the first point to close a loop'],
-  ['S', 'Section seam: click the target for a seam all around it where a plane through that point cuts it'],
+  ['S', 'Section seam: click the target for a seam all around it where a plane through that point cuts it; with a Band width, two seams with a gusset strip between them'],
   ['O', 'Outline seam: a seam around the shape as seen from here, for a front and a back panel'],
   ['E', 'Edit seams: drag control points; double-click a seam to add a point'],
   ['Enter', 'Finish the seam being drawn (or the Finish button, for touch)'],

@@ -171,19 +171,48 @@ export class SeamEditor {
     return mirrorPoint(design, this.app.target, this.plane, point);
   }
 
-  // A loop laid in one action (the section tool): positions [[x, y, z]] shown as the seam-to-be; null clears it.
-  previewLoop(positions) {
+  // Loops laid in one action (the section tool): lists of positions [[x, y, z]] shown as the seams-to-be; null
+  // or an empty list clears them.
+  previewLoops(loops) {
     this.previewTicket++;
-    this.preview = positions ? Float32Array.from([...positions, positions[0]].flat()) : null;
+    this.preview = loops?.length ? loops.map((positions) => Float32Array.from([...positions, positions[0]].flat())) : null;
     this.draftWarning = null;
     this.draw();
   }
 
-  // A loop laid in one action (section.js: a plane section or the outline) as a closed seam of surface paths
-  // between its resampled points; `note` says what was done to make it one loop.
-  commitLoop(loop, note = null) {
-    this.commitSeam(sectionSeamPoints(this.app.target, loop), true, { smooth: false });
+  // Loops laid in one action (section.js: a plane section, a gusset band's two, the outline), each a closed seam
+  // of surface paths between its resampled points, in one step of the history; names: the seams' own, if any;
+  // `note` says what was done to make them.
+  // across: a point near which a seam runs across from the first loop to the second (a gusset band's strip is a
+  // tube until a seam opens it), joined to both.
+  commitLoops(loops, { names = [], note = null, across = null } = {}) {
+    let next = this.design;
+    const named = (design, name) => (name ? { ...design, seams: design.seams.map((s, i) => (i === design.seams.length - 1 ? { ...s, name } : s)) } : design);
+    const laid = [];
+    for (const [k, loop] of loops.entries()) {
+      const points = sectionSeamPoints(this.app.target, loop);
+      next = named(cmd.addSeam(next, { points, closed: true, smooth: false }), names[k]);
+      laid.push({ index: next.seams.length - 1, points });
+    }
+    if (across && laid.length === 2) {
+      const target = this.app.target;
+      const nearest = (points, to) => points.reduce((best, p) => (distance(positionOf(target, p), to) < distance(positionOf(target, best), to) ? p : best));
+      const a = nearest(laid[0].points, across);
+      const b = nearest(laid[1].points, positionOf(target, a));
+      const ends = [{ ...a, on: laid[0].index }, { ...b, on: laid[1].index }];
+      next = named(cmd.addSeam(next, { points: ends, closed: false, smooth: false }), names[2]);
+      laid.push({ index: next.seams.length - 1 });
+    }
+    if (this.plane) for (const { index } of laid) next = addMirroredTwin(next, this.app.target, this.plane, index);
+    this.app.commitDesign(next);
+    this.selection = { seam: next.seams.length - 1, index: null };
+    this.refresh();
     this.noteLaid(note);
+  }
+
+  // Target units per millimetre on the cut pattern, at the design's height.
+  get unitsPerMillimetre() {
+    return 1 / (1000 * this.app.scaleFor(this.design));
   }
 
   // What laying a seam in one action did, or why it laid none (severity 'warning'); the next one replaces it.
@@ -192,8 +221,8 @@ export class SeamEditor {
     if (text) this.app.messages.show(severity, text, [], { cause: 'seam.laid' });
   }
 
-  commitSeam(points, closed, { smooth = true } = {}) {
-    let next = cmd.addSeam(this.design, { points, closed, smooth });
+  commitSeam(points, closed) {
+    let next = cmd.addSeam(this.design, { points, closed });
     const index = next.seams.length - 1;
     if (this.plane) next = addMirroredTwin(next, this.app.target, this.plane, index);
     this.app.commitDesign(next);
@@ -393,6 +422,7 @@ export class SeamEditor {
 }
 
 // The design's seams as the worker's segmentation takes them.
+const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 const requestSeams = (design) => design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
 
 const DRAFT_WORDS = {

@@ -25,7 +25,8 @@ export class SeamTool {
     this.app = app;
     this.mode = 'orbit'; // 'orbit' | 'draw' | 'edit' | 'section'
     this.sectionAxis = 'y'; // across which the section tool's plane lies: SECTION_AXES
-    this.section = null; // the section loop under the pointer (section.js planeSection), for the click
+    this.bandWidth = 0; // mm on the cut pattern: a click lays a gusset band of two sections this far apart; 0: one
+    this.section = null; // the section loops under the pointer (section.js planeSection), for the click
     this.drawing = null; // { points: [surface point], positions: [[x,y,z]] }
     this.drag = null; // { seam, index }
     this.down = null;
@@ -36,6 +37,7 @@ export class SeamTool {
     el.addEventListener('dblclick', (e) => this.onDoubleClick(e));
     el.addEventListener('pointerleave', () => {
       pane.seams.showCursor(null);
+      this.clearSection(); // no section previewed where the pointer is not
       pane.requestRender();
     });
   }
@@ -179,19 +181,37 @@ export class SeamTool {
     return this.toTarget(this.sectionAxis === 'view' ? this.pane.viewDirection() : new Vector3(...[0, 1, 2].map((k) => (SECTION_AXES[k] === this.sectionAxis ? 1 : 0))));
   }
 
+  setBandWidth(millimetres) {
+    this.bandWidth = Number.isFinite(millimetres) && millimetres > 0 ? millimetres : 0;
+    this.clearSection();
+  }
+
+  // The section through the point under the pointer, or the band's two: planes half the band's width to each
+  // side, each loop the one nearest the point.
   previewSection(event) {
     const hit = this.pane.pick(event);
-    this.section = hit ? sectionThrough(this.app.target, { position: hit.position, face: hit.point.face }, this.sectionNormal()) : null;
+    this.section = null;
+    this.lastHit = hit?.position ?? null;
+    if (hit) {
+      const normal = this.sectionNormal();
+      const half = (this.bandWidth / 2) * this.app.unitsPerMillimetre;
+      const offsets = half > 0 ? [-half, half] : [0];
+      const loops = offsets.map((o) => sectionThrough(this.app.target, { position: hit.position.map((x, k) => x + o * normal[k]), face: o ? -1 : hit.point.face }, normal));
+      if (loops.every(Boolean)) this.section = loops;
+    }
     this.pane.seams.showCursor(hit ? { x: hit.position[0], y: hit.position[1], z: hit.position[2] } : null, false);
-    this.app.previewLoop(this.section?.map((p) => p.position) ?? null);
+    this.app.previewLoops(this.section?.map((loop) => loop.map((p) => p.position)) ?? null);
   }
 
   laySection(event) {
     this.previewSection(event);
-    const loop = this.section;
-    if (!loop) return;
+    const loops = this.section;
+    if (!loops) return;
     this.clearSection();
-    this.app.commitLoop(loop);
+    const width = `${+this.bandWidth.toFixed(1)} mm`;
+    if (loops.length === 1) return this.app.commitLoops(loops);
+    // The strip between the two is opened by a seam across it, where the designer clicked.
+    this.app.commitLoops(loops, { names: [`Band ${width}, side 1`, `Band ${width}, side 2`, `Band ${width}, across`], across: this.lastHit });
   }
 
   // The outline as seen from here, in one action: the seam that splits the shape into a front and a back panel.
@@ -203,7 +223,7 @@ export class SeamTool {
     const parts = outline.toBack + outline.toFront;
     if (parts) notes.push(`${parts} small ${parts === 1 ? 'part' : 'parts'} turned away from the rest of ${parts === 1 ? 'its' : 'their'} side (a fold, a limb in front of the body) went with the panel around ${parts === 1 ? 'it' : 'them'}; a section seam around a limb gives it panels of its own`);
     if (outline.loops > 1) notes.push(`the shape has a handle, so the outline makes ${outline.loops} loops: the longest was laid; a seam across the handle opens it`);
-    this.app.commitLoop(outline.loop, notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null);
+    this.app.commitLoops([outline.loop], { note: notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null });
   }
 
   // A direction in the view (world) as one in the target's own coordinates.
@@ -216,7 +236,7 @@ export class SeamTool {
   clearSection() {
     if (!this.section && this.mode !== 'section') return;
     this.section = null;
-    this.app.previewLoop(null);
+    this.app.previewLoops(null);
   }
 
   // For the Finish / Close loop buttons: what the seam being drawn allows.

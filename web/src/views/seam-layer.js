@@ -48,7 +48,8 @@ export class SeamLayer extends Group {
   }
 
   // seams: [{ curve: Float32Array (x,y,z...), controls: [[x,y,z]], weight, selected, selectedPoint }]
-  // preview: Float32Array | null (the seam being drawn, to the cursor); warn: it would make a problem
+  // preview: Float32Array | null (the seam being drawn, to the cursor), or a list of them (the seams a click would
+  // lay: a gusset band's two); warn: it would make a problem
   update(seams, preview = null, warn = false) {
     for (const child of [...this.items.children]) {
       this.items.remove(child);
@@ -67,7 +68,8 @@ export class SeamLayer extends Group {
         this.items.add(dot);
       });
     }
-    if (preview?.length >= 6) this.items.add(this.line(preview, warn ? WARNING_COLOR : PREVIEW_COLOR, warn ? 3.5 : 2.5, true));
+    for (const curve of Array.isArray(preview) ? preview : [preview])
+      if (curve?.length >= 6) this.items.add(this.line(curve, warn ? WARNING_COLOR : PREVIEW_COLOR, warn ? 3.5 : 2.5, true));
   }
 
   // A cursor dot at position (local coordinates), orange when it snaps to a seam.

@@ -43,6 +43,19 @@ export class SeamPanel {
     for (const axis of SECTION_AXES) this.sectionAxis.append(new Option(labels[axis], axis));
     this.sectionAxis.addEventListener('change', () => tool.setSectionAxis(this.sectionAxis.value));
     this.toolbar.append(this.sectionAxis);
+    // A gusset band: two sections this far apart on the cut pattern, a strip panel between them.
+    this.band = document.createElement('label');
+    this.band.className = 'section-band';
+    this.band.title = 'A gusset band: a click lays two section seams this far apart, with a strip panel between them for thickness (0: one seam)';
+    this.bandInput = document.createElement('input');
+    this.bandInput.type = 'number';
+    this.bandInput.min = '0';
+    this.bandInput.step = '5';
+    this.bandInput.value = '0';
+    this.bandInput.setAttribute('aria-label', 'Gusset band width, mm');
+    this.bandInput.addEventListener('change', () => tool.setBandWidth(Number(this.bandInput.value)));
+    this.band.append('Band ', this.bandInput, ' mm');
+    this.toolbar.append(this.band);
     // Mirror symmetry (symmetry.js): new seams get a twin across the chosen plane of the target.
     this.symmetry = document.createElement('select');
     this.symmetry.className = 'symmetry';
@@ -82,6 +95,7 @@ export class SeamPanel {
     const { design, segmentation, selection } = this.editor;
     this.symmetry.value = design.symmetry?.axis ?? '';
     this.sectionAxis.hidden = this.tool.mode !== 'section';
+    this.band.hidden = this.tool.mode !== 'section';
     this.sectionAxis.value = this.tool.sectionAxis;
     this.drawbar.hidden = !this.tool.drawing;
     this.finishButton.disabled = !this.tool.canFinish;
