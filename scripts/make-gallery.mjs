@@ -202,7 +202,8 @@ async function makeThumbnails(only = []) {
       await page.waitForTimeout(500);
       // Designs: the target with its seams; patterns: the inflated shape. Without the figures and legends.
       const pane = THUMBNAIL_PANES[id] ?? (/^Inflated the optimized panels/.test(await page.textContent('#status')) ? 'target' : 'inflated');
-      const overlays = '.pane .stats, .pane .legend, .pane .seam-panel, .pane .hint, .pane .panel-label';
+      // The docked boxes go altogether (display: none), so the view frames the whole pane again (free-area.js).
+      const overlays = '.pane .dock, .pane .legend, .pane .hint, .pane .panel-label, .pane .segment-label';
       // A long target is seen from its side and closer than the pane frames it.
       if (pane === 'target' && THUMBNAIL_VIEWS[id]) {
         await page.evaluate(({ direction, zoom }) => {
@@ -214,11 +215,12 @@ async function makeThumbnails(only = []) {
           viewport.render();
         }, THUMBNAIL_VIEWS[id]);
       }
-      await page.evaluate((sel) => document.querySelectorAll(sel).forEach((el) => { el.style.visibility = 'hidden'; }), overlays);
+      await page.evaluate((sel) => document.querySelectorAll(sel).forEach((el) => { el.style.display = 'none'; }), overlays);
+      await page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
       await page.waitForTimeout(100);
       const box = await page.locator(`#pane-${pane} .pane-body`).boundingBox();
       const png = await page.screenshot({ clip: box });
-      await page.evaluate((sel) => document.querySelectorAll(sel).forEach((el) => { el.style.visibility = ''; }), overlays);
+      await page.evaluate((sel) => document.querySelectorAll(sel).forEach((el) => { el.style.display = ''; }), overlays);
       // Scaled to 320x240 in the page, cropped to cover.
       const dataUrl = await page.evaluate(async (b64) => {
         const img = new Image();
