@@ -1,6 +1,8 @@
 // Flat-cut layouts in one action. The section tool: the plane through the clicked point, across the model's
 // x, y or z as it stands or across the view, previewed under the pointer; a click lays the loop through that
-// point as an ordinary seam (control points, undo, saved with the design).
+// point as an ordinary seam (control points, undo, saved with the design), or a gusset band's two and the seam
+// across its strip. The outline as seen, for a front and a back panel. A sheet narrower than a piece is
+// offered the width that fits.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
