@@ -6,8 +6,7 @@ export const DEFAULT_SEAM_WEIGHT = 1;
 
 // New seams are smooth: a cubic Hermite spline through the control points, carried onto the surface
 // (seams/seam_curve.hpp); a seam that is not smooth runs along the shortest paths between its points.
-export function addSeam(design, { points, closed, smooth = true }) {
-  const name = `Seam ${design.seams.length + 1}`;
+export function addSeam(design, { points, closed, smooth = true, name = `Seam ${design.seams.length + 1}` }) {
   const seam = { name, closed: Boolean(closed), smooth: Boolean(smooth), weight: DEFAULT_SEAM_WEIGHT, points };
   return { ...design, seams: [...design.seams, seam] };
 }

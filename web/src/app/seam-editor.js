@@ -5,7 +5,7 @@ import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
 import { upOf } from './up-axis.js';
 import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf } from './symmetry.js';
-import { sectionSeamPoints } from './section.js';
+import { distance, sectionSeamPoints } from './section.js';
 
 const keyOf = (seam) => JSON.stringify([seam.points, seam.closed, Boolean(seam.smooth)]);
 const PICK_PX = 10;
@@ -187,11 +187,10 @@ export class SeamEditor {
   // tube until a seam opens it), joined to both.
   commitLoops(loops, { names = [], note = null, across = null } = {}) {
     let next = this.design;
-    const named = (design, name) => (name ? { ...design, seams: design.seams.map((s, i) => (i === design.seams.length - 1 ? { ...s, name } : s)) } : design);
     const laid = [];
     for (const [k, loop] of loops.entries()) {
       const points = sectionSeamPoints(this.app.target, loop);
-      next = named(cmd.addSeam(next, { points, closed: true, smooth: false }), names[k]);
+      next = cmd.addSeam(next, { points, closed: true, smooth: false, name: names[k] });
       laid.push({ index: next.seams.length - 1, points });
     }
     if (across && laid.length === 2) {
@@ -200,7 +199,7 @@ export class SeamEditor {
       const a = nearest(laid[0].points, across);
       const b = nearest(laid[1].points, positionOf(target, a));
       const ends = [{ ...a, on: laid[0].index }, { ...b, on: laid[1].index }];
-      next = named(cmd.addSeam(next, { points: ends, closed: false, smooth: false }), names[2]);
+      next = cmd.addSeam(next, { points: ends, closed: false, smooth: false, name: names[2] });
       laid.push({ index: next.seams.length - 1 });
     }
     if (this.plane) for (const { index } of laid) next = addMirroredTwin(next, this.app.target, this.plane, index);
@@ -422,7 +421,6 @@ export class SeamEditor {
 }
 
 // The design's seams as the worker's segmentation takes them.
-const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 const requestSeams = (design) => design.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
 
 const DRAFT_WORDS = {

@@ -65,7 +65,7 @@ export function zeroLoops({ positions, indices }, values) {
 const SECTION_SPACING = 0.02;
 const SECTION_POINTS = [12, 160];
 
-const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+export const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 
 export const loopLength = (loop) => loop.reduce((s, p, i) => s + distance(p.position, loop[(i + 1) % loop.length].position), 0);
 

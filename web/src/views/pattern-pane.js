@@ -172,7 +172,7 @@ export class PatternPane {
     this.element.parentElement.querySelector('.hint')?.setAttribute('hidden', '');
     const box = new Box3().setFromObject(this.content);
     if (!box.isEmpty()) this.placeGrid(box);
-    if (frame || this.outgrewFrame()) this.frame(this.content);
+    if (frame || this.outgrewFrame(box)) this.frame(this.content);
     else this.viewport.requestRender();
   }
 
@@ -493,12 +493,11 @@ export class PatternPane {
     this.viewport.requestRender();
   }
 
-  // Whether what is shown now reaches past the margin the last frame() left around the pieces, while the view
+  // Whether what is shown now (box) reaches past the margin the last frame() left around the pieces, while the view
   // still follows them: the optimizer's panels grow as they are streamed, and the cut lines, drawn after the
   // pieces, stand out by the seam allowance (10 mm around a 66 mm piece is more than its margin).
-  outgrewFrame() {
+  outgrewFrame(box) {
     if (!this.framed || !this.framedBox) return false;
-    const box = new Box3().setFromObject(this.content);
     const room = this.framedBox.clone().expandByVector(this.framedBox.getSize(new Vector3()).multiplyScalar(0.09));
     return !box.isEmpty() && !room.containsBox(box);
   }
