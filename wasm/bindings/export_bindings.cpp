@@ -3,11 +3,14 @@
 //   sheet }
 //     options (all optional, lengths in mm; io/export_options_json.hpp): { allowance, free_edge_allowance,
 //       seam_allowance: { "<seam id>": mm }, sheet_width, notch_spacing, overlap, paper: "a4"|"letter",
-//       units: "mm"|"in", grain_lock, rotate, title }
+//       units: "mm"|"in", grain_lock, rotate, title, joining: "sewn"|"sealed", valves: [{ seam, at, width }] }
 //     cutLines: per panel [x0, y0, x1, y1, ...] in the panel's own frame, in meters (for the pattern pane).
 //     outlines: per panel { loop: [vertex index, ...] (its sewing line, counterclockwise), seams: [seam id of
 //       loop edge i (loop[i] -> loop[i+1]), -1 for a free edge] }: where each seam of stats.json lies.
 //     notches: per panel its registration notches as tick segments [x0, y0, x1, y1, ...] in its frame [m].
+//     seamSides: per seam { id, sides: [{ panel, edges: [loop edge, ...] in seam order, forward, length [m] }] x 2 }
+//       (export/outline.hpp SeamSide): where a point of a seam lies along it, for placing a fill valve.
+//     valves: per panel the marks of its fill valves' gaps, each a closed [x0, y0, ...] in its frame [m].
 //     sheet: { width, length [m], utilisation, placements: per panel { angle [rad], x, y [m] } }: the nested
 //       sheet (sheet point = rotate(angle) * panel point + (x, y); x across the roll, y along it).
 //   The PDF is binary, so it crosses as base64 (embind strings are UTF-8 text).
@@ -77,6 +80,20 @@ std::string exportPattern(const std::string& patternJson, const std::string& opt
     json outlines = json::array();
     for (const billow::PanelOutline& o : bundle.outlines.panels)
       outlines.push_back({{"loop", o.loop}, {"seams", o.edgeSeam}});
+    json seamSides = json::array();
+    for (const billow::Seam& seam : bundle.outlines.seams) {
+      json sides = json::array();
+      for (const billow::SeamSide* side : {&seam.a, &seam.b})
+        sides.push_back(
+            {{"panel", side->panel}, {"edges", side->edges}, {"forward", side->forward}, {"length", side->length}});
+      seamSides.push_back({{"id", seam.id}, {"sides", sides}});
+    }
+    json valves = json::array();
+    for (const auto& marks : bundle.valveMarks) {
+      json list = json::array();
+      for (const billow::Polygon2& mark : marks) list.push_back(meters(mark));
+      valves.push_back(list);
+    }
     return json({{"svg", bundle.svg},
                  {"dxf", bundle.dxf},
                  {"pdfBase64", base64(bundle.pdf)},
@@ -84,6 +101,8 @@ std::string exportPattern(const std::string& patternJson, const std::string& opt
                  {"cutLines", cut},
                  {"outlines", outlines},
                  {"notches", notches},
+                 {"seamSides", seamSides},
+                 {"valves", valves},
                  {"sheet", sheet}})
         .dump();
   });

@@ -1,6 +1,7 @@
 // billow export PATTERN.json --out-dir DIR [--allowance MM] [--seam-allowance SEAM=MM ...]
 //                            [--free-edge-allowance MM] [--sheet-width MM] [--paper a4|letter]
 //                            [--notch-spacing MM] [--overlap MM] [--units mm|in] [--grain-lock] [--no-rotate]
+//                            [--sealed] [--valve SEAM=MM[@AT] ...]
 // Writes DIR/pattern.svg, DIR/pattern.dxf, DIR/pattern.pdf and DIR/stats.json.
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +22,41 @@ namespace {
 
 double millimetres(const Args& args, const std::string& name, double fallback) {
   return numberOption(args, name, fallback, "a length in mm");
+}
+
+// A number that is the whole of `text`.
+bool wholeNumber(const std::string& text, double& out) {
+  try {
+    size_t used = 0;
+    out = std::stod(text, &used);
+    return used == text.size();
+  } catch (const std::exception&) {
+    return false;
+  }
+}
+
+// --valve SEAM=MM[@AT]: a fill valve MM wide on seam SEAM (S4 or 3), centred at AT of its length (0.5).
+FillValve valveOption(const std::string& value) {
+  const auto fail = [&](const std::string& why) -> FillValve {
+    throw Error("cli.usage", "the option --valve needs SEAM=MM or SEAM=MM@AT, like S1=20 or S1=20@0.25 (" + why +
+                                 "), not '" + value + "'");
+  };
+  const size_t eq = value.find('='), at = value.find('@');
+  if (eq == std::string::npos) return fail("no '='");
+  std::string seam = value.substr(0, eq);
+  const bool label = !seam.empty() && (seam[0] == 'S' || seam[0] == 's');
+  if (label) seam.erase(0, 1);
+  if (seam.empty() || seam.size() > 6 || seam.find_first_not_of("0123456789") != std::string::npos ||
+      std::stoi(seam) - (label ? 1 : 0) < 0)
+    return fail("the seam is its label S1, S2, ... or its id 0, 1, ...");
+  FillValve valve;
+  valve.seam = std::stoi(seam) - (label ? 1 : 0);
+  if (!wholeNumber(value.substr(eq + 1, at == std::string::npos ? std::string::npos : at - eq - 1), valve.width) ||
+      !(valve.width > 0))
+    return fail("the width is a length in mm");
+  if (at != std::string::npos && (!wholeNumber(value.substr(at + 1), valve.at) || !(valve.at >= 0 && valve.at <= 1)))
+    return fail("AT is a share of the seam's length, from 0 to 1");
+  return valve;
 }
 
 // --seam-allowance SEAM=MM: SEAM is the seam's label on the pieces (S4) or its id in stats.json (3).
@@ -58,13 +94,14 @@ void writeFile(const std::filesystem::path& path, const std::string& bytes) {
 
 int exportCommand(const std::vector<std::string>& argv) {
   const Args args = parseArgs(argv, {"--out-dir", "--allowance", "--seam-allowance", "--free-edge-allowance",
-                                     "--sheet-width", "--paper", "--notch-spacing", "--overlap", "--units"});
+                                     "--sheet-width", "--paper", "--notch-spacing", "--overlap", "--units", "--valve"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir")) {
     std::fprintf(
         args.has("--help") ? stdout : stderr,
         "usage: billow export PATTERN.json --out-dir DIR [--allowance MM] [--seam-allowance SEAM=MM ...]\n"
         "                     [--free-edge-allowance MM] [--sheet-width MM] [--paper a4|letter]\n"
-        "                     [--notch-spacing MM] [--overlap MM] [--units mm|in] [--grain-lock] [--no-rotate]\n\n"
+        "                     [--notch-spacing MM] [--overlap MM] [--units mm|in] [--grain-lock] [--no-rotate]\n"
+        "                     [--sealed] [--valve SEAM=MM[@AT] ...]\n\n"
         "Writes the cut files DIR/pattern.svg and DIR/pattern.dxf (the pieces nested on a sheet), a\n"
         "printable DIR/pattern.pdf (overview, then true-scale tiles) and DIR/stats.json.\n"
         "  --allowance MM             seam allowance of every seam (0 for heat sealing)\n"
@@ -73,6 +110,9 @@ int exportCommand(const std::vector<std::string>& argv) {
         "  --free-edge-allowance MM   allowance of edges sewn to nothing (openings, hems)\n"
         "  --grain-lock               keep each panel's y axis along the roll (turned 0 or 180 degrees)\n"
         "  --no-rotate                nest the panels as drawn (not turned)\n"
+        "  --sealed                   heat sealed (foil): the allowance is the seal band, drawn as a band\n"
+        "  --valve SEAM=MM[@AT]       a fill valve: MM left open on seam SEAM on both pieces, centred at\n"
+        "                             AT of the seam's length (0 to 1, default 0.5); repeat for more\n"
         "Defaults: 10 mm seam allowance, free edges as the seams, 1000 mm sheet, A4, notches every\n"
         "100 mm, 10 mm tile overlap, panels turned as they nest best.\n");
     return args.has("--help") ? 0 : 2;
@@ -102,6 +142,9 @@ int exportCommand(const std::vector<std::string>& argv) {
   o.units = units == "mm" ? DisplayUnits::Millimeters : DisplayUnits::Inches;
   o.grainLock = args.has("--grain-lock");
   o.allowRotation = !args.has("--no-rotate");
+  o.sealed = args.has("--sealed");
+  for (const auto& [name, value] : args.options)
+    if (name == "--valve") o.valves.push_back(valveOption(value));
 
   const std::string input = args.positional[0];
   std::ifstream in(input, std::ios::binary);

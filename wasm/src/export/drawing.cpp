@@ -4,6 +4,10 @@ namespace billow {
 
 const char* layerName(Layer layer) {
   switch (layer) {
+    case Layer::Seal:
+      return "seal-band";
+    case Layer::Valve:
+      return "valves";
     case Layer::Cut:
       return "cut";
     case Layer::Sew:
@@ -16,9 +20,14 @@ const char* layerName(Layer layer) {
   return "";
 }
 
-// Cut black (what the blade or laser follows), sewing line blue, notches red, labels grey.
+// Cut black (what the blade or laser follows), sewing line blue, notches red, labels grey; the seal band's
+// sealing line amber (its band a light tint of it, svg/pdf writers), valve gaps green.
 const char* layerColor(Layer layer) {
   switch (layer) {
+    case Layer::Seal:
+      return "#b8860b";
+    case Layer::Valve:
+      return "#1a9850";
     case Layer::Cut:
       return "#000000";
     case Layer::Sew:
@@ -33,6 +42,10 @@ const char* layerColor(Layer layer) {
 
 int layerAciColor(Layer layer) {
   switch (layer) {
+    case Layer::Seal:
+      return 2;  // yellow
+    case Layer::Valve:
+      return 3;  // green
     case Layer::Cut:
       return 7;  // white/black
     case Layer::Sew:

@@ -1,6 +1,7 @@
 #include "export/dxf_writer.hpp"
 
 #include <cstdio>
+#include <iterator>
 
 namespace billow {
 namespace {
@@ -35,6 +36,10 @@ unsigned decodeUtf8(const std::string& s, size_t& i) {
 
 const char* dxfLayerName(Layer layer) {
   switch (layer) {
+    case Layer::Seal:
+      return "SEAL_BAND";
+    case Layer::Valve:
+      return "VALVE";
     case Layer::Cut:
       return "CUT";
     case Layer::Sew:
@@ -79,7 +84,7 @@ std::string writeDxf(const Drawing& d) {
   o.pair(0, "LTYPE"), o.pair(2, "CONTINUOUS"), o.pair(70, 0), o.pair(3, "Solid line"), o.pair(72, 65);
   o.pair(73, 0), o.real(40, 0.0);
   o.pair(0, "ENDTAB");
-  o.pair(0, "TABLE"), o.pair(2, "LAYER"), o.pair(70, 4);
+  o.pair(0, "TABLE"), o.pair(2, "LAYER"), o.pair(70, int(std::size(kLayers)));
   for (Layer layer : kLayers) {
     o.pair(0, "LAYER"), o.pair(2, dxfLayerName(layer)), o.pair(70, 0);
     o.pair(62, layerAciColor(layer)), o.pair(6, "CONTINUOUS");

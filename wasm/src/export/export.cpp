@@ -31,6 +31,8 @@ ExportBundle exportPattern(const Pattern& pattern, const ExportOptions& options)
   out.sheetLength = layout.drawing.length;
   out.utilisation = layout.nest.utilisation;
   out.notchTicks = notchTicks(layout, options);
+  out.valveMarks.resize(layout.panels.size());
+  for (const ValveGap& gap : layout.valveGaps) out.valveMarks[gap.panel].push_back(gap.mark);
   return out;
 }
 

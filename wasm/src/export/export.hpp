@@ -22,6 +22,7 @@ struct ExportBundle {
   std::vector<Placement2> placements;
   double sheetWidth = 0, sheetLength = 0, utilisation = 0;
   std::vector<Polygon2> notchTicks;
+  std::vector<std::vector<Polygon2>> valveMarks;  // per panel, the marks of its fill valves' gaps, its frame [mm]
 };
 
 // Throws billow::Error: export.empty, export.bad-value, export.panel-shape, export.sheet-too-narrow.

@@ -10,9 +10,20 @@ namespace billow {
 enum class PaperSize { A4, Letter };
 enum class DisplayUnits { Millimeters, Inches };  // units of the numbers printed for people (files stay in mm)
 
+// A fill valve: a gap left in a seam (unsealed, unsewn) where the valve or a straw goes in, at the same place
+// on both pieces. `at` is its centre as a share of the seam's length from the seam's start (both sides run
+// the same way, export/outline.hpp SeamSide).
+struct FillValve {
+  int seam = 0;       // seam id (S<id + 1>)
+  double at = 0.5;    // [0, 1]
+  double width = 20;  // [mm] along the seam
+};
+
 struct ExportOptions {
-  double allowance = 10;          // [mm] seam allowance on every seam; 0 = heat sealing (cut on the line)
-  double freeEdgeAllowance = -1;  // [mm] on unsewn edges (openings, hems); < 0: same as `allowance`
+  double allowance = 10;  // [mm] seam allowance on every seam; sealed: the seal band
+  bool sealed = false;    // heat sealed (foil): the allowance is a seal band, drawn as a band
+  std::vector<FillValve> valves;
+  double freeEdgeAllowance = -1;                      // [mm] on unsewn edges (openings, hems); < 0: same as `allowance`
   std::vector<std::pair<int, double>> seamAllowance;  // per-seam overrides: (seam id, width [mm])
   double notchSpacing = 100;        // [mm] between registration notches along a seam; 0 = junctions only
   double notchLength = 3;           // [mm] each side of the cut line (at most half the allowance inside)

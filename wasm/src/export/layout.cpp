@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "export/offset.hpp"
@@ -41,10 +42,38 @@ void validate(const Pattern& pattern, const ExportOptions& o) {
                   "Choose the allowance of seam S" + std::to_string(seam + 1) + " from 0 to 200 mm.");
   if (o.freeEdgeAllowance >= 0 ? o.freeEdgeAllowance > 200 : !(o.freeEdgeAllowance < 0))
     throw Error("export.bad-value", "Choose the allowance of free edges from 0 to 200 mm.");
+  for (const FillValve& v : o.valves)
+    if (!(v.width > 0 && v.width <= 200) || !(v.at >= 0 && v.at <= 1) || v.seam < 0)
+      throw Error("export.bad-value", "Choose the fill valve on seam S" + std::to_string(v.seam + 1) +
+                                          " wider than 0 and at most 200 mm, placed along the seam (0 to 1).");
   if (bad(o.notchSpacing) || bad(o.notchLength) || bad(o.gap) || bad(o.tileOverlap))
     throw Error("export.bad-value", "Notch spacing, notch length, gap and tile overlap must be 0 or more.");
   if (!(o.sheetWidth >= 10 && o.sheetWidth <= 100000))
     throw Error("export.bad-value", "Choose a sheet width from 10 mm to 100 m.");
+}
+
+// The mark of a fill valve's gap on one side of its seam, from arc length s0 to s1 [m] along the side: the
+// sewing line, then back at the allowance's depth (at least `minDepth` [mm], so a gap in a seam cut on
+// its line still shows).
+Polygon2 valveMark(const Pattern& pattern, const Outlines& outlines, const SeamSide& side, const PanelLayout& pl,
+                   double s0, double s1, double minDepth) {
+  std::vector<double> arcs{s0};
+  const Polygon2 loop = outlines.panels[side.panel].points(pattern.panels[side.panel]);
+  const int n = int(loop.size());
+  double along = 0;
+  for (int e : side.edges) {
+    along += (loop[(e + 1) % n] - loop[e]).norm();
+    if (along > s0 && along < s1) arcs.push_back(along);
+  }
+  arcs.push_back(s1);
+  Polygon2 inner, outer;
+  for (double s : arcs) {
+    const SidePoint sp = pointAlongSide(pattern, outlines, side, s);
+    inner.push_back(kMm * sp.point);
+    outer.push_back(kMm * sp.point + std::max(pl.widths[sp.edge], minDepth) * sp.normal);
+  }
+  inner.insert(inner.end(), outer.rbegin(), outer.rend());
+  return inner;
 }
 
 }  // namespace
@@ -101,8 +130,12 @@ SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& o) {
   for (int p = 0; p < np; ++p) {
     PanelLayout& pl = s.panels[p];
     pl.placement = s.nest.placements[p];
-    d.paths.push_back({Layer::Cut, p, true, transformed(pl.cut, pl.placement)});
-    d.paths.push_back({Layer::Sew, p, true, transformed(pl.sew, pl.placement)});
+    d.paths.push_back({Layer::Cut, p, true, transformed(pl.cut, pl.placement), {}});
+    // Heat sealed: the allowance is the seal band, drawn between the sealing line and the cut line.
+    if (o.sealed)
+      d.paths.push_back({Layer::Seal, p, true, transformed(pl.sew, pl.placement), transformed(pl.cut, pl.placement)});
+    else
+      d.paths.push_back({Layer::Sew, p, true, transformed(pl.sew, pl.placement), {}});
     const Panel& panel = pattern.panels[p];
     d.texts.push_back({Layer::Label, p, pl.placement.apply(pl.labelPoint) - Vec2(0, 0.35 * pl.labelHeight),
                        pl.labelHeight,
@@ -111,7 +144,29 @@ SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& o) {
   // Notches: a short tick across the cut line, mostly inside the allowance so a snip does not cut the seam.
   for (const Notch& n : s.notches) {
     const PanelLayout& pl = s.panels[n.panel];
-    d.paths.push_back({Layer::Notch, n.panel, false, transformed(notchTick(n, pl, o), pl.placement)});
+    d.paths.push_back({Layer::Notch, n.panel, false, transformed(notchTick(n, pl, o), pl.placement), {}});
+  }
+  // Fill valves: the same stretch of both sides of the seam left open, marked, and named beside the gap.
+  for (int v = 0; v < int(o.valves.size()); ++v) {
+    const FillValve& valve = o.valves[v];
+    const auto seam = std::find_if(s.outlines.seams.begin(), s.outlines.seams.end(),
+                                   [&](const Seam& x) { return x.id == valve.seam; });
+    if (seam == s.outlines.seams.end()) continue;
+    const SeamSide* sides[2] = {&seam->a, &seam->b};
+    for (const SeamSide* side : sides) {
+      const PanelLayout& pl = s.panels[side->panel];
+      const double at = valve.at * side->length, half = 0.5 * valve.width / kMm;
+      const double s0 = std::max(0.0, at - half), s1 = std::min(side->length, at + half);
+      ValveGap gap{v, side->panel, valveMark(pattern, s.outlines, *side, pl, s0, s1, 2 * o.notchLength)};
+      d.paths.push_back({Layer::Valve, gap.panel, true, transformed(gap.mark, pl.placement), {}});
+      const SidePoint mid = pointAlongSide(pattern, s.outlines, *side, at);
+      const double h = std::clamp(0.6 * pl.labelHeight, 3.0, 10.0);
+      char text[48];
+      std::snprintf(text, sizeof text, "valve %.0f mm", valve.width);
+      d.texts.push_back({Layer::Label, gap.panel,
+                         pl.placement.apply(kMm * mid.point - 2.8 * h * mid.normal) - Vec2(0, 0.35 * h), h, text});
+      s.valveGaps.push_back(std::move(gap));
+    }
   }
   // Seam ids on both panels, inside the sewing line near the seam's middle.
   for (const Seam& seam : s.outlines.seams) {

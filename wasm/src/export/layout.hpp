@@ -19,9 +19,18 @@ struct PanelLayout {
   double labelHeight = 5;      // [mm]
 };
 
+// A fill valve's gap on one piece: the stretch of sewing line left open and the mark drawn over it (the
+// sewing line there and back along the outside of the allowance or seal band), panel frame [mm].
+struct ValveGap {
+  int valve = -1;  // index in ExportOptions::valves
+  int panel = -1;
+  Polygon2 mark;
+};
+
 struct SheetLayout {
   Outlines outlines;
   std::vector<Notch> notches;
+  std::vector<ValveGap> valveGaps;  // two per valve on a seam of the pattern (one per side), none otherwise
   std::vector<PanelLayout> panels;
   NestResult nest;
   Drawing drawing;

@@ -16,30 +16,44 @@ std::string num(double v) {
   return s == "-0" ? "0" : s;
 }
 
-std::string rgb(Layer layer, const char* op) {
+std::string rgb(const char* hex, const char* op) {
   unsigned r = 0, g = 0, b = 0;
-  std::sscanf(layerColor(layer) + 1, "%2x%2x%2x", &r, &g, &b);
+  std::sscanf(hex + 1, "%2x%2x%2x", &r, &g, &b);
   return num(r / 255.0) + " " + num(g / 255.0) + " " + num(b / 255.0) + " " + op + "\n";
 }
+std::string rgb(Layer layer, const char* op) { return rgb(layerColor(layer), op); }
 
 std::string text(double x, double y, double size, const std::string& s) {
   return "BT /F1 " + num(size) + " Tf " + num(x) + " " + num(y) + " Td (" + escapePdfText(s) + ") Tj ET\n";
 }
 
-std::string pathOps(const DrawnPath& p) {
+std::string moves(const Polygon2& points) {
   std::string s;
-  for (size_t i = 0; i < p.points.size(); ++i)
-    s += num(p.points[i].x()) + " " + num(p.points[i].y()) + (i ? " l\n" : " m\n");
-  return s + (p.closed ? "h S\n" : "S\n");
+  for (size_t i = 0; i < points.size(); ++i) s += num(points[i].x()) + " " + num(points[i].y()) + (i ? " l\n" : " m\n");
+  return s;
+}
+
+// A path stroked; a valve's gap also filled white over the seal band (B: fill and stroke).
+std::string pathOps(const DrawnPath& p) {
+  if (p.layer == Layer::Valve) return moves(p.points) + "h B\n";
+  return moves(p.points) + (p.closed ? "h S\n" : "S\n");
 }
 
 // The drawing's paths and texts that touch `view`, in sheet millimetres (the caller sets the transform).
 std::string drawingOps(const Drawing& d, const Box2& view, bool labels) {
   std::string s;
+  // Seal bands first, tinted under every line (even-odd fill between the cut line and the sealing line).
+  s += rgb(kSealTint, "rg");
+  for (const DrawnPath& p : d.paths)
+    if (p.layer == Layer::Seal && boundingBox(p.band).overlaps(view))
+      s += moves(p.band) + "h\n" + moves(p.points) + "h f*\n";
+  s += "1 1 1 rg\n";
   for (Layer layer : kLayers) {
     if (layer == Layer::Label) continue;
     s += rgb(layer, "RG");
-    s += layer == Layer::Cut ? "0.25 w [] 0 d\n" : layer == Layer::Sew ? "0.2 w [3 1.5] 0 d\n" : "0.3 w [] 0 d\n";
+    s += layer == Layer::Cut                            ? "0.25 w [] 0 d\n"
+         : layer == Layer::Sew || layer == Layer::Valve ? "0.2 w [3 1.5] 0 d\n"
+                                                        : "0.3 w [] 0 d\n";
     for (const DrawnPath& p : d.paths)
       if (p.layer == layer && boundingBox(p.points).overlaps(view)) s += pathOps(p);
   }

@@ -1,5 +1,6 @@
 #include "export/statistics.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 
@@ -65,6 +66,18 @@ nlohmann::json exportStatistics(const Pattern& pattern, const SheetLayout& s, co
   const double sheetArea = o.sheetWidth * s.nest.length * 1e-6;
   const double minutes =
       seamLength / 1000 / o.sewingMetersPerMinute + o.minutesPerSeam * double(s.outlines.seams.size());
+  // Fill valves, each with whether its seam is in this pattern (a valve on a seam that is gone is not drawn).
+  json valves = json::array();
+  for (int v = 0; v < int(o.valves.size()); ++v) {
+    const FillValve& valve = o.valves[v];
+    const bool placed =
+        std::any_of(s.valveGaps.begin(), s.valveGaps.end(), [&](const ValveGap& g) { return g.valve == v; });
+    valves.push_back({{"seam", valve.seam},
+                      {"label", "S" + std::to_string(valve.seam + 1)},
+                      {"at", valve.at},
+                      {"width_mm", valve.width},
+                      {"placed", placed}});
+  }
   json totals = {{"panels", s.panels.size()},
                  {"seams", s.outlines.seams.size()},
                  {"panel_area_m2", panelArea},
@@ -85,6 +98,8 @@ nlohmann::json exportStatistics(const Pattern& pattern, const SheetLayout& s, co
           {"units", {{"length", "mm"}, {"area", "m2"}, {"time", "min"}}},
           {"allowance_mm", o.allowance},
           {"free_edge_allowance_mm", allowanceOf(-1, o)},
+          {"joining", o.sealed ? "sealed" : "sewn"},
+          {"valves", valves},
           {"panels", panels},
           {"seams", seams},
           {"totals", totals}};
@@ -95,7 +110,7 @@ std::vector<std::string> summaryLines(const nlohmann::json& j, const ExportOptio
   char buf[200];
   std::vector<std::string> lines;
   // The seam allowance, and the seams of this pattern that have their own (up to four named).
-  std::string allowance = "seam allowance " + length(o.allowance, o);
+  std::string allowance = (o.sealed ? "heat sealed, seal band " : "seam allowance ") + length(o.allowance, o);
   std::vector<std::string> own;
   for (const auto& seam : j["seams"])
     if (seam["allowance_mm"].get<double>() != o.allowance)
@@ -108,6 +123,10 @@ std::vector<std::string> summaryLines(const nlohmann::json& j, const ExportOptio
     allowance += ", free edges " + length(allowanceOf(-1, o), o);
   lines.push_back(std::to_string(t["panels"].get<int>()) + " panels, " + std::to_string(t["seams"].get<int>()) +
                   " seams, " + allowance);
+  for (const auto& valve : j["valves"])
+    if (valve["placed"].get<bool>())
+      lines.push_back("fill valve on " + valve["label"].get<std::string>() + ": leave " +
+                      length(valve["width_mm"].get<double>(), o) + " open at the marks on both pieces");
   std::snprintf(buf, sizeof buf, "sheet %s wide x %s long, material used %.0f %%", length(o.sheetWidth, o).c_str(),
                 length(t["sheet_length_mm"].get<double>(), o).c_str(), 100 * t["utilisation"].get<double>());
   lines.push_back(buf);

@@ -1,5 +1,6 @@
 // Statistics of the fabrication outputs, as JSON (all lengths in mm, areas in m^2, time in minutes):
-//   { "units": {...}, "allowance_mm", "free_edge_allowance_mm",
+//   { "units": {...}, "allowance_mm", "free_edge_allowance_mm", "joining": "sewn" | "sealed",
+//     "valves": [ { "seam", "label", "at", "width_mm", "placed" } ],
 //     "panels": [ { "number", "name", "internal", "area_m2", "cut_area_m2", "width_mm", "height_mm",
 //     "perimeter_mm", "rotation_deg", "position_mm": [x, y] } ],
 //     "seams": [ { "id", "label", "panels": [a, b], "length_a_mm", "length_b_mm", "mismatch_mm", "closed",

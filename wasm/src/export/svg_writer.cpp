@@ -1,5 +1,6 @@
 #include "export/svg_writer.hpp"
 
+#include <algorithm>
 #include <cstdio>
 
 namespace billow {
@@ -51,7 +52,14 @@ std::string writeSvg(const Drawing& d, const std::string& title) {
   s += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" ";
   s += "width=\"" + num(W) + "mm\" height=\"" + num(L) + "mm\" viewBox=\"0 0 " + num(W) + " " + num(L) + "\">\n";
   s += "<title>" + escapeXml(title) + "</title>\n";
+  const auto loop = [&](const Polygon2& points) {
+    std::string out = "M";
+    for (size_t i = 0; i < points.size(); ++i) out += (i ? " " : "") + X(points[i].x()) + " " + Y(points[i].y());
+    return out + " Z";
+  };
   for (Layer layer : kLayers) {
+    const bool used = std::any_of(d.paths.begin(), d.paths.end(), [&](const DrawnPath& p) { return p.layer == layer; });
+    if (!used && (layer == Layer::Seal || layer == Layer::Valve)) continue;  // only heat-sealed or valved patterns
     const std::string name = layerName(layer), color = layerColor(layer);
     s += "<g id=\"" + name + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + name + "\"";
     if (layer == Layer::Label) {
@@ -60,10 +68,21 @@ std::string writeSvg(const Drawing& d, const std::string& title) {
         if (t.layer == layer)
           s += "<text x=\"" + X(t.at.x()) + "\" y=\"" + Y(t.at.y()) + "\" font-size=\"" + num(t.height) +
                "\" data-panel=\"" + std::to_string(t.panel) + "\">" + escapeXml(t.text) + "</text>\n";
+    } else if (layer == Layer::Seal) {
+      // The band tinted between the cut line and the sealing line (even-odd fill), then the sealing line.
+      s += " stroke=\"" + color + "\" stroke-width=\"0.2\">\n";
+      for (const DrawnPath& p : d.paths)
+        if (p.layer == layer && !p.points.empty())
+          s += "<path data-panel=\"" + std::to_string(p.panel) + "\" fill=\"" + kSealTint +
+               "\" fill-rule=\"evenodd\" stroke=\"none\" d=\"" + loop(p.band) + " " + loop(p.points) +
+               "\"/>\n<path data-panel=\"" + std::to_string(p.panel) + "\" fill=\"none\" d=\"" + loop(p.points) +
+               "\"/>\n";
     } else {
-      // Hairlines for cutters (0.1 mm); the sewing line dashed as on paper patterns.
-      s += " fill=\"none\" stroke=\"" + color + "\" stroke-width=\"" + (layer == Layer::Cut ? "0.1" : "0.2") + "\"";
-      if (layer == Layer::Sew) s += " stroke-dasharray=\"3 1.5\"";
+      // Hairlines for cutters (0.1 mm); the sewing line dashed as on paper patterns; a valve's gap filled white
+      // over the seal band, so the band shows where not to seal.
+      s += std::string(" fill=\"") + (layer == Layer::Valve ? "#ffffff" : "none") + "\" stroke=\"" + color +
+           "\" stroke-width=\"" + (layer == Layer::Cut ? "0.1" : "0.2") + "\"";
+      if (layer == Layer::Sew || layer == Layer::Valve) s += " stroke-dasharray=\"3 1.5\"";
       s += ">\n";
       for (const DrawnPath& p : d.paths) {
         if (p.layer != layer || p.points.empty()) continue;

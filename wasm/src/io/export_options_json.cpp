@@ -52,6 +52,31 @@ std::vector<std::pair<int, double>> readSeamAllowanceJson(const json& value) {
   return out;
 }
 
+std::vector<FillValve> readFillValvesJson(const json& value) {
+  if (!value.is_array()) bad("The fill valves must be a list, like [{\"seam\": 0, \"at\": 0.5, \"width\": 20}].");
+  std::vector<FillValve> out;
+  for (const json& v : value) {
+    if (!v.is_object() || !v.contains("seam") || !v["seam"].is_number_integer() || v["seam"].get<long long>() < 0 ||
+        v["seam"].get<long long>() > 999999)
+      bad("A fill valve names no seam: each valve needs \"seam\", the id of the seam it sits on (seam S1 is id 0).");
+    FillValve valve;
+    valve.seam = v["seam"].get<int>();
+    const std::string name = "The fill valve on seam S" + std::to_string(valve.seam + 1);
+    if (v.contains("at")) {
+      if (!v["at"].is_number() || !(v["at"].get<double>() >= 0 && v["at"].get<double>() <= 1))
+        bad(name + " must sit along the seam: \"at\" from 0 (its start) to 1 (its end).");
+      valve.at = v["at"].get<double>();
+    }
+    if (v.contains("width")) {
+      if (!v["width"].is_number() || !(v["width"].get<double>() > 0 && v["width"].get<double>() <= kMaxValveWidth))
+        bad(name + " must be wider than 0 and at most " + millimetres(kMaxValveWidth) + " mm.");
+      valve.width = v["width"].get<double>();
+    }
+    out.push_back(valve);
+  }
+  return out;
+}
+
 ExportOptions readExportOptionsJson(const json& j, ExportOptions o) {
   if (!j.is_object()) bad("The export options are not valid.");
   const auto number = [&](const char* key, double fallback) {
@@ -85,6 +110,10 @@ ExportOptions readExportOptionsJson(const json& j, ExportOptions o) {
   const std::string units = text("units", o.units == DisplayUnits::Millimeters ? "mm" : "in");
   if (units != "mm" && units != "in") bad("The units are mm or inches.");
   o.units = units == "mm" ? DisplayUnits::Millimeters : DisplayUnits::Inches;
+  const std::string joining = text("joining", o.sealed ? "sealed" : "sewn");
+  if (joining != "sewn" && joining != "sealed") bad("The pieces are joined \"sewn\" or \"sealed\".");
+  o.sealed = joining == "sealed";
+  if (j.contains("valves")) o.valves = readFillValvesJson(j["valves"]);
   o.grainLock = flag("grain_lock", o.grainLock);
   o.allowRotation = flag("rotate", o.allowRotation);
   if (j.contains("title") && j["title"].is_string()) o.title = j["title"].get<std::string>().substr(0, 120);
