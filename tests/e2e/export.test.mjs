@@ -231,6 +231,7 @@ async function svgCutPerimeters(page) {
 
 test('one seam gets its own allowance by a click on it: only its cut line moves; undo, grain and reload', async () => {
   const page = await openFreshPage(env.context, env.server.url); // the other tests' autosaved settings are not this test's
+  await page.evaluate(() => window.billow.app.setJoining('sewn')); // a new design is foil, heat sealed: sewn here
   await page.selectOption('#example-select', 'pattern:sphere3');
   await waitInflated(page);
   await waitWidths(page, { 0: 10, 1: 10, 2: 10 });
@@ -304,7 +305,7 @@ test('one seam gets its own allowance by a click on it: only its cut line moves;
   await page.waitForTimeout(300); // the autosave
   await page.reload();
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design.fabrication), { allowance: 10, sheet_width: 1700, units: 'mm', seam_allowance: { 1: 0 }, grain_lock: true });
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design.fabrication), { allowance: 10, sheet_width: 1700, units: 'mm', joining: 'sewn', seam_allowance: { 1: 0 }, grain_lock: true });
   assert.equal(await page.inputValue('#grain-select'), 'grain');
   assert.equal(await page.textContent('#seams-button'), 'Seams (1 own)');
   await page.selectOption('#example-select', 'pattern:sphere3');
@@ -336,6 +337,7 @@ test('free edges get their own allowance; own allowances of seams that are gone 
   const [lo, hi] = [Math.min(...xs), Math.max(...xs)];
   const tip = (panel, v) => panel === 3 && Math.abs(pattern.panels[3].vertices[v][0] - (lo + hi) / 2) > 0.35 * (hi - lo);
   pattern.stitches = pattern.stitches.filter(([pa, va, pb, vb]) => !tip(pa, va) && !tip(pb, vb));
+  await page.evaluate(() => window.billow.app.setJoining('sewn')); // a new design is foil, heat sealed: sewn here
   await page.evaluate(() => window.billow.app.setSeamAllowance(7, 3)); // a seam this pattern does not have
   await page.setInputFiles('#file-input', { name: 'open-tips.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(pattern)) });
   await waitInflated(page);

@@ -4,9 +4,10 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import {
   parseFabrication, patternStatRows, balloonFigures, balloonRows, formatMillimeters, peakStress, exportOptions, grainMode, GRAIN_FIELDS,
-  seamAllowanceOf,
+  seamAllowanceOf, DEFAULT_ALLOWANCE, joiningOf, joiningFor,
 } from '../../web/src/app/fabrication.js';
-import { setFabrication, setSeamAllowance } from '../../web/src/app/commands.js';
+import { setFabrication, setSeamAllowance, setMaterial, addValve, setValveWidth, removeValve } from '../../web/src/app/commands.js';
+import { presetMaterial } from '../../web/src/app/materials.js';
 import { parseDesign, newDesign } from '../../web/src/app/design.js';
 import { loadApi } from './load-module.mjs';
 import { SolverError } from '../../web/src/worker/protocol.js';
@@ -60,8 +61,8 @@ test('per-seam and free-edge allowances and the grain are read with warnings for
 });
 
 test('the exporter\'s options carry the per-seam allowances, free edges and grain; the commands set and reset them', () => {
-  const plain = newDesign();
-  assert.deepEqual(exportOptions(plain.fabrication), { allowance: 10, sheet_width: 1000, units: 'mm' });
+  const plain = setMaterial(newDesign(), presetMaterial('ripstop')); // sewn, with the sewn default allowance
+  assert.deepEqual(exportOptions(plain.fabrication), { allowance: 10, sheet_width: 1000, units: 'mm', joining: 'sewn' });
   let d = setSeamAllowance(plain, 5, 15);
   d = setSeamAllowance(d, 3, 0);
   assert.deepEqual(Object.entries(d.fabrication.seam_allowance), [['3', 0], ['5', 15]]);
@@ -69,7 +70,7 @@ test('the exporter\'s options carry the per-seam allowances, free edges and grai
   d = setFabrication(d, { free_edge_allowance: 4, ...GRAIN_FIELDS.grain });
   assert.equal(grainMode(d.fabrication), 'grain');
   assert.deepEqual(exportOptions(d.fabrication, { paper: 'letter' }), {
-    allowance: 10, sheet_width: 1000, units: 'mm', seam_allowance: { 3: 0, 5: 15 }, free_edge_allowance: 4, grain_lock: true, paper: 'letter',
+    allowance: 10, sheet_width: 1000, units: 'mm', joining: 'sewn', seam_allowance: { 3: 0, 5: 15 }, free_edge_allowance: 4, grain_lock: true, paper: 'letter',
   });
   d = setFabrication(d, GRAIN_FIELDS.fixed);
   assert.equal(grainMode(d.fabrication), 'fixed');
@@ -79,7 +80,72 @@ test('the exporter\'s options carry the per-seam allowances, free edges and grai
   assert.equal(grainMode(d.fabrication), 'free');
   d = setSeamAllowance(setSeamAllowance(d, 3, null), 5, null);
   assert.deepEqual(d.fabrication, plain.fabrication); // back to the defaults: no leftover fields
-  assert.deepEqual(plain.fabrication, { allowance: 10, sheet_width: 1000, units: 'mm' }); // not mutated
+  assert.deepEqual(plain.fabrication, { allowance: 10, sheet_width: 1000, units: 'mm', joining: 'sewn' }); // not mutated
+});
+
+test('foil is heat sealed: a new design has a seal band, the joining follows the material, and fill valves are kept', () => {
+  const foil = newDesign();
+  assert.equal(foil.material.name, 'foil');
+  assert.deepEqual(foil.fabrication, { allowance: DEFAULT_ALLOWANCE.sealed, sheet_width: 1000, units: 'mm', joining: 'sealed' });
+  assert.equal(joiningFor(presetMaterial('pvc')), 'sealed');
+  // To ripstop and back: sewn with 10 mm, then sealed with the band again; one step each, nothing else moves.
+  const ripstop = setMaterial(foil, presetMaterial('ripstop'));
+  assert.equal(joiningOf(ripstop.fabrication), 'sewn');
+  assert.equal(ripstop.fabrication.allowance, DEFAULT_ALLOWANCE.sewn);
+  assert.deepEqual(setMaterial(ripstop, presetMaterial('foil')).fabrication, foil.fabrication);
+  // A band the designer typed stays when the material changes.
+  const typed = setMaterial(setFabrication(foil, { allowance: 7 }), presetMaterial('ripstop'));
+  assert.equal(typed.fabrication.allowance, 7);
+  // Designs from before sealing, with no joining, are sewn.
+  assert.equal(joiningOf(parseFabrication({ allowance: 10 }, [])), 'sewn');
+  // Valves: added, widened, removed (the last one takes the field with it); the design is never mutated.
+  let d = addValve(foil, { seam: 0, at: 0.25, width: 20 });
+  d = addValve(d, { seam: 2, at: 0.5, width: 15 });
+  assert.deepEqual(exportOptions(d.fabrication).valves, [{ seam: 0, at: 0.25, width: 20 }, { seam: 2, at: 0.5, width: 15 }]);
+  d = setValveWidth(d, 1, 30);
+  assert.equal(d.fabrication.valves[1].width, 30);
+  assert.equal(setValveWidth(d, 5, 30), d);
+  d = removeValve(removeValve(d, 0), 0);
+  assert.equal('valves' in d.fabrication, false);
+  assert.equal('valves' in foil.fabrication, false);
+  // Read back with parse-and-default: bad valves and joinings are dropped with warnings in plain words.
+  const warnings = [];
+  const parsed = parseFabrication({ joining: 'glued', valves: [{ seam: 1, at: 0.5, width: 20 }, { seam: -1, at: 0.5, width: 20 }, { seam: 1, at: 2, width: 20 }] }, warnings);
+  assert.equal('joining' in parsed, false);
+  assert.deepEqual(parsed.valves, [{ seam: 1, at: 0.5, width: 20 }]);
+  assert.equal(warnings.length, 3);
+  assert.match(warnings[0], /neither sewn nor sealed/);
+  assert.match(warnings[1], /Fill valve 2/);
+  assert.equal('valves' in parseFabrication({ valves: 'one' }, []), false);
+});
+
+test('the exporter draws the seal band and the valve gap, and says where along a seam each side runs', async () => {
+  const api = await loadApi();
+  const pattern = api.examplePattern('mylar', 600);
+  const text = JSON.stringify(pattern);
+  const result = api.exportPattern(text, { joining: 'sealed', allowance: 5, valves: [{ seam: 0, at: 0.4, width: 25 }, { seam: 4, at: 0.5, width: 20 }] });
+  assert.equal(result.statistics.joining, 'sealed');
+  assert.deepEqual(result.statistics.valves.map((v) => v.placed), [true, false]);
+  assert.match(result.svg, /id="seal-band"/);
+  assert.doesNotMatch(result.svg, /id="sew"/);
+  // One gap per piece of the seam, each 25 mm along the sealing line.
+  assert.deepEqual(result.valves.map((marks) => marks.length), [1, 1]);
+  for (const [mark] of result.valves) {
+    const half = mark.length / 4;
+    let along = 0;
+    for (let k = 0; k + 1 < half; k++) along += Math.hypot(mark[2 * k + 2] - mark[2 * k], mark[2 * k + 3] - mark[2 * k + 1]);
+    assert.ok(Math.abs(1000 * along - 25) < 0.5, `${1000 * along} mm`);
+  }
+  // The seam's two sides, each with its loop edges in the seam's order and its length.
+  assert.equal(result.seamSides.length, 1);
+  const [seam] = result.seamSides;
+  assert.deepEqual(seam.sides.map((s) => s.panel).sort(), [0, 1]);
+  for (const side of seam.sides) {
+    assert.equal(side.edges.length, result.outlines[side.panel].loop.length);
+    assert.ok(Math.abs(side.length - Math.PI * 0.6) < 0.05 * Math.PI * 0.6, `${side.length} m`);
+  }
+  // Sewn, the pattern keeps its sewing line and draws no band.
+  assert.match(api.exportPattern(text, {}).svg, /id="sew"/);
 });
 
 // Distance from point (x, y) to a closed polyline [x0, y0, x1, y1, ...].

@@ -77,6 +77,7 @@ const app = new App({
     pressureUnit: $('pressure-unit'),
     patternStats: $('pattern-stats'),
     allowanceInput: $('allowance-input'),
+    allowanceLabel: $('allowance-input').parentElement,
     sheetInput: $('sheet-input'),
     unitsSelect: $('units-select'),
     grainSelect: $('grain-select'),
@@ -115,6 +116,10 @@ app.allowancePanel = new SeamAllowancePanel($('seam-allowance-panel'), $('seams-
   pane: panes.pattern,
   onSeamAllowance: (id, mm) => app.setSeamAllowance(id, mm),
   onFreeEdgeAllowance: (mm) => app.setFreeEdgeAllowance(mm),
+  onJoining: (joining) => app.setJoining(joining),
+  onAddValve: (seam, at) => app.addValve(seam, at),
+  onValveWidth: (index, mm) => app.setValveWidth(index, mm),
+  onRemoveValve: (index) => app.removeValves([index]),
 });
 app.allowancePanel.render(app.design.fabrication);
 const exporter = new Exporter(app, viewport);

@@ -59,7 +59,8 @@ std::string writeSvg(const Drawing& d, const std::string& title) {
   };
   for (Layer layer : kLayers) {
     const bool used = std::any_of(d.paths.begin(), d.paths.end(), [&](const DrawnPath& p) { return p.layer == layer; });
-    if (!used && (layer == Layer::Seal || layer == Layer::Valve)) continue;  // only heat-sealed or valved patterns
+    // Seal band or sewing line, whichever the joining draws; valves only when placed.
+    if (!used && (layer == Layer::Seal || layer == Layer::Sew || layer == Layer::Valve)) continue;
     const std::string name = layerName(layer), color = layerColor(layer);
     s += "<g id=\"" + name + "\" inkscape:groupmode=\"layer\" inkscape:label=\"" + name + "\"";
     if (layer == Layer::Label) {

@@ -11,10 +11,10 @@ import { PatternSession, patternForDisplay } from './pattern-session.js';
 import { canonicalJson, optimizeArgs, resultKey, DEFAULT_RESOLUTION } from './stored-result.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
-import { setHeight, setUp, setMaterial, setPressure, setFabrication, setSeamAllowance } from './commands.js';
+import { setHeight, setUp, setMaterial, setPressure, setFabrication, setSeamAllowance, addValve, setValveWidth, removeValve } from './commands.js';
 import { upOf, heightScale, withGuessedUp } from './up-axis.js';
 import { standUp } from '../views/up-frame.js';
-import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters, formatSize } from './fabrication.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, MAX_VALVE_WIDTH, DEFAULT_VALVE_WIDTH, DEFAULT_ALLOWANCE, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters, formatSize, joiningOf } from './fabrication.js';
 import { download } from './download.js';
 import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
@@ -498,6 +498,7 @@ export class App {
       this.panes.pattern.setCutResult(display, {
         ...result,
         seams: result.statistics.seams,
+        sealed: result.statistics.joining === 'sealed',
         widths,
         captions: {
           width: formatMillimeters(totals.sheet_width_mm, f.units),
@@ -507,6 +508,7 @@ export class App {
       });
       this.cutStatistics = result.statistics;
       this.messages.resolve('cut-lines');
+      this.noteUnplacedValves(result.statistics.valves);
       this.allowancePanel?.setSeams(result.statistics);
       renderStats(this.el.patternStats, patternStatRows(result.statistics, f.units));
     } catch (error) {
@@ -518,6 +520,45 @@ export class App {
       const action = fits ? { label: `Use a ${formatMillimeters(fits, f.units)} sheet`, run: () => this.setFabrication({ sheet_width: fits }) } : null;
       this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`, [], { cause: 'cut-lines', action });
     }
+  }
+
+  // Valves on seams this pattern does not have (the seams were redrawn): said once, with a way to drop them.
+  noteUnplacedValves(valves = []) {
+    const lost = valves.map((v, index) => ({ ...v, index })).filter((v) => !v.placed);
+    if (!lost.length) return this.messages.resolve('valves');
+    const names = lost.map((v) => v.label).join(', ');
+    const text = `${lost.length === 1 ? 'A fill valve is' : `${lost.length} fill valves are`} on ${names}, which this pattern does not have (the seams were redrawn), so ${lost.length === 1 ? 'it is' : 'they are'} not in the cut files. Open Seams to place ${lost.length === 1 ? 'it' : 'them'} again.`;
+    const action = { label: lost.length === 1 ? 'Remove it' : 'Remove them', run: () => this.removeValves(lost.map((v) => v.index)) };
+    this.messages.show('warning', text, [], { cause: 'valves', action });
+  }
+
+  // Sewn or heat sealed ('sewn' | 'sealed'): an allowance left at its joining's default follows.
+  setJoining(joining) {
+    const f = this.design.fabrication;
+    if (joining === joiningOf(f) || !DEFAULT_ALLOWANCE[joining]) return this.showDesign();
+    const allowance = f.allowance === DEFAULT_ALLOWANCE[joiningOf(f)] ? DEFAULT_ALLOWANCE[joining] : f.allowance;
+    this.applyFabrication(setFabrication(this.design, { joining, allowance }), 'fabrication-joining');
+  }
+
+  // A fill valve on seam `seam` (exporter id) centred at share `at` of its length.
+  addValve(seam, at) {
+    this.applyFabrication(addValve(this.design, { seam, at: Math.min(1, Math.max(0, at)), width: DEFAULT_VALVE_WIDTH }), null);
+  }
+
+  setValveWidth(index, mm) {
+    if (!(Number.isFinite(mm) && mm > 0 && mm <= MAX_VALVE_WIDTH)) {
+      this.messages.show('warning', `A fill valve's gap must be wider than 0 and at most ${MAX_VALVE_WIDTH} mm.`, [], { cause: 'fabrication.valve' });
+      this.showDesign();
+      return;
+    }
+    this.messages.resolve('fabrication.valve');
+    this.applyFabrication(setValveWidth(this.design, index, mm), `valve-width-${index}`);
+  }
+
+  removeValves(indices) {
+    let next = this.design;
+    for (const index of [...indices].sort((a, b) => b - a)) next = removeValve(next, index);
+    this.applyFabrication(next, null);
   }
 
   // Fabrication settings change the cut files only, never the panels: no new optimization.
@@ -618,6 +659,11 @@ export class App {
     const inches = f.units === 'in';
     this.el.unitsSelect.value = f.units;
     this.el.allowanceInput.value = String(+(inches ? f.allowance / MM_PER_INCH : f.allowance).toFixed(inches ? 3 : 1));
+    const sealed = joiningOf(f) === 'sealed';
+    this.el.allowanceLabel.firstChild.textContent = sealed ? 'Seal band ' : 'Allowance ';
+    this.el.allowanceLabel.title = sealed
+      ? 'Heat sealed: the band along the outline where the two pieces are sealed; the cut line runs at its outer edge'
+      : 'Extra material outside the sewing line, on every seam without its own allowance; 0 for heat sealing';
     this.el.sheetInput.value = String(+(inches ? f.sheet_width / MM_PER_INCH : f.sheet_width).toFixed(inches ? 2 : 0));
     if (this.el.grainSelect) this.el.grainSelect.value = grainMode(f);
     this.allowancePanel?.render(f);

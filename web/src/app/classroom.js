@@ -392,7 +392,7 @@ export class Classroom {
         ['Optimizer steps', String(optimized.status?.iteration ?? '—')],
       ],
       wrinkles: () => [['Most wrinkled', formatPercent(app.patterns.last?.maxCompression ?? 0), 'The largest share of the sheet taken up by wrinkles']],
-      cut: () => [['Panels', String(app.patterns.display?.panels.length ?? 0)], ['Seam allowance', `${app.design.fabrication.allowance} mm`]],
+      cut: () => [['Panels', String(app.patterns.display?.panels.length ?? 0)], [app.design.fabrication.joining === 'sealed' ? 'Seal band' : 'Seam allowance', `${app.design.fabrication.allowance} mm`]],
     };
     this.setFigure(figures[step.id]());
     if (step.id === 'cut') this.exportActions();

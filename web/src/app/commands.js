@@ -1,5 +1,7 @@
 // Commands: pure functions (design, ...args) -> design. The History stores the results; nothing here
 // mutates its input. Seams hold control points as surface points { face, bary } on the target.
+import { fabricationWithMaterial } from './fabrication.js';
+
 const replaceAt = (list, i, value) => list.map((x, k) => (k === i ? value : x));
 
 export const DEFAULT_SEAM_WEIGHT = 1;
@@ -97,8 +99,28 @@ export function setUp(design, up) {
 }
 
 // material: { name, thickness [m], youngs_modulus [Pa], density? }
+// The joining (sewn or sealed) follows the material (fabrication.js).
 export function setMaterial(design, material) {
-  return { ...design, material: { ...material } };
+  return { ...design, material: { ...material }, fabrication: fabricationWithMaterial(design.fabrication, material) };
+}
+
+// Fill valves (design.fabrication.valves, each { seam: exporter seam id, at: share of its length, width: mm }).
+export function addValve(design, valve) {
+  const valves = [...(design.fabrication.valves ?? []), { seam: valve.seam, at: valve.at, width: valve.width }];
+  return { ...design, fabrication: { ...design.fabrication, valves } };
+}
+
+export function setValveWidth(design, index, width) {
+  const valves = design.fabrication.valves ?? [];
+  if (!valves[index]) return design;
+  return { ...design, fabrication: { ...design.fabrication, valves: replaceAt(valves, index, { ...valves[index], width }) } };
+}
+
+export function removeValve(design, index) {
+  const valves = (design.fabrication.valves ?? []).filter((_, k) => k !== index);
+  const fabrication = { ...design.fabrication, valves };
+  if (!valves.length) delete fabrication.valves;
+  return { ...design, fabrication };
 }
 
 // changes: some of { allowance [mm], sheet_width [mm], units: 'mm' | 'in', free_edge_allowance [mm],

@@ -5,7 +5,7 @@ import {
   DEFAULT_MATERIAL, DEFAULT_PRESSURE, MIN_PRESSURE, MAX_PRESSURE, MIN_THICKNESS, MAX_THICKNESS, MIN_YOUNGS, MAX_YOUNGS,
   findMaterialPreset, presetMaterial, formatPressure,
 } from './materials.js';
-import { DEFAULT_FABRICATION, parseFabrication } from './fabrication.js';
+import { fabricationFor, parseFabrication } from './fabrication.js';
 import { parseSymmetry } from './symmetry.js';
 import { parseUp } from './up-axis.js';
 
@@ -25,7 +25,7 @@ export function newDesign(exampleId = DEFAULT_EXAMPLE) {
     connections: [],
     material: presetMaterial(DEFAULT_MATERIAL),
     pressure: DEFAULT_PRESSURE,
-    fabrication: { ...DEFAULT_FABRICATION },
+    fabrication: fabricationFor(presetMaterial(DEFAULT_MATERIAL)),
   };
 }
 

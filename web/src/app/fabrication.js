@@ -6,9 +6,17 @@ import { findMaterialPreset } from './materials.js';
 // Optional fields, absent unless the designer sets them: seam_allowance { "<seam id>": mm } (a seam's own
 // allowance; ids as in the exporter's statistics, labelled S<id + 1>), free_edge_allowance [mm] (edges sewn
 // to nothing; absent: as the seams), grain_lock (true: panels keep their y axis along the roll), rotate
-// (false: panels are nested as drawn).
+// (false: panels are nested as drawn), joining ('sewn' or 'sealed': heat sealed, the allowance is the seal
+// band; absent: sewn, as designs were before sealing), valves [{ seam: id, at: share of the seam's length
+// from its start, width: mm }] (fill valves: gaps left open in their seams).
 export const DEFAULT_FABRICATION = Object.freeze({ allowance: 10, sheet_width: 1000, units: 'mm' });
 export const MAX_ALLOWANCE = 100; // [mm]
+export const JOININGS = Object.freeze(['sewn', 'sealed']);
+export const DEFAULT_ALLOWANCE = Object.freeze({ sewn: 10, sealed: 5 }); // [mm]; a seal band is a few mm
+export const DEFAULT_VALVE_WIDTH = 20; // [mm]: a foil balloon's valve strip, or a drinking straw with room
+export const MAX_VALVE_WIDTH = 200; // [mm], as the exporter
+// Foil, PVC and TPU are heat sealed (the paper's PVC prototypes were hot sealed); coated ripstop is sewn.
+const SEALED_MATERIALS = new Set(['foil', 'pvc', 'tpu']);
 export const MIN_SHEET = 100;
 export const MAX_SHEET = 10000;
 export const MM_PER_INCH = 25.4;
@@ -23,6 +31,24 @@ const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v)
 // A seam id as a key of seam_allowance: "0", "12".
 export const isSeamId = (key) => /^(0|[1-9]\d{0,5})$/.test(String(key));
 export const seamLabel = (id) => `S${Number(id) + 1}`;
+
+export const joiningOf = (fabrication) => fabrication.joining ?? 'sewn';
+export const joiningFor = (material) => (SEALED_MATERIALS.has(material?.name) ? 'sealed' : 'sewn');
+
+// The fabrication of a new design in `material`: joined as the material is, with that joining's allowance.
+export function fabricationFor(material) {
+  const joining = joiningFor(material);
+  return { ...DEFAULT_FABRICATION, joining, allowance: DEFAULT_ALLOWANCE[joining] };
+}
+
+// The fabrication once the material changes: the joining follows the material, and an allowance left at
+// its joining's default follows too (one the designer typed stays).
+export function fabricationWithMaterial(fabrication, material) {
+  const joining = joiningFor(material);
+  if (joining === joiningOf(fabrication)) return fabrication;
+  const allowance = fabrication.allowance === DEFAULT_ALLOWANCE[joiningOf(fabrication)] ? DEFAULT_ALLOWANCE[joining] : fabrication.allowance;
+  return { ...fabrication, joining, allowance };
+}
 
 // Parse-and-default of design.fabrication; returns the settings and pushes warnings.
 export function parseFabrication(value, warnings) {
@@ -53,6 +79,15 @@ export function parseFabrication(value, warnings) {
     delete result[key];
     warnings.push(warning);
   }
+  if (value.joining !== undefined && !JOININGS.includes(value.joining)) {
+    delete result.joining;
+    warnings.push('The design says its pieces are joined neither sewn nor sealed; they are taken as sewn.');
+  }
+  if (value.valves !== undefined) {
+    const valves = parseValves(value.valves, warnings);
+    if (valves.length) result.valves = valves;
+    else delete result.valves;
+  }
   if (value.seam_allowance !== undefined) {
     const seams = parseSeamAllowance(value.seam_allowance, warnings);
     if (seams) result.seam_allowance = seams;
@@ -76,6 +111,21 @@ function parseSeamAllowance(value, warnings) {
   for (const key of Object.keys(value).filter((k) => !isSeamId(k)))
     warnings.push(`The seam allowance names the seam "${key.slice(0, 40)}", which is no seam id (a whole number from 0); it is ignored.`);
   return Object.keys(out).length ? out : null;
+}
+
+// design.fabrication.valves: the valid ones; each bad one is dropped with a warning that names it.
+function parseValves(value, warnings) {
+  if (!Array.isArray(value)) {
+    warnings.push('The fill valves of the design are not a list; they are left out.');
+    return [];
+  }
+  const out = [];
+  value.forEach((v, k) => {
+    const ok = isObject(v) && Number.isInteger(v.seam) && isSeamId(v.seam) && inRange(v.at, 0, 1) && inRange(v.width, 0, MAX_VALVE_WIDTH) && v.width > 0;
+    if (ok) out.push({ seam: v.seam, at: v.at, width: v.width });
+    else warnings.push(`Fill valve ${k + 1} of the design is not on a seam with a width from 0 to ${MAX_VALVE_WIDTH} mm; it is left out.`);
+  });
+  return out;
 }
 
 // The grain setting as one of 'free' (panels turn as they nest best), 'grain' (kept along the roll: turned
@@ -102,6 +152,8 @@ export function exportOptions(fabrication, extra = {}) {
   if (fabrication.free_edge_allowance !== undefined) options.free_edge_allowance = fabrication.free_edge_allowance;
   if (fabrication.grain_lock !== undefined) options.grain_lock = fabrication.grain_lock;
   if (fabrication.rotate !== undefined) options.rotate = fabrication.rotate;
+  if (fabrication.joining !== undefined) options.joining = fabrication.joining;
+  if (fabrication.valves?.length) options.valves = fabrication.valves.map((v) => ({ ...v }));
   return { ...options, ...extra };
 }
 

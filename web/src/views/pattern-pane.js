@@ -3,13 +3,18 @@
 // files have them, with the sheet's outline).
 import {
   OrthographicCamera, Scene, GridHelper, Box3, Vector3, Group, BufferGeometry, Float32BufferAttribute, Mesh,
-  MeshBasicMaterial, LineSegments, LineBasicMaterial, DoubleSide, Color,
+  MeshBasicMaterial, LineSegments, LineBasicMaterial, DoubleSide, Color, Shape, ShapeGeometry,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
 import { layoutPattern } from './pattern-layout.js';
 import { panelTint, seamColor } from './palette.js';
 import { unclutterLabels } from './label-rule.js';
 import { freeArea, watchOverlays } from './free-area.js';
+
+// The seal band's tint and the valve marks' colours, as the cut files (wasm/src/export/drawing.cpp).
+const SEAL_TINT = 0xf6e7bd;
+const VALVE_FILL = 0xffffff;
+const VALVE_EDGE = 0x1a9850;
 
 export class PatternPane {
   constructor(element, viewport) {
@@ -164,6 +169,8 @@ export class PatternPane {
     // Larger panels keep their full labels first (labelOrder).
     this.panelLabels = this.labelAnchors.filter((a) => a.area !== undefined).sort((a, b) => b.area - a.area);
     if (this.cut) {
+      if (this.cut.sealed) this.drawSealBands(this.cut.cutLines);
+      this.drawValves(this.cut.valves);
       this.drawCutLines(this.cut.cutLines);
       this.drawNotches(this.cut.notches);
     }
@@ -181,9 +188,12 @@ export class PatternPane {
   // panel, flat [x0, y0, x1, ...] in its frame [m]; sheet: the nesting { width, length [m], placements };
   // outlines, seams and widths as for buildSeams; captions, as the designer reads them: { width, length } of
   // the sheet, and size(widthMm, heightMm) a piece's size.
-  setCutResult(pattern, { cutLines, notches = [], sheet = null, outlines, seams, widths = {}, captions = {} }) {
+  // sealed: the allowance is a seal band, drawn tinted; valves: per panel its fill valves' gap marks, each a
+  // closed [x0, y0, ...] in its frame [m]; seamSides: per seam { id, sides: [{ panel, edges, forward,
+  // length }] } (where a click on a seam lies along it: seamShareAt).
+  setCutResult(pattern, { cutLines, notches = [], sheet = null, outlines, seams, widths = {}, captions = {}, sealed = false, valves = [], seamSides = [] }) {
     if (pattern !== this.pattern || !this.layout) return false;
-    this.cut = { cutLines, notches, captions };
+    this.cut = { cutLines, notches, captions, sealed, valves, seamSides };
     const before = this.sheet;
     if (sheet?.placements?.length === pattern.panels.length) this.sheet = sheet;
     this.seamData = outlines && seams ? { outlines, seams, widths } : null;
@@ -230,6 +240,94 @@ export class PatternPane {
     this.cutLines.position.z = 0.001;
     this.cutLines.userData.lines = cutLines; // per panel [x0, y0, ...] in its frame [m] (for tests)
     this.content.add(this.cutLines);
+  }
+
+  // Heat sealed: the seal band of every piece, tinted between its cut line and its outline (as the cut files'
+  // seal-band layer), under the outline's seam colours.
+  drawSealBands(cutLines) {
+    const shapes = [];
+    cutLines.forEach((line, i) => {
+      const place = this.placement(i);
+      const panel = this.pattern.panels[i];
+      const loop = this.seamData?.outlines[i]?.loop;
+      if (!loop || line.length < 6) return;
+      const outer = new Shape();
+      for (let k = 0; k < line.length; k += 2) outer[k ? 'lineTo' : 'moveTo'](...place(line[k], line[k + 1]));
+      const inner = new Shape();
+      loop.forEach((v, k) => inner[k ? 'lineTo' : 'moveTo'](...place(...panel.vertices[v])));
+      outer.holes.push(inner);
+      shapes.push(outer);
+    });
+    if (!shapes.length) return;
+    this.sealBands = new Mesh(new ShapeGeometry(shapes), new MeshBasicMaterial({ color: SEAL_TINT, side: DoubleSide }));
+    this.sealBands.position.z = 0.0005;
+    this.sealBands.userData.count = shapes.length;
+    this.content.add(this.sealBands);
+  }
+
+  // Fill valves: each gap in its seam as the cut files mark it, filled over the band with a green edge.
+  drawValves(valves) {
+    const shapes = [];
+    const edges = [];
+    valves.forEach((marks, i) => {
+      const place = this.placement(i);
+      for (const mark of marks) {
+        const shape = new Shape();
+        const n = mark.length / 2;
+        // Named beside the rim, since a gap of a few cm is a speck on a whole piece.
+        const label = document.createElement('div');
+        label.className = 'valve-label';
+        label.textContent = 'valve';
+        this.labels.append(label);
+        const centre = [0, 0];
+        for (let k = 0; k < n; k++) place(mark[2 * k], mark[2 * k + 1]).forEach((v, j) => (centre[j] += v / n));
+        this.labelAnchors.push({ label, at: new Vector3(...centre, 0) });
+        for (let k = 0; k < n; k++) {
+          const p = place(mark[2 * k], mark[2 * k + 1]), q = place(mark[2 * ((k + 1) % n)], mark[2 * ((k + 1) % n) + 1]);
+          shape[k ? 'lineTo' : 'moveTo'](...p);
+          edges.push(...p, 0, ...q, 0);
+        }
+        shapes.push(shape);
+      }
+    });
+    if (!shapes.length) return;
+    const fill = new Mesh(new ShapeGeometry(shapes), new MeshBasicMaterial({ color: VALVE_FILL, side: DoubleSide }));
+    fill.position.z = 0.0007;
+    const geometry = new BufferGeometry();
+    geometry.setAttribute('position', new Float32BufferAttribute(edges, 3));
+    const outline = new LineSegments(geometry, new LineBasicMaterial({ color: VALVE_EDGE }));
+    outline.position.z = 0.0008;
+    this.valveMarks = fill;
+    fill.userData.count = shapes.length;
+    this.content.add(fill, outline);
+  }
+
+  // Where a point of the pane (client pixels) lies along seam `id`: the share of the seam's length from its
+  // start, measured on the side nearest the point (both sides run the same way: export/outline.hpp); null
+  // without the exporter's seam sides.
+  seamShareAt(id, clientX, clientY) {
+    const seam = this.cut?.seamSides?.find((s) => s.id === id);
+    const outlines = this.seamData?.outlines;
+    if (!seam || !outlines) return null;
+    const r = this.element.getBoundingClientRect();
+    const p = new Vector3(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1, 0).unproject(this.camera);
+    let best = null;
+    for (const side of seam.sides) {
+      const panel = this.pattern.panels[side.panel];
+      const loop = outlines[side.panel].loop;
+      const place = this.placement(side.panel);
+      const at = (k) => place(...panel.vertices[loop[k % loop.length]]);
+      let along = 0;
+      for (const e of side.edges) {
+        const [a, b] = side.forward ? [at(e), at(e + 1)] : [at(e + 1), at(e)];
+        const len = Math.hypot(b[0] - a[0], b[1] - a[1]);
+        const t = len > 0 ? Math.min(1, Math.max(0, ((p.x - a[0]) * (b[0] - a[0]) + (p.y - a[1]) * (b[1] - a[1])) / (len * len))) : 0;
+        const d = Math.hypot(a[0] + t * (b[0] - a[0]) - p.x, a[1] + t * (b[1] - a[1]) - p.y);
+        if (!best || d < best.d) best = { d, share: side.length > 0 ? (along + t * len) / side.length : 0 };
+        along += len;
+      }
+    }
+    return best ? Math.min(1, Math.max(0, best.share)) : null;
   }
 
   // Registration notches: short ticks across the cut line, as the cut files have them.
@@ -443,7 +541,7 @@ export class PatternPane {
     element.addEventListener('pointerup', (e) => {
       if (!down || Math.hypot(e.clientX - down.x, e.clientY - down.y) > 4 || !this.seams) return;
       down = null;
-      this.onSeamPick?.(this.seamAt(e.clientX, e.clientY));
+      this.onSeamPick?.(this.seamAt(e.clientX, e.clientY), e);
     });
     element.addEventListener('pointermove', (e) => {
       if (e.buttons) return;
@@ -455,6 +553,8 @@ export class PatternPane {
 
   clear() {
     this.cutLines = null;
+    this.sealBands = null;
+    this.valveMarks = null;
     this.notches = null;
     this.sheetMesh = null;
     this.seams = null;

@@ -2,21 +2,28 @@
 // pieces, with its color in the pane, its panels and length, and its allowance: the seam allowance of the
 // pane's header, or its own (typed; 0 for a heat-sealed seam) with a reset to the seam allowance. The free
 // edges get a row when the pattern has some. Own allowances of seams this pattern does not have (the seams
-// were redrawn) are listed as not in the pattern, to remove. Text only through textContent.
-import { MM_PER_INCH, MAX_ALLOWANCE, formatMillimeters, seamLabel } from '../app/fabrication.js';
+// were redrawn) are listed as not in the pattern, to remove. Above the list, how the pieces are joined (sewn
+// or heat sealed: then the allowance is the seal band); below it, the fill valves: gaps left open in a seam,
+// placed by a click on the seam in the pattern. Text only through textContent.
+import { MM_PER_INCH, MAX_ALLOWANCE, MAX_VALVE_WIDTH, formatMillimeters, seamLabel, joiningOf } from '../app/fabrication.js';
 
 const FREE = -1; // the row of the free edges
 
 export class SeamAllowancePanel {
   // container: the panel element (hidden at first); toggle: the header button that opens and closes it.
   // pane: the PatternPane (labels, highlight, picking). onSeamAllowance(id, mm | null) and
-  // onFreeEdgeAllowance(mm | null) commit a change (null: back to the seam allowance).
-  constructor(container, toggle, { pane, onSeamAllowance, onFreeEdgeAllowance }) {
+  // onFreeEdgeAllowance(mm | null) commit a change (null: back to the seam allowance); onJoining('sewn' |
+  // 'sealed'); onAddValve(seam id, share along it), onValveWidth(index, mm), onRemoveValve(index).
+  constructor(container, toggle, { pane, onSeamAllowance, onFreeEdgeAllowance, onJoining, onAddValve, onValveWidth, onRemoveValve }) {
     this.container = container;
     this.toggle = toggle;
     this.pane = pane;
     this.onSeamAllowance = onSeamAllowance;
     this.onFreeEdgeAllowance = onFreeEdgeAllowance;
+    this.onAddValve = onAddValve;
+    this.onValveWidth = onValveWidth;
+    this.onRemoveValve = onRemoveValve;
+    this.placingValve = false; // the next click on a seam places a fill valve there
     this.seams = null; // the pattern's seams from the exporter's statistics, or null before there are panels
     this.freeLength = 0; // [mm] of free edges
     this.fabrication = null;
@@ -52,7 +59,21 @@ export class SeamAllowancePanel {
     table.tHead.append(header);
     this.table = table;
     this.empty = el('p', 'allowance-empty', 'The seams appear here once there are panels.');
-    container.append(head, this.help, table, this.empty);
+    this.joining = document.createElement('select');
+    this.joining.id = `${container.id}-joining`;
+    this.joining.append(new Option('Sewn', 'sewn'), new Option('Heat sealed', 'sealed'));
+    this.joining.addEventListener('change', () => onJoining(this.joining.value));
+    const joiningLabel = el('label', 'allowance-joining', 'Pieces joined ', this.joining);
+    joiningLabel.title = 'Sewn: the allowance is extra material outside the sewing line. Heat sealed (foil, PVC, TPU): the allowance is the seal band, drawn on the pieces';
+    this.valveHead = el('p', 'valve-head');
+    this.valveButton = el('button', 'pane-button', 'Add a fill valve');
+    this.valveButton.type = 'button';
+    this.valveButton.title = 'Then click a seam in the pattern: a gap is left open there on both pieces, for the valve or a straw';
+    this.valveButton.setAttribute('aria-pressed', 'false');
+    this.valveButton.addEventListener('click', () => this.setPlacingValve(!this.placingValve));
+    this.valveHead.append(el('strong', '', 'Fill valves '), this.valveButton);
+    this.valveList = el('ul', 'valve-list');
+    container.append(head, joiningLabel, this.help, table, this.empty, this.valveHead, this.valveList);
 
     toggle.addEventListener('click', () => this.setOpen(container.hidden));
     container.addEventListener('keydown', (e) => {
@@ -61,8 +82,22 @@ export class SeamAllowancePanel {
         toggle.focus();
       }
     });
-    pane.onSeamPick = (id) => this.pick(id);
+    pane.onSeamPick = (id, event) => (this.placingValve && id !== null && id >= 0 ? this.placeValve(id, event) : this.pick(id));
     pane.seamTitle = (id) => this.describe(id);
+  }
+
+  setPlacingValve(on) {
+    this.placingValve = on;
+    this.valveButton.setAttribute('aria-pressed', String(on));
+    this.valveButton.textContent = on ? 'Click a seam…' : 'Add a fill valve';
+    this.pane.element.classList.toggle('placing-valve', on);
+  }
+
+  // A click on seam `id` while placing: the valve goes where the seam was clicked.
+  placeValve(id, event) {
+    const at = this.pane.seamShareAt(id, event.clientX, event.clientY);
+    this.setPlacingValve(false);
+    if (at !== null) this.onAddValve(id, at);
   }
 
   get open() {
@@ -109,9 +144,13 @@ export class SeamAllowancePanel {
     this.empty.hidden = Boolean(this.seams);
     this.table.hidden = !this.seams;
     const units = fabrication.units;
+    const sealed = joiningOf(fabrication) === 'sealed';
+    this.joining.value = joiningOf(fabrication);
+    this.table.tHead.rows[0].cells[4].textContent = sealed ? 'Seal band' : 'Allowance';
     this.help.textContent = this.seams
-      ? `Click a seam in the pattern or pick it here, and type its allowance in ${units}. An empty field or ↺ gives it the seam allowance (${formatMillimeters(fabrication.allowance, units)}).`
+      ? `Click a seam in the pattern or pick it here, and type its ${sealed ? 'seal band' : 'allowance'} in ${units}. An empty field or ↺ gives it the ${sealed ? 'seal band' : 'seam allowance'} (${formatMillimeters(fabrication.allowance, units)}).`
       : '';
+    this.renderValves(fabrication);
     if (!this.seams) {
       this.rebuild([]);
       this.pane.setSeamMarks({ own: new Set() });
@@ -236,6 +275,40 @@ export class SeamAllowancePanel {
     r.row.title = missing ? `${label} is not in this pattern (the seams were redrawn); its allowance is not used` : '';
   }
 
+  // One line per fill valve: its seam and place, its width (typed), and a remove button.
+  renderValves(fabrication) {
+    const valves = fabrication.valves ?? [];
+    const units = fabrication.units;
+    const inches = units === 'in';
+    const present = new Set((this.seams ?? []).map((s) => s.id));
+    this.valveButton.disabled = !this.seams;
+    if (!this.seams && this.placingValve) this.setPlacingValve(false);
+    const focused = this.valveList.contains(document.activeElement) ? document.activeElement.dataset.valve : null;
+    this.valveList.replaceChildren(
+      ...valves.map((valve, index) => {
+        const item = el('li', present.has(valve.seam) ? 'valve' : 'valve missing');
+        const where = `On ${seamLabel(valve.seam)} at ${Math.round(100 * valve.at)} %${present.has(valve.seam) ? '' : ' (not in this pattern)'}, gap `;
+        const input = document.createElement('input');
+        input.type = 'number';
+        input.min = '1';
+        input.max = String(inches ? +(MAX_VALVE_WIDTH / MM_PER_INCH).toFixed(2) : MAX_VALVE_WIDTH);
+        input.step = inches ? '0.05' : '1';
+        input.dataset.valve = String(index);
+        input.value = String(+(inches ? valve.width / MM_PER_INCH : valve.width).toFixed(inches ? 2 : 0));
+        input.setAttribute('aria-label', `Width of the fill valve on seam ${seamLabel(valve.seam)}, ${units}`);
+        input.addEventListener('change', () => this.onValveWidth(index, Number(input.value) * (inches ? MM_PER_INCH : 1)));
+        const remove = el('button', 'reset', '×');
+        remove.type = 'button';
+        remove.title = `Remove the fill valve on ${seamLabel(valve.seam)}`;
+        remove.setAttribute('aria-label', remove.title);
+        remove.addEventListener('click', () => this.onRemoveValve(index));
+        item.append(where, input, ` ${units}`, remove);
+        return item;
+      }),
+    );
+    if (focused !== null) this.valveList.querySelector(`input[data-valve="${focused}"]`)?.focus();
+  }
+
   // The pane's tooltip over a seam.
   describe(id) {
     const f = this.fabrication;
@@ -244,7 +317,9 @@ export class SeamAllowancePanel {
     const mm = own ?? f.allowance;
     const seam = this.seams?.find((s) => s.id === id);
     const what = id === FREE ? 'Free edge' : `Seam ${seamLabel(id)}${seam ? `, panels ${seam.panels[0]} and ${seam.panels[1]}` : ''}`;
-    return `${what}: allowance ${formatMillimeters(mm, f.units)}${own === undefined ? ' (the seam allowance)' : ''}. Click to change it.`;
+    if (this.placingValve && id !== FREE) return `${what}: click to place the fill valve here.`;
+    const band = joiningOf(f) === 'sealed';
+    return `${what}: ${band ? 'seal band' : 'allowance'} ${formatMillimeters(mm, f.units)}${own === undefined ? (band ? ' (the seal band)' : ' (the seam allowance)') : ''}. Click to change it.`;
   }
 }
 
