@@ -137,7 +137,7 @@ export class SeamPanel {
     const li = el('li', selected ? 'seam selected' : 'seam');
     const name = el('button', 'name', seam.name ?? `Seam ${i + 1}`);
     name.type = 'button';
-    name.title = 'Select this seam';
+    name.title = `${seam.name ?? `Seam ${i + 1}`}: select this seam`; // the whole name, where the row cuts it short
     name.addEventListener('click', () => this.editor.selectSeam(i));
     const swatch = el('span', 'swatch');
     swatch.style.height = `${seamWidth(seam.weight)}px`;
