@@ -35,6 +35,7 @@ export function outlineBandLoops(mesh, { towards }, width) {
   const d = distanceToZeroSet(mesh, outline.facing);
   for (let v = 0; v < d.length; v++) if (outline.facing[v] < 0) d[v] = -d[v];
   const loops = [];
+  const levels = [];
   let absorbed = 0;
   for (const [k, side] of [[1, 'front'], [-1, 'back']]) {
     // Positive beyond the side's seam, away from the outline (the front or back panel), negative in the band.
@@ -50,8 +51,34 @@ export function outlineBandLoops(mesh, { towards }, width) {
     if (!found.length) return { problem: `The band is too wide for the shape seen from here: its ${side} side makes no seam.` };
     if (found.length > outline.loops) return { problem: `The band's ${side} side breaks up into ${found.length} loops here (the shape is narrower than the band in places). Try a narrower band or another view.` };
     loops.push(found.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best)));
+    levels.push(level);
+  }
+  // A strip: each side within about the band's width of the other along most of its length. Where the front or
+  // back is mostly narrower than the band, it went into the band, and the "strip" is a panel of its own shape.
+  for (const [k, side] of [[0, 'front'], [1, 'back']]) {
+    const other = distanceToZeroSet(mesh, levels[1 - k]);
+    const share = shareWithin(mesh, loops[k], other, 1.5 * width);
+    if (share < 0.5)
+      return { problem: `The band is too wide for the shape seen from here: most of the ${side} is narrower than the band, so the strip would not be of even width (its sides are the band's width apart along only ${Math.round(100 * share)} % of the ${side} side). Try a narrower band or another view.` };
   }
   return { loops, outline, absorbed };
+}
+
+// The share of a zero-set loop's length (zeroLoops) where a field at the vertices, read on the loop's edges, is
+// below `limit`.
+function shareWithin({ positions, indices }, loop, field, limit) {
+  const valueAt = (p) => {
+    const corners = [0, 1, 2].map((c) => indices[3 * p.face + c]);
+    return corners.reduce((sum, v, c) => sum + p.bary[c] * field[v], 0);
+  };
+  let within = 0;
+  let total = 0;
+  loop.forEach((p, i) => {
+    const length = distance(p.position, loop[(i + 1) % loop.length].position);
+    total += length;
+    if (valueAt(p) <= limit) within += length;
+  });
+  return total > 0 ? within / total : 0;
 }
 
 // The loops of a band record (seam.band) at a width in mm: { loops } or { problem } (designer's words).
@@ -63,13 +90,18 @@ export function bandLoops(mesh, band, unitsPerMillimetre, widthMm = band.width_m
 }
 
 // The seams of a band, as surface points: its two sides (sectionSeamPoints), and the two ends of the seam across
-// the strip, each the side's point nearest `near` (a position), the second nearest the first.
-export function bandSeamPoints(mesh, loops, near) {
+// the strip: the point of side 1 nearest `near` (a position) and the point of side 2 nearest that. With `width`
+// (target units), only where side 2 comes within about the band's width: where a narrow part went into an outline
+// band the sides lie far apart, and a seam across there would cut off a sliver of it.
+export function bandSeamPoints(mesh, loops, near, { width = null } = {}) {
   const sides = loops.map((loop) => sectionSeamPoints(mesh, loop));
-  const nearest = (points, to) => points.reduce((best, p) => (distance(positionOf(mesh, p), to) < distance(positionOf(mesh, best), to) ? p : best));
-  const a = nearest(sides[0], near);
-  const b = nearest(sides[1], positionOf(mesh, a));
-  return { sides, across: [a, b] };
+  const at = sides.map((points) => points.map((p) => positionOf(mesh, p)));
+  const nearest = (k, to) => at[k].reduce((best, p, i) => (distance(p, to) < distance(at[k][best], to) ? i : best), 0);
+  const across = at[0].map((p, i) => ({ i, j: nearest(1, p) })).map((c) => ({ ...c, gap: distance(at[0][c.i], at[1][c.j]) }));
+  const narrowest = Math.min(...across.map((c) => c.gap));
+  const strip = across.filter((c) => width === null || c.gap <= Math.max(1.2 * width, narrowest));
+  const { i, j } = strip.reduce((best, c) => (distance(at[0][c.i], near) < distance(at[0][best.i], near) ? c : best));
+  return { sides, across: [sides[0][i], sides[1][j]] };
 }
 
 // Where the seam across an outline band goes when nothing says: the outline's lowest point (`up`, the target's

@@ -193,7 +193,7 @@ export class SeamEditor {
     const id = band && cmd.nextBandId(next);
     const record = (part) => band && { ...band, id, part };
     const laid = [];
-    const { sides, across: ends } = across && loops.length === 2 ? bandSeamPoints(target, loops, across) : { sides: loops.map((loop) => sectionSeamPoints(target, loop)) };
+    const { sides, across: ends } = across && loops.length === 2 ? bandSeamPoints(target, loops, across, { width: this.stripWidth(band) }) : { sides: loops.map((loop) => sectionSeamPoints(target, loop)) };
     for (const [k, points] of sides.entries()) {
       next = cmd.addSeam(next, { points, closed: true, smooth: false, name: names[k], band: record(BAND_PARTS[k]) });
       laid.push(next.seams.length - 1);
@@ -231,7 +231,7 @@ export class SeamEditor {
     const laid = bandLoops(target, band, units, widthMm);
     if (laid.problem) return this.noteLaid(`The band was not laid again at ${width}: ${laid.problem}`, 'warning');
     const members = cmd.bandMembers(this.design, band.id);
-    const { sides, across } = bandSeamPoints(target, laid.loops, band.origin);
+    const { sides, across } = bandSeamPoints(target, laid.loops, band.origin, { width: this.stripWidth(band, widthMm) });
     const points = { 'side 1': sides[0], 'side 2': sides[1], across: across.map((p, k) => ({ ...p, on: members[BAND_PARTS[k]] })) };
     let next = cmd.relayBand(this.design, band.id, { width_mm: widthMm, points });
     for (const seam of Object.values(members)) {
@@ -244,6 +244,12 @@ export class SeamEditor {
     this.app.commitDesign(next);
     this.refresh();
     this.noteLaid(moved.length ? `The band was laid again at ${width}: the points you had moved on ${moved.join(' and ')} were replaced by the band's own (undo brings them back).` : null);
+  }
+
+  // Where an outline band's seam across may go: where its sides are about this far apart (target units), not
+  // across a narrow part laid into the band (bandSeamPoints). A section band's goes where the designer clicked.
+  stripWidth(band, widthMm = band?.width_mm) {
+    return band?.kind === 'outline' ? widthMm * this.unitsPerMillimetre : null;
   }
 
   // The names of the band's sides whose points are no longer those the band lays at its width (dragged, added).
