@@ -1,8 +1,9 @@
 // Flat-cut layouts in one action. The section tool: the plane through the clicked point, across the model's
 // x, y or z as it stands or across the view, previewed under the pointer; a click lays the loop through that
 // point as an ordinary seam (control points, undo, saved with the design), or a gusset band's two and the seam
-// across its strip. The outline as seen, for a front and a back panel. A sheet narrower than a piece is
-// offered the width that fits.
+// across its strip; a band's width changed in the seam panel lays it again in one undo step. The outline as
+// seen, for a front and a back panel, or with a band width a gusset band around it. A sheet narrower than a
+// piece is offered the width that fits.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
@@ -22,6 +23,14 @@ const controls = (page, i) => page.waitForFunction((i) => {
   const c = Array.from(trace.controls);
   return Array.from({ length: c.length / 3 }, (_, k) => c.slice(3 * k, 3 * k + 3));
 }, i, { timeout: 30000 }).then((h) => h.jsonValue());
+
+// The segmentation shown now, and the next one once an edit is cut anew (not the one before it, still shown
+// while the new one is made).
+const markSegmentation = (page) => page.evaluate(() => (window.shownSegmentation = window.billow.app.seams.segmentation));
+const newSegmentation = (page) => page.waitForFunction(() => {
+  const s = window.billow.app.seams.segmentation;
+  return s && s !== window.shownSegmentation && { segments: s.segments.map((x) => ({ isDisk: x.isDisk })), problems: s.problems.map((p) => ({ message: p.message })) };
+}, null, { timeout: 30000 }).then((h) => h.jsonValue());
 
 test('a section seam is laid in one click, across the model or the view, and undone like any seam', async () => {
   const page = await openFreshPage(env.context, env.server.url);
@@ -167,6 +176,84 @@ test('a gusset band: one click lays two sections the chosen width apart and a se
   await screenshot(page, 'flat-cut-band');
   await page.click('#undo-button');
   await page.waitForFunction(() => window.billow.app.design.seams.length === 0);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('a band\'s width is changed in the seam panel: its sides and the seam across are laid again, undone in one step', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.selectOption('#example-select', 'sphere');
+  await page.waitForFunction(() => window.billow.app.design.target.example === 'sphere' && window.billow.app.panes.target.mesh);
+  await page.click('#seam-panel button[data-tool="section"]');
+  await page.selectOption('.section-axis', 'y');
+  await page.fill('.section-band input', '40');
+  await page.press('.section-band input', 'Enter');
+  const at = await middleOfView(page);
+  await page.mouse.move(at.x, at.y);
+  await page.mouse.click(at.x, at.y);
+  await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 3, null, { timeout: 30000 });
+  const before = await page.evaluate(() => window.billow.app.design);
+  const heightsOf = async () => [(await controls(page, 0))[0][1], (await controls(page, 1))[0][1]];
+  const [a0, b0] = await heightsOf();
+  // The seam across is selected once laid: its row offers the band's width.
+  const width = page.locator('#seam-panel .seam.selected .band-width input');
+  assert.equal(await width.inputValue(), '40');
+  await markSegmentation(page);
+  await width.fill('80');
+  await width.press('Enter');
+  await page.waitForFunction(() => window.billow.app.design.seams[0].name === 'Band 80 mm, side 1', null, { timeout: 30000 });
+  await newSegmentation(page);
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams.map((s) => s.name)), ['Band 80 mm, side 1', 'Band 80 mm, side 2', 'Band 80 mm, across']);
+  const unitsPerMm = await page.evaluate(() => 1 / (1000 * window.billow.app.scaleFor(window.billow.app.design)));
+  await page.waitForFunction((y) => Math.abs(Array.from(window.billow.app.seams.seamTraces()[0]?.controls ?? [0, y])[1] - y) > 1e-6, a0);
+  const [a, b] = await heightsOf();
+  assert.ok(Math.abs(Math.abs(a - b) - 80 * unitsPerMm) < 1e-6, `${Math.abs(a - b)} units apart, ${80 * unitsPerMm} asked (${Math.abs(a0 - b0)} before)`);
+  assert.ok(Math.abs((a + b) / 2 - (a0 + b0) / 2) < 1e-6, 'about the same middle');
+  assert.ok(await page.evaluate(() => window.billow.app.seams.segmentation.segments.every((s) => s.isDisk)));
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
+  assert.equal(await page.locator('#seam-panel .seam.selected .band-width input').inputValue(), '80');
+  await page.waitForTimeout(300);
+  await screenshot(page, 'flat-cut-band-width');
+  // One step of the history: undo gives the 40 mm band back, as it was.
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.app.design.seams[0].name === 'Band 40 mm, side 1');
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design), before);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('with a band width, Outline lays a band around the outline as seen: front, back and a strip between', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.waitForFunction(() => window.billow.app.panes.target.mesh);
+  // Spot seen from its side (+x).
+  await page.evaluate(() => {
+    const pane = window.billow.app.panes.target;
+    const distance = pane.camera.position.distanceTo(pane.controls.target);
+    pane.camera.position.copy(pane.controls.target).addScaledVector(new (pane.camera.position.constructor)(1, 0, 0), distance);
+    pane.controls.update();
+    pane.controls.dispatchEvent({ type: 'change' });
+  });
+  await page.fill('.section-band input', '30');
+  await page.press('.section-band input', 'Enter');
+  await page.click('#seam-panel button.outline');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 3 && window.billow.app.seams.segmentation?.segments?.length === 3, null, { timeout: 30000 });
+  const seams = await page.evaluate(() => window.billow.app.design.seams);
+  assert.deepEqual(seams.map((s) => s.name), ['Band 30 mm, front side', 'Band 30 mm, back side', 'Band 30 mm, across']);
+  assert.deepEqual(seams.map((s) => [s.band.kind, s.band.part, s.band.width_mm]), [['outline', 'side 1', 30], ['outline', 'side 2', 30], ['outline', 'across', 30]]);
+  assert.ok(await page.evaluate(() => window.billow.app.seams.segmentation.segments.every((s) => s.isDisk)));
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), [], 'a clean cut: no problem');
+  await page.waitForTimeout(300);
+  await screenshot(page, 'flat-cut-outline-band');
+  // Laid again wider from the seam panel, in one step: still a front, a back and a strip, and nothing else.
+  await markSegmentation(page);
+  await page.locator('#seam-panel .seam.selected .band-width input').fill('50');
+  await page.press('#seam-panel .seam.selected .band-width input', 'Enter');
+  await page.waitForFunction(() => window.billow.app.design.seams[0].name === 'Band 50 mm, front side', null, { timeout: 30000 });
+  const wider = await newSegmentation(page);
+  assert.equal(wider.segments.length, 3);
+  assert.deepEqual(wider.problems.map((p) => p.message), []);
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.app.design.seams[0].name === 'Band 30 mm, front side');
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -51,6 +51,9 @@ json with(json doc, const json::json_pointer& where, const json& value) {
 TEST(DesignJson, FixtureRoundTripKeepsEveryFieldAndUnknownOnes) {
   json doc = json::parse(readFileBytes(dataPath("sphere-gores.billow.json")));
   doc["seams"][1]["color"] = "#ff8800";  // unknown fields, at the top and inside a seam
+  // A gusset band's record (web/src/app/band.js): the CLI reads the seam as any other and keeps the record.
+  doc["seams"][0]["band"] = {{"id", 1}, {"part", "side 1"}, {"kind", "section"}, {"width_mm", 40},
+                             {"normal", {0, 1, 0}}, {"origin", {1, 0, 0}}};
   doc["app"] = {{"camera", {1, 2, 3}}};
   const Design a = readDesignJson(doc.dump());
   ASSERT_EQ(a.seams.size(), 3u);
@@ -66,6 +69,8 @@ TEST(DesignJson, FixtureRoundTripKeepsEveryFieldAndUnknownOnes) {
   EXPECT_EQ(writeDesignJson(b), text);
   const json back = json::parse(text);
   EXPECT_EQ(back["seams"][1]["color"], "#ff8800");
+  EXPECT_EQ(back["seams"][0]["band"]["width_mm"], 40);
+  EXPECT_EQ(back["seams"][0]["band"]["part"], "side 1");
   EXPECT_EQ(back["app"]["camera"][2], 3);
   EXPECT_EQ(back["seams"][0]["points"][0]["face"], 20);
   EXPECT_EQ(b.seams[1].points[1].position, a.seams[1].points[1].position);

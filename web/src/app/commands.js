@@ -8,9 +8,46 @@ export const DEFAULT_SEAM_WEIGHT = 1;
 
 // New seams are smooth: a cubic Hermite spline through the control points, carried onto the surface
 // (seams/seam_curve.hpp); a seam that is not smooth runs along the shortest paths between its points.
-export function addSeam(design, { points, closed, smooth = true, name = `Seam ${design.seams.length + 1}` }) {
-  const seam = { name, closed: Boolean(closed), smooth: Boolean(smooth), weight: DEFAULT_SEAM_WEIGHT, points };
+// band: the gusset band the seam belongs to (band.js), kept so the band can be laid again at another width.
+export function addSeam(design, { points, closed, smooth = true, name = `Seam ${design.seams.length + 1}`, band }) {
+  const seam = { name, closed: Boolean(closed), smooth: Boolean(smooth), weight: DEFAULT_SEAM_WEIGHT, points, ...(band ? { band } : {}) };
   return { ...design, seams: [...design.seams, seam] };
+}
+
+// A number for a new gusset band: one more than any band's of the design. Bands are known by number, not by
+// their seams' places, so deleting or renumbering seams leaves them as they are.
+export const nextBandId = (design) => 1 + design.seams.reduce((most, s) => Math.max(most, s.band?.id ?? 0), 0);
+
+// The seams of band `id` by part ({ 'side 1': i, 'side 2': j, across: k }; a part deleted is missing).
+export function bandMembers(design, id) {
+  const members = {};
+  design.seams.forEach((s, i) => {
+    if (s.band?.id === id && members[s.band.part] === undefined) members[s.band.part] = i;
+  });
+  return members;
+}
+
+// "Band 40 mm, side 1" at another width: "Band 60 mm, side 1"; a name the designer gave stays.
+export const bandSeamName = (name, widthMm) => (typeof name === 'string' ? name.replace(/^Band [\d.]+ mm\b/, `Band ${+widthMm.toFixed(1)} mm`) : name);
+
+// A seam laid again in one action: its points replaced, its name and band if given.
+export function relaySeam(design, seam, { points, name, band }) {
+  const s = design.seams[seam];
+  if (!s) return design;
+  return { ...design, seams: replaceAt(design.seams, seam, { ...s, points, ...(name !== undefined ? { name } : {}), ...(band ? { band } : {}) }) };
+}
+
+// Band `id` laid again at another width: points: per part ('side 1', 'side 2', 'across') its new control points;
+// each of its seams takes them, the width in its band record and in its name. Parts missing from the design or
+// from `points` are left out.
+export function relayBand(design, id, { width_mm: widthMm, points }) {
+  let next = design;
+  for (const [part, seam] of Object.entries(bandMembers(design, id))) {
+    if (!points[part]) continue;
+    const s = design.seams[seam];
+    next = relaySeam(next, seam, { points: points[part], name: bandSeamName(s.name, widthMm), band: { ...s.band, width_mm: widthMm } });
+  }
+  return next;
 }
 
 export function setSeamSmooth(design, seam, smooth) {

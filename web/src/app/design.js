@@ -8,6 +8,7 @@ import {
 import { fabricationFor, parseFabrication } from './fabrication.js';
 import { parseSymmetry } from './symmetry.js';
 import { parseUp } from './up-axis.js';
+import { parseBand } from './band.js';
 
 export const DESIGN_FORMAT = 'billow-design';
 export const DESIGN_VERSION = 1;
@@ -99,6 +100,15 @@ export function parseDesign(value) {
   const symmetry = parseSymmetry(value.symmetry, warnings);
   if (symmetry) design.symmetry = symmetry;
   else delete design.symmetry;
+  design.seams = design.seams.map((seam) => {
+    // A gusset band's record (band.js) Billow cannot lay again is dropped; the seam stays as drawn.
+    if (!isObject(seam) || seam.band === undefined) return seam;
+    const band = parseBand(seam.band);
+    if (band) return { ...seam, band };
+    warnings.push(`The gusset band record of ${typeof seam.name === 'string' ? `"${seam.name}"` : 'a seam'} is not valid: the seam stays as it is, but its band's width can no longer be changed.`);
+    const { band: _, ...rest } = seam;
+    return rest;
+  });
   design.seams = design.seams.map((seam, i) => {
     // A twin link must name another seam that links back; anything else is dropped.
     if (seam === null || typeof seam !== 'object' || seam.mirror === undefined) return seam;

@@ -5,7 +5,8 @@ import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
 import { upOf } from './up-axis.js';
 import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf } from './symmetry.js';
-import { distance, sectionSeamPoints } from './section.js';
+import { sectionSeamPoints } from './section.js';
+import { BAND_PARTS, bandLoops, bandSeamPoints } from './band.js';
 
 const keyOf = (seam) => JSON.stringify([seam.points, seam.closed, Boolean(seam.smooth)]);
 const PICK_PX = 10;
@@ -184,29 +185,80 @@ export class SeamEditor {
   // of surface paths between its resampled points, in one step of the history; names: the seams' own, if any;
   // `note` says what was done to make them.
   // across: a point near which a seam runs across from the first loop to the second (a gusset band's strip is a
-  // tube until a seam opens it), joined to both.
-  commitLoops(loops, { names = [], note = null, across = null } = {}) {
+  // tube until a seam opens it), joined to both. band: the band's record without id and part (band.js), kept on
+  // its seams so it can be laid again at another width.
+  commitLoops(loops, { names = [], note = null, across = null, band = null } = {}) {
+    const target = this.app.target;
     let next = this.design;
+    const id = band && cmd.nextBandId(next);
+    const record = (part) => band && { ...band, id, part };
     const laid = [];
-    for (const [k, loop] of loops.entries()) {
-      const points = sectionSeamPoints(this.app.target, loop);
-      next = cmd.addSeam(next, { points, closed: true, smooth: false, name: names[k] });
-      laid.push({ index: next.seams.length - 1, points });
+    const { sides, across: ends } = across && loops.length === 2 ? bandSeamPoints(target, loops, across, { width: this.stripWidth(band) }) : { sides: loops.map((loop) => sectionSeamPoints(target, loop)) };
+    for (const [k, points] of sides.entries()) {
+      next = cmd.addSeam(next, { points, closed: true, smooth: false, name: names[k], band: record(BAND_PARTS[k]) });
+      laid.push(next.seams.length - 1);
     }
-    if (across && laid.length === 2) {
-      const target = this.app.target;
-      const nearest = (points, to) => points.reduce((best, p) => (distance(positionOf(target, p), to) < distance(positionOf(target, best), to) ? p : best));
-      const a = nearest(laid[0].points, across);
-      const b = nearest(laid[1].points, positionOf(target, a));
-      const ends = [{ ...a, on: laid[0].index }, { ...b, on: laid[1].index }];
-      next = cmd.addSeam(next, { points: ends, closed: false, smooth: false, name: names[2] });
-      laid.push({ index: next.seams.length - 1 });
+    if (ends) {
+      next = cmd.addSeam(next, { points: ends.map((p, k) => ({ ...p, on: laid[k] })), closed: false, smooth: false, name: names[2], band: record('across') });
+      laid.push(next.seams.length - 1);
     }
-    if (this.plane) for (const { index } of laid) next = addMirroredTwin(next, this.app.target, this.plane, index);
+    if (this.plane) for (const index of laid) next = addMirroredTwin(next, target, this.plane, index);
     this.app.commitDesign(next);
     this.selection = { seam: next.seams.length - 1, index: null };
     this.refresh();
     this.noteLaid(note);
+  }
+
+  // The gusset band seam i belongs to (band.js; its own record, or its mirror twin's), with both its sides still
+  // in the design, or null.
+  bandOf(i) {
+    const seam = this.design.seams[i];
+    const band = seam?.band ?? (seam?.mirror !== undefined ? this.design.seams[seam.mirror]?.band : undefined);
+    if (!band) return null;
+    const members = cmd.bandMembers(this.design, band.id);
+    return members['side 1'] !== undefined && members['side 2'] !== undefined ? band : null;
+  }
+
+  // The band seam i belongs to, laid again at another width (mm on the cut pattern): both sides where the band
+  // was laid from (the same plane's point, or the same view of the outline), the seam across between them, mirror
+  // twins after them, in one step of the history. Points the designer had moved are replaced, and told so.
+  setBandWidth(i, widthMm) {
+    const band = this.bandOf(i);
+    if (!band || !(widthMm > 0) || widthMm === band.width_mm) return;
+    const target = this.app.target;
+    const units = this.unitsPerMillimetre;
+    const width = `${+widthMm.toFixed(1)} mm`;
+    const laid = bandLoops(target, band, units, widthMm);
+    if (laid.problem) return this.noteLaid(`The band was not laid again at ${width}: ${laid.problem}`, 'warning');
+    const members = cmd.bandMembers(this.design, band.id);
+    const { sides, across } = bandSeamPoints(target, laid.loops, band.origin, { width: this.stripWidth(band, widthMm) });
+    const points = { 'side 1': sides[0], 'side 2': sides[1], across: across.map((p, k) => ({ ...p, on: members[BAND_PARTS[k]] })) };
+    let next = cmd.relayBand(this.design, band.id, { width_mm: widthMm, points });
+    for (const seam of Object.values(members)) {
+      const twin = this.twinOf(this.design, seam);
+      if (twin === null) continue;
+      const mirrored = next.seams[seam].points.map((p) => this.mirrored(next, p));
+      next = cmd.relaySeam(next, twin, { points: mirrored, name: cmd.bandSeamName(next.seams[twin].name, widthMm) });
+    }
+    const moved = this.movedBandSides(band, members);
+    this.app.commitDesign(next);
+    this.refresh();
+    this.noteLaid(moved.length ? `The band was laid again at ${width}: the points you had moved on ${moved.join(' and ')} were replaced by the band's own (undo brings them back).` : null);
+  }
+
+  // Where an outline band's seam across may go: where its sides are about this far apart (target units), not
+  // across a narrow part laid into the band (bandSeamPoints). A section band's goes where the designer clicked.
+  stripWidth(band, widthMm = band?.width_mm) {
+    return band?.kind === 'outline' ? widthMm * this.unitsPerMillimetre : null;
+  }
+
+  // The names of the band's sides whose points are no longer those the band lays at its width (dragged, added).
+  movedBandSides(band, members) {
+    const laid = bandLoops(this.app.target, band, this.unitsPerMillimetre);
+    if (laid.problem) return [];
+    const { sides } = bandSeamPoints(this.app.target, laid.loops, band.origin);
+    const same = (a, b) => a.length === b.length && a.every((p, k) => p.face === b[k].face && p.bary.every((x, c) => Math.abs(x - b[k].bary[c]) < 1e-9));
+    return ['side 1', 'side 2'].filter((part, k) => !same(this.design.seams[members[part]].points, sides[k])).map((part) => this.design.seams[members[part]].name ?? part);
   }
 
   // Target units per millimetre on the cut pattern, at the design's height.

@@ -123,25 +123,32 @@ export function sectionSeamPoints(mesh, loop) {
 
 // The outline of the target as seen from `towards` (the unit direction from the target to the viewer, in its
 // own coordinates): the zero set of n · towards over the vertex normals, the contour where the surface turns
-// away, cleaned into one loop. Front-facing parts that are not the largest front (a fold, an arm's far side)
-// go with the back, then back-facing parts that are not the largest back go with the front, so front and back
-// are each one piece. Returns { loop, toBack, toFront, loops } (loops: how many the contour still makes, more
-// than one on a shape with a handle; loop is the longest), or null when the shape has no front or back.
+// away, cleaned into one loop (splitInTwo). Front-facing parts that are not the largest front (a fold, an arm's
+// far side) go with the back, then back-facing parts that are not the largest back go with the front, so front
+// and back are each one piece. Returns { loop, toBack, toFront, loops, facing } (loops: how many the contour
+// still makes, more than one on a shape with a handle; loop is the longest; facing: the cleaned field, > 0 in
+// front), or null when the shape has no front or back.
 export function outlineLoop(mesh, towards) {
-  const { positions, indices } = mesh;
+  const facing = facingField(mesh, towards);
+  const split = splitInTwo(mesh, facing);
+  if (!split) return null;
+  const loops = zeroLoops(mesh, facing);
+  if (!loops.length) return null;
+  const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
+  return { loop, toBack: split.toNegative, toFront: split.toPositive, loops: loops.length, facing };
+}
+
+// Per vertex, n · towards over the vertex normal (area-weighted), kept away from zero.
+function facingField({ positions, indices }, towards) {
   const nv = positions.length / 3;
   const normal = new Float64Array(3 * nv);
-  const area = new Float64Array(nv);
   const at = (v, k) => positions[3 * v + k];
   for (let f = 0; f < indices.length / 3; f++) {
     const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
     const u = [0, 1, 2].map((k) => at(b, k) - at(a, k));
     const w = [0, 1, 2].map((k) => at(c, k) - at(a, k));
     const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]; // twice the area
-    for (const v of [a, b, c]) {
-      for (let k = 0; k < 3; k++) normal[3 * v + k] += n[k];
-      area[v] += Math.hypot(...n) / 6;
-    }
+    for (const v of [a, b, c]) for (let k = 0; k < 3; k++) normal[3 * v + k] += n[k];
   }
   const facing = new Float64Array(nv);
   for (let v = 0; v < nv; v++) {
@@ -150,13 +157,28 @@ export function outlineLoop(mesh, towards) {
     // Away from zero, so the sides read the same here as where the contour is drawn (zeroLoops).
     if (Math.abs(facing[v]) < 1e-6) facing[v] = facing[v] > 0 ? 1e-6 : -1e-6;
   }
+  return facing;
+}
+
+// Changes the sign of a field given at the vertices (values, changed in place) where needed so that its positive
+// and its negative side are each one edge-connected piece and no vertex pinches a side: its zero set is then one
+// loop on a shape without handles. Parts of a side that are not its largest change sides, the positive side's
+// first. Returns { toNegative, toPositive, moved: [area to negative, area to positive], area: [positive,
+// negative] as they were }, or null when a side is empty.
+export function splitInTwo(mesh, values) {
+  const { positions, indices } = mesh;
+  const nv = positions.length / 3;
+  const area = vertexAreas(mesh);
+  const sideArea = (positive) => area.reduce((s, a, v) => (values[v] > 0 === positive ? s + a : s), 0);
+  const before = [sideArea(true), sideArea(false)];
+  const moved = [0, 0];
   // Keeps only the largest edge-connected part of each side: the others change sides.
   const neighbours = vertexNeighbours(indices, nv);
   const keepLargest = (front) => {
     const part = new Int32Array(nv).fill(-1);
     const sizes = [];
     for (let s = 0; s < nv; s++) {
-      if (part[s] >= 0 || facing[s] > 0 !== front) continue;
+      if (part[s] >= 0 || values[s] > 0 !== front) continue;
       const id = sizes.length;
       let size = 0;
       const stack = [s];
@@ -165,16 +187,20 @@ export function outlineLoop(mesh, towards) {
         const v = stack.pop();
         size += area[v];
         for (const w of neighbours[v])
-          if (part[w] < 0 && facing[w] > 0 === front) (part[w] = id), stack.push(w);
+          if (part[w] < 0 && values[w] > 0 === front) (part[w] = id), stack.push(w);
       }
       sizes.push(size);
     }
     if (!sizes.length) return -1;
     const largest = sizes.indexOf(Math.max(...sizes));
-    for (let v = 0; v < nv; v++) if (part[v] >= 0 && part[v] !== largest) facing[v] = front ? -Math.max(facing[v], 1e-6) : Math.max(-facing[v], 1e-6);
+    for (let v = 0; v < nv; v++)
+      if (part[v] >= 0 && part[v] !== largest) {
+        values[v] = front ? -Math.max(values[v], 1e-6) : Math.max(-values[v], 1e-6);
+        moved[front ? 0 : 1] += area[v];
+      }
     return sizes.length - 1;
   };
-  // A vertex whose ring of neighbours changes side more than twice pinches its side there: the contour would
+  // A vertex whose ring of neighbours changes side more than twice pinches its side there: the zero set would
   // pass it twice, as two loops touching. It goes to the other side, which joins across it; the parts of its
   // own side it held together are sorted again by keepLargest.
   const pinches = () => {
@@ -183,29 +209,41 @@ export function outlineLoop(mesh, towards) {
       for (let k = 0; k < 3; k++) {
         const a = indices[3 * f + ((k + 1) % 3)];
         const b = indices[3 * f + ((k + 2) % 3)];
-        if (facing[a] > 0 !== facing[b] > 0) changes[indices[3 * f + k]]++;
+        if (values[a] > 0 !== values[b] > 0) changes[indices[3 * f + k]]++;
       }
     let flipped = 0;
-    for (let v = 0; v < nv; v++) if (changes[v] > 2) (facing[v] = facing[v] > 0 ? -1e-6 : 1e-6), flipped++;
+    for (let v = 0; v < nv; v++) if (changes[v] > 2) (values[v] = values[v] > 0 ? -1e-6 : 1e-6), flipped++;
     return flipped;
   };
-  let toBack = 0;
-  let toFront = 0;
+  let toNegative = 0;
+  let toPositive = 0;
   for (let round = 0; round < 20; round++) {
-    const back = keepLargest(true);
-    const front = keepLargest(false);
-    if (back < 0 || front < 0) return null;
-    toBack += back;
-    toFront += front;
+    const positive = keepLargest(true);
+    const negative = keepLargest(false);
+    if (positive < 0 || negative < 0) return null;
+    toNegative += positive;
+    toPositive += negative;
     if (!pinches()) break;
   }
-  const loops = zeroLoops(mesh, facing);
-  if (!loops.length) return null;
-  const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
-  return { loop, toBack, toFront, loops: loops.length };
+  return { toNegative, toPositive, moved, area: before };
 }
 
-function vertexNeighbours(indices, nv) {
+// A third of the area of the triangles around each vertex.
+export function vertexAreas({ positions, indices }) {
+  const area = new Float64Array(positions.length / 3);
+  const at = (v, k) => positions[3 * v + k];
+  for (let f = 0; f < indices.length / 3; f++) {
+    const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
+    const u = [0, 1, 2].map((k) => at(b, k) - at(a, k));
+    const w = [0, 1, 2].map((k) => at(c, k) - at(a, k));
+    const twice = Math.hypot(u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]);
+    for (const v of [a, b, c]) area[v] += twice / 6;
+  }
+  return area;
+}
+
+// Per vertex, the vertices it shares an edge with (twice over for interior edges: each face lists them).
+export function vertexNeighbours(indices, nv) {
   const neighbours = Array.from({ length: nv }, () => []);
   for (let f = 0; f < indices.length / 3; f++)
     for (let k = 0; k < 3; k++) {

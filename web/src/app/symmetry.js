@@ -163,8 +163,10 @@ export function isSelfSymmetric(seam, target, plane) {
 export function addMirroredTwin(design, target, plane, i) {
   const seam = design.seams[i];
   if (!seam || !plane || seam.mirror !== undefined || isSelfSymmetric(seam, target, plane)) return design;
+  // The band record stays with the seam the band was laid as: the twin follows it through the mirror link.
+  const { band, ...own } = seam;
   const twin = {
-    ...seam,
+    ...own,
     name: `${seam.name ?? `Seam ${i + 1}`} (mirror)`,
     points: seam.points.map((p) => mirrorPoint(design, target, plane, p)),
     mirror: i,

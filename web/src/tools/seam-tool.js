@@ -10,6 +10,8 @@
 // there is no Enter key or reliable double-tap.
 import { Matrix4, Vector3 } from 'three';
 import { outlineLoop, sectionThrough } from '../app/section.js';
+import { bandNames, lowestPoint, outlineBandLoops } from '../app/band.js';
+import { UP_FRAMES, upOf } from '../app/up-axis.js';
 
 const CLICK_SLOP_PX = { mouse: 4, pen: 6, touch: 12 };
 const SNAP_PX = { mouse: 12, pen: 16, touch: 28 }; // to control points and the start of the loop being drawn
@@ -208,22 +210,40 @@ export class SeamTool {
     const loops = this.section;
     if (!loops) return;
     this.clearSection();
-    const width = `${+this.bandWidth.toFixed(1)} mm`;
     if (loops.length === 1) return this.app.commitLoops(loops);
     // The strip between the two is opened by a seam across it, where the designer clicked.
-    this.app.commitLoops(loops, { names: [`Band ${width}, side 1`, `Band ${width}, side 2`, `Band ${width}, across`], across: this.lastHit });
+    const band = { kind: 'section', width_mm: this.bandWidth, normal: this.sectionNormal(), origin: this.lastHit };
+    this.app.commitLoops(loops, { names: bandNames('section', this.bandWidth), across: this.lastHit, band });
   }
 
-  // The outline as seen from here, in one action: the seam that splits the shape into a front and a back panel.
+  // The outline as seen from here, in one action: the seam that splits the shape into a front and a back panel,
+  // or with a band width, a gusset band around the shape between them.
   layOutline() {
     if (!this.pane.mesh) return;
-    const outline = outlineLoop(this.app.target, this.toTarget(this.pane.viewDirection()));
+    const towards = this.toTarget(this.pane.viewDirection());
+    if (this.bandWidth > 0) return this.layOutlineBand(towards);
+    const outline = outlineLoop(this.app.target, towards);
     if (!outline) return this.app.noteLaid('The shape shows no outline from here: turn the view and try again.', 'warning');
     const notes = [];
     const parts = outline.toBack + outline.toFront;
     if (parts) notes.push(`${parts} small ${parts === 1 ? 'part' : 'parts'} turned away from the rest of ${parts === 1 ? 'its' : 'their'} side (a fold, a limb in front of the body) went with the panel around ${parts === 1 ? 'it' : 'them'}; a section seam around a limb gives it panels of its own`);
     if (outline.loops > 1) notes.push(`the shape has a handle, so the outline makes ${outline.loops} loops: the longest was laid; a seam across the handle opens it`);
     this.app.commitLoops([outline.loop], { note: notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null });
+  }
+
+  // Two seams half the band's width to each side of the outline, measured on the surface, and the seam across
+  // the strip at the outline's lowest point, where it is least seen.
+  layOutlineBand(towards) {
+    const band = { kind: 'outline', width_mm: this.bandWidth, towards };
+    const laid = outlineBandLoops(this.app.target, band, this.bandWidth * this.app.unitsPerMillimetre);
+    if (laid.problem) return this.app.noteLaid(laid.problem, 'warning');
+    band.origin = lowestPoint(laid.outline.loop, UP_FRAMES[upOf(this.app.design)][1]);
+    const notes = [];
+    if (laid.absorbed)
+      notes.push(`${laid.absorbed} narrow ${laid.absorbed === 1 ? 'part' : 'parts'} of the front or back (thinner than the band: a tail, an ear) went into the band`);
+    if (laid.outline.loops > 1) notes.push(`the shape has a handle: the band follows the longest loop of the outline; a seam across the handle opens it`);
+    const note = notes.length ? `Band laid around the outline as seen from here: ${notes.join('; ')}.` : null;
+    this.app.commitLoops(laid.loops, { names: bandNames('outline', this.bandWidth), across: band.origin, band, note });
   }
 
   // A direction in the view (world) as one in the target's own coordinates.

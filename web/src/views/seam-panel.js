@@ -46,7 +46,7 @@ export class SeamPanel {
     // A gusset band: two sections this far apart on the cut pattern, a strip panel between them.
     this.band = document.createElement('label');
     this.band.className = 'section-band';
-    this.band.title = 'A gusset band: a click lays two section seams this far apart, with a strip panel between them for thickness (0: one seam)';
+    this.band.title = 'A gusset band: a Section click or Outline lays two seams this far apart, with a strip panel between them for thickness (0: one seam)';
     this.bandInput = document.createElement('input');
     this.bandInput.type = 'number';
     this.bandInput.min = '0';
@@ -95,7 +95,6 @@ export class SeamPanel {
     const { design, segmentation, selection } = this.editor;
     this.symmetry.value = design.symmetry?.axis ?? '';
     this.sectionAxis.hidden = this.tool.mode !== 'section';
-    this.band.hidden = this.tool.mode !== 'section';
     this.sectionAxis.value = this.tool.sectionAxis;
     this.drawbar.hidden = !this.tool.drawing;
     this.finishButton.disabled = !this.tool.canFinish;
@@ -138,7 +137,7 @@ export class SeamPanel {
     const li = el('li', selected ? 'seam selected' : 'seam');
     const name = el('button', 'name', seam.name ?? `Seam ${i + 1}`);
     name.type = 'button';
-    name.title = 'Select this seam';
+    name.title = `${seam.name ?? `Seam ${i + 1}`}: select this seam`; // the whole name, where the row cuts it short
     name.addEventListener('click', () => this.editor.selectSeam(i));
     const swatch = el('span', 'swatch');
     swatch.style.height = `${seamWidth(seam.weight)}px`;
@@ -165,6 +164,8 @@ export class SeamPanel {
     smooth.setAttribute('aria-label', `Smooth ${seam.name ?? `seam ${i + 1}`}`);
     smooth.addEventListener('click', () => this.editor.setSmooth(i, !seam.smooth));
     li.append(swatch, name, weight, remove, smooth);
+    const band = selected ? this.editor.bandOf(i) : null;
+    if (band) li.append(this.bandWidthRow(i, band));
     if (this.editor.design.symmetry && seam.mirror === undefined) {
       const mirror = el('button', 'mirror', '⇋');
       mirror.type = 'button';
@@ -183,6 +184,25 @@ export class SeamPanel {
       li.append(connect);
     }
     return li;
+  }
+
+  // The selected band's width: changed, the band is laid again at it (SeamEditor.setBandWidth).
+  bandWidthRow(i, band) {
+    const row = el('label', 'band-width');
+    row.title = 'The gusset band\'s width on the cut pattern: changed, both its sides and the seam across are laid again (points moved by hand are replaced)';
+    const input = document.createElement('input');
+    input.type = 'number';
+    input.min = '1';
+    input.step = '5';
+    input.value = String(+band.width_mm.toFixed(1));
+    input.setAttribute('aria-label', 'Band width of the selected band, mm');
+    input.addEventListener('change', () => {
+      const width = Number(input.value);
+      if (width > 0) this.editor.setBandWidth(i, width);
+      else input.value = String(+band.width_mm.toFixed(1));
+    });
+    row.append('Band width ', input, ' mm');
+    return row;
   }
 }
 
