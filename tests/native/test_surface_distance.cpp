@@ -2,6 +2,7 @@
 // sees what a shape leaves out, which the shape-to-target side alone reads as close.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "io/distance_json.hpp"
@@ -122,6 +123,20 @@ TEST(UncoveredRegions, SeparatePartsAreSeparateRegionsLargestFirstAndSmallOnesIg
   EXPECT_EQ(uncoveredRegions(square, c.distances, 1.0, UpAxis{}, 0.03, 0.2).size(), 1u);
   // Nearer than the threshold is not left out.
   EXPECT_TRUE(uncoveredRegions(square, c.distances, 1.0, UpAxis{}, 0.31, 0.0).empty());
+  // Two parts that read the same (both near the left: two strips beside each other, with a covered strip
+  // between) are one region of two parts, said once.
+  const Triangles gap = trianglesWhere(square, [](const Eigen::Vector3d& c) { return c.x() > 0.12 && c.x() < 0.16; });
+  Triangles shown(middle.rows() + gap.rows(), 3);
+  shown << middle, gap;
+  const TargetCoverage twoLeft = targetCoverage(square, square.V, shown, 1.0);
+  const std::vector<UncoveredRegion> pair = uncoveredRegions(square, twoLeft.distances, 1.0, UpAxis{}, 0.03, 0.01);
+  ASSERT_FALSE(pair.empty());
+  EXPECT_EQ(pair[0].parts, 2) << pair[0].where;
+  EXPECT_EQ(std::count_if(pair.begin(), pair.end(), [&](const UncoveredRegion& r) { return r.where == pair[0].where; }),
+            1);
+  EXPECT_NE(uncoveredMessage(pair[0]).find("leaves out 2 parts of the target"), std::string::npos)
+      << uncoveredMessage(pair[0]);
+  EXPECT_GT(pair[0].radius, 0.2);  // the ball holds both strips, for Show where
   // A part: where it is and what helps.
   const std::string part = uncoveredMessage(regions[0]);
   EXPECT_NE(part.find("leaves out part of the target " + regions[0].where + ": 26."), std::string::npos) << part;

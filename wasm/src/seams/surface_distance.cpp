@@ -115,9 +115,28 @@ std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen
           std::max(regions[i].radius, (target.V.row(target.F(f, k)).transpose() - regions[i].farthest).norm());
   }
   for (UncoveredRegion& r : regions) r.maxDistance /= diagonal, r.where = describeLocation(r.farthest, lo, hi, up);
-  std::sort(regions.begin(), regions.end(),
+  // Parts that read the same (an elephant's two feet, both "near the bottom") are one message: the designer
+  // could not tell two of them apart. The merged ball holds both balls.
+  std::vector<UncoveredRegion> merged;
+  for (UncoveredRegion& r : regions) {
+    const auto same =
+        std::find_if(merged.begin(), merged.end(), [&](const UncoveredRegion& m) { return m.where == r.where; });
+    if (same == merged.end()) {
+      merged.push_back(std::move(r));
+      continue;
+    }
+    UncoveredRegion& m = *same;
+    const Eigen::Vector3d apex = r.maxDistance > m.maxDistance ? r.farthest : m.farthest;
+    m.radius = std::max(m.radius + (m.farthest - apex).norm(), r.radius + (r.farthest - apex).norm());
+    m.farthest = apex;
+    m.maxDistance = std::max(m.maxDistance, r.maxDistance);
+    m.areaFraction += r.areaFraction;
+    m.parts += r.parts;
+    m.triangles.insert(m.triangles.end(), r.triangles.begin(), r.triangles.end());
+  }
+  std::sort(merged.begin(), merged.end(),
             [](const UncoveredRegion& a, const UncoveredRegion& b) { return a.areaFraction > b.areaFraction; });
-  return regions;
+  return merged;
 }
 
 std::string uncoveredMessage(const UncoveredRegion& r) {
@@ -131,6 +150,10 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
     return "The inflated shape falls short of much of the target: " + percent(r.areaFraction) +
            " of its surface lies up to " + percent(r.maxDistance) + " of its size away, farthest " + r.where +
            ". More seams let the panels follow its shape.";
+  if (r.parts > 1)
+    return "The inflated shape leaves out " + std::to_string(r.parts) + " parts of the target " + r.where + ": " +
+           percent(r.areaFraction) + " of its surface together, up to " + percent(r.maxDistance) +
+           " of its size away. A seam around each part, or panels of their own, lets the balloon reach them.";
   return "The inflated shape leaves out part of the target " + r.where + ": " + percent(r.areaFraction) +
          " of its surface, up to " + percent(r.maxDistance) +
          " of its size away. A seam around that part, or a panel of its own, lets the balloon reach it.";

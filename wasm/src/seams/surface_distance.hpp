@@ -43,6 +43,7 @@ struct UncoveredRegion {
   Eigen::Vector3d farthest = Eigen::Vector3d::Zero();  // its vertex farthest from the shape (target units)
   double radius = 0;                                   // of the ball about `farthest` holding the region (target units)
   std::string where;                                   // "near the top left of the shape"
+  int parts = 1;                                       // separate parts that read the same `where`, merged
   std::vector<int> triangles;                          // rows of the target's F: what is left out, to draw
 };
 
