@@ -299,6 +299,8 @@ test('one seam gets its own allowance by a click on it: only its cut line moves;
   await page.waitForFunction(() => window.billow.app.design.fabrication.rotate === false && !('grain_lock' in window.billow.app.design.fabrication));
   await page.waitForFunction(() => window.billow.app.cutStatistics.panels.every((p) => Math.abs(p.rotation_deg) < 1e-9));
   await page.selectOption('#grain-select', 'grain');
+  // (As drawn, every panel is turned 0 degrees too: wait for the setting itself before the autosave.)
+  await page.waitForFunction(() => window.billow.app.design.fabrication.grain_lock === true);
   await page.waitForFunction(() => window.billow.app.cutStatistics.panels.every((p) => [0, 180].includes(Math.round(Math.abs(p.rotation_deg)))));
 
   // Saved with the design: a reload keeps S2's own allowance and the grain, for this pattern again.
