@@ -124,6 +124,46 @@ test('the outline as seen is laid in one action: a front and a back panel, and a
   await page.close();
 });
 
+// A ring (a torus about z) as OBJ text, n x m quads.
+function ringObj(R = 1, r = 0.35, n = 64, m = 24) {
+  const lines = [];
+  for (let i = 0; i < n; i++)
+    for (let j = 0; j < m; j++) {
+      const [u, v] = [(2 * Math.PI * i) / n, (2 * Math.PI * j) / m];
+      lines.push(`v ${(R + r * Math.cos(v)) * Math.cos(u)} ${(R + r * Math.cos(v)) * Math.sin(u)} ${r * Math.sin(v)}`);
+    }
+  const at = (i, j) => (i % n) * m + (j % m) + 1;
+  for (let i = 0; i < n; i++) for (let j = 0; j < m; j++) lines.push(`f ${at(i, j)} ${at(i + 1, j)} ${at(i + 1, j + 1)} ${at(i, j + 1)}`);
+  return lines.join('\n');
+}
+
+test('the outline of a ring seen face on: its rim, its hole and two seams across cut it into four panels, and say so', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.setInputFiles('#file-input', { name: 'ring.obj', mimeType: 'text/plain', buffer: Buffer.from(ringObj()) });
+  await page.waitForFunction(() => window.billow.app.target?.fileName === 'ring.obj' && window.billow.app.panes.target.mesh);
+  await page.evaluate(() => {
+    const pane = window.billow.app.panes.target;
+    const distance = pane.camera.position.distanceTo(pane.controls.target);
+    pane.camera.position.copy(pane.controls.target).addScaledVector(new (pane.camera.position.constructor)(0, 0, 1), distance);
+    pane.controls.update();
+    pane.controls.dispatchEvent({ type: 'change' });
+  });
+  await page.keyboard.press('o');
+  await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 4, null, { timeout: 30000 });
+  assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams.map((s) => s.name)), ['Outline', 'Outline, hole 1', 'Across the ring 1', 'Across the ring 2']);
+  assert.equal(await page.evaluate(() => window.billow.app.seams.segmentation.segments.every((s) => s.isDisk)), true);
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
+  const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
+  await note.waitFor({ timeout: 10000 });
+  assert.match(await note.textContent(), /has a handle.*the rim of each hole was laid too.*two seams across the ring/);
+  await screenshot(page, 'flat-cut-outline-ring');
+  // One step of the history: undo takes all four away.
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.app.design.seams.length === 0);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 test('a sheet narrower than a piece: the pattern pane offers the width that fits, in one click', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await page.evaluate(() => window.billow.gallery.open('koala'));

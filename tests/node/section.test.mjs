@@ -8,7 +8,7 @@ import { readFileSync, readdirSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
 import { readObjText } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
-import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough } from '../../web/src/app/section.js';
+import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough, acrossHandles } from '../../web/src/app/section.js';
 import { positionOf } from '../../web/src/app/symmetry.js';
 
 const MESHES = new URL('../../../shared/meshes/', import.meta.url);
@@ -74,6 +74,48 @@ test('the outline of the sphere seen along z is its equator, with nothing turned
   const outline = outlineLoop(sphere, [0, 0, 1]);
   assert.deepEqual([outline.toBack, outline.toFront, outline.loops], [0, 0, 1]);
   for (const p of outline.loop) assert.ok(Math.abs(p.position[2]) < 0.05, `on the equator: ${p.position}`);
+});
+
+// A ring (a torus about z, tube radius r, ring radius R) as a mesh of n x m quads split in two.
+function ring(R = 1, r = 0.35, n = 64, m = 24) {
+  const positions = [], indices = [];
+  for (let i = 0; i < n; i++)
+    for (let j = 0; j < m; j++) {
+      const [u, v] = [(2 * Math.PI * i) / n, (2 * Math.PI * j) / m];
+      positions.push((R + r * Math.cos(v)) * Math.cos(u), (R + r * Math.cos(v)) * Math.sin(u), r * Math.sin(v));
+    }
+  const at = (i, j) => (i % n) * m + (j % m);
+  for (let i = 0; i < n; i++)
+    for (let j = 0; j < m; j++) indices.push(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i, j + 1));
+  return { positions: Float64Array.from(positions), indices: Uint32Array.from(indices) };
+}
+
+test('a ring seen face on: its rim, its hole and two sections across it cut it into four panels, as the Outline button lays them', () => {
+  const mesh = ring();
+  for (const _ of handlers.setTarget({ positions: mesh.positions, indices: mesh.indices }));
+  const outline = outlineLoop(mesh, [0, 0, 1]);
+  assert.equal(outline.loops, 2);
+  assert.equal(outline.holes.length, 1);
+  const radius = (loop) => loop.reduce((s, p) => s + Math.hypot(p.position[0], p.position[1]), 0) / loop.length;
+  assert.ok(Math.abs(radius(outline.loop) - 1.35) < 0.02, `the rim: radius ${radius(outline.loop)}`);
+  assert.ok(Math.abs(radius(outline.holes[0]) - 0.65) < 0.02, `the hole: radius ${radius(outline.holes[0])}`);
+  const across = acrossHandles(mesh, outline.loop, outline.holes, [0, 0, 1]);
+  assert.equal(across.length, 2);
+  // Each a loop around the tube (about its circumference), the two on opposite sides of the ring.
+  for (const loop of across) {
+    const length = loop.reduce((s, p, i) => s + Math.hypot(...p.position.map((x, k) => x - loop[(i + 1) % loop.length].position[k])), 0);
+    assert.ok(Math.abs(length - 2 * Math.PI * 0.35) < 0.1, `around the tube: ${length}`);
+  }
+  const side = (loop) => Math.atan2(loop[0].position[1], loop[0].position[0]);
+  const turn = side(across[0]) - side(across[1]);
+  const apart = Math.abs(Math.atan2(Math.sin(turn), Math.cos(turn)));
+  assert.ok(apart > 2.5, `opposite: ${apart} rad apart`);
+  const seams = [outline.loop, ...outline.holes, ...across].map((loop) => ({ closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, loop) }));
+  const result = run(handlers.checkSeams({ seams }));
+  const bad = result.problems.filter((p) => ['seam.self-crossing', 'segment.sliver', 'segment.thin', 'segment.not-disk'].includes(p.code) || p.severity === 'error');
+  assert.deepEqual(bad.map((p) => p.message), []);
+  assert.equal(result.segments.length, 4);
+  assert.ok(result.segments.every((s) => s.isDisk), 'four panels, each a disk');
 });
 
 for (const file of readdirSync(MESHES).filter((f) => f.endsWith('.obj')).sort()) {

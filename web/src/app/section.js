@@ -125,9 +125,9 @@ export function sectionSeamPoints(mesh, loop) {
 // own coordinates): the zero set of n · towards over the vertex normals, the contour where the surface turns
 // away, cleaned into one loop (splitInTwo). Front-facing parts that are not the largest front (a fold, an arm's
 // far side) go with the back, then back-facing parts that are not the largest back go with the front, so front
-// and back are each one piece. Returns { loop, toBack, toFront, loops, facing } (loops: how many the contour
-// still makes, more than one on a shape with a handle; loop is the longest; facing: the cleaned field, > 0 in
-// front), or null when the shape has no front or back.
+// and back are each one piece. Returns { loop, holes, toBack, toFront, loops, facing } (loops: how many the
+// contour still makes, more than one on a shape with a handle; loop is the longest, holes the others; facing:
+// the cleaned field, > 0 in front), or null when the shape has no front or back.
 export function outlineLoop(mesh, towards) {
   const facing = facingField(mesh, towards);
   const split = splitInTwo(mesh, facing);
@@ -135,7 +135,38 @@ export function outlineLoop(mesh, towards) {
   const loops = zeroLoops(mesh, facing);
   if (!loops.length) return null;
   const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
-  return { loop, toBack: split.toNegative, toFront: split.toPositive, loops: loops.length, facing };
+  return { loop, holes: loops.filter((l) => l !== loop), toBack: split.toNegative, toFront: split.toPositive, loops: loops.length, facing };
+}
+
+// A shape with a handle seen through it (a ring face on, a letter O) has an outline of several loops: the rim
+// and a hole per handle; the front and the back are then rings, not panels. Per hole, two sections cut them
+// open into halves: one where the ring is narrowest (the plane along the view through the hole's point nearest
+// the rim, across the gap between them) and one through the hole's point farthest from it. One cut alone would
+// leave each ring a C sewn to itself across the cut, which the panels flatten badly. Each loop as zeroLoops'.
+export function acrossHandles(mesh, rim, holes, towards) {
+  const every = (loop, most) => loop.filter((_, i) => i % Math.max(1, Math.ceil(loop.length / most)) === 0);
+  const nearestOn = (loop, p) => loop.reduce((best, q) => (distance(p.position, q.position) < distance(p.position, best.position) ? q : best));
+  const cut = (p, q) => {
+    const gap = [0, 1, 2].map((k) => q.position[k] - p.position[k]);
+    const normal = [towards[1] * gap[2] - towards[2] * gap[1], towards[2] * gap[0] - towards[0] * gap[2], towards[0] * gap[1] - towards[1] * gap[0]];
+    const length = Math.hypot(...normal);
+    return length > 1e-12 ? sectionThrough(mesh, p, normal.map((x) => x / length)) : null;
+  };
+  const out = [];
+  for (const hole of holes) {
+    const rimPoints = every(rim, 400);
+    let near = null;
+    for (const p of every(hole, 200)) {
+      const q = nearestOn(rimPoints, p);
+      if (!near || distance(p.position, q.position) < near.d) near = { d: distance(p.position, q.position), p, q };
+    }
+    if (!near) return null;
+    const far = hole.reduce((best, p) => (distance(p.position, near.p.position) > distance(best.position, near.p.position) ? p : best));
+    const sections = [cut(near.p, near.q), cut(far, nearestOn(rimPoints, far))];
+    if (!sections.every(Boolean)) return null;
+    out.push(...sections);
+  }
+  return out;
 }
 
 // Per vertex, n · towards over the vertex normal (area-weighted), kept away from zero.

@@ -9,7 +9,7 @@
 // reach farther to snap or grab; the seam panel shows Finish / Close / Cancel buttons while drawing, since
 // there is no Enter key or reliable double-tap.
 import { Matrix4, Vector3 } from 'three';
-import { outlineLoop, sectionThrough } from '../app/section.js';
+import { outlineLoop, sectionThrough, acrossHandles } from '../app/section.js';
 import { bandNames, lowestPoint, outlineBandLoops } from '../app/band.js';
 import { UP_FRAMES, upOf } from '../app/up-axis.js';
 
@@ -227,8 +227,17 @@ export class SeamTool {
     const notes = [];
     const parts = outline.toBack + outline.toFront;
     if (parts) notes.push(`${parts} small ${parts === 1 ? 'part' : 'parts'} turned away from the rest of ${parts === 1 ? 'its' : 'their'} side (a fold, a limb in front of the body) went with the panel around ${parts === 1 ? 'it' : 'them'}; a section seam around a limb gives it panels of its own`);
-    if (outline.loops > 1) notes.push(`the shape has a handle, so the outline makes ${outline.loops} loops: the longest was laid; a seam across the handle opens it`);
-    this.app.commitLoops([outline.loop], { note: notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null });
+    // Seen through a handle (a ring, a letter O), the front and back are rings: each hole's rim is laid too,
+    // and two sections across the ring cut them into halves.
+    const holes = outline.holes.length;
+    const across = holes ? acrossHandles(this.app.target, outline.loop, outline.holes, towards) : [];
+    const opened = holes > 0 && across !== null;
+    if (opened)
+      notes.push(`the shape has ${holes === 1 ? 'a handle' : `${holes} handles`}, so the outline makes ${holes + 1} loops: the rim of each hole was laid too, and two seams across the ring (where it is narrowest and opposite) cut the front and back into halves (drag their points to move them)`);
+    else if (holes) notes.push(`the shape has a handle, so the outline makes ${holes + 1} loops: the longest was laid; a section seam across the handle opens it`);
+    const loops = opened ? [outline.loop, ...outline.holes, ...across] : [outline.loop];
+    const names = opened ? ['Outline', ...outline.holes.map((_, k) => `Outline, hole ${k + 1}`), ...across.map((_, k) => `Across the ring ${k + 1}`)] : [];
+    this.app.commitLoops(loops, { names, note: notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null });
   }
 
   // Two seams half the band's width to each side of the outline, measured on the surface, and the seam across
