@@ -16,6 +16,16 @@ const middleOfView = (page) => page.evaluate(() => {
   return { x: s.left + s.side / 2, y: s.top + s.side / 2 };
 });
 
+// Turns the target pane's view to look at the model from `direction` (its own axes, as it stands).
+const lookFrom = (page, direction) =>
+  page.evaluate((direction) => {
+    const pane = window.billow.app.panes.target;
+    const distance = pane.camera.position.distanceTo(pane.controls.target);
+    pane.camera.position.copy(pane.controls.target).addScaledVector(new (pane.camera.position.constructor)(...direction), distance);
+    pane.controls.update();
+    pane.controls.dispatchEvent({ type: 'change' });
+  }, direction);
+
 // The control points of seam i, as positions in the target's own units, once traced.
 const controls = (page, i) => page.waitForFunction((i) => {
   const trace = window.billow.app.seams.seamTraces()[i];
@@ -93,13 +103,7 @@ test('the outline as seen is laid in one action: a front and a back panel, and a
   const page = await openFreshPage(env.context, env.server.url);
   await page.waitForFunction(() => window.billow.app.panes.target.mesh);
   // Spot seen from its side (+x), as a foil balloon of a cow is drawn.
-  await page.evaluate(() => {
-    const pane = window.billow.app.panes.target;
-    const distance = pane.camera.position.distanceTo(pane.controls.target);
-    pane.camera.position.copy(pane.controls.target).addScaledVector(new (pane.camera.position.constructor)(1, 0, 0), distance);
-    pane.controls.update();
-    pane.controls.dispatchEvent({ type: 'change' });
-  });
+  await lookFrom(page, [1, 0, 0]);
   await page.click('#seam-panel button.outline');
   await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 2, null, { timeout: 30000 });
   const seam = await page.evaluate(() => window.billow.app.design.seams[0]);
@@ -141,13 +145,7 @@ test('the outline of a ring seen face on: its rim, its hole and two seams across
   const page = await openFreshPage(env.context, env.server.url);
   await page.setInputFiles('#file-input', { name: 'ring.obj', mimeType: 'text/plain', buffer: Buffer.from(ringObj()) });
   await page.waitForFunction(() => window.billow.app.target?.fileName === 'ring.obj' && window.billow.app.panes.target.mesh);
-  await page.evaluate(() => {
-    const pane = window.billow.app.panes.target;
-    const distance = pane.camera.position.distanceTo(pane.controls.target);
-    pane.camera.position.copy(pane.controls.target).addScaledVector(new (pane.camera.position.constructor)(0, 0, 1), distance);
-    pane.controls.update();
-    pane.controls.dispatchEvent({ type: 'change' });
-  });
+  await lookFrom(page, [0, 0, 1]);
   await page.keyboard.press('o');
   await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 4, null, { timeout: 30000 });
   assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams.map((s) => s.name)), ['Outline', 'Outline, hole 1', 'Across the ring 1', 'Across the ring 2']);
@@ -187,7 +185,8 @@ test('a sheet narrower than a piece: the pattern pane offers the width that fits
   await page.close();
 });
 
-test('a gusset band: one click lays two sections the chosen width apart and a seam across the strip, undone at once', async () => {
+// A fresh page on the sphere, the section tool across y with a 40 mm band.
+async function bandOnTheSphere() {
   const page = await openFreshPage(env.context, env.server.url);
   await page.selectOption('#example-select', 'sphere');
   await page.waitForFunction(() => window.billow.app.design.target.example === 'sphere' && window.billow.app.panes.target.mesh);
@@ -195,6 +194,11 @@ test('a gusset band: one click lays two sections the chosen width apart and a se
   await page.selectOption('.section-axis', 'y');
   await page.fill('.section-band input', '40');
   await page.press('.section-band input', 'Enter');
+  return page;
+}
+
+test('a gusset band: one click lays two sections the chosen width apart and a seam across the strip, undone at once', async () => {
+  const page = await bandOnTheSphere();
   const at = await middleOfView(page);
   await page.mouse.move(at.x + 3, at.y);
   await page.mouse.move(at.x, at.y);
@@ -221,13 +225,7 @@ test('a gusset band: one click lays two sections the chosen width apart and a se
 });
 
 test('a band\'s width is changed in the seam panel: its sides and the seam across are laid again, undone in one step', async () => {
-  const page = await openFreshPage(env.context, env.server.url);
-  await page.selectOption('#example-select', 'sphere');
-  await page.waitForFunction(() => window.billow.app.design.target.example === 'sphere' && window.billow.app.panes.target.mesh);
-  await page.click('#seam-panel button[data-tool="section"]');
-  await page.selectOption('.section-axis', 'y');
-  await page.fill('.section-band input', '40');
-  await page.press('.section-band input', 'Enter');
+  const page = await bandOnTheSphere();
   const at = await middleOfView(page);
   await page.mouse.move(at.x, at.y);
   await page.mouse.click(at.x, at.y);
@@ -266,13 +264,7 @@ test('with a band width, Outline lays a band around the outline as seen: front, 
   const page = await openFreshPage(env.context, env.server.url);
   await page.waitForFunction(() => window.billow.app.panes.target.mesh);
   // Spot seen from its side (+x).
-  await page.evaluate(() => {
-    const pane = window.billow.app.panes.target;
-    const distance = pane.camera.position.distanceTo(pane.controls.target);
-    pane.camera.position.copy(pane.controls.target).addScaledVector(new (pane.camera.position.constructor)(1, 0, 0), distance);
-    pane.controls.update();
-    pane.controls.dispatchEvent({ type: 'change' });
-  });
+  await lookFrom(page, [1, 0, 0]);
   await page.fill('.section-band input', '30');
   await page.press('.section-band input', 'Enter');
   await page.click('#seam-panel button.outline');

@@ -8,10 +8,9 @@
 // parse-and-default and travels in a share link.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync, readdirSync } from 'node:fs';
-import { loadApi } from './load-module.mjs';
-import { readObjText } from './obj.mjs';
-import { createHandlers } from '../../web/src/worker/handlers.js';
+import { readdirSync } from 'node:fs';
+import { SHARED_MESHES, loadSharedMesh } from './obj.mjs';
+import { handlers, run } from './worker-handlers.mjs';
 import { bandNames, bandSeamPoints, lowestPoint, outlineBandLoops, sectionBandLoops, distanceToZeroSet } from '../../web/src/app/band.js';
 import { SeamEditor } from '../../web/src/app/seam-editor.js';
 import { History } from '../../web/src/app/history.js';
@@ -20,13 +19,8 @@ import { newDesign, parseDesign } from '../../web/src/app/design.js';
 import { encodeDesign, decodeDesign } from '../../web/src/app/share.js';
 import { bounds, positionOf } from '../../web/src/app/symmetry.js';
 
-const MESHES = new URL('../../../shared/meshes/', import.meta.url);
-const api = await loadApi();
-const handlers = createHandlers(api);
-const run = (generator) => {
-  for (let step = generator.next(); ; step = generator.next()) if (step.done) return step.value;
-};
-const load = (name) => readObjText(readFileSync(new URL(name, MESHES), 'utf8'));
+const MESHES = SHARED_MESHES;
+const load = loadSharedMesh;
 const setTarget = (mesh) => {
   for (const _ of handlers.setTarget({ positions: mesh.positions, indices: mesh.indices }));
 };

@@ -4,19 +4,13 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { loadApi } from './load-module.mjs';
 import { readObjText } from './obj.mjs';
-import { createHandlers } from '../../web/src/worker/handlers.js';
+import { handlers, run } from './worker-handlers.mjs';
 import { draftProblem } from '../../web/src/app/seam-editor.js';
 
-const api = await loadApi();
-const handlers = createHandlers(api);
 const sphere = readObjText(readFileSync(new URL('../../web/public/examples/sphere.obj', import.meta.url), 'utf8'));
 for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
 
-const run = (generator) => {
-  for (let step = generator.next(); ; step = generator.next()) if (step.done) return step.value;
-};
 const check = (seams, up) => run(handlers.checkSeams({ seams, up }));
 // A loop around the unit sphere at height y, as 3D control points (projected onto the target).
 const ring = (y, n = 8) => ({

@@ -1,3 +1,5 @@
+import { readFileSync } from 'node:fs';
+
 // A minimal OBJ reader for tests (v and triangular f lines only, as in ../shared/meshes).
 export function readObjText(text) {
   const positions = [];
@@ -9,3 +11,7 @@ export function readObjText(text) {
   }
   return { positions: Float64Array.from(positions), indices: Int32Array.from(indices) };
 }
+
+// The meshes of ../shared/meshes (SOURCES.md), by file name.
+export const SHARED_MESHES = new URL('../../../shared/meshes/', import.meta.url);
+export const loadSharedMesh = (name) => readObjText(readFileSync(new URL(name, SHARED_MESHES), 'utf8'));

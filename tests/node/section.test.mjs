@@ -4,20 +4,14 @@
 // outlines seen along x, y and z make seams that never cross themselves and leave no tiny or thin segment.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync, readdirSync } from 'node:fs';
-import { loadApi } from './load-module.mjs';
-import { readObjText } from './obj.mjs';
-import { createHandlers } from '../../web/src/worker/handlers.js';
+import { readdirSync } from 'node:fs';
+import { SHARED_MESHES, loadSharedMesh } from './obj.mjs';
+import { handlers, run } from './worker-handlers.mjs';
 import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough, acrossHandles } from '../../web/src/app/section.js';
 import { positionOf } from '../../web/src/app/symmetry.js';
 
-const MESHES = new URL('../../../shared/meshes/', import.meta.url);
-const api = await loadApi();
-const handlers = createHandlers(api);
-const run = (generator) => {
-  for (let step = generator.next(); ; step = generator.next()) if (step.done) return step.value;
-};
-const load = (name) => readObjText(readFileSync(new URL(name, MESHES), 'utf8'));
+const MESHES = SHARED_MESHES;
+const load = loadSharedMesh;
 const middle = ({ positions }) => {
   const lo = [Infinity, Infinity, Infinity], hi = [-Infinity, -Infinity, -Infinity];
   for (let i = 0; i < positions.length; i++) lo[i % 3] = Math.min(lo[i % 3], positions[i]), hi[i % 3] = Math.max(hi[i % 3], positions[i]);
