@@ -198,3 +198,30 @@ TEST(PatternJson, ExamplesSewIntoClosedSurfacesOfAboutTheRequestedSize) {
     }
   }
 }
+
+TEST(PatternJson, LongPillowsHaveTheirAspectAndSquareCells) {
+  for (const double aspect : {4.0, 10.0, 20.0}) {
+    ExampleOptions eo;
+    eo.triangles = 4000;
+    eo.size = 0.1;
+    eo.aspect = aspect;
+    const Pattern p = examplePattern("pillow", eo);
+    const Eigen::Vector2d size = p.panels[0].vertices.colwise().maxCoeff() - p.panels[0].vertices.colwise().minCoeff();
+    EXPECT_NEAR(size.x(), 0.1, 1e-12);
+    EXPECT_NEAR(size.y(), aspect * 0.1, 1e-12);
+    const SewnMesh m = sewPattern(p);
+    // About the count: both cell counts are even (a diagonal through every corner), so a narrow pillow of
+    // few cells across rounds it by up to a third.
+    EXPECT_NEAR(m.numTriangles(), 4000, 0.35 * 4000) << aspect;
+    EXPECT_EQ(m.numVertices - m.numTriangles() / 2, 2) << aspect;
+    // Square cells.
+    const Eigen::Vector2d a = p.panels[0].vertices.row(1), b = p.panels[0].vertices.row(0);
+    const double across = (a - b).norm();
+    const int nx = int(std::lround(0.1 / across));
+    const double along = (Eigen::Vector2d(p.panels[0].vertices.row(nx + 1)) - b).norm();
+    EXPECT_NEAR(along / across, 1.0, 0.05) << aspect;
+  }
+  ExampleOptions bad;
+  bad.aspect = 0.5;
+  EXPECT_THROW(examplePattern("pillow", bad), Error);
+}

@@ -1,4 +1,4 @@
-// billow example NAME [--triangles N] [--size M] [--pressure PA] [--material NAME] --out FILE.json
+// billow example NAME [--triangles N] [--size M] [--aspect R] [--pressure PA] [--material NAME] --out FILE.json
 #include <cstdio>
 #include <fstream>
 
@@ -10,12 +10,14 @@
 namespace billow::cli {
 
 int exampleCommand(const std::vector<std::string>& argv) {
-  const Args args = parseArgs(argv, {"--triangles", "--size", "--pressure", "--material", "--out"});
+  const Args args = parseArgs(argv, {"--triangles", "--size", "--aspect", "--pressure", "--material", "--out"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out")) {
     std::fprintf(
         args.has("--help") ? stdout : stderr,
-        "usage: billow example NAME [--triangles N] [--size M] [--pressure PA] [--material NAME] --out FILE.json\n\n"
-        "Writes an example pattern: mylar (two discs of radius M), pillow (two squares of side M),\n"
+        "usage: billow example NAME [--triangles N] [--size M] [--aspect R] [--pressure PA] [--material NAME]\n"
+        "                      --out FILE.json\n\n"
+        "Writes an example pattern: mylar (two discs of radius M), pillow (two rectangles M wide and R x M\n"
+        "long, squares by default),\n"
         "sphere3 (three gores of a sphere of radius M), sphere3-internal (plus an internal panel).\n"
         "Defaults: 3000 triangles, 0.3 m, 1000 Pa, "
         "foil 25 um, E = 3 GPa. Materials: foil, pvc, ripstop, tpu.\n");
@@ -24,6 +26,7 @@ int exampleCommand(const std::vector<std::string>& argv) {
   ExampleOptions o;
   o.triangles = static_cast<int>(numberOption(args, "--triangles", o.triangles));
   o.size = numberOption(args, "--size", o.size);
+  o.aspect = numberOption(args, "--aspect", o.aspect);
   o.pressure = numberOption(args, "--pressure", o.pressure);
   o.material = materialOption(args, o.material);
   const Pattern p = examplePattern(args.positional[0], o);

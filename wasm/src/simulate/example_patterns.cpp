@@ -110,16 +110,18 @@ Panel disc(double a, int K) {
   return p;
 }
 
-Panel square(double side, int n) {
+// A rectangle `width` by `length` of nx by ny cells, each split in two.
+Panel rectangle(double width, double length, int nx, int ny) {
   Panel p;
   p.name = "front";
-  p.vertices.resize((n + 1) * (n + 1), 2);
-  for (int i = 0; i <= n; ++i)
-    for (int j = 0; j <= n; ++j) p.vertices.row(i * (n + 1) + j) << side * j / n - side / 2, side * i / n - side / 2;
+  p.vertices.resize((nx + 1) * (ny + 1), 2);
+  for (int i = 0; i <= ny; ++i)
+    for (int j = 0; j <= nx; ++j)
+      p.vertices.row(i * (nx + 1) + j) << width * j / nx - width / 2, length * i / ny - length / 2;
   std::vector<Eigen::Vector3i> tris;
-  for (int i = 0; i < n; ++i)
-    for (int j = 0; j < n; ++j) {
-      const int a = i * (n + 1) + j, b = a + 1, c = a + n + 1, d = c + 1;
+  for (int i = 0; i < ny; ++i)
+    for (int j = 0; j < nx; ++j) {
+      const int a = i * (nx + 1) + j, b = a + 1, c = a + nx + 1, d = c + 1;
       // Diagonals alternate (a "union jack" pattern) so the quilt has no preferred shear direction.
       if ((i + j) % 2 == 0) {
         tris.push_back({a, b, d});
@@ -183,8 +185,10 @@ Pattern examplePattern(const std::string& name, const ExampleOptions& o) {
   if (name == "pillow") {
     // An even number of cells puts a diagonal through every corner; otherwise a corner triangle would have
     // all three corners on the seam and be sewn face to face with its twin.
-    const int n = std::max(2, 2 * int(std::lround(std::sqrt(o.triangles / 16.0))));
-    return twoSided(square(o.size, n), o);
+    if (!(o.aspect >= 1 && o.aspect <= 100)) throw Error("example.bad-value", "Choose a pillow aspect from 1 to 100.");
+    const int nx = std::max(2, 2 * int(std::lround(std::sqrt(o.triangles / (16.0 * o.aspect)))));
+    const int ny = std::max(2, 2 * int(std::lround(o.aspect * nx / 2)));  // square cells
+    return twoSided(rectangle(o.size, o.aspect * o.size, nx, ny), o);
   }
   if (name == "sphere3" || name == "sphere3-internal") {
     const int columns = std::max(3, int(std::lround(std::sqrt(M_PI * o.triangles / 8.0))));

@@ -1,6 +1,7 @@
 // Example patterns with well-shaped triangles at about a requested count:
 //   mylar   two discs of radius `size` sewn along their rims (Paulsen's Mylar balloon, DESIGN.md)
-//   pillow  two squares of side `size` sewn along their edges
+//   pillow  two rectangles `size` wide and `aspect` x `size` long sewn along their edges (squares by default;
+//           long ones are the sausages and tubes of flat-cut inflatables)
 //   sphere3 three lune-shaped gores of a sphere of radius `size` (each spans 120 degrees of longitude)
 //   sphere3-internal  sphere3 plus an internal panel (a narrower gore) joining two of its seams
 #pragma once
@@ -14,6 +15,7 @@ namespace billow {
 struct ExampleOptions {
   int triangles = 3000;  // about this many in total
   double size = 0.3;     // [m], see above
+  double aspect = 1;     // pillow: length over width
   double pressure = 1000.0;
   Material material;  // foil defaults
 };
