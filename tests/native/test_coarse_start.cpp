@@ -179,3 +179,50 @@ TEST(CoarseStart, SavesIterationsOnEveryExample) {
     EXPECT_NEAR(coarse.volume, spherical.volume, 0.02 * spherical.volume) << name;
   }
 }
+
+TEST(FoldedStart, TwoMirrorPiecesStartFoldedAndLiftedApart) {
+  ExampleOptions eo;
+  eo.triangles = 1500;
+  eo.size = 0.1;
+  eo.aspect = 10;
+  const Pattern p = examplePattern("pillow", eo);
+  const SewnMesh mesh = sewPattern(p);
+  const std::optional<Vertices> x = foldedStart(p, mesh);
+  ASSERT_TRUE(x.has_value());
+  ASSERT_EQ(x->rows(), mesh.numVertices);
+  // The front above, the back below, the seam between, as high as each other (the pieces are mirror images).
+  double top = 0, bottom = 0;
+  for (int v = 0; v < p.panels[0].vertices.rows(); ++v) {
+    const double z = (*x)(mesh.simVertex(0, v), 2);
+    EXPECT_GE(z, 0);
+    top = std::max(top, z);
+  }
+  for (int v = 0; v < p.panels[1].vertices.rows(); ++v) bottom = std::min(bottom, (*x)(mesh.simVertex(1, v), 2));
+  EXPECT_NEAR(top, -bottom, 1e-9);
+  // Across a strip 0.1 m wide: a dome half as high as the half width (z = sqrt(2 h) / 2, h = (b^2 - y^2) / 2).
+  EXPECT_NEAR(top, 0.5 * 0.05, 0.003);
+  // The seam lies flat, on the first piece's outline.
+  for (const Stitch& s : p.stitches) EXPECT_NEAR((*x)(mesh.simVertex(s.panelA, s.vertexA), 2), 0, 1e-12);
+  // Not a fold: three gores, or two pieces that are not mirror images.
+  const Pattern gores = example("sphere3", 1500);
+  EXPECT_FALSE(foldedStart(gores, sewPattern(gores)).has_value());
+}
+
+TEST(FoldedStart, LongPillowsSettleInFewNewtonIterations) {
+  // From the sphere, a 10:1 pillow of 4000 triangles took 765 iterations and a 20:1 one did not settle in 1000
+  // (bench/README.md); folded, each level takes about 20 to 35.
+  for (const double aspect : {1.0, 10.0, 20.0})
+    for (const int triangles : {1500, 4000}) {
+      ExampleOptions eo;
+      eo.triangles = triangles;
+      eo.size = 0.1;
+      eo.aspect = aspect;
+      const Pattern p = examplePattern("pillow", eo);
+      const SewnMesh mesh = sewPattern(p);
+      StartReport report;
+      const InflateResult r = solve(p, startPositions(p, mesh, {}, &report));
+      ASSERT_TRUE(r.converged) << aspect << ":1, " << triangles;
+      EXPECT_LE(r.iterations, 40) << aspect << ":1, " << triangles;
+      EXPECT_LE(report.coarseIterations, 40) << aspect << ":1, " << triangles;
+    }
+}

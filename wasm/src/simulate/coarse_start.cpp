@@ -235,6 +235,8 @@ Vertices coarseToFine(const Pattern& pattern, const SewnMesh& mesh, const Inflat
   Vertices x0;
   if (coarseMesh.numTriangles() >= options.coarseStartTriangles)
     x0 = coarseToFine(*coarse, coarseMesh, coarseOptions, report);
+  else
+    x0 = bareStart(*coarse, coarseMesh);
   const int coarseTriangles = coarseMesh.numTriangles();
   InflationSolver solver(std::move(coarseMesh), pattern.material, pattern.pressure, coarseOptions, x0);
   while (solver.step(50) == InflateState::Running) {
@@ -269,7 +271,7 @@ Vertices startPositions(const Pattern& pattern, const SewnMesh& mesh, const Infl
     if (x.rows() == mesh.numVertices && x.allFinite()) return x;
     r.levels = 0;
   }
-  return sphericalStart(mesh);
+  return bareStart(pattern, mesh);
 }
 
 }  // namespace billow

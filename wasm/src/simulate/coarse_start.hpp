@@ -42,7 +42,8 @@ struct StartReport {
 
 // The start positions for inflating `pattern`: its own start positions when it has them (the optimizer's
 // target shape), else the coarse-to-fine start when it has at least options.coarseStartTriangles triangles
-// (and coarsening works and the coarse solve does not fail), else the spherical start.
+// (and coarsening works and the coarse solve does not fail), else bareStart (initial_shape.hpp; the coarsest
+// level starts there too).
 Vertices startPositions(const Pattern& pattern, const SewnMesh& mesh, const InflateOptions& options = {},
                         StartReport* report = nullptr);
 

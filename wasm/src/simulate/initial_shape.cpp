@@ -1,8 +1,10 @@
 #include "simulate/initial_shape.hpp"
 
+#include <Eigen/SVD>
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <cmath>
+#include <map>
 #include <random>
 
 #include "simulate/enclosed_volume.hpp"
@@ -134,6 +136,106 @@ Vertices startFromInflated(const Pattern& pattern, const SewnMesh& mesh) {
       x.row(mesh.simVertex(int(p), v)) +=
           pattern.inflated[p].row(v) / double(mesh.stitchedCount[mesh.simVertex(int(p), v)]);
   return x;
+}
+
+namespace {
+
+// A dome over a flat panel's outline: per panel vertex, z = 1/2 sqrt(2 h) with -div grad h = 1 inside and
+// h = 0 on the outline (cotangent Laplacian, lumped areas); across a strip of half-width b, an ellipse b/2
+// high. Empty when the solve fails.
+Eigen::VectorXd domeHeights(const Panel& panel) {
+  const int nv = int(panel.vertices.rows());
+  std::map<std::pair<int, int>, int> edges;  // triangles per edge: 1 on the outline
+  for (int t = 0; t < panel.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const int i = panel.triangles(t, k), j = panel.triangles(t, (k + 1) % 3);
+      ++edges[{std::min(i, j), std::max(i, j)}];
+    }
+  std::vector<char> boundary(nv, 0);
+  for (const auto& [e, n] : edges)
+    if (n == 1) boundary[e.first] = boundary[e.second] = 1;
+  std::vector<int> index(nv, -1);
+  int ni = 0;
+  for (int v = 0; v < nv; ++v)
+    if (!boundary[v]) index[v] = ni++;
+  std::vector<Eigen::Triplet<double>> L;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(ni);
+  for (int t = 0; t < panel.triangles.rows(); ++t) {
+    const int v[3] = {panel.triangles(t, 0), panel.triangles(t, 1), panel.triangles(t, 2)};
+    const Eigen::Vector2d P[3] = {panel.vertices.row(v[0]), panel.vertices.row(v[1]), panel.vertices.row(v[2])};
+    const Eigen::Vector2d e1 = P[1] - P[0], e2 = P[2] - P[0];
+    const double area = 0.5 * std::abs(e1.x() * e2.y() - e1.y() * e2.x());
+    for (int k = 0; k < 3; ++k) {
+      if (index[v[k]] >= 0) rhs[index[v[k]]] += area / 3;
+      const int i = v[(k + 1) % 3], j = v[(k + 2) % 3];
+      const Eigen::Vector2d u = P[(k + 1) % 3] - P[k], w = P[(k + 2) % 3] - P[k];
+      const double c = 0.5 * u.dot(w) / std::max(1e-300, std::abs(u.x() * w.y() - u.y() * w.x()));  // cot / 2
+      for (const auto& [r, s] : {std::pair{i, j}, std::pair{j, i}}) {
+        if (index[r] < 0) continue;
+        L.emplace_back(index[r], index[r], c);
+        if (index[s] >= 0) L.emplace_back(index[r], index[s], -c);
+      }
+    }
+  }
+  Eigen::SparseMatrix<double> A(ni, ni);
+  A.setFromTriplets(L.begin(), L.end());
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(A);
+  if (solver.info() != Eigen::Success) return {};
+  const Eigen::VectorXd h = solver.solve(rhs);
+  Eigen::VectorXd z = Eigen::VectorXd::Zero(nv);
+  for (int v = 0; v < nv; ++v)
+    if (index[v] >= 0) z[v] = 0.5 * std::sqrt(2 * std::max(0.0, h[index[v]]));
+  return z;
+}
+
+}  // namespace
+
+std::optional<Vertices> foldedStart(const Pattern& pattern, const SewnMesh& mesh) {
+  if (pattern.panels.size() != 2 || pattern.panels[0].internal || pattern.panels[1].internal) return std::nullopt;
+  const Panel &a = pattern.panels[0], &b = pattern.panels[1];
+  std::vector<std::pair<Eigen::Vector2d, Eigen::Vector2d>> pairs;  // (on b, on a)
+  for (const Stitch& s : pattern.stitches) {
+    if (s.panelA == 0 && s.panelB == 1) pairs.push_back({b.vertices.row(s.vertexB), a.vertices.row(s.vertexA)});
+    if (s.panelA == 1 && s.panelB == 0) pairs.push_back({b.vertices.row(s.vertexA), a.vertices.row(s.vertexB)});
+  }
+  if (pairs.size() < 3) return std::nullopt;
+  Eigen::Vector2d cb = Eigen::Vector2d::Zero(), ca = Eigen::Vector2d::Zero();
+  for (const auto& [q, p] : pairs) cb += q, ca += p;
+  cb /= double(pairs.size()), ca /= double(pairs.size());
+  Eigen::Matrix2d H = Eigen::Matrix2d::Zero();
+  for (const auto& [q, p] : pairs) H += (q - cb) * (p - ca).transpose();
+  Eigen::JacobiSVD<Eigen::Matrix2d> svd(H, Eigen::ComputeFullU | Eigen::ComputeFullV);
+  const Eigen::Matrix2d R = svd.matrixV() * svd.matrixU().transpose();
+  if (R.determinant() > 0) return std::nullopt;  // not mirror images: no fold
+  double residual = 0, extent = 0;
+  for (const auto& [q, p] : pairs) residual += (R * (q - cb) + ca - p).squaredNorm(), extent += (p - ca).squaredNorm();
+  if (residual > 0.01 * extent) return std::nullopt;
+  Vertices x = Vertices::Zero(mesh.numVertices, 3);
+  std::vector<int> count(mesh.numVertices, 0);
+  for (int p = 0; p < 2; ++p) {
+    const Panel& panel = pattern.panels[p];
+    const Eigen::VectorXd z = domeHeights(panel);
+    if (z.size() != panel.vertices.rows()) return std::nullopt;
+    // Outward is +z for the first panel (counterclockwise seen from outside), -z for the mirrored second.
+    const double side = p == 0 ? 1 : -1;
+    for (int v = 0; v < panel.vertices.rows(); ++v) {
+      const Eigen::Vector2d q = panel.vertices.row(v);
+      const Eigen::Vector2d flat = p == 0 ? q : Eigen::Vector2d(R * (q - cb) + ca);
+      const int s = mesh.simVertex(p, v);
+      x.row(s) += Eigen::RowVector3d(flat.x(), flat.y(), side * z[v]);
+      ++count[s];
+    }
+  }
+  for (int s = 0; s < mesh.numVertices; ++s) {
+    if (!count[s]) return std::nullopt;
+    x.row(s) /= count[s];
+  }
+  return x;
+}
+
+Vertices bareStart(const Pattern& pattern, const SewnMesh& mesh) {
+  if (auto folded = foldedStart(pattern, mesh)) return *folded;
+  return sphericalStart(mesh);
 }
 
 }  // namespace billow

@@ -8,11 +8,24 @@
 //   3. scaled to radius sqrt(A / 4 pi) and mirrored if needed so triangles face outwards.
 // Vertices of internal panels only are placed by harmonic interpolation (Jacobi) from the outer ones.
 #pragma once
+#include <optional>
+
 #include "simulate/sewn_pattern.hpp"
 
 namespace billow {
 
 Vertices sphericalStart(const SewnMesh& mesh);
+
+// Two outer panels sewn to each other all around, mirror images (a foil balloon, a pillow, a flat ring, a
+// letter): the second laid onto the first by their stitched outline (least squares, with reflection), then
+// each lifted off the other by a dome over its own outline, z = 1/2 sqrt(2 h) with -lap h = 1 inside and h = 0
+// on the outline (an ellipse half as high as wide across a strip), as sketch modellers inflate a drawing.
+// From the sphere a long pillow needs hundreds of Newton iterations (bench/README.md); from this, about 20-35.
+// Nothing when the pattern is not such a pair or its outlines do not match within 10 %.
+std::optional<Vertices> foldedStart(const Pattern& pattern, const SewnMesh& mesh);
+
+// The start of a bare pattern at one level: folded when it is such a pair, else the sphere.
+Vertices bareStart(const Pattern& pattern, const SewnMesh& mesh);
 
 // Averages the pattern's "inflated" panel-vertex positions onto the simulation vertices.
 // Returns an empty matrix when the pattern has none.
