@@ -76,6 +76,16 @@ Polygon2 valveMark(const Pattern& pattern, const Outlines& outlines, const SeamS
   return inner;
 }
 
+// A label on a seam side's panel, `inset` text heights inside its sewing line at arc length s [m] along it.
+DrawnText besideSide(const Pattern& pattern, const Outlines& outlines, const SeamSide& side, const PanelLayout& pl,
+                     double s, double inset, const std::string& text) {
+  const double h = std::clamp(0.6 * pl.labelHeight, 3.0, 10.0);
+  const SidePoint at = pointAlongSide(pattern, outlines, side, s);
+  // Text stays upright on the sheet: centre it vertically after the panel's rotation.
+  return {Layer::Label, side.panel, pl.placement.apply(kMm * at.point - inset * h * at.normal) - Vec2(0, 0.35 * h), h,
+          text};
+}
+
 }  // namespace
 
 double allowanceOf(int seam, const ExportOptions& o) {
@@ -159,12 +169,9 @@ SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& o) {
       const double s0 = std::max(0.0, at - half), s1 = std::min(side->length, at + half);
       ValveGap gap{v, side->panel, valveMark(pattern, s.outlines, *side, pl, s0, s1, 2 * o.notchLength)};
       d.paths.push_back({Layer::Valve, gap.panel, true, transformed(gap.mark, pl.placement), {}});
-      const SidePoint mid = pointAlongSide(pattern, s.outlines, *side, at);
-      const double h = std::clamp(0.6 * pl.labelHeight, 3.0, 10.0);
       char text[48];
       std::snprintf(text, sizeof text, "valve %.0f mm", valve.width);
-      d.texts.push_back({Layer::Label, gap.panel,
-                         pl.placement.apply(kMm * mid.point - 2.8 * h * mid.normal) - Vec2(0, 0.35 * h), h, text});
+      d.texts.push_back(besideSide(pattern, s.outlines, *side, pl, at, 2.8, text));
       s.valveGaps.push_back(std::move(gap));
     }
   }
@@ -172,14 +179,10 @@ SheetLayout layoutSheet(const Pattern& pattern, const ExportOptions& o) {
   for (const Seam& seam : s.outlines.seams) {
     const SeamSide* sides[2] = {&seam.a, &seam.b};
     for (const SeamSide* side : sides) {
-      const PanelLayout& pl = s.panels[side->panel];
-      const double h = std::clamp(0.6 * pl.labelHeight, 3.0, 10.0);
       // A closed seam starts at a corner of the loop; its middle would be another corner, so use a quarter.
-      const SidePoint mid = pointAlongSide(pattern, s.outlines, *side, (seam.closed ? 0.25 : 0.5) * side->length);
-      const double inset = (side == &seam.b && !seam.shared ? 2.6 : 1.3) * h;
-      // Text stays upright on the sheet: centre it vertically after the panel's rotation.
-      const Vec2 at = pl.placement.apply(kMm * mid.point - inset * mid.normal) - Vec2(0, 0.35 * h);
-      d.texts.push_back({Layer::Label, side->panel, at, h, "S" + std::to_string(seam.id + 1)});
+      d.texts.push_back(besideSide(pattern, s.outlines, *side, s.panels[side->panel],
+                                   (seam.closed ? 0.25 : 0.5) * side->length,
+                                   side == &seam.b && !seam.shared ? 2.6 : 1.3, "S" + std::to_string(seam.id + 1)));
     }
   }
   return s;

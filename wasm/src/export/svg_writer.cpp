@@ -52,10 +52,11 @@ std::string writeSvg(const Drawing& d, const std::string& title) {
   s += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" ";
   s += "width=\"" + num(W) + "mm\" height=\"" + num(L) + "mm\" viewBox=\"0 0 " + num(W) + " " + num(L) + "\">\n";
   s += "<title>" + escapeXml(title) + "</title>\n";
-  const auto loop = [&](const Polygon2& points) {
+  // A path's d attribute: "M x y x y ..." and " Z" when closed.
+  const auto pathData = [&](const Polygon2& points, bool closed) {
     std::string out = "M";
     for (size_t i = 0; i < points.size(); ++i) out += (i ? " " : "") + X(points[i].x()) + " " + Y(points[i].y());
-    return out + " Z";
+    return closed ? out + " Z" : out;
   };
   for (Layer layer : kLayers) {
     const bool used = std::any_of(d.paths.begin(), d.paths.end(), [&](const DrawnPath& p) { return p.layer == layer; });
@@ -75,9 +76,9 @@ std::string writeSvg(const Drawing& d, const std::string& title) {
       for (const DrawnPath& p : d.paths)
         if (p.layer == layer && !p.points.empty())
           s += "<path data-panel=\"" + std::to_string(p.panel) + "\" fill=\"" + kSealTint +
-               "\" fill-rule=\"evenodd\" stroke=\"none\" d=\"" + loop(p.band) + " " + loop(p.points) +
-               "\"/>\n<path data-panel=\"" + std::to_string(p.panel) + "\" fill=\"none\" d=\"" + loop(p.points) +
-               "\"/>\n";
+               "\" fill-rule=\"evenodd\" stroke=\"none\" d=\"" + pathData(p.band, true) + " " +
+               pathData(p.points, true) + "\"/>\n<path data-panel=\"" + std::to_string(p.panel) +
+               "\" fill=\"none\" d=\"" + pathData(p.points, true) + "\"/>\n";
     } else {
       // Hairlines for cutters (0.1 mm); the sewing line dashed as on paper patterns; a valve's gap filled white
       // over the seal band, so the band shows where not to seal.
@@ -87,10 +88,7 @@ std::string writeSvg(const Drawing& d, const std::string& title) {
       s += ">\n";
       for (const DrawnPath& p : d.paths) {
         if (p.layer != layer || p.points.empty()) continue;
-        s += "<path data-panel=\"" + std::to_string(p.panel) + "\" d=\"M";
-        for (size_t i = 0; i < p.points.size(); ++i)
-          s += (i ? " " : "") + X(p.points[i].x()) + " " + Y(p.points[i].y());
-        s += p.closed ? " Z\"/>\n" : "\"/>\n";
+        s += "<path data-panel=\"" + std::to_string(p.panel) + "\" d=\"" + pathData(p.points, p.closed) + "\"/>\n";
       }
     }
     s += "</g>\n";
