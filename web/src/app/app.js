@@ -14,7 +14,7 @@ import { SeamEditor } from './seam-editor.js';
 import { setHeight, setUp, setMaterial, setPressure, setFabrication, setSeamAllowance, addValve, setValveWidth, removeValve } from './commands.js';
 import { upOf, heightScale, withGuessedUp } from './up-axis.js';
 import { standUp } from '../views/up-frame.js';
-import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, MAX_VALVE_WIDTH, DEFAULT_VALVE_WIDTH, DEFAULT_ALLOWANCE, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters, formatSize, joiningOf } from './fabrication.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, MAX_VALVE_WIDTH, DEFAULT_VALVE_WIDTH, fabricationWithJoining, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters, formatSize, joiningOf } from './fabrication.js';
 import { download } from './download.js';
 import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
@@ -534,10 +534,7 @@ export class App {
 
   // Sewn or heat sealed ('sewn' | 'sealed'): an allowance left at its joining's default follows.
   setJoining(joining) {
-    const f = this.design.fabrication;
-    if (joining === joiningOf(f) || !DEFAULT_ALLOWANCE[joining]) return this.showDesign();
-    const allowance = f.allowance === DEFAULT_ALLOWANCE[joiningOf(f)] ? DEFAULT_ALLOWANCE[joining] : f.allowance;
-    this.applyFabrication(setFabrication(this.design, { joining, allowance }), 'fabrication-joining');
+    this.applyFabrication({ ...this.design, fabrication: fabricationWithJoining(this.design.fabrication, joining) }, 'fabrication-joining');
   }
 
   // A fill valve on seam `seam` (exporter id) centred at share `at` of its length.

@@ -44,8 +44,12 @@ export function fabricationFor(material) {
 // The fabrication once the material changes: the joining follows the material, and an allowance left at
 // its joining's default follows too (one the designer typed stays).
 export function fabricationWithMaterial(fabrication, material) {
-  const joining = joiningFor(material);
-  if (joining === joiningOf(fabrication)) return fabrication;
+  return fabricationWithJoining(fabrication, joiningFor(material));
+}
+
+// The fabrication joined another way ('sewn' | 'sealed'); an allowance left at its joining's default follows.
+export function fabricationWithJoining(fabrication, joining) {
+  if (joining === joiningOf(fabrication) || !DEFAULT_ALLOWANCE[joining]) return fabrication;
   const allowance = fabrication.allowance === DEFAULT_ALLOWANCE[joiningOf(fabrication)] ? DEFAULT_ALLOWANCE[joining] : fabrication.allowance;
   return { ...fabrication, joining, allowance };
 }
