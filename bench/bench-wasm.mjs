@@ -1,5 +1,6 @@
 // Wasm benchmark of the inflation simulator in Node (same table as billow_bench, see bench/README.md).
-//   node bench/bench-wasm.mjs [--json] [--sizes 700,3000,15000] [--examples mylar,sphere3] [--max-seconds S]
+//   node bench/bench-wasm.mjs [--json] [--sizes 700,3000,15000] [--examples mylar,sphere3,pillow:20] [--max-seconds S]
+// An example named NAME:R is the example NAME with aspect R (pillow:20 is a 20:1 tube).
 // Loads build/wasm/billow_node.cjs with wasmBinary (TOOLCHAIN §4; BILLOW_WASM_DIR overrides the folder).
 // V8 has no on-stack replacement for wasm, so a warm-up inflation runs first and the solve is driven by
 // many short step() calls, as the worker does.
@@ -30,8 +31,10 @@ function unwrap(text) {
   return r.result;
 }
 
-function run(name, triangles) {
-  const pattern = JSON.stringify(unwrap(Module.examplePattern(name, JSON.stringify({ triangles, size: radius }))));
+function run(example, triangles) {
+  const [name, aspect = '1'] = example.split(':');
+  const options = { triangles, size: radius, aspect: Number(aspect) };
+  const pattern = JSON.stringify(unwrap(Module.examplePattern(name, JSON.stringify(options))));
   const session = new Module.InflationSession();
   try {
     const t0 = performance.now();
@@ -46,7 +49,7 @@ function run(name, triangles) {
     for (let k = 0; k < 3; ++k) factorMs = Math.min(factorMs, unwrap(session.timeFactorization()).ms);
     const result = unwrap(session.result());
     const row = {
-      example: name, triangles: session.numTriangles(), vertices: session.numVertices(),
+      example, triangles: session.numTriangles(), vertices: session.numVertices(),
       iterations: result.iterations, factorizations: result.timings.factorizations, seconds, factorMs,
       coarseLevels: info.coarseStart.levels, coarseIterations: info.coarseStart.iterations,
       startSeconds: info.coarseStart.ms / 1000, smoothingSeconds: info.coarseStart.smoothingMs / 1000,
@@ -68,11 +71,11 @@ function run(name, triangles) {
 
 run('mylar', 300);  // warm-up: tier up the hot functions before measuring
 run('sphere3', 300);
-run('mylar', 2400);  // and those of the coarse-to-fine start (coarsening, smoothing), from 2,000 triangles up
+run('mylar', 2400);  // and those of the coarse-to-fine start (coarsening, smoothing), from 600 triangles up
 const rows = [];
 if (!asJson) {
   console.log(['example', 'tris', 'verts', 'iters', 'facts', 'start s', 'solve s', 'factor ms', 'setup ms', 'heap MB', 'rim/a',
-    'thick/rim', 'conv'].map((s, i) => (i === 0 ? s.padEnd(8) : s.padStart(9))).join(' '));
+    'thick/rim', 'conv'].map((s, i) => (i === 0 ? s.padEnd(16) : s.padStart(9))).join(' '));
 }
 for (const name of examples) {
   for (const n of sizes) {
@@ -80,7 +83,7 @@ for (const name of examples) {
     rows.push(r);
     if (!asJson) {
       const f = (v, d) => (v === undefined ? '-' : v.toFixed(d)).padStart(9);
-      console.log([r.example.padEnd(8), String(r.triangles).padStart(9), String(r.vertices).padStart(9),
+      console.log([r.example.padEnd(16), String(r.triangles).padStart(9), String(r.vertices).padStart(9),
         String(r.iterations).padStart(9), String(r.factorizations).padStart(9), f(r.startSeconds, 3), f(r.seconds, 3),
         f(r.factorMs, 2),
         f(r.setupMs, 1), f(r.heapMb, 1), f(r.rimOverDisc, 5), f(r.thicknessOverRim, 5),

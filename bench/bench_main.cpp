@@ -1,10 +1,11 @@
 // Native benchmark of the inflation simulator (bench/README.md): per example and size, Newton iterations,
 // time to equilibrium (relative residual 1e-5), one sparse factorization of the final Hessian (the floor
 // per iteration), peak RSS, and for the Mylar balloon the ratios against Paulsen's numbers.
-//   billow_bench [--json] [--sizes 700,3000,15000,60000] [--examples mylar,sphere3] [--radius 0.3]
+//   billow_bench [--json] [--sizes 700,3000,15000,60000] [--examples mylar,sphere3,pillow:20] [--radius 0.3]
 //                [--max-seconds S]   (a solve stops after S seconds and is reported as not converged)
 //                [--stiffening K]    (Young's modulus x K: the Mylar balloon tends to Paulsen's inextensible
 //                                     shape as K grows, DESIGN.md)
+// An example named NAME:R is the example NAME with aspect R (pillow:20 is a 20:1 tube).
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -64,18 +65,21 @@ int main(int argc, char** argv) {
       options.coarseStartTriangles = 0;
     else {
       std::fprintf(stderr,
-                   "usage: billow_bench [--json] [--sizes N,N,..] [--examples mylar,sphere3] [--radius M] "
+                   "usage: billow_bench [--json] [--sizes N,N,..] [--examples mylar,sphere3,pillow:20] [--radius M] "
                    "[--max-seconds S] [--stiffening K] [--spherical-start]\n");
       return 2;
     }
   }
   nlohmann::json rows = nlohmann::json::array();
   if (!asJson)
-    std::printf("%-8s %7s %6s %5s %6s %9s %9s %9s %8s %8s %9s %9s %5s\n", "example", "tris", "verts", "iters", "facts",
+    std::printf("%-16s %7s %6s %5s %6s %9s %9s %9s %8s %8s %9s %9s %5s\n", "example", "tris", "verts", "iters", "facts",
                 "start s", "solve s", "factor ms", "setup ms", "RSS MB", "rim/a", "thick/rim", "conv");
-  for (const std::string& name : examples)
+  for (const std::string& example : examples)
     for (const std::string& size : sizes) {
+      const size_t colon = example.find(':');
+      const std::string name = example.substr(0, colon);
       ExampleOptions eo;
+      if (colon != std::string::npos) eo.aspect = std::stod(example.substr(colon + 1));
       eo.triangles = std::stoi(size);
       eo.size = radius;
       eo.material.youngsModulus *= stiffening;
@@ -92,7 +96,7 @@ int main(int argc, char** argv) {
       const double seconds = std::chrono::duration<double>(Clock::now() - t0).count();
       double factorMs = 1e300;
       for (int k = 0; k < 3; ++k) factorMs = std::min(factorMs, solver.timeFactorization());
-      nlohmann::json row = {{"example", name},
+      nlohmann::json row = {{"example", example},
                             {"triangles", solver.mesh().numTriangles()},
                             {"stiffening", stiffening},
                             {"vertices", solver.mesh().numVertices},
@@ -126,9 +130,10 @@ int main(int argc, char** argv) {
       }
       rows.push_back(row);
       if (!asJson) {
-        std::printf("%-8s %7d %6d %5d %6d %9.3f %9.3f %9.2f %8.1f %8.1f ", name.c_str(), solver.mesh().numTriangles(),
-                    solver.mesh().numVertices, solver.iterations(), solver.timings().factorizations,
-                    start.coarseMs * 1e-3, seconds, factorMs, solver.timings().setupMs, peakRssMb());
+        std::printf("%-16s %7d %6d %5d %6d %9.3f %9.3f %9.2f %8.1f %8.1f ", example.c_str(),
+                    solver.mesh().numTriangles(), solver.mesh().numVertices, solver.iterations(),
+                    solver.timings().factorizations, start.coarseMs * 1e-3, seconds, factorMs, solver.timings().setupMs,
+                    peakRssMb());
         if (name == "mylar")
           std::printf("%9.5f %9.5f", rim, thick);
         else

@@ -37,7 +37,7 @@ using nlohmann::json;
 //   s.result()                                         // -> scalars: state, converged, iterations, residual,
 //                                                     //    volume, energy, message, pressure, timings
 //   s.timeFactorization() -> {ms};  s.measureMylar() -> {rimRadius, thickness, poleThickness}   (benchmarks)
-//   Module.examplePattern(name, '{"triangles":3000,"size":0.3,"pressure":1000}') -> pattern JSON as result
+//   Module.examplePattern(name, '{"triangles":3000,"size":0.3,"pressure":1000,"aspect":1}') -> pattern JSON as result
 //   s.delete()
 // ---------------------------------------------------------------------------------------------------------
 #include <memory>
@@ -219,7 +219,7 @@ class InflationSession {
   std::vector<double> compression_, stress_;
 };
 
-// An example pattern as pattern-file JSON. optionsJson: {"triangles":3000, "size":0.3, "pressure":1000}.
+// An example pattern as pattern-file JSON. optionsJson: {"triangles":3000, "size":0.3, "pressure":1000, "aspect":1}.
 std::string examplePattern(const std::string& name, const std::string& optionsJson) {
   return guarded([&] {
     billow::ExampleOptions o;
@@ -230,6 +230,7 @@ std::string examplePattern(const std::string& name, const std::string& optionsJs
       o.triangles = j.value("triangles", o.triangles);
       o.size = j.value("size", o.size);
       o.pressure = j.value("pressure", o.pressure);
+      o.aspect = j.value("aspect", o.aspect);
     }
     return billow::writePatternJson(billow::examplePattern(name, o));
   });

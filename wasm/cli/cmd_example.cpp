@@ -16,9 +16,11 @@ int exampleCommand(const std::vector<std::string>& argv) {
         args.has("--help") ? stdout : stderr,
         "usage: billow example NAME [--triangles N] [--size M] [--aspect R] [--pressure PA] [--material NAME]\n"
         "                      --out FILE.json\n\n"
-        "Writes an example pattern: mylar (two discs of radius M), pillow (two rectangles M wide and R x M\n"
-        "long, squares by default),\n"
-        "sphere3 (three gores of a sphere of radius M), sphere3-internal (plus an internal panel).\n"
+        "Writes an example pattern. Flat-sewn: mylar (two discs of radius M), pillow (two rectangles M wide\n"
+        "and R x M long, squares by default), gusset-pillow (the same joined by a strip M/4 wide), ring (two\n"
+        "rings of outer radius M), letter-L, letter-C, star, heart (two pieces M high), cube (six squares of\n"
+        "side M). Gored: sphere3 (three gores of a sphere of radius M), sphere3-internal (plus an internal\n"
+        "panel).\n"
         "Defaults: 3000 triangles, 0.3 m, 1000 Pa, "
         "foil 25 um, E = 3 GPa. Materials: foil, pvc, ripstop, tpu.\n");
     return args.has("--help") ? 0 : 2;

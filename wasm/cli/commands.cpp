@@ -14,7 +14,7 @@ const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
       {"check", "validate a target mesh (closed, manifold, oriented, one piece)", checkCommand},
       {"inflate", "simulate a sewn pattern under pressure (the inflated shape and its wrinkles)", inflateCommand},
-      {"example", "write an example pattern (mylar, pillow, sphere3, sphere3-internal)", exampleCommand},
+      {"example", "write an example pattern (mylar, pillow, ring, star, cube, sphere3, ...)", exampleCommand},
       {"export", "write cut files (SVG, DXF), a printable tiled PDF and statistics for a pattern", exportCommand},
       {"segment", "cut a design's target along its seams into segments (areas, disks, problems)", segmentCommand},
       {"design", "make the sewn pattern of a design, inflate it and report the distance to the target", designCommand},

@@ -193,6 +193,31 @@ int outlineCrossing(const Points2& polygon) {
   return -1;
 }
 
+namespace {
+
+// An edge inside the panel between two outline points (a chord, as across a sharp tip or a strip one
+// triangle wide) would lie on its twin where the panel across the seam is meshed alike (the two mirror
+// pieces of a foil balloon): four triangles on one sewn edge. Each chord is split at its middle.
+void splitChords(Cdt& cdt, int outlinePoints) {
+  std::vector<char> onOutline(cdt.numVertices(), 0);
+  for (int i = 0; i < outlinePoints; ++i) onOutline[cdt.inputVertex(i)] = 1;
+  for (int splits = 0; splits < 4 * outlinePoints; ++splits) {
+    int found = -1, edge = -1;
+    for (int t = 0; t < cdt.numTriangles() && found < 0; ++t) {
+      const Cdt::Tri& T = cdt.tri(t);
+      if (!T.inside) continue;
+      for (int i = 0; i < 3 && found < 0; ++i)
+        if (!T.c[i] && onOutline[T.v[(i + 1) % 3]] && onOutline[T.v[(i + 2) % 3]]) found = t, edge = i;
+    }
+    if (found < 0) return;
+    const Cdt::Tri& T = cdt.tri(found);
+    cdt.insertPoint(0.5 * (cdt.point(T.v[(edge + 1) % 3]) + cdt.point(T.v[(edge + 2) % 3])), found);
+    onOutline.resize(cdt.numVertices(), 0);
+  }
+}
+
+}  // namespace
+
 TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& options) {
   const int n = static_cast<int>(boundary.rows());
   if (n < 3 || !(h > 0)) throw Error("panel.bad-input", "A panel needs at least 3 boundary points and h > 0.");
@@ -213,6 +238,7 @@ TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& opt
   ro.maxSteinerPoints = options.maxSteinerPoints;
   ro.allowBoundarySplits = false;
   refine(cdt, ro);
+  splitChords(cdt, n);
   const CdtResult r = cdt.result();
   TriMesh mesh;
   mesh.V = Vertices::Zero(r.points.rows(), 3);

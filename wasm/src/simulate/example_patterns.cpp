@@ -1,8 +1,11 @@
 #include "simulate/example_patterns.hpp"
 
+#include <array>
 #include <cmath>
+#include <functional>
 #include <map>
 
+#include "remesh/panel_mesher.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -167,10 +170,117 @@ Panel gore(double R, int columns, std::vector<std::pair<int, int>>& sides) {
   return p;
 }
 
+// A panel meshed inside a closed counterclockwise polygon, edges about h, the given polygon vertices kept as
+// corners.
+Panel outlinePanel(const remesh::Points2& polygon, const std::vector<int>& corners, double h) {
+  const remesh::ResampledBoundary boundary = remesh::resampleBoundary(polygon, corners, h);
+  const TriMesh m = remesh::meshPanel(boundary.points, h);
+  Panel p;
+  p.name = "front";
+  p.vertices = m.V.leftCols(2);
+  p.triangles = m.F;
+  return p;
+}
+
+double polygonArea(const remesh::Points2& polygon) {
+  double a = 0;
+  for (int i = 0, n = int(polygon.rows()); i < n; ++i) {
+    const int j = (i + 1) % n;
+    a += polygon(i, 0) * polygon(j, 1) - polygon(j, 0) * polygon(i, 1);
+  }
+  return 0.5 * a;
+}
+
+// Two mirror pieces cut to a polygon outline, about `triangles` in all.
+Pattern outlinePair(const remesh::Points2& polygon, const std::vector<int>& corners, const ExampleOptions& o) {
+  // Two panels of equilateral triangles of edge h (area sqrt(3)/4 h^2 each).
+  // (The mesher refines to edges within 1.25 h and 28 degrees: about 1.37 times that count, hence 1.17 h.)
+  const double h = 1.17 * std::sqrt(2 * 4 * polygonArea(polygon) / (std::sqrt(3.0) * o.triangles));
+  return twoSided(outlinePanel(polygon, corners, h), o);
+}
+
+remesh::Points2 toPoints(const std::vector<Eigen::Vector2d>& pts) {
+  remesh::Points2 P(pts.size(), 2);
+  for (size_t i = 0; i < pts.size(); ++i) P.row(i) = pts[i].transpose();
+  return P;
+}
+
+// Arc of radius r about the origin from angle a0 to a1, `n` pieces (n + 1 points, both ends).
+void appendArc(std::vector<Eigen::Vector2d>& pts, double r, double a0, double a1, int n) {
+  for (int k = 0; k <= n; ++k) {
+    const double a = a0 + (a1 - a0) * k / n;
+    pts.push_back(r * Eigen::Vector2d(std::cos(a), std::sin(a)));
+  }
+}
+
+// Flat ring of outer radius a and inner radius b: concentric rows zipped together, each about h apart.
+Panel annulus(double a, double b, double h) {
+  const int rows = std::max(2, int(std::lround((a - b) / h)) + 1);
+  std::vector<Eigen::Vector2d> pts;
+  std::vector<std::vector<int>> rings;
+  std::vector<std::vector<double>> angles;
+  for (int k = 0; k < rows; ++k) {
+    const double r = b + (a - b) * k / (rows - 1);
+    const int n = std::max(6, int(std::lround(2 * M_PI * r / h)));
+    std::vector<int> ring;
+    std::vector<double> ang;
+    for (int j = 0; j < n; ++j) {
+      const double th = 2 * M_PI * (j + 0.5 * (k % 2)) / n;
+      ring.push_back(int(pts.size()));
+      ang.push_back(th);
+      pts.push_back(r * Eigen::Vector2d(std::cos(th), std::sin(th)));
+    }
+    rings.push_back(ring);
+    angles.push_back(ang);
+  }
+  std::vector<Eigen::Vector3i> tris;
+  for (int k = 1; k < rows; ++k) zip(rings[k - 1], angles[k - 1], rings[k], angles[k], true, 2 * M_PI, tris);
+  Panel p;
+  p.name = "front";
+  p.vertices = toPoints(pts);
+  p.triangles = orient(p.vertices, tris);
+  return p;
+}
+
+// Panels made in place on a closed solid (a cube, a gusseted pillow): `place` puts a flat panel point on the
+// solid, the panel's counterclockwise side facing out. Boundary vertices that land on the same point are sewn.
+struct PlacedPanel {
+  Panel panel;
+  std::function<Eigen::Vector3d(const Eigen::Vector2d&)> place;
+};
+
+// Laid flat in the plane through `origin` spanned by u and v (u x v pointing out).
+std::function<Eigen::Vector3d(const Eigen::Vector2d&)> inPlane(const Eigen::Vector3d& origin, const Eigen::Vector3d& u,
+                                                               const Eigen::Vector3d& v) {
+  return [=](const Eigen::Vector2d& q) { return Eigen::Vector3d(origin + q.x() * u + q.y() * v); };
+}
+
+Pattern sewnWherePanelsMeet(const std::vector<PlacedPanel>& placed, double size, const ExampleOptions& o) {
+  Pattern p;
+  std::map<std::array<long long, 3>, std::vector<std::pair<int, int>>> at;  // quantized point -> (panel, vertex)
+  const double quantum = 1e-6 * size;
+  for (size_t i = 0; i < placed.size(); ++i) {
+    p.panels.push_back(placed[i].panel);
+    for (int v : boundaryVertices(placed[i].panel)) {
+      const Eigen::Vector3d x = placed[i].place(placed[i].panel.vertices.row(v).transpose());
+      at[{std::llround(x.x() / quantum), std::llround(x.y() / quantum), std::llround(x.z() / quantum)}].push_back(
+          {int(i), v});
+    }
+  }
+  for (const auto& [key, list] : at)
+    for (size_t k = 1; k < list.size(); ++k)
+      p.stitches.push_back({list[k - 1].first, list[k - 1].second, list[k].first, list[k].second});
+  p.material = o.material;
+  p.pressure = o.pressure;
+  return p;
+}
+
 }  // namespace
 
 const std::vector<std::string>& exampleNames() {
-  static const std::vector<std::string> names = {"mylar", "pillow", "sphere3", "sphere3-internal"};
+  static const std::vector<std::string> names = {"mylar",           "pillow", "gusset-pillow", "ring", "letter-L",
+                                                 "letter-C",        "star",   "heart",         "cube", "sphere3",
+                                                 "sphere3-internal"};
   return names;
 }
 
@@ -189,6 +299,92 @@ Pattern examplePattern(const std::string& name, const ExampleOptions& o) {
     const int nx = std::max(2, 2 * int(std::lround(std::sqrt(o.triangles / (16.0 * o.aspect)))));
     const int ny = std::max(2, 2 * int(std::lround(o.aspect * nx / 2)));  // square cells
     return twoSided(rectangle(o.size, o.aspect * o.size, nx, ny), o);
+  }
+  if (name == "gusset-pillow") {
+    // Front and back `size` by aspect x size, joined by a strip a quarter of `size` wide sewn around both
+    // (its two ends sewn together): square cells on the faces, the strip's columns at their outline points.
+    if (!(o.aspect >= 1 && o.aspect <= 100)) throw Error("example.bad-value", "Choose a pillow aspect from 1 to 100.");
+    const double W = o.size, g = 0.25 * o.size;
+    const double h = std::sqrt(2 * (2 * W * W * o.aspect + 2 * W * (1 + o.aspect) * g) / o.triangles);  // 2 per cell
+    const int nx = std::max(2, 2 * int(std::lround(W / h / 2)));
+    const int ny = std::max(2, 2 * int(std::lround(o.aspect * nx / 2)));
+    const int rows = std::max(2, 2 * int(std::lround(g / h / 2)));
+    // Square cells, the length rounded to whole cells, so that the strip's columns meet the faces' outline points.
+    const double cell = W / nx, L = ny * cell;
+    const int columns = 2 * (nx + ny);
+    const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+    std::vector<PlacedPanel> placed = {{rectangle(W, L, nx, ny), inPlane(0.5 * g * Z, X, Y)},
+                                       {rectangle(W, L, nx, ny), inPlane(-0.5 * g * Z, X, -Y)}};
+    placed[1].panel.name = "back";
+    // The strip goes around counterclockwise seen from the front, from the corner (-W/2, -L/2); its columns
+    // are `cell` apart, as the faces' outline points.
+    Panel strip = rectangle(columns * cell, g, columns, rows);
+    strip.name = "gusset";
+    const auto around = [=](const Eigen::Vector2d& q) {
+      double s = q.x() + columns * cell / 2;
+      const double sides[4] = {W, L, W, L};
+      const Eigen::Vector2d starts[4] = {{-W / 2, -L / 2}, {W / 2, -L / 2}, {W / 2, L / 2}, {-W / 2, L / 2}};
+      const Eigen::Vector2d along[4] = {{1, 0}, {0, 1}, {-1, 0}, {0, -1}};
+      int k = 0;
+      while (k < 3 && s > sides[k]) s -= sides[k++];
+      const Eigen::Vector2d xy = starts[k] + std::min(s, sides[k]) * along[k];
+      return Eigen::Vector3d(xy.x(), xy.y(), q.y());
+    };
+    placed.push_back({strip, around});
+    return sewnWherePanelsMeet(placed, o.size, o);
+  }
+  if (name == "cube") {
+    // Six squares of side `size`, each n by n square cells (n even: a diagonal through every corner).
+    const int n = std::max(2, 2 * int(std::lround(std::sqrt(o.triangles / 12.0) / 2)));
+    const Eigen::Vector3d X = Eigen::Vector3d::UnitX(), Y = Eigen::Vector3d::UnitY(), Z = Eigen::Vector3d::UnitZ();
+    const double c = o.size / 2;
+    const std::vector<std::array<Eigen::Vector3d, 3>> faces = {{c * X, Y, Z},  {-c * X, Z, Y}, {c * Y, Z, X},
+                                                               {-c * Y, X, Z}, {c * Z, X, Y},  {-c * Z, Y, X}};
+    std::vector<PlacedPanel> placed;
+    for (size_t f = 0; f < faces.size(); ++f) {
+      placed.push_back({rectangle(o.size, o.size, n, n), inPlane(faces[f][0], faces[f][1], faces[f][2])});
+      placed.back().panel.name = "face " + std::to_string(f + 1);
+    }
+    return sewnWherePanelsMeet(placed, o.size, o);
+  }
+  if (name == "ring") {
+    // A flat ring (a foil "O", a swim ring), outer radius `size`, hole half as wide.
+    const double a = o.size, b = 0.5 * o.size;
+    const double h = std::sqrt(2 * 4 * M_PI * (a * a - b * b) / (std::sqrt(3.0) * o.triangles));
+    return twoSided(annulus(a, b, h), o);
+  }
+  if (name == "letter-L" || name == "letter-C" || name == "star" || name == "heart") {
+    // Outlines `size` high: an L with arms a third as thick as long, a C (a ring 0.55 size thick cut open over
+    // 90 degrees), a five-pointed star (inner radius 0.45 of the outer), a heart.
+    const double s = o.size;
+    std::vector<Eigen::Vector2d> pts;
+    std::vector<int> corners;
+    if (name == "letter-L") {
+      pts = {{0, 0}, {0.7 * s, 0}, {0.7 * s, s / 3}, {s / 3, s / 3}, {s / 3, s}, {0, s}};
+      for (int i = 0; i < 6; ++i) corners.push_back(i);
+    } else if (name == "letter-C") {
+      const double a0 = M_PI / 4, a1 = 7 * M_PI / 4;
+      appendArc(pts, s / 2, a0, a1, 60);
+      corners = {0, 60, 61};
+      appendArc(pts, 0.225 * s, a1, a0, 30);
+      corners.push_back(int(pts.size()) - 1);
+    } else if (name == "star") {
+      for (int k = 0; k < 10; ++k) {
+        const double a = M_PI / 2 + M_PI * k / 5, r = (k % 2 ? 0.45 : 1.0) * s / 2;
+        corners.push_back(k);
+        pts.push_back(r * Eigen::Vector2d(std::cos(a), std::sin(a)));
+      }
+    } else {
+      // x = 16 sin^3 t, y = 13 cos t - 5 cos 2t - 2 cos 3t - cos 4t (about 34 across, 29 high), clockwise in t.
+      for (int k = 0; k < 200; ++k) {
+        const double t = -2 * M_PI * k / 200;
+        pts.push_back(s / 30 *
+                      Eigen::Vector2d(16 * std::pow(std::sin(t), 3),
+                                      13 * std::cos(t) - 5 * std::cos(2 * t) - 2 * std::cos(3 * t) - std::cos(4 * t)));
+      }
+      corners = {0, 100};  // the dip at the top and the point at the bottom
+    }
+    return outlinePair(toPoints(pts), corners, o);
   }
   if (name == "sphere3" || name == "sphere3-internal") {
     const int columns = std::max(3, int(std::lround(std::sqrt(M_PI * o.triangles / 8.0))));
@@ -221,7 +417,9 @@ Pattern examplePattern(const std::string& name, const ExampleOptions& o) {
     return p;
   }
   throw Error("example.unknown",
-              "There is no example called '" + name + "' (try mylar, pillow, sphere3 or sphere3-internal).");
+              "There is no example called '" + name +
+                  "' (try mylar, pillow, gusset-pillow, ring, letter-L, letter-C, star, heart, cube, sphere3 or "
+                  "sphere3-internal).");
 }
 
 MylarShape measureMylar(const SewnMesh& mesh, const Vertices& x) {

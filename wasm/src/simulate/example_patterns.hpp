@@ -2,6 +2,11 @@
 //   mylar   two discs of radius `size` sewn along their rims (Paulsen's Mylar balloon, DESIGN.md)
 //   pillow  two rectangles `size` wide and `aspect` x `size` long sewn along their edges (squares by default;
 //           long ones are the sausages and tubes of flat-cut inflatables)
+//   gusset-pillow  the pillow's two rectangles joined by a strip `size`/4 wide sewn around both (its ends sewn
+//           together); the length is rounded to whole square cells
+//   ring    two flat rings of outer radius `size`, the hole half as wide
+//   letter-L, letter-C, star, heart   two pieces `size` high cut to that outline (a foil letter, star, heart)
+//   cube    six squares of side `size`
 //   sphere3 three lune-shaped gores of a sphere of radius `size` (each spans 120 degrees of longitude)
 //   sphere3-internal  sphere3 plus an internal panel (a narrower gore) joining two of its seams
 #pragma once
@@ -15,7 +20,7 @@ namespace billow {
 struct ExampleOptions {
   int triangles = 3000;  // about this many in total
   double size = 0.3;     // [m], see above
-  double aspect = 1;     // pillow: length over width
+  double aspect = 1;     // pillow, gusset-pillow: length over width
   double pressure = 1000.0;
   Material material;  // foil defaults
 };
