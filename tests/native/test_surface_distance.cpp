@@ -166,6 +166,45 @@ TEST(DistanceJson, ReportLeadsWithTheWorseWayAndListsWhatIsLeftOut) {
   EXPECT_EQ(j["uncovered"][0]["where"].get<std::string>(), d.uncovered[0].where);
   EXPECT_EQ(j["uncovered"][0]["position"].size(), 3u);
   EXPECT_EQ(j["uncovered"][0]["message"].get<std::string>(), uncoveredMessage(d.uncovered[0]));
+  EXPECT_EQ(j["uncovered"][0]["helps"].get<std::string>(), uncoveredRemedy(d.uncovered[0]));
+}
+
+TEST(UncoveredRegions, WhatHelpsIsJudgedFromTheShape) {
+  // The unit sphere as the target, against three shapes a balloon could take.
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  const SurfaceProjector projector(sphere);
+  const auto messages = [&](const TriMesh& target, const SurfaceProjector& p, const Vertices& shape) {
+    std::string all;
+    for (const UncoveredRegion& r : measureDistance(target, p, shape, sphere.F, UpAxis{}).uncovered)
+      all += uncoveredMessage(r) + "\n";
+    return all;
+  };
+  // Too flat (a two-piece balloon of a round body): the target's poles lie off its flat sides, where the
+  // target is thick. A gusset helps.
+  Vertices flat = sphere.V;
+  flat.col(2) *= 0.5;
+  const std::string tooFlat = messages(sphere, projector, flat);
+  EXPECT_NE(tooFlat.find("too flat"), std::string::npos) << tooFlat;
+  EXPECT_NE(tooFlat.find("A gusset"), std::string::npos) << tooFlat;
+  EXPECT_EQ(uncoveredRemedy(measureDistance(sphere, projector, flat, sphere.F, UpAxis{}).uncovered.at(0)),
+            "a gusset or more panels");
+  // Over a hollow: the target dented at +x, the shape the round sphere. An internal connection helps.
+  TriMesh dented = sphere;
+  for (int v = 0; v < dented.numVertices(); ++v)
+    if (dented.V(v, 0) > 0.6) dented.V(v, 0) = 0.6 - 0.8 * (dented.V(v, 0) - 0.6);
+  const SurfaceProjector dentedProjector(dented);
+  const std::string hollow = messages(dented, dentedProjector, sphere.V);
+  EXPECT_NE(hollow.find("bulges over a hollow"), std::string::npos) << hollow;
+  EXPECT_NE(hollow.find("An internal connection"), std::string::npos) << hollow;
+  EXPECT_EQ(hollow.find("A gusset"), std::string::npos) << hollow;
+  // A thin fin (the target flattened across y) sticking out of the flat sides of a flat shape (flattened along
+  // z): both of the fin's sides are left out, so a seam around it helps, not a gusset.
+  TriMesh fin = sphere;
+  fin.V.col(1) *= 0.1;
+  const SurfaceProjector finProjector(fin);
+  const std::string thin = messages(fin, finProjector, flat);
+  EXPECT_NE(thin.find("A seam around"), std::string::npos) << thin;
+  EXPECT_EQ(thin.find("A gusset"), std::string::npos) << thin;
 }
 
 }  // namespace

@@ -37,7 +37,7 @@
 //     triangles, e.g. the outer surface; over all points when there are none) and distancesPtr() #V f64: per
 //     point [m], the signed distance to the target scaled by `scale` (positive outside); with surface triangles
 //     also the other way (targetCoverage): targetRms, targetMax, uncovered: [{ area (fraction of the target's),
-//     max, position (target units), radius, where, message }] (uncoveredRegions, io/distance_json.hpp),
+//     max, position (target units), radius, where, message, helps }] (uncoveredRegions, io/distance_json.hpp),
 //     uncoveredDistance (the threshold, over the diagonal) and uncoveredTrianglesPtr() #U x 3 i32 (the regions'
 //     target triangles as vertex indices, U = uncoveredTriangles(): what the inflated pane draws as left out)
 #include <emscripten/bind.h>

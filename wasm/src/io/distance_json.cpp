@@ -10,7 +10,8 @@ nlohmann::json uncoveredJson(const std::vector<UncoveredRegion>& regions) {
                     {"position", {r.farthest.x(), r.farthest.y(), r.farthest.z()}},
                     {"radius", r.radius},
                     {"where", r.where},
-                    {"message", uncoveredMessage(r)}});
+                    {"message", uncoveredMessage(r)},
+                    {"helps", uncoveredRemedy(r)}});
   return list;
 }
 

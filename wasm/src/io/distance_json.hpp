@@ -1,7 +1,7 @@
 // A shape's distance to its target (TwoWayDistance) as JSON, for the CLI's report.json and the embind module.
 //   uncoveredJson: [{ "area": fraction of the target's area, "max": over the diagonal,
 //                     "position": [x, y, z] (the farthest vertex, target units), "radius", "where",
-//                     "message" (uncoveredMessage) }]
+//                     "message" (uncoveredMessage), "helps" (uncoveredRemedy) }]
 //   distanceReportJson: { "rms", "max" (the worse way), "inflated_to_target": { "rms", "max" },
 //                         "target_to_inflated": { "rms", "max" }, "uncovered", "relative_to" }
 #pragma once

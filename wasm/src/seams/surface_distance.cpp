@@ -1,5 +1,6 @@
 #include "seams/surface_distance.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -139,12 +140,29 @@ std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen
   return merged;
 }
 
+std::string uncoveredRemedy(const UncoveredRegion& r) {
+  if (r.insideFraction > 0.5) return "an internal connection there";
+  if (r.offFlatSide) return "a gusset or more panels";
+  if (r.areaFraction > 0.3) return "more seams";
+  return r.parts > 1 ? "a seam around each part" : "a seam around that part";
+}
+
 std::string uncoveredMessage(const UncoveredRegion& r) {
   const auto percent = [](double f) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.1f %%", 100 * f);
     return std::string(buf);
   };
+  if (r.insideFraction > 0.5)
+    return "The inflated shape bulges over a hollow of the target " + r.where + ": " + percent(r.areaFraction) +
+           " of its surface, up to " + percent(r.maxDistance) +
+           " of its size inside the balloon. An internal connection there (a strip inside sewn to both sides) "
+           "pulls the surface in.";
+  if (r.offFlatSide)
+    return "The inflated shape is too flat for the target " + r.where + ": " + percent(r.areaFraction) +
+           " of its surface lies up to " + percent(r.maxDistance) +
+           " of its size beyond it. A gusset (a strip sewn in along the seam) or more panels let the balloon grow "
+           "thicker.";
   // Much of the target missed is no part left out but panels that cannot take its shape.
   if (r.areaFraction > 0.3)
     return "The inflated shape falls short of much of the target: " + percent(r.areaFraction) +
@@ -158,6 +176,68 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
          " of its surface, up to " + percent(r.maxDistance) +
          " of its size away. A seam around that part, or a panel of its own, lets the balloon reach it.";
 }
+
+namespace {
+
+// The winding number of a closed triangle surface about q (1 inside an outward surface, 0 outside): the sum of
+// its triangles' solid angles over 4 pi (Van Oosterom and Strackee's formula).
+double windingNumber(const Vertices& points, const Triangles& surface, const Eigen::Vector3d& q) {
+  double total = 0;
+  for (int f = 0; f < surface.rows(); ++f) {
+    const Eigen::Vector3d a = points.row(surface(f, 0)).transpose() - q, b = points.row(surface(f, 1)).transpose() - q,
+                          c = points.row(surface(f, 2)).transpose() - q;
+    const double la = a.norm(), lb = b.norm(), lc = c.norm();
+    total += 2 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb);
+  }
+  return total / (4 * M_PI);
+}
+
+// The share of a region's vertices (at most 64, spread over it) inside the shape.
+double insideFraction(const TriMesh& target, const UncoveredRegion& r, const Vertices& points,
+                      const Triangles& surface) {
+  std::vector<int> vertices;
+  for (int f : r.triangles)
+    for (int k = 0; k < 3; ++k) vertices.push_back(target.F(f, k));
+  std::sort(vertices.begin(), vertices.end());
+  vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
+  if (vertices.empty()) return 0;
+  const size_t stride = std::max<size_t>(1, vertices.size() / 64);
+  int inside = 0, n = 0;
+  for (size_t i = 0; i < vertices.size(); i += stride, ++n)
+    inside += std::abs(windingNumber(points, surface, target.V.row(vertices[i]).transpose())) > 0.5;
+  return double(inside) / n;
+}
+
+// Whether the region is a broad part of the target off the flat side of a flat shape. Flat: the shape's
+// thinnest principal extent under 0.7 of its middle one (inflated two-piece penguins and fish: 0.6-0.65). Off
+// its flat side: the farthest vertex lies from the shape along that thin axis (within 45 degrees). Broad: at
+// least 3 % of the target, its triangles facing one way, as the cap of a body does (their area-weighted mean
+// normal at least 0.3 of their area: a penguin's back left out by a balloon cut from the front 0.42, a cap up
+// to 115 degrees across); a fin, an ear or a leg faces both ways or all round (a fish's fins 0.17, a bunny's
+// ears 0.09).
+bool offFlatSide(const TriMesh& target, const UncoveredRegion& r, const TriMesh& shape,
+                 const SurfaceProjector& projector) {
+  const Vertices& points = shape.V;
+  if (points.rows() < 4 || r.triangles.empty() || r.areaFraction < 0.03) return false;
+  const Eigen::RowVector3d mean = points.colwise().mean();
+  const Eigen::Matrix3d C = (points.rowwise() - mean).transpose() * (points.rowwise() - mean);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> axes(C);
+  if (!(axes.eigenvalues()[0] < 0.5 * axes.eigenvalues()[1])) return false;  // variances: extents squared
+  const Eigen::Vector3d thin = axes.eigenvectors().col(0);
+  const Eigen::Vector3d away = r.farthest - position(shape, projector.project(r.farthest));
+  if (!(std::abs(away.dot(thin)) > std::sqrt(0.5) * away.norm())) return false;
+  Eigen::Vector3d facing = Eigen::Vector3d::Zero();
+  double area = 0;
+  for (int f : r.triangles) {
+    const Eigen::Vector3d a = target.V.row(target.F(f, 0)), b = target.V.row(target.F(f, 1)),
+                          c = target.V.row(target.F(f, 2));
+    facing += 0.5 * (b - a).cross(c - a);
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return facing.norm() >= 0.3 * area;
+}
+
+}  // namespace
 
 DistanceSummary TwoWayDistance::worse() const {
   return {std::max(inflatedToTarget.rms, targetToInflated.summary.rms),
@@ -173,6 +253,13 @@ TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& pr
   if (surface.rows() == 0) return d;
   d.targetToInflated = targetCoverage(target, points, surface, d.diagonal);
   d.uncovered = uncoveredRegions(target, d.targetToInflated.distances, d.diagonal, up);
+  if (d.uncovered.empty()) return d;
+  const TriMesh shape{points, surface};
+  const SurfaceProjector shapeProjector(shape);
+  for (UncoveredRegion& r : d.uncovered) {
+    r.insideFraction = insideFraction(target, r, points, surface);
+    r.offFlatSide = r.insideFraction <= 0.5 && offFlatSide(target, r, shape, shapeProjector);
+  }
   return d;
 }
 

@@ -44,11 +44,21 @@ struct UncoveredRegion {
   double radius = 0;                                   // of the ball about `farthest` holding the region (target units)
   std::string where;                                   // "near the top left of the shape"
   int parts = 1;                                       // separate parts that read the same `where`, merged
-  std::vector<int> triangles;                          // rows of the target's F: what is left out, to draw
+  // Share of its vertices inside the shape (measureDistance; 0 unknown): the shape spans over a hollow of the
+  // target there rather than falling short of a part, which says what helps (uncoveredMessage).
+  double insideFraction = 0;
+  // The shape is flat (a two-piece balloon) and this is a broad part of the target off its flat side: the
+  // balloon is too thin there (measureDistance).
+  bool offFlatSide = false;
+  std::vector<int> triangles;  // rows of the target's F: what is left out, to draw
 };
 
-// What a designer reads about a region: where, how much, and what helps.
+// What a designer reads about a region: where, how much, and what helps, judged from the shape: over a hollow,
+// an internal connection pulls the surface in; off the flat side of a flat balloon (a two-piece balloon too thin
+// for a round body), a gusset or more panels; short of a part (a limb, a wing), a seam around it.
 std::string uncoveredMessage(const UncoveredRegion& region);
+// What helps, in a few words ("a gusset or more panels"), for the inflated pane's one-line hint.
+std::string uncoveredRemedy(const UncoveredRegion& region);
 
 // What counts as left out: farther than 6 % of the diagonal, over at least 1 % of the target's area. Good
 // designs stay within it (the three-gore sphere falls 5.0 % short between its seams, the optimized teddy 5.5 %

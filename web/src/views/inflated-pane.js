@@ -229,6 +229,9 @@ export class InflatedPane extends Pane3D {
       const largest = Math.max(d.max, d.targetMax ?? 0);
       note = `Average ${formatDistance(d)}; largest ${(100 * largest).toFixed(2)} % of the size`;
       if (this.uncoveredMesh) note += '. Translucent blue: parts of the target the inflated shape leaves out';
+      // The largest part's remedy, judged by the solver from the shape (uncoveredRemedy).
+      const worst = d.uncovered?.[0];
+      if (worst?.helps) note += `. What helps ${worst.where}: ${worst.helps}`;
     }
     this.legendNote.textContent = note;
     this.legendNote.hidden = !note;
