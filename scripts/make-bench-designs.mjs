@@ -1,7 +1,9 @@
 // Makes the design benchmark's seam layouts (bench/designs, see bench/README.md "Pattern optimization"):
 // designs in the spirit of the paper's Table 1 on meshes from ../shared/meshes, with seams along plane
 // sections of the target (scripts/plane-sections.mjs: a middle seam, rings around limbs, bands across the
-// body).
+// body); and front/back designs as foil balloons are made (issue 24): the seam the app's Outline tool lays
+// around the shape seen from one side (two panels), or with a band width its gusset band (three panels),
+// laid by the app's own seam tool and editor over the worker's handlers (so they need build/wasm).
 //   node scripts/make-bench-designs.mjs            writes bench/designs/*.billow.json
 //   node scripts/make-bench-designs.mjs --sections MESH AXIS VALUE   prints the section loops of a plane
 import { writeFileSync, mkdirSync } from 'node:fs';
@@ -45,8 +47,82 @@ function elephant() {
   return design('../../../shared/meshes/koala.obj', 1.5, koalaSeams(readObj(join(MESHES, 'koala.obj')), { sidePoints: 120, bands }));
 }
 
+// Front/back class (issue 24, "flat-cut" in the manifest): the seam a designer gets by turning the view to
+// `towards` (the direction from the target to the viewer, in its own coordinates; these meshes stand Y up,
+// so the view and the target's coordinates agree) and clicking Outline, with `bandMm` > 0 its gusset band
+// that many mm wide on the cut pattern. The app's own SeamTool.layOutline lays it through the app's
+// SeamEditor (commitLoops, then refresh: the band's seam across has its ends moved onto the traced sides), with
+// the worker's handlers run here as the tests run them.
+const FLAT_CUT = [
+  // name, mesh, towards, band width in mm (0: one seam, two panels)
+  ['bunny-front-back', 'bunny.obj', [0, 0, 1], 0], // from its side: head, both ears, back and feet
+  ['spot-front-back', 'spot.obj', [1, 0, 0], 0], // the cow from its side: head, horns, four legs
+  ['penguin-front-back', 'penguin.obj', [0, 0, 1], 0], // from the front: flippers and feet
+  ['blub-front-back', 'blub.obj', [1, 0, 0], 0], // the fish from its side: fins and tail, a fish foil balloon
+  ['spot-gusset', 'spot.obj', [1, 0, 0], 36], // the cow from its side with a band 36 mm wide (4 % of its 0.92 m diagonal)
+];
+
+async function flatCut() {
+  const { handlers, run } = await import('../tests/node/worker-handlers.mjs');
+  const { SeamEditor } = await import('../web/src/app/seam-editor.js');
+  const { SeamTool } = await import('../web/src/tools/seam-tool.js');
+  const { History } = await import('../web/src/app/history.js');
+  const { heightScale } = await import('../web/src/app/up-axis.js');
+  const { Object3D, Vector3 } = await import('three');
+  const out = [];
+  for (const [name, file, towards, bandMm] of FLAT_CUT) {
+    const obj = readObj(join(MESHES, file));
+    const target = { positions: Float64Array.from(obj.v.flat()), indices: Int32Array.from(obj.t.flat()) };
+    for (const _ of handlers.setTarget(target)); // eslint-disable-line no-unused-vars
+    const b = bbox(obj);
+    const stats = { bbox_min: b.lo, bbox_max: b.hi };
+    const notes = [];
+    // The app as the seam editor and the seam tool see it (as tests/node/band.test.mjs): a history of designs,
+    // the worker's handlers in this thread, no views.
+    const app = {
+      target,
+      history: new History(design(`../../../shared/meshes/${file}`, 0.6, [])),
+      get design() {
+        return this.history.present;
+      },
+      commitDesign(d) {
+        this.history.apply(() => d);
+      },
+      amendDesign(d) {
+        this.history.amend(() => d);
+      },
+      scaleFor: (d) => heightScale(d, stats),
+      messages: { resolve: () => {}, show: (severity, text) => notes.push(`${severity}: ${text}`) },
+      client: { request: async (op, args) => run(handlers[op](args)) },
+      panes: { target: { seams: null, setSegments: () => {} } },
+      makePattern() {},
+      setPanelsOutdated() {},
+    };
+    const editor = new SeamEditor(app);
+    const pane = {
+      element: { addEventListener() {}, dataset: {} },
+      mesh: new Object3D(), // the target pane's: Y up, so no turn
+      viewDirection: () => new Vector3(...towards),
+      seams: { showCursor() {} },
+      requestRender() {},
+    };
+    const tool = new SeamTool(pane, editor);
+    tool.setBandWidth(bandMm);
+    tool.layOutline();
+    await editor.refresh();
+    const segments = editor.segmentation?.segments ?? [];
+    const problems = (editor.segmentation?.problems ?? []).map((p) => `${p.severity}: ${p.message}`);
+    console.log(`${name}: ${app.design.seams.length} seams, ${segments.length} segments${notes.length ? `; ${notes.join('; ')}` : ''}${problems.length ? `; ${problems.join('; ')}` : ''}`);
+    out.push([name, app.design]);
+  }
+  return out;
+}
+
 mkdirSync(OUT, { recursive: true });
-for (const [name, make] of [['teddy', teddy], ['elephant', elephant]]) {
-  writeFileSync(join(OUT, `${name}.billow.json`), `${JSON.stringify(make(), null, 1)}\n`);
+const only = process.argv.slice(2);
+const made = [['teddy', teddy()], ['elephant', elephant()], ...(await flatCut())];
+for (const [name, d] of made) {
+  if (only.length && !only.includes(name)) continue;
+  writeFileSync(join(OUT, `${name}.billow.json`), `${JSON.stringify(d, null, 1)}\n`);
   console.log(`bench/designs/${name}.billow.json`);
 }
