@@ -159,7 +159,7 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
            " of its size inside the balloon. An internal connection there (a strip inside sewn to both sides) "
            "pulls the surface in.";
   if (r.offFlatSide)
-    return "The inflated shape is too flat for the target " + r.where + ": " + percent(r.areaFraction) +
+    return "The inflated shape is too flat for part of the target " + r.where + ": " + percent(r.areaFraction) +
            " of its surface lies up to " + percent(r.maxDistance) +
            " of its size beyond it. A gusset (a strip sewn in along the seam) or more panels let the balloon grow "
            "thicker.";
