@@ -24,6 +24,13 @@ inline double panelArea(const Panel& p) {
   return a;
 }
 
+// All panels' flat area.
+inline double patternArea(const Pattern& pattern) {
+  double a = 0;
+  for (const Panel& p : pattern.panels) a += panelArea(p);
+  return a;
+}
+
 // A disk (Euler characteristic 1, no edge in more than two triangles) whose boundary edges run through
 // exactly its first `boundaryVertices` rows.
 inline void expectDisk(const Panel& p, int boundaryVertices, const std::string& what = "") {

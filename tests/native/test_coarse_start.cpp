@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 
+#include "panel_checks.hpp"
 #include "simulate/coarse_start.hpp"
 #include "simulate/example_patterns.hpp"
 #include "simulate/initial_shape.hpp"
@@ -14,20 +15,10 @@
 
 using namespace billow;
 using billow::test::example;
+using billow::test::patternArea;
 using billow::test::solve;
 
 namespace {
-
-double panelArea(const Pattern& p) {
-  double a = 0;
-  for (const auto& panel : p.panels)
-    for (int t = 0; t < panel.triangles.rows(); ++t) {
-      const Eigen::Vector2d u = panel.vertices.row(panel.triangles(t, 1)) - panel.vertices.row(panel.triangles(t, 0));
-      const Eigen::Vector2d w = panel.vertices.row(panel.triangles(t, 2)) - panel.vertices.row(panel.triangles(t, 0));
-      a += 0.5 * (u.x() * w.y() - u.y() * w.x());
-    }
-  return a;
-}
 
 // Vertices stitched to `count` or more panel vertices.
 int junctions(const SewnMesh& m, int count) {
@@ -43,7 +34,7 @@ class CoarsenExample : public ::testing::TestWithParam<const char*> {};
 TEST_P(CoarsenExample, SewsCleanlyWithFewerTrianglesAndTheSameJunctions) {
   const Pattern fine = example(GetParam(), 6000);
   const SewnMesh fineMesh = sewPattern(fine);
-  const double h = std::sqrt(4 * panelArea(fine) / (std::sqrt(3.0) * 1000));
+  const double h = std::sqrt(4 * patternArea(fine) / (std::sqrt(3.0) * 1000));
   const std::optional<Pattern> coarse = coarsenPattern(fine, fineMesh, h);
   ASSERT_TRUE(coarse.has_value());
   ASSERT_EQ(coarse->panels.size(), fine.panels.size());
@@ -54,7 +45,7 @@ TEST_P(CoarsenExample, SewsCleanlyWithFewerTrianglesAndTheSameJunctions) {
   EXPECT_GT(coarseMesh.numTriangles(), 500);
   EXPECT_LT(coarseMesh.numTriangles(), 2000);
   // Panel areas are kept up to the boundary's chords (every coarse boundary vertex is a fine one).
-  EXPECT_NEAR(panelArea(*coarse), panelArea(fine), 0.02 * panelArea(fine));
+  EXPECT_NEAR(patternArea(*coarse), patternArea(fine), 0.02 * patternArea(fine));
   for (size_t p = 0; p < fine.panels.size(); ++p) EXPECT_EQ(coarse->panels[p].internal, fine.panels[p].internal);
   // Junctions of three or more panel vertices (the gores' poles, the internal panel's seam) survive.
   EXPECT_EQ(junctions(coarseMesh, 3) > 0, junctions(fineMesh, 3) > 0);

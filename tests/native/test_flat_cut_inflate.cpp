@@ -7,12 +7,14 @@
 #include <map>
 #include <string>
 
+#include "panel_checks.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "simulate/coarse_start.hpp"
 #include "simulate/example_patterns.hpp"
 #include "test_support.hpp"
 
 using namespace billow;
+using billow::test::patternArea;
 using billow::test::solve;
 
 namespace {
@@ -23,17 +25,6 @@ Pattern flatCut(const std::string& name, int triangles, double aspect = 1) {
   eo.size = 0.3;
   eo.aspect = aspect;
   return examplePattern(name, eo);
-}
-
-double restArea(const Pattern& p) {
-  double a = 0;
-  for (const Panel& panel : p.panels)
-    for (int t = 0; t < panel.triangles.rows(); ++t) {
-      const Eigen::Vector2d u = panel.vertices.row(panel.triangles(t, 1)) - panel.vertices.row(panel.triangles(t, 0));
-      const Eigen::Vector2d w = panel.vertices.row(panel.triangles(t, 2)) - panel.vertices.row(panel.triangles(t, 0));
-      a += 0.5 * (u.x() * w.y() - u.y() * w.x());
-    }
-  return a;
 }
 
 std::vector<int> outlineVertices(const Panel& panel) {
@@ -78,7 +69,7 @@ TEST(FlatCutExamples, AreTheSolidsTheySayWithEveryPieceSewn) {
       SewnMesh mesh;
       ASSERT_NO_THROW(mesh = sewPattern(p));
       EXPECT_NEAR(mesh.numTriangles(), triangles, 0.25 * triangles);
-      if (area.count(name)) EXPECT_NEAR(restArea(p), area.at(name), 0.01 * area.at(name));
+      if (area.count(name)) EXPECT_NEAR(patternArea(p), area.at(name), 0.01 * area.at(name));
       // Closed: every outline vertex is sewn to another piece's (or, the gusset's two ends, its own).
       for (size_t k = 0; k < p.panels.size(); ++k)
         for (int v : outlineVertices(p.panels[k]))

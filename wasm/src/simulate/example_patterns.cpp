@@ -84,24 +84,28 @@ Pattern twoSided(const Panel& front, const ExampleOptions& o) {
   return p;
 }
 
+// Appends a circle of n points of radius r (turned by half a step when `shifted`, so that rows zip into
+// well-shaped triangles), its points' indices and angles.
+void appendCircle(double r, int n, bool shifted, std::vector<Eigen::Vector2d>& pts,
+                  std::vector<std::vector<int>>& rings, std::vector<std::vector<double>>& angles) {
+  std::vector<int> ring;
+  std::vector<double> ang;
+  for (int j = 0; j < n; ++j) {
+    const double th = 2 * M_PI * (j + 0.5 * shifted) / n;
+    ring.push_back(int(pts.size()));
+    ang.push_back(th);
+    pts.push_back(r * Eigen::Vector2d(std::cos(th), std::sin(th)));
+  }
+  rings.push_back(ring);
+  angles.push_back(ang);
+}
+
 // Disc of radius a: K concentric rings with 6k points each (vertex 0 = centre), about 6 K^2 triangles.
 Panel disc(double a, int K) {
   std::vector<Eigen::Vector2d> pts = {{0, 0}};
   std::vector<std::vector<int>> rings = {{0}};
   std::vector<std::vector<double>> angles = {{0}};
-  for (int k = 1; k <= K; ++k) {
-    const int n = 6 * k;
-    std::vector<int> ring;
-    std::vector<double> ang;
-    for (int j = 0; j < n; ++j) {
-      const double th = 2 * M_PI * (j + 0.5 * (k % 2)) / n;
-      ring.push_back(int(pts.size()));
-      ang.push_back(th);
-      pts.push_back(a * double(k) / K * Eigen::Vector2d(std::cos(th), std::sin(th)));
-    }
-    rings.push_back(ring);
-    angles.push_back(ang);
-  }
+  for (int k = 1; k <= K; ++k) appendCircle(a * double(k) / K, 6 * k, k % 2, pts, rings, angles);
   std::vector<Eigen::Vector3i> tris;
   for (int j = 0; j < 6; ++j) tris.push_back({0, rings[1][j], rings[1][(j + 1) % 6]});
   for (int k = 2; k <= K; ++k) zip(rings[k - 1], angles[k - 1], rings[k], angles[k], true, 2 * M_PI, tris);
@@ -221,17 +225,7 @@ Panel annulus(double a, double b, double h) {
   std::vector<std::vector<double>> angles;
   for (int k = 0; k < rows; ++k) {
     const double r = b + (a - b) * k / (rows - 1);
-    const int n = std::max(6, int(std::lround(2 * M_PI * r / h)));
-    std::vector<int> ring;
-    std::vector<double> ang;
-    for (int j = 0; j < n; ++j) {
-      const double th = 2 * M_PI * (j + 0.5 * (k % 2)) / n;
-      ring.push_back(int(pts.size()));
-      ang.push_back(th);
-      pts.push_back(r * Eigen::Vector2d(std::cos(th), std::sin(th)));
-    }
-    rings.push_back(ring);
-    angles.push_back(ang);
+    appendCircle(r, std::max(6, int(std::lround(2 * M_PI * r / h))), k % 2, pts, rings, angles);
   }
   std::vector<Eigen::Vector3i> tris;
   for (int k = 1; k < rows; ++k) zip(rings[k - 1], angles[k - 1], rings[k], angles[k], true, 2 * M_PI, tris);
