@@ -161,7 +161,8 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
   if (r.offFlatSide)
     return "The inflated shape is too flat for part of the target " + r.where + ": " + percent(r.areaFraction) +
            " of its surface lies up to " + percent(r.maxDistance) +
-           " of its size beyond it. A gusset (a strip sewn in along the seam) or more panels let the balloon grow "
+           " of its size outside the balloon. A gusset (a strip sewn in along the seam) or more panels let the balloon "
+           "grow "
            "thicker.";
   // Much of the target missed is no part left out but panels that cannot take its shape.
   if (r.areaFraction > 0.3)
