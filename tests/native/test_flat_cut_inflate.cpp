@@ -27,16 +27,6 @@ Pattern flatCut(const std::string& name, int triangles, double aspect = 1) {
   return examplePattern(name, eo);
 }
 
-std::vector<int> outlineVertices(const Panel& panel) {
-  std::map<std::pair<int, int>, int> edges;
-  for (int t = 0; t < panel.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) ++edges[std::minmax(panel.triangles(t, k), panel.triangles(t, (k + 1) % 3))];
-  std::vector<int> out;
-  for (const auto& [e, n] : edges)
-    if (n == 1) out.push_back(e.first), out.push_back(e.second);
-  return out;
-}
-
 struct Settled {
   InflateResult result;
   StartReport start;

@@ -13,8 +13,6 @@
 
 namespace billow::remesh {
 
-namespace {
-
 double signedArea(const Points2& P) {
   double a = 0;
   for (Eigen::Index i = 0; i < P.rows(); ++i) {
@@ -23,6 +21,8 @@ double signedArea(const Points2& P) {
   }
   return 0.5 * a;
 }
+
+namespace {
 
 double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 

@@ -51,14 +51,14 @@ double triangleArea(const TriMesh& m, int f) {
 
 }  // namespace
 
-TargetCoverage targetCoverage(const TriMesh& target, const Vertices& points, const Triangles& surface,
-                              double diagonal) {
+namespace {
+
+// targetCoverage against the shape's projector (measureDistance uses it again for what helps).
+TargetCoverage coverage(const TriMesh& target, const SurfaceProjector& shapeProjector, double diagonal) {
   TargetCoverage c;
   c.distances = Eigen::VectorXd::Zero(target.numVertices());
-  if (surface.rows() == 0 || target.numVertices() == 0) return c;
-  const TriMesh shape{points, surface};
-  const SurfaceProjector projector(shape);
-  for (int v = 0; v < target.numVertices(); ++v) projector.project(target.V.row(v).transpose(), &c.distances[v]);
+  if (target.numVertices() == 0) return c;
+  for (int v = 0; v < target.numVertices(); ++v) shapeProjector.project(target.V.row(v).transpose(), &c.distances[v]);
   Eigen::VectorXd area = Eigen::VectorXd::Zero(target.numVertices());
   for (int f = 0; f < target.numTriangles(); ++f)
     for (int k = 0; k < 3; ++k) area[target.F(f, k)] += triangleArea(target, f) / 3;
@@ -66,6 +66,19 @@ TargetCoverage targetCoverage(const TriMesh& target, const Vertices& points, con
   if (total > 0) c.summary.rms = std::sqrt(area.dot(c.distances.cwiseAbs2()) / total) / diagonal;
   c.summary.max = c.distances.maxCoeff() / diagonal;
   return c;
+}
+
+}  // namespace
+
+TargetCoverage targetCoverage(const TriMesh& target, const Vertices& points, const Triangles& surface,
+                              double diagonal) {
+  if (surface.rows() == 0) {
+    TargetCoverage c;
+    c.distances = Eigen::VectorXd::Zero(target.numVertices());
+    return c;
+  }
+  const TriMesh shape{points, surface};
+  return coverage(target, SurfaceProjector(shape), diagonal);
 }
 
 std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen::VectorXd& distances, double diagonal,
@@ -140,10 +153,32 @@ std::vector<UncoveredRegion> uncoveredRegions(const TriMesh& target, const Eigen
   return merged;
 }
 
+namespace {
+
+// What helps a region: one rule for the message and the pane's hint.
+enum class Remedy { InternalConnection, Gusset, MoreSeams, SeamAround };
+
+Remedy remedyOf(const UncoveredRegion& r) {
+  if (r.insideFraction > 0.5) return Remedy::InternalConnection;
+  if (r.offFlatSide) return Remedy::Gusset;
+  // Much of the target missed is no part left out but panels that cannot take its shape.
+  if (r.areaFraction > 0.3) return Remedy::MoreSeams;
+  return Remedy::SeamAround;
+}
+
+}  // namespace
+
 std::string uncoveredRemedy(const UncoveredRegion& r) {
-  if (r.insideFraction > 0.5) return "an internal connection there";
-  if (r.offFlatSide) return "a gusset or more panels";
-  if (r.areaFraction > 0.3) return "more seams";
+  switch (remedyOf(r)) {
+    case Remedy::InternalConnection:
+      return "an internal connection there";
+    case Remedy::Gusset:
+      return "a gusset or more panels";
+    case Remedy::MoreSeams:
+      return "more seams";
+    case Remedy::SeamAround:
+      break;
+  }
   return r.parts > 1 ? "a seam around each part" : "a seam around that part";
 }
 
@@ -153,19 +188,18 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
     std::snprintf(buf, sizeof buf, "%.1f %%", 100 * f);
     return std::string(buf);
   };
-  if (r.insideFraction > 0.5)
+  const Remedy remedy = remedyOf(r);
+  if (remedy == Remedy::InternalConnection)
     return "The inflated shape bulges over a hollow of the target " + r.where + ": " + percent(r.areaFraction) +
            " of its surface, up to " + percent(r.maxDistance) +
            " of its size inside the balloon. An internal connection there (a strip inside sewn to both sides) "
            "pulls the surface in.";
-  if (r.offFlatSide)
+  if (remedy == Remedy::Gusset)
     return "The inflated shape is too flat for part of the target " + r.where + ": " + percent(r.areaFraction) +
            " of its surface lies up to " + percent(r.maxDistance) +
-           " of its size outside the balloon. A gusset (a strip sewn in along the seam) or more panels let the balloon "
-           "grow "
-           "thicker.";
-  // Much of the target missed is no part left out but panels that cannot take its shape.
-  if (r.areaFraction > 0.3)
+           " of its size outside the balloon. A gusset (a strip sewn in along the seam) or more panels let the "
+           "balloon grow thicker.";
+  if (remedy == Remedy::MoreSeams)
     return "The inflated shape falls short of much of the target: " + percent(r.areaFraction) +
            " of its surface lies up to " + percent(r.maxDistance) + " of its size away, farthest " + r.where +
            ". More seams let the panels follow its shape.";
@@ -180,22 +214,10 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
 
 namespace {
 
-// The winding number of a closed triangle surface about q (1 inside an outward surface, 0 outside): the sum of
-// its triangles' solid angles over 4 pi (Van Oosterom and Strackee's formula).
-double windingNumber(const Vertices& points, const Triangles& surface, const Eigen::Vector3d& q) {
-  double total = 0;
-  for (int f = 0; f < surface.rows(); ++f) {
-    const Eigen::Vector3d a = points.row(surface(f, 0)).transpose() - q, b = points.row(surface(f, 1)).transpose() - q,
-                          c = points.row(surface(f, 2)).transpose() - q;
-    const double la = a.norm(), lb = b.norm(), lc = c.norm();
-    total += 2 * std::atan2(a.dot(b.cross(c)), la * lb * lc + a.dot(b) * lc + b.dot(c) * la + c.dot(a) * lb);
-  }
-  return total / (4 * M_PI);
-}
-
-// The share of a region's vertices (at most 64, spread over it) inside the shape.
-double insideFraction(const TriMesh& target, const UncoveredRegion& r, const Vertices& points,
-                      const Triangles& surface) {
+// The share of a region's vertices (at most 64, spread over it) inside the shape: negative signed distance to
+// it (signedDistances, as the inflated shape's own is read against the target).
+double insideFraction(const TriMesh& target, const UncoveredRegion& r, const TriMesh& shape,
+                      const SurfaceProjector& shapeProjector) {
   std::vector<int> vertices;
   for (int f : r.triangles)
     for (int k = 0; k < 3; ++k) vertices.push_back(target.F(f, k));
@@ -203,10 +225,10 @@ double insideFraction(const TriMesh& target, const UncoveredRegion& r, const Ver
   vertices.erase(std::unique(vertices.begin(), vertices.end()), vertices.end());
   if (vertices.empty()) return 0;
   const size_t stride = std::max<size_t>(1, vertices.size() / 64);
-  int inside = 0, n = 0;
-  for (size_t i = 0; i < vertices.size(); i += stride, ++n)
-    inside += std::abs(windingNumber(points, surface, target.V.row(vertices[i]).transpose())) > 0.5;
-  return double(inside) / n;
+  Vertices samples((vertices.size() + stride - 1) / stride, 3);
+  for (size_t i = 0; i < vertices.size(); i += stride) samples.row(i / stride) = target.V.row(vertices[i]);
+  const Eigen::VectorXd d = signedDistances(shape, shapeProjector, samples);
+  return double((d.array() < 0).count()) / double(d.size());
 }
 
 // Whether the region is a broad part of the target off the flat side of a flat shape. Flat: the shape's
@@ -252,14 +274,13 @@ TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& pr
   d.signedDistances = signedDistances(target, projector, points);
   d.inflatedToTarget = summarizeDistances(d.signedDistances, surface, d.diagonal);
   if (surface.rows() == 0) return d;
-  d.targetToInflated = targetCoverage(target, points, surface, d.diagonal);
-  d.uncovered = uncoveredRegions(target, d.targetToInflated.distances, d.diagonal, up);
-  if (d.uncovered.empty()) return d;
   const TriMesh shape{points, surface};
   const SurfaceProjector shapeProjector(shape);
+  d.targetToInflated = coverage(target, shapeProjector, d.diagonal);
+  d.uncovered = uncoveredRegions(target, d.targetToInflated.distances, d.diagonal, up);
   for (UncoveredRegion& r : d.uncovered) {
-    r.insideFraction = insideFraction(target, r, points, surface);
-    r.offFlatSide = r.insideFraction <= 0.5 && offFlatSide(target, r, shape, shapeProjector);
+    r.insideFraction = insideFraction(target, r, shape, shapeProjector);
+    r.offFlatSide = offFlatSide(target, r, shape, shapeProjector);
   }
   return d;
 }

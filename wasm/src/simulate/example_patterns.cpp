@@ -61,27 +61,19 @@ Panel mirrored(const Panel& p, const std::string& name) {
   return q;
 }
 
-std::vector<int> boundaryVertices(const Panel& p) {
-  std::vector<int> count(p.vertices.rows(), 0);
-  std::map<std::pair<int, int>, int> edges;
-  for (int t = 0; t < p.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) ++edges[std::minmax(p.triangles(t, k), p.triangles(t, (k + 1) % 3))];
-  std::vector<char> on(p.vertices.rows(), 0);
-  for (const auto& [e, n] : edges)
-    if (n == 1) on[e.first] = on[e.second] = 1;
-  std::vector<int> out;
-  for (int v = 0; v < int(on.size()); ++v)
-    if (on[v]) out.push_back(v);
-  return out;
-}
-
 Pattern twoSided(const Panel& front, const ExampleOptions& o) {
   Pattern p;
   p.panels = {front, mirrored(front, "back")};
-  for (int v : boundaryVertices(front)) p.stitches.push_back({0, v, 1, v});
+  for (int v : outlineVertices(front)) p.stitches.push_back({0, v, 1, v});
   p.material = o.material;
   p.pressure = o.pressure;
   return p;
+}
+
+remesh::Points2 toPoints(const std::vector<Eigen::Vector2d>& pts) {
+  remesh::Points2 P(pts.size(), 2);
+  for (size_t i = 0; i < pts.size(); ++i) P.row(i) = pts[i].transpose();
+  return P;
 }
 
 // Appends a circle of n points of radius r (turned by half a step when `shifted`, so that rows zip into
@@ -111,8 +103,7 @@ Panel disc(double a, int K) {
   for (int k = 2; k <= K; ++k) zip(rings[k - 1], angles[k - 1], rings[k], angles[k], true, 2 * M_PI, tris);
   Panel p;
   p.name = "front";
-  p.vertices.resize(pts.size(), 2);
-  for (size_t i = 0; i < pts.size(); ++i) p.vertices.row(i) = pts[i].transpose();
+  p.vertices = toPoints(pts);
   p.triangles = orient(p.vertices, tris);
   return p;
 }
@@ -168,8 +159,7 @@ Panel gore(double R, int columns, std::vector<std::pair<int, int>>& sides) {
   std::vector<Eigen::Vector3i> tris;
   for (int k = 0; k < columns; ++k) zip(cols[k], params[k], cols[k + 1], params[k + 1], false, 0, tris);
   Panel p;
-  p.vertices.resize(pts.size(), 2);
-  for (size_t i = 0; i < pts.size(); ++i) p.vertices.row(i) = pts[i].transpose();
+  p.vertices = toPoints(pts);
   p.triangles = orient(p.vertices, tris);
   return p;
 }
@@ -186,27 +176,12 @@ Panel outlinePanel(const remesh::Points2& polygon, const std::vector<int>& corne
   return p;
 }
 
-double polygonArea(const remesh::Points2& polygon) {
-  double a = 0;
-  for (int i = 0, n = int(polygon.rows()); i < n; ++i) {
-    const int j = (i + 1) % n;
-    a += polygon(i, 0) * polygon(j, 1) - polygon(j, 0) * polygon(i, 1);
-  }
-  return 0.5 * a;
-}
-
 // Two mirror pieces cut to a polygon outline, about `triangles` in all.
 Pattern outlinePair(const remesh::Points2& polygon, const std::vector<int>& corners, const ExampleOptions& o) {
   // Two panels of equilateral triangles of edge h (area sqrt(3)/4 h^2 each).
   // (The mesher refines to edges within 1.25 h and 28 degrees: about 1.37 times that count, hence 1.17 h.)
-  const double h = 1.17 * std::sqrt(2 * 4 * polygonArea(polygon) / (std::sqrt(3.0) * o.triangles));
+  const double h = 1.17 * std::sqrt(2 * 4 * remesh::signedArea(polygon) / (std::sqrt(3.0) * o.triangles));
   return twoSided(outlinePanel(polygon, corners, h), o);
-}
-
-remesh::Points2 toPoints(const std::vector<Eigen::Vector2d>& pts) {
-  remesh::Points2 P(pts.size(), 2);
-  for (size_t i = 0; i < pts.size(); ++i) P.row(i) = pts[i].transpose();
-  return P;
 }
 
 // Arc of radius r about the origin from angle a0 to a1, `n` pieces (n + 1 points, both ends).
@@ -255,7 +230,7 @@ Pattern sewnWherePanelsMeet(const std::vector<PlacedPanel>& placed, double size,
   const double quantum = 1e-6 * size;
   for (size_t i = 0; i < placed.size(); ++i) {
     p.panels.push_back(placed[i].panel);
-    for (int v : boundaryVertices(placed[i].panel)) {
+    for (int v : outlineVertices(placed[i].panel)) {
       const Eigen::Vector3d x = placed[i].place(placed[i].panel.vertices.row(v).transpose());
       at[{std::llround(x.x() / quantum), std::llround(x.y() / quantum), std::llround(x.z() / quantum)}].push_back(
           {int(i), v});

@@ -4,7 +4,6 @@
 #include <Eigen/Sparse>
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <random>
 
 #include "simulate/enclosed_volume.hpp"
@@ -145,15 +144,8 @@ namespace {
 // high. Empty when the solve fails.
 Eigen::VectorXd domeHeights(const Panel& panel) {
   const int nv = int(panel.vertices.rows());
-  std::map<std::pair<int, int>, int> edges;  // triangles per edge: 1 on the outline
-  for (int t = 0; t < panel.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int i = panel.triangles(t, k), j = panel.triangles(t, (k + 1) % 3);
-      ++edges[{std::min(i, j), std::max(i, j)}];
-    }
   std::vector<char> boundary(nv, 0);
-  for (const auto& [e, n] : edges)
-    if (n == 1) boundary[e.first] = boundary[e.second] = 1;
+  for (int v : outlineVertices(panel)) boundary[v] = 1;
   std::vector<int> index(nv, -1);
   int ni = 0;
   for (int v = 0; v < nv; ++v)

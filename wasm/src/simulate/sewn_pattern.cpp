@@ -206,6 +206,15 @@ Triangles outerTriangles(const SewnMesh& mesh) {
   return out;
 }
 
+std::vector<int> outlineVertices(const Panel& panel) {
+  std::vector<char> on(panel.vertices.rows(), 0);
+  for (const auto& [key, edge] : boundaryEdges(panel)) on[key.first] = on[key.second] = 1;
+  std::vector<int> out;
+  for (int v = 0; v < int(on.size()); ++v)
+    if (on[v]) out.push_back(v);
+  return out;
+}
+
 long long numTriangles(const Pattern& pattern) {
   long long n = 0;
   for (const Panel& panel : pattern.panels) n += panel.triangles.rows();

@@ -74,6 +74,9 @@ struct SewnMesh {
 // Sewn edges of different rest length (beyond 1e-3 relative) are reported in SewnMesh::warnings.
 SewnMesh sewPattern(const Pattern& pattern, const PatternLimits& limits = {});
 
+// The panel's vertices on its outline (on an edge of one triangle only), ascending.
+std::vector<int> outlineVertices(const Panel& panel);
+
 // Triangles of all panels (the size of the simulation mesh a pattern makes).
 long long numTriangles(const Pattern& pattern);
 
