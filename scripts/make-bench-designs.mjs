@@ -63,10 +63,9 @@ const FLAT_CUT = [
 ];
 
 async function flatCut() {
-  const { handlers, run } = await import('../tests/node/worker-handlers.mjs');
+  const { HeadlessApp, handlers } = await import('../tests/node/worker-handlers.mjs');
   const { SeamEditor } = await import('../web/src/app/seam-editor.js');
   const { SeamTool } = await import('../web/src/tools/seam-tool.js');
-  const { History } = await import('../web/src/app/history.js');
   const { heightScale } = await import('../web/src/app/up-axis.js');
   const { Object3D, Vector3 } = await import('three');
   const out = [];
@@ -76,28 +75,7 @@ async function flatCut() {
     for (const _ of handlers.setTarget(target)); // eslint-disable-line no-unused-vars
     const b = bbox(obj);
     const stats = { bbox_min: b.lo, bbox_max: b.hi };
-    const notes = [];
-    // The app as the seam editor and the seam tool see it (as tests/node/band.test.mjs): a history of designs,
-    // the worker's handlers in this thread, no views.
-    const app = {
-      target,
-      history: new History(design(`../../../shared/meshes/${file}`, 0.6, [])),
-      get design() {
-        return this.history.present;
-      },
-      commitDesign(d) {
-        this.history.apply(() => d);
-      },
-      amendDesign(d) {
-        this.history.amend(() => d);
-      },
-      scaleFor: (d) => heightScale(d, stats),
-      messages: { resolve: () => {}, show: (severity, text) => notes.push(`${severity}: ${text}`) },
-      client: { request: async (op, args) => run(handlers[op](args)) },
-      panes: { target: { seams: null, setSegments: () => {} } },
-      makePattern() {},
-      setPanelsOutdated() {},
-    };
+    const app = new HeadlessApp(target, design(`../../../shared/meshes/${file}`, 0.6, []), (d) => heightScale(d, stats));
     const editor = new SeamEditor(app);
     const pane = {
       element: { addEventListener() {}, dataset: {} },
@@ -112,7 +90,7 @@ async function flatCut() {
     await editor.refresh();
     const segments = editor.segmentation?.segments ?? [];
     const problems = (editor.segmentation?.problems ?? []).map((p) => `${p.severity}: ${p.message}`);
-    console.log(`${name}: ${app.design.seams.length} seams, ${segments.length} segments${notes.length ? `; ${notes.join('; ')}` : ''}${problems.length ? `; ${problems.join('; ')}` : ''}`);
+    console.log(`${name}: ${app.design.seams.length} seams, ${segments.length} segments${app.notes.map((n) => `; ${n.severity}: ${n.text}`).join('')}${problems.length ? `; ${problems.join('; ')}` : ''}`);
     out.push([name, app.design]);
   }
   return out;

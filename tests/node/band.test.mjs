@@ -10,10 +10,9 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readdirSync } from 'node:fs';
 import { SHARED_MESHES, loadSharedMesh } from './obj.mjs';
-import { handlers, run } from './worker-handlers.mjs';
+import { HeadlessApp, handlers, run } from './worker-handlers.mjs';
 import { bandNames, bandSeamPoints, lowestPoint, outlineBandLoops, sectionBandLoops, distanceToZeroSet } from '../../web/src/app/band.js';
 import { SeamEditor } from '../../web/src/app/seam-editor.js';
-import { History } from '../../web/src/app/history.js';
 import * as cmd from '../../web/src/app/commands.js';
 import { newDesign, parseDesign } from '../../web/src/app/design.js';
 import { encodeDesign, decodeDesign } from '../../web/src/app/share.js';
@@ -96,30 +95,11 @@ for (const file of readdirSync(MESHES).filter((f) => f.endsWith('.obj')).sort())
   });
 }
 
-// The app as the seam editor sees it: a history of designs, the worker's handlers in the same thread, no views.
-class App {
+// The unit sphere 0.5 m tall: 1 mm is 0.004 units.
+class App extends HeadlessApp {
   constructor(target, design) {
-    this.target = target;
-    this.history = new History(design);
-    this.notes = [];
-    this.messages = { resolve: () => {}, show: (severity, text) => this.notes.push({ severity, text }) };
-    this.client = { request: async (op, args) => run(handlers[op](args)) };
-    this.panes = { target: { seams: null, setSegments: () => {} } };
+    super(target, design, () => 0.25);
   }
-  get design() {
-    return this.history.present;
-  }
-  commitDesign(design, { mergeKey = null } = {}) {
-    this.history.apply(() => design, { mergeKey });
-  }
-  amendDesign(design) {
-    this.history.amend(() => design);
-  }
-  scaleFor() {
-    return 0.25; // the unit sphere 0.5 m tall: 1 mm is 0.004 units
-  }
-  makePattern() {}
-  setPanelsOutdated() {}
 }
 
 const deepFreeze = (x) => {

@@ -1,10 +1,37 @@
 // The worker's request handlers over the solver module, run in Node as the worker runs them: each handler is
-// a generator of progress steps; `run` drives one to its result.
+// a generator of progress steps; `run` drives one to its result. HeadlessApp is the app as the seam editor and
+// the seam tool see it, over these handlers.
 import { loadApi } from './load-module.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
+import { History } from '../../web/src/app/history.js';
 
 export const api = await loadApi();
 export const handlers = createHandlers(api);
 export const run = (generator) => {
   for (let step = generator.next(); ; step = generator.next()) if (step.done) return step.value;
 };
+
+// The app as the seam editor sees it: a history of designs, the worker's handlers in the same thread, no views.
+// scaleFor(design): target units per metre of the design (the app's heightScale).
+export class HeadlessApp {
+  constructor(target, design, scaleFor) {
+    this.target = target;
+    this.history = new History(design);
+    this.notes = [];
+    this.messages = { resolve: () => {}, show: (severity, text) => this.notes.push({ severity, text }) };
+    this.client = { request: async (op, args) => run(handlers[op](args)) };
+    this.panes = { target: { seams: null, setSegments: () => {} } };
+    this.scaleFor = scaleFor;
+  }
+  get design() {
+    return this.history.present;
+  }
+  commitDesign(design, { mergeKey = null } = {}) {
+    this.history.apply(() => design, { mergeKey });
+  }
+  amendDesign(design) {
+    this.history.amend(() => design);
+  }
+  makePattern() {}
+  setPanelsOutdated() {}
+}
