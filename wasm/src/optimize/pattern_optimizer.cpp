@@ -19,6 +19,13 @@ namespace {
 double nowMs() {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now().time_since_epoch()).count();
 }
+
+// A line-search trial needs only E, which settles long before the alignment's step does; the accepted trial is
+// aligned to the default tolerance before its gradient.
+constexpr double kTrialAlignment = 1e-6;
+// A refused trial whose equilibrium lies this far (x the model size) from the predicted one, and further than 1.5
+// times the predicted move, snapped into another equilibrium.
+constexpr double kSnapDistance = 1e-2;
 }  // namespace
 
 const char* toString(OptimizeState s) {
@@ -254,7 +261,7 @@ bool PatternOptimizer::rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) con
 }
 
 bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton,
-                                        bool asCut) {
+                                        bool asCut, double alignTolerance, double snapLimit, bool* snapped) {
   if (!X.allFinite()) return false;
   SewnMesh mesh = mesh_;
   if (!rebuildRest(X, mesh)) return false;
@@ -284,15 +291,22 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   else
     solver_ = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
   InflationSolver& solver = own ? *own : *solver_;
-  while (solver.step(io.maxIterations) == InflateState::Running) {
+  if (snapped) *snapped = false;
+  while (solver.step(snapLimit > 0 ? 1 : io.maxIterations) == InflateState::Running) {
+    if (snapLimit > 0 && (solver.positions() - start).rowwise().norm().maxCoeff() > snapLimit) {
+      if (snapped) *snapped = true;
+      x = solver.positions();
+      break;
+    }
   }
   ++timings_.equilibriumSolves;
   timings_.equilibriumMs += nowMs() - t0;
   if (newton) *newton = solver.iterations();
+  if (snapped && *snapped) return false;
   if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) return false;
   x = solver.positions();
   const double t1 = nowMs();
-  alignRigid(*objective_, X, x);
+  alignRigid(*objective_, X, x, 300, alignTolerance);
   timings_.alignMs += nowMs() - t1;
   return x.allFinite();
 }
@@ -443,7 +457,9 @@ bool PatternOptimizer::iterate() {
   double alpha = (m == 0 || maxMove > cap) ? cap / std::max(maxMove, 1e-300) : 1.0;
   if (m > 0) alpha = std::min(alpha, 1.0);
   // A jump: halving the step no longer brings E down towards E_ (the excess E - E_ shrank by less than 10 %
-  // over the last `jumps` settled trials): E(X) is discontinuous here, see resettle().
+  // over the last `jumps` settled trials), or the refused trial's equilibrium is far from where it was predicted
+  // to be (the balloon snapped into another equilibrium); two in a row: E(X) is discontinuous here, see
+  // resettle().
   double lastExcess = INFINITY;
   int jumps = 0;
   // Backtracking: after a trial with a finite E the next alpha minimizes the quadratic through E_, the slope
@@ -455,11 +471,19 @@ bool PatternOptimizer::iterate() {
     followBoundary(X);
     Vertices x;
     int newton = 0;
-    if (!solveEquilibrium(X, predictEquilibrium(X), x, &newton)) {
-      ++timings_.rejectedTrials;
+    const Vertices predicted = predictEquilibrium(X);
+    const double predictedMove = (predicted - x_).rowwise().norm().maxCoeff();
+    bool snapped = false;
+    if (!solveEquilibrium(X, predicted, x, &newton, false, kTrialAlignment,
+                          std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize()), &snapped)) {
+      ++timings_.rejectedTrials, timings_.snappedTrials += snapped;
+      // A trial abandoned on its way into another equilibrium counts as a jump (its E would be far off).
+      jumps = snapped ? jumps + 1 : 0, lastExcess = INFINITY;
+      if (snapped) next = 0.1 * alpha;
+      if (jumps >= 2 && resettle(x)) return true;
       continue;
     }
-    const double E = energy(X, x, nullptr);
+    double E = energy(X, x, nullptr);
     if (!(std::isfinite(E) && E <= E_ + 1e-4 * alpha * slope)) {
       ++timings_.rejectedTrials;
       if (std::isfinite(E) && E > E_ + alpha * slope) {
@@ -467,11 +491,20 @@ bool PatternOptimizer::iterate() {
         next = std::clamp(quadratic, 0.1 * alpha, 0.5 * alpha);
       }
       const double excess = E - E_;
-      jumps = std::isfinite(E) && excess > 1e-3 * std::abs(E_) && excess > 0.9 * lastExcess ? jumps + 1 : 0;
+      snapped = (x - predicted).rowwise().norm().maxCoeff() >
+                std::max(1.5 * predictedMove, kSnapDistance * objective_->modelSize());
+      jumps =
+          std::isfinite(E) && excess > 1e-3 * std::abs(E_) && (excess > 0.9 * lastExcess || snapped) ? jumps + 1 : 0;
       lastExcess = std::isfinite(E) ? excess : INFINITY;
       if (jumps >= 2 && resettle(x)) return true;
       continue;
     }
+    // The adjoint gradient needs the alignment's minimum itself (rigid_align.hpp); aligning further only
+    // lowers E, so the accepted trial stays accepted.
+    const double t1 = nowMs();
+    alignRigid(*objective_, X, x);
+    timings_.alignMs += nowMs() - t1;
+    E = energy(X, x, nullptr);
     Eigen::VectorXd g;
     variableGradient(X, x, g);
     if (!g.allFinite()) return false;

@@ -177,9 +177,10 @@ struct OptimizeRecord {
 struct OptimizeTimings {
   double setupMs = 0, equilibriumMs = 0, alignMs = 0, adjointMs = 0, objectiveMs = 0, totalMs = 0;
   int equilibriumSolves = 0, rejectedTrials = 0;
-  int resettlings = 0;  // see OptimizeRecord::resettled
-  int remeshings = 0;   // remeshing steps taken
-  double remeshMs = 0;  // their time, their equilibrium solves included
+  int snappedTrials = 0;  // line-search trials abandoned on their way into another equilibrium
+  int resettlings = 0;    // see OptimizeRecord::resettled
+  int remeshings = 0;     // remeshing steps taken
+  double remeshMs = 0;    // their time, their equilibrium solves included
 };
 
 class PatternOptimizer {
@@ -236,7 +237,10 @@ class PatternOptimizer {
   // False when there was none (or the fine mesh failed: the coarse one is kept).
   bool refine();
   // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
-  bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton, bool asCut = false);
+  // alignTolerance: of the rigid alignment, x the model size (rigid_align.hpp). snapLimit > 0: a solve whose
+  // Newton iterate moves further than that from start is abandoned (false, *snapped set, x where it was).
+  bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton, bool asCut = false,
+                        double alignTolerance = 1e-12, double snapLimit = 0, bool* snapped = nullptr);
   void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
   // Where the equilibrium of panels X should be to first order from the current one (options.predictEquilibrium;
   // x_ when there is no factorization at the current iterate).
