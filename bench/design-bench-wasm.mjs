@@ -1,7 +1,7 @@
 // The design benchmark in wasm (Node), as the app's worker runs it (bench/README.md "Pattern optimization"):
 // per design of bench/designs/manifest.json, through the worker's handlers (web/src/worker/handlers.js),
 // so every iterate's shape and its distance to the target are computed as the app streams them.
-//   node bench/design-bench-wasm.mjs [--json] [--designs sphere3,teddy] [--max-seconds S] [--triangles N]
+//   node bench/design-bench-wasm.mjs [--json] [--designs sphere3,teddy] [--max-seconds S] [--triangles N] [--trace]
 // --triangles overrides every design's element count (quick runs), as in the native bench.
 // Needs build/wasm/billow_node.{cjs,wasm}; BILLOW_WASM_DIR overrides.
 import { readFileSync } from 'node:fs';
@@ -15,6 +15,7 @@ const HERE = dirname(fileURLToPath(import.meta.url));
 const args = process.argv.slice(2);
 const option = (name, fallback) => (args.includes(name) ? args[args.indexOf(name) + 1] : fallback);
 const asJson = args.includes('--json');
+const trace = args.includes('--trace');  // each iterate's status on stderr
 const only = option('--designs', '').split(',').filter(Boolean);
 const maxSeconds = Number(option('--max-seconds', 600));
 const triangles = Number(option('--triangles', 0));
@@ -54,6 +55,10 @@ function run(entry) {
     // Preview time counts from the start of the job (the target, the panels and the first inflation), as
     // the designer waits for it; iteration 0 arrives only after that first inflation.
     shapes.push({ iteration: v.iteration ?? 0, seconds: (performance.now() - t0) / 1000, positions: v.positions });
+    if (trace) {
+      const scalars = Object.entries(v).filter(([, x]) => typeof x === 'number' || typeof x === 'string' || typeof x === 'boolean');
+      console.error(`${entry.name} ${((performance.now() - t0) / 1000).toFixed(2)} s ${scalars.filter(([k]) => k !== 'stage').map(([k, x]) => `${k} ${typeof x === 'number' ? +x.toPrecision(4) : x}`).join(' ')}`);
+    }
     if ((performance.now() - tStart) / 1000 > maxSeconds) break;
   }
   const seconds = (performance.now() - tStart) / 1000;

@@ -24,6 +24,10 @@ test('each optimizer iterate streams its shape and its distance to the target, t
   const [first, ...rest] = iterates;
   assert.ok(first.triangles.length > 0 && first.outer.length === first.triangles.length / 3, 'the sewn mesh comes first');
   const n = first.positions.length / 3;
+  // Then the flattened panels inflated, before any optimizer step: the first look at the balloon.
+  assert.equal(rest[0].iteration, 0, 'the first equilibrium comes as iteration 0');
+  assert.ok(Math.abs(rest[0].distanceRms - rest[0].flattenedDistanceRms) < 1e-12, 'it is the flattened panels\' shape');
+  assert.ok(rest[0].positions.some((x, i) => Math.abs(x - first.positions[i]) > 1e-4), 'inflated, not the target it starts from');
   for (const it of rest) {
     assert.equal(it.positions.length, 3 * n);
     assert.equal(it.distances.length, n);

@@ -3,11 +3,13 @@
 #include <chrono>
 #include <cmath>
 
+#include "flatten/flatten_boundary.hpp"
 #include "optimize/adjoint.hpp"
 #include "optimize/rest_derivatives.hpp"
 #include "optimize/rigid_align.hpp"
 #include "optimize/seam_projection.hpp"
 #include "pattern/remesh_pattern.hpp"
+#include "remesh/panel_mesher.hpp"
 #include "seams/surface_distance.hpp"
 #include "simulate/initial_shape.hpp"
 #include "simulate/smoothing.hpp"
@@ -26,6 +28,7 @@ constexpr double kTrialAlignment = 1e-6;
 // A refused trial whose equilibrium lies this far (x the model size) from the predicted one, and further than 1.5
 // times the predicted move, snapped into another equilibrium.
 constexpr double kSnapDistance = 1e-2;
+constexpr int kResettleNewton = 100;
 }  // namespace
 
 const char* toString(OptimizeState s) {
@@ -260,14 +263,26 @@ bool PatternOptimizer::rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) con
   return true;
 }
 
+bool PatternOptimizer::outlinesSimple(const Eigen::VectorXd& X) const {
+  for (size_t p = 0; p < boundaryVertices_.size(); ++p) {
+    const int nb = boundaryVertices_[p], first = mesh_.panelVertexStart[p];
+    Points2 Q(nb, 2);
+    for (int j = 0; j < nb; ++j) Q.row(j) = X.segment<2>(2 * (first + j)).transpose();
+    if (remesh::signedArea(Q) < 0) Q = Points2(Q.colwise().reverse());
+    if (!isSimpleCcwPolygon(Q)) return false;
+  }
+  return true;
+}
+
 bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton,
-                                        bool asCut, double alignTolerance, double snapLimit, bool* snapped) {
+                                        bool asCut, const EquilibriumLimits& limits, bool* snapped) {
   if (!X.allFinite()) return false;
   SewnMesh mesh = mesh_;
   if (!rebuildRest(X, mesh)) return false;
   const double t0 = nowMs();
   InflateOptions io = options_.inflate;
   io.seamRods = asCut ? nullptr : rods_;
+  if (limits.maxNewton > 0) io.maxIterations = std::min(io.maxIterations, limits.maxNewton);
   if (asCut) {
     // As the cut panels inflate on their own (billow inflate, the app's stored results): their own seam rods.
     Pattern cut = pattern_;
@@ -292,7 +307,9 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
     solver_ = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
   InflationSolver& solver = own ? *own : *solver_;
   if (snapped) *snapped = false;
-  while (solver.step(snapLimit > 0 ? 1 : io.maxIterations) == InflateState::Running) {
+  const double snapLimit = limits.snapLimit;
+  while (solver.step(snapLimit > 0 ? 1 : io.maxIterations) == InflateState::Running &&
+         solver.iterations() < io.maxIterations) {
     if (snapLimit > 0 && (solver.positions() - start).rowwise().norm().maxCoeff() > snapLimit) {
       if (snapped) *snapped = true;
       x = solver.positions();
@@ -306,7 +323,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) return false;
   x = solver.positions();
   const double t1 = nowMs();
-  alignRigid(*objective_, X, x, 300, alignTolerance);
+  alignRigid(*objective_, X, x, 300, limits.alignTolerance);
   timings_.alignMs += nowMs() - t1;
   return x.allFinite();
 }
@@ -465,22 +482,31 @@ bool PatternOptimizer::iterate() {
   // Backtracking: after a trial with a finite E the next alpha minimizes the quadratic through E_, the slope
   // and E(alpha), kept within [0.1, 0.5] alpha (Nocedal & Wright, Sec. 3.5); after a failed solve, alpha / 2.
   double next = 0.5 * alpha;
+  // A panel whose outline crosses itself overlaps itself and cannot be cut, although none of its rest triangles
+  // folds: such a trial is refused like a folded one (unless the outlines already cross).
+  const bool simple = outlinesSimple(X_);
   for (int h = 0; h <= options_.maxHalvings; ++h, alpha = next, next = 0.5 * alpha) {
     Eigen::VectorXd X = X_ + alpha * d;
     if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
     followBoundary(X);
+    if (simple && !outlinesSimple(X)) {
+      ++timings_.rejectedTrials;
+      continue;
+    }
     Vertices x;
     int newton = 0;
     const Vertices predicted = predictEquilibrium(X);
     const double predictedMove = (predicted - x_).rowwise().norm().maxCoeff();
     bool snapped = false;
-    if (!solveEquilibrium(X, predicted, x, &newton, false, kTrialAlignment,
-                          std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize()), &snapped)) {
+    const EquilibriumLimits trial{kTrialAlignment,
+                                  std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize())};
+    if (!solveEquilibrium(X, predicted, x, &newton, false, trial, &snapped)) {
       ++timings_.rejectedTrials, timings_.snappedTrials += snapped;
       // A trial abandoned on its way into another equilibrium counts as a jump (its E would be far off).
       jumps = snapped ? jumps + 1 : 0, lastExcess = INFINITY;
       if (snapped) next = 0.1 * alpha;
       if (jumps >= 2 && resettle(x)) return true;
+      if (jumps >= 2 && timings_.resettlings >= options_.maxResettlings) return false;  // see below
       continue;
     }
     double E = energy(X, x, nullptr);
@@ -497,6 +523,8 @@ bool PatternOptimizer::iterate() {
           std::isfinite(E) && excess > 1e-3 * std::abs(E_) && (excess > 0.9 * lastExcess || snapped) ? jumps + 1 : 0;
       lastExcess = std::isfinite(E) ? excess : INFINITY;
       if (jumps >= 2 && resettle(x)) return true;
+      // No resettling left: shorter steps jump too (each trial an abandoned solve), the line search ends here.
+      if (jumps >= 2 && timings_.resettlings >= options_.maxResettlings) return false;
       continue;
     }
     // The adjoint gradient needs the alignment's minimum itself (rigid_align.hpp); aligning further only
@@ -526,7 +554,8 @@ bool PatternOptimizer::resettle(const Vertices& from) {
   if (timings_.resettlings >= options_.maxResettlings || from.rows() != x_.rows()) return false;
   Vertices x;
   int newton = 0;
-  if (!solveEquilibrium(X_, from, x, &newton)) return false;
+  // From an abandoned trial's shape (not settled): a solve that does not settle soon is no resettling.
+  if (!solveEquilibrium(X_, from, x, &newton, false, {1e-12, 0, kResettleNewton})) return false;
   const double E = energy(X_, x, nullptr);
   if (!std::isfinite(E) || std::abs(E - E_) <= 1e-6 * std::abs(E_)) return false;
   Eigen::VectorXd g;
@@ -586,18 +615,22 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
         windowX_ = x_, windowStart_ = iteration_;
       }
       if (options_.windowDecrease > 0 && iteration_ >= options_.windowIterations) {
-        // The objective windowIterations iterations ago (its last record). Not over a window with a resettling
-        // in it: the objective may rise there (the balloon snapped into another equilibrium), which is no stall;
-        // nor over a remeshing (the objective of another discretization). A window may start with either.
-        double before = NAN;
-        for (auto r = history_.rbegin(); r != history_.rend(); ++r) {
-          if (r->iteration == iteration_ - options_.windowIterations) {
-            before = r->objective;
+        // What the L-BFGS steps of the last windowIterations iterations took off the objective. A resettling
+        // (the balloon snapped into another equilibrium, the objective may rise) is no step: what it changed
+        // does not count, so an optimizer that keeps snapping back and forth between two equilibria stops too.
+        // Not over a remeshing (the objective of another discretization); a window may start with one.
+        double decrease = 0;
+        bool whole = false;
+        for (size_t j = history_.size() - 1; j > 0; --j) {
+          const OptimizeRecord& r = history_[j];
+          if (r.iteration <= iteration_ - options_.windowIterations) {
+            whole = true;
             break;
           }
-          if (r->resettled || r->remeshed) break;
+          if (r.remeshed) break;
+          if (!r.resettled && !r.projected) decrease += history_[j - 1].objective - r.objective;
         }
-        if (std::isfinite(before) && before - E_ < options_.windowDecrease * std::abs(E_)) {
+        if (whole && decrease < options_.windowDecrease * std::abs(E_)) {
           if (refine()) continue;
           finish(OptimizeState::Converged, "the objective no longer decreases noticeably");
           break;

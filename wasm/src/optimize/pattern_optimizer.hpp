@@ -183,6 +183,15 @@ struct OptimizeTimings {
   double remeshMs = 0;    // their time, their equilibrium solves included
 };
 
+// How PatternOptimizer solves one equilibrium (line-search trials, resettling).
+struct EquilibriumLimits {
+  double alignTolerance = 1e-12;  // of the rigid alignment, x the model size (rigid_align.hpp)
+  // > 0: a solve whose Newton iterate moves further than that from its start is abandoned (false, *snapped set,
+  // x where it was)
+  double snapLimit = 0;
+  int maxNewton = 0;  // > 0: fewer Newton iterations than options.inflate's
+};
+
 class PatternOptimizer {
  public:
   // built: the flattened pattern (its `inflated` = the target positions, the first equilibrium's start).
@@ -237,10 +246,8 @@ class PatternOptimizer {
   // False when there was none (or the fine mesh failed: the coarse one is kept).
   bool refine();
   // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
-  // alignTolerance: of the rigid alignment, x the model size (rigid_align.hpp). snapLimit > 0: a solve whose
-  // Newton iterate moves further than that from start is abandoned (false, *snapped set, x where it was).
   bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton, bool asCut = false,
-                        double alignTolerance = 1e-12, double snapLimit = 0, bool* snapped = nullptr);
+                        const EquilibriumLimits& limits = {}, bool* snapped = nullptr);
   void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
   // Where the equilibrium of panels X should be to first order from the current one (options.predictEquilibrium;
   // x_ when there is no factorization at the current iterate).
@@ -259,6 +266,8 @@ class PatternOptimizer {
   void finish(OptimizeState s, const std::string& message);
   void record(double alpha, int newton, bool projected);
   bool rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) const;
+  // Whether every panel's outline at X is a simple polygon (no two of its edges meet but neighbours).
+  bool outlinesSimple(const Eigen::VectorXd& X) const;
   double elapsedMs() const;
 
   OptimizeOptions options_;

@@ -120,7 +120,11 @@ export function createHandlers(api) {
       // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
       const meshOf = () => ({ triangles: mesh.triangles.slice(), outer: mesh.outer.slice() });
       yield { stage: 'optimizing', iteration: 0, flattenedText, ...meshOf(), ...iterate() };
-      let status;
+      // The flattened panels inflated (the first equilibrium, iteration 0 again): the first look at the balloon,
+      // one solve after the panels instead of one optimizer iteration later.
+      let status = session.optimizeStep(0, STEP_MILLIS);
+      if (status.state === 'failed') throw new SolverError('optimize.failed', status.message);
+      yield { stage: 'optimizing', ...status, ...iterate() };
       let remeshings = 0;
       let lastPanels = performance.now();
       for (;;) {
