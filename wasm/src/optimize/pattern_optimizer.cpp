@@ -1,5 +1,6 @@
 #include "optimize/pattern_optimizer.hpp"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 
@@ -29,6 +30,10 @@ constexpr double kTrialAlignment = 1e-6;
 // times the predicted move, snapped into another equilibrium.
 constexpr double kSnapDistance = 1e-2;
 constexpr int kResettleNewton = 100;
+// A trial solve may take this many times the median Newton iterations of the recent accepted solves (at least
+// kTrialNewtonFloor) before it counts as one that does not settle: in wasm a fb-blub trial took 1,000 (10 s)
+// where accepted ones take 5-30.
+constexpr int kTrialNewtonFactor = 5, kTrialNewtonFloor = 50;
 }  // namespace
 
 const char* toString(OptimizeState s) {
@@ -485,6 +490,12 @@ bool PatternOptimizer::iterate() {
   // A panel whose outline crosses itself overlaps itself and cannot be cut, although none of its rest triangles
   // folds: such a trial is refused like a folded one (unless the outlines already cross).
   const bool simple = outlinesSimple(X_);
+  std::vector<int> recent;
+  for (auto r = history_.rbegin(); r != history_.rend() && recent.size() < 10; ++r)
+    if (r->equilibriumIterations > 0) recent.push_back(r->equilibriumIterations);
+  std::nth_element(recent.begin(), recent.begin() + recent.size() / 2, recent.end());
+  const int trialNewton =
+      std::max(kTrialNewtonFloor, recent.empty() ? 0 : kTrialNewtonFactor * recent[recent.size() / 2]);
   for (int h = 0; h <= options_.maxHalvings; ++h, alpha = next, next = 0.5 * alpha) {
     Eigen::VectorXd X = X_ + alpha * d;
     if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
@@ -498,8 +509,8 @@ bool PatternOptimizer::iterate() {
     const Vertices predicted = predictEquilibrium(X);
     const double predictedMove = (predicted - x_).rowwise().norm().maxCoeff();
     bool snapped = false;
-    const EquilibriumLimits trial{kTrialAlignment,
-                                  std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize())};
+    const EquilibriumLimits trial{
+        kTrialAlignment, std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize()), trialNewton};
     if (!solveEquilibrium(X, predicted, x, &newton, false, trial, &snapped)) {
       ++timings_.rejectedTrials, timings_.snappedTrials += snapped;
       // A trial abandoned on its way into another equilibrium counts as a jump (its E would be far off).
