@@ -327,10 +327,14 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (snapped && *snapped) return false;
   if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) return false;
   x = solver.positions();
-  const double t1 = nowMs();
-  alignRigid(*objective_, X, x, 300, limits.alignTolerance);
-  timings_.alignMs += nowMs() - t1;
+  align(X, x, limits.alignTolerance);
   return x.allFinite();
+}
+
+void PatternOptimizer::align(const Eigen::VectorXd& X, Vertices& x, double tolerance) {
+  const double t0 = nowMs();
+  alignRigid(*objective_, X, x, 300, tolerance);
+  timings_.alignMs += nowMs() - t0;
 }
 
 double PatternOptimizer::energy(const Eigen::VectorXd& X, const Vertices& x, ObjectiveTerms* terms) const {
@@ -511,38 +515,37 @@ bool PatternOptimizer::iterate() {
     bool snapped = false;
     const EquilibriumLimits trial{
         kTrialAlignment, std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize()), trialNewton};
-    if (!solveEquilibrium(X, predicted, x, &newton, false, trial, &snapped)) {
+    const bool solved = solveEquilibrium(X, predicted, x, &newton, false, trial, &snapped);
+    double E = solved ? energy(X, x, nullptr) : NAN;
+    if (!(solved && std::isfinite(E) && E <= E_ + 1e-4 * alpha * slope)) {
       ++timings_.rejectedTrials, timings_.snappedTrials += snapped;
-      // A trial abandoned on its way into another equilibrium counts as a jump (its E would be far off).
-      jumps = snapped ? jumps + 1 : 0, lastExcess = INFINITY;
-      if (snapped) next = 0.1 * alpha;
-      if (jumps >= 2 && resettle(x)) return true;
-      if (jumps >= 2 && timings_.resettlings >= options_.maxResettlings) return false;  // see below
-      continue;
-    }
-    double E = energy(X, x, nullptr);
-    if (!(std::isfinite(E) && E <= E_ + 1e-4 * alpha * slope)) {
-      ++timings_.rejectedTrials;
-      if (std::isfinite(E) && E > E_ + alpha * slope) {
-        const double quadratic = -slope * alpha * alpha / (2 * (E - E_ - alpha * slope));
-        next = std::clamp(quadratic, 0.1 * alpha, 0.5 * alpha);
+      if (!solved) {
+        // A trial abandoned on its way into another equilibrium counts as a jump (its E would be far off).
+        jumps = snapped ? jumps + 1 : 0, lastExcess = INFINITY;
+        if (snapped) next = 0.1 * alpha;
+      } else {
+        if (std::isfinite(E) && E > E_ + alpha * slope) {
+          const double quadratic = -slope * alpha * alpha / (2 * (E - E_ - alpha * slope));
+          next = std::clamp(quadratic, 0.1 * alpha, 0.5 * alpha);
+        }
+        const double excess = E - E_;
+        const bool offPrediction = (x - predicted).rowwise().norm().maxCoeff() >
+                                   std::max(1.5 * predictedMove, kSnapDistance * objective_->modelSize());
+        jumps = std::isfinite(E) && excess > 1e-3 * std::abs(E_) && (excess > 0.9 * lastExcess || offPrediction)
+                    ? jumps + 1
+                    : 0;
+        lastExcess = std::isfinite(E) ? excess : INFINITY;
       }
-      const double excess = E - E_;
-      snapped = (x - predicted).rowwise().norm().maxCoeff() >
-                std::max(1.5 * predictedMove, kSnapDistance * objective_->modelSize());
-      jumps =
-          std::isfinite(E) && excess > 1e-3 * std::abs(E_) && (excess > 0.9 * lastExcess || snapped) ? jumps + 1 : 0;
-      lastExcess = std::isfinite(E) ? excess : INFINITY;
-      if (jumps >= 2 && resettle(x)) return true;
-      // No resettling left: shorter steps jump too (each trial an abandoned solve), the line search ends here.
-      if (jumps >= 2 && timings_.resettlings >= options_.maxResettlings) return false;
+      if (jumps >= 2) {
+        if (resettle(x)) return true;
+        // No resettling left: shorter steps jump too (each trial an abandoned solve), the line search ends here.
+        if (timings_.resettlings >= options_.maxResettlings) return false;
+      }
       continue;
     }
     // The adjoint gradient needs the alignment's minimum itself (rigid_align.hpp); aligning further only
     // lowers E, so the accepted trial stays accepted.
-    const double t1 = nowMs();
-    alignRigid(*objective_, X, x);
-    timings_.alignMs += nowMs() - t1;
+    align(X, x, EquilibriumLimits{}.alignTolerance);
     E = energy(X, x, nullptr);
     Eigen::VectorXd g;
     variableGradient(X, x, g);

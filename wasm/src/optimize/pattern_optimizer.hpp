@@ -248,6 +248,8 @@ class PatternOptimizer {
   // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
   bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton, bool asCut = false,
                         const EquilibriumLimits& limits = {}, bool* snapped = nullptr);
+  // Places x at its best rigid motion (rigid_align.hpp) to tolerance x the model size.
+  void align(const Eigen::VectorXd& X, Vertices& x, double tolerance);
   void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
   // Where the equilibrium of panels X should be to first order from the current one (options.predictEquilibrium;
   // x_ when there is no factorization at the current iterate).
