@@ -7,8 +7,8 @@
 //                       [--trace] [--set NAME=VALUE ...] [--no-remesh-check] [--cut-scale F] [--out-dir DIR]
 // --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
 // --set changes an optimizer option (interiorFollowsBoundary, outlineSmoothing, quality, laplace, smooth, seam, cover,
-// coverReach, maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants. After each
-// run the final outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check
+// gap, coverReach, maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants. After
+// each run the final outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check
 // skips it; --cut-scale F meshes them at F x the design's edge length).
 #include <sys/resource.h>
 
@@ -108,6 +108,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.weights.seam = v;
   else if (name == "cover")
     o.weights.cover = v;
+  else if (name == "gap")
+    o.weights.gap = v;
   else if (name == "coverReach")
     o.weights.coverReach = v;
   else if (name == "maxIterations")
@@ -195,12 +197,12 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
     for (; bo.trace && traced < opt.history().size(); ++traced) {
       const OptimizeRecord& h = opt.history()[traced];
       std::fprintf(stderr,
-                   "%s it %3d%s E %.6e (t %.2e c %.2e s %.2e l %.2e b %.2e L %.2e q %.2e) rms %.3f%% max %.3f%% "
+                   "%s it %3d%s E %.6e (t %.2e c %.2e s %.2e l %.2e b %.2e L %.2e q %.2e g %.2e) rms %.3f%% max %.3f%% "
                    "mismatch %.1e grad %.2e alpha %.3g newton %d %.0f ms\n",
                    entry.at("name").get<std::string>().c_str(), h.iteration, h.projected ? "P" : " ", h.objective,
                    h.terms.target, h.terms.cover, h.terms.seam, h.terms.length, h.terms.smooth, h.terms.laplace,
-                   h.terms.quality, 100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch, h.gradient, h.stepLength,
-                   h.equilibriumIterations, h.ms);
+                   h.terms.quality, h.terms.gap, 100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch, h.gradient,
+                   h.stepLength, h.equilibriumIterations, h.ms);
     }
   };
   while (opt.step(1) == OptimizeState::Running) {

@@ -132,6 +132,22 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
   for (size_t p = 0; p < built.panels.size(); ++p) {
     const BuiltPanel& bp = built.panels[p];
     const int nb = bp.boundaryVertices;
+    outlines_.emplace_back();
+    for (int j = 0; j < nb; ++j) outlines_.back().push_back(gid(int(p), j));
+    // E_gap's reach per outline vertex: an edge length, or less at a thin tip or notch of the flattened outline
+    // (its distance to the nearest edge not ending at it), so that the barrier is zero at the start; half of that
+    // let the steps jump the barrier at thin tips (bench/README.md).
+    const PanelVertices& Q = built.pattern.panels[p].vertices;
+    std::vector<double> reach(nb, edge_);
+    for (int j = 0; j < nb; ++j)
+      for (int k = 2; k < nb; ++k) {
+        const int v = (j + k) % nb;
+        const Eigen::Vector2d a = Q.row(j).transpose(), ab = Q.row((j + 1) % nb).transpose() - a,
+                              q = Q.row(v).transpose();
+        const double t = ab.squaredNorm() > 0 ? std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
+        reach[v] = std::min(reach[v], (q - a - t * ab).norm());
+      }
+    gapReach_.push_back(std::move(reach));
     for (int j = 0; j < nb; ++j) {
       // A corner is where seams meet, and the outline may turn there; the one corner of a panel bounded by a
       // single loop is only where the loop starts, and left free there it bent into a hook (58 degrees on the
@@ -332,8 +348,43 @@ double PatternObjective::patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd
       grad->segment<2>(2 * t.pattern[1]) += G.col(0), grad->segment<2>(2 * t.pattern[2]) += G.col(1);
       grad->segment<2>(2 * t.pattern[0]) -= G.col(0) + G.col(1);
     }
-  if (terms) terms->length = El, terms->smooth = Eb, terms->laplace = EL, terms->quality = Eq;
-  return El + Eb + EL + Eq;
+  const double Eg = w_.gap > 0 ? gapEnergy(X, grad) : 0;
+  if (terms) terms->length = El, terms->smooth = Eb, terms->laplace = EL, terms->quality = Eq, terms->gap = Eg;
+  return El + Eb + EL + Eq + Eg;
+}
+
+double PatternObjective::gapEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const {
+  double E = 0;
+  for (size_t p = 0; p < outlines_.size(); ++p) {
+    const std::vector<int>& loop = outlines_[p];
+    const int n = int(loop.size());
+    for (int j = 0; j < n; ++j) {
+      const int ia = loop[j], ib = loop[(j + 1) % n];
+      const Eigen::Vector2d a = X.segment<2>(2 * ia), b = X.segment<2>(2 * ib), ab = b - a;
+      const Eigen::Vector2d lo = a.cwiseMin(b).array() - edge_, hi = a.cwiseMax(b).array() + edge_;
+      const double ab2 = ab.squaredNorm();
+      for (int k = 2; k < n; ++k) {  // every vertex but the edge's own two
+        const int at = (j + k) % n, iv = loop[at];
+        const Eigen::Vector2d v = X.segment<2>(2 * iv);
+        if ((v.array() < lo.array()).any() || (v.array() > hi.array()).any()) continue;
+        const double h = gapReach_[p][at];
+        const double t = ab2 > 0 ? std::clamp((v - a).dot(ab) / ab2, 0.0, 1.0) : 0.0;
+        const Eigen::Vector2d r = v - (a + t * ab);
+        const double d = r.norm(), s = d / h;
+        if (!(s < 1)) continue;
+        if (!(s > 0)) return INFINITY;
+        const double kappa = w_.gap * edge_ * edge_ * norm_;
+        E += kappa * -(s - 1) * (s - 1) * std::log(s);
+        if (!grad) continue;
+        // d d / d v = r / d; d d / d a = -(1 - t) r / d, d d / d b = -t r / d (t minimizes, so its change drops out).
+        const Eigen::Vector2d f = kappa * (-2 * (s - 1) * std::log(s) - (s - 1) * (s - 1) / s) / h * r / d;
+        grad->segment<2>(2 * iv) += f;
+        grad->segment<2>(2 * ia) -= (1 - t) * f;
+        grad->segment<2>(2 * ib) -= t * f;
+      }
+    }
+  }
+  return E;
 }
 
 double PatternObjective::maxEdgeMismatch(const Eigen::VectorXd& X) const {

@@ -22,6 +22,11 @@
 //               (ours, not the paper's: where the paper remeshes when elements degenerate, Sec. 5.3, this
 //               barrier keeps them from degenerating; zero for rotations and uniform scalings, infinite at a
 //               collapse, about w_q l^2 eps^2 / 2 per triangle for a small distortion eps).
+//   E_gap     = w_g l^2 sum_(v,e) b(d(v, e) / h_v) / (n D^2) over each outline vertex v and edge e of the same
+//               outline not ending at v, d their distance, b(s) = -(s - 1)^2 ln s for s < 1 and 0 beyond (the
+//               barrier of IPC, Li et al. 2020; ours), h_v = min(l, v's distance to the nearest such edge in the
+//               flattened pattern): a panel whose outline crosses itself cannot be cut, and where the optimizer
+//               refused such steps it stopped at a thin tip of the outline; the barrier turns the steps along it.
 // Why E_target weighs by the *current* areas: it is then a quadrature of the surface integral of d^2, which
 // does not change (to the order of the discretization) when pattern vertices slide within a panel together
 // with their inflated positions. With weights fixed at the flattened pattern, sliding vertices into regions
@@ -54,11 +59,12 @@ struct OptimizeWeights {
   double slidingBelow = 0;
   double laplace = 0.01;  // E_laplace: only needs to remove the interior sliding null space
   double quality = 0.01;  // E_quality
+  double gap = 1.0;       // E_gap
 };
 
 struct ObjectiveTerms {
-  double target = 0, cover = 0, seam = 0, length = 0, smooth = 0, laplace = 0, quality = 0;
-  double total() const { return target + cover + seam + length + smooth + laplace + quality; }
+  double target = 0, cover = 0, seam = 0, length = 0, smooth = 0, laplace = 0, quality = 0, gap = 0;
+  double total() const { return target + cover + seam + length + smooth + laplace + quality + gap; }
 };
 
 class PatternObjective {
@@ -98,8 +104,8 @@ class PatternObjective {
   // (dE/dX at fixed x, through E_target's area weights; 2 per panel vertex) when given.
   double shapeEnergy(const Vertices& x, const Eigen::VectorXd& X, Eigen::VectorXd* gradx,
                      Eigen::VectorXd* gradX = nullptr, ObjectiveTerms* terms = nullptr) const;
-  // E_length + E_smooth + E_laplace + E_quality at pattern coordinates X (2 per panel vertex, sewn order);
-  // E_quality is +inf when a rest triangle is folded or degenerate.
+  // E_length + E_smooth + E_laplace + E_quality + E_gap at pattern coordinates X (2 per panel vertex, sewn order);
+  // E_quality is +inf when a rest triangle is folded or degenerate, E_gap when an outline touches itself.
   double patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad, ObjectiveTerms* terms = nullptr) const;
 
   // Max over stitched edge pairs of |L_a - L_b| / ((L_a + L_b) / 2), and the same per piece pair.
@@ -148,6 +154,9 @@ class PatternObjective {
   std::vector<PiecePair> piecePairs_;
   std::vector<Triple> boundary_;
   std::vector<int> interior_, ringStart_, ring_;  // interior vertex -> neighbours ring_[ringStart_[i]..]
+  std::vector<std::vector<int>> outlines_;        // each panel's outline loop (rows of X, in order)
+  std::vector<std::vector<double>> gapReach_;     // E_gap's h_v, per outline vertex
+  double gapEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const;
   // E_cover: the target samples (vertex ids of imls_.target()) and their weights (w_c m a_j / (A_T n D^2));
   // outer triangles around each outer triangle (sharing a vertex) for the walk; each sample's tracked triangle.
   std::vector<int> coverVertex_;
