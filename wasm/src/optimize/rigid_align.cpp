@@ -16,10 +16,13 @@ Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
   return S;
 }
 
-// Gauss-Newton normal equations of E_target + E_cover + E_seam in (rotation vector, translation) about `center`.
-void normalEquations(const PatternObjective& obj, const Eigen::VectorXd& w, const Vertices& x,
-                     const Eigen::Vector3d& center, Matrix6d& H, Vector6d& g) {
+// E_target + E_cover + E_seam at x (as PatternObjective::shapeEnergy), and its Gauss-Newton normal equations in
+// (rotation vector, translation) about `center`: one pass over the IMLS distances serves both, since each accepted
+// trial's energy is the next step's linearization point.
+double evaluate(const PatternObjective& obj, const Eigen::VectorXd& w, const Vertices& x, const Eigen::Vector3d& center,
+                Matrix6d& H, Vector6d& g) {
   H.setZero(), g.setZero();
+  double E = 0;
   Eigen::Vector3d n;
   for (int i = 0; i < x.rows(); ++i) {
     if (w[i] == 0) continue;
@@ -27,6 +30,7 @@ void normalEquations(const PatternObjective& obj, const Eigen::VectorXd& w, cons
     const double d = obj.imls().distance(xi, &n);
     Vector6d J;
     J << (xi - center).cross(n), n;  // d(d)/d(omega, t)
+    E += w[i] * d * d;
     H += w[i] * J * J.transpose(), g += w[i] * d * J;
   }
   std::vector<PatternObjective::CoverPoint> cover;
@@ -37,14 +41,14 @@ void normalEquations(const PatternObjective& obj, const Eigen::VectorXd& w, cons
     // the point-to-point Jacobian converged linearly, hundreds of steps per alignment).
     const Eigen::Vector3d r = c.closest - c.target;
     const double d = r.norm();
+    // The robust kernel by iteratively reweighted least squares: rho(d) enters as irls * d^2, irls = rho'(d)/(2d)
+    // at the current d, which gives the kernel's exact gradient (a point far from the shape weighs little).
+    double irls = 1;
+    E += c.weight * obj.coverKernel(d * d, &irls);
     if (!(d > 0)) continue;
     const Eigen::Vector3d u = r / d;
     Vector6d J;
     J << (c.closest - center).cross(u), u;
-    // The robust kernel by iteratively reweighted least squares: rho(d) enters as irls * d^2, irls = rho'(d)/(2d)
-    // at the current d, which gives the kernel's exact gradient (a point far from the shape weighs little).
-    double irls = 1;
-    obj.coverKernel(d * d, &irls);
     H += c.weight * irls * J * J.transpose(), g += c.weight * irls * d * J;
   }
   for (const auto& s : obj.seamVertices()) {
@@ -53,8 +57,10 @@ void normalEquations(const PatternObjective& obj, const Eigen::VectorXd& w, cons
     const Eigen::Vector3d xi = x.row(s.vertex).transpose();
     Eigen::Matrix<double, 3, 6> J;
     J << -skew(xi - center), Eigen::Matrix3d::Identity();
+    E += ws * (xi - s.target).squaredNorm();
     H += ws * J.transpose() * J, g += ws * J.transpose() * (xi - s.target);
   }
+  return E;
 }
 
 void applyRigid(Vertices& x, const Eigen::Vector3d& center, const Vector6d& step) {
@@ -71,14 +77,13 @@ int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vert
                double tolerance) {
   const double D = objective.modelSize();
   const Eigen::VectorXd w = objective.targetWeights(X);
-  double E = objective.shapeEnergy(x, X, nullptr);
+  Eigen::Vector3d center = x.colwise().mean().transpose();
+  Matrix6d H;
+  Vector6d g;
+  double E = evaluate(objective, w, x, center, H, g);
   double mu = 1e-6;
   int it = 0;
   for (; it < maxIterations; ++it) {
-    const Eigen::Vector3d center = x.colwise().mean().transpose();
-    Matrix6d H;
-    Vector6d g;
-    normalEquations(objective, w, x, center, H, g);
     if (!g.allFinite() || g.isZero(0)) break;
     // Rotations are measured in radians, translations in meters: scale the rotation block by D.
     Vector6d s;
@@ -90,10 +95,14 @@ int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vert
       const Vector6d step = -(s.asDiagonal() * A.ldlt().solve(s.asDiagonal() * g)).eval();
       Vertices trial = x;
       applyRigid(trial, center, step);
-      const double Et = objective.shapeEnergy(trial, X, nullptr);
+      const Eigen::Vector3d trialCenter = trial.colwise().mean().transpose();
+      Matrix6d Ht;
+      Vector6d gt;
+      const double Et = evaluate(objective, w, trial, trialCenter, Ht, gt);
       if (std::isfinite(Et) && Et <= E) {
         const bool small = step.head<3>().norm() * D + step.tail<3>().norm() < tolerance * D;
-        x = std::move(trial), E = Et, accepted = true, mu = std::max(mu * 0.1, 1e-12);
+        x = std::move(trial), E = Et, H = Ht, g = gt, center = trialCenter, accepted = true;
+        mu = std::max(mu * 0.1, 1e-12);
         if (small) return it + 1;
       } else {
         mu *= 10;
