@@ -744,14 +744,34 @@ TEST(Optimize, UnstableEquilibriumIsResettledNotTheEnd) {
 // (two such snaps in a row take the shape it snaps into, a resettling). And no step makes a panel's outline
 // cross itself: such a panel overlaps itself and cannot be cut, although none of its triangles folds (the
 // optimizer's cow and penguin did).
+namespace {
+
+// The optimizer after `iterations` iterations (or where it stopped), stepped as the app's worker steps it.
+std::unique_ptr<PatternOptimizer> optimizedFor(const Fixture& f, int iterations) {
+  OptimizeOptions oo;
+  oo.maxIterations = iterations;
+  auto opt = std::make_unique<PatternOptimizer>(f.scene->target, f.built, f.weights, oo);
+  while (opt->step(5) == OptimizeState::Running) {
+  }
+  return opt;
+}
+
+// No panel's outline crosses itself: a maker can cut every panel (the optimizer lists each outline first, in order).
+void expectCuttableOutlines(const Pattern& pattern) {
+  for (const Panel& panel : pattern.panels) {
+    Polygon2 polygon;
+    for (int v : outlineVertices(panel)) polygon.push_back(panel.vertices.row(v).transpose());
+    EXPECT_FALSE(selfIntersects(polygon)) << panel.name;
+  }
+}
+
+}  // namespace
+
 TEST(Optimize, FrontBackPenguinAbandonsTrialsThatSnapAndKeepsItsOutlines) {
   const Fixture f = makeFixture("../../bench/designs/penguin-front-back.billow.json", 3000);
   ASSERT_TRUE(f.built.ok());
-  OptimizeOptions oo;
-  oo.maxIterations = 20;
-  PatternOptimizer opt(f.scene->target, f.built, f.weights, oo);
-  while (opt.step(5) == OptimizeState::Running) {
-  }
+  const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 20);
+  const PatternOptimizer& opt = *optimized;
   const OptimizeTimings& t = opt.timings();
   const auto& h = opt.history();
   int newton = 0;
@@ -765,12 +785,7 @@ TEST(Optimize, FrontBackPenguinAbandonsTrialsThatSnapAndKeepsItsOutlines) {
   EXPECT_GE(t.snappedTrials, 1);
   EXPECT_LT(h.back().distanceRms, 0.5 * h.front().distanceRms);
   expectObjectiveNeverRises(h, 1e-5);  // E_cover's closest points are tracked anew at each iterate
-  for (const Panel& panel : opt.pattern().panels) {
-    const std::vector<int> outline = outlineVertices(panel);  // in order: the optimizer lists the outline first
-    Polygon2 polygon;
-    for (int v : outline) polygon.push_back(panel.vertices.row(v).transpose());
-    EXPECT_FALSE(selfIntersects(polygon)) << panel.name;
-  }
+  expectCuttableOutlines(opt.pattern());
 }
 
 // The stuffed toy's outline from the front (the Outline tool's seam, tests/data) runs into thin notches (around the
@@ -779,11 +794,8 @@ TEST(Optimize, FrontBackPenguinAbandonsTrialsThatSnapAndKeepsItsOutlines) {
 TEST(Optimize, FrontBackStuffedToyGoesOnAlongItsOutlinesThinNotches) {
   const Fixture f = makeFixture("stuffedtoy-front-back.billow.json", 1500);
   ASSERT_TRUE(f.built.ok());
-  OptimizeOptions oo;
-  oo.maxIterations = 20;
-  PatternOptimizer opt(f.scene->target, f.built, f.weights, oo);
-  while (opt.step(5) == OptimizeState::Running) {
-  }
+  const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 20);
+  const PatternOptimizer& opt = *optimized;
   const auto& h = opt.history();
   std::printf("[figures] stuffed toy front/back 1.5k: %d iterations, rms %.3f %% -> %.3f %%, E_gap %.2e, %.1f s\n",
               opt.iterations(), 100 * h.front().distanceRms, 100 * h.back().distanceRms, h.back().terms.gap,
@@ -792,11 +804,7 @@ TEST(Optimize, FrontBackStuffedToyGoesOnAlongItsOutlinesThinNotches) {
   EXPECT_GT(h.back().terms.gap, 0) << "the barrier held an outline apart";
   EXPECT_LT(h.back().distanceRms, 0.45 * h.front().distanceRms);
   expectObjectiveNeverRises(h, 1e-5);
-  for (const Panel& panel : opt.pattern().panels) {
-    Polygon2 polygon;
-    for (int v : outlineVertices(panel)) polygon.push_back(panel.vertices.row(v).transpose());
-    EXPECT_FALSE(selfIntersects(polygon)) << panel.name;
-  }
+  expectCuttableOutlines(opt.pattern());
 }
 
 // Issue 5, free interior vertices (interiorFollowsBoundary = false): on the gallery's three-gore sphere the
