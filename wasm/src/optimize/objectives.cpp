@@ -135,8 +135,8 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
     outlines_.emplace_back();
     for (int j = 0; j < nb; ++j) outlines_.back().push_back(gid(int(p), j));
     // E_gap's reach per outline vertex: an edge length, or less at a thin tip or notch of the flattened outline
-    // (its distance to the nearest edge not ending at it), so that the barrier is zero at the start; half of that
-    // let the steps jump the barrier at thin tips (bench/README.md).
+    // (its distance to the nearest edge not ending at it), so that the barrier is zero on the flattened pattern;
+    // half of that let the steps jump the barrier at thin tips (bench/README.md).
     const PanelVertices& Q = built.pattern.panels[p].vertices;
     std::vector<double> reach(nb, edge_);
     for (int j = 0; j < nb; ++j)
