@@ -44,11 +44,14 @@ bool segmentIntersection(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2
   return t >= 0 && t <= 1 && u >= 0 && u <= 1;
 }
 
-double pointSegmentDistance(const Vec2& q, const Vec2& a, const Vec2& b) {
+double closestSegmentParameter(const Vec2& q, const Vec2& a, const Vec2& b) {
   const Vec2 ab = b - a;
   const double l2 = ab.squaredNorm();
-  const double t = l2 > 0 ? std::clamp((q - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
-  return (a + t * ab - q).norm();
+  return l2 > 0 ? std::clamp((q - a).dot(ab) / l2, 0.0, 1.0) : 0.0;
+}
+
+double pointSegmentDistance(const Vec2& q, const Vec2& a, const Vec2& b) {
+  return (a + closestSegmentParameter(q, a, b) * (b - a) - q).norm();
 }
 
 double distanceToBoundary(const Vec2& q, const Polygon2& p) {

@@ -29,7 +29,8 @@ Box2 boundingBox(const Polygon2& p);
 // Proper or touching intersection of segments ab and cd; on success t (along ab) and u (along cd) in [0, 1].
 bool segmentIntersection(const Vec2& a, const Vec2& b, const Vec2& c, const Vec2& d, double& t, double& u);
 
-// Distance from q to the segment ab.
+// The parameter t in [0, 1] of the point a + t (b - a) of segment ab closest to q, and the distance from q to ab.
+double closestSegmentParameter(const Vec2& q, const Vec2& a, const Vec2& b);
 double pointSegmentDistance(const Vec2& q, const Vec2& a, const Vec2& b);
 // Distance from q to the polygon's boundary.
 double distanceToBoundary(const Vec2& q, const Polygon2& p);

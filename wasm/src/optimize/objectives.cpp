@@ -4,6 +4,7 @@
 #include <cmath>
 #include <set>
 
+#include "export/polygon.hpp"
 #include "optimize/rest_derivatives.hpp"
 #include "seams/surface_point.hpp"
 
@@ -142,10 +143,8 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
     for (int j = 0; j < nb; ++j)
       for (int k = 2; k < nb; ++k) {
         const int v = (j + k) % nb;
-        const Eigen::Vector2d a = Q.row(j).transpose(), ab = Q.row((j + 1) % nb).transpose() - a,
-                              q = Q.row(v).transpose();
-        const double t = ab.squaredNorm() > 0 ? std::clamp((q - a).dot(ab) / ab.squaredNorm(), 0.0, 1.0) : 0.0;
-        reach[v] = std::min(reach[v], (q - a - t * ab).norm());
+        const Eigen::Vector2d a = Q.row(j).transpose(), b = Q.row((j + 1) % nb).transpose(), q = Q.row(v).transpose();
+        reach[v] = std::min(reach[v], (q - a - closestSegmentParameter(q, a, b) * (b - a)).norm());
       }
     gapReach_.push_back(std::move(reach));
     for (int j = 0; j < nb; ++j) {
@@ -354,6 +353,7 @@ double PatternObjective::patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd
 }
 
 double PatternObjective::gapEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const {
+  const double kappa = w_.gap * edge_ * edge_ * norm_;
   double E = 0;
   for (size_t p = 0; p < outlines_.size(); ++p) {
     const std::vector<int>& loop = outlines_[p];
@@ -362,18 +362,16 @@ double PatternObjective::gapEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* gr
       const int ia = loop[j], ib = loop[(j + 1) % n];
       const Eigen::Vector2d a = X.segment<2>(2 * ia), b = X.segment<2>(2 * ib), ab = b - a;
       const Eigen::Vector2d lo = a.cwiseMin(b).array() - edge_, hi = a.cwiseMax(b).array() + edge_;
-      const double ab2 = ab.squaredNorm();
       for (int k = 2; k < n; ++k) {  // every vertex but the edge's own two
         const int at = (j + k) % n, iv = loop[at];
         const Eigen::Vector2d v = X.segment<2>(2 * iv);
         if ((v.array() < lo.array()).any() || (v.array() > hi.array()).any()) continue;
         const double h = gapReach_[p][at];
-        const double t = ab2 > 0 ? std::clamp((v - a).dot(ab) / ab2, 0.0, 1.0) : 0.0;
+        const double t = closestSegmentParameter(v, a, b);
         const Eigen::Vector2d r = v - (a + t * ab);
         const double d = r.norm(), s = d / h;
         if (!(s < 1)) continue;
         if (!(s > 0)) return INFINITY;
-        const double kappa = w_.gap * edge_ * edge_ * norm_;
         E += kappa * -(s - 1) * (s - 1) * std::log(s);
         if (!grad) continue;
         // d d / d v = r / d; d d / d a = -(1 - t) r / d, d d / d b = -t r / d (t minimizes, so its change drops out).
