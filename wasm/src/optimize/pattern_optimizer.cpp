@@ -203,13 +203,13 @@ bool PatternOptimizer::remesh(double h) {
     current.pattern.inflated = inflated;
     setUp(current);
     X_ = oldX, x_ = oldx;
-    E_ = energy(X_, x_, nullptr);
+    E_ = settledEnergy(X_, x_);
     variableGradient(X_, x_, g_);
     timings_.remeshMs += nowMs() - t0;
     return false;
   }
   x_ = std::move(x);
-  E_ = energy(X_, x_, nullptr);
+  E_ = settledEnergy(X_, x_);
   variableGradient(X_, x_, g_);
   ++timings_.remeshings;
   timings_.remeshMs += nowMs() - t0;
@@ -341,6 +341,11 @@ double PatternOptimizer::energy(const Eigen::VectorXd& X, const Vertices& x, Obj
   return objective_->shapeEnergy(x, X, nullptr, nullptr, terms) + objective_->patternEnergy(X, nullptr, terms);
 }
 
+double PatternOptimizer::settledEnergy(const Eigen::VectorXd& X, const Vertices& x) const {
+  objective_->trackCover(x);
+  return energy(X, x, nullptr);
+}
+
 void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad) {
   const double t0 = nowMs();
   SewnMesh mesh = mesh_;
@@ -401,7 +406,6 @@ bool PatternOptimizer::evaluate(const Eigen::VectorXd& X, double* E, Eigen::Vect
 }
 
 void PatternOptimizer::record(double alpha, int newton, bool projected) {
-  objective_->trackCover(x_);  // E_cover's closest points walk from the accepted shape's
   OptimizeRecord r;
   r.iteration = iteration_;
   r.objective = energy(X_, x_, &r.terms);
@@ -439,6 +443,7 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
     int newton = 0;
     if (solveEquilibrium(X, x_, x, &newton, true)) {
       X_ = X, x_ = x;
+      E_ = settledEnergy(X_, x_);
       unpackPattern(X_, pattern_);
       variableGradient(X_, x_, g_);
       record(0, newton, true);
@@ -546,7 +551,7 @@ bool PatternOptimizer::iterate() {
     // The adjoint gradient needs the alignment's minimum itself (rigid_align.hpp); aligning further only
     // lowers E, so the accepted trial stays accepted.
     align(X, x, EquilibriumLimits{}.alignTolerance);
-    E = energy(X, x, nullptr);
+    E = settledEnergy(X, x);
     Eigen::VectorXd g;
     variableGradient(X, x, g);
     if (!g.allFinite()) return false;
@@ -570,11 +575,13 @@ bool PatternOptimizer::resettle(const Vertices& from) {
   int newton = 0;
   // From an abandoned trial's shape (not settled): a solve that does not settle soon is no resettling.
   if (!solveEquilibrium(X_, from, x, &newton, false, {1e-12, 0, kResettleNewton})) return false;
-  const double E = energy(X_, x, nullptr);
-  if (!std::isfinite(E) || std::abs(E - E_) <= 1e-6 * std::abs(E_)) return false;
+  const double E = settledEnergy(X_, x);
   Eigen::VectorXd g;
-  variableGradient(X_, x, g);
-  if (!g.allFinite()) return false;
+  if (std::isfinite(E) && std::abs(E - E_) > 1e-6 * std::abs(E_)) variableGradient(X_, x, g);
+  if (!(g.size() && g.allFinite())) {
+    objective_->trackCover(x_);  // E_ stays what the line search compares with
+    return false;
+  }
   x_ = std::move(x), E_ = E, g_ = std::move(g);
   S_.clear(), Y_.clear();
   stalled_ = 0;
@@ -601,7 +608,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       return state_;
     }
     x_ = std::move(x);
-    E_ = energy(X_, x_, nullptr);
+    E_ = settledEnergy(X_, x_);
     variableGradient(X_, x_, g_);
     record(0, newton, false);
   }

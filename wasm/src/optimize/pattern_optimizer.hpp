@@ -259,6 +259,10 @@ class PatternOptimizer {
   void followBoundary(Eigen::VectorXd& X) const;  // interior rows from the boundary (interiorFollowsBoundary)
   void toVariables(Eigen::VectorXd& v) const;     // zero what is not a variable (interior rows)
   double energy(const Eigen::VectorXd& X, const Vertices& x, ObjectiveTerms* terms) const;
+  // E at a shape the optimizer takes as its state, E_cover's closest points searched for anew there first (they
+  // walk from there until the next one): each trial is compared with the very E that is recorded, so the
+  // recorded objective falls monotonically.
+  double settledEnergy(const Eigen::VectorXd& X, const Vertices& x) const;
   bool iterate();
   // After a failed line search whose shortest trial still landed on a clearly worse shape (a jump, not a
   // slope): the current equilibrium is unstable, a tiny change of the panels makes the balloon snap into
