@@ -228,8 +228,11 @@ void PatternObjective::coverPoints(const Vertices& x, std::vector<CoverPoint>& o
     best.target = T.row(coverVertex_[k]).transpose();
     best.weight = coverWeight_[long(k)];
     double d2 = closest(coverTriangle_[k], best.target, best);
-    // Walk to a neighbouring triangle while one is closer (a bounded number of steps: the shape moved little).
+    // Walk to a neighbouring triangle while one is closer (a bounded number of steps: the shape moved little). A
+    // closest point inside its triangle is a local minimum over the surface already: the walk ends there without
+    // looking at the neighbours (most samples, most evaluations; the rigid alignment evaluates this many times).
     for (int step = 0; step < 64; ++step) {
+      if ((best.bary.array() > 0).all()) break;
       CoverPoint trial = best;
       int next = -1;
       for (int i = aroundStart_[best.triangle]; i < aroundStart_[best.triangle + 1]; ++i) {
