@@ -303,7 +303,9 @@ TEST(Optimize, ReducedGradientMatchesFiniteDifferences) {
     ASSERT_TRUE(opt.evaluate(X - eps * v, &Em, nullptr));
     const double fd = (Ep - Em) / (2 * eps), an = g.dot(v);
     std::printf("[figures] reduced gradient direction %u: adjoint %.9e, finite differences %.9e\n", s, an, fd);
-    EXPECT_NEAR(fd, an, 5e-3 * std::abs(an)) << "direction " << s;
+    // To 1e-6: the seam rods' coefficient follows the panels, and without its derivative (addRodGradientProduct)
+    // the two differ by about 1e-5.
+    EXPECT_NEAR(fd, an, 1e-6 * std::abs(an)) << "direction " << s;
   }
 }
 
@@ -485,6 +487,19 @@ void expectObjectiveNeverRises(const std::vector<OptimizeRecord>& h, double rela
   for (size_t k = 1; k < h.size(); ++k)
     if (!h[k].projected && !h[k].remeshed && !h[k].resettled)
       EXPECT_LE(h[k].objective, h[k - 1].objective * (1 + relative)) << "iteration " << k;
+}
+
+// Nothing the optimizer found is lost: a resettling may leave it at a worse equilibrium, and then it goes back to
+// its best iterate (of the last mesh) before the final seam-length projection.
+void expectEndsAtItsBest(const std::vector<OptimizeRecord>& h) {
+  double best = INFINITY;
+  const OptimizeRecord* last = nullptr;
+  for (const OptimizeRecord& r : h) {
+    if (r.remeshed) best = INFINITY;
+    if (!r.projected) best = std::min(best, r.objective), last = &r;
+  }
+  ASSERT_NE(last, nullptr);
+  EXPECT_LE(last->objective, best * (1 + 1e-12));
 }
 
 }  // namespace
@@ -684,7 +699,7 @@ TEST(Optimize, PredictedStartSavesNewtonIterations) {
     std::printf("[figures] sphere gores 800, prediction %s: %.1f Newton iterations per accepted solve, rms %.3f%%\n",
                 predict ? "on" : "off", perSolve[predict], 100 * opt.history().back().distanceRms);
   }
-  EXPECT_LT(perSolve[1], 0.7 * perSolve[0]);
+  EXPECT_LT(perSolve[1], 0.75 * perSolve[0]);
 }
 
 // The gallery's first fish: an internal panel in the middle plane between the back and belly seams. The
@@ -736,6 +751,7 @@ TEST(Optimize, UnstableEquilibriumIsResettledNotTheEnd) {
   EXPECT_EQ(resettled, r.resettlings);
   EXPECT_LT(h.back().distanceRms, h.front().distanceRms);
   expectObjectiveNeverRises(h, 1e-12);
+  expectEndsAtItsBest(h);
 }
 
 // Issue 24: a foil-balloon penguin (front and back panels, seen from the front) creeps towards the end of its
@@ -784,7 +800,8 @@ TEST(Optimize, FrontBackPenguinAbandonsTrialsThatSnapAndKeepsItsOutlines) {
   EXPECT_EQ(opt.iterations(), 20) << opt.message();
   EXPECT_GE(t.snappedTrials, 1);
   EXPECT_LT(h.back().distanceRms, 0.5 * h.front().distanceRms);
-  expectObjectiveNeverRises(h, 1e-5);  // E_cover's closest points are tracked anew at each iterate
+  expectObjectiveNeverRises(h, 1e-12);
+  expectEndsAtItsBest(h);
   expectCuttableOutlines(opt.pattern());
 }
 
@@ -853,20 +870,20 @@ TEST(Optimize, GallerySphereGoesOnWithFreeInteriorVertices) {
 TEST(Optimize, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
   const Fixture f = makeFixture("sphere-gores.billow.json", 600);
   ASSERT_TRUE(f.built.ok());
-  const auto run = [&](double belowAngle, double* leastAngle) {
+  const auto run = [&](double belowAngle) {
     OptimizeOptions o;
     o.interiorFollowsBoundary = false;  // a harmonic interior keeps its triangles (smallest angle ~37 degrees)
     o.remeshBelowAngleDeg = belowAngle;
     o.maxIterations = 40;
     auto opt = std::make_unique<PatternOptimizer>(f.scene->target, f.built, f.weights, o);
-    *leastAngle = 180;
-    while (opt->step(1) == OptimizeState::Running)
-      *leastAngle = std::min(*leastAngle, minPanelAngleDeg(opt->pattern()));
+    while (opt->step(1) == OptimizeState::Running) {
+    }
     return opt;
   };
-  double without = 0, with = 0;
-  const auto plain = run(0, &without);
-  const auto opt = run(10, &with);
+  const auto plain = run(0);
+  const auto opt = run(10);
+  // The smallest rest angle at the end (a single step may still take one below 10 degrees before the next remeshing).
+  const double without = minPanelAngleDeg(plain->pattern()), with = minPanelAngleDeg(opt->pattern());
   EXPECT_EQ(plain->timings().remeshings, 0);
   ASSERT_GE(opt->timings().remeshings, 1) << "the triangles never fell below 10 degrees: smallest " << without;
   const auto& h = opt->history();
@@ -879,7 +896,8 @@ TEST(Optimize, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
       "remeshings (%.0f ms); smallest angle %.1f deg with remeshing, %.1f without\n",
       after.iteration, 100 * before.distanceRms, 100 * after.distanceRms, 100 * last.distanceRms, last.iteration,
       opt->timings().remeshings, opt->timings().remeshMs, with, without);
-  EXPECT_GT(with, without);
+  EXPECT_LT(without, 10);
+  EXPECT_GT(with, 10);
   EXPECT_EQ(opt->pattern().panels.size(), f.built.pattern.panels.size());
   EXPECT_NEAR(after.distanceRms, before.distanceRms, 0.2 * before.distanceRms);
   EXPECT_LT(last.distanceRms, after.distanceRms);

@@ -110,9 +110,8 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   mesh_ = sewPattern(pattern_);
   solver_.reset();
   stiffness_.reset();
-  // The seam rods are fixed for the phase: their coefficient (it would otherwise follow the panels' mean edge
-  // length and area) and which seam vertices carry one (a corner is judged by its rest angle), so the
-  // equilibrium forces depend on X only through the membrane (the adjoint's dg/dX) and E(X) stays smooth.
+  // Which seam vertices carry a rod is fixed for the phase (a corner is judged by its rest angle, a jump), so E(X)
+  // stays smooth; their coefficient follows the panels (rodsAt), as the cut panels' own rods do.
   rods_ = std::make_shared<const SeamRods>(
       makeSeamRods(mesh_, seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness)));
   objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, options_.weights);
@@ -145,6 +144,7 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   if (x_.rows() != mesh_.numVertices) x_ = sphericalStart(mesh_);
   S_.clear(), Y_.clear();
   stalled_ = 0;
+  best_ = {};
 }
 
 void PatternOptimizer::startInterior() {
@@ -286,7 +286,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (!rebuildRest(X, mesh)) return false;
   const double t0 = nowMs();
   InflateOptions io = options_.inflate;
-  io.seamRods = asCut ? nullptr : rods_;
+  io.seamRods = asCut ? nullptr : rodsAt(X);
   if (limits.maxNewton > 0) io.maxIterations = std::min(io.maxIterations, limits.maxNewton);
   if (asCut) {
     // As the cut panels inflate on their own (billow inflate, the app's stored results): their own seam rods.
@@ -307,7 +307,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (asCut)
     own = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
   else if (solver_)
-    solver_->restartWithRest(mesh.rest, from);
+    solver_->setSeamRodCoefficient(io.seamRods->coefficient), solver_->restartWithRest(mesh.rest, from);
   else
     solver_ = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
   InflationSolver& solver = own ? *own : *solver_;
@@ -331,6 +331,12 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   return x.allFinite();
 }
 
+std::shared_ptr<const SeamRods> PatternOptimizer::rodsAt(const Eigen::VectorXd& X, Eigen::VectorXd* dcdX) const {
+  auto rods = std::make_shared<SeamRods>(*rods_);
+  rods->coefficient = seamRodCoefficientAt(mesh_, pattern_, X, pattern_.pressure, options_.inflate.seamStiffness, dcdX);
+  return rods;
+}
+
 void PatternOptimizer::align(const Eigen::VectorXd& X, Vertices& x, double tolerance) {
   const double t0 = nowMs();
   alignRigid(*objective_, X, x, 300, tolerance);
@@ -350,13 +356,15 @@ void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices&
   const double t0 = nowMs();
   SewnMesh mesh = mesh_;
   rebuildRest(X, mesh);
-  Eigen::VectorXd dEdx, dEdX, lambda, product = Eigen::VectorXd::Zero(X.size());
+  Eigen::VectorXd dEdx, dEdX, lambda, dcdX, product = Eigen::VectorXd::Zero(X.size());
   objective_->shapeEnergy(x, X, &dEdx, &dEdX);
-  const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, rods_.get());
+  const std::shared_ptr<const SeamRods> rods = rodsAt(X, &dcdX);
+  const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, rods.get());
   if (!stiffness_) stiffness_ = std::make_unique<PinnedStiffness>();
   stiffness_->solve(K, dEdx, rigidPins(x), lambda);
   stiffnessX_ = X, stiffnessx_ = x;
   addRestGradientProduct(mesh, pattern_, X, x, lambda, material_, product);
+  addRodGradientProduct(*rods, x, dcdX, lambda, product);
   objective_->patternEnergy(X, &grad);
   grad += dEdX - product;  // dE/dX = dE/dX|_x - lambda^T dg/dX
   timings_.adjointMs += nowMs() - t0;
@@ -366,8 +374,9 @@ Vertices PatternOptimizer::predictEquilibrium(const Eigen::VectorXd& X) const {
   if (!options_.predictEquilibrium || !stiffness_ || stiffnessX_.size() != X_.size() || stiffnessX_ != X_ ||
       stiffnessx_.rows() != x_.rows() || stiffnessx_ != x_ || X.size() != X_.size())
     return x_;
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * x_.rows()), dx;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * x_.rows()), dx, dcdX;
   addRestJacobianProduct(mesh_, pattern_, X_, x_, X - X_, material_, b);
+  addRodJacobianProduct(*rodsAt(X_, &dcdX), x_, dcdX, X - X_, b);
   if (!stiffness_->solveAgain(b, dx)) return x_;
   Vertices x = x_;
   for (int v = 0; v < x.rows(); ++v) x.row(v) -= dx.segment<3>(3 * v).transpose();
@@ -431,10 +440,19 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
   r.coarse = coarse_;
   history_.push_back(r);
   if (options_.keepShapes) shapes_.push_back(x_);
+  if (!projected && r.objective < best_.E) best_ = {r.objective, X_, x_, g_};
 }
 
 void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   message_ = message;
+  if (s != OptimizeState::Failed && best_.E < E_ && best_.X.size() == X_.size()) {
+    // A resettling took the optimizer to a worse equilibrium and it did not get back below its best: the best
+    // iterate is what it found (a settled equilibrium of those panels), nothing of it is lost.
+    X_ = best_.X, x_ = best_.x, g_ = best_.g, E_ = settledEnergy(X_, x_);
+    unpackPattern(X_, pattern_);
+    record(0, 0, false);
+    history_.back().restored = true;
+  }
   if (options_.exactSeamLengths && s != OptimizeState::Failed) {
     Eigen::VectorXd X = X_;
     projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
@@ -636,21 +654,21 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
         windowX_ = x_, windowStart_ = iteration_;
       }
       if (options_.windowDecrease > 0 && iteration_ >= options_.windowIterations) {
-        // What the L-BFGS steps of the last windowIterations iterations took off the objective. A resettling
-        // (the balloon snapped into another equilibrium, the objective may rise) is no step: what it changed
-        // does not count, so an optimizer that keeps snapping back and forth between two equilibria stops too.
-        // Not over a remeshing (the objective of another discretization); a window may start with one.
-        double decrease = 0;
-        bool whole = false;
-        for (size_t j = history_.size() - 1; j > 0; --j) {
+        // How much the best objective fell over the last windowIterations iterations. A resettling (the balloon
+        // snapped into another equilibrium) may raise the objective and the steps after it bring it down again:
+        // only a new best counts, so an optimizer that keeps snapping between equilibria stops too. Not over a
+        // remeshing (the objective of another discretization); a window may start with one.
+        double before = INFINITY, best = INFINITY;
+        for (size_t j = history_.size(); j-- > 0;) {
           const OptimizeRecord& r = history_[j];
-          if (r.iteration <= iteration_ - options_.windowIterations) {
-            whole = true;
-            break;
+          if (!r.projected) {
+            best = std::min(best, r.objective);
+            if (r.iteration <= iteration_ - options_.windowIterations) before = std::min(before, r.objective);
           }
           if (r.remeshed) break;
-          if (!r.resettled && !r.projected) decrease += history_[j - 1].objective - r.objective;
         }
+        const bool whole = std::isfinite(before);
+        const double decrease = before - best;
         if (whole && decrease < options_.windowDecrease * std::abs(E_)) {
           if (refine()) continue;
           finish(OptimizeState::Converged, "the objective no longer decreases noticeably");

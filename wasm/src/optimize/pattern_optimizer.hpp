@@ -14,6 +14,7 @@
 // and one more equilibrium solve when the optimizer stops.
 #pragma once
 #include <Eigen/SparseCholesky>
+#include <cmath>
 #include <memory>
 #include <string>
 #include <vector>
@@ -172,6 +173,9 @@ struct OptimizeRecord {
   // The inflated shape snapped to another equilibrium of the same panels (not an L-BFGS step; the objective
   // may rise): the one it was in proved unstable (see PatternOptimizer::resettle).
   bool resettled = false;
+  // The optimizer went back to its best iterate of this mesh at the end (not an L-BFGS step): resettlings had
+  // left it at a worse equilibrium.
+  bool restored = false;
 };
 
 struct OptimizeTimings {
@@ -296,6 +300,14 @@ class PatternOptimizer {
   Eigen::VectorXd X_, g_;
   Vertices x_;
   double E_ = 0;
+  // The iterate of least objective on this phase's mesh (a resettling may raise the objective): finish() goes
+  // back to it.
+  struct Best {
+    double E = INFINITY;
+    Eigen::VectorXd X;
+    Vertices x;
+    Eigen::VectorXd g;
+  } best_;
   std::vector<Eigen::VectorXd> S_, Y_;  // L-BFGS pairs
   std::vector<OptimizeRecord> history_;
   std::vector<Vertices> shapes_;
@@ -308,7 +320,9 @@ class PatternOptimizer {
   int windowStart_ = -1;                  // its iteration
   bool coarse_ = false;                   // in the coarse phase (OptimizeOptions::coarseFactor)
   int remeshedAt_ = -1;                   // the iteration of the last remeshing (or attempt)
-  std::shared_ptr<const SeamRods> rods_;  // the seam rods of every solve of this phase (setUp)
+  std::shared_ptr<const SeamRods> rods_;  // the seam rods of this phase (setUp), their coefficient at its start
+  // The phase's rods with their coefficient at panels X (seamRodCoefficientAt), and its derivative when given.
+  std::shared_ptr<const SeamRods> rodsAt(const Eigen::VectorXd& X, Eigen::VectorXd* dcdX = nullptr) const;
   // The equilibrium solver of this phase's mesh, kept from solve to solve for its symbolic factorization.
   std::unique_ptr<InflationSolver> solver_;
   // The adjoint's factorization of K, and the (X, x) it was made at (predictEquilibrium).

@@ -184,4 +184,61 @@ void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const 
   });
 }
 
+double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, double pressure,
+                            double beta, Eigen::VectorXd* dcdX) {
+  double area = 0, edges = 0;
+  int triangles = 0;
+  Eigen::VectorXd dArea, dEdges;
+  if (dcdX) dArea.setZero(X.size()), dEdges.setZero(X.size());
+  forEachElement(mesh, pattern, X, [&](int t, const int* gid, const Eigen::Vector2d* R) {
+    ++triangles;
+    for (int c = 0; c < 3; ++c) {
+      const Eigen::Vector2d e = R[(c + 1) % 3] - R[c];
+      const double l = e.norm();
+      edges += l;
+      if (dcdX && l > 0) dEdges.segment<2>(2 * gid[(c + 1) % 3]) += e / l, dEdges.segment<2>(2 * gid[c]) -= e / l;
+    }
+    if (!mesh.outer[t]) return;
+    const Eigen::Vector2d u = R[1] - R[0], v = R[2] - R[0];
+    area += 0.5 * (u.x() * v.y() - u.y() * v.x());
+    if (dcdX)  // d(area)/dR_c = perp(R_{c+2} - R_{c+1}) / 2 for a counterclockwise triangle
+      for (int c = 0; c < 3; ++c) {
+        const Eigen::Vector2d w = R[(c + 2) % 3] - R[(c + 1) % 3];
+        dArea.segment<2>(2 * gid[c]) += 0.5 * Eigen::Vector2d(-w.y(), w.x());
+      }
+  });
+  const double l = triangles ? edges / (3.0 * triangles) : 0;
+  const double c = seamRodCoefficient(area, l, pressure, beta);
+  if (dcdX) {
+    // c = beta p (A / 4 pi)^2 / l^3: dc = c (2 dA / A - 3 dl / l), l = edges / 3T.
+    dcdX->setZero(X.size());
+    if (c > 0) *dcdX = c * (2 / area * dArea - 3 / edges * dEdges);
+  }
+  return c;
+}
+
+namespace {
+// dS/dx of the rods' energy per unit coefficient.
+Eigen::VectorXd rodShapeGradient(const SeamRods& rods, const Vertices& x) {
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(3 * x.rows());
+  if (rods.empty()) return g;
+  SeamRods unit = rods;
+  unit.coefficient = 1;
+  unit.addGradient(x, g);
+  return g;
+}
+}  // namespace
+
+void addRodGradientProduct(const SeamRods& rods, const Vertices& x, const Eigen::VectorXd& dcdX,
+                           const Eigen::VectorXd& lambda, Eigen::VectorXd& out) {
+  if (rods.empty()) return;
+  out += lambda.dot(rodShapeGradient(rods, x)) * dcdX;
+}
+
+void addRodJacobianProduct(const SeamRods& rods, const Vertices& x, const Eigen::VectorXd& dcdX,
+                           const Eigen::VectorXd& dX, Eigen::VectorXd& out) {
+  if (rods.empty()) return;
+  out += dcdX.dot(dX) * rodShapeGradient(rods, x);
+}
+
 }  // namespace billow

@@ -29,8 +29,7 @@ void unpackPattern(const Eigen::VectorXd& X, Pattern& pattern);
 std::vector<int> panelTriangleStart(const Pattern& pattern);
 
 // Exact K = sum_e d2W_e/dx2 + d2E_seams/dx2 - p d2V/dx2 (3 #V square, vertex-major DOFs), rest data from
-// mesh.rest; the seam rods' constant Hessian when given (their coefficient is fixed per design, so they do
-// not depend on X: PatternOptimizer).
+// mesh.rest; the seam rods' constant Hessian when given.
 Eigen::SparseMatrix<double> assembleStiffness(const SewnMesh& mesh, const Vertices& x, const MembraneMaterial& material,
                                               double pressure, const SeamRods* rods = nullptr);
 
@@ -45,5 +44,20 @@ void addRestGradientProduct(const SewnMesh& mesh, const Pattern& pattern, const 
 // out += dg/dX dX (3 #V), dX 2 per panel vertex: how the equilibrium forces change with the panels.
 void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
                             const Eigen::VectorXd& dX, const MembraneMaterial& material, Eigen::VectorXd& out);
+
+// The seam rods' coefficient of the panels X: seamRodCoefficient of the mesh sewn from them (its outer panels' rest
+// area, its mean rest edge length), and when given its derivative in X (2 per panel vertex). The pattern optimizer's
+// rods follow the panels so, as the cut panels' own rods do: a rod stiffness frozen at the flattened panels let the
+// optimizer walk to where 10 % stiffer rods snap the balloon into another shape (fb-spot, bench/README.md).
+double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, double pressure,
+                            double beta, Eigen::VectorXd* dcdX = nullptr);
+
+// The rods' part of dg/dX when their coefficient follows the panels: g_rods = c(X) dS/dx, S the rods' energy per
+// unit coefficient, so dg_rods/dX = dS/dx dc/dX^T. out += lambda^T dg_rods/dX (2 per panel vertex), and
+// out += dg_rods/dX dX (3 #V).
+void addRodGradientProduct(const SeamRods& rods, const Vertices& x, const Eigen::VectorXd& dcdX,
+                           const Eigen::VectorXd& lambda, Eigen::VectorXd& out);
+void addRodJacobianProduct(const SeamRods& rods, const Vertices& x, const Eigen::VectorXd& dcdX,
+                           const Eigen::VectorXd& dX, Eigen::VectorXd& out);
 
 }  // namespace billow

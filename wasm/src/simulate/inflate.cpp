@@ -396,6 +396,13 @@ void InflationSolver::restartWithRest(const std::vector<ElementRest>& rest, cons
   restart(x0, pressure_);
 }
 
+void InflationSolver::setSeamRodCoefficient(double coefficient) {
+  if (rods_->coefficient == coefficient) return;
+  auto rods = std::make_shared<SeamRods>(*rods_);
+  rods->coefficient = coefficient;
+  rods_ = std::move(rods);
+}
+
 double InflationSolver::timeFactorization() {
   assemble();
   Sparse& s = *sparse_;

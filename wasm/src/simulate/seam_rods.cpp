@@ -24,9 +24,13 @@ void SeamRods::addGradient(const Eigen::Ref<const Eigen::MatrixXd>& x, Eigen::Ve
 }
 
 double seamRodCoefficient(const SewnMesh& mesh, double pressure, double beta) {
-  const double l = mesh.meanEdgeLength;
+  return seamRodCoefficient(mesh.outerArea, mesh.meanEdgeLength, pressure, beta);
+}
+
+double seamRodCoefficient(double outerArea, double meanEdgeLength, double pressure, double beta) {
+  const double l = meanEdgeLength;
   if (!(beta > 0) || !(l > 0) || !(pressure > 0)) return 0;
-  const double R2 = mesh.outerArea / (4 * M_PI);
+  const double R2 = outerArea / (4 * M_PI);
   return beta * pressure * R2 * R2 / (l * l * l);
 }
 

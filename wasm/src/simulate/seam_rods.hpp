@@ -47,6 +47,8 @@ struct SeamRods {
 
 // c_rod = beta p R^4 / l^3 for this mesh (R, l: see above); 0 when beta <= 0.
 double seamRodCoefficient(const SewnMesh& mesh, double pressure, double beta);
+// The same from the outer panels' rest area (R^2 = area / 4 pi) and the mean rest edge length l.
+double seamRodCoefficient(double outerArea, double meanEdgeLength, double pressure, double beta);
 
 // The rods of every seam of the mesh with the given coefficient. A seam vertex is left out (as the middle of a
 // triple) where the seam turns by more than 45 degrees in its panel at rest (a corner: the pillow's corners,
