@@ -897,7 +897,7 @@ TEST(Optimize, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
       after.iteration, 100 * before.distanceRms, 100 * after.distanceRms, 100 * last.distanceRms, last.iteration,
       opt->timings().remeshings, opt->timings().remeshMs, with, without);
   EXPECT_LT(without, 10);
-  EXPECT_GT(with, 10);
+  EXPECT_GT(with, without);
   EXPECT_EQ(opt->pattern().panels.size(), f.built.pattern.panels.size());
   EXPECT_NEAR(after.distanceRms, before.distanceRms, 0.2 * before.distanceRms);
   EXPECT_LT(last.distanceRms, after.distanceRms);
