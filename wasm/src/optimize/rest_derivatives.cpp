@@ -187,11 +187,9 @@ void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const 
 double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, double pressure,
                             double beta, Eigen::VectorXd* dcdX) {
   double area = 0, edges = 0;
-  int triangles = 0;
   Eigen::VectorXd dArea, dEdges;
   if (dcdX) dArea.setZero(X.size()), dEdges.setZero(X.size());
   forEachElement(mesh, pattern, X, [&](int t, const int* gid, const Eigen::Vector2d* R) {
-    ++triangles;
     for (int c = 0; c < 3; ++c) {
       const Eigen::Vector2d e = R[(c + 1) % 3] - R[c];
       const double l = e.norm();
@@ -207,6 +205,7 @@ double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const 
         dArea.segment<2>(2 * gid[c]) += 0.5 * Eigen::Vector2d(-w.y(), w.x());
       }
   });
+  const int triangles = mesh.numTriangles();
   const double l = triangles ? edges / (3.0 * triangles) : 0;
   const double c = seamRodCoefficient(area, l, pressure, beta);
   if (dcdX) {
