@@ -5,11 +5,14 @@
 // seam mismatch and the peak RSS.
 //   billow_design_bench [--json] [--designs sphere3,teddy] [--max-seconds S] [--manifest FILE] [--triangles N]
 //                       [--trace] [--set NAME=VALUE ...] [--no-remesh-check] [--cut-scale F] [--out-dir DIR]
+//                       [--perturb SEED]
 // --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
 // --set changes an optimizer option (interiorFollowsBoundary, outlineSmoothing, quality, laplace, smooth, seam, cover,
 // gap, coverReach, maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants. After
 // each run the final outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check
-// skips it; --cut-scale F meshes them at F x the design's edge length).
+// skips it; --cut-scale F meshes them at F x the design's edge length). --perturb SEED moves every flattened panel
+// vertex by up to 1e-12 of the edge length (seeded): a start that differs at the rounding level, to see the
+// spread of a design's runs, which one run does not show (bench/README.md "How much one run tells").
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -18,6 +21,7 @@
 #include <filesystem>
 #include <fstream>
 #include <nlohmann/json.hpp>
+#include <random>
 #include <sstream>
 #include <stdexcept>
 #include <string>
@@ -59,6 +63,7 @@ struct BenchOptions {
   bool remeshCheck = true;  // --no-remesh-check: skip the cut-panel figure (remeshedOutlines)
   double cutScale = 1;      // --cut-scale F: the cut panels are meshed at F x the design's edge length
   std::string outDir;       // non-empty: the optimized pattern of each design is written there (NAME.pattern.json)
+  int perturb = 0;          // > 0: the seed of a rounding-level move of the flattened panels
 };
 
 // How far the shape a is from the final shape b: the largest vertex move when they share the mesh; else
@@ -185,6 +190,13 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
     return row;
   }
   const double patternSeconds = secondsSince(t0);
+  if (bo.perturb > 0) {
+    std::mt19937 rng(bo.perturb);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (Panel& panel : built.pattern.panels)
+      for (int v = 0; v < panel.vertices.rows(); ++v)
+        for (int k = 0; k < 2; ++k) panel.vertices(v, k) += 1e-12 * built.figures.edgeLength * u(rng);
+  }
   std::vector<double> weights;
   for (const auto& s : scene->design.seams) weights.push_back(s.weight);
   OptimizeOptions oo;
@@ -366,10 +378,13 @@ int main(int argc, char** argv) {
       manifestPath = argv[++i];
     else if (a == "--out-dir" && hasValue)
       bo.outDir = argv[++i];
+    else if (a == "--perturb" && hasValue)
+      bo.perturb = std::stoi(argv[++i]);
     else {
-      std::fprintf(stderr,
-                   "usage: billow_design_bench [--json] [--designs NAME,..] [--max-seconds S] [--manifest FILE] "
-                   "[--triangles N] [--trace] [--set NAME=VALUE] [--no-remesh-check] [--out-dir DIR]\n");
+      std::fprintf(
+          stderr,
+          "usage: billow_design_bench [--json] [--designs NAME,..] [--max-seconds S] [--manifest FILE] "
+          "[--triangles N] [--trace] [--set NAME=VALUE] [--no-remesh-check] [--out-dir DIR] [--perturb SEED]\n");
       return 2;
     }
   }
