@@ -52,7 +52,8 @@ TEST_P(CoarsenExample, SewsCleanlyWithFewerTrianglesAndTheSameJunctions) {
   EXPECT_EQ(junctions(coarseMesh, 3) == 2, junctions(fineMesh, 3) == 2);
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, CoarsenExample, ::testing::Values("mylar", "pillow", "sphere3", "sphere3-internal"));
+INSTANTIATE_TEST_SUITE_P(Examples, CoarsenExample,
+                         ::testing::Values("mylar", "pillow", "ring", "sphere3", "sphere3-internal"));
 
 TEST(CoarseStart, KeepsThePillowsCornersAndSewsEachCoarseVertexWhereItsFinePartnersAre) {
   const Pattern fine = example("pillow", 3000);

@@ -199,6 +199,43 @@ TEST(PanelMesh, LuneIsWellShaped) {
   }
 }
 
+// A ring panel (a letter O, a number 8): the outline and a clockwise hole, both kept exactly, nothing meshed
+// inside the hole; a hole that is not inside the outline is refused.
+TEST(PanelMesh, RingIsWellShapedAroundItsHole) {
+  const double h = 0.08;
+  const ResampledBoundary outer = resampleBoundary(disc(400), {}, h);
+  Points2 hole = resampleBoundary(disc(200) * 0.4, {}, h).points.colwise().reverse();
+  hole.col(0).array() += 0.2;  // off centre
+  const TriMesh m = meshPanel(outer.points, h, {}, {hole});
+  Points2 both(outer.points.rows() + hole.rows(), 2);
+  both << outer.points, hole;
+  for (Eigen::Index i = 0; i < both.rows(); ++i) EXPECT_EQ(m.V.row(i).head<2>(), both.row(i));
+  std::set<std::pair<int, int>> directed;
+  for (int f = 0; f < m.numTriangles(); ++f)
+    for (int k = 0; k < 3; ++k) directed.insert({m.F(f, k), m.F(f, (k + 1) % 3)});
+  const int n = static_cast<int>(outer.points.rows()), k = static_cast<int>(hole.rows());
+  for (int i = 0; i < k; ++i) {  // each hole edge borders the panel on its left, as the outline's do
+    EXPECT_TRUE(directed.count({n + i, n + (i + 1) % k})) << "hole edge " << i;
+    EXPECT_FALSE(directed.count({n + (i + 1) % k, n + i}));
+  }
+  const Quality q = measure(m, h);
+  EXPECT_NEAR(q.area, polygonArea(outer.points) + polygonArea(hole), 1e-9);
+  EXPECT_GE(q.minAngle, 20);
+  EXPECT_GE(q.inBand, 0.9);
+  // The hole moved out of the outline, or the outline given as a hole of itself.
+  Points2 outside = hole;
+  outside.col(0).array() += 3;
+  for (const Points2& bad : {outside, Points2(0.5 * hole)}) {
+    try {
+      meshPanel(outer.points, h, {}, {hole, bad});
+      ADD_FAILURE() << "no error";
+    } catch (const Error& e) {
+      EXPECT_TRUE(e.code == "panel.bad-hole" || e.code == "panel.self-intersecting") << e.code;
+    }
+  }
+  EXPECT_THROW(meshPanel(outer.points, h, {}, {Points2(hole.colwise().reverse())}), Error);  // counter-clockwise
+}
+
 TEST(PanelMesh, RejectsBadOutlines) {
   Points2 cw = disc(20).colwise().reverse();
   EXPECT_THROW(meshPanel(cw, 0.1), Error);

@@ -218,14 +218,32 @@ void splitChords(Cdt& cdt, int outlinePoints) {
 
 }  // namespace
 
-TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& options) {
-  const int n = static_cast<int>(boundary.rows());
-  if (n < 3 || !(h > 0)) throw Error("panel.bad-input", "A panel needs at least 3 boundary points and h > 0.");
+TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& options,
+                  const std::vector<Points2>& holes) {
+  const int outer = static_cast<int>(boundary.rows());
+  if (outer < 3 || !(h > 0)) throw Error("panel.bad-input", "A panel needs at least 3 boundary points and h > 0.");
   if (!(signedArea(boundary) > 0)) throw Error("panel.clockwise", "The panel outline must run counter-clockwise.");
+  int n = outer;
+  for (const Points2& hole : holes) {
+    if (hole.rows() < 3) throw Error("panel.bad-input", "A hole in a panel needs at least 3 points.");
+    if (!(signedArea(hole) < 0)) throw Error("panel.clockwise", "A hole in a panel must run clockwise.");
+    n += static_cast<int>(hole.rows());
+  }
+  // The outline and its holes, one closed chain of segments each: the CDT keeps what lies inside an odd
+  // number of them, the panel without its holes.
   Pslg pslg;
-  pslg.points = boundary;
+  pslg.points.resize(n, 2);
   pslg.segments.resize(n, 2);
-  for (int i = 0; i < n; ++i) pslg.segments.row(i) << i, (i + 1) % n;
+  int row = 0;
+  auto append = [&](const Points2& loop) {
+    const int first = row, size = static_cast<int>(loop.rows());
+    for (int i = 0; i < size; ++i, ++row) {
+      pslg.points.row(row) = loop.row(i);
+      pslg.segments.row(row) << row, first + (i + 1) % size;
+    }
+  };
+  append(boundary);
+  for (const Points2& hole : holes) append(hole);
   Cdt cdt(pslg);
   for (int i = 0; i < n; ++i)
     for (int j = 0; j < i; ++j)
@@ -244,6 +262,16 @@ TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& opt
   mesh.V = Vertices::Zero(r.points.rows(), 3);
   mesh.V.leftCols<2>() = r.points;
   mesh.F = r.triangles;
+  if (!holes.empty()) {
+    // A hole outside the outline or inside another hole would be meshed as panel: the area tells.
+    double expected = signedArea(boundary), meshed = 0;
+    for (const Points2& hole : holes) expected += signedArea(hole);
+    for (int f = 0; f < mesh.numTriangles(); ++f)
+      meshed += 0.5 * cross((r.points.row(mesh.F(f, 1)) - r.points.row(mesh.F(f, 0))).transpose(),
+                            (r.points.row(mesh.F(f, 2)) - r.points.row(mesh.F(f, 0))).transpose());
+    if (std::abs(meshed - expected) > 1e-9 * std::abs(signedArea(boundary)))
+      throw Error("panel.bad-hole", "A hole in a panel must lie inside its outline and outside its other holes.");
+  }
   smooth(mesh, n, options.smoothingIterations);
   return mesh;
 }

@@ -47,11 +47,13 @@ struct PanelMeshOptions {
 };
 
 // Meshes the interior of a closed simple polygon (#P by 2, counter-clockwise, e.g. ResampledBoundary::points)
-// with triangles of edge length about h. Returns V (z = 0) whose first P rows are exactly the boundary
-// points in order, then interior points; F counter-clockwise. No point is added on the boundary.
+// with triangles of edge length about h, leaving out `holes` (closed polygons inside it, clockwise: a ring
+// panel). Returns V (z = 0) whose first rows are exactly the boundary points in order, then each hole's in
+// order, then interior points; F counter-clockwise. No point is added on the boundary or the holes.
 // Errors: "panel.bad-input" (fewer than 3 points, h <= 0), "panel.clockwise", "panel.repeated-vertex",
-// "panel.self-intersecting".
-TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& options = {});
+// "panel.self-intersecting", "panel.bad-hole".
+TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& options = {},
+                  const std::vector<Points2>& holes = {});
 
 // Where a closed polygon (#P by 2) crosses or touches itself: the index i of its first edge (i, i + 1 mod P)
 // that meets an edge other than its neighbours, or -1 when it is simple. For saying where a panel that

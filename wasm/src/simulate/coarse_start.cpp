@@ -6,7 +6,6 @@
 #include <map>
 #include <unordered_map>
 
-#include "flatten/segment_boundary.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "simulate/initial_shape.hpp"
 #include "simulate/smoothing.hpp"
@@ -21,17 +20,46 @@ double turnAngle(const Panel& panel, int a, int b, int c) {
   return std::abs(std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w)));
 }
 
-// The boundary loop of a panel (counter-clockwise, as its triangles), or empty when the panel is no disc.
-std::vector<int> boundaryLoop(const Panel& panel) {
-  TriMesh flat;
-  flat.V = Vertices::Zero(panel.vertices.rows(), 3);
-  flat.V.leftCols(2) = panel.vertices;
-  flat.F = panel.triangles;
-  try {
-    return findBoundaryLoop(flat);
-  } catch (const Error&) {
-    return {};
+// The boundary loops of a panel, each in the direction of its triangles: the outline first (counter-clockwise),
+// then its holes (clockwise; a ring panel has one). Empty when the panel has no such boundary (its boundary
+// touches itself, or it is in several pieces).
+std::vector<std::vector<int>> boundaryLoops(const Panel& panel) {
+  const int n = static_cast<int>(panel.vertices.rows());
+  std::unordered_map<std::uint64_t, int> directed;  // (i, j) of each triangle edge i -> j, counted
+  for (int t = 0; t < panel.triangles.rows(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const std::uint64_t i = panel.triangles(t, k), j = panel.triangles(t, (k + 1) % 3);
+      ++directed[i * n + j];
+    }
+  std::vector<int> next(n, -1);
+  for (const auto& [edge, count] : directed) {
+    const int i = static_cast<int>(edge / n), j = static_cast<int>(edge % n);
+    if (count != 1) return {};
+    if (directed.count(static_cast<std::uint64_t>(j) * n + i)) continue;
+    if (next[i] >= 0) return {};
+    next[i] = j;
   }
+  std::vector<std::vector<int>> loops;
+  std::vector<char> seen(n, 0);
+  for (int s = 0; s < n; ++s) {
+    if (next[s] < 0 || seen[s]) continue;
+    std::vector<int> loop;
+    for (int v = s; !seen[v]; v = next[v]) seen[v] = 1, loop.push_back(v);
+    loops.push_back(std::move(loop));
+  }
+  auto area = [&](const std::vector<int>& loop) {
+    double a = 0;
+    for (size_t i = 0; i < loop.size(); ++i) {
+      const Eigen::Vector2d p = panel.vertices.row(loop[i]), q = panel.vertices.row(loop[(i + 1) % loop.size()]);
+      a += p.x() * q.y() - p.y() * q.x();
+    }
+    return a;
+  };
+  int outlines = 0;
+  for (size_t l = 0; l < loops.size(); ++l)
+    if (area(loops[l]) > 0) ++outlines, std::swap(loops[l], loops[0]);
+  if (outlines != 1) return {};
+  return loops;
 }
 
 }  // namespace
@@ -39,104 +67,114 @@ std::vector<int> boundaryLoop(const Panel& panel) {
 std::optional<Pattern> coarsenPattern(const Pattern& pattern, const SewnMesh& mesh, double h) {
   const int numPanels = static_cast<int>(pattern.panels.size());
   if (!(h > 0)) return std::nullopt;
-  std::vector<std::vector<int>> loops(numPanels);
+  std::vector<std::vector<std::vector<int>>> loops(numPanels);  // per panel: outline, then holes
   for (int p = 0; p < numPanels; ++p) {
-    loops[p] = boundaryLoop(pattern.panels[p]);
-    if (loops[p].size() < 3) return std::nullopt;
+    loops[p] = boundaryLoops(pattern.panels[p]);
+    if (loops[p].empty()) return std::nullopt;
+    for (const auto& loop : loops[p])
+      if (loop.size() < 3) return std::nullopt;
   }
   // Which panels hold each simulation boundary edge: an edge's signature is the list of panels along it.
   std::unordered_map<std::uint64_t, std::vector<int>> edgePanels;
-  for (int p = 0; p < numPanels; ++p) {
-    const auto& loop = loops[p];
-    for (size_t i = 0; i < loop.size(); ++i) {
-      auto& list = edgePanels[edgeKey(mesh.simVertex(p, loop[i]), mesh.simVertex(p, loop[(i + 1) % loop.size()]))];
-      list.push_back(p);
-    }
-  }
+  for (int p = 0; p < numPanels; ++p)
+    for (const auto& loop : loops[p])
+      for (size_t i = 0; i < loop.size(); ++i) {
+        auto& list = edgePanels[edgeKey(mesh.simVertex(p, loop[i]), mesh.simVertex(p, loop[(i + 1) % loop.size()]))];
+        list.push_back(p);
+      }
   for (auto& [key, list] : edgePanels) std::sort(list.begin(), list.end());
   // The panels at each simulation vertex.
   std::vector<std::vector<int>> vertexPanels(mesh.numVertices);
   for (int p = 0; p < numPanels; ++p)
-    for (int v : loops[p]) vertexPanels[mesh.simVertex(p, v)].push_back(p);
+    for (const auto& loop : loops[p])
+      for (int v : loop) vertexPanels[mesh.simVertex(p, v)].push_back(p);
   for (auto& list : vertexPanels) std::sort(list.begin(), list.end());
   // Key simulation vertices: corners on any panel, and junctions: where a boundary changes partner (the
   // pole of a gored sphere, the ends of a free edge) or where panels meet that its edges do not join. Along
   // a seam shared by three panels (an internal connection sewn into a seam) no vertex is a key.
   constexpr double cornerAngle = 30.0 * 3.14159265358979323846 / 180.0;
   std::vector<char> key(mesh.numVertices, 0);
-  for (int p = 0; p < numPanels; ++p) {
-    const auto& loop = loops[p];
-    const int n = static_cast<int>(loop.size());
-    for (int i = 0; i < n; ++i) {
-      const int a = loop[(i + n - 1) % n], b = loop[i], c = loop[(i + 1) % n];
-      const int sa = mesh.simVertex(p, a), sb = mesh.simVertex(p, b), sc = mesh.simVertex(p, c);
-      const auto& before = edgePanels[edgeKey(sa, sb)];
-      const auto& after = edgePanels[edgeKey(sb, sc)];
-      if (turnAngle(pattern.panels[p], a, b, c) > cornerAngle || before != after || vertexPanels[sb] != before)
-        key[sb] = 1;
+  for (int p = 0; p < numPanels; ++p)
+    for (const auto& loop : loops[p]) {
+      const int n = static_cast<int>(loop.size());
+      for (int i = 0; i < n; ++i) {
+        const int a = loop[(i + n - 1) % n], b = loop[i], c = loop[(i + 1) % n];
+        const int sa = mesh.simVertex(p, a), sb = mesh.simVertex(p, b), sc = mesh.simVertex(p, c);
+        const auto& before = edgePanels[edgeKey(sa, sb)];
+        const auto& after = edgePanels[edgeKey(sb, sc)];
+        if (turnAngle(pattern.panels[p], a, b, c) > cornerAngle || before != after || vertexPanels[sb] != before)
+          key[sb] = 1;
+      }
     }
-  }
-  // A loop without a key (a disc sewn all round to one other) gets its smallest simulation vertex, which the
-  // panel on the other side of it picks too.
-  for (int p = 0; p < numPanels; ++p) {
-    int smallest = -1;
-    bool any = false;
-    for (int v : loops[p]) {
-      const int s = mesh.simVertex(p, v);
-      any = any || key[s];
-      if (smallest < 0 || s < smallest) smallest = s;
+  // A loop without a key (a disc sewn all round to one other, a ring's hole) gets its smallest simulation
+  // vertex, which the panel on the other side of it picks too.
+  for (int p = 0; p < numPanels; ++p)
+    for (const auto& loop : loops[p]) {
+      int smallest = -1;
+      bool any = false;
+      for (int v : loop) {
+        const int s = mesh.simVertex(p, v);
+        any = any || key[s];
+        if (smallest < 0 || s < smallest) smallest = s;
+      }
+      if (!any) key[smallest] = 1;
     }
-    if (!any) key[smallest] = 1;
-  }
   // Between keys, keep vertices about h apart (below); decided once per simulation vertex.
   std::vector<signed char> kept(mesh.numVertices, -1);
-  for (int p = 0; p < numPanels; ++p) {
-    const auto& loop = loops[p];
-    const int n = static_cast<int>(loop.size());
-    int first = 0;
-    while (!key[mesh.simVertex(p, loop[first])]) ++first;
-    for (int i = 0; i < n;) {
-      // The piece from key loop[first + i] to the next key.
-      std::vector<int> piece{loop[(first + i) % n]};
-      int j = i + 1;
-      for (; j <= n; ++j) {
-        piece.push_back(loop[(first + j) % n]);
-        if (key[mesh.simVertex(p, piece.back())]) break;
+  for (int p = 0; p < numPanels; ++p)
+    for (const auto& loop : loops[p]) {
+      const int n = static_cast<int>(loop.size());
+      int first = 0;
+      while (!key[mesh.simVertex(p, loop[first])]) ++first;
+      for (int i = 0; i < n;) {
+        // The piece from key loop[first + i] to the next key.
+        std::vector<int> piece{loop[(first + i) % n]};
+        int j = i + 1;
+        for (; j <= n; ++j) {
+          piece.push_back(loop[(first + j) % n]);
+          if (key[mesh.simVertex(p, piece.back())]) break;
+        }
+        i = j;
+        for (int v : {piece.front(), piece.back()}) kept[mesh.simVertex(p, v)] = 1;
+        bool decided = false;
+        for (size_t k = 1; k + 1 < piece.size(); ++k) decided = decided || kept[mesh.simVertex(p, piece[k])] >= 0;
+        if (decided) continue;
+        // Every stride-th vertex, strides as even as the count allows: the seam rods (seam_rods.hpp) treat
+        // consecutive seam vertices as evenly spaced, and a seam kept at spacings of 1 and 2 alternately
+        // would be rippled by them.
+        double length = 0;
+        for (size_t k = 1; k < piece.size(); ++k)
+          length += (pattern.panels[p].vertices.row(piece[k]) - pattern.panels[p].vertices.row(piece[k - 1])).norm();
+        const int edges = static_cast<int>(piece.size()) - 1;
+        const int stride = std::max(1, static_cast<int>(std::lround(h * edges / length)));
+        const int segments = std::max(1, static_cast<int>(std::lround(double(edges) / stride)));
+        for (int k = 1; k < edges; ++k) kept[mesh.simVertex(p, piece[k])] = 0;
+        for (int s = 1; s < segments; ++s)
+          kept[mesh.simVertex(p, piece[static_cast<int>(std::lround(double(s) * edges / segments))])] = 1;
       }
-      i = j;
-      for (int v : {piece.front(), piece.back()}) kept[mesh.simVertex(p, v)] = 1;
-      bool decided = false;
-      for (size_t k = 1; k + 1 < piece.size(); ++k) decided = decided || kept[mesh.simVertex(p, piece[k])] >= 0;
-      if (decided) continue;
-      // Every stride-th vertex, strides as even as the count allows: the seam rods (seam_rods.hpp) treat
-      // consecutive seam vertices as evenly spaced, and a seam kept at spacings of 1 and 2 alternately
-      // would be rippled by them.
-      double length = 0;
-      for (size_t k = 1; k < piece.size(); ++k)
-        length += (pattern.panels[p].vertices.row(piece[k]) - pattern.panels[p].vertices.row(piece[k - 1])).norm();
-      const int edges = static_cast<int>(piece.size()) - 1;
-      const int stride = std::max(1, static_cast<int>(std::lround(h * edges / length)));
-      const int segments = std::max(1, static_cast<int>(std::lround(double(edges) / stride)));
-      for (int k = 1; k < edges; ++k) kept[mesh.simVertex(p, piece[k])] = 0;
-      for (int s = 1; s < segments; ++s)
-        kept[mesh.simVertex(p, piece[static_cast<int>(std::lround(double(s) * edges / segments))])] = 1;
     }
-  }
-  // Coarse panels: the kept boundary vertices in loop order, remeshed inside.
+  // Coarse panels: the kept boundary vertices of each loop in loop order, remeshed inside (meshPanel lists
+  // them first, the outline's and then each hole's).
   Pattern coarse;
   coarse.material = pattern.material;
   coarse.pressure = pattern.pressure;
   std::map<int, std::vector<std::pair<int, int>>> atSimVertex;  // fine simulation vertex -> (panel, coarse vertex)
   for (int p = 0; p < numPanels; ++p) {
     std::vector<int> boundary;
-    for (int v : loops[p])
-      if (kept[mesh.simVertex(p, v)] == 1) boundary.push_back(v);
-    if (boundary.size() < 3) return std::nullopt;
-    remesh::Points2 polygon(boundary.size(), 2);
-    for (size_t i = 0; i < boundary.size(); ++i) polygon.row(i) = pattern.panels[p].vertices.row(boundary[i]);
+    std::vector<remesh::Points2> polygons;
+    for (const auto& loop : loops[p]) {
+      const size_t start = boundary.size();
+      for (int v : loop)
+        if (kept[mesh.simVertex(p, v)] == 1) boundary.push_back(v);
+      if (boundary.size() - start < 3) return std::nullopt;
+      remesh::Points2 polygon(boundary.size() - start, 2);
+      for (size_t i = start; i < boundary.size(); ++i)
+        polygon.row(i - start) = pattern.panels[p].vertices.row(boundary[i]);
+      polygons.push_back(std::move(polygon));
+    }
     TriMesh m;
     try {
-      m = remesh::meshPanel(polygon, h);
+      m = remesh::meshPanel(polygons[0], h, {}, std::vector<remesh::Points2>(polygons.begin() + 1, polygons.end()));
     } catch (const Error&) {
       return std::nullopt;
     }

@@ -5,7 +5,7 @@
 // at a subset of the same seam vertices), the coarse pattern is inflated (itself started the same way), and
 // its shape is carried onto the fine panels.
 //
-// Coarsening keeps every seam consistent: each panel's boundary loop is split at key simulation vertices
+// Coarsening keeps every seam consistent: each of a panel's boundary loops is split at key simulation vertices
 // (corners, and junctions: where a boundary changes partner or meets panels its edges do not join, as at
 // the ends of free edges), and each piece between two keys keeps every stride-th vertex, decided once per
 // simulation vertex, so the panels on both sides of a seam keep the same vertices and are stitched there.
@@ -21,8 +21,9 @@
 
 namespace billow {
 
-// The coarse pattern, or nothing when a panel is not a disc (one boundary loop), a panel would keep fewer
-// than 3 boundary vertices, or meshing fails. `h`: target edge length of the coarse panels [m].
+// The coarse pattern, or nothing when a panel has no outline to remesh (its boundary touches itself, or it is
+// in pieces; an outline with holes, as a ring's, is remeshed with them), a loop would keep fewer than 3
+// boundary vertices, or meshing fails. `h`: target edge length of the coarse panels [m].
 std::optional<Pattern> coarsenPattern(const Pattern& pattern, const SewnMesh& mesh, double h);
 
 // Positions of `fine`'s simulation vertices interpolated from the coarse pattern's inflated positions `x`.
