@@ -396,10 +396,9 @@ void InflationSolver::restartWithRest(const std::vector<ElementRest>& rest, cons
   restart(x0, pressure_);
 }
 
-void InflationSolver::setSeamRodCoefficient(double coefficient) {
-  if (rods_->coefficient == coefficient) return;
-  auto rods = std::make_shared<SeamRods>(*rods_);
-  rods->coefficient = coefficient;
+void InflationSolver::setSeamRods(std::shared_ptr<const SeamRods> rods) {
+  if (!rods || rods->triples != rods_->triples)
+    throw Error("inflate.bad-start", "The seam rods do not fit the pattern.");
   rods_ = std::move(rods);
 }
 
