@@ -783,27 +783,23 @@ void expectCuttableOutlines(const Pattern& pattern) {
 
 }  // namespace
 
-// Some of fb-blub's first trials snap: their solve moves the balloon far beyond the predicted equilibrium,
-// into another one. The line search abandons such a solve early (its E would be far off) and tries a step
-// ten times shorter; the optimizer goes on. (With the fading seam-rod weight the penguin, which this test
-// used, no longer snaps in its first 40 iterations.)
-TEST(Optimize, FrontBackBlubAbandonsTrialsThatSnapAndKeepsItsOutlines) {
-  const Fixture f = makeFixture("../../bench/designs/blub-front-back.billow.json", 3000);
+TEST(Optimize, FrontBackPenguinAbandonsTrialsThatSnapAndKeepsItsOutlines) {
+  const Fixture f = makeFixture("../../bench/designs/penguin-front-back.billow.json", 3000);
   ASSERT_TRUE(f.built.ok());
-  const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 15);
+  const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 20);
   const PatternOptimizer& opt = *optimized;
   const OptimizeTimings& t = opt.timings();
   const auto& h = opt.history();
   int newton = 0;
   for (const auto& r : h) newton += r.equilibriumIterations;
   std::printf(
-      "[figures] fb-blub 3k: %d iterations, %d solves (%d trials refused, %d snapped), %d resettled, Newton %d "
+      "[figures] fb-penguin 3k: %d iterations, %d solves (%d trials refused, %d snapped), %d resettled, Newton %d "
       "accepted, rms %.3f %% -> %.3f %%, %.1f s\n",
       opt.iterations(), t.equilibriumSolves, t.rejectedTrials, t.snappedTrials, t.resettlings, newton,
       100 * h.front().distanceRms, 100 * h.back().distanceRms, t.totalMs / 1000);
-  EXPECT_EQ(opt.iterations(), 15) << opt.message();
+  EXPECT_EQ(opt.iterations(), 20) << opt.message();
   EXPECT_GE(t.snappedTrials, 1);
-  EXPECT_LT(h.back().distanceRms, 0.75 * h.front().distanceRms);
+  EXPECT_LT(h.back().distanceRms, 0.5 * h.front().distanceRms);
   expectObjectiveNeverRises(h, 1e-12);
   expectEndsAtItsBest(h);
   expectCuttableOutlines(opt.pattern());

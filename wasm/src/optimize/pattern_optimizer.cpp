@@ -110,8 +110,8 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   mesh_ = sewPattern(pattern_);
   solver_.reset();
   stiffness_.reset();
-  // The rod triples are fixed for the phase; their coefficient and weights follow the panels (rodsAt), as the cut
-  // panels' own rods do.
+  // Which seam vertices carry a rod is fixed for the phase (a corner is judged by its rest angle, a jump), so E(X)
+  // stays smooth; their coefficient follows the panels (rodsAt), as the cut panels' own rods do.
   rods_ = std::make_shared<const SeamRods>(
       makeSeamRods(mesh_, seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness)));
   objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, options_.weights);
@@ -307,7 +307,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (asCut)
     own = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
   else if (solver_)
-    solver_->setSeamRods(io.seamRods), solver_->restartWithRest(mesh.rest, from);
+    solver_->setSeamRodCoefficient(io.seamRods->coefficient), solver_->restartWithRest(mesh.rest, from);
   else
     solver_ = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
   InflationSolver& solver = own ? *own : *solver_;
@@ -331,11 +331,9 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   return x.allFinite();
 }
 
-std::shared_ptr<const SeamRods> PatternOptimizer::rodsAt(const Eigen::VectorXd& X, SeamRodDerivatives* d) const {
+std::shared_ptr<const SeamRods> PatternOptimizer::rodsAt(const Eigen::VectorXd& X, Eigen::VectorXd* dcdX) const {
   auto rods = std::make_shared<SeamRods>(*rods_);
-  rods->coefficient = seamRodCoefficientAt(mesh_, pattern_, X, pattern_.pressure, options_.inflate.seamStiffness,
-                                           d ? &d->dcdX : nullptr);
-  seamRodWeightsAt(mesh_, pattern_, X, *rods, d ? &d->dwdX : nullptr);
+  rods->coefficient = seamRodCoefficientAt(mesh_, pattern_, X, pattern_.pressure, options_.inflate.seamStiffness, dcdX);
   return rods;
 }
 
@@ -358,16 +356,15 @@ void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices&
   const double t0 = nowMs();
   SewnMesh mesh = mesh_;
   rebuildRest(X, mesh);
-  Eigen::VectorXd dEdx, dEdX, lambda, product = Eigen::VectorXd::Zero(X.size());
+  Eigen::VectorXd dEdx, dEdX, lambda, dcdX, product = Eigen::VectorXd::Zero(X.size());
   objective_->shapeEnergy(x, X, &dEdx, &dEdX);
-  SeamRodDerivatives dRods;
-  const std::shared_ptr<const SeamRods> rods = rodsAt(X, &dRods);
+  const std::shared_ptr<const SeamRods> rods = rodsAt(X, &dcdX);
   const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, rods.get());
   if (!stiffness_) stiffness_ = std::make_unique<PinnedStiffness>();
   stiffness_->solve(K, dEdx, rigidPins(x), lambda);
   stiffnessX_ = X, stiffnessx_ = x;
   addRestGradientProduct(mesh, pattern_, X, x, lambda, material_, product);
-  addRodGradientProduct(*rods, x, dRods, lambda, product);
+  addRodGradientProduct(*rods, x, dcdX, lambda, product);
   objective_->patternEnergy(X, &grad);
   grad += dEdX - product;  // dE/dX = dE/dX|_x - lambda^T dg/dX
   timings_.adjointMs += nowMs() - t0;
@@ -377,10 +374,9 @@ Vertices PatternOptimizer::predictEquilibrium(const Eigen::VectorXd& X) const {
   if (!options_.predictEquilibrium || !stiffness_ || stiffnessX_.size() != X_.size() || stiffnessX_ != X_ ||
       stiffnessx_.rows() != x_.rows() || stiffnessx_ != x_ || X.size() != X_.size())
     return x_;
-  Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * x_.rows()), dx;
-  SeamRodDerivatives dRods;
+  Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * x_.rows()), dx, dcdX;
   addRestJacobianProduct(mesh_, pattern_, X_, x_, X - X_, material_, b);
-  addRodJacobianProduct(*rodsAt(X_, &dRods), x_, dRods, X - X_, b);
+  addRodJacobianProduct(*rodsAt(X_, &dcdX), x_, dcdX, X - X_, b);
   if (!stiffness_->solveAgain(b, dx)) return x_;
   Vertices x = x_;
   for (int v = 0; v < x.rows(); ++v) x.row(v) -= dx.segment<3>(3 * v).transpose();

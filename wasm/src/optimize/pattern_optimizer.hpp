@@ -22,7 +22,6 @@
 #include "optimize/adjoint.hpp"
 #include "optimize/harmonic_interior.hpp"
 #include "optimize/objectives.hpp"
-#include "optimize/rest_derivatives.hpp"
 #include "optimize/seam_projection.hpp"
 #include "simulate/inflate.hpp"
 
@@ -321,9 +320,9 @@ class PatternOptimizer {
   int windowStart_ = -1;                  // its iteration
   bool coarse_ = false;                   // in the coarse phase (OptimizeOptions::coarseFactor)
   int remeshedAt_ = -1;                   // the iteration of the last remeshing (or attempt)
-  std::shared_ptr<const SeamRods> rods_;  // the seam rods of this phase (setUp), as at its start
-  // The phase's rods with their coefficient and weights at panels X, and their derivatives when given.
-  std::shared_ptr<const SeamRods> rodsAt(const Eigen::VectorXd& X, SeamRodDerivatives* d = nullptr) const;
+  std::shared_ptr<const SeamRods> rods_;  // the seam rods of this phase (setUp), their coefficient at its start
+  // The phase's rods with their coefficient at panels X (seamRodCoefficientAt), and its derivative when given.
+  std::shared_ptr<const SeamRods> rodsAt(const Eigen::VectorXd& X, Eigen::VectorXd* dcdX = nullptr) const;
   // The equilibrium solver of this phase's mesh, kept from solve to solve for its symbolic factorization.
   std::unique_ptr<InflationSolver> solver_;
   // The adjoint's factorization of K, and the (X, x) it was made at (predictEquilibrium).

@@ -1,7 +1,5 @@
 #include "optimize/rest_derivatives.hpp"
 
-#include <map>
-
 #include "simulate/enclosed_volume.hpp"
 
 namespace billow {
@@ -218,90 +216,28 @@ double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const 
   return c;
 }
 
-void seamRodWeightsAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, SeamRods& rods,
-                      Eigen::SparseMatrix<double>* dwdX) {
-  const int n = int(rods.triples.size());
-  // The angle of each judging panel at each rod's middle vertex: the sum of its triangles' corners there, with
-  // its derivative (X index, value).
-  struct Corner {
-    double angle = 0;
-    std::vector<std::pair<int, double>> derivative;
-  };
-  std::map<std::pair<int, int>, Corner> corners;  // (panel, vertex)
-  std::vector<char> middle(mesh.numVertices, 0);
-  for (int r = 0; r < n; ++r)
-    for (int panel : rods.panels[r]) corners[{panel, rods.triples[r][1]}], middle[rods.triples[r][1]] = 1;
-  forEachElement(mesh, pattern, X, [&](int t, const int* gid, const Eigen::Vector2d* R) {
-    for (int k = 0; k < 3; ++k) {
-      if (!middle[mesh.triangles(t, k)]) continue;
-      const auto it = corners.find({mesh.trianglePanel[t], mesh.triangles(t, k)});
-      if (it == corners.end()) continue;
-      // The corner angle phi = atan2(|u x v|, u . v), u and v the triangle's edges from the corner.
-      const Eigen::Vector2d u = R[(k + 1) % 3] - R[k], v = R[(k + 2) % 3] - R[k];
-      const double cross = u.x() * v.y() - u.y() * v.x(), y = std::abs(cross), x = u.dot(v);
-      it->second.angle += std::atan2(y, x);
-      if (!dwdX) continue;
-      const double sign = cross < 0 ? -1 : 1, r2 = x * x + y * y;
-      if (!(r2 > 0)) continue;
-      const Eigen::Vector2d du = (x * sign * Eigen::Vector2d(v.y(), -v.x()) - y * v) / r2;
-      const Eigen::Vector2d dv = (x * sign * Eigen::Vector2d(-u.y(), u.x()) - y * u) / r2;
-      const Eigen::Vector2d d[3] = {-du - dv, du, dv};
-      auto& out = it->second.derivative;
-      for (int c = 0; c < 3; ++c)
-        for (int axis = 0; axis < 2; ++axis) out.emplace_back(2 * gid[(k + c) % 3] + axis, d[c][axis]);
-    }
-  });
-  std::vector<Eigen::Triplet<double>> trip;
-  for (int r = 0; r < n; ++r) {
-    double w = 1, dw = 0;
-    const Corner* judge = nullptr;
-    for (int panel : rods.panels[r]) {
-      const Corner& c = corners[{panel, rods.triples[r][1]}];
-      double d = 0;
-      const double wc = seamRodWeight(std::abs(M_PI - c.angle), &d);
-      if (!judge || wc < w) w = wc, dw = c.angle > M_PI ? d : -d, judge = &c;
-    }
-    rods.weights[r] = w;
-    if (dwdX && judge && dw != 0)
-      for (const auto& [i, value] : judge->derivative) trip.emplace_back(r, i, dw * value);
-  }
-  if (dwdX) {
-    dwdX->resize(n, X.size());
-    dwdX->setFromTriplets(trip.begin(), trip.end());
-  }
+namespace {
+// dS/dx of the rods' energy per unit coefficient.
+Eigen::VectorXd rodShapeGradient(const SeamRods& rods, const Vertices& x) {
+  Eigen::VectorXd g = Eigen::VectorXd::Zero(3 * x.rows());
+  if (rods.empty()) return g;
+  SeamRods unit = rods;
+  unit.coefficient = 1;
+  unit.addGradient(x, g);
+  return g;
 }
+}  // namespace
 
-void addRodGradientProduct(const SeamRods& rods, const Vertices& x, const SeamRodDerivatives& d,
+void addRodGradientProduct(const SeamRods& rods, const Vertices& x, const Eigen::VectorXd& dcdX,
                            const Eigen::VectorXd& lambda, Eigen::VectorXd& out) {
   if (rods.empty()) return;
-  const int n = int(rods.triples.size());
-  Eigen::VectorXd q(n);  // lambda^T dS_r/dx
-  double weighted = 0;
-  for (int r = 0; r < n; ++r) {
-    const auto& t = rods.triples[r];
-    const Eigen::Vector3d u = (x.row(t[0]) - 2 * x.row(t[1]) + x.row(t[2])).transpose();
-    q[r] = 2 * u.dot(lambda.segment<3>(3 * t[0]) - 2 * lambda.segment<3>(3 * t[1]) + lambda.segment<3>(3 * t[2]));
-    weighted += rods.weights[r] * q[r];
-  }
-  if (d.dcdX.size() == out.size()) out += weighted * d.dcdX;
-  if (d.dwdX.rows() == n && d.dwdX.cols() == out.size()) out += rods.coefficient * (d.dwdX.transpose() * q);
+  out += lambda.dot(rodShapeGradient(rods, x)) * dcdX;
 }
 
-void addRodJacobianProduct(const SeamRods& rods, const Vertices& x, const SeamRodDerivatives& d,
+void addRodJacobianProduct(const SeamRods& rods, const Vertices& x, const Eigen::VectorXd& dcdX,
                            const Eigen::VectorXd& dX, Eigen::VectorXd& out) {
   if (rods.empty()) return;
-  const int n = int(rods.triples.size());
-  const double dc = d.dcdX.size() == dX.size() ? d.dcdX.dot(dX) : 0;
-  Eigen::VectorXd dw = Eigen::VectorXd::Zero(n);
-  if (d.dwdX.rows() == n && d.dwdX.cols() == dX.size()) dw = d.dwdX * dX;
-  for (int r = 0; r < n; ++r) {
-    const auto& t = rods.triples[r];
-    const double f = 2 * (rods.weights[r] * dc + rods.coefficient * dw[r]);
-    const Eigen::Vector3d u = (x.row(t[0]) - 2 * x.row(t[1]) + x.row(t[2])).transpose();
-    out.segment<3>(3 * t[0]) += f * u;
-    out.segment<3>(3 * t[1]) -= 2 * f * u;
-    out.segment<3>(3 * t[2]) += f * u;
-  }
+  out += dcdX.dot(dX) * rodShapeGradient(rods, x);
 }
 
 }  // namespace billow

@@ -52,23 +52,12 @@ void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const 
 double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, double pressure,
                             double beta, Eigen::VectorXd* dcdX = nullptr);
 
-// Each rod's weight at the panels X (seamRodWeight of its largest turn in the panels that judge it, as
-// makeSeamRods judges the cut panels), and when given its derivative: row r of *dwdX is dw_r/dX.
-void seamRodWeightsAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, SeamRods& rods,
-                      Eigen::SparseMatrix<double>* dwdX = nullptr);
-
-// How the optimizer's rods change with the panels: their coefficient and their weights.
-struct SeamRodDerivatives {
-  Eigen::VectorXd dcdX;              // seamRodCoefficientAt
-  Eigen::SparseMatrix<double> dwdX;  // seamRodWeightsAt
-};
-
-// The rods' part of dg/dX when they follow the panels: g_rods = c(X) sum_r w_r(X) dS_r/dx, S_r = |x_a - 2 x_b +
-// x_c|^2, so dg_rods/dX = sum_r dS_r/dx (w_r dc/dX + c dw_r/dX)^T. out += lambda^T dg_rods/dX (2 per panel
-// vertex), and out += dg_rods/dX dX (3 #V).
-void addRodGradientProduct(const SeamRods& rods, const Vertices& x, const SeamRodDerivatives& d,
+// The rods' part of dg/dX when their coefficient follows the panels: g_rods = c(X) dS/dx, S the rods' energy per
+// unit coefficient, so dg_rods/dX = dS/dx dc/dX^T. out += lambda^T dg_rods/dX (2 per panel vertex), and
+// out += dg_rods/dX dX (3 #V).
+void addRodGradientProduct(const SeamRods& rods, const Vertices& x, const Eigen::VectorXd& dcdX,
                            const Eigen::VectorXd& lambda, Eigen::VectorXd& out);
-void addRodJacobianProduct(const SeamRods& rods, const Vertices& x, const SeamRodDerivatives& d,
+void addRodJacobianProduct(const SeamRods& rods, const Vertices& x, const Eigen::VectorXd& dcdX,
                            const Eigen::VectorXd& dX, Eigen::VectorXd& out);
 
 }  // namespace billow

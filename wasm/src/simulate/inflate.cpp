@@ -396,9 +396,10 @@ void InflationSolver::restartWithRest(const std::vector<ElementRest>& rest, cons
   restart(x0, pressure_);
 }
 
-void InflationSolver::setSeamRods(std::shared_ptr<const SeamRods> rods) {
-  if (!rods || rods->triples != rods_->triples)
-    throw Error("inflate.bad-start", "The seam rods do not fit the pattern.");
+void InflationSolver::setSeamRodCoefficient(double coefficient) {
+  if (rods_->coefficient == coefficient) return;
+  auto rods = std::make_shared<SeamRods>(*rods_);
+  rods->coefficient = coefficient;
   rods_ = std::move(rods);
 }
 

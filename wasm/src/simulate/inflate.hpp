@@ -132,10 +132,9 @@ class InflationSolver {
   // Restarts from x0 with new rest shapes of the same triangles (the pattern optimizer's trial panels),
   // keeping the symbolic factorization. Throws billow::Error("inflate.bad-start") on another count.
   void restartWithRest(const std::vector<ElementRest>& rest, const Vertices& x0);
-  // The same rod triples with another coefficient and weights (the pattern optimizer's rods follow its panels:
-  // seamRodCoefficientAt, seamRodWeightsAt), for the next restart. Throws billow::Error("inflate.bad-start") on
-  // other triples.
-  void setSeamRods(std::shared_ptr<const SeamRods> rods);
+  // The same rods with another coefficient (the pattern optimizer's rods follow its panels: seamRodCoefficientAt),
+  // for the next restart.
+  void setSeamRodCoefficient(double coefficient);
 
   InflateState state() const { return state_; }
   const std::string& message() const { return message_; }

@@ -3,24 +3,20 @@
 #include <algorithm>
 #include <cmath>
 #include <map>
+#include <set>
 #include <tuple>
 
 namespace billow {
 
 double SeamRods::energy(const Eigen::Ref<const Eigen::MatrixXd>& x) const {
   double e = 0;
-  for (size_t r = 0; r < triples.size(); ++r) {
-    const auto& t = triples[r];
-    e += weights[r] * (x.row(t[0]) - 2 * x.row(t[1]) + x.row(t[2])).squaredNorm();
-  }
+  for (const auto& t : triples) e += (x.row(t[0]) - 2 * x.row(t[1]) + x.row(t[2])).squaredNorm();
   return coefficient * e;
 }
 
 void SeamRods::addGradient(const Eigen::Ref<const Eigen::MatrixXd>& x, Eigen::VectorXd& grad) const {
-  for (size_t r = 0; r < triples.size(); ++r) {
-    const auto& t = triples[r];
-    const Eigen::Vector3d u =
-        (x.row(t[0]) - 2 * x.row(t[1]) + x.row(t[2])).transpose() * (2 * coefficient * weights[r]);
+  for (const auto& t : triples) {
+    const Eigen::Vector3d u = (x.row(t[0]) - 2 * x.row(t[1]) + x.row(t[2])).transpose() * (2 * coefficient);
     grad.segment<3>(3 * t[0]) += u;
     grad.segment<3>(3 * t[1]) -= 2 * u;
     grad.segment<3>(3 * t[2]) += u;
@@ -36,16 +32,6 @@ double seamRodCoefficient(double outerArea, double meanEdgeLength, double pressu
   if (!(beta > 0) || !(l > 0) || !(pressure > 0)) return 0;
   const double R2 = outerArea / (4 * M_PI);
   return beta * pressure * R2 * R2 / (l * l * l);
-}
-
-double seamRodWeight(double turn, double* dWeight) {
-  constexpr double smooth = M_PI / 6, corner = M_PI / 3;
-  if (dWeight) *dWeight = 0;
-  if (turn <= smooth) return 1;
-  if (turn >= corner) return 0;
-  const double s = (corner - turn) / (corner - smooth);
-  if (dWeight) *dWeight = -6 * s * (1 - s) / (corner - smooth);
-  return s * s * (3 - 2 * s);
 }
 
 SeamRods makeSeamRods(const SewnMesh& mesh, double coefficient) {
@@ -77,22 +63,15 @@ SeamRods makeSeamRods(const SewnMesh& mesh, double coefficient) {
     ++sides[{a, b}];
   }
   auto sewn = [&](int a, int b) { return sides[{std::min(a, b), std::max(a, b)}] >= 2; };
-  std::map<std::array<int, 3>, size_t> seen;
+  const double maxTurn = M_PI / 4;
+  std::set<std::array<int, 3>> seen;
   for (const auto& [key, ns] : neighbours) {
     const int b = key.second;
     if (ns.size() != 2 || mesh.stitchedCount[b] < 2) continue;
-    if (!sewn(ns[0], b) || !sewn(b, ns[1])) continue;  // the end of a seam
+    if (!sewn(ns[0], b) || !sewn(b, ns[1])) continue;     // the end of a seam
+    if (std::abs(M_PI - angle[key]) > maxTurn) continue;  // a corner
     const std::array<int, 3> t{std::min(ns[0], ns[1]), b, std::max(ns[0], ns[1])};
-    const double w = seamRodWeight(std::abs(M_PI - angle[key]));
-    const auto [at, added] = seen.emplace(t, rods.triples.size());
-    if (added) {  // once, not once per panel
-      rods.triples.push_back(t);
-      rods.weights.push_back(w);
-      rods.panels.push_back({key.first});
-    } else {
-      rods.weights[at->second] = std::min(rods.weights[at->second], w);
-      rods.panels[at->second].push_back(key.first);
-    }
+    if (seen.insert(t).second) rods.triples.push_back(t);  // once, not once per panel
   }
   return rods;
 }

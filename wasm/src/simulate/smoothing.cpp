@@ -58,7 +58,7 @@ SmoothingReport smoothShape(const SewnMesh& mesh, const Material& material, doub
       e += membraneElementEnergy(mesh.rest[f], a, b, c, membrane);
       if (mesh.outer[f]) e -= pressure * triangleVolume(a, b, c);
     }
-    for (const auto& [r, k] : rodsAt[v]) e += rods->coefficient * rods->weights[r] * rodVector(r).squaredNorm();
+    for (const auto& [r, k] : rodsAt[v]) e += rods->coefficient * rodVector(r).squaredNorm();
     return e;
   };
   ElementOptions elementOptions;
@@ -87,10 +87,9 @@ SmoothingReport smoothShape(const SewnMesh& mesh, const Material& material, doub
     }
     for (const auto& [r, k] : rodsAt[v]) {
       const Eigen::Vector3d rod = rodVector(r);
-      const double c = rods->coefficient * rods->weights[r];
-      e += c * rod.squaredNorm();
-      g += 2 * c * w[k] * rod;
-      if (H) H->diagonal().array() += 2 * c * w[k] * w[k];
+      e += rods->coefficient * rod.squaredNorm();
+      g += 2 * rods->coefficient * w[k] * rod;
+      if (H) H->diagonal().array() += 2 * rods->coefficient * w[k] * w[k];
     }
     return e;
   };
