@@ -249,12 +249,15 @@ int designCommand(const std::vector<std::string>& argv) {
       {"memory", {{"predicted_bytes", neededBytes}, {"peak_resident_bytes", peakResidentBytes()}}},
       {"cut_file", {{"written", cutFileProblem.empty()}, {"message", cutFileProblem}}}};
   writeTextFile(dir + "/report.json", report.dump(2) + "\n");
+  // The optimizer hands over its own equilibrium, which is usually settled already.
+  const std::string settling = !r.converged ? "did not settle after " + std::to_string(r.iterations) + " iterations"
+                               : r.iterations == 0 ? "settled where the optimizer left it"
+                                                   : "settled after " + std::to_string(r.iterations) + " iterations";
   std::fprintf(stderr,
-               "%s after %d iterations; distance to target, rms (max) %% of the diagonal: target to inflated %.2f "
+               "inflated shape %s; distance to target, rms (max) %% of the diagonal: target to inflated %.2f "
                "(%.2f), inflated to target %.2f (%.2f) (%.0f ms)\n",
-               r.converged ? "settled" : "did not settle", r.iterations, 100 * d.targetToInflated.summary.rms,
-               100 * d.targetToInflated.summary.max, 100 * d.inflatedToTarget.rms, 100 * d.inflatedToTarget.max,
-               msSince(t0));
+               settling.c_str(), 100 * d.targetToInflated.summary.rms, 100 * d.targetToInflated.summary.max,
+               100 * d.inflatedToTarget.rms, 100 * d.inflatedToTarget.max, msSince(t0));
   for (const UncoveredRegion& u : d.uncovered) std::fprintf(stderr, "billow design: %s\n", uncoveredMessage(u).c_str());
   if (!r.converged) {
     std::fprintf(stderr, "billow design: %s\n", r.message.c_str());
