@@ -53,39 +53,40 @@ std::vector<Key> directedEdges(const TriMesh& m) {
 
 }  // namespace
 
-std::vector<int> findBoundaryLoop(const TriMesh& segment) {
-  checkIndicesAndUse(segment);
-  const int n = segment.numVertices();
-  const std::vector<Key> edges = directedEdges(segment);
+std::vector<std::vector<int>> findBoundaryLoops(const TriMesh& mesh) {
+  checkIndicesAndUse(mesh);
+  const int n = mesh.numVertices();
+  const std::vector<Key> edges = directedEdges(mesh);
   // A boundary half-edge i->j has no twin j->i; next[i] = j walks the boundary with the surface on the left.
   std::vector<int> next(n, -1);
-  int boundaryEdges = 0;
   for (Key k : edges) {
     const int i = static_cast<int>(k / n), j = static_cast<int>(k % n);
     if (std::binary_search(edges.begin(), edges.end(), edgeKey(j, i, n))) continue;
     if (next[i] >= 0)
       throw Error("flatten.non-manifold", "this segment is pinched: two of its borders touch at a single point");
     next[i] = j;
-    ++boundaryEdges;
   }
-  if (boundaryEdges == 0) notDisk("it is closed (it has no boundary)");
-  std::vector<int> loop;
+  std::vector<std::vector<int>> loops;
   std::vector<char> seen(n, 0);
-  int loops = 0;
   for (int s = 0; s < n; ++s) {
     if (next[s] < 0 || seen[s]) continue;
-    ++loops;
-    for (int v = s; !seen[v]; v = next[v]) {
-      seen[v] = 1;
-      if (loops == 1) loop.push_back(v);
-    }
+    std::vector<int> loop;
+    for (int v = s; !seen[v]; v = next[v]) seen[v] = 1, loop.push_back(v);
+    loops.push_back(std::move(loop));
   }
-  if (loops > 1) notDisk("it has " + std::to_string(loops) + " boundary loops");
+  return loops;
+}
+
+std::vector<int> findBoundaryLoop(const TriMesh& segment) {
+  std::vector<std::vector<int>> loops = findBoundaryLoops(segment);
+  if (loops.empty()) notDisk("it is closed (it has no boundary)");
+  if (loops.size() > 1) notDisk("it has " + std::to_string(loops.size()) + " boundary loops");
   // Euler characteristic V - E + F of a disk is 1; anything else means handles or extra pieces.
-  const long long numEdges = (static_cast<long long>(edges.size()) + boundaryEdges) / 2;
-  const long long chi = n - numEdges + segment.numTriangles();
+  const long long boundaryEdges = static_cast<long long>(loops[0].size());
+  const long long numEdges = (3LL * segment.numTriangles() + boundaryEdges) / 2;
+  const long long chi = segment.numVertices() - numEdges + segment.numTriangles();
   if (chi != 1) notDisk("it has handles or several pieces (Euler characteristic " + std::to_string(chi) + ")");
-  return loop;
+  return std::move(loops[0]);
 }
 
 BoundaryTargets measureBoundary(const TriMesh& segment, const std::vector<int>& loop) {

@@ -19,6 +19,12 @@ struct BoundaryTargets {
 // "flatten.non-manifold", "flatten.empty", "flatten.loose-vertices") when the segment cannot be unrolled.
 std::vector<int> findBoundaryLoop(const TriMesh& segment);
 
+// Every boundary loop of a triangle mesh, each in the direction of its triangles' edges (so a flat mesh with
+// CCW triangles has a CCW outline and clockwise holes), in the order of their smallest-indexed start vertex.
+// Throws as findBoundaryLoop does for a mesh that is pinched, non-manifold, empty or has loose vertices; a
+// closed mesh has none.
+std::vector<std::vector<int>> findBoundaryLoops(const TriMesh& mesh);
+
 BoundaryTargets measureBoundary(const TriMesh& segment, const std::vector<int>& loop);
 
 }  // namespace billow

@@ -222,7 +222,8 @@ TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& opt
                   const std::vector<Points2>& holes) {
   const int outer = static_cast<int>(boundary.rows());
   if (outer < 3 || !(h > 0)) throw Error("panel.bad-input", "A panel needs at least 3 boundary points and h > 0.");
-  if (!(signedArea(boundary) > 0)) throw Error("panel.clockwise", "The panel outline must run counter-clockwise.");
+  const double outlineArea = signedArea(boundary);
+  if (!(outlineArea > 0)) throw Error("panel.clockwise", "The panel outline must run counter-clockwise.");
   int n = outer;
   for (const Points2& hole : holes) {
     if (hole.rows() < 3) throw Error("panel.bad-input", "A hole in a panel needs at least 3 points.");
@@ -264,12 +265,12 @@ TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& opt
   mesh.F = r.triangles;
   if (!holes.empty()) {
     // A hole outside the outline or inside another hole would be meshed as panel: the area tells.
-    double expected = signedArea(boundary), meshed = 0;
+    double expected = outlineArea, meshed = 0;
     for (const Points2& hole : holes) expected += signedArea(hole);
     for (int f = 0; f < mesh.numTriangles(); ++f)
       meshed += 0.5 * cross((r.points.row(mesh.F(f, 1)) - r.points.row(mesh.F(f, 0))).transpose(),
                             (r.points.row(mesh.F(f, 2)) - r.points.row(mesh.F(f, 0))).transpose());
-    if (std::abs(meshed - expected) > 1e-9 * std::abs(signedArea(boundary)))
+    if (std::abs(meshed - expected) > 1e-9 * outlineArea)
       throw Error("panel.bad-hole", "A hole in a panel must lie inside its outline and outside its other holes.");
   }
   smooth(mesh, n, options.smoothingIterations);

@@ -6,6 +6,7 @@
 #include <map>
 #include <unordered_map>
 
+#include "flatten/segment_boundary.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "simulate/initial_shape.hpp"
 #include "simulate/smoothing.hpp"
@@ -24,40 +25,22 @@ double turnAngle(const Panel& panel, int a, int b, int c) {
 // then its holes (clockwise; a ring panel has one). Empty when the panel has no such boundary (its boundary
 // touches itself, or it is in several pieces).
 std::vector<std::vector<int>> boundaryLoops(const Panel& panel) {
-  const int n = static_cast<int>(panel.vertices.rows());
-  std::unordered_map<std::uint64_t, int> directed;  // (i, j) of each triangle edge i -> j, counted
-  for (int t = 0; t < panel.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const std::uint64_t i = panel.triangles(t, k), j = panel.triangles(t, (k + 1) % 3);
-      ++directed[i * n + j];
-    }
-  std::vector<int> next(n, -1);
-  for (const auto& [edge, count] : directed) {
-    const int i = static_cast<int>(edge / n), j = static_cast<int>(edge % n);
-    if (count != 1) return {};
-    if (directed.count(static_cast<std::uint64_t>(j) * n + i)) continue;
-    if (next[i] >= 0) return {};
-    next[i] = j;
-  }
+  TriMesh flat;
+  flat.V = Vertices::Zero(panel.vertices.rows(), 3);
+  flat.V.leftCols(2) = panel.vertices;
+  flat.F = panel.triangles;
   std::vector<std::vector<int>> loops;
-  std::vector<char> seen(n, 0);
-  for (int s = 0; s < n; ++s) {
-    if (next[s] < 0 || seen[s]) continue;
-    std::vector<int> loop;
-    for (int v = s; !seen[v]; v = next[v]) seen[v] = 1, loop.push_back(v);
-    loops.push_back(std::move(loop));
+  try {
+    loops = findBoundaryLoops(flat);
+  } catch (const Error&) {
+    return {};
   }
-  auto area = [&](const std::vector<int>& loop) {
-    double a = 0;
-    for (size_t i = 0; i < loop.size(); ++i) {
-      const Eigen::Vector2d p = panel.vertices.row(loop[i]), q = panel.vertices.row(loop[(i + 1) % loop.size()]);
-      a += p.x() * q.y() - p.y() * q.x();
-    }
-    return a;
-  };
   int outlines = 0;
-  for (size_t l = 0; l < loops.size(); ++l)
-    if (area(loops[l]) > 0) ++outlines, std::swap(loops[l], loops[0]);
+  for (auto& loop : loops) {
+    remesh::Points2 polygon(loop.size(), 2);
+    for (size_t i = 0; i < loop.size(); ++i) polygon.row(i) = panel.vertices.row(loop[i]);
+    if (remesh::signedArea(polygon) > 0) ++outlines, std::swap(loop, loops[0]);
+  }
   if (outlines != 1) return {};
   return loops;
 }
