@@ -40,7 +40,10 @@ bool PinnedStiffness::solveAgain(const Eigen::VectorXd& b, Eigen::VectorXd& y) c
   Eigen::VectorXd rhs = b;
   for (long i = 0; i < rhs.size(); ++i)
     if (pinned_[i]) rhs[i] = 0;
-  y = kind_ == Kind::Lu ? Eigen::VectorXd(lu_.solve(rhs)) : Eigen::VectorXd(ldlt_.solve(rhs));
+  if (kind_ == Kind::Cholesky)
+    cholesky_.solve(y = rhs);
+  else
+    y = kind_ == Kind::Lu ? Eigen::VectorXd(lu_.solve(rhs)) : Eigen::VectorXd(ldlt_.solve(rhs));
   for (long i = 0; i < y.size(); ++i)
     if (pinned_[i]) y[i] = 0;
   return y.allFinite();
@@ -63,6 +66,41 @@ double PinnedStiffness::solve(const Eigen::SparseMatrix<double>& K, const Eigen:
       rowMax[it.row()] = std::max(rowMax[it.row()], std::abs(it.value()));
   for (int i = 0; i < n; ++i)
     if (!(rowMax[i] > 1e-14 * scale)) pinned[i] = 1;
+  Eigen::VectorXd rhs = b;
+  for (int i = 0; i < n; ++i)
+    if (pinned[i]) rhs[i] = 0;
+  const double bn = std::max(rhs.norm(), 1e-300);
+  if (n % 3 == 0) {
+    // The supernodal Cholesky on K's own lower pattern (pinned rows and columns zeroed, their diagonal the
+    // mean), analyzed once per pattern: the same for every iterate on one mesh.
+    Eigen::SparseMatrix<double> lower = K.triangularView<Eigen::Lower>();
+    lower.makeCompressed();
+    for (int j = 0; j < n; ++j)
+      for (Eigen::SparseMatrix<double>::InnerIterator it(lower, j); it; ++it)
+        if (pinned[it.row()] || pinned[j]) it.valueRef() = it.row() == j ? (scale > 0 ? scale : 1.0) : 0.0;
+    const std::vector<int> outer(lower.outerIndexPtr(), lower.outerIndexPtr() + n + 1),
+        inner(lower.innerIndexPtr(), lower.innerIndexPtr() + lower.nonZeros());
+    bool diagonal = true;  // the pinned diagonal must be stored
+    for (int i = 0; i < n && diagonal; ++i) diagonal = !pinned[i] || lower.coeff(i, i) != 0;
+    if (diagonal && (outer != analyzedOuter_ || inner != analyzedInner_)) {
+      cholesky_.analyze(lower, Eigen::MatrixXd(), BlockCholesky::Ordering::Amd);
+      analyzedOuter_ = outer, analyzedInner_ = inner;
+    }
+    if (diagonal && cholesky_.factorize(lower)) {
+      lambda = rhs;
+      cholesky_.solve(lambda);
+      for (int i = 0; i < n; ++i)
+        if (pinned[i]) lambda[i] = 0;
+      Eigen::VectorXd r = K * lambda - rhs;
+      for (int i = 0; i < n; ++i)
+        if (pinned[i]) r[i] = 0;
+      const double relative = lambda.allFinite() ? r.norm() / bn : INFINITY;
+      if (relative < 1e-8) {
+        kind_ = Kind::Cholesky;
+        return relative;
+      }
+    }
+  }
   std::vector<Eigen::Triplet<double>> trip;
   trip.reserve(K.nonZeros() + n);
   for (int j = 0; j < K.outerSize(); ++j)
@@ -72,10 +110,6 @@ double PinnedStiffness::solve(const Eigen::SparseMatrix<double>& K, const Eigen:
     if (pinned[i]) trip.emplace_back(i, i, scale > 0 ? scale : 1.0);
   Eigen::SparseMatrix<double> A(n, n);
   A.setFromTriplets(trip.begin(), trip.end());
-  Eigen::VectorXd rhs = b;
-  for (int i = 0; i < n; ++i)
-    if (pinned[i]) rhs[i] = 0;
-  const double bn = std::max(rhs.norm(), 1e-300);
   const auto residual = [&]() { return lambda.allFinite() ? (A * lambda - rhs).norm() / bn : INFINITY; };
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt = ldlt_;
   ldlt.analyzePattern(A);

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "mesh/tri_mesh.hpp"
+#include "simulate/block_cholesky.hpp"
 
 namespace billow {
 
@@ -20,14 +21,16 @@ namespace billow {
 std::vector<int> rigidPins(const Vertices& x);
 
 // Solves K lambda = b with lambda = 0 at the pins and at DOFs without any stiffness (zero rows of K: the
-// inside of a slack internal panel) (LDL^T; sparse LU when LDL^T fails or is inaccurate: K is indefinite
-// because of the pressure term; last, the smallest diagonal shift that factorizes, for nearly singular K).
+// inside of a slack internal panel) (the supernodal Cholesky, K being positive definite at a stable
+// equilibrium; LDL^T when it is not, because of the pressure term; sparse LU when LDL^T fails or is
+// inaccurate; last, the smallest diagonal shift that factorizes, for nearly singular K).
 // Returns the relative residual |K lambda - b| / |b| on free DOFs (INFINITY, lambda = 0: no solve).
 double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b, const std::vector<int>& pins,
                     Eigen::VectorXd& lambda);
 
 // solveAdjoint that keeps its factorization for further right-hand sides with the same K (K is symmetric, so
-// it also gives the equilibrium's first-order change dx = -K^-1 dg/dX dX: PatternOptimizer's prediction).
+// it also gives the equilibrium's first-order change dx = -K^-1 dg/dX dX: PatternOptimizer's prediction), and the
+// supernodal Cholesky's analysis for further K of the same pattern (the optimizer's iterates on one mesh).
 class PinnedStiffness {
  public:
   // As solveAdjoint.
@@ -37,9 +40,11 @@ class PinnedStiffness {
   bool solveAgain(const Eigen::VectorXd& b, Eigen::VectorXd& y) const;
 
  private:
-  enum class Kind { None, Ldlt, Lu, Shifted };
+  enum class Kind { None, Cholesky, Ldlt, Lu, Shifted };
   Kind kind_ = Kind::None;
   std::vector<char> pinned_;
+  BlockCholesky cholesky_;
+  std::vector<int> analyzedOuter_, analyzedInner_;  // the lower-triangle pattern cholesky_ was analyzed for
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt_;
   Eigen::SparseLU<Eigen::SparseMatrix<double>> lu_;
 };
