@@ -121,9 +121,9 @@ TEST(FlatCutExamples, SettleFromTheirOwnStartInAtMostFortyNewtonIterations) {
 TEST(FlatCutExamples, RingsAndStarsSettleButSlowerThanTheIssueAsks) {
   // Not yet within the bound: the flat ring crawls away from its mirror-symmetric shape, a saddle of the
   // energy (the Hessian has a negative eigenvalue there: the shift stays at 0.1 p l while the ring warps like
-  // a crisp, 1 % more volume). Its coarse levels (remeshed around the hole) stop at that saddle, so the fine
-  // level still crawls or chatters, 30-115 iterations instead of 130-250; the star's finest level takes 45-55
-  // (bench/README.md).
+  // a crisp, 1 % more volume). Its coarse levels (remeshed around the hole) stop at that saddle or warp
+  // another way than the fine mesh prefers, and the fine level walks there along a nearly neutral direction,
+  // 30-115 iterations instead of 130-250; the star's finest level takes 45-55 (bench/README.md).
   for (const std::string name : {"ring", "star"})
     for (const int triangles : {1500, 4500}) {
       SCOPED_TRACE(name + " at " + std::to_string(triangles));
