@@ -497,14 +497,23 @@ bool PatternOptimizer::iterate() {
   if (m > 0) q *= S_[m - 1].dot(Y_[m - 1]) / Y_[m - 1].dot(precondition(Y_[m - 1]));
   for (int i = 0; i < m; ++i) q += (a[i] - Y_[i].dot(q) / Y_[i].dot(S_[i])) * S_[i];
   Eigen::VectorXd d = tangential(X_, q);
-  double slope = g_.dot(d);
-  if (!(slope < 0)) d = -tangential(X_, precondition(gt)), slope = g_.dot(d), S_.clear(), Y_.clear();
-  // Cap the largest vertex move (the first step has no curvature information at all).
+  // A projected trial X_ + alpha d lands at X_ + alpha T d to first order (T: tangentToSeamLengths), so the
+  // slope the line search meets is g T d; g d overstates it, up to 100-fold once d is mostly across the set.
+  const auto T = [&](const Eigen::VectorXd& v) {
+    return tangentToSeamLengths(objective_->edgePairs(), X_, v, seamMetric());
+  };
+  const auto slopeAlong = [&](const Eigen::VectorXd& v) { return g_.dot(projectTrials_ ? T(v) : v); };
+  double slope = slopeAlong(d);
+  if (!(slope < 0)) d = -tangential(X_, precondition(gt)), slope = slopeAlong(d), S_.clear(), Y_.clear();
+  // Steepest descent within the set: its slope -(T g)^T M^-1 (T g) is negative unless T g = 0.
+  if (!(slope < 0) && projectTrials_) d = -T(precondition(T(g_))), slope = g_.dot(d);
+  if (!(slope < 0)) return false;
+  // Cap the largest vertex move (a step without curvature information has no scale of its own).
   double maxMove = 0;
   for (int v = 0; v < d.size() / 2; ++v) maxMove = std::max(maxMove, d.segment<2>(2 * v).norm());
   const double cap = options_.maxStep * objective_->meanEdgeLength();
-  double alpha = (m == 0 || maxMove > cap) ? cap / std::max(maxMove, 1e-300) : 1.0;
-  if (m > 0) alpha = std::min(alpha, 1.0);
+  double alpha = (S_.empty() || maxMove > cap) ? cap / std::max(maxMove, 1e-300) : 1.0;
+  if (!S_.empty()) alpha = std::min(alpha, 1.0);
   // A jump: halving the step no longer brings E down towards E_ (the excess E - E_ shrank by less than 10 %
   // over the last `jumps` settled trials), or the refused trial's equilibrium is far from where it was predicted
   // to be (the balloon snapped into another equilibrium); two in a row: E(X) is discontinuous here, see
