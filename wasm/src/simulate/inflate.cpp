@@ -237,37 +237,6 @@ void InflationSolver::fail(const std::string& message) {
   message_ = message;
 }
 
-// Preconditioned CG on (current shifted H) d = -g with the last LDL^T as preconditioner. Returns false on
-// negative curvature or when 25 iterations do not reduce the residual below 1e-3 |g| (inexact Newton).
-bool InflationSolver::preconditionedCg(Eigen::VectorXd& d) {
-  Sparse& s = *sparse_;
-  const auto t0 = Clock::now();
-  d.setZero(grad_.size());
-  Eigen::VectorXd r = -grad_, z = s.solve(r), p = z, Ap;
-  double rz = r.dot(z);
-  const double target = 1e-3 * grad_.norm();
-  bool ok = false;
-  for (int k = 0; k < 25; ++k) {
-    Ap = s.H.selfadjointView<Eigen::Lower>() * p;
-    const double pAp = p.dot(Ap);
-    if (!(pAp > 0)) break;
-    const double a = rz / pAp;
-    d += a * p;
-    r -= a * Ap;
-    if (r.norm() <= target) {
-      ok = true;
-      break;
-    }
-    z = s.solve(r);
-    const double rzNew = r.dot(z);
-    p = z + (rzNew / rz) * p;
-    rz = rzNew;
-  }
-  timings_.reuseMs += msSince(t0);
-  if (ok) ++timings_.reusedSolves;
-  return ok;
-}
-
 InflateState InflationSolver::step(int maxIterations, double maxMillis) {
   const auto start = Clock::now();
   Sparse& s = *sparse_;
@@ -293,48 +262,40 @@ InflateState InflationSolver::step(int maxIterations, double maxMillis) {
     // The shift is measured in units of the pressure stiffness p * l: the indefinite part of the Hessian is
     // -p d2V (entries ~ p l), while the membrane diagonal (~ E h) is larger by the stiffness ratio.
     const double shiftUnit = pressure_ * mesh_.meanEdgeLength;
-    bool accepted = false, triedReuse = !options_.reuseFactorization || !factorValid_;
+    bool accepted = false;
     while (!accepted) {
       if (shift_ > options_.maxShift) break;
       Eigen::Map<Eigen::VectorXd>(s.H.valuePtr(), s.H.nonZeros()) = s.values;
       for (int i = 0; i < n; ++i) s.H.valuePtr()[s.diag[i]] += shift_ * shiftUnit;
-      Eigen::VectorXd d;
-      // First try the previous factorization as a preconditioner for CG on the new Hessian: between late
-      // iterations only the elements that change regime alter H, and a few triangular solves cost far less
-      // than a numeric factorization. Any doubt (negative curvature, slow CG, no descent) refactorizes.
-      const bool reused = !triedReuse && preconditionedCg(d);
-      triedReuse = true;
-      if (!reused) {
-        t0 = Clock::now();
-        // A failed Cholesky (non-positive pivot) means H + shift is not positive definite: no descent guarantee.
-        // Without a shift, small and negative pivots are raised (modified Cholesky) rather than refused: the
-        // correction then stays where H is indefinite or nearly singular (slack and wrinkled regions under
-        // the pressure's curvature) instead of a shift that damps every direction. A shift comes in only
-        // when the modified step fails (no descent, too long, or no decrease along it).
-        const bool modified = shift_ == 0 && options_.minPivot > 0 && s.supernodal;
-        const double raised = modified ? options_.minPivot * shiftUnit : 0;
-        // Late (residual below smallPivotResidual), tiny pivots are raised only to the tiny threshold: a
-        // floppy free flap of an internal panel has a genuine stiffness far below p * l, and raised to p * l
-        // every full step moved it a thousandth of the way (open-tipped panels at 500-1000 triangles crept
-        // at residual ~3e-5 for 1000 iterations; now they settle in 175-312).
-        const bool late = residual_ <= options_.smallPivotResidual;
-        factorValid_ = late ? s.factorize(1e-3 * raised, 1e-3 * raised) : s.factorize(raised, raised);
-        if (modified) timings_.raisedPivots += s.chol.raisedPivots();
-        ++timings_.factorizations;
-        timings_.factorMs += msSince(t0);
-        if (!factorValid_) {
-          shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
-          continue;
-        }
-        d = -s.solve(grad_);
+      t0 = Clock::now();
+      // A failed Cholesky (non-positive pivot) means H + shift is not positive definite: no descent guarantee.
+      // Without a shift, small and negative pivots are raised (modified Cholesky) rather than refused: the
+      // correction then stays where H is indefinite or nearly singular (slack and wrinkled regions under
+      // the pressure's curvature) instead of a shift that damps every direction. A shift comes in only
+      // when the modified step fails (no descent, too long, or no decrease along it).
+      const bool modified = shift_ == 0 && options_.minPivot > 0 && s.supernodal;
+      const double raised = modified ? options_.minPivot * shiftUnit : 0;
+      // Late (residual below smallPivotResidual), tiny pivots are raised only to the tiny threshold: a
+      // floppy free flap of an internal panel has a genuine stiffness far below p * l, and raised to p * l
+      // every full step moved it a thousandth of the way (open-tipped panels at 500-1000 triangles crept
+      // at residual ~3e-5 for 1000 iterations; now they settle in 175-312).
+      const bool late = residual_ <= options_.smallPivotResidual;
+      const bool factored = late ? s.factorize(1e-3 * raised, 1e-3 * raised) : s.factorize(raised, raised);
+      if (modified) timings_.raisedPivots += s.chol.raisedPivots();
+      ++timings_.factorizations;
+      timings_.factorMs += msSince(t0);
+      if (!factored) {
+        shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
+        continue;
       }
+      const Eigen::VectorXd d = -s.solve(grad_);
       const double slope = grad_.dot(d);
       // A step longer than maxStep balloon radii is no Newton step to trust: the energy of a neo-Hookean
       // balloon is unbounded below (past its limit point it blows up), and a wild step could find that.
       double longest = 0;
       for (int v = 0; v < mesh_.numVertices; ++v) longest = std::max(longest, d.segment<3>(3 * v).squaredNorm());
       if (!d.allFinite() || !(slope < 0) || std::sqrt(longest) > options_.maxStep * sizeScale_) {
-        if (!reused) shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
+        shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
         continue;
       }
       t0 = Clock::now();
@@ -356,8 +317,8 @@ InflateState InflationSolver::step(int maxIterations, double maxMillis) {
       }
       timings_.lineSearchMs += msSince(t0);
       // Damping grows only when no step is found: raising it after short steps (classic LM) was tried and
-      // cost 40 % more iterations on the Mylar balloon. A failed reused direction first refactorizes.
-      if (!accepted && !reused)
+      // cost 40 % more iterations on the Mylar balloon.
+      if (!accepted)
         shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
       else if (accepted && alpha == 1)
         shift_ = shift_ < 2e-3 ? 0 : shift_ / 10;
@@ -408,7 +369,7 @@ double InflationSolver::timeFactorization() {
   Sparse& s = *sparse_;
   Eigen::Map<Eigen::VectorXd>(s.H.valuePtr(), s.H.nonZeros()) = s.values;
   const auto t0 = Clock::now();
-  factorValid_ = s.factorize();
+  s.factorize();
   const double ms = msSince(t0);
   return ms;
 }

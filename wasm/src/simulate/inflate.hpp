@@ -35,9 +35,6 @@ struct InflateOptions {
   bool projectHessian = true;  // per-element PSD projection of the membrane Hessian
   double armijo = 1e-4;        // sufficient decrease constant
   int maxHalvings = 30;        // line search
-  // Try the last factorization as a CG preconditioner before refactorizing. Off: on the Mylar balloon the
-  // Hessian changes too much between iterations (elements change regime) and CG rarely converged in time.
-  bool reuseFactorization = false;
   // The same solver in native and wasm builds (its dense kernel is our own two-double SIMD code, SSE2
   // natively and SIMD128 in wasm, so wasm runs it at nearly native speed; bench/README.md).
   LinearSolver linearSolver = LinearSolver::Supernodal;
@@ -87,8 +84,6 @@ const char* toString(InflateState s);
 struct InflateTimings {
   double setupMs = 0, assembleMs = 0, factorMs = 0, lineSearchMs = 0, totalMs = 0;
   int factorizations = 0;
-  double reuseMs = 0;                          // preconditioned CG with an older factorization
-  int reusedSolves = 0;                        // Newton directions found that way
   int raisedPivots = 0;                        // modified Cholesky: pivots raised (InflateOptions::minPivot)
   double factorNonZeros = 0, factorFlops = 0;  // size and multiply-adds of one factorization (supernodal)
 };
@@ -162,7 +157,6 @@ class InflationSolver {
   bool assemble();  // gradient + Hessian at x_; false when not finite
   void choosePins();
   void fail(const std::string& message);
-  bool preconditionedCg(Eigen::VectorXd& d);
 
   SewnMesh mesh_;
   MembraneMaterial material_;
@@ -176,7 +170,6 @@ class InflationSolver {
   std::vector<int> pinned_;   // DOF indices
   double shift_ = 0;          // LM shift, relative to the mean diagonal
   double lastAlpha_ = 0;
-  bool factorValid_ = false;  // ldlt holds a positive definite factorization of an earlier Hessian
   double energy_ = 0, residual_ = 0, forceScale_ = 1;
   double sizeScale_ = 1;  // radius of the sphere with the outer panels' area [m]
   int iterations_ = 0;
