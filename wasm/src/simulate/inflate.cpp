@@ -320,7 +320,7 @@ InflateState InflationSolver::step(int maxIterations, double maxMillis) {
       // cost 40 % more iterations on the Mylar balloon.
       if (!accepted)
         shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
-      else if (accepted && alpha == 1)
+      else if (alpha == 1)
         shift_ = shift_ < 2e-3 ? 0 : shift_ / 10;
     }
     if (!accepted) {
