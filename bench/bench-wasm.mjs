@@ -52,7 +52,7 @@ function run(example, triangles) {
       example, triangles: session.numTriangles(), vertices: session.numVertices(),
       iterations: result.iterations, factorizations: result.timings.factorizations, seconds, factorMs,
       coarseLevels: info.coarseStart.levels, coarseIterations: info.coarseStart.iterations,
-      startSeconds: info.coarseStart.ms / 1000, smoothingSeconds: info.coarseStart.smoothingMs / 1000,
+      startSeconds: info.coarseStart.ms / 1000, smoothingSeconds: info.coarseStart.gaussSeidelMs / 1000,
       setupMs: result.timings.setupMs, heapMb: Module.HEAPU8.length / 2 ** 20, residual: result.residual,
       converged: result.converged,
     };

@@ -7,7 +7,7 @@
 //                       [--trace] [--set NAME=VALUE ...] [--no-remesh-check] [--cut-scale F] [--out-dir DIR]
 //                       [--perturb SEED]
 // --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
-// --set changes an optimizer option (interiorFollowsBoundary, outlineSmoothing, quality, laplace, smooth, seam, cover,
+// --set changes an optimizer option (sobolevLength, quality, laplace, smooth, seam, cover,
 // gap, coverReach, maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants. After
 // each run the final outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check
 // skips it; --cut-scale F meshes them at F x the design's edge length). --perturb SEED moves every flattened panel
@@ -67,7 +67,7 @@ struct BenchOptions {
 };
 
 // How far the shape a is from the final shape b: the largest vertex move when they share the mesh; else
-// (an iterate of the coarse phase, or before a remeshing) the larger of the two one-sided largest distances
+// (an iterate before a remeshing) the larger of the two one-sided largest distances
 // to the other's closest vertex.
 double shapeDistance(const Vertices& a, const Vertices& b) {
   if (a.rows() == b.rows()) return (a - b).rowwise().norm().maxCoeff();
@@ -99,10 +99,8 @@ std::vector<double> outlineTurning(const Pattern& pattern, const BuiltPattern& b
 }
 
 void applySetting(OptimizeOptions& o, const std::string& name, double v) {
-  if (name == "interiorFollowsBoundary")
-    o.interiorFollowsBoundary = v != 0;
-  else if (name == "outlineSmoothing")
-    o.outlineSmoothing = v;
+  if (name == "sobolevLength")
+    o.search.sobolevLength = v;
   else if (name == "quality")
     o.weights.quality = v;
   else if (name == "laplace")
@@ -118,51 +116,41 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
   else if (name == "coverReach")
     o.weights.coverReach = v;
   else if (name == "maxIterations")
-    o.maxIterations = int(v);
+    o.stopping.maxIterations = int(v);
   else if (name == "windowIterations")
-    o.windowIterations = int(v);
+    o.stopping.windowIterations = int(v);
   else if (name == "windowMove")
-    o.windowMove = v;
+    o.stopping.windowMove = v;
   else if (name == "windowDecrease")
-    o.windowDecrease = v;
+    o.stopping.windowDecrease = v;
   else if (name == "relativeDecrease")
-    o.relativeDecrease = v;
+    o.stopping.relativeDecrease = v;
   else if (name == "stallIterations")
-    o.stallIterations = int(v);
-  else if (name == "remeshBelowAngleDeg")
-    o.remeshBelowAngleDeg = v;
+    o.stopping.stallIterations = int(v);
   else if (name == "remeshEvery")
-    o.remeshEvery = int(v);
+    o.remeshing.every = int(v);
   else if (name == "maxRemeshings")
-    o.maxRemeshings = int(v);
-  else if (name == "coarseFactor")
-    o.coarseFactor = v;
-  else if (name == "coarseIterations")
-    o.coarseIterations = int(v);
+    o.remeshing.maxRemeshings = int(v);
   else if (name == "tolerance")
     o.inflate.tolerance = v;
   else if (name == "projectEveryStep")
-    o.projectEveryStep = v != 0;
-  else if (name == "maxStep")
-    o.maxStep = v;
-  else if (name == "warmSmoothingSweeps")
-    o.warmSmoothingSweeps = int(v);
-  else if (name == "warmSmoothingThreshold")
-    o.warmSmoothingThreshold = v;
+    o.search.projectEveryStep = v != 0;
+  else if (name == "maxMoveEdges")
+    o.search.maxMoveEdges = v;
+  else if (name == "gaussSeidelSweeps")
+    o.search.gaussSeidelSweeps = int(v);
+  else if (name == "gaussSeidelThreshold")
+    o.search.gaussSeidelThreshold = v;
   else if (name == "predictEquilibrium")
-    o.predictEquilibrium = v != 0;
-  else if (name == "smoothSeamProjection")
-    o.smoothSeamProjection = v != 0;
+    o.search.predictEquilibrium = v != 0;
   else if (name == "tangentSteps")
-    o.tangentSteps = v != 0;
+    o.search.tangentSteps = v != 0;
   else if (name == "slidingSeamWeight")
-    o.slidingSeamWeight = v;
+    o.sliding.seamWeight = v;
   else if (name == "slidingRemeshEvery")
-    o.slidingRemeshEvery = int(v);
+    o.sliding.remeshEvery = int(v);
   else if (name == "regularizerEdgeLength")
-    o.regularizerEdgeLength = v;
-  else if (name == "projectHessian")
-    o.inflate.projectHessian = v != 0;
+    o.sliding.regularizerEdgeLength = v;
   else if (name == "minPivot")
     o.inflate.minPivot = v;
   else if (name == "band")
@@ -306,7 +294,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
               {"remeshingSteps", opt.timings().remeshings},
               {"slidingSeams", opt.slidingSeams()},
               {"edgeLengthRelative", built.figures.edgeLength / opt.objective().modelSize()},
-              {"outlineSmoothing", opt.options().outlineSmoothing},
+              {"sobolevLength", opt.options().search.sobolevLength},
               {"smoothWeight", opt.options().weights.smooth},
               {"iterations", opt.iterations()},
               {"newtonIterations", newton},

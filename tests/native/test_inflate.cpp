@@ -293,19 +293,3 @@ TEST(BlockCholesky, SolvesLikeEigenWithBothOrderings) {
     EXPECT_FALSE(chol.factorize(bad));
   }
 }
-
-TEST(Inflate, SupernodalAndSimplicialSolversAgree) {
-  ExampleOptions eo;
-  eo.triangles = 400;
-  const Pattern p = examplePattern("mylar", eo);
-  Vertices result[2];
-  int k = 0;
-  for (LinearSolver ls : {LinearSolver::Supernodal, LinearSolver::SimplicialLdlt}) {
-    InflateOptions o;
-    o.linearSolver = ls;
-    const InflateResult r = inflate(p, o);
-    ASSERT_TRUE(r.converged) << r.message;
-    result[k++] = r.positions;
-  }
-  EXPECT_LT((result[0] - result[1]).cwiseAbs().maxCoeff(), 1e-6);
-}

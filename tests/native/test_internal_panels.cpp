@@ -296,7 +296,7 @@ TEST(InternalPanels, OptimizerRunsOnAPatternWithAnInternalPanel) {
   const BuiltPattern bp = buildPattern(scene->target, scene->segmentation, optionsFor(*scene, {{0, 1}}, 600));
   ASSERT_TRUE(bp.ok());
   OptimizeOptions oo;
-  oo.maxIterations = 3;
+  oo.stopping.maxIterations = 3;
   PatternOptimizer optimizer(scene->target, bp, {1, 1, 1}, oo);
   // Internal panel vertices off the seams carry no target distance (they are not meant to lie on the target).
   const SewnMesh& m = optimizer.mesh();

@@ -98,7 +98,7 @@ class InflationSession {
                      {"triangles", report.coarseTriangles},
                      {"iterations", report.coarseIterations},
                      {"ms", report.coarseMs},
-                     {"smoothingMs", report.smoothingMs}}},
+                     {"gaussSeidelMs", report.gaussSeidelMs}}},
                    {"warnings", w}})
           .dump();
     });

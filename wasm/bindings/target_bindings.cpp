@@ -23,7 +23,7 @@
 //          "pattern.connection", severity "error", seam) }
 //   t.startOptimization(seamsJson, optionsJson)  the same, and keeps a PatternOptimizer for:
 //   t.optimizeStep(maxIterations, maxMillis) -> { state, iteration, message, remeshings, slidingSeams (some seam's
-//                                                 weight lets it slide: OptimizeOptions::slidingSeamWeight),
+//                                                 weight lets it slide: OptimizeSliding::seamWeight),
 //                                                 distanceRms, distanceMax, targetDistanceRms,
 //                                                 targetDistanceMax (the target's to the shape),
 //                                                 flattenedDistanceRms (of the flattened panels' equilibrium),
@@ -115,14 +115,14 @@ class TargetSession {
 
   // The app's optimization: it stops once the inflated shape no longer changes visibly (no vertex moving
   // by 0.2 % of the model size over 20 iterations), or the objective fell by less than 1 % over 20 iterations,
-  // or after 150 iterations (300 when seams slide: OptimizeOptions::slidingIterationFactor; the CLI and the
+  // or after 150 iterations (300 when seams slide: OptimizeSliding::iterationFactor; the CLI and the
   // native benchmark go on to full convergence; bench/README.md).
   static billow::OptimizeOptions interactiveOptions() {
     billow::OptimizeOptions o;
-    o.maxIterations = 150;
-    o.windowIterations = 20;
-    o.windowMove = 2e-3;
-    o.windowDecrease = 1e-2;
+    o.stopping.maxIterations = 150;
+    o.stopping.windowIterations = 20;
+    o.stopping.windowMove = 2e-3;
+    o.stopping.windowDecrease = 1e-2;
     return o;
   }
 

@@ -139,15 +139,16 @@ int designCommand(const std::vector<std::string>& argv) {
     for (const DesignSeam& s : design.seams) seamWeights.push_back(s.weight);
     const auto t1 = Clock::now();
     OptimizeOptions optimizeOptions;
-    if (args.has("--max-iterations")) {  // as given, also when seams slide (slidingIterationFactor)
-      optimizeOptions.maxIterations = positiveInt(args, "--max-iterations", optimizeOptions.maxIterations);
-      optimizeOptions.slidingIterationFactor = 1;
+    if (args.has("--max-iterations")) {  // as given, also when seams slide (OptimizeSliding::iterationFactor)
+      optimizeOptions.stopping.maxIterations =
+          positiveInt(args, "--max-iterations", optimizeOptions.stopping.maxIterations);
+      optimizeOptions.sliding.iterationFactor = 1;
     }
     PatternOptimizer optimizer(scene->target, bp, seamWeights, optimizeOptions);
     slidingSeams = optimizer.slidingSeams();
     if (slidingSeams && !quiet)
       std::fprintf(stderr, "optimize: some seams have a weight below %g and slide to where the shape fits best\n",
-                   optimizer.options().slidingSeamWeight);
+                   optimizer.options().sliding.seamWeight);
     while (optimizer.step(5, 1000) == OptimizeState::Running)
       if (!quiet && !optimizer.history().empty()) {
         const OptimizeRecord& h = optimizer.history().back();

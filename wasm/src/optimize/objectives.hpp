@@ -54,7 +54,7 @@ struct OptimizeWeights {
   double length = 10.0;  // E_length; the final seam-length projection makes it exact (see PatternOptimizer)
   double smooth = 2.0;   // E_smooth: weaker lets the outlines zig-zag (bench/README.md)
   // E_smooth's weight is smooth x slidingSmooth along a sliding seam (sigma x seam below slidingBelow), which
-  // nothing else holds (OptimizeOptions::slidingSeamWeight sets both).
+  // nothing else holds (OptimizeSliding::seamWeight sets both).
   double slidingSmooth = 1.0;
   double slidingBelow = 0;
   double laplace = 0.01;  // E_laplace: only needs to remove the interior sliding null space

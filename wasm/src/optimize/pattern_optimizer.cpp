@@ -12,8 +12,8 @@
 #include "pattern/remesh_pattern.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "seams/surface_distance.hpp"
+#include "simulate/gauss_seidel.hpp"
 #include "simulate/initial_shape.hpp"
-#include "simulate/smoothing.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -52,7 +52,7 @@ const char* toString(OptimizeState s) {
 
 bool hasSlidingSeams(const OptimizeOptions& options, const std::vector<double>& seamWeights) {
   for (double sigma : seamWeights)
-    if (sigma * options.weights.seam < options.slidingSeamWeight) return true;
+    if (sigma * options.weights.seam < options.sliding.seamWeight) return true;
   return false;
 }
 
@@ -60,18 +60,20 @@ OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector
                                double D) {
   OptimizeOptions o = options;
   if (!hasSlidingSeams(options, seamWeights)) return o;
-  o.tangentSteps = true;
-  if (o.slidingIterationFactor > 1) o.maxIterations = int(std::lround(o.maxIterations * o.slidingIterationFactor));
-  o.windowDecrease = 0;
-  if (o.slidingRemeshEvery > 0) {
-    o.remeshEvery = o.remeshEvery > 0 ? std::min(o.remeshEvery, o.slidingRemeshEvery) : o.slidingRemeshEvery;
-    o.maxRemeshings = std::max(o.maxRemeshings, o.maxIterations / o.remeshEvery + 1);
+  o.search.tangentSteps = true;
+  if (o.sliding.iterationFactor > 1)
+    o.stopping.maxIterations = int(std::lround(o.stopping.maxIterations * o.sliding.iterationFactor));
+  o.stopping.windowDecrease = 0;
+  if (o.sliding.remeshEvery > 0) {
+    o.remeshing.every =
+        o.remeshing.every > 0 ? std::min(o.remeshing.every, o.sliding.remeshEvery) : o.sliding.remeshEvery;
+    o.remeshing.maxRemeshings = std::max(o.remeshing.maxRemeshings, o.stopping.maxIterations / o.remeshing.every + 1);
   }
-  const double k = h > 0 && D > 0 ? std::max(1.0, o.regularizerEdgeLength * D / h) : 1.0;
-  o.outlineSmoothing *= k;
-  o.maxStep *= k;
+  const double k = h > 0 && D > 0 ? std::max(1.0, o.sliding.regularizerEdgeLength * D / h) : 1.0;
+  o.search.sobolevLength *= k;
+  o.search.maxMoveEdges *= k;
   o.weights.slidingSmooth *= k * k;  // only along sliding seams: held ones keep their outlines as they were
-  o.weights.slidingBelow = o.slidingSeamWeight;
+  o.weights.slidingBelow = o.sliding.seamWeight;
   return o;
 }
 
@@ -91,16 +93,6 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
   material_ = membraneMaterial(built.pattern.material, options.inflate);
   fineEdgeLength_ = built.figures.edgeLength;
   setUp(built);
-  if (options_.coarseFactor > 1 && fineEdgeLength_ > 0) {
-    // Coarse panels from the flattened outlines; their start shape is the target, as for the flattened ones.
-    try {
-      RemeshedPattern coarse = remeshPattern(built, panelInflated(), options_.coarseFactor * fineEdgeLength_);
-      setUp(coarse.built);
-      coarse_ = true;
-    } catch (const Error&) {
-      setUp(built);  // no coarse phase
-    }
-  }
   timings_.setupMs = elapsedMs();
 }
 
@@ -118,9 +110,9 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   X_ = packPattern(pattern_);
   boundaryVertices_.clear();
   for (const BuiltPanel& bp : built.panels) boundaryVertices_.push_back(bp.boundaryVertices);
-  smoothing_ = false;
-  if (options_.outlineSmoothing > 0) {
-    const double b = options_.outlineSmoothing * options_.outlineSmoothing;
+  sobolevReady_ = false;
+  if (options_.search.sobolevLength > 0) {
+    const double b = options_.search.sobolevLength * options_.search.sobolevLength;
     std::vector<Eigen::Triplet<double>> trip;
     for (int r = 0; r < X_.size(); ++r) trip.emplace_back(r, r, 1.0);
     for (size_t p = 0; p < built.panels.size(); ++p) {
@@ -135,8 +127,8 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
     }
     Eigen::SparseMatrix<double> S(X_.size(), X_.size());
     S.setFromTriplets(trip.begin(), trip.end());
-    smoother_.compute(S);
-    smoothing_ = smoother_.info() == Eigen::Success;
+    sobolev_.compute(S);
+    sobolevReady_ = sobolev_.info() == Eigen::Success;
   }
   interior_.reset();
   if (started_) startInterior();
@@ -148,14 +140,13 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
 }
 
 void PatternOptimizer::startInterior() {
-  if (!options_.interiorFollowsBoundary) return;
   interior_ = std::make_unique<HarmonicInterior>(pattern_, mesh_.panelVertexStart, boundaryVertices_, X_);
   if (!interior_->ok()) interior_.reset();
 }
 
 bool PatternOptimizer::projectStart() {
   Eigen::VectorXd X = X_;
-  projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
+  projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12);
   followBoundary(X);
   SewnMesh mesh = mesh_;
   if (!rebuildRest(X, mesh)) return false;
@@ -170,14 +161,6 @@ std::vector<Vertices> PatternOptimizer::panelInflated() const {
     for (int v = 0; v < inflated[p].rows(); ++v) inflated[p].row(v) = x_.row(mesh_.simVertex(int(p), v));
   }
   return inflated;
-}
-
-bool PatternOptimizer::refine() {
-  if (!coarse_) return false;
-  coarse_ = false;
-  if (!remesh(fineEdgeLength_)) return false;
-  windowStart_ = -1;
-  return true;
 }
 
 bool PatternOptimizer::remesh(double h) {
@@ -228,7 +211,7 @@ CutPanelsCheck PatternOptimizer::checkCutPanels(double h) const {
   try {
     const RemeshedPattern remeshed = remeshPattern(current, panelInflated(), h > 0 ? h : fineEdgeLength_);
     OptimizeOptions settle = options_;
-    settle.maxIterations = 0, settle.keepShapes = false, settle.coarseFactor = 1, settle.maxMillis = 0;
+    settle.stopping.maxIterations = 0, settle.keepShapes = false, settle.stopping.maxMillis = 0;
     PatternOptimizer check(imls_->target(), remeshed.built, seamWeights_, settle);
     while (check.step(1) == OptimizeState::Running) {
     }
@@ -299,9 +282,9 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
     }
   }
   Vertices from = start;
-  if (options_.warmSmoothingSweeps > 0)
-    smoothShape(mesh, pattern_.material, pattern_.pressure, io, from, options_.warmSmoothingSweeps,
-                options_.warmSmoothingThreshold, false);
+  if (options_.search.gaussSeidelSweeps > 0)
+    gaussSeidelSweeps(mesh, pattern_.material, pattern_.pressure, io, from, options_.search.gaussSeidelSweeps,
+                      options_.search.gaussSeidelThreshold, false);
   // The cut panels have their own mesh: a solver of their own. Otherwise the phase's solver, new rest shapes.
   std::unique_ptr<InflationSolver> own;
   if (asCut)
@@ -362,7 +345,7 @@ void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices&
   const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, rods.get());
   if (!stiffness_) stiffness_ = std::make_unique<PinnedStiffness>();
   stiffness_->solve(K, dEdx, rigidPins(x), lambda);
-  stiffnessX_ = X, stiffnessx_ = x;
+  adjointPattern_ = X, adjointShape_ = x;
   addRestGradientProduct(mesh, pattern_, X, x, lambda, material_, product);
   addRodGradientProduct(*rods, x, dcdX, lambda, product);
   objective_->patternEnergy(X, &grad);
@@ -371,8 +354,8 @@ void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices&
 }
 
 Vertices PatternOptimizer::predictEquilibrium(const Eigen::VectorXd& X) const {
-  if (!options_.predictEquilibrium || !stiffness_ || stiffnessX_.size() != X_.size() || stiffnessX_ != X_ ||
-      stiffnessx_.rows() != x_.rows() || stiffnessx_ != x_ || X.size() != X_.size())
+  if (!options_.search.predictEquilibrium || !stiffness_ || adjointPattern_.size() != X_.size() ||
+      adjointPattern_ != X_ || adjointShape_.rows() != x_.rows() || adjointShape_ != x_ || X.size() != X_.size())
     return x_;
   Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * x_.rows()), dx, dcdX;
   addRestJacobianProduct(mesh_, pattern_, X_, x_, X - X_, material_, b);
@@ -395,8 +378,8 @@ void PatternOptimizer::toVariables(Eigen::VectorXd& v) const {
 }
 
 Eigen::VectorXd PatternOptimizer::precondition(const Eigen::VectorXd& v) const {
-  if (!smoothing_) return v;
-  Eigen::VectorXd r = smoother_.solve(v);
+  if (!sobolevReady_) return v;
+  Eigen::VectorXd r = sobolev_.solve(v);
   toVariables(r);
   return r;
 }
@@ -437,7 +420,6 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
       projectTrials_ && g_.size() ? tangentToSeamLengths(objective_->edgePairs(), X_, g_) : g_;
   r.gradient = g_.size() ? lagrangian.lpNorm<Eigen::Infinity>() * norm / 2 : 0;
   r.stepLength = alpha, r.equilibriumIterations = newton, r.ms = elapsedMs(), r.projected = projected;
-  r.coarse = coarse_;
   history_.push_back(r);
   if (options_.keepShapes) shapes_.push_back(x_);
   if (!projected && r.objective < best_.E) best_ = {r.objective, X_, x_, g_};
@@ -453,9 +435,9 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
     record(0, 0, false);
     history_.back().restored = true;
   }
-  if (options_.exactSeamLengths && s != OptimizeState::Failed) {
+  if (s != OptimizeState::Failed) {  // equal seam lengths exactly, as the panels are cut
     Eigen::VectorXd X = X_;
-    projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
+    projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12);
     followBoundary(X);
     Vertices x;
     int newton = 0;
@@ -473,14 +455,9 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   timings_.totalMs = elapsedMs();
 }
 
-SeamMetric PatternOptimizer::seamMetric() const {
-  if (!(options_.smoothSeamProjection && smoothing_)) return {};
-  return [this](const Eigen::VectorXd& v) { return Eigen::VectorXd(smoother_.solve(v)); };
-}
-
 Eigen::VectorXd PatternOptimizer::tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const {
-  if (!(projectTrials_ && options_.tangentSteps)) return v;
-  return tangentToSeamLengths(objective_->edgePairs(), X, v, seamMetric());
+  if (!(projectTrials_ && options_.search.tangentSteps)) return v;
+  return tangentToSeamLengths(objective_->edgePairs(), X, v);
 }
 
 // One L-BFGS iteration (two-loop recursion, Armijo backtracking with equilibrium re-solves).
@@ -499,9 +476,7 @@ bool PatternOptimizer::iterate() {
   Eigen::VectorXd d = tangential(X_, q);
   // A projected trial X_ + alpha d lands at X_ + alpha T d to first order (T: tangentToSeamLengths), so the
   // slope the line search meets is g T d; g d overstates it, up to 100-fold once d is mostly across the set.
-  const auto T = [&](const Eigen::VectorXd& v) {
-    return tangentToSeamLengths(objective_->edgePairs(), X_, v, seamMetric());
-  };
+  const auto T = [&](const Eigen::VectorXd& v) { return tangentToSeamLengths(objective_->edgePairs(), X_, v); };
   const auto slopeAlong = [&](const Eigen::VectorXd& v) { return g_.dot(projectTrials_ ? T(v) : v); };
   double slope = slopeAlong(d);
   if (!(slope < 0)) d = -tangential(X_, precondition(gt)), slope = slopeAlong(d), S_.clear(), Y_.clear();
@@ -511,7 +486,7 @@ bool PatternOptimizer::iterate() {
   // Cap the largest vertex move (a step without curvature information has no scale of its own).
   double maxMove = 0;
   for (int v = 0; v < d.size() / 2; ++v) maxMove = std::max(maxMove, d.segment<2>(2 * v).norm());
-  const double cap = options_.maxStep * objective_->meanEdgeLength();
+  const double cap = options_.search.maxMoveEdges * objective_->meanEdgeLength();
   double alpha = (S_.empty() || maxMove > cap) ? cap / std::max(maxMove, 1e-300) : 1.0;
   if (!S_.empty()) alpha = std::min(alpha, 1.0);
   // A jump: halving the step no longer brings E down towards E_ (the excess E - E_ shrank by less than 10 %
@@ -532,9 +507,9 @@ bool PatternOptimizer::iterate() {
   std::nth_element(recent.begin(), recent.begin() + recent.size() / 2, recent.end());
   const int trialNewton =
       std::max(kTrialNewtonFloor, recent.empty() ? 0 : kTrialNewtonFactor * recent[recent.size() / 2]);
-  for (int h = 0; h <= options_.maxHalvings; ++h, alpha = next, next = 0.5 * alpha) {
+  for (int h = 0; h <= options_.search.maxHalvings; ++h, alpha = next, next = 0.5 * alpha) {
     Eigen::VectorXd X = X_ + alpha * d;
-    if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12, seamMetric());
+    if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12);
     followBoundary(X);
     if (simple && !outlinesSimple(X)) {
       ++timings_.rejectedTrials;
@@ -571,7 +546,7 @@ bool PatternOptimizer::iterate() {
       if (jumps >= 2) {
         if (resettle(x)) return true;
         // No resettling left: shorter steps jump too (each trial an abandoned solve), the line search ends here.
-        if (timings_.resettlings >= options_.maxResettlings) return false;
+        if (timings_.resettlings >= options_.search.maxResettlings) return false;
       }
       continue;
     }
@@ -585,9 +560,9 @@ bool PatternOptimizer::iterate() {
     const Eigen::VectorXd s = X - X_, y = tangential(X, g) - gt;
     if (s.dot(y) > 1e-12 * s.norm() * y.norm()) {
       S_.push_back(s), Y_.push_back(y);
-      if (static_cast<int>(S_.size()) > options_.memory) S_.erase(S_.begin()), Y_.erase(Y_.begin());
+      if (static_cast<int>(S_.size()) > options_.search.memory) S_.erase(S_.begin()), Y_.erase(Y_.begin());
     }
-    stalled_ = (E_ - E) <= options_.relativeDecrease * std::abs(E_) ? stalled_ + 1 : 0;
+    stalled_ = (E_ - E) <= options_.stopping.relativeDecrease * std::abs(E_) ? stalled_ + 1 : 0;
     X_ = X, x_ = std::move(x), g_ = std::move(g), E_ = E, ++iteration_;
     unpackPattern(X_, pattern_);
     record(alpha, newton, false);
@@ -597,7 +572,7 @@ bool PatternOptimizer::iterate() {
 }
 
 bool PatternOptimizer::resettle(const Vertices& from) {
-  if (timings_.resettlings >= options_.maxResettlings || from.rows() != x_.rows()) return false;
+  if (timings_.resettlings >= options_.search.maxResettlings || from.rows() != x_.rows()) return false;
   Vertices x;
   int newton = 0;
   // From an abandoned trial's shape (not settled): a solve that does not settle soon is no resettling.
@@ -618,6 +593,48 @@ bool PatternOptimizer::resettle(const Vertices& from) {
   return true;
 }
 
+std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const {
+  if (history_.back().gradient < options_.stopping.gradientTolerance) return StopReason{OptimizeState::Converged, ""};
+  if (stalled_ >= options_.stopping.stallIterations)
+    return StopReason{OptimizeState::Converged, "the objective stopped decreasing"};
+  if (options_.stopping.windowIterations > 0) {
+    const bool windowFull = windowStart_ >= 0 && windowX_.rows() == x_.rows() &&
+                            iteration_ - windowStart_ >= options_.stopping.windowIterations;
+    if (windowFull &&
+        (x_ - windowX_).rowwise().norm().maxCoeff() < options_.stopping.windowMove * objective_->modelSize())
+      return StopReason{OptimizeState::Converged, "the shape stopped changing"};
+    if (options_.stopping.windowDecrease > 0 && iteration_ >= options_.stopping.windowIterations) {
+      // How much the best objective fell over the last windowIterations iterations. A resettling (the balloon
+      // snapped into another equilibrium) may raise the objective and the steps after it bring it down again:
+      // only a new best counts, so an optimizer that keeps snapping between equilibria stops too. Not over a
+      // remeshing (the objective of another discretization); a window may start with one.
+      double before = INFINITY, best = INFINITY;
+      for (size_t j = history_.size(); j-- > 0;) {
+        const OptimizeRecord& r = history_[j];
+        if (!r.projected) {
+          best = std::min(best, r.objective);
+          if (r.iteration <= iteration_ - options_.stopping.windowIterations) before = std::min(before, r.objective);
+        }
+        if (r.remeshed) break;
+      }
+      if (std::isfinite(before) && before - best < options_.stopping.windowDecrease * std::abs(E_))
+        return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
+    }
+  }
+  if (iteration_ >= options_.stopping.maxIterations)
+    return StopReason{OptimizeState::Stopped, "the iteration limit was reached"};
+  if (options_.stopping.maxMillis > 0 && elapsedMs() > options_.stopping.maxMillis)
+    return StopReason{OptimizeState::Stopped, "the time limit was reached"};
+  return std::nullopt;
+}
+
+void PatternOptimizer::slideWindow() {
+  if (options_.stopping.windowIterations <= 0) return;
+  if (windowStart_ < 0 || windowX_.rows() != x_.rows() ||
+      iteration_ - windowStart_ >= options_.stopping.windowIterations)
+    windowX_ = x_, windowStart_ = iteration_;
+}
+
 OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
   if (state_ != OptimizeState::Running) return state_;
   const double t0 = nowMs();
@@ -627,7 +644,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     // Flattened panels whose seam sides differ a lot (a segment far from developable) may fold when
     // projected at once: then the seam lengths are brought together by E_length alone while iterating,
     // and projected exactly only at the end.
-    if (options_.projectEveryStep) projectTrials_ = projectStart();
+    if (options_.search.projectEveryStep) projectTrials_ = projectStart();
     Vertices x;
     int newton = 0;
     if (!solveEquilibrium(X_, x_, x, &newton)) {
@@ -640,66 +657,13 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     record(0, newton, false);
   }
   for (int k = 0; k < maxIterations; ++k) {
-    if (coarse_ && iteration_ >= options_.coarseIterations && refine()) continue;
-    if (history_.back().gradient < options_.gradientTolerance) {
-      if (refine()) continue;
-      finish(OptimizeState::Converged, "");
+    if (const std::optional<StopReason> stop = stopReason()) {
+      finish(stop->state, stop->message);
       break;
     }
-    if (stalled_ >= options_.stallIterations) {
-      if (refine()) continue;
-      finish(OptimizeState::Converged, "the objective stopped decreasing");
-      break;
-    }
-    if (options_.windowIterations > 0) {
-      if (windowStart_ < 0 || windowX_.rows() != x_.rows()) windowX_ = x_, windowStart_ = iteration_;
-      if (iteration_ - windowStart_ >= options_.windowIterations) {
-        const double moved = (x_ - windowX_).rowwise().norm().maxCoeff();
-        if (moved < options_.windowMove * objective_->modelSize()) {
-          if (refine()) continue;
-          finish(OptimizeState::Converged, "the shape stopped changing");
-          break;
-        }
-        windowX_ = x_, windowStart_ = iteration_;
-      }
-      if (options_.windowDecrease > 0 && iteration_ >= options_.windowIterations) {
-        // How much the best objective fell over the last windowIterations iterations. A resettling (the balloon
-        // snapped into another equilibrium) may raise the objective and the steps after it bring it down again:
-        // only a new best counts, so an optimizer that keeps snapping between equilibria stops too. Not over a
-        // remeshing (the objective of another discretization); a window may start with one.
-        double before = INFINITY, best = INFINITY;
-        for (size_t j = history_.size(); j-- > 0;) {
-          const OptimizeRecord& r = history_[j];
-          if (!r.projected) {
-            best = std::min(best, r.objective);
-            if (r.iteration <= iteration_ - options_.windowIterations) before = std::min(before, r.objective);
-          }
-          if (r.remeshed) break;
-        }
-        const bool whole = std::isfinite(before);
-        const double decrease = before - best;
-        if (whole && decrease < options_.windowDecrease * std::abs(E_)) {
-          if (refine()) continue;
-          finish(OptimizeState::Converged, "the objective no longer decreases noticeably");
-          break;
-        }
-      }
-    }
-    if (iteration_ >= options_.maxIterations) {
-      if (refine()) continue;
-      finish(OptimizeState::Stopped, "the iteration limit was reached");
-      break;
-    }
-    if (options_.maxMillis > 0 && elapsedMs() > options_.maxMillis) {
-      if (refine()) continue;  // the result is at the design's resolution, even when late
-      finish(OptimizeState::Stopped, "the time limit was reached");
-      break;
-    }
-    // At most once per iteration: a fresh mesh may itself have an angle below the threshold, and meshing it
-    // again at once gives nothing new (it used to spend every remaining remeshing there).
-    if (timings_.remeshings < options_.maxRemeshings && iteration_ > remeshedAt_ &&
-        ((options_.remeshBelowAngleDeg > 0 && minPanelAngleDeg(pattern_) < options_.remeshBelowAngleDeg) ||
-         (options_.remeshEvery > 0 && iteration_ - std::max(remeshedAt_, 0) >= options_.remeshEvery))) {
+    slideWindow();
+    if (options_.remeshing.every > 0 && timings_.remeshings < options_.remeshing.maxRemeshings &&
+        iteration_ - std::max(remeshedAt_, 0) >= options_.remeshing.every) {
       remeshedAt_ = iteration_;
       if (remesh(built_.figures.edgeLength)) continue;
     }
@@ -712,8 +676,6 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       if (S_.empty()) {  // not even a short steepest-descent step helps: a (numerical) minimum
         if (iteration_ == 0)
           finish(OptimizeState::Converged, "no change of the panels brings the inflated shape closer to the target");
-        else if (refine())
-          continue;
         else
           finish(OptimizeState::Converged, "no further decrease along the gradient");
         break;

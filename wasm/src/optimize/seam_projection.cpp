@@ -1,6 +1,5 @@
 #include "optimize/seam_projection.hpp"
 
-#include <Eigen/Dense>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
@@ -42,49 +41,36 @@ void seamLengthResiduals(const std::vector<PatternObjective::EdgePair>& pairs, c
   J.setFromTriplets(trip.begin(), trip.end());  // duplicates (shared vertices) are summed
 }
 
-// The minimum-norm step that changes J X by b: J^T (J J^T)^-1 b, or with a metric M^-1 J^T (J M^-1 J^T)^-1 b
-// (M^-1 J^T column by column). False when the normal matrix does not factorize.
-bool normalStep(const Eigen::SparseMatrix<double>& J, const SeamMetric& metric, const Eigen::VectorXd& b,
-                Eigen::VectorXd& step) {
-  if (!metric) {
-    Eigen::SparseMatrix<double> JJt = J * J.transpose();
-    for (int k = 0; k < JJt.rows(); ++k) JJt.coeffRef(k, k) += 1e-12;  // pairs that share both edges' vertices
-    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(JJt);
-    if (ldlt.info() != Eigen::Success) return false;
-    step = J.transpose() * ldlt.solve(b);
-    return step.allFinite();
-  }
-  const Eigen::SparseMatrix<double> Jt = J.transpose();
-  Eigen::MatrixXd Z(J.cols(), J.rows());
-  for (int k = 0; k < J.rows(); ++k) Z.col(k) = metric(Eigen::VectorXd(Jt.col(k)));
-  Eigen::MatrixXd G = J * Z;
-  G.diagonal().array() += 1e-12 * std::max(G.diagonal().cwiseAbs().maxCoeff(), 1e-300);
-  const Eigen::LDLT<Eigen::MatrixXd> ldlt(G);
+// The minimum-norm step that changes J X by b: J^T (J J^T)^-1 b. False when J J^T does not factorize.
+bool normalStep(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& b, Eigen::VectorXd& step) {
+  Eigen::SparseMatrix<double> JJt = J * J.transpose();
+  for (int k = 0; k < JJt.rows(); ++k) JJt.coeffRef(k, k) += 1e-12;  // pairs that share both edges' vertices
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(JJt);
   if (ldlt.info() != Eigen::Success) return false;
-  step = Z * ldlt.solve(b);
+  step = J.transpose() * ldlt.solve(b);
   return step.allFinite();
 }
 
 }  // namespace
 
 Eigen::VectorXd tangentToSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
-                                     const Eigen::VectorXd& v, const SeamMetric& metric) {
+                                     const Eigen::VectorXd& v) {
   if (pairs.empty()) return v;
   Eigen::VectorXd r, step;
   Eigen::SparseMatrix<double> J;
   seamLengthResiduals(pairs, X, r, J);
-  return normalStep(J, metric, J * v, step) ? Eigen::VectorXd(v - step) : v;
+  return normalStep(J, J * v, step) ? Eigen::VectorXd(v - step) : v;
 }
 
 double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, Eigen::VectorXd& X, int maxIterations,
-                          double tolerance, const SeamMetric& metric) {
+                          double tolerance) {
   const int m = static_cast<int>(pairs.size());
   if (m == 0) return 0;
   for (int it = 0; it < maxIterations && maxMismatch(pairs, X) > tolerance; ++it) {
     Eigen::VectorXd r, step;
     Eigen::SparseMatrix<double> J;
     seamLengthResiduals(pairs, X, r, J);
-    if (!normalStep(J, metric, r, step)) break;
+    if (!normalStep(J, r, step)) break;
     X -= step;
   }
   return maxMismatch(pairs, X);

@@ -3,27 +3,20 @@
 // monotonically); at the end the pattern is projected onto the constraint set r_e(X) = L_a - L_b = 0 by
 // Gauss-Newton minimum-norm steps dX = -J^T (J J^T)^-1 r, which move the panel boundaries the least.
 #pragma once
-#include <functional>
 #include <vector>
 
 #include "optimize/objectives.hpp"
 
 namespace billow {
 
-// A metric for the projections: v -> M^-1 v with M symmetric positive definite (e.g. the optimizer's outline
-// smoothing I + b K). Steps are then minimal in that metric, dX = -M^-1 J^T (J M^-1 J^T)^-1 r: spread along
-// the outline instead of edge by edge. Empty: M = I.
-using SeamMetric = std::function<Eigen::VectorXd(const Eigen::VectorXd&)>;
-
 // Projects X in place; returns the max relative edge mismatch afterwards.
 double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, Eigen::VectorXd& X,
-                          int maxIterations = 10, double tolerance = 1e-12, const SeamMetric& metric = {});
+                          int maxIterations = 10, double tolerance = 1e-12);
 
 // v minus its part normal to the constraint set at X: v - J^T (J J^T)^-1 J v with J = dr/dX, so that
 // J (result) = 0 (to first order a move along the result keeps the seam lengths equal). Zero rows of v
 // (interior vertices, which J never touches) stay zero.
-// With a metric: v - M^-1 J^T (J M^-1 J^T)^-1 J v (the part tangent in that metric).
 Eigen::VectorXd tangentToSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
-                                     const Eigen::VectorXd& v, const SeamMetric& metric = {});
+                                     const Eigen::VectorXd& v);
 
 }  // namespace billow

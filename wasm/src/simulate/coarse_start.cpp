@@ -8,8 +8,8 @@
 
 #include "flatten/segment_boundary.hpp"
 #include "remesh/panel_mesher.hpp"
+#include "simulate/gauss_seidel.hpp"
 #include "simulate/initial_shape.hpp"
-#include "simulate/smoothing.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -267,11 +267,11 @@ Vertices coarseToFine(const Pattern& pattern, const SewnMesh& mesh, const Inflat
   if (report.coarseTriangles == 0 || coarseTriangles < report.coarseTriangles) report.coarseTriangles = coarseTriangles;
   if (solver.state() == InflateState::Failed || !solver.positions().allFinite()) return {};
   Vertices x = prolongate(*coarse, solver.mesh(), solver.positions(), pattern, mesh);
-  const SmoothingReport smoothing =
-      smoothShape(mesh, pattern.material, pattern.pressure, options, x, options.smoothingSweeps);
-  report.smoothingMs += smoothing.ms;
-  report.residualProlongated = smoothing.residualBefore;
-  report.residualSmoothed = smoothing.residualAfter;
+  const GaussSeidelReport sweeps =
+      gaussSeidelSweeps(mesh, pattern.material, pattern.pressure, options, x, options.gaussSeidelSweeps);
+  report.gaussSeidelMs += sweeps.ms;
+  report.residualProlongated = sweeps.residualBefore;
+  report.residualAfterGaussSeidel = sweeps.residualAfter;
   return x;
 }
 

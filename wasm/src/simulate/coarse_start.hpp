@@ -12,8 +12,8 @@
 // The interior is remeshed (remesh::meshPanel). Prolongation locates each fine panel vertex in its coarse
 // panel (barycentric) and interpolates the coarse inflated positions, curved by Phong tessellation with the
 // coarse outer surface's vertex normals (a flat interpolation starts Newton with every fine triangle flat,
-// and costs a few shifted iterations more). The prolongated shape is then smoothed (smoothing.hpp): it is
-// right at the coarse scale only, and Newton from it needed twice as many iterations.
+// and costs a few shifted iterations more). The prolongated shape then gets Gauss-Seidel sweeps (gauss_seidel.hpp): it
+// is right at the coarse scale only, and Newton from it needed twice as many iterations.
 #pragma once
 #include <optional>
 
@@ -35,10 +35,10 @@ struct StartReport {
   int levels = 0;           // coarse patterns inflated (0: spherical or given start)
   int coarseTriangles = 0;  // triangles of the coarsest
   int coarseIterations = 0;
-  double coarseMs = 0;  // time spent on coarsening, coarse solves, prolongation and smoothing
-  double smoothingMs = 0;
-  double residualProlongated = 0;  // the fine level's relative force residual before and after smoothing
-  double residualSmoothed = 0;
+  double coarseMs = 0;  // time spent on coarsening, coarse solves, prolongation and Gauss-Seidel sweeps
+  double gaussSeidelMs = 0;
+  double residualProlongated = 0;  // the fine level's relative force residual before and after the Gauss-Seidel sweeps
+  double residualAfterGaussSeidel = 0;
 };
 
 // The start positions for inflating `pattern`: its own start positions when it has them (the optimizer's

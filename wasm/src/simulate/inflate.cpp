@@ -53,19 +53,12 @@ struct InflationSolver::Sparse {
   std::vector<int> slot;
   std::vector<int> diag;
   std::vector<int> pinnedEntries;
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;  // LinearSolver::SimplicialLdlt
-  BlockCholesky chol;                                       // LinearSolver::Supernodal
-  bool supernodal = true;
+  BlockCholesky chol;
 
   // Factorizes H; false when it is not positive definite.
-  // raisedPivot > 0 (supernodal only): modified Cholesky, see BlockCholesky::factorize.
-  bool factorize(double tinyPivot = 0, double raisedPivot = 0) {
-    if (supernodal) return chol.factorize(H, tinyPivot, raisedPivot);
-    ldlt.factorize(H);
-    return ldlt.info() == Eigen::Success && ldlt.vectorD().minCoeff() > 0;
-  }
+  // raisedPivot > 0: modified Cholesky, see BlockCholesky::factorize.
+  bool factorize(double tinyPivot = 0, double raisedPivot = 0) { return chol.factorize(H, tinyPivot, raisedPivot); }
   Eigen::VectorXd solve(const Eigen::VectorXd& b) {
-    if (!supernodal) return ldlt.solve(b);
     Eigen::VectorXd x = b;
     chol.solve(x);
     return x;
@@ -118,14 +111,8 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
   rods_->forEachHessianEntry([&](int r, int c, double) { rodSlot_.push_back(r >= c ? find(r, c) : -1); });
   choosePins();
   // Symbolic factorization, once per mesh.
-  s.supernodal = options_.linearSolver != LinearSolver::SimplicialLdlt;
-  if (s.supernodal)
-    s.chol.analyze(s.H, x_,
-                   options_.linearSolver == LinearSolver::SupernodalAmd ? BlockCholesky::Ordering::Amd
-                                                                        : BlockCholesky::Ordering::NestedDissection);
-  else
-    s.ldlt.analyzePattern(s.H);
-  if (s.supernodal) timings_.factorNonZeros = s.chol.factorNonZeros(), timings_.factorFlops = s.chol.factorFlops();
+  s.chol.analyze(s.H, x_, BlockCholesky::Ordering::NestedDissection);
+  timings_.factorNonZeros = s.chol.factorNonZeros(), timings_.factorFlops = s.chol.factorFlops();
   forceScale_ = std::max(pressure_ * mesh_.meanEdgeLength * mesh_.meanEdgeLength, 1e-300);
   sizeScale_ = std::sqrt(mesh_.outerArea / (4 * M_PI));
   energy_ = totalEnergy(x_);
@@ -192,7 +179,6 @@ bool InflationSolver::assemble() {
   grad_.setZero(n);
   s.values.setZero(s.H.nonZeros());
   ElementOptions eo;
-  eo.projectHessian = options_.projectHessian;
   Vector9d g, gv;
   Matrix9d h, hv;
   for (int f = 0; f < mesh_.numTriangles(); ++f) {
@@ -273,7 +259,7 @@ InflateState InflationSolver::step(int maxIterations, double maxMillis) {
       // correction then stays where H is indefinite or nearly singular (slack and wrinkled regions under
       // the pressure's curvature) instead of a shift that damps every direction. A shift comes in only
       // when the modified step fails (no descent, too long, or no decrease along it).
-      const bool modified = shift_ == 0 && options_.minPivot > 0 && s.supernodal;
+      const bool modified = shift_ == 0 && options_.minPivot > 0;
       const double raised = modified ? options_.minPivot * shiftUnit : 0;
       // Late (residual below smallPivotResidual), tiny pivots are raised only to the tiny threshold: a
       // floppy free flap of an internal panel has a genuine stiffness far below p * l, and raised to p * l
@@ -290,11 +276,11 @@ InflateState InflationSolver::step(int maxIterations, double maxMillis) {
       }
       const Eigen::VectorXd d = -s.solve(grad_);
       const double slope = grad_.dot(d);
-      // A step longer than maxStep balloon radii is no Newton step to trust: the energy of a neo-Hookean
+      // A step longer than maxMoveRadii balloon radii is no Newton step to trust: the energy of a neo-Hookean
       // balloon is unbounded below (past its limit point it blows up), and a wild step could find that.
       double longest = 0;
       for (int v = 0; v < mesh_.numVertices; ++v) longest = std::max(longest, d.segment<3>(3 * v).squaredNorm());
-      if (!d.allFinite() || !(slope < 0) || std::sqrt(longest) > options_.maxStep * sizeScale_) {
+      if (!d.allFinite() || !(slope < 0) || std::sqrt(longest) > options_.maxMoveRadii * sizeScale_) {
         shift_ = shift_ == 0 ? 1e-3 : shift_ * 10;
         continue;
       }

@@ -20,61 +20,54 @@
 
 namespace billow {
 
-// Sparse solver for the Newton systems. Supernodal: our multifrontal Cholesky on 3x3 vertex blocks
-// (block_cholesky.hpp) with a nested dissection ordering; SupernodalAmd: the same with AMD on the vertex
-// graph; SimplicialLdlt: Eigen's SimplicialLDLT with AMD (the reference; several times slower).
-enum class LinearSolver { Supernodal, SupernodalAmd, SimplicialLdlt };
-
+// The Newton systems are solved by our multifrontal Cholesky on 3x3 vertex blocks (block_cholesky.hpp), nested
+// dissection ordered, the same in native and wasm builds.
 struct InflateOptions {
-  // Converged when max |f_i| / (p * l^2) < tolerance: the largest net force on a vertex relative to the
-  // pressure load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
+  // When a solve ends (InflationSolver::step).
+  // Converged when max |f_i| / (p * l^2) < tolerance: the largest net force on a vertex relative to the pressure
+  // load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
   double tolerance = 1e-5;
-  int maxIterations = 1000;    // Mylar from the spherical start: ~34 at 3k triangles, ~55 at 15k, ~120 at 60k; from the
-                               // coarse-to-fine start, smoothed, 7-18 at any size (bench/README.md)
-  double band = 1e-4;          // smoothing band of the relaxed energy (MembraneMaterial::band)
-  bool projectHessian = true;  // per-element PSD projection of the membrane Hessian
-  double armijo = 1e-4;        // sufficient decrease constant
-  int maxHalvings = 30;        // line search
-  // The same solver in native and wasm builds (its dense kernel is our own two-double SIMD code, SSE2
-  // natively and SIMD128 in wasm, so wasm runs it at nearly native speed; bench/README.md).
-  LinearSolver linearSolver = LinearSolver::Supernodal;
-  // Modified Cholesky while the LM shift is zero: pivots below minPivot (in units of the pressure stiffness
-  // p * l, like the shift) are raised to it instead of refusing the factorization (0: off). Once the
-  // residual is below smallPivotResidual only non-positive and tiny pivots (< minPivot / 1000) are, and only
-  // to minPivot / 1000, so the last steps are nearly exact Newton steps (a free panel edge keeps small
-  // positive pivots up to the end, and a floppy one tiny ones). About 2x
-  // fewer Newton iterations on the Mylar balloon at 12k-15k triangles (bench/README.md). Supernodal only.
+  int maxIterations = 1000;
+  double maxShift = 1e12;  // fails when the LM shift (in units of p * mean edge length) exceeds this
+
+  // The energy Pi (Eqs. 1-7).
+  double band = 1e-4;  // soft-max band of the relaxed energy (MembraneMaterial::band)
+  // Seam stiffness (seam_rods.hpp): each seam line resists bending like a rod of stiffness k = seamStiffness p R^4
+  // (R: the radius of the sphere with the outer panels' area), so the seams do not crimp at the scale of the mesh
+  // and the Mylar balloon converges to Paulsen's shape under refinement (0: off).
+  double seamStiffness = 5e-4;
+  // When set, these rods instead of the ones seamStiffness gives this mesh: the pattern optimizer fixes them per
+  // phase, so its equilibria depend on the panels only through the membrane.
+  std::shared_ptr<const SeamRods> seamRods;
+
+  // The Newton step and its line search.
+  double armijo = 1e-4;  // sufficient decrease constant
+  int maxHalvings = 30;
+  // Modified Cholesky while the LM shift is zero: pivots below minPivot (in units of the pressure stiffness p l,
+  // like the shift) are raised to it instead of refusing the factorization (0: off), since a free panel edge keeps
+  // small positive pivots to the end and a floppy one tiny ones. Once the residual is below smallPivotResidual
+  // only non-positive and tiny pivots (< minPivot / 1000) are, and only to minPivot / 1000, so the last steps
+  // are nearly exact Newton steps.
   double minPivot = 1;
   double smallPivotResidual = 1;
-  // A Newton step moving a vertex by more than maxStep x the radius of the sphere with the pattern's area
-  // is refused (the shift goes up): a guard against the unbounded energy of an over-inflated sheet.
-  double maxStep = 2;
-  // Seam stiffness (seam_rods.hpp): each seam line resists bending like a rod of stiffness
-  // k = seamStiffness * p * R^4 (R: the radius of the sphere with the outer panels' area), which keeps the
-  // seams from crimping at the scale of the mesh (0: off). With 5e-4 the Mylar balloon converges to Paulsen's
-  // shape under refinement, and Newton needs 34 iterations at 3k triangles (54 without) and 55 at 15k (162).
-  double seamStiffness = 5e-4;
-  // When set, these rods instead of the ones seamStiffness gives this mesh: the pattern optimizer fixes them
-  // per phase (coefficient and which seam vertex counts as a corner), so its equilibria depend on the panels
-  // only through the membrane.
-  std::shared_ptr<const SeamRods> seamRods;
-  // Coarse-to-fine start (coarse_start.hpp) for patterns of at least this many triangles without start
-  // positions (0: always the spherical start); each coarser level has coarseStartRatio times fewer triangles
-  // and is solved to coarseTolerance within coarseMaxIterations. From 600 (a coarsest level of 100): at 1,500
-  // triangles the Mylar balloon, a pillow and a gusseted one settle about 3 times faster than from their bare
-  // start (2,000 before, bench/README.md).
+  // A step moving a vertex by more than maxMoveRadii x the radius of the sphere with the pattern's area is
+  // refused (the shift goes up): the energy of an over-inflated sheet is unbounded.
+  double maxMoveRadii = 2;
+
+  // The coarse-to-fine start (coarse_start.hpp) for patterns of at least coarseStartTriangles triangles without
+  // start positions (0: always the spherical or folded start): each coarser level has coarseStartRatio times
+  // fewer triangles and is solved to coarseTolerance within coarseMaxIterations; each prolongated shape gets
+  // gaussSeidelSweeps nonlinear Gauss-Seidel sweeps (gauss_seidel.hpp) before Newton takes it up.
   int coarseStartTriangles = 600;
   double coarseStartRatio = 6;
   double coarseTolerance = 1e-3;
   int coarseMaxIterations = 200;
-  // Nonlinear Gauss-Seidel sweeps (smoothing.hpp) over each prolongated shape before Newton takes it up.
-  int smoothingSweeps = 10;
-  double maxShift = 1e12;  // give up when the LM shift (in units of p * mean edge length) exceeds this
+  int gaussSeidelSweeps = 10;
 };
 
-// The terms of Pi for these options, shared by InflationSolver, the smoother (smoothing.hpp) and the pattern
-// optimizer: the pattern's material with the options' smoothing band, and options.seamRods when given, else
-// the rods of options.seamStiffness on this mesh.
+// The terms of Pi for these options, shared by InflationSolver, the Gauss-Seidel sweeps (gauss_seidel.hpp) and the
+// pattern optimizer: the pattern's material with the options' soft-max band, and options.seamRods when given, else the
+// rods of options.seamStiffness on this mesh.
 MembraneMaterial membraneMaterial(const Material& material, const InflateOptions& options);
 std::shared_ptr<const SeamRods> seamRodsFor(const SewnMesh& mesh, double pressure, const InflateOptions& options);
 

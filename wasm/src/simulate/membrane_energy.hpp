@@ -25,7 +25,7 @@ namespace billow {
 struct MembraneMaterial {
   double youngsModulus = 3.0e9;  // E [Pa], metallized nylon foil
   double thickness = 25e-6;      // h [m]
-  double band = 1e-4;            // smoothing half-width, in squared stretch (strains of interest are ~1e-3)
+  double band = 1e-4;            // soft-max half-width, in squared stretch (strains of interest are ~1e-3)
   double kappa() const { return youngsModulus / 6.0; }  // incompressible neo-Hookean, kappa = mu/2 = E/6
 };
 
@@ -63,7 +63,7 @@ double membraneElement(const ElementRest& rest, const Eigen::Vector3d& x0, const
                        Vector9d* grad, Matrix9d* hess);
 
 // The same element's gradient (3) and diagonal Hessian block (3x3) in one corner (0, 1 or 2) only: the
-// vertex-by-vertex smoother (smoothing.hpp). Equal to the corner's parts of membraneElement.
+// vertex-by-vertex Gauss-Seidel sweeps (gauss_seidel.hpp). Equal to the corner's parts of membraneElement.
 double membraneElementCorner(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
                              const Eigen::Vector3d& x2, const MembraneMaterial& material, int corner,
                              const ElementOptions& options, Eigen::Vector3d* grad, Eigen::Matrix3d* hess);

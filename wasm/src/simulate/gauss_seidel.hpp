@@ -1,4 +1,4 @@
-// Nonlinear Gauss-Seidel smoothing of a shape before Newton (the smoother of a two-grid method).
+// Nonlinear Gauss-Seidel sweeps over a shape before Newton (the smoother of a two-grid method).
 //
 // Why: the coarse-to-fine start (coarse_start.hpp) carries a coarse equilibrium onto a fine mesh. That shape
 // is right at the coarse scale but wrong at the scale of the fine mesh: interpolated triangles are strained
@@ -10,16 +10,16 @@
 // Newton step on its own three coordinates, the others fixed, with a backtracking line search on the energy
 // of its star (membrane, pressure work and seam rods). A sweep costs a few assemblies, far less than one
 // factorization, and Newton then starts from forces of tens instead of thousands (bench/README.md
-// "Smoothing the coarse start").
-// The pattern optimizer smooths before each of its equilibrium solves too, to a lower force: a step of the
+// "The start").
+// The pattern optimizer sweeps before each of its equilibrium solves too, to a lower force: a step of the
 // panels leaves parts of the sheet slack at the last shape, where a vertex feels only the pressure, about
-// 0.4 p l^2 (bench/README.md "Smoothing before each equilibrium solve").
+// 0.4 p l^2 (bench/README.md "Gauss-Seidel sweeps before each equilibrium solve").
 #pragma once
 #include "simulate/inflate.hpp"
 
 namespace billow {
 
-struct SmoothingReport {
+struct GaussSeidelReport {
   int sweeps = 0;
   int moves = 0;              // accepted vertex steps over all sweeps
   double residualBefore = 0;  // largest relative vertex force before and after (the units of
@@ -30,8 +30,8 @@ struct SmoothingReport {
 // `sweeps` sweeps over the vertices of `mesh` (in index order) with the energy of InflationSolver for these
 // options (band, seam rods); vertices whose relative force is below `threshold` stay where they are. Never
 // increases Pi; x stays finite. `measure`: fill in residualBefore and residualAfter (a force pass each).
-SmoothingReport smoothShape(const SewnMesh& mesh, const Material& material, double pressure,
-                            const InflateOptions& options, Vertices& x, int sweeps, double threshold = 1.0,
-                            bool measure = true);
+GaussSeidelReport gaussSeidelSweeps(const SewnMesh& mesh, const Material& material, double pressure,
+                                    const InflateOptions& options, Vertices& x, int sweeps, double threshold = 1.0,
+                                    bool measure = true);
 
 }  // namespace billow

@@ -1,4 +1,4 @@
-#include "simulate/smoothing.hpp"
+#include "simulate/gauss_seidel.hpp"
 
 #include <algorithm>
 #include <chrono>
@@ -11,10 +11,11 @@
 
 namespace billow {
 
-SmoothingReport smoothShape(const SewnMesh& mesh, const Material& material, double pressure,
-                            const InflateOptions& options, Vertices& x, int sweeps, double threshold, bool measure) {
+GaussSeidelReport gaussSeidelSweeps(const SewnMesh& mesh, const Material& material, double pressure,
+                                    const InflateOptions& options, Vertices& x, int sweeps, double threshold,
+                                    bool measure) {
   const auto start = std::chrono::steady_clock::now();
-  SmoothingReport report;
+  GaussSeidelReport report;
   const int n = mesh.numVertices, F = mesh.numTriangles();
   if (x.rows() != n || n == 0) return report;
   const MembraneMaterial membrane = membraneMaterial(material, options);

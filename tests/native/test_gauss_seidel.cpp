@@ -1,11 +1,11 @@
-// Smoothing before Newton (simulate/smoothing.hpp): nonlinear Gauss-Seidel never raises the energy, removes
-// most of the mesh-scale force a prolongated start carries, leaves an equilibrium where it is, and saves
-// Newton iterations.
+// Gauss-Seidel sweeps before Newton (simulate/gauss_seidel.hpp): nonlinear Gauss-Seidel never raises the energy,
+// removes most of the mesh-scale force a prolongated start carries, leaves an equilibrium where it is, and saves Newton
+// iterations.
 #include <gtest/gtest.h>
 
 #include "simulate/coarse_start.hpp"
 #include "simulate/example_patterns.hpp"
-#include "simulate/smoothing.hpp"
+#include "simulate/gauss_seidel.hpp"
 #include "test_support.hpp"
 
 using namespace billow;
@@ -33,46 +33,46 @@ int newtonIterations(const Pattern& p, const Vertices& x0) {
 
 }  // namespace
 
-class SmoothExample : public ::testing::TestWithParam<const char*> {};
+class GaussSeidelExample : public ::testing::TestWithParam<const char*> {};
 
-TEST_P(SmoothExample, RemovesMostOfTheProlongatedForcesAndSavesNewtonIterations) {
+TEST_P(GaussSeidelExample, RemovesMostOfTheProlongatedForcesAndSavesNewtonIterations) {
   const Pattern p = example(GetParam(), 8000);
   const SewnMesh mesh = sewPattern(p);
   InflateOptions none;
-  none.smoothingSweeps = 0;  // every level unsmoothed: the raw prolongated shape
+  none.gaussSeidelSweeps = 0;  // no sweeps: the raw prolongated shape
   StartReport report;
   const Vertices raw = startPositions(p, mesh, none, &report);
   ASSERT_GE(report.levels, 1);
   const State before = stateAt(mesh, p, raw);
   Vertices x = raw;
-  const SmoothingReport s = smoothShape(mesh, p.material, p.pressure, {}, x, 10);
+  const GaussSeidelReport s = gaussSeidelSweeps(mesh, p.material, p.pressure, {}, x, 10);
   EXPECT_EQ(s.sweeps, 10);
   EXPECT_GT(s.moves, mesh.numVertices);
   ASSERT_TRUE(x.allFinite());
   const State after = stateAt(mesh, p, x);
-  // The solver's residual leaves out the six pinned coordinates: at most the smoother's.
+  // The solver's residual leaves out the six pinned coordinates: at most the sweeps'.
   EXPECT_LE(before.residual, s.residualBefore * (1 + 1e-9));
   EXPECT_LE(after.residual, s.residualAfter * (1 + 1e-9));
   EXPECT_GT(before.residual, 0.5 * s.residualBefore);
   EXPECT_LT(after.energy, before.energy);
   EXPECT_LT(s.residualAfter, s.residualBefore / 5) << s.residualBefore << " -> " << s.residualAfter;
   EXPECT_LT(after.residual, before.residual / 5) << before.residual << " -> " << after.residual;
-  // Fewer Newton iterations from the smoothed shape, and the same equilibrium.
+  // Fewer Newton iterations after the sweeps, and the same equilibrium.
   const int fromRaw = newtonIterations(p, raw), fromSmoothed = newtonIterations(p, x);
   EXPECT_LT(fromSmoothed, fromRaw) << GetParam();
 }
 
-INSTANTIATE_TEST_SUITE_P(Examples, SmoothExample, ::testing::Values("mylar", "sphere3", "pillow"));
+INSTANTIATE_TEST_SUITE_P(Examples, GaussSeidelExample, ::testing::Values("mylar", "sphere3", "pillow"));
 
-TEST(Smoothing, EverySweepLowersTheEnergyAndAnEquilibriumStaysPut) {
+TEST(GaussSeidel, EverySweepLowersTheEnergyAndAnEquilibriumStaysPut) {
   const Pattern p = example("sphere3", 3000);
   const SewnMesh mesh = sewPattern(p);
   InflateOptions none;
-  none.smoothingSweeps = 0;
+  none.gaussSeidelSweeps = 0;
   Vertices x = startPositions(p, mesh, none);
   double energy = stateAt(mesh, p, x).energy;
   for (int sweep = 0; sweep < 5; ++sweep) {
-    smoothShape(mesh, p.material, p.pressure, {}, x, 1);
+    gaussSeidelSweeps(mesh, p.material, p.pressure, {}, x, 1);
     const double e = stateAt(mesh, p, x).energy;
     EXPECT_LE(e, energy) << "sweep " << sweep;
     energy = e;
@@ -83,22 +83,22 @@ TEST(Smoothing, EverySweepLowersTheEnergyAndAnEquilibriumStaysPut) {
   }
   ASSERT_EQ(solver.state(), InflateState::Converged);
   Vertices y = solver.positions();
-  const SmoothingReport r = smoothShape(mesh, p.material, p.pressure, {}, y, 3);
+  const GaussSeidelReport r = gaussSeidelSweeps(mesh, p.material, p.pressure, {}, y, 3);
   EXPECT_EQ(r.moves, 0);
   EXPECT_LT(r.residualBefore, 1e-4);
   EXPECT_EQ((y - solver.positions()).norm(), 0.0);
 }
 
-TEST(Smoothing, StartPositionsReportsTheSmoothing) {
+TEST(GaussSeidel, StartPositionsReportsTheSweeps) {
   const Pattern p = example("mylar", 6000);
   const SewnMesh mesh = sewPattern(p);
   StartReport report;
   startPositions(p, mesh, {}, &report);
   ASSERT_GE(report.levels, 1);
-  EXPECT_GT(report.smoothingMs, 0);
-  EXPECT_LT(report.residualSmoothed, report.residualProlongated / 5);
+  EXPECT_GT(report.gaussSeidelMs, 0);
+  EXPECT_LT(report.residualAfterGaussSeidel, report.residualProlongated / 5);
   InflateOptions none;
-  none.smoothingSweeps = 0;
+  none.gaussSeidelSweeps = 0;
   startPositions(p, mesh, none, &report);
   EXPECT_EQ(report.residualProlongated, 0);
 }
