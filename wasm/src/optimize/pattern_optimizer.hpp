@@ -41,7 +41,7 @@ struct OptimizeOptions {
   int stallIterations = 5;
   // Also converged when no inflated vertex moved by more than windowMove x the model size over the last
   // windowIterations iterations: the long, slow tail where the shape no longer changes visibly (0: off; the
-  // app's setting is in wasm/bindings/target_bindings.cpp).
+  // app's setting is optimize/stopping_rule.hpp).
   int windowIterations = 0;
   double windowMove = 1e-3;
   // Also converged when the objective fell by less than windowDecrease (relative) over the last
