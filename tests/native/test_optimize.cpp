@@ -37,17 +37,13 @@ struct Fixture {
   std::vector<double> weights;
 };
 
+// As the CLI and the design bench start (pattern/design_scene.hpp): an internal panel for each of the design's
+// connections.
 Fixture makeFixture(const std::string& name, int triangles) {
   Fixture f;
-  const std::string path = dataPath(name);
-  f.scene = makeDesignScene(readDesignJson(readFileBytes(path)), path, {examplesDir()});
-  PatternBuildOptions o;
-  o.triangles = triangles;
-  o.material = f.scene->design.material;
-  o.pressure = f.scene->design.pressure;
-  useDesignConnections(f.scene->design, o);  // an internal panel for each of the design's connections
-  f.built = buildPattern(f.scene->target, f.scene->segmentation, o);
-  for (const auto& s : f.scene->design.seams) f.weights.push_back(s.weight);
+  f.scene = loadDesignScene(dataPath(name), {examplesDir()});
+  f.built = buildDesignPattern(*f.scene, triangles);
+  f.weights = designSeamWeights(f.scene->design);
   return f;
 }
 
