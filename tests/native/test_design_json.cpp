@@ -1,7 +1,7 @@
 // The design file (io/design_json.hpp): round trip with unknown fields kept, every bad field refused with a
 // message naming it (or defaulted with a warning when not strict), the parts the app's worker reads by the same
 // rules, 3D seam points projected onto the target (and refused far from it), targets from examples, files and
-// inline meshes; and the CLI commands built on it (billow segment, design).
+// inline meshes; and the CLI commands built on it (billow check, segment, design).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -477,6 +477,37 @@ TEST(CliDesign, SegmentWritesSegmentsAndFailsOnNonDisks) {
   EXPECT_EQ(test::runQuiet(test::cliPath() + " segment " + design + " --out " + out), 1);
   EXPECT_FALSE(json::parse(readFileBytes(out))["ok"].get<bool>());
   EXPECT_EQ(test::runQuiet(test::cliPath() + " segment " + design), 2);  // usage
+#endif
+}
+
+// billow check DESIGN.json reads a design as the app's worker reads it, and with --json replies as a binding does.
+TEST(CliDesign, CheckReadsADesignAndRepliesAsABinding) {
+#ifdef __EMSCRIPTEN__
+  GTEST_SKIP() << "the CLI is native only";
+#else
+  std::string out;
+  ASSERT_EQ(test::runCapture(test::cliPath() + " check " + dataPath("sphere-gores.billow.json") + " --json", out), 0)
+      << out;
+  const json ok = json::parse(out);
+  EXPECT_EQ(ok["status"], "ok");
+  EXPECT_EQ(ok["result"]["seams"], 3);
+  EXPECT_EQ(ok["result"]["triangles"], 1280);
+  json doc = json::parse(readFileBytes(dataPath("sphere-gores.billow.json")));
+  doc["target"]["obj"] = dataPath("../../web/public/examples/sphere.obj");
+  doc["seams"][1]["points"][1] = {0, 0, 5000};  // 5000 units from a sphere of radius 1
+  const std::string design = testing::TempDir() + "billow-far-point.billow.json";
+  std::ofstream(design) << doc.dump();
+  ASSERT_EQ(test::runCapture(test::cliPath() + " check " + design + " --json", out), 1) << out;
+  const json refused = json::parse(out);
+  EXPECT_EQ(refused["status"], "error");
+  EXPECT_EQ(refused["code"], "design.bad-value");
+  EXPECT_NE(refused["message"].get<std::string>().find("Seam 2 \"meridian 2\": point 2"), std::string::npos) << out;
+  EXPECT_EQ(test::runCapture(test::cliPath() + " check " + design, out), 1);
+  EXPECT_NE(out.find("billow check: Seam 2"), std::string::npos) << out;
+  // billow segment and billow design refuse it the same way, before any work.
+  EXPECT_EQ(test::runCapture(test::cliPath() + " segment " + design + " --out " + testing::TempDir() + "x.json", out),
+            1);
+  EXPECT_NE(out.find("times the target's size away"), std::string::npos) << out;
 #endif
 }
 

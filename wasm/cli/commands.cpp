@@ -16,7 +16,7 @@ namespace billow::cli {
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
-      {"check", "validate a target mesh (closed, manifold, oriented, one piece)", checkCommand},
+      {"check", "validate a target mesh (closed, manifold, oriented, one piece) or read a design", checkCommand},
       {"inflate", "simulate a sewn pattern under pressure (the inflated shape and its wrinkles)", inflateCommand},
       {"example", "write an example pattern (mylar, pillow, ring, star, cube, sphere3, ...)", exampleCommand},
       {"export", "write cut files (SVG, DXF), a printable tiled PDF and statistics for a pattern", exportCommand},
