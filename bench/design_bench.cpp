@@ -4,11 +4,12 @@
 // model size of the final one, DESIGN.md) and to the end, the final distance to the target, the largest
 // seam mismatch and the peak RSS.
 //   billow_design_bench [--json] [--designs sphere3,teddy] [--max-seconds S] [--manifest FILE] [--triangles N]
-//                       [--trace] [--set NAME=VALUE ...] [--no-remesh-check] [--cut-scale F] [--out-dir DIR]
-//                       [--perturb SEED]
+//                       [--trace] [--app-rule] [--set NAME=VALUE ...] [--no-remesh-check] [--cut-scale F]
+//                       [--out-dir DIR] [--perturb SEED]
 // --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
 // --set changes an optimizer option (sobolevLength, quality, laplace, smooth, seam, cover,
-// gap, coverReach, maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants. After
+// gap, coverReach, maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants;
+// --app-rule stops where the app stops (optimize/stopping_rule.hpp), before any --set. After
 // each run the final outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check
 // skips it; --cut-scale F meshes them at F x the design's edge length). --perturb SEED moves every flattened panel
 // vertex by up to 1e-12 of the edge length (seeded): a start that differs at the rounding level, to see the
@@ -31,6 +32,7 @@
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
 #include "optimize/pattern_optimizer.hpp"
+#include "optimize/stopping_rule.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/design_scene.hpp"
 
@@ -59,6 +61,7 @@ struct BenchOptions {
   double maxSeconds = 600;
   int triangles = 0;  // > 0: overrides the manifest's
   bool trace = false;
+  bool appRule = false;  // --app-rule: the app's stopping rule
   std::vector<std::pair<std::string, double>> set;
   bool remeshCheck = true;  // --no-remesh-check: skip the cut-panel figure (remeshedOutlines)
   double cutScale = 1;      // --cut-scale F: the cut panels are meshed at F x the design's edge length
@@ -164,14 +167,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
 json run(const json& entry, const std::filesystem::path& base, const BenchOptions& bo) {
   const std::filesystem::path path = base / entry.at("file").get<std::string>();
   const auto t0 = Clock::now();
-  auto scene = makeDesignScene(readDesignJson(readFileBytes(path.string())), path.string(),
-                               {(base / entry.value("examples", "../../web/public/examples")).string()});
-  PatternBuildOptions o;
-  o.triangles = bo.triangles > 0 ? bo.triangles : entry.at("triangles").get<int>();
-  o.material = scene->design.material;
-  o.pressure = scene->design.pressure;
-  useDesignConnections(scene->design, o);
-  BuiltPattern built = buildPattern(scene->target, scene->segmentation, o);
+  auto scene = loadDesignScene(path.string(), {(base / entry.value("examples", "../../web/public/examples")).string()});
+  BuiltPattern built = buildDesignPattern(*scene, bo.triangles > 0 ? bo.triangles : entry.at("triangles").get<int>());
   json row = {{"design", entry.at("name")}, {"class", entry.value("class", "")}};
   if (!built.ok()) {
     row["error"] = built.problems.empty() ? "no panels" : built.problems.front().message;
@@ -185,9 +182,8 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
       for (int v = 0; v < panel.vertices.rows(); ++v)
         for (int k = 0; k < 2; ++k) panel.vertices(v, k) += 1e-12 * built.figures.edgeLength * u(rng);
   }
-  std::vector<double> weights;
-  for (const auto& s : scene->design.seams) weights.push_back(s.weight);
-  OptimizeOptions oo;
+  const std::vector<double> weights = designSeamWeights(scene->design);
+  OptimizeOptions oo = bo.appRule ? appStoppingRule() : OptimizeOptions{};
   oo.keepShapes = true;
   for (const auto& [name, value] : bo.set) applySetting(oo, name, value);
   const auto t1 = Clock::now();
@@ -355,6 +351,8 @@ int main(int argc, char** argv) {
       bo.triangles = std::stoi(argv[++i]);
     else if (a == "--trace")
       bo.trace = true;
+    else if (a == "--app-rule")
+      bo.appRule = true;
     else if (a == "--no-remesh-check")
       bo.remeshCheck = false;
     else if (a == "--cut-scale" && hasValue)
@@ -369,10 +367,10 @@ int main(int argc, char** argv) {
     else if (a == "--perturb" && hasValue)
       bo.perturb = std::stoi(argv[++i]);
     else {
-      std::fprintf(
-          stderr,
-          "usage: billow_design_bench [--json] [--designs NAME,..] [--max-seconds S] [--manifest FILE] "
-          "[--triangles N] [--trace] [--set NAME=VALUE] [--no-remesh-check] [--out-dir DIR] [--perturb SEED]\n");
+      std::fprintf(stderr,
+                   "usage: billow_design_bench [--json] [--designs NAME,..] [--max-seconds S] [--manifest FILE] "
+                   "[--triangles N] [--trace] [--app-rule] [--set NAME=VALUE] [--no-remesh-check] [--out-dir DIR] "
+                   "[--perturb SEED]\n");
       return 2;
     }
   }

@@ -1,6 +1,7 @@
 // The design file (io/design_json.hpp): round trip with unknown fields kept, every bad field refused with a
-// message naming it (or defaulted with a warning when not strict), 3D seam points projected onto the target,
-// targets from examples, files and inline meshes; and the CLI commands built on it (billow segment, design).
+// message naming it (or defaulted with a warning when not strict), the parts the app's worker reads by the same
+// rules, 3D seam points projected onto the target (and refused far from it), targets from examples, files and
+// inline meshes; and the CLI commands built on it (billow check, segment, design).
 #include <gtest/gtest.h>
 #include <unistd.h>
 
@@ -13,6 +14,7 @@
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
 #include "pattern/design_scene.hpp"
+#include "simulate/materials.hpp"
 #include "test_support.hpp"
 #include "util/error.hpp"
 
@@ -52,8 +54,8 @@ TEST(DesignJson, FixtureRoundTripKeepsEveryFieldAndUnknownOnes) {
   json doc = json::parse(readFileBytes(dataPath("sphere-gores.billow.json")));
   doc["seams"][1]["color"] = "#ff8800";  // unknown fields, at the top and inside a seam
   // A gusset band's record (web/src/app/band.js): the CLI reads the seam as any other and keeps the record.
-  doc["seams"][0]["band"] = {{"id", 1}, {"part", "side 1"}, {"kind", "section"}, {"width_mm", 40},
-                             {"normal", {0, 1, 0}}, {"origin", {1, 0, 0}}};
+  doc["seams"][0]["band"] = {{"id", 1},        {"part", "side 1"},    {"kind", "section"},
+                             {"width_mm", 40}, {"normal", {0, 1, 0}}, {"origin", {1, 0, 0}}};
   doc["app"] = {{"camera", {1, 2, 3}}};
   const Design a = readDesignJson(doc.dump());
   ASSERT_EQ(a.seams.size(), 3u);
@@ -184,6 +186,156 @@ TEST(DesignJson, ThreeDimensionalPointsAreProjectedOntoTheScaledTarget) {
     EXPECT_EQ(e.code, "design.bad-value");
     EXPECT_NE(std::string(e.what()).find("another target"), std::string::npos);
   }
+}
+
+namespace {
+
+// `read` throws design.bad-value with a message holding `words`.
+template <class Read>
+void expectBadValue(Read read, const std::string& words) {
+  try {
+    read();
+    ADD_FAILURE() << "accepted; expected: " << words;
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "design.bad-value") << e.what();
+    EXPECT_NE(std::string(e.what()).find(words), std::string::npos) << e.what();
+  }
+}
+
+json seamWith(const json& points, const json& fields = json::object()) {
+  json s = fields;
+  s["points"] = points;
+  return s;
+}
+
+}  // namespace
+
+// The parts of a design the app's worker is sent (wasm/bindings/target_bindings.cpp) are read by the document's
+// rules: the messages name the seam as the designer sees it and the field, a seam traced on its own included.
+TEST(DesignJson, PartsAreReadByTheDocumentsRules) {
+  const json on = {{"face", 3}, {"bary", {0.2, 0.3, 0.5}}};
+  DesignSeam seam;
+  ASSERT_TRUE(readDesignSeam(
+      seamWith({on, {1, 0, 0}, {0, 1, 0}}, {{"name", "belly"}, {"closed", true}, {"weight", 0.5}}), -1, seam));
+  EXPECT_EQ(seam.name, "belly");
+  EXPECT_TRUE(seam.closed);
+  EXPECT_DOUBLE_EQ(seam.weight, 0.5);
+  ASSERT_EQ(seam.points.size(), 3u);
+  EXPECT_TRUE(seam.points[0].onSurface);
+  EXPECT_EQ(seam.points[0].surface.face, 3);
+  EXPECT_FALSE(seam.points[1].onSurface);
+  expectBadValue(
+      [] {
+        DesignSeam s;
+        readDesignSeam(seamWith({{1, 0, 0}}, {{"name", "belly"}}), -1, s);
+      },
+      "The seam \"belly\" (seam) is open and needs at least 2 points, not 1.");
+  const json two = {{1, 0, 0}, {0, 1, 0}};
+  expectBadValue(
+      [&] {
+        readDesignSeams(json::array({seamWith(two), seamWith(two, {{"name", "tail"}, {"weight", "heavy"}})}));
+      },
+      "The weight of seam 2 \"tail\" (seams[1].weight) must be a number from 0 to 1000000");
+  expectBadValue([&] { readDesignSeams(json::array({seamWith(two, {{"weight", 2e6}})})); }, "seams[0].weight");
+  expectBadValue([&] { readDesignSeams(json::array({seamWith(two, {{"smooth", 1}})})); }, "seams[0].smooth");
+  expectBadValue([] { readDesignSeams(json{{"points", 1}}); }, "The seams (seams) must be a list.");
+  // Barycentric coordinates: at least 0 and summing to 1, within 1e-6 and 1e-3; within that they are made exact.
+  for (const json& bary : {json{0.5, 0.5, 0.5}, json{1.01, -0.01, 0.0}, json{0.3, 0.3, 0.3}})
+    expectBadValue(
+        [&] {
+          readDesignSeams(json::array({seamWith({{{"face", 3}, {"bary", bary}}, {1, 0, 0}})}));
+        },
+        "Point 1 of seam 1 (seams[0].points[0]) lies outside its triangle");
+  ASSERT_TRUE(readDesignSeam(seamWith({{{"face", 3}, {"bary", {0.5, 0.5, 2e-4}}}, {1, 0, 0}}), 0, seam));
+  EXPECT_NEAR(seam.points[0].surface.bary.sum(), 1.0, 1e-15);
+  expectBadValue(
+      [] {
+        readDesignSeams(json::array({seamWith({{{"face", 2.5}, {"bary", {1, 0, 0}}}, {1, 0, 0}})}));
+      },
+      "names no triangle");
+  // Internal connections in both forms the app sends; a seam joined to itself is the pattern builder's problem.
+  const std::vector<DesignConnection> pairs =
+      readDesignConnections(json::parse(R"([[0, 1], {"seams": [1, 0]}, [1, 1]])"), 2);
+  ASSERT_EQ(pairs.size(), 3u);
+  EXPECT_EQ(pairs[0].seams, (std::vector<int>{0, 1}));
+  EXPECT_EQ(pairs[1].seams, (std::vector<int>{1, 0}));
+  EXPECT_EQ(pairs[2].seams, (std::vector<int>{1, 1}));
+  expectBadValue(
+      [] { readDesignConnections(json::parse("[[0, 1], [0, 2]]"), 2); },
+      "Internal connection 2 (connections[1]) joins seam 2 (counted from 0), but the design has only 2 seams.");
+  expectBadValue([] { readDesignConnections(json::parse("[[-1, 0]]"), 2); }, "joins seam -1");
+  for (const char* bad :
+       {"[[0]]", "[[0, 1.5]]", "[{\"seams\": 1}]", "[\"0-1\"]", "[{\"pair\": [0, 1]}]", "[[0, 1, 2]]"})
+    expectBadValue([&] { readDesignConnections(json::parse(bad), 2); },
+                   "Internal connection 1 (connections[0]) must join two of the design's seams");
+  expectBadValue([] { readDesignConnections(json("all"), 2); },
+                 "The internal connections (connections) must be a list");
+  // The material and the pressure, in the designer's units.
+  const Material pvc = readDesignMaterial(json{{"name", "pvc"}, {"thickness", 5e-4}});
+  EXPECT_EQ(pvc.name, "pvc");
+  EXPECT_DOUBLE_EQ(pvc.thickness, 5e-4);
+  EXPECT_DOUBLE_EQ(pvc.youngsModulus, findMaterialPreset("pvc")->material.youngsModulus);
+  expectBadValue(
+      [] {
+        readDesignMaterial(json{{"name", "pvc"}, {"thickness", -1}});
+      },
+      "The sheet thickness (material.thickness) must be between 0.1 µm and 1 cm, not -1.");
+  expectBadValue([] { readDesignMaterial(json{{"youngs_modulus", 1e20}}); }, "between 1 kPa and 10 TPa");
+  expectBadValue([] { readDesignMaterial(json{{"name", 5}}); }, "material.name");
+  expectBadValue([] { readDesignMaterial(json{{"density", -1}}); }, "material.density");
+  expectBadValue([] { readDesignMaterial(json("pvc")); }, "The material (material) must be an object");
+  EXPECT_DOUBLE_EQ(readDesignPressure(json(2500)), 2500);
+  expectBadValue([] { readDesignPressure(json(0)); },
+                 "The pressure (pressure) must be between 1 Pa and 10 MPa, not 0.");
+  // Not strict: the same rules, the default kept and a warning naming the field.
+  DesignReadOptions lenient;
+  lenient.strict = false;
+  std::vector<DesignWarning> warnings;
+  EXPECT_DOUBLE_EQ(readDesignPressure(json(-3), 1000, lenient, &warnings), 1000);
+  EXPECT_EQ(readDesignConnections(json::parse("[[0, 1], [0, 9]]"), 2, lenient, &warnings).size(), 1u);
+  ASSERT_EQ(warnings.size(), 2u);
+  EXPECT_EQ(warnings[0].field, "pressure");
+  EXPECT_EQ(warnings[1].field, "connections[1]");
+  // The document takes the pair form too, and writes the documented one.
+  json doc = minimal();
+  doc["seams"].push_back(seamWith(two));
+  doc["connections"] = json::parse("[[1, 0]]");
+  const Design d = readDesignJson(doc.dump());
+  ASSERT_EQ(d.connections.size(), 1u);
+  EXPECT_EQ(d.connections[0].seams, (std::vector<int>{1, 0}));
+  EXPECT_EQ(json::parse(writeDesignJson(d))["connections"], json::parse(R"([{"seams": [1, 0]}])"));
+}
+
+// A 3D seam point farther from the target's surface than the target's size (its bounding-box diagonal) cannot
+// be a place on it (another target, or millimetres for the target's units): it is refused naming the seam and
+// the point, at any scale the target is placed at; one within is projected.
+TEST(DesignJson, FarThreeDimensionalPointsAreRefused) {
+  const std::string path = dataPath("sphere-equator.billow.json");
+  Design d = readDesignJson(readFileBytes(path));
+  d.seams[0].name = "belly";
+  const auto scene = makeDesignScene(d, path, {examplesDir()});
+  const TriMesh own = loadDesignTarget(d, path, {examplesDir()});
+  const SurfaceProjector ownProjector(own);
+  const double size = (own.V.colwise().maxCoeff() - own.V.colwise().minCoeff()).norm();
+  const double surface = own.V.col(0).maxCoeff();  // the sphere's surface along +x
+  const auto placed = [&](double x, int index) {
+    DesignSeam s = d.seams[0];
+    s.points[1].position = Eigen::Vector3d(x, 0, 0);
+    const SeamSpec meters = designSeamSpec(s, index, scene->target, *scene->projector, scene->scale);
+    const SeamSpec units = designSeamSpec(s, index, own, ownProjector);
+    const Eigen::Vector3d at = position(own, units.controls[1]);
+    EXPECT_LT((position(scene->target, meters.controls[1]) / scene->scale - at).norm(), 1e-9) << "the same place";
+    return at;
+  };
+  EXPECT_GT(placed(surface + 0.5 * size, 0).x(), 0.9 * surface) << "half the size away: projected";
+  expectBadValue([&] { placed(surface + 1.5 * size, 0); }, "Seam 1 \"belly\": point 2 [");
+  expectBadValue([&] { placed(surface + 1.5 * size, -1); }, "The seam \"belly\": point 2");
+  expectBadValue([&] { placed(surface + 1.5 * size, 0); }, "another target or in other units");
+  // The design's points written in millimetres for a target in meters (or any unit 1000 times smaller).
+  Design mm = d;
+  for (DesignPoint& p : mm.seams[0].points) p.position *= 1000;
+  expectBadValue([&] { designSeamSpecs(mm, scene->target, *scene->projector, scene->scale); },
+                 "Seam 1 \"belly\": point 1");
 }
 
 TEST(DesignJson, TargetsFromExamplesFilesAndInlineMeshes) {
@@ -325,6 +477,37 @@ TEST(CliDesign, SegmentWritesSegmentsAndFailsOnNonDisks) {
   EXPECT_EQ(test::runQuiet(test::cliPath() + " segment " + design + " --out " + out), 1);
   EXPECT_FALSE(json::parse(readFileBytes(out))["ok"].get<bool>());
   EXPECT_EQ(test::runQuiet(test::cliPath() + " segment " + design), 2);  // usage
+#endif
+}
+
+// billow check DESIGN.json reads a design as the app's worker reads it, and with --json replies as a binding does.
+TEST(CliDesign, CheckReadsADesignAndRepliesAsABinding) {
+#ifdef __EMSCRIPTEN__
+  GTEST_SKIP() << "the CLI is native only";
+#else
+  std::string out;
+  ASSERT_EQ(test::runCapture(test::cliPath() + " check " + dataPath("sphere-gores.billow.json") + " --json", out), 0)
+      << out;
+  const json ok = json::parse(out);
+  EXPECT_EQ(ok["status"], "ok");
+  EXPECT_EQ(ok["result"]["seams"], 3);
+  EXPECT_EQ(ok["result"]["triangles"], 1280);
+  json doc = json::parse(readFileBytes(dataPath("sphere-gores.billow.json")));
+  doc["target"]["obj"] = dataPath("../../web/public/examples/sphere.obj");
+  doc["seams"][1]["points"][1] = {0, 0, 5000};  // 5000 units from a sphere of radius 1
+  const std::string design = testing::TempDir() + "billow-far-point.billow.json";
+  std::ofstream(design) << doc.dump();
+  ASSERT_EQ(test::runCapture(test::cliPath() + " check " + design + " --json", out), 1) << out;
+  const json refused = json::parse(out);
+  EXPECT_EQ(refused["status"], "error");
+  EXPECT_EQ(refused["code"], "design.bad-value");
+  EXPECT_NE(refused["message"].get<std::string>().find("Seam 2 \"meridian 2\": point 2"), std::string::npos) << out;
+  EXPECT_EQ(test::runCapture(test::cliPath() + " check " + design, out), 1);
+  EXPECT_NE(out.find("billow check: Seam 2"), std::string::npos) << out;
+  // billow segment and billow design refuse it the same way, before any work.
+  EXPECT_EQ(test::runCapture(test::cliPath() + " segment " + design + " --out " + testing::TempDir() + "x.json", out),
+            1);
+  EXPECT_NE(out.find("times the target's size away"), std::string::npos) << out;
 #endif
 }
 

@@ -15,11 +15,14 @@
 #include "io/mesh_file.hpp"
 #include "optimize/adjoint.hpp"
 #include "optimize/harmonic_interior.hpp"
+#include "optimize/optimized_pattern.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/rest_derivatives.hpp"
 #include "optimize/seam_projection.hpp"
+#include "optimize/stopping_rule.hpp"
 #include "pattern/design_scene.hpp"
 #include "pattern/remesh_pattern.hpp"
+#include "simulate/initial_shape.hpp"
 
 using namespace billow;
 
@@ -34,17 +37,13 @@ struct Fixture {
   std::vector<double> weights;
 };
 
+// As the CLI and the design bench start (pattern/design_scene.hpp): an internal panel for each of the design's
+// connections.
 Fixture makeFixture(const std::string& name, int triangles) {
   Fixture f;
-  const std::string path = dataPath(name);
-  f.scene = makeDesignScene(readDesignJson(readFileBytes(path)), path, {examplesDir()});
-  PatternBuildOptions o;
-  o.triangles = triangles;
-  o.material = f.scene->design.material;
-  o.pressure = f.scene->design.pressure;
-  useDesignConnections(f.scene->design, o);  // an internal panel for each of the design's connections
-  f.built = buildPattern(f.scene->target, f.scene->segmentation, o);
-  for (const auto& s : f.scene->design.seams) f.weights.push_back(s.weight);
+  f.scene = loadDesignScene(dataPath(name), {examplesDir()});
+  f.built = buildDesignPattern(*f.scene, triangles);
+  f.weights = designSeamWeights(f.scene->design);
   return f;
 }
 
@@ -809,6 +808,52 @@ TEST(Optimize, RemeshingOnItsSchedule) {
   for (int i : at) EXPECT_EQ(i % 3, 0) << i;
   EXPECT_EQ(opt.timings().remeshings, (opt.iterations() - 1) / 3);
   EXPECT_EQ(opt.pattern().panels.size(), f.built.pattern.panels.size());
+}
+
+// The optimizer's state as a pattern (optimize/optimized_pattern.hpp), what the app shows and the CLI inflates
+// last: its current panels and stitches, and as "inflated" its shape, so an inflation from it starts exactly where
+// the optimizer stands; also after the panels were meshed anew (other vertices than the flattened pattern's).
+TEST(Optimize, OptimizedPatternStartsWhereTheOptimizerStands) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.maxIterations = 4, o.remeshing.every = 3;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+  ASSERT_EQ(opt.timings().remeshings, 1);
+  const Pattern p = optimizedPattern(opt);
+  ASSERT_EQ(p.panels.size(), f.built.pattern.panels.size());
+  ASSERT_EQ(p.inflated.size(), p.panels.size());
+  EXPECT_EQ(p.stitches.size(), opt.pattern().stitches.size());
+  EXPECT_NE(p.panels[0].vertices.rows(), f.built.pattern.panels[0].vertices.rows()) << "the panels were meshed anew";
+  for (size_t k = 0; k < p.panels.size(); ++k) {
+    EXPECT_EQ(p.panels[k].vertices, opt.pattern().panels[k].vertices);
+    EXPECT_EQ(p.inflated[k].rows(), p.panels[k].vertices.rows());
+  }
+  EXPECT_EQ(p.material.name, f.built.pattern.material.name);
+  EXPECT_DOUBLE_EQ(p.pressure, f.built.pattern.pressure);
+  const SewnMesh mesh = sewPattern(p);
+  const Vertices start = startFromInflated(p, mesh);
+  ASSERT_EQ(start.rows(), opt.inflated().rows());
+  EXPECT_LT((start - opt.inflated()).cwiseAbs().maxCoeff(), 1e-12);
+}
+
+// The app's stopping rule (optimize/stopping_rule.hpp) sets when to stop and nothing else.
+TEST(Optimize, AppStoppingRuleSetsOnlyWhenToStop) {
+  OptimizeOptions base;
+  base.weights.cover = 7, base.remeshing.every = 9;
+  const OptimizeOptions app = appStoppingRule(base);
+  EXPECT_EQ(app.stopping.maxIterations, 150);
+  EXPECT_EQ(app.stopping.windowIterations, 20);
+  EXPECT_DOUBLE_EQ(app.stopping.windowMove, 2e-3);
+  EXPECT_DOUBLE_EQ(app.stopping.windowDecrease, 1e-2);
+  EXPECT_DOUBLE_EQ(app.sliding.iterationFactor, base.sliding.iterationFactor);
+  EXPECT_DOUBLE_EQ(app.weights.cover, 7);
+  EXPECT_EQ(app.remeshing.every, 9);
+  EXPECT_EQ(OptimizeOptions{}.stopping.windowIterations, 0)
+      << "the CLI's and the bench's runs go on to full convergence";
 }
 
 // Outlines that zig-zag below the edge length (free seams, tangent steps, a weak E_smooth) resample into chords

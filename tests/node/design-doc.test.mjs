@@ -20,6 +20,13 @@ test('parseDesign keeps good fields and unknown ones, defaults bad ones with a w
   assert.equal(bad.warnings.length, 2);
 });
 
+// Internal connections in either form the design reader takes (docs/formats.md): the app keeps { seams: [i, j] }.
+test('parseDesign takes internal connections as seam pairs in either form', () => {
+  const { design, warnings } = parseDesign({ ...newDesign('sphere'), connections: [[0, 1], { seams: [1, 2] }] });
+  assert.deepEqual(warnings, []);
+  assert.deepEqual(design.connections, [{ seams: [0, 1] }, { seams: [1, 2] }]);
+});
+
 test('parseDesign refuses what is not a design, and newer versions, with a message', () => {
   assert.throws(() => parseDesign(null), /not a Billow design/);
   assert.throws(() => parseDesign({ format: 'billow-pattern', version: 1 }), /not a Billow design/);

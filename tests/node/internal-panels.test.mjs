@@ -1,6 +1,6 @@
 // Internal connections through the wasm binding (TargetSession.buildPattern / startOptimization): the option
-// "connections" ([[i, j]] or [{ seams: [i, j] }]) adds an internal panel, sewn onto both seams; a bad
-// connection is a problem in the designer's words, not a thrown error.
+// "connections" ([[i, j]] or [{ seams: [i, j] }]) adds an internal panel, sewn onto both seams; a connection that
+// cannot be built is a problem in the designer's words, one the design cannot have is refused as the CLI refuses it.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -51,18 +51,29 @@ test('a connection between two meridians adds an internal panel sewn onto both s
   }
 });
 
-test('a bad connection is a problem; the outer panels are still built', () => {
+test('a connection that cannot be built is a problem; the outer panels are still built', () => {
   const t = session();
   try {
-    const built = t.buildPattern(seams, { ...options, connections: [[2, 2], [0, 9]] });
+    const built = t.buildPattern(seams, { ...options, connections: [[2, 2]] });
     assert.equal(built.ok, false);
     assert.equal(built.pattern.panels.length, 3);
     const messages = built.problems.filter((p) => p.code === 'pattern.connection').map((p) => p.message);
-    assert.equal(messages.length, 2);
+    assert.equal(messages.length, 1);
     assert.match(messages[0], /The internal connection between seams "meridian 3" and "meridian 3" cannot be built: it joins a seam to itself/);
-    assert.match(messages[1], /there is no seam 10/);
-    assert.throws(() => t.buildPattern(seams, { ...options, connections: 'all' }), (e) => e.code === 'pattern.bad-options');
-    assert.throws(() => t.buildPattern(seams, { ...options, connections: [[0]] }), (e) => e.code === 'pattern.bad-options');
+  } finally {
+    t.delete();
+  }
+});
+
+// Connections are read by the design document's rules (io/design_json.hpp), as the CLI reads them: one naming a
+// seam the design does not have, or in another form, is refused before any work, naming the connection.
+test('a connection to a seam the design does not have, or in another form, is refused', () => {
+  const t = session();
+  try {
+    assert.throws(() => t.buildPattern(seams, { ...options, connections: [[2, 2], [0, 9]] }),
+      (e) => e.code === 'design.bad-value' && /Internal connection 2 \(connections\[1\]\) joins seam 9 \(counted from 0\), but the design has only 3 seams/.test(e.message));
+    assert.throws(() => t.buildPattern(seams, { ...options, connections: 'all' }), (e) => e.code === 'design.bad-value' && /must be a list/.test(e.message));
+    assert.throws(() => t.buildPattern(seams, { ...options, connections: [[0]] }), (e) => e.code === 'design.bad-value' && /must join two of the design's seams/.test(e.message));
   } finally {
     t.delete();
   }

@@ -87,10 +87,11 @@ test('panels built by the worker carry the design\'s material and pressure; bad 
   assert.equal(JSON.parse(custom.patternText).material.youngs_modulus, 5e7);
   assert.equal(JSON.parse(custom.patternText).pressure, 1000);
 
-  await assert.rejects(run(handlers, 'buildPattern', { ...args, pressure: 0 }), (e) => e.code === 'pattern.bad-pressure' && /between 1 Pa/.test(e.message));
+  // Read by the design document's rules, as the CLI reads them (tests/node/design-reader.test.mjs).
+  await assert.rejects(run(handlers, 'buildPattern', { ...args, pressure: 0 }), (e) => e.code === 'design.bad-value' && /between 1 Pa/.test(e.message));
   await assert.rejects(
     run(handlers, 'buildPattern', { ...args, material: { name: 'pvc', thickness: -1 } }),
-    (e) => e.code === 'pattern.bad-material' && /thickness/.test(e.message),
+    (e) => e.code === 'design.bad-value' && /thickness/.test(e.message),
   );
   await assert.rejects(run(handlers, 'buildPattern', { ...args, scale: 'big' }), (e) => e.code === 'pattern.bad-scale');
 });

@@ -3,7 +3,12 @@
 //
 //   const t = new Module.TargetSession();                 // never throws
 //   t.setTarget(positionsPtr, numVertices, indicesPtr, numTriangles)   -> {}
-//   t.traceSeam(seamJson)  seam: { points: [{face, bary} | [x,y,z]], closed, smooth }
+// Seams, internal connections, material and pressure are read by the design document's rules
+// (io/design_json.hpp, as the CLI reads a design file): a bad one is refused with "design.bad-value" and a message
+// naming the seam ("seam 3 \"belly\"") and the field ("seams[2].points[1]"), and so is a 3D point farther from the
+// target than its size.
+//
+//   t.traceSeam(seamJson)  seam: { points: [{face, bary} | [x,y,z]], closed, smooth, name }
 //     -> { positions: [x,y,z,...], faces: [...], barys: [...], controls: [x,y,z,...], controlIndices, length }
 //        (faces/barys: a surface point per curve point; curve points of closed seams end at the start)
 //   t.segment(seamsJson, optionsJson)   seams: [{ points, closed, weight, smooth }]; options: { up } (the target's
@@ -14,7 +19,8 @@
 //        and fills the cut mesh: cutPositionsPtr() #V*3 f64, cutTrianglesPtr() #F*3 i32, faceSegmentPtr() #F i32
 //   t.buildPattern(seamsJson, optionsJson)
 //     options: { scale (meters per target unit), triangles, pressure [Pa], up,
-//                material: { name (a preset: foil, pvc, ripstop, tpu), thickness [m], youngs_modulus [Pa] },
+//                material: { name (a preset: foil, pvc, ripstop, tpu), thickness [m], youngs_modulus [Pa],
+//                density [kg/m^3] },
 //                connections: [[i, j], ...] or [{ seams: [i, j] }, ...] (internal connections: an internal
 //                panel between seams i and j, indices into seamsJson; a seam's "name" is used in messages) }
 //     -> { ok, pattern (billow-pattern JSON, "inflated" = the target shape; internal panels last, with
@@ -42,23 +48,25 @@
 //     target triangles as vertex indices, U = uncoveredTriangles(): what the inflated pane draws as left out)
 #include <emscripten/bind.h>
 
-#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <nlohmann/json.hpp>
 
 #include "guarded.hpp"
+#include "io/design_json.hpp"
 #include "io/distance_json.hpp"
 #include "io/pattern_json.hpp"
+#include "optimize/optimized_pattern.hpp"
 #include "optimize/pattern_optimizer.hpp"
+#include "optimize/stopping_rule.hpp"
 #include "pattern/build_pattern.hpp"
+#include "pattern/design_scene.hpp"
 #include "seams/geodesic.hpp"
 #include "seams/mesh_topology.hpp"
 #include "seams/seam_curve.hpp"
 #include "seams/surface_distance.hpp"
 #include "seams/surface_point.hpp"
 #include "segment/segmentation.hpp"
-#include "simulate/materials.hpp"
 #include "util/memory_budget.hpp"
 
 namespace {
@@ -88,18 +96,19 @@ class TargetSession {
   std::string traceSeam(const std::string& seamJson) {
     return guarded([&] {
       requireTarget();
-      const billow::SeamCurve curve = billow::buildSeamCurve(*geodesic_, *projector_, readSeam(parse(seamJson)));
-      return curveJson(curve).dump();
+      billow::DesignSeam seam;
+      billow::readDesignSeam(parse(seamJson), -1, seam);
+      const billow::SeamSpec spec = billow::designSeamSpec(seam, -1, mesh_, *projector_);
+      return curveJson(billow::buildSeamCurve(*geodesic_, *projector_, spec)).dump();
     });
   }
 
   std::string segment(const std::string& seamsJson, const std::string& optionsJson) {
     return guarded([&] {
       requireTarget();
-      const json seams = parse(seamsJson);
-      if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
       std::vector<billow::SeamCurve> curves;
-      for (const auto& s : seams) curves.push_back(billow::buildSeamCurve(*geodesic_, *projector_, readSeam(s)));
+      for (const billow::SeamSpec& spec : seamSpecs(billow::readDesignSeams(parse(seamsJson))))
+        curves.push_back(billow::buildSeamCurve(*geodesic_, *projector_, spec));
       billow::SegmentationOptions options;
       options.up = readUp(parse(optionsJson));
       billow::Segmentation seg = billow::segmentTarget(mesh_, topology_, curves, options);
@@ -110,32 +119,19 @@ class TargetSession {
   }
 
   std::string buildPattern(const std::string& seamsJson, const std::string& optionsJson) {
-    return guarded([&] { return patternJson(makePattern(seamsJson, optionsJson)).dump(); });
-  }
-
-  // The app's optimization: it stops once the inflated shape no longer changes visibly (no vertex moving
-  // by 0.2 % of the model size over 20 iterations), or the objective fell by less than 1 % over 20 iterations,
-  // or after 150 iterations (300 when seams slide: OptimizeSliding::iterationFactor; the CLI and the
-  // native benchmark go on to full convergence; bench/README.md).
-  static billow::OptimizeOptions interactiveOptions() {
-    billow::OptimizeOptions o;
-    o.stopping.maxIterations = 150;
-    o.stopping.windowIterations = 20;
-    o.stopping.windowMove = 2e-3;
-    o.stopping.windowDecrease = 1e-2;
-    return o;
+    return guarded([&] { return patternJson(makePattern(readPatternRequest(seamsJson, optionsJson))).dump(); });
   }
 
   std::string startOptimization(const std::string& seamsJson, const std::string& optionsJson) {
     return guarded([&] {
       optimizer_.reset();
       requireOptimizationMemory(optionsJson);
-      const billow::BuiltPattern built = makePattern(seamsJson, optionsJson);
-      if (built.ok()) {
-        std::vector<double> weights;
-        for (const auto& s : parse(seamsJson)) weights.push_back(s.value("weight", 1.0));
-        optimizer_ = std::make_unique<billow::PatternOptimizer>(scaled_, built, weights, interactiveOptions());
-      }
+      const PatternRequest request = readPatternRequest(seamsJson, optionsJson);
+      const billow::BuiltPattern built = makePattern(request);
+      // The app stops once the shape no longer changes visibly (the CLI goes on to full convergence).
+      if (built.ok())
+        optimizer_ = std::make_unique<billow::PatternOptimizer>(
+            scaled_, built, billow::designSeamWeights(request.design), billow::appStoppingRule());
       return patternJson(built).dump();
     });
   }
@@ -166,17 +162,7 @@ class TargetSession {
   std::string optimizedPattern() const {
     return guarded([&] {
       if (!optimizer_) throw billow::Error("optimize.not-started", "There are no panels to optimize yet.");
-      billow::Pattern p = optimizer_->pattern();
-      const billow::SewnMesh& m = optimizer_->mesh();
-      const billow::Vertices& x = optimizer_->inflated();
-      p.inflated.clear();
-      for (size_t panel = 0; panel < p.panels.size(); ++panel) {
-        const int begin = m.panelVertexStart[panel], end = m.panelVertexStart[panel + 1];
-        billow::Vertices v(end - begin, 3);
-        for (int k = begin; k < end; ++k) v.row(k - begin) = x.row(m.simVertexOf[k]);
-        p.inflated.push_back(v);
-      }
-      return billow::writePatternJson(p);
+      return billow::writePatternJson(billow::optimizedPattern(*optimizer_));
     });
   }
 
@@ -245,83 +231,51 @@ class TargetSession {
   uintptr_t uncoveredTrianglesPtr() const { return reinterpret_cast<uintptr_t>(uncoveredTriangles_.data()); }
   int uncoveredTriangles() const { return static_cast<int>(uncoveredTriangles_.size() / 3); }
 
-  // Reads { scale, triangles, pressure, material } (see the top of this file) into build options.
-  static billow::PatternBuildOptions readBuildOptions(const std::string& optionsJson, double& scale) {
+  // What the worker sends to build panels: the design's seams, internal connections, material and pressure,
+  // read as the CLI reads them from a design file, and the scale and resolution (see the top of this file).
+  struct PatternRequest {
+    billow::Design design;  // seams, connections, material, pressure, target.up
+    double scale = 0;
+    int triangles = 3000;
+  };
+
+  PatternRequest readPatternRequest(const std::string& seamsJson, const std::string& optionsJson) const {
+    requireTarget();
     const json o = parse(optionsJson);
     if (!o.is_object()) throw billow::Error("pattern.bad-options", "The pattern options must be an object.");
-    const auto number = [&](const json& j, const char* key, double fallback) {
-      if (!j.contains(key)) return fallback;
-      if (!j[key].is_number()) return std::nan("");
-      return j[key].get<double>();
+    const auto number = [&](const char* key, double fallback) {
+      if (!o.contains(key)) return fallback;
+      return o[key].is_number() ? o[key].get<double>() : std::nan("");
     };
-    billow::PatternBuildOptions options;
-    scale = number(o, "scale", std::nan(""));
-    if (!(scale > 0) || !std::isfinite(scale))
+    PatternRequest r;
+    r.scale = number("scale", std::nan(""));
+    if (!(r.scale > 0) || !std::isfinite(r.scale))
       throw billow::Error("pattern.bad-scale", "The target's size is not valid.");
-    const double triangles = number(o, "triangles", options.triangles);
+    const double triangles = number("triangles", r.triangles);
     if (!(triangles >= 50 && triangles <= 200000))
       throw billow::Error("pattern.bad-resolution", "The resolution must be between 50 and 200,000 triangles.");
-    options.triangles = static_cast<int>(triangles);
-    options.pressure = number(o, "pressure", options.pressure);
-    if (!(options.pressure >= 1 && options.pressure <= 1e7))
-      throw billow::Error("pattern.bad-pressure", "The pressure must be between 1 Pa and 10 MPa.");
-    if (o.contains("material")) {
-      const json& m = o["material"];
-      if (!m.is_object()) throw billow::Error("pattern.bad-material", "The material must be an object.");
-      if (m.contains("name") && m["name"].is_string())
-        options.material = billow::namedMaterial(m["name"].get<std::string>(), options.material);
-      options.material.thickness = number(m, "thickness", options.material.thickness);
-      options.material.youngsModulus = number(m, "youngs_modulus", options.material.youngsModulus);
-      if (!(options.material.thickness >= billow::kMinThickness && options.material.thickness <= billow::kMaxThickness))
-        throw billow::Error("pattern.bad-material", "The sheet thickness must be between 0.1 µm and 1 cm.");
-      if (!(options.material.youngsModulus >= billow::kMinYoungsModulus &&
-            options.material.youngsModulus <= billow::kMaxYoungsModulus))
-        throw billow::Error("pattern.bad-material", "The material's Young's modulus must be between 1 kPa and 10 TPa.");
-    }
-    if (o.contains("connections")) options.connections = readConnections(o["connections"]);
-    return options;
+    r.triangles = static_cast<int>(triangles);
+    billow::Design& d = r.design;
+    if (o.contains("pressure")) d.pressure = billow::readDesignPressure(o["pressure"], d.pressure);
+    if (o.contains("material")) d.material = billow::readDesignMaterial(o["material"], d.material);
+    d.seams = billow::readDesignSeams(parse(seamsJson));
+    if (o.contains("connections")) d.connections = billow::readDesignConnections(o["connections"], d.seams.size());
+    d.target.up = readUp(o);
+    return r;
   }
 
-  // [[i, j], ...] or [{ "seams": [i, j] }, ...]. Indices the seams do not have are left to the builder, which
-  // reports them as problems.
-  static std::vector<billow::InternalConnection> readConnections(const json& list) {
-    const auto bad = [] {
-      return billow::Error("pattern.bad-options",
-                           "The internal connections must be a list of seam pairs: [[i, j], ...] or "
-                           "[{\"seams\": [i, j]}, ...].");
-    };
-    if (!list.is_array()) throw bad();
-    std::vector<billow::InternalConnection> out;
-    for (const json& c : list) {
-      const json& pair = c.is_object() && c.contains("seams") ? c["seams"] : c;
-      if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() || !pair[1].is_number_integer())
-        throw bad();
-      const auto index = [](const json& j) {
-        return static_cast<int>(std::clamp<long long>(j.get<long long>(), -1'000'000'000, 1'000'000'000));
-      };
-      out.push_back({index(pair[0]), index(pair[1])});
-    }
-    return out;
-  }
-
-  billow::BuiltPattern makePattern(const std::string& seamsJson, const std::string& optionsJson) {
+  billow::BuiltPattern makePattern(const PatternRequest& request) {
     requireTarget();
-    double scale = 0;
-    billow::PatternBuildOptions options = readBuildOptions(optionsJson, scale);
-    const json seams = parse(seamsJson);
-    if (!seams.is_array()) throw billow::Error("seams.bad-input", "The seams must be a list.");
-    for (const auto& s : seams)
-      options.seamNames.push_back(
-          s.is_object() && s.contains("name") && s["name"].is_string() ? s["name"].get<std::string>() : std::string());
-    useScale(scale);
+    // Seam points are placed on the target as it is (surface points are scale-free), traced on the scaled one.
+    const std::vector<billow::SeamSpec> specs = seamSpecs(request.design.seams);
+    useScale(request.scale);
     std::vector<billow::SeamCurve> curves;
-    for (const auto& s : seams)
-      curves.push_back(billow::buildSeamCurve(*scaledGeodesic_, *scaledProjector_, readSeam(s)));
+    for (const billow::SeamSpec& spec : specs)
+      curves.push_back(billow::buildSeamCurve(*scaledGeodesic_, *scaledProjector_, spec));
     billow::SegmentationOptions segmentation;
-    segmentation.up = readUp(parse(optionsJson));
+    segmentation.up = request.design.target.up;
     const billow::Segmentation seg = billow::segmentTarget(scaled_, scaledTopology_, curves, segmentation);
-    const billow::BuiltPattern built = billow::buildPattern(scaled_, seg, options);
-    return built;
+    return billow::buildPattern(scaled_, seg, billow::designBuildOptions(request.design, request.triangles));
   }
 
   // The built pattern of the scaled target (scale_): problems are placed in the target's own units, as the
@@ -378,38 +332,11 @@ class TargetSession {
     if (!geodesic_) throw billow::Error("seams.no-target", "Load a target before drawing seams.");
   }
 
-  // A control point: a surface point {face, bary} on the target, or a 3D point [x, y, z] projected onto it.
-  billow::SurfacePoint readPoint(const json& p) const {
-    if (p.is_array() && p.size() == 3 && p[0].is_number() && p[1].is_number() && p[2].is_number())
-      return projector_->project(Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>()));
-    if (!p.is_object() || !p.contains("face") || !p["face"].is_number_integer() || !p.contains("bary") ||
-        !p["bary"].is_array() || p["bary"].size() != 3)
-      throw billow::Error("seams.bad-point", "A seam point is neither a surface point nor a 3D point.");
-    billow::SurfacePoint sp;
-    sp.face = p["face"].get<int>();
-    if (sp.face < 0 || sp.face >= mesh_.numTriangles())
-      throw billow::Error("seams.bad-point", "A seam point lies on a triangle the target does not have (" +
-                                                 std::to_string(sp.face) + ").");
-    for (int k = 0; k < 3; ++k) {
-      if (!p["bary"][k].is_number()) throw billow::Error("seams.bad-point", "A seam point has a bad coordinate.");
-      sp.bary[k] = p["bary"][k].get<double>();
-    }
-    const double sum = sp.bary.sum();
-    if (!std::isfinite(sum) || sum <= 0 || sp.bary.minCoeff() < -1e-6)
-      throw billow::Error("seams.bad-point", "A seam point has coordinates outside its triangle.");
-    sp.bary = sp.bary.cwiseMax(0.0) / sp.bary.cwiseMax(0.0).sum();
-    return sp;
-  }
-
-  billow::SeamSpec readSeam(const json& s) const {
-    if (!s.is_object() || !s.contains("points") || !s["points"].is_array())
-      throw billow::Error("seams.bad-input", "A seam has no list of points.");
-    billow::SeamSpec spec;
-    for (const auto& p : s["points"]) spec.controls.push_back(readPoint(p));
-    spec.closed = s.value("closed", false);
-    spec.weight = s.value("weight", 1.0);
-    spec.smooth = s.value("smooth", false);
-    return spec;
+  // The seams' control points on the target (io/design_json.hpp designSeamSpecs: faces it has, 3D points near it).
+  std::vector<billow::SeamSpec> seamSpecs(const std::vector<billow::DesignSeam>& seams) const {
+    billow::Design d;
+    d.seams = seams;
+    return billow::designSeamSpecs(d, mesh_, *projector_);
   }
 
   static json curveJson(const billow::SeamCurve& c) {

@@ -2,35 +2,16 @@
 // with each segment's area, topology and boundary as seam pieces, the internal connections, and the problems
 // in the designer's words.
 // Exit code 0 when every segment can be made into a panel, 1 when not (the file is still written).
-#include <unistd.h>
-
-#include <climits>
 #include <cstdio>
-#include <fstream>
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "io/mesh_file.hpp"
 #include "pattern/design_scene.hpp"
 #include "pattern/segment_pieces.hpp"
-#include "util/error.hpp"
 
 namespace billow::cli {
 
-// Shared with cmd_design.cpp.
-std::unique_ptr<DesignScene> loadDesignScene(const std::string& path, bool quiet);
-void writeTextFile(const std::string& path, const std::string& text);
-void printProblems(const std::vector<SegmentationProblem>& problems);
-
 namespace {
-
-std::string executableDir() {
-  char buf[PATH_MAX];
-  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
-  if (n <= 0) return "";
-  const std::string exe(buf, static_cast<size_t>(n));
-  return exe.substr(0, exe.find_last_of('/'));
-}
 
 nlohmann::json vec3(const Eigen::Vector3d& v) { return nlohmann::json::array({v.x(), v.y(), v.z()}); }
 
@@ -83,28 +64,6 @@ nlohmann::json segmentsJson(const DesignScene& scene) {
 
 }  // namespace
 
-std::unique_ptr<DesignScene> loadDesignScene(const std::string& path, bool quiet) {
-  std::vector<DesignWarning> warnings;
-  const Design design = readDesignJson(readFileBytes(path), {}, &warnings);
-  auto scene = makeDesignScene(design, path, exampleSearchPath(executableDir()));
-  if (!quiet)
-    std::fprintf(stderr, "%s: target of %d triangles scaled by %.4g to meters, %zu seams -> %zu segments (%.0f ms)\n",
-                 path.c_str(), scene->target.numTriangles(), scene->scale, scene->curves.size(),
-                 scene->segmentation.segments.size(), scene->loadMs + scene->seamsMs + scene->segmentMs);
-  return scene;
-}
-
-void writeTextFile(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  if (!f) throw Error("io.cannot-write", "cannot write " + path);
-}
-
-void printProblems(const std::vector<SegmentationProblem>& problems) {
-  for (const SegmentationProblem& p : problems)
-    std::fprintf(stderr, "  %s: %s\n", p.severity.c_str(), p.message.c_str());
-}
-
 int segmentCommand(const std::vector<std::string>& argv) {
   const Args args = parseArgs(argv, {"--out"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out")) {
@@ -116,7 +75,7 @@ int segmentCommand(const std::vector<std::string>& argv) {
                  "Exit code 0 when every segment can be laid flat as a panel, 1 when not.\n");
     return args.has("--help") ? 0 : 2;
   }
-  const auto scene = loadDesignScene(args.positional[0], args.has("--quiet"));
+  const auto scene = openDesignScene(args.positional[0], args.has("--quiet"));
   writeTextFile(args.get("--out"), segmentsJson(*scene).dump() + "\n");
   printProblems(scene->segmentation.problems);
   if (!scene->segmentation.ok()) {

@@ -1,8 +1,12 @@
 #include "cli/commands.hpp"
 
 #include <sys/resource.h>
+#include <unistd.h>
 
 #include <algorithm>
+#include <climits>
+#include <cstdio>
+#include <fstream>
 
 #include "simulate/materials.hpp"
 #include "util/error.hpp"
@@ -12,7 +16,7 @@ namespace billow::cli {
 
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
-      {"check", "validate a target mesh (closed, manifold, oriented, one piece)", checkCommand},
+      {"check", "validate a target mesh (closed, manifold, oriented, one piece) or read a design", checkCommand},
       {"inflate", "simulate a sewn pattern under pressure (the inflated shape and its wrinkles)", inflateCommand},
       {"example", "write an example pattern (mylar, pillow, ring, star, cube, sphere3, ...)", exampleCommand},
       {"export", "write cut files (SVG, DXF), a printable tiled PDF and statistics for a pattern", exportCommand},
@@ -65,6 +69,34 @@ double peakResidentBytes() {
   rusage usage{};
   getrusage(RUSAGE_SELF, &usage);
   return static_cast<double>(usage.ru_maxrss) * 1024.0;  // Linux reports kilobytes
+}
+
+std::string executableDir() {
+  char buf[PATH_MAX];
+  const ssize_t n = readlink("/proc/self/exe", buf, sizeof buf - 1);
+  if (n <= 0) return "";
+  const std::string exe(buf, static_cast<size_t>(n));
+  return exe.substr(0, exe.find_last_of('/'));
+}
+
+std::unique_ptr<DesignScene> openDesignScene(const std::string& path, bool quiet) {
+  auto scene = loadDesignScene(path, exampleSearchPath(executableDir()));
+  if (!quiet)
+    std::fprintf(stderr, "%s: target of %d triangles scaled by %.4g to meters, %zu seams -> %zu segments (%.0f ms)\n",
+                 path.c_str(), scene->target.numTriangles(), scene->scale, scene->curves.size(),
+                 scene->segmentation.segments.size(), scene->loadMs + scene->seamsMs + scene->segmentMs);
+  return scene;
+}
+
+void writeTextFile(const std::string& path, const std::string& text) {
+  std::ofstream f(path, std::ios::binary);
+  f << text;
+  if (!f) throw Error("io.cannot-write", "cannot write " + path);
+}
+
+void printProblems(const std::vector<SegmentationProblem>& problems) {
+  for (const SegmentationProblem& p : problems)
+    std::fprintf(stderr, "  %s: %s\n", p.severity.c_str(), p.message.c_str());
 }
 
 Args parseArgs(const std::vector<std::string>& args, const std::vector<std::string>& flagsWithValue) {

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "pattern/design_scene.hpp"
 #include "simulate/sewn_pattern.hpp"
 
 namespace billow::cli {
@@ -32,6 +33,15 @@ double numberOption(const Args& args, const std::string& name, double fallback, 
 double memoryBudgetOption(const Args& args);
 // The most memory this process has held so far (peak resident set), in bytes.
 double peakResidentBytes();
+
+// The folder of the billow executable (examples are looked up beside the build; io/design_json.hpp).
+std::string executableDir();
+// A design file made into its scene (pattern/design_scene.hpp loadDesignScene, examples beside the build), with
+// a line on stderr unless quiet.
+std::unique_ptr<DesignScene> openDesignScene(const std::string& path, bool quiet);
+void writeTextFile(const std::string& path, const std::string& text);
+// Segmentation and pattern problems on stderr, one a line ("  error: ...").
+void printProblems(const std::vector<SegmentationProblem>& problems);
 
 int checkCommand(const std::vector<std::string>& args);
 int inflateCommand(const std::vector<std::string>& args);

@@ -16,6 +16,12 @@ using nlohmann::json;
 
 constexpr long long kMaxVertices = 5'000'000, kMaxSeams = 10'000, kMaxPoints = 100'000;
 
+// A value as JSON for a message, cut short: a document may hold a long list where one number was expected.
+std::string shortDump(const json& v) {
+  std::string text = v.dump();
+  return text.size() > 60 ? text.substr(0, 57) + "..." : text;
+}
+
 // Reads fields with validation: a bad field throws (strict) or warns and keeps the default.
 class FieldReader {
  public:
@@ -28,22 +34,27 @@ class FieldReader {
     return false;
   }
 
-  double number(const json& obj, const char* key, double fallback, double lo, double hi, const std::string& field,
-                const std::string& what) {
-    if (!obj.contains(key)) return fallback;
-    const json& v = obj[key];
+  // A number from lo to hi; `range` says so in the designer's units ("between 1 Pa and 10 MPa").
+  double number(const json& v, double fallback, double lo, double hi, const std::string& field, const std::string& what,
+                const std::string& range = "") {
     if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() < lo || v.get<double>() > hi) {
-      bad(field,
-          what + " (" + field + ") must be a number from " + fmt(lo) + " to " + fmt(hi) + ", not " + v.dump() + ".");
+      bad(field, what + " (" + field + ") must be " +
+                     (range.empty() ? "a number from " + fmt(lo) + " to " + fmt(hi) : range) + ", not " + shortDump(v) +
+                     ".");
       return fallback;
     }
     return v.get<double>();
   }
 
-  bool boolean(const json& obj, const char* key, bool fallback, const std::string& field) {
+  double number(const json& obj, const char* key, double fallback, double lo, double hi, const std::string& field,
+                const std::string& what, const std::string& range = "") {
+    return obj.contains(key) ? number(obj[key], fallback, lo, hi, field, what, range) : fallback;
+  }
+
+  bool boolean(const json& obj, const char* key, bool fallback, const std::string& field, const std::string& what) {
     if (!obj.contains(key)) return fallback;
     if (!obj[key].is_boolean()) {
-      bad(field, field + " must be true or false, not " + obj[key].dump() + ".");
+      bad(field, what + " (" + field + ") must be true or false, not " + shortDump(obj[key]) + ".");
       return fallback;
     }
     return obj[key].get<bool>();
@@ -60,6 +71,11 @@ class FieldReader {
   std::vector<DesignWarning>* warnings_;
 };
 
+std::string capitalized(std::string s) {
+  if (!s.empty() && s[0] >= 'a' && s[0] <= 'z') s[0] = static_cast<char>(s[0] - 'a' + 'A');
+  return s;
+}
+
 bool finiteTriple(const json& p) {
   if (!p.is_array() || p.size() != 3) return false;
   for (const auto& x : p)
@@ -67,54 +83,82 @@ bool finiteTriple(const json& p) {
   return true;
 }
 
-bool readPoint(FieldReader& r, const json& p, const std::string& field, DesignPoint& out) {
+// what: "point 2 of seam 1", for messages.
+bool readPoint(FieldReader& r, const json& p, const std::string& field, const std::string& what, DesignPoint& out) {
+  const std::string at = capitalized(what) + " (" + field + ")";
   if (finiteTriple(p)) {
     out.onSurface = false;
     out.position = Eigen::Vector3d(p[0].get<double>(), p[1].get<double>(), p[2].get<double>());
     return true;
   }
   if (!p.is_object() || !p.contains("face") || !p.contains("bary"))
-    return r.bad(field, "A seam point (" + field + ") must be a surface point {face, bary} or a 3D point [x, y, z].");
-  if (!p["face"].is_number_integer() || p["face"].get<long long>() < 0)
-    return r.bad(field, "A seam point (" + field + ") names no triangle of the target: " + p["face"].dump() + ".");
-  if (!finiteTriple(p["bary"]))
-    return r.bad(field, "A seam point (" + field + ") needs three barycentric coordinates.");
+    return r.bad(field, at + " must be a surface point {face, bary} or a 3D point [x, y, z].");
+  const json& face = p["face"];
+  if (!face.is_number_integer() || face.get<double>() < 0 || face.get<double>() > 2147483647.0)
+    return r.bad(field, at + " names no triangle of the target: " + shortDump(face) + ".");
+  if (!finiteTriple(p["bary"])) return r.bad(field, at + " needs three barycentric coordinates.");
   Eigen::Vector3d b(p["bary"][0].get<double>(), p["bary"][1].get<double>(), p["bary"][2].get<double>());
   if (b.minCoeff() < -1e-6 || std::abs(b.sum() - 1) > 1e-3)
-    return r.bad(field, "A seam point (" + field +
-                            ") lies outside its triangle: its coordinates must be at least 0 "
-                            "and sum to 1.");
+    return r.bad(field,
+                 at + " lies outside its triangle: its barycentric coordinates must be at least 0 and sum to 1, not " +
+                     shortDump(p["bary"]) + ".");
   b = b.cwiseMax(0.0);
   out.onSurface = true;
-  out.surface.face = static_cast<int>(p["face"].get<long long>());
+  out.surface.face = static_cast<int>(face.get<long long>());
   out.surface.bary = b / b.sum();
   return true;
 }
 
-bool readSeam(FieldReader& r, const json& s, const std::string& field, DesignSeam& out) {
-  if (!s.is_object()) return r.bad(field, "A seam (" + field + ") must be an object with a list of points.");
+bool readSeam(FieldReader& r, const json& s, int index, DesignSeam& out) {
+  const std::string field = index >= 0 ? "seams[" + std::to_string(index) + "]" : "seam";
+  if (!s.is_object())
+    return r.bad(field,
+                 capitalized(seamLabel(index, "")) + " (" + field + ") must be an object with a list of points.");
   if (s.contains("name")) {
     if (s["name"].is_string())
       out.name = s["name"].get<std::string>();
     else
-      r.bad(field + ".name", "A seam's name (" + field + ".name) must be text.");
+      r.bad(field + ".name", "The name of " + seamLabel(index, "") + " (" + field + ".name) must be text, not " +
+                                 shortDump(s["name"]) + ".");
   }
-  out.closed = r.boolean(s, "closed", false, field + ".closed");
-  out.smooth = r.boolean(s, "smooth", false, field + ".smooth");
-  out.weight = r.number(s, "weight", 1.0, 0.0, 1e6, field + ".weight", "A seam's weight");
+  const std::string label = seamLabel(index, out.name);
+  out.closed = r.boolean(s, "closed", false, field + ".closed", "Whether " + label + " is closed");
+  out.smooth = r.boolean(s, "smooth", false, field + ".smooth", "Whether " + label + " is smooth");
+  out.weight =
+      r.number(s, "weight", 1.0, 0.0, 1e6, field + ".weight", "The weight of " + label, "a number from 0 to 1000000");
   if (!s.contains("points") || !s["points"].is_array())
-    return r.bad(field + ".points", "A seam (" + field + ") has no list of points.");
+    return r.bad(field + ".points", capitalized(label) + " (" + field + ") has no list of points.");
   if (static_cast<long long>(s["points"].size()) > kMaxPoints)
-    throw Error("design.too-large", "A seam (" + field + ") has more than 100,000 points.");
+    throw Error("design.too-large", capitalized(label) + " (" + field + ") has more than 100,000 points.");
   for (size_t i = 0; i < s["points"].size(); ++i) {
     DesignPoint p;
-    if (!readPoint(r, s["points"][i], field + ".points[" + std::to_string(i) + "]", p)) return false;
+    if (!readPoint(r, s["points"][i], field + ".points[" + std::to_string(i) + "]",
+                   "point " + std::to_string(i + 1) + " of " + label, p))
+      return false;
     out.points.push_back(p);
   }
   const size_t least = out.closed ? 3 : 2;
   if (out.points.size() < least)
-    return r.bad(field + ".points", "A" + std::string(out.closed ? " closed" : "n open") + " seam (" + field +
-                                        ") needs at least " + std::to_string(least) + " points.");
+    return r.bad(field + ".points", capitalized(label) + " (" + field + ") is " + (out.closed ? "closed" : "open") +
+                                        " and needs at least " + std::to_string(least) + " points, not " +
+                                        std::to_string(out.points.size()) + ".");
+  return true;
+}
+
+bool readConnection(FieldReader& r, const json& c, size_t i, size_t seamCount, DesignConnection& out) {
+  const std::string field = "connections[" + std::to_string(i) + "]";
+  const std::string at = "Internal connection " + std::to_string(i + 1) + " (" + field + ")";
+  const json& pair = c.is_object() && c.contains("seams") ? c["seams"] : c;
+  if (!pair.is_array() || pair.size() != 2 || !pair[0].is_number_integer() || !pair[1].is_number_integer())
+    return r.bad(field,
+                 at + " must join two of the design's seams: {\"seams\": [i, j]} or [i, j], not " + shortDump(c) + ".");
+  for (const json& s : pair)
+    if (s.get<double>() < 0 || s.get<double>() >= static_cast<double>(seamCount))
+      return r.bad(field, at + " joins seam " + s.dump() + " (counted from 0), but the design has " +
+                              (seamCount ? "only " + std::to_string(seamCount) + " seam" + (seamCount > 1 ? "s" : "")
+                                         : std::string("no seams")) +
+                              ".");
+  out.seams = {pair[0].get<int>(), pair[1].get<int>()};
   return true;
 }
 
@@ -175,20 +219,22 @@ bool readTarget(FieldReader& r, const json& t, DesignTarget& out) {
 
 void readMaterial(FieldReader& r, const json& m, Material& out) {
   if (!m.is_object()) {
-    r.bad("material", "The material must be an object with a thickness and a Young's modulus.");
+    r.bad("material", "The material (material) must be an object with a thickness and a Young's modulus, not " +
+                          shortDump(m) + ".");
     return;
   }
   if (m.contains("name")) {
     if (m["name"].is_string())
       out = namedMaterial(m["name"].get<std::string>(), out);
     else
-      r.bad("material.name", "The material's name must be text.");
+      r.bad("material.name", "The material's name (material.name) must be text, not " + shortDump(m["name"]) + ".");
   }
   out.thickness = r.number(m, "thickness", out.thickness, kMinThickness, kMaxThickness, "material.thickness",
-                           "The sheet thickness [m]");
+                           "The sheet thickness", "between 0.1 µm and 1 cm");
   out.youngsModulus = r.number(m, "youngs_modulus", out.youngsModulus, kMinYoungsModulus, kMaxYoungsModulus,
-                               "material.youngs_modulus", "Young's modulus [Pa]");
-  out.density = r.number(m, "density", out.density, 0, 1e5, "material.density", "The density [kg/m^3]");
+                               "material.youngs_modulus", "The material's Young's modulus", "between 1 kPa and 10 TPa");
+  out.density =
+      r.number(m, "density", out.density, 0, 1e5, "material.density", "The density", "between 0 and 100000 kg/m³");
 }
 
 void readSize(FieldReader& r, const json& s, Design& d) {
@@ -221,41 +267,70 @@ Design readDesignJson(std::string_view text, const DesignReadOptions& options, s
                                       "); this one reads version 1. Please update Billow.");
   if (doc.contains("target") && !readTarget(r, doc["target"], d.target)) d.target = DesignTarget{};
   if (doc.contains("size")) readSize(r, doc["size"], d);
-  if (doc.contains("seams")) {
-    if (!doc["seams"].is_array()) {
-      r.bad("seams", "The seams must be a list.");
-    } else {
-      if (static_cast<long long>(doc["seams"].size()) > kMaxSeams)
-        throw Error("design.too-large", "The design has more than 10,000 seams.");
-      for (size_t i = 0; i < doc["seams"].size(); ++i) {
-        DesignSeam s;
-        if (readSeam(r, doc["seams"][i], "seams[" + std::to_string(i) + "]", s)) d.seams.push_back(std::move(s));
-      }
-    }
-  }
-  if (doc.contains("connections")) {
-    const json& c = doc["connections"];
-    for (size_t i = 0; c.is_array() && i < c.size(); ++i) {
-      const std::string field = "connections[" + std::to_string(i) + "]";
-      DesignConnection conn;
-      bool good = c[i].is_object() && c[i].contains("seams") && c[i]["seams"].is_array() && c[i]["seams"].size() == 2;
-      for (size_t k = 0; good && k < 2; ++k) {
-        const json& s = c[i]["seams"][k];
-        good = s.is_number_integer() && s.get<long long>() >= 0 && s.get<long long>() < (long long)d.seams.size();
-        if (good) conn.seams.push_back(s.get<int>());
-      }
-      if (good)
-        d.connections.push_back(conn);
-      else
-        r.bad(field,
-              "An internal connection (" + field + ") must join two of the design's seams: {\"seams\": [i, j]}.");
-    }
-    if (!c.is_array()) r.bad("connections", "The internal connections must be a list.");
-  }
+  if (doc.contains("seams")) d.seams = readDesignSeams(doc["seams"], options, warnings);
+  if (doc.contains("connections"))
+    d.connections = readDesignConnections(doc["connections"], d.seams.size(), options, warnings);
   if (doc.contains("material")) readMaterial(r, doc["material"], d.material);
-  d.pressure = r.number(doc, "pressure", d.pressure, 1.0, 1e7, "pressure", "The pressure [Pa]");
+  if (doc.contains("pressure")) d.pressure = readDesignPressure(doc["pressure"], d.pressure, options, warnings);
   d.extra = std::move(doc);
   return d;
+}
+
+bool readDesignSeam(const json& value, int index, DesignSeam& out, const DesignReadOptions& options,
+                    std::vector<DesignWarning>* warnings) {
+  FieldReader r(options, warnings);
+  out = DesignSeam{};
+  return readSeam(r, value, index, out);
+}
+
+std::vector<DesignSeam> readDesignSeams(const json& list, const DesignReadOptions& options,
+                                        std::vector<DesignWarning>* warnings) {
+  FieldReader r(options, warnings);
+  std::vector<DesignSeam> seams;
+  if (!list.is_array()) {
+    r.bad("seams", "The seams (seams) must be a list.");
+    return seams;
+  }
+  if (static_cast<long long>(list.size()) > kMaxSeams)
+    throw Error("design.too-large", "The design has more than 10,000 seams.");
+  for (size_t i = 0; i < list.size(); ++i) {
+    DesignSeam s;
+    if (readSeam(r, list[i], static_cast<int>(i), s)) seams.push_back(std::move(s));
+  }
+  return seams;
+}
+
+std::vector<DesignConnection> readDesignConnections(const json& list, size_t seamCount,
+                                                    const DesignReadOptions& options,
+                                                    std::vector<DesignWarning>* warnings) {
+  FieldReader r(options, warnings);
+  std::vector<DesignConnection> out;
+  if (!list.is_array()) {
+    r.bad("connections",
+          "The internal connections (connections) must be a list of seam pairs, not " + shortDump(list) + ".");
+    return out;
+  }
+  if (static_cast<long long>(list.size()) > kMaxSeams)
+    throw Error("design.too-large", "The design has more than 10,000 internal connections.");
+  for (size_t i = 0; i < list.size(); ++i) {
+    DesignConnection c;
+    if (readConnection(r, list[i], i, seamCount, c)) out.push_back(c);
+  }
+  return out;
+}
+
+Material readDesignMaterial(const json& value, const Material& base, const DesignReadOptions& options,
+                            std::vector<DesignWarning>* warnings) {
+  FieldReader r(options, warnings);
+  Material m = base;
+  readMaterial(r, value, m);
+  return m;
+}
+
+double readDesignPressure(const json& value, double fallback, const DesignReadOptions& options,
+                          std::vector<DesignWarning>* warnings) {
+  FieldReader r(options, warnings);
+  return r.number(value, fallback, 1.0, 1e7, "pressure", "The pressure", "between 1 Pa and 10 MPa");
 }
 
 std::string writeDesignJson(const Design& d, int indent) {
@@ -360,27 +435,61 @@ double designScale(const Design& d, const TriMesh& target) {
   return d.height / extent;
 }
 
+std::string seamLabel(int index, const std::string& name) {
+  const std::string quoted = name.empty() ? "" : " \"" + name + "\"";
+  return index >= 0 ? "seam " + std::to_string(index + 1) + quoted : "the seam" + quoted;
+}
+
+namespace {
+
+double diagonal(const TriMesh& target) {
+  if (target.numVertices() == 0) return 0;
+  return (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
+}
+
+SeamSpec placeSeam(const DesignSeam& s, int index, const TriMesh& target, const SurfaceProjector& projector,
+                   double scale, double size) {
+  SeamSpec spec;
+  spec.closed = s.closed, spec.weight = s.weight, spec.smooth = s.smooth;
+  const std::string label = capitalized(seamLabel(index, s.name));
+  for (size_t k = 0; k < s.points.size(); ++k) {
+    const DesignPoint& p = s.points[k];
+    const std::string point = "point " + std::to_string(k + 1);
+    if (!p.onSurface) {
+      double distance = 0;
+      spec.controls.push_back(projector.project(scale * p.position, &distance));
+      if (!(distance <= kMaxPointDistance * size)) {
+        char where[96];
+        std::snprintf(where, sizeof where, "[%g, %g, %g]", p.position.x(), p.position.y(), p.position.z());
+        throw Error("design.bad-value", label + ": " + point + " " + where + " lies " +
+                                            FieldReader::fmt(std::round(10 * distance / size) / 10) +
+                                            " times the target's size away from its surface; it was written for "
+                                            "another target or in other units.");
+      }
+      continue;
+    }
+    if (p.surface.face >= target.numTriangles())
+      throw Error("design.bad-value", label + ": " + point + " lies on triangle " + std::to_string(p.surface.face) +
+                                          ", but the target has only " + std::to_string(target.numTriangles()) +
+                                          " triangles: the design was made for another target.");
+    spec.controls.push_back(p.surface);
+  }
+  return spec;
+}
+
+}  // namespace
+
+SeamSpec designSeamSpec(const DesignSeam& seam, int index, const TriMesh& target, const SurfaceProjector& projector,
+                        double scale) {
+  return placeSeam(seam, index, target, projector, scale, diagonal(target));
+}
+
 std::vector<SeamSpec> designSeamSpecs(const Design& d, const TriMesh& target, const SurfaceProjector& projector,
                                       double scale) {
+  const double size = diagonal(target);
   std::vector<SeamSpec> specs;
-  for (size_t i = 0; i < d.seams.size(); ++i) {
-    const DesignSeam& s = d.seams[i];
-    SeamSpec spec;
-    spec.closed = s.closed, spec.weight = s.weight, spec.smooth = s.smooth;
-    for (const DesignPoint& p : s.points) {
-      if (!p.onSurface) {
-        spec.controls.push_back(projector.project(scale * p.position));
-        continue;
-      }
-      if (p.surface.face >= target.numTriangles())
-        throw Error("design.bad-value", "Seam " + std::to_string(i + 1) + (s.name.empty() ? "" : " (" + s.name + ")") +
-                                            " has a point on triangle " + std::to_string(p.surface.face) +
-                                            ", but the target has only " + std::to_string(target.numTriangles()) +
-                                            " triangles: the design was made for another target.");
-      spec.controls.push_back(p.surface);
-    }
-    specs.push_back(std::move(spec));
-  }
+  for (size_t i = 0; i < d.seams.size(); ++i)
+    specs.push_back(placeSeam(d.seams[i], static_cast<int>(i), target, projector, scale, size));
   return specs;
 }
 

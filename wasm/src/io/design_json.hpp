@@ -7,7 +7,7 @@
 //     "size": { "height": 0.6 } | { "scale": 0.01 },
 //     "seams": [ { "name": "belly", "closed": true, "weight": 1.0, "smooth": false,
 //                  "points": [ { "face": 812, "bary": [0.2, 0.3, 0.5] }, [0.01, 0.12, -0.03] ] } ],
-//     "connections": [ { "seams": [0, 3] } ],
+//     "connections": [ { "seams": [0, 3] } ] or [ [0, 3] ],
 //     "material": { "name": "foil", "thickness": 2.5e-5, "youngs_modulus": 3.0e9 },
 //     "pressure": 1000.0 }
 // The height is meters along the target's up axis (its own y unless target.up names another); 3D seam points
@@ -78,6 +78,32 @@ struct DesignReadOptions {
 // reader), design.bad-value (strict), design.too-large.
 Design readDesignJson(std::string_view text, const DesignReadOptions& options = {},
                       std::vector<DesignWarning>* warnings = nullptr);
+
+// The parts of a design, read by the same rules as readDesignJson's: the app's worker
+// (wasm/bindings/target_bindings.cpp) reads the seams, connections, material and pressure it is sent through
+// these, so the CLI and the app accept and refuse the same designs. Messages name the document's field
+// ("seams[2].weight") and the seam as the designer sees it ("seam 3 \"belly\""). A bad value throws
+// design.bad-value (strict) or falls back with a warning.
+
+// One seam: `index` is its place in the design's seams (-1: a seam on its own, as the app traces one). False
+// when it is bad and not strict (it is then dropped).
+bool readDesignSeam(const nlohmann::json& value, int index, DesignSeam& out, const DesignReadOptions& options = {},
+                    std::vector<DesignWarning>* warnings = nullptr);
+// The seams list; a bad seam is dropped when not strict. Throws design.too-large past 10,000 seams.
+std::vector<DesignSeam> readDesignSeams(const nlohmann::json& list, const DesignReadOptions& options = {},
+                                        std::vector<DesignWarning>* warnings = nullptr);
+// Internal connections, [{ "seams": [i, j] }, ...] or [[i, j], ...], i and j indices of the design's seams
+// (seamCount of them); a bad one is dropped when not strict. A seam joined to itself is read: the pattern
+// builder reports it as a problem of that connection.
+std::vector<DesignConnection> readDesignConnections(const nlohmann::json& list, size_t seamCount,
+                                                    const DesignReadOptions& options = {},
+                                                    std::vector<DesignWarning>* warnings = nullptr);
+// The sheet: a preset's name stands for its figures, figures given beside it override them; over `base`.
+Material readDesignMaterial(const nlohmann::json& value, const Material& base = {},
+                            const DesignReadOptions& options = {}, std::vector<DesignWarning>* warnings = nullptr);
+// The over-pressure [Pa], 1 Pa to 10 MPa; `fallback` when not strict and bad.
+double readDesignPressure(const nlohmann::json& value, double fallback = 1000.0, const DesignReadOptions& options = {},
+                          std::vector<DesignWarning>* warnings = nullptr);
 std::string writeDesignJson(const Design& design, int indent = 2);
 
 // Folders searched for `{ "example": id }` targets (<dir>/<id>.obj): $BILLOW_EXAMPLES (':'-separated), then
@@ -93,10 +119,20 @@ TriMesh loadDesignTarget(const Design& design, const std::string& designPath,
 // scale (web/src/app/up-axis.js heightScale) has the same rule.
 double designScale(const Design& design, const TriMesh& targetOwnUnits);
 
-// The seams as SeamSpec on `target` (any uniform scale of the target the points were written for:
-// 3D points are multiplied by `scale` before projection). Throws design.bad-value for a face index the
-// target does not have.
+// One seam's control points on `target` (any uniform scale of the target the points were written for: 3D
+// points are multiplied by `scale` before projection); `index` as readDesignSeam's. Throws design.bad-value
+// for a face the target does not have, and for a 3D point farther from the surface than the target's size
+// (kMaxPointDistance x its bounding-box diagonal): such a point was written for another target or in other
+// units, and projecting it would put the seam where the designer never drew it.
+SeamSpec designSeamSpec(const DesignSeam& seam, int index, const TriMesh& target, const SurfaceProjector& projector,
+                        double scale = 1.0);
+constexpr double kMaxPointDistance = 1.0;
+
+// The design's seams as SeamSpec on `target`, by designSeamSpec.
 std::vector<SeamSpec> designSeamSpecs(const Design& design, const TriMesh& target, const SurfaceProjector& projector,
                                       double scale = 1.0);
+
+// The seam as the designer sees it: "seam 3" or "seam 3 \"belly\"" (index -1: "the seam", "the seam \"belly\"").
+std::string seamLabel(int index, const std::string& name);
 
 }  // namespace billow

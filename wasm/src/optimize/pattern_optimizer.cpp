@@ -154,14 +154,7 @@ bool PatternOptimizer::projectStart() {
   return true;
 }
 
-std::vector<Vertices> PatternOptimizer::panelInflated() const {
-  std::vector<Vertices> inflated(pattern_.panels.size());
-  for (size_t p = 0; p < pattern_.panels.size(); ++p) {
-    inflated[p].resize(pattern_.panels[p].vertices.rows(), 3);
-    for (int v = 0; v < inflated[p].rows(); ++v) inflated[p].row(v) = x_.row(mesh_.simVertex(int(p), v));
-  }
-  return inflated;
-}
+std::vector<Vertices> PatternOptimizer::panelInflated() const { return panelPositions(mesh_, x_); }
 
 bool PatternOptimizer::remesh(double h) {
   const double t0 = nowMs();

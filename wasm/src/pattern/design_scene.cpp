@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "io/mesh_file.hpp"
 #include "mesh/validate.hpp"
 #include "util/error.hpp"
 
@@ -12,8 +13,8 @@ using Clock = std::chrono::steady_clock;
 double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 }  // namespace
 
-std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::string& designPath,
-                                             const std::vector<std::string>& exampleDirs) {
+std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const std::string& designPath,
+                                                   const std::vector<std::string>& exampleDirs) {
   auto scene = std::make_unique<DesignScene>();
   const auto t0 = Clock::now();
   scene->design = design;
@@ -35,16 +36,36 @@ std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::st
   scene->projector = std::make_unique<SurfaceProjector>(scene->target);
   scene->geodesic = std::make_unique<GeodesicSolver>(scene->target, scene->topology);
   scene->loadMs = msSince(t0);
+  return scene;
+}
+
+void traceDesignSeams(DesignScene& scene) {
   const auto t1 = Clock::now();
-  for (const SeamSpec& spec : designSeamSpecs(design, scene->target, *scene->projector, scene->scale))
-    scene->curves.push_back(buildSeamCurve(*scene->geodesic, *scene->projector, spec));
-  scene->seamsMs = msSince(t1);
+  scene.curves.clear();
+  for (const SeamSpec& spec : designSeamSpecs(scene.design, scene.target, *scene.projector, scene.scale))
+    scene.curves.push_back(buildSeamCurve(*scene.geodesic, *scene.projector, spec));
+  scene.seamsMs = msSince(t1);
+}
+
+void segmentDesignScene(DesignScene& scene) {
   const auto t2 = Clock::now();
   SegmentationOptions so;
-  so.up = design.target.up;  // the problems' places as the target stands
-  scene->segmentation = segmentTarget(scene->target, scene->topology, scene->curves, so);
-  scene->segmentMs = msSince(t2);
+  so.up = scene.design.target.up;  // the problems' places as the target stands
+  scene.segmentation = segmentTarget(scene.target, scene.topology, scene.curves, so);
+  scene.segmentMs = msSince(t2);
+}
+
+std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::string& designPath,
+                                             const std::vector<std::string>& exampleDirs) {
+  auto scene = loadDesignTargetScene(design, designPath, exampleDirs);
+  traceDesignSeams(*scene);
+  segmentDesignScene(*scene);
   return scene;
+}
+
+std::unique_ptr<DesignScene> loadDesignScene(const std::string& designPath,
+                                             const std::vector<std::string>& exampleDirs) {
+  return makeDesignScene(readDesignJson(readFileBytes(designPath)), designPath, exampleDirs);
 }
 
 void useDesignConnections(const Design& design, PatternBuildOptions& options) {
@@ -53,6 +74,25 @@ void useDesignConnections(const Design& design, PatternBuildOptions& options) {
     if (c.seams.size() == 2) options.connections.push_back({c.seams[0], c.seams[1]});
   options.seamNames.clear();
   for (const DesignSeam& s : design.seams) options.seamNames.push_back(s.name);
+}
+
+PatternBuildOptions designBuildOptions(const Design& design, int triangles) {
+  PatternBuildOptions options;
+  options.triangles = triangles;
+  options.material = design.material;
+  options.pressure = design.pressure;
+  useDesignConnections(design, options);
+  return options;
+}
+
+BuiltPattern buildDesignPattern(const DesignScene& scene, int triangles) {
+  return buildPattern(scene.target, scene.segmentation, designBuildOptions(scene.design, triangles));
+}
+
+std::vector<double> designSeamWeights(const Design& design) {
+  std::vector<double> weights;
+  for (const DesignSeam& s : design.seams) weights.push_back(s.weight);
+  return weights;
 }
 
 }  // namespace billow

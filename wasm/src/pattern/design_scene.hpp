@@ -29,7 +29,30 @@ struct DesignScene {
 std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::string& designPath,
                                              const std::vector<std::string>& exampleDirs);
 
+// makeDesignScene's phases. The target: loaded, checked and scaled, with its topology, projector and geodesic
+// solver (no curves, no segmentation yet).
+std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const std::string& designPath,
+                                                   const std::vector<std::string>& exampleDirs);
+// The seams placed on it (designSeamSpecs: triangles it has, 3D points near it) and traced.
+void traceDesignSeams(DesignScene& scene);
+// The target cut along them.
+void segmentDesignScene(DesignScene& scene);
+
+// A design file read strictly (readDesignJson) and made into its scene: where the CLI and the design bench start.
+std::unique_ptr<DesignScene> loadDesignScene(const std::string& designPath,
+                                             const std::vector<std::string>& exampleDirs);
+
 // The design's internal connections and seam names (for problems and panel names) as build options.
 void useDesignConnections(const Design& design, PatternBuildOptions& options);
+
+// The options the design's panels are built with at a resolution of `triangles`: its material, pressure,
+// internal connections and seam names.
+PatternBuildOptions designBuildOptions(const Design& design, int triangles);
+
+// The design's flattened panels (buildPattern with designBuildOptions), what the optimizer starts from.
+BuiltPattern buildDesignPattern(const DesignScene& scene, int triangles);
+
+// sigma_s of each seam (Eq. 10), as PatternOptimizer takes them.
+std::vector<double> designSeamWeights(const Design& design);
 
 }  // namespace billow

@@ -206,6 +206,16 @@ Triangles outerTriangles(const SewnMesh& mesh) {
   return out;
 }
 
+std::vector<Vertices> panelPositions(const SewnMesh& mesh, const Vertices& x) {
+  const int panels = static_cast<int>(mesh.panelVertexStart.size()) - 1;
+  std::vector<Vertices> out(std::max(panels, 0));
+  for (int p = 0; p < panels; ++p) {
+    out[p].resize(mesh.panelVertexStart[p + 1] - mesh.panelVertexStart[p], 3);
+    for (int v = 0; v < out[p].rows(); ++v) out[p].row(v) = x.row(mesh.simVertex(p, v));
+  }
+  return out;
+}
+
 std::vector<int> outlineVertices(const Panel& panel) {
   std::vector<char> on(panel.vertices.rows(), 0);
   for (const auto& [key, edge] : boundaryEdges(panel)) on[key.first] = on[key.second] = 1;

@@ -83,4 +83,8 @@ long long numTriangles(const Pattern& pattern);
 // Outer triangles only, as a closed mesh with merged vertices (for OBJ export and the volume).
 Triangles outerTriangles(const SewnMesh& mesh);
 
+// Per panel, the positions x (#V by 3, one row per simulation vertex) of its vertices (#v by 3 each): a sewn
+// shape as a pattern's "inflated" (stitched copies get the same row).
+std::vector<Vertices> panelPositions(const SewnMesh& mesh, const Vertices& x);
+
 }  // namespace billow

@@ -88,7 +88,8 @@ export function parseDesign(value) {
     design.size = { height: 0.6 };
   }
   design.seams = Array.isArray(value.seams) ? value.seams : [];
-  design.connections = Array.isArray(value.connections) ? value.connections : [];
+  // The pair form [i, j] of an internal connection, which the CLI reads too, as the form the app writes.
+  design.connections = Array.isArray(value.connections) ? value.connections.map((c) => (Array.isArray(c) ? { seams: c } : c)) : [];
   design.material = parseMaterial(value.material, warnings);
   if (inRange(value.pressure, MIN_PRESSURE, MAX_PRESSURE)) design.pressure = value.pressure;
   else {
