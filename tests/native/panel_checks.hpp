@@ -7,7 +7,7 @@
 #include <set>
 #include <string>
 
-#include "simulate/sewn_pattern.hpp"
+#include "pattern/pattern.hpp"
 
 namespace billow::test {
 

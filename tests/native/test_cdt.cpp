@@ -15,7 +15,6 @@
 #include "remesh/refine.hpp"
 
 using namespace billow;
-using namespace billow::remesh;
 using Eigen::Vector2d;
 
 namespace {

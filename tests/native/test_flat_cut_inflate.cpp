@@ -77,15 +77,15 @@ TEST(FlatCutExamples, SharpTipsAreMeshedWithoutAnEdgeAcross) {
   // The mesher splits every inside edge between two outline points: at a star's tip one would be shared by the
   // front's and the back's tip triangles, four triangles on one sewn edge (the pattern would not sew).
   const double r = 0.15;
-  remesh::Points2 star(10, 2);
+  Points2 star(10, 2);
   std::vector<int> corners;
   for (int k = 0; k < 10; ++k) {
     const double a = M_PI / 2 + M_PI * k / 5, rk = k % 2 ? 0.3 * r : r;
     star.row(k) << rk * std::cos(a), rk * std::sin(a);
     corners.push_back(k);
   }
-  const remesh::ResampledBoundary boundary = remesh::resampleBoundary(star, corners, 0.01);
-  const TriMesh m = remesh::meshPanel(boundary.points, 0.01);
+  const ResampledBoundary boundary = resampleBoundary(star, corners, 0.01);
+  const TriMesh m = meshPanel(boundary.points, 0.01);
   const int outline = int(boundary.points.rows());
   std::map<std::pair<int, int>, int> edges;
   for (int t = 0; t < m.F.rows(); ++t)

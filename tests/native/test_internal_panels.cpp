@@ -165,8 +165,8 @@ TEST(InternalPanels, ConnectionBetweenTwoMeridiansAddsAnInternalPanelSewnOnBothS
   std::map<int, int> sizes;
   for (int c : sewn.stitchedCount) ++sizes[c];
   EXPECT_EQ(sizes[4], 2);  // the poles
-  EXPECT_GT(pattern::windingNumber(scene->target, Eigen::Vector3d::Zero()), 0.99);
-  EXPECT_LT(std::abs(pattern::windingNumber(scene->target, Eigen::Vector3d(0.3, 0, 0))), 0.01);
+  EXPECT_GT(windingNumber(scene->target, Eigen::Vector3d::Zero()), 0.99);
+  EXPECT_LT(std::abs(windingNumber(scene->target, Eigen::Vector3d(0.3, 0, 0))), 0.01);
   std::printf(
       "[figures] sphere gores + connection: %d panels (%d internal), %d triangles (internal %d), build %.1f ms\n",
       bp.figures.panels, bp.figures.internalPanels, bp.figures.triangles, static_cast<int>(internal.triangles.rows()),

@@ -13,7 +13,6 @@
 #include "util/error.hpp"
 
 using namespace billow;
-using namespace billow::remesh;
 using Eigen::Vector2d;
 
 namespace {

@@ -216,17 +216,17 @@ TEST(PatternBuild, PanelsThatOverlapOrAreSewnToThemselvesAreProblemsWithAPlace) 
   const Segmentation& seg = scene->segmentation;
   // A flattened outline that runs into itself (two of its points swapped across the disc): the mesher's
   // refusal becomes an instruction placed where the outline first meets itself.
-  pattern::FlatSegment fs = pattern::flattenForPattern(seg, analyzeSeams(seg), 0);
+  FlatSegment fs = flattenForPattern(seg, analyzeSeams(seg), 0);
   const std::vector<int>& loop = fs.flat.boundary;
   const int n = static_cast<int>(loop.size());
   ASSERT_GT(n, 20);
   fs.flat.uv.row(loop[n / 4]).swap(fs.flat.uv.row(loop[3 * n / 4]));
-  remesh::Points2 polygon(n, 2);
+  Points2 polygon(n, 2);
   for (int i = 0; i < n; ++i) polygon.row(i) = fs.flat.uv.row(loop[i]);
-  const int crossing = remesh::outlineCrossing(polygon);
+  const int crossing = outlineCrossing(polygon);
   ASSERT_GE(crossing, 0);
   const SegmentationProblem overlap =
-      pattern::meshProblem(seg, fs, Error("panel.self-intersecting", "The panel outline crosses itself."));
+      meshProblem(seg, fs, Error("panel.self-intersecting", "The panel outline crosses itself."));
   EXPECT_EQ(overlap.code, "pattern.overlaps");
   EXPECT_EQ(overlap.severity, "error");
   EXPECT_EQ(overlap.segment, 0);
@@ -235,7 +235,7 @@ TEST(PatternBuild, PanelsThatOverlapOrAreSewnToThemselvesAreProblemsWithAPlace) 
       << overlap.message;
   EXPECT_NE(overlap.message.find("a seam across it there"), std::string::npos) << overlap.message;
   // Any other refusal keeps the mesher's words, placed on the segment.
-  const SegmentationProblem other = pattern::meshProblem(seg, fs, Error("panel.bad-input", "Too few points."));
+  const SegmentationProblem other = meshProblem(seg, fs, Error("panel.bad-input", "Too few points."));
   EXPECT_EQ(other.code, "pattern.mesh-failed");
   EXPECT_EQ(other.location, seg.segments[0].labelPoint);
 

@@ -7,7 +7,7 @@
 
 #include "remesh/predicates.hpp"
 
-using namespace billow::remesh;
+using namespace billow;
 using Eigen::Vector2d;
 
 namespace {

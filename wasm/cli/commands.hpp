@@ -3,7 +3,7 @@
 #include <vector>
 
 #include "pattern/design_scene.hpp"
-#include "simulate/sewn_pattern.hpp"
+#include "pattern/pattern.hpp"
 
 namespace billow::cli {
 

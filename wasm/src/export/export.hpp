@@ -7,7 +7,7 @@
 #include "export/export_options.hpp"
 #include "export/outline.hpp"
 #include "export/polygon.hpp"
-#include "simulate/sewn_pattern.hpp"
+#include "pattern/pattern.hpp"
 
 namespace billow {
 

@@ -7,7 +7,7 @@
 #include <vector>
 
 #include "export/polygon.hpp"
-#include "simulate/sewn_pattern.hpp"
+#include "pattern/pattern.hpp"
 
 namespace billow {
 

@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "mesh/up_axis.hpp"
+#include "pattern/pattern.hpp"
 #include "seams/seam_curve.hpp"
-#include "simulate/sewn_pattern.hpp"
 
 namespace billow {
 

@@ -12,7 +12,7 @@
 #include <Eigen/SparseCholesky>
 #include <vector>
 
-#include "simulate/sewn_pattern.hpp"
+#include "pattern/pattern.hpp"
 
 namespace billow {
 

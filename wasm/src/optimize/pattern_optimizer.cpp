@@ -249,7 +249,7 @@ bool PatternOptimizer::outlinesSimple(const Eigen::VectorXd& X) const {
     const int nb = boundaryVertices_[p], first = mesh_.panelVertexStart[p];
     Points2 Q(nb, 2);
     for (int j = 0; j < nb; ++j) Q.row(j) = X.segment<2>(2 * (first + j)).transpose();
-    if (remesh::signedArea(Q) < 0) Q = Points2(Q.colwise().reverse());
+    if (signedArea(Q) < 0) Q = Points2(Q.colwise().reverse());
     if (!isSimpleCcwPolygon(Q)) return false;
   }
   return true;

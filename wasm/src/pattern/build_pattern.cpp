@@ -76,7 +76,7 @@ std::string notDiskMessage(const Segment& s, int index) {
 
 // The pieces on both sides of a seam: (flat segment, piece) -> its partner, found by the reverse of its last edge.
 using PieceId = std::pair<int, int>;
-std::map<PieceId, PieceId> pairPieces(const std::vector<pattern::FlatSegment>& flats) {
+std::map<PieceId, PieceId> pairPieces(const std::vector<FlatSegment>& flats) {
   std::unordered_map<std::uint64_t, PieceId> byFirstEdge;
   for (int f = 0; f < static_cast<int>(flats.size()); ++f)
     for (int k = 0; k < static_cast<int>(flats[f].pieces.size()); ++k) {
@@ -96,8 +96,7 @@ std::map<PieceId, PieceId> pairPieces(const std::vector<pattern::FlatSegment>& f
 
 // N per piece, equal on both sides (Sec. 5.3: matching vertices on both panels of a seam). A panel with one
 // piece needs 3 segments, with two pieces 2 each, to stay a polygon.
-void chooseSegmentCounts(std::vector<pattern::FlatSegment>& flats, const std::map<PieceId, PieceId>& partner,
-                         double h) {
+void chooseSegmentCounts(std::vector<FlatSegment>& flats, const std::map<PieceId, PieceId>& partner, double h) {
   const auto least = [&](int f) {
     const size_t n = flats[f].pieces.size();
     return n == 1 ? 3 : n == 2 ? 2 : 1;
@@ -106,7 +105,7 @@ void chooseSegmentCounts(std::vector<pattern::FlatSegment>& flats, const std::ma
   for (int f = 0; f < static_cast<int>(flats.size()); ++f)
     for (int k = 0; k < static_cast<int>(flats[f].pieces.size()); ++k) {
       if (flats[f].segments[k] > 0) continue;
-      int n = std::max(remesh::segmentCountFor(flats[f].pieces[k].length, h), least(f));
+      int n = std::max(segmentCountFor(flats[f].pieces[k].length, h), least(f));
       const auto it = partner.find({f, k});
       if (it != partner.end()) {
         n = std::max(n, least(it->second.first));
@@ -180,14 +179,14 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
   const SeamGraph graph = analyzeSeams(seg);
 
   // 1. Flatten every disk segment (Sec. 5.2).
-  std::vector<pattern::FlatSegment> flats;
+  std::vector<FlatSegment> flats;
   for (int s = 0; s < static_cast<int>(seg.segments.size()); ++s) {
     if (!seg.segments[s].isDisk) {
       addProblem(out, seg, s, "pattern.not-disk", "error", notDiskMessage(seg.segments[s], s));
       continue;
     }
     try {
-      flats.push_back(pattern::flattenForPattern(seg, graph, s));
+      flats.push_back(flattenForPattern(seg, graph, s));
       if (flats.back().flat.flippedTriangles > 0)
         addProblem(out, seg, s, "pattern.flipped", "warning",
                    "Segment " + std::to_string(s + 1) + " folds over itself when laid flat (" +
@@ -214,9 +213,9 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
     Panel panel;
     BuiltPanel built;
     try {
-      pattern::meshFlatSegment(target, seg, flats[f], h, panel, built);
+      meshFlatSegment(target, seg, flats[f], h, panel, built);
     } catch (const Error& e) {
-      out.problems.push_back(pattern::meshProblem(seg, flats[f], e));
+      out.problems.push_back(meshProblem(seg, flats[f], e));
       continue;
     }
     flatPanel[f] = static_cast<int>(out.panels.size());
@@ -244,7 +243,7 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
   }
 
   // 3b. Internal panels, sewn onto the outer panels' seam samples (stitched with them below).
-  pattern::addInternalPanels(target, seg, options, h, out);
+  addInternalPanels(target, seg, options, h, out);
   out.figures.meshMs = msSince(t1);
 
   // 4. Stitches (of the outer and the internal panels).

@@ -5,7 +5,7 @@
 //      segment); each piece is shared with exactly one piece of another panel (or of the same panel across a
 //      slit) and both are resampled by 2D arc length with the SAME number of segments,
 //      N = max(1, round(L / h)), L the piece's length on the target;
-//   3. the interior is meshed at edge length h (remesh::meshPanel);
+//   3. the interior is meshed at edge length h (meshPanel);
 //   4. sample k of a piece is stitched to sample N - k of its partner (the two run in opposite directions);
 //      corners shared by three or more panels are chained;
 //   5. every panel vertex gets its position on the target (barycentric location in the flattened segment,

@@ -11,7 +11,7 @@
 #include "util/error.hpp"
 #include "util/union_find.hpp"
 
-namespace billow::pattern {
+namespace billow {
 
 double windingNumber(const TriMesh& mesh, const Eigen::Vector3d& x) {
   double w = 0;  // sum of the solid angles of the triangles seen from x (Van Oosterom and Strackee)
@@ -228,7 +228,7 @@ struct Strip {
   std::vector<int> aVertex, bVertex;                 // sample -> strip vertex
   std::vector<std::array<int, 3>> triangle;          // counterclockwise in the layout: a below, b above, t to the right
   std::map<std::pair<int, int>, double> seamLength;  // seam edges: the outer panels' flattened length [m]
-  remesh::Points2 uv;                                // the unfolding [m]
+  Points2 uv;                                        // the unfolding [m]
 
   double length(int u, int v) const {
     const auto it = seamLength.find(std::minmax(u, v));
@@ -266,7 +266,7 @@ Strip zipStrip(const SeamChain& a, const SeamChain& b) {
 // Lays the strip flat triangle by triangle: each new vertex is placed from its two lengths to the shared edge,
 // on the counterclockwise side. No interior vertex, so no length changes.
 void unfold(Strip& s) {
-  s.uv = remesh::Points2::Zero(static_cast<Eigen::Index>(s.x.size()), 2);
+  s.uv = Points2::Zero(static_cast<Eigen::Index>(s.x.size()), 2);
   std::vector<char> placed(s.x.size(), 0);
   for (const auto& tri : s.triangle) {
     int unknown = 0, k = -1;
@@ -330,7 +330,7 @@ void buildInternalPanel(const TriMesh& target, const BuiltPattern& outer, const 
   std::vector<int> bRow(nb + 1, -1);
   for (int i = 0; i <= na; ++i) rows.push_back({s.aVertex[i], s.aVertex[i], 0, seamA});
   const auto ruling = [&](int u, int v) {
-    const int n = remesh::segmentCountFor((s.x[u] - s.x[v]).norm(), h);
+    const int n = segmentCountFor((s.x[u] - s.x[v]).norm(), h);
     for (int k = 1; k < n; ++k) rows.push_back({u, v, double(k) / n, -1});
   };
   if (!endMet) ruling(s.aVertex[na], s.bVertex[nb]);
@@ -367,10 +367,10 @@ void buildInternalPanel(const TriMesh& target, const BuiltPattern& outer, const 
   if (!startMet) addPiece(bRow[0], 0, -1, {}, (a.x[0] - b.x[0]).norm());
 
   // Mesh the outline at h; interior vertices are mapped back onto the strip.
-  remesh::Points2 outline(nrows, 2);
+  Points2 outline(nrows, 2);
   for (int r = 0; r < nrows; ++r)
     outline.row(r) = (1 - rows[r].f) * s.uv.row(rows[r].u) + rows[r].f * s.uv.row(rows[r].v);
-  const TriMesh mesh = remesh::meshPanel(outline, h);
+  const TriMesh mesh = meshPanel(outline, h);
   const int nv = mesh.numVertices();
   panel.vertices = mesh.V.leftCols<2>();
   panel.triangles = mesh.F;
@@ -409,9 +409,9 @@ void buildInternalPanel(const TriMesh& target, const BuiltPattern& outer, const 
     area3 += 0.5 * (s.x[tri[1]] - s.x[tri[0]]).cross(s.x[tri[2]] - s.x[tri[0]]).norm();
   }
   built.flattenAreaRatio = area3 > 0 ? area2 / area3 : 1;
-  const remesh::TriangleLocator locator(flat);
+  const TriangleLocator locator(flat);
   for (int r = nrows; r < nv; ++r) {
-    const remesh::BarycentricPoint bp = locator.locate(mesh.V.row(r).head<2>().transpose());
+    const BarycentricPoint bp = locator.locate(mesh.V.row(r).head<2>().transpose());
     Eigen::Vector3d x = Eigen::Vector3d::Zero();
     for (int k = 0; k < 3; ++k) x += bp.weights[k] * s.x[flat.F(bp.triangle, k)];
     built.targetPosition.row(r) = x.transpose();
@@ -489,4 +489,4 @@ void addInternalPanels(const TriMesh& target, const Segmentation& seg, const Pat
   }
 }
 
-}  // namespace billow::pattern
+}  // namespace billow

@@ -11,7 +11,7 @@
 //      keeping every edge length; the seam edges take the outer panels' flattened lengths, so stitched edges
 //      match;
 //   4. its outline (seam a, the end ruling, seam b backwards, the start ruling; rulings resampled at h, and a
-//      ruling of zero length where the two seams meet is one corner) is meshed at h (remesh::meshPanel) and
+//      ruling of zero length where the two seams meet is one corner) is meshed at h (meshPanel) and
 //      its interior vertices are mapped back onto the strip;
 //   5. the samples along a seam are pieces sewn to the outer piece there that runs the other way: a one-way
 //      partner (the outer pieces keep theirs), so stitching chains three panel vertices into one point.
@@ -20,7 +20,7 @@
 #pragma once
 #include "pattern/build_pattern.hpp"
 
-namespace billow::pattern {
+namespace billow {
 
 // Adds one internal panel per options.connections to `out`, whose panels so far are the outer panels with
 // their pieces paired (called before stitching). h: the pattern's edge length [m]. Fills out.connectionPanel.
@@ -32,4 +32,4 @@ void addInternalPanels(const TriMesh& target, const Segmentation& seg, const Pat
 // Generalized winding number of the closed, outward-oriented mesh around x: 1 inside, 0 outside.
 double windingNumber(const TriMesh& mesh, const Eigen::Vector3d& x);
 
-}  // namespace billow::pattern
+}  // namespace billow

@@ -6,7 +6,7 @@
 #include "remesh/panel_mesher.hpp"
 #include "util/error.hpp"
 
-namespace billow::pattern {
+namespace billow {
 
 FlatSegment flattenForPattern(const Segmentation& seg, const SeamGraph& graph, int segment,
                               const FlattenOptions& options) {
@@ -47,12 +47,12 @@ void meshFlatSegment(const TriMesh& target, const Segmentation& seg, const FlatS
                      BuiltPanel& built) {
   const std::vector<int>& loop = fs.flat.boundary;
   const int n = static_cast<int>(loop.size());
-  remesh::Points2 polygon(n, 2);
+  Points2 polygon(n, 2);
   for (int i = 0; i < n; ++i) polygon.row(i) = fs.flat.uv.row(loop[i]);
   std::vector<int> corners;
   for (const BoundaryPiece& p : fs.pieces) corners.push_back(p.start);  // increasing: pieces keep loop order
-  const remesh::ResampledBoundary rb = remesh::resampleBoundary(polygon, corners, fs.segments);
-  const TriMesh mesh = remesh::meshPanel(rb.points, h);
+  const ResampledBoundary rb = resampleBoundary(polygon, corners, fs.segments);
+  const TriMesh mesh = meshPanel(rb.points, h);
   const int nv = mesh.numVertices(), nb = static_cast<int>(rb.points.rows());
 
   panel.vertices = mesh.V.leftCols<2>();
@@ -88,9 +88,9 @@ void meshFlatSegment(const TriMesh& target, const Segmentation& seg, const FlatS
   flat2d.V = Vertices::Zero(sub.numVertices(), 3);
   flat2d.V.leftCols<2>() = fs.flat.uv;
   flat2d.F = sub.F;
-  const remesh::TriangleLocator locator(flat2d);
+  const TriangleLocator locator(flat2d);
   for (int r = nb; r < nv; ++r) {
-    const remesh::BarycentricPoint bp = locator.locate(mesh.V.row(r).head<2>().transpose());
+    const BarycentricPoint bp = locator.locate(mesh.V.row(r).head<2>().transpose());
     Eigen::RowVector3d x = Eigen::RowVector3d::Zero();
     for (int k = 0; k < 3; ++k) x += bp.weights[k] * sub.V.row(sub.F(bp.triangle, k));
     built.targetPosition.row(r) = x;
@@ -109,7 +109,7 @@ void meshFlatSegment(const TriMesh& target, const Segmentation& seg, const FlatS
   }
 }
 
-SegmentationProblem meshProblem(const Segmentation& seg, const pattern::FlatSegment& fs, const Error& e) {
+SegmentationProblem meshProblem(const Segmentation& seg, const FlatSegment& fs, const Error& e) {
   SegmentationProblem p;
   p.segment = fs.segment, p.severity = "error", p.location = seg.segments[fs.segment].labelPoint;
   const std::string segment = "Segment " + std::to_string(fs.segment + 1);
@@ -119,9 +119,9 @@ SegmentationProblem meshProblem(const Segmentation& seg, const pattern::FlatSegm
     return p;
   }
   const std::vector<int>& loop = fs.flat.boundary;
-  remesh::Points2 polygon(loop.size(), 2);
+  Points2 polygon(loop.size(), 2);
   for (size_t i = 0; i < loop.size(); ++i) polygon.row(i) = fs.flat.uv.row(loop[i]);
-  const int crossing = remesh::outlineCrossing(polygon);
+  const int crossing = outlineCrossing(polygon);
   if (crossing >= 0) p.location = fs.sub.mesh.V.row(loop[crossing]).transpose();
   p.code = "pattern.overlaps";
   p.message = segment + " would overlap itself when laid flat, " + seg.where(p.location) +
@@ -129,4 +129,4 @@ SegmentationProblem meshProblem(const Segmentation& seg, const pattern::FlatSegm
   return p;
 }
 
-}  // namespace billow::pattern
+}  // namespace billow

@@ -8,7 +8,7 @@
 #include "pattern/segment_pieces.hpp"
 #include "util/error.hpp"
 
-namespace billow::pattern {
+namespace billow {
 
 struct FlatSegment {
   int segment = -1;
@@ -35,4 +35,4 @@ SurfacePoint targetPointOf(const TriMesh& target, const Segmentation& seg, int t
 // in the plane (a long curling part laid flat runs into itself) is placed where it first meets itself.
 SegmentationProblem meshProblem(const Segmentation& seg, const FlatSegment& fs, const Error& e);
 
-}  // namespace billow::pattern
+}  // namespace billow

@@ -45,7 +45,7 @@ std::vector<std::vector<int>> segmentCounts(const BuiltPattern& built, double h)
   for (size_t p = 0; p < built.panels.size(); ++p)
     for (size_t k = 0; k < built.panels[p].pieces.size(); ++k) {
       const int g = groups.find(first[p] + k);
-      out[p].push_back(std::max(least[g], remesh::segmentCountFor(sum[g] / count[g], h)));
+      out[p].push_back(std::max(least[g], segmentCountFor(sum[g] / count[g], h)));
     }
   return out;
 }
@@ -64,17 +64,17 @@ Panel remeshPanel(const Panel& old, const BuiltPanel& oldBuilt, const Vertices& 
       throw Error("pattern.remesh-failed", "The pieces of a panel do not follow each other around its outline.");
   int boundary = 0;
   for (int n : counts) boundary += n;
-  remesh::Points2 outline(boundary, 2);
+  Points2 outline(boundary, 2);
   Vertices target(boundary, 3), inflated(boundary, 3);
   std::vector<int> seam(boundary, -1);
   std::vector<char> corner(boundary, 0);
   int row = 0;
   for (int k = 0; k < np; ++k) {
     const PanelPiece& piece = oldBuilt.pieces[k];
-    remesh::Points2 polyline(piece.rows.size(), 2);
+    Points2 polyline(piece.rows.size(), 2);
     for (size_t i = 0; i < piece.rows.size(); ++i) polyline.row(i) = old.vertices.row(piece.rows[i]);
     Eigen::VectorXd param;
-    const remesh::Points2 points = remesh::resamplePolyline(polyline, counts[k], &param);
+    const Points2 points = resamplePolyline(polyline, counts[k], &param);
     PanelPiece& renewed = bp.pieces[k];
     renewed.rows.clear();
     for (int i = 0; i <= counts[k]; ++i) {
@@ -92,7 +92,7 @@ Panel remeshPanel(const Panel& old, const BuiltPanel& oldBuilt, const Vertices& 
     }
     row += counts[k];
   }
-  const TriMesh mesh = remesh::meshPanel(outline, h);
+  const TriMesh mesh = meshPanel(outline, h);
   const int nv = mesh.numVertices();
   Panel panel;
   panel.name = old.name;
@@ -107,9 +107,9 @@ Panel remeshPanel(const Panel& old, const BuiltPanel& oldBuilt, const Vertices& 
   flat.V.setZero(old.vertices.rows(), 3);
   flat.V.leftCols(2) = old.vertices;
   flat.F = old.triangles;
-  const remesh::TriangleLocator locator(flat);
+  const TriangleLocator locator(flat);
   for (int v = boundary; v < nv; ++v) {
-    const remesh::BarycentricPoint at = locator.locate(panel.vertices.row(v).transpose());
+    const BarycentricPoint at = locator.locate(panel.vertices.row(v).transpose());
     carried.target.row(v).setZero();
     carried.inflated.row(v).setZero();
     for (int c = 0; c < 3; ++c) {

@@ -4,7 +4,7 @@
 //   1. the boundary pieces that are sewn together (two panels across a seam, and an internal panel's side
 //      sewn onto them) get one segment count N = max(1, round(L / h)), L their mean current 2D length;
 //   2. each piece is resampled by its own 2D arc length into N segments, corners kept exactly;
-//   3. the interior is meshed anew at edge length h (remesh::meshPanel: constrained Delaunay refinement);
+//   3. the interior is meshed anew at edge length h (meshPanel: constrained Delaunay refinement);
 //   4. stitches are made again (sample k of a piece to sample N - k of its partner);
 //   5. what each panel vertex carries comes over: the target position (s_j of Eq. 10 on seams) and the
 //      inflated position, along the old piece on the boundary and by barycentric location inside.

@@ -13,7 +13,7 @@
 #include "remesh/predicates.hpp"
 #include "util/error.hpp"
 
-namespace billow::remesh {
+namespace billow {
 
 namespace {
 
@@ -543,4 +543,4 @@ CdtResult Cdt::result() const {
 
 CdtResult triangulate(const Pslg& pslg) { return Cdt(pslg).result(); }
 
-}  // namespace billow::remesh
+}  // namespace billow

@@ -10,7 +10,7 @@
 
 #include "mesh/tri_mesh.hpp"
 
-namespace billow::remesh {
+namespace billow {
 
 using Points2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;  // P  #P by 2
 using Segments = Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor>;    // S  #S by 2, indices into P
@@ -99,4 +99,4 @@ class Cdt {
 // One-shot CDT of a PSLG.
 CdtResult triangulate(const Pslg& pslg);
 
-}  // namespace billow::remesh
+}  // namespace billow

@@ -11,7 +11,7 @@
 #include "remesh/refine.hpp"
 #include "util/error.hpp"
 
-namespace billow::remesh {
+namespace billow {
 
 double signedArea(const Points2& P) {
   double a = 0;
@@ -395,4 +395,4 @@ BarycentricPoint barycentricLocate(const TriMesh& mesh2d, const Eigen::Vector2d&
   return TriangleLocator(mesh2d).locate(p);
 }
 
-}  // namespace billow::remesh
+}  // namespace billow

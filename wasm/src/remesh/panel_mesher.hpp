@@ -10,7 +10,7 @@
 #include "mesh/tri_mesh.hpp"
 #include "remesh/cdt.hpp"
 
-namespace billow::remesh {
+namespace billow {
 
 // Area of a closed polygon (#P by 2), positive when it runs counter-clockwise.
 double signedArea(const Points2& polygon);
@@ -88,4 +88,4 @@ class TriangleLocator {
 // One-shot location (builds a TriangleLocator; keep one for many queries).
 BarycentricPoint barycentricLocate(const TriMesh& mesh2d, const Eigen::Vector2d& p);
 
-}  // namespace billow::remesh
+}  // namespace billow

@@ -18,7 +18,7 @@
 #pragma clang fp contract(off)
 #endif
 
-namespace billow::remesh {
+namespace billow {
 
 namespace {
 
@@ -206,4 +206,4 @@ int incircle(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Ve
 
 long long exactPredicateCalls() { return gExactCalls.load(std::memory_order_relaxed); }
 
-}  // namespace billow::remesh
+}  // namespace billow

@@ -8,7 +8,7 @@
 #pragma once
 #include <Eigen/Core>
 
-namespace billow::remesh {
+namespace billow {
 
 // Sign of the signed area of (a, b, c): +1 counter-clockwise, -1 clockwise, 0 collinear. Exact.
 int orient2d(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c);
@@ -25,4 +25,4 @@ double incircleFast(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Ei
 // How many calls needed the exact fallback since program start (diagnostics and tests).
 long long exactPredicateCalls();
 
-}  // namespace billow::remesh
+}  // namespace billow

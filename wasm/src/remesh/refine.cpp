@@ -11,7 +11,7 @@
 
 #include "remesh/predicates.hpp"
 
-namespace billow::remesh {
+namespace billow {
 
 namespace {
 
@@ -256,4 +256,4 @@ CdtResult triangulateRefined(const Pslg& pslg, const RefineOptions& options, Ref
   return cdt.result();
 }
 
-}  // namespace billow::remesh
+}  // namespace billow

@@ -7,7 +7,7 @@
 
 #include "remesh/cdt.hpp"
 
-namespace billow::remesh {
+namespace billow {
 
 struct RefineOptions {
   // Triangles with a smaller angle are refined. Ruppert's proof covers 20.7 degrees; up to about 33 degrees
@@ -35,4 +35,4 @@ RefineStats refine(Cdt& cdt, const RefineOptions& options = {});
 // One shot: CDT of pslg, then refinement.
 CdtResult triangulateRefined(const Pslg& pslg, const RefineOptions& options = {}, RefineStats* stats = nullptr);
 
-}  // namespace billow::remesh
+}  // namespace billow

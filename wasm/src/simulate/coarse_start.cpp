@@ -37,9 +37,9 @@ std::vector<std::vector<int>> boundaryLoops(const Panel& panel) {
   }
   int outlines = 0;
   for (auto& loop : loops) {
-    remesh::Points2 polygon(loop.size(), 2);
+    Points2 polygon(loop.size(), 2);
     for (size_t i = 0; i < loop.size(); ++i) polygon.row(i) = panel.vertices.row(loop[i]);
-    if (remesh::signedArea(polygon) > 0) ++outlines, std::swap(loop, loops[0]);
+    if (signedArea(polygon) > 0) ++outlines, std::swap(loop, loops[0]);
   }
   if (outlines != 1) return {};
   return loops;
@@ -144,20 +144,20 @@ std::optional<Pattern> coarsenPattern(const Pattern& pattern, const SewnMesh& me
   std::map<int, std::vector<std::pair<int, int>>> atSimVertex;  // fine simulation vertex -> (panel, coarse vertex)
   for (int p = 0; p < numPanels; ++p) {
     std::vector<int> boundary;
-    std::vector<remesh::Points2> polygons;
+    std::vector<Points2> polygons;
     for (const auto& loop : loops[p]) {
       const size_t start = boundary.size();
       for (int v : loop)
         if (kept[mesh.simVertex(p, v)] == 1) boundary.push_back(v);
       if (boundary.size() - start < 3) return std::nullopt;
-      remesh::Points2 polygon(boundary.size() - start, 2);
+      Points2 polygon(boundary.size() - start, 2);
       for (size_t i = start; i < boundary.size(); ++i)
         polygon.row(i - start) = pattern.panels[p].vertices.row(boundary[i]);
       polygons.push_back(std::move(polygon));
     }
     TriMesh m;
     try {
-      m = remesh::meshPanel(polygons[0], h, {}, std::vector<remesh::Points2>(polygons.begin() + 1, polygons.end()));
+      m = meshPanel(polygons[0], h, {}, std::vector<Points2>(polygons.begin() + 1, polygons.end()));
     } catch (const Error&) {
       return std::nullopt;
     }
@@ -204,10 +204,10 @@ Vertices prolongate(const Pattern& coarse, const SewnMesh& coarseMesh, const Ver
     flat.V = Vertices::Zero(cp.vertices.rows(), 3);
     flat.V.leftCols(2) = cp.vertices;
     flat.F = cp.triangles;
-    const remesh::TriangleLocator locator(flat);
+    const TriangleLocator locator(flat);
     const Panel& fp = fine.panels[p];
     for (int v = 0; v < fp.vertices.rows(); ++v) {
-      const remesh::BarycentricPoint b = locator.locate(fp.vertices.row(v).transpose());
+      const BarycentricPoint b = locator.locate(fp.vertices.row(v).transpose());
       int corner[3];
       Eigen::Vector3d linear = Eigen::Vector3d::Zero();
       for (int k = 0; k < 3; ++k) {

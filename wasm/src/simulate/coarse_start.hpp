@@ -9,7 +9,7 @@
 // (corners, and junctions: where a boundary changes partner or meets panels its edges do not join, as at
 // the ends of free edges), and each piece between two keys keeps every stride-th vertex, decided once per
 // simulation vertex, so the panels on both sides of a seam keep the same vertices and are stitched there.
-// The interior is remeshed (remesh::meshPanel). Prolongation locates each fine panel vertex in its coarse
+// The interior is remeshed (meshPanel). Prolongation locates each fine panel vertex in its coarse
 // panel (barycentric) and interpolates the coarse inflated positions, curved by Phong tessellation with the
 // coarse outer surface's vertex normals (a flat interpolation starts Newton with every fine triangle flat,
 // and costs a few shifted iterations more). The prolongated shape then gets Gauss-Seidel sweeps (gauss_seidel.hpp): it

@@ -70,8 +70,8 @@ Pattern twoSided(const Panel& front, const ExampleOptions& o) {
   return p;
 }
 
-remesh::Points2 toPoints(const std::vector<Eigen::Vector2d>& pts) {
-  remesh::Points2 P(pts.size(), 2);
+Points2 toPoints(const std::vector<Eigen::Vector2d>& pts) {
+  Points2 P(pts.size(), 2);
   for (size_t i = 0; i < pts.size(); ++i) P.row(i) = pts[i].transpose();
   return P;
 }
@@ -166,9 +166,9 @@ Panel gore(double R, int columns, std::vector<std::pair<int, int>>& sides) {
 
 // A panel meshed inside a closed counterclockwise polygon, edges about h, the given polygon vertices kept as
 // corners.
-Panel outlinePanel(const remesh::Points2& polygon, const std::vector<int>& corners, double h) {
-  const remesh::ResampledBoundary boundary = remesh::resampleBoundary(polygon, corners, h);
-  const TriMesh m = remesh::meshPanel(boundary.points, h);
+Panel outlinePanel(const Points2& polygon, const std::vector<int>& corners, double h) {
+  const ResampledBoundary boundary = resampleBoundary(polygon, corners, h);
+  const TriMesh m = meshPanel(boundary.points, h);
   Panel p;
   p.name = "front";
   p.vertices = m.V.leftCols(2);
@@ -177,10 +177,10 @@ Panel outlinePanel(const remesh::Points2& polygon, const std::vector<int>& corne
 }
 
 // Two mirror pieces cut to a polygon outline, about `triangles` in all.
-Pattern outlinePair(const remesh::Points2& polygon, const std::vector<int>& corners, const ExampleOptions& o) {
+Pattern outlinePair(const Points2& polygon, const std::vector<int>& corners, const ExampleOptions& o) {
   // Two panels of equilateral triangles of edge h (area sqrt(3)/4 h^2 each).
   // (The mesher refines to edges within 1.25 h and 28 degrees: about 1.37 times that count, hence 1.17 h.)
-  const double h = 1.17 * std::sqrt(2 * 4 * remesh::signedArea(polygon) / (std::sqrt(3.0) * o.triangles));
+  const double h = 1.17 * std::sqrt(2 * 4 * signedArea(polygon) / (std::sqrt(3.0) * o.triangles));
   return twoSided(outlinePanel(polygon, corners, h), o);
 }
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <vector>
 
-#include "simulate/sewn_pattern.hpp"
+#include "pattern/pattern.hpp"
 
 namespace billow {
 

@@ -17,23 +17,6 @@ std::string panelLabel(const Pattern& p, int panel) {
   return name.empty() ? "panel " + std::to_string(panel) : "panel '" + name + "'";
 }
 
-// Edges used by exactly one triangle of the panel, keyed (min, max) -> (from, to) in triangle order.
-std::map<std::pair<int, int>, std::pair<int, int>> boundaryEdges(const Panel& panel) {
-  std::map<std::pair<int, int>, int> count;
-  std::map<std::pair<int, int>, std::pair<int, int>> directed;
-  for (int t = 0; t < panel.triangles.rows(); ++t)
-    for (int k = 0; k < 3; ++k) {
-      const int a = panel.triangles(t, k), b = panel.triangles(t, (k + 1) % 3);
-      const auto key = std::minmax(a, b);
-      ++count[key];
-      directed[key] = {a, b};
-    }
-  std::map<std::pair<int, int>, std::pair<int, int>> out;
-  for (const auto& [key, n] : count)
-    if (n == 1) out[key] = directed[key];
-  return out;
-}
-
 void checkIndices(const Pattern& p, const PatternLimits& limits) {
   if (p.panels.empty()) throw Error("pattern.empty", "The pattern has no panels.");
   if (static_cast<long long>(p.panels.size()) > limits.maxPanels)
@@ -80,7 +63,7 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
   std::vector<std::map<std::pair<int, int>, std::pair<int, int>>> boundary(numPanels);
   std::vector<std::vector<char>> onBoundary(numPanels);
   for (int i = 0; i < numPanels; ++i) {
-    boundary[i] = boundaryEdges(p.panels[i]);
+    boundary[i] = outlineEdges(p.panels[i]);
     onBoundary[i].assign(p.panels[i].vertices.rows(), 0);
     for (const auto& [key, e] : boundary[i]) onBoundary[i][key.first] = onBoundary[i][key.second] = 1;
   }
@@ -214,21 +197,6 @@ std::vector<Vertices> panelPositions(const SewnMesh& mesh, const Vertices& x) {
     for (int v = 0; v < out[p].rows(); ++v) out[p].row(v) = x.row(mesh.simVertex(p, v));
   }
   return out;
-}
-
-std::vector<int> outlineVertices(const Panel& panel) {
-  std::vector<char> on(panel.vertices.rows(), 0);
-  for (const auto& [key, edge] : boundaryEdges(panel)) on[key.first] = on[key.second] = 1;
-  std::vector<int> out;
-  for (int v = 0; v < int(on.size()); ++v)
-    if (on[v]) out.push_back(v);
-  return out;
-}
-
-long long numTriangles(const Pattern& pattern) {
-  long long n = 0;
-  for (const Panel& panel : pattern.panels) n += panel.triangles.rows();
-  return n;
 }
 
 }  // namespace billow

@@ -1,56 +1,14 @@
-// The sewn pattern: flat panels joined by stitches, and the simulation mesh built from it
-// (one 3D vertex per group of stitched panel vertices; DESIGN.md "The pipeline, as data").
+// The simulation mesh sewn from a pattern (pattern/pattern.hpp): one 3D vertex per group of stitched panel
+// vertices (DESIGN.md "The pipeline, as data").
 #pragma once
 #include <string>
 #include <vector>
 
 #include "mesh/tri_mesh.hpp"
+#include "pattern/pattern.hpp"
 #include "simulate/membrane_energy.hpp"
 
 namespace billow {
-
-using PanelVertices = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;  // X  #v by 2 [m]
-
-struct Panel {
-  std::string name;
-  bool internal = false;  // internal connection: no pressure load, not part of the outer surface
-  PanelVertices vertices;
-  Triangles triangles;  // #t by 3, counterclockwise in the panel plane = as seen from outside
-};
-
-// Panel vertex `vertexA` of panel `panelA` is sewn to `vertexB` of `panelB`. Stitches chain: a corner where
-// three panels meet is two stitches.
-struct Stitch {
-  int panelA = 0, vertexA = 0, panelB = 0, vertexB = 0;
-};
-
-struct Material {
-  std::string name = "foil";
-  double thickness = 25e-6;      // h [m]
-  double youngsModulus = 3.0e9;  // E [Pa]
-  double density = -1;           // [kg/m^3], negative when unknown (not used by the simulation)
-};
-
-struct Pattern {
-  std::vector<Panel> panels;
-  std::vector<Stitch> stitches;
-  Material material;
-  double pressure = 1000.0;  // over-pressure p [Pa]
-  // Optional start positions, one #v by 3 block per panel (empty when absent). Stitched panel vertices
-  // are averaged. The optimizer passes the target shape here.
-  std::vector<Vertices> inflated;
-};
-
-struct PatternLimits {
-  long long maxTriangles = 2'000'000;
-  long long maxPanels = 10'000;
-};
-
-struct PatternWarning {
-  std::string code;  // "pattern.seam-length"
-  std::string message;
-  double mismatch = 0;  // relative length difference of the sewn edges
-};
 
 struct SewnMesh {
   int numVertices = 0;                // simulation vertices
@@ -73,12 +31,6 @@ struct SewnMesh {
 // pattern.open, pattern.non-manifold, pattern.orientation, pattern.too-large, pattern.empty.
 // Sewn edges of different rest length (beyond 1e-3 relative) are reported in SewnMesh::warnings.
 SewnMesh sewPattern(const Pattern& pattern, const PatternLimits& limits = {});
-
-// The panel's vertices on its outline (on an edge of one triangle only), ascending.
-std::vector<int> outlineVertices(const Panel& panel);
-
-// Triangles of all panels (the size of the simulation mesh a pattern makes).
-long long numTriangles(const Pattern& pattern);
 
 // Outer triangles only, as a closed mesh with merged vertices (for OBJ export and the volume).
 Triangles outerTriangles(const SewnMesh& mesh);
