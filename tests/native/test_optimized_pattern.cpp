@@ -1,0 +1,50 @@
+// optimize/optimized_pattern.hpp: the optimizer's state as a pattern with its inflated shape.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "optimize/adjoint.hpp"
+#include "optimize/harmonic_interior.hpp"
+#include "optimize/optimized_pattern.hpp"
+#include "optimize/pattern_optimizer.hpp"
+#include "optimize/rest_derivatives.hpp"
+#include "optimize/seam_projection.hpp"
+#include "optimize/stopping_rule.hpp"
+#include "optimize_fixture.hpp"
+#include "pattern/remesh_pattern.hpp"
+#include "simulate/initial_shape.hpp"
+
+using namespace billow;
+using namespace billow::test;
+
+// The optimizer's state as a pattern (optimize/optimized_pattern.hpp), what the app shows and the CLI inflates
+// last: its current panels and stitches, and as "inflated" its shape, so an inflation from it starts exactly where
+// the optimizer stands; also after the panels were meshed anew (other vertices than the flattened pattern's).
+TEST(OptimizedPattern, OptimizedPatternStartsWhereTheOptimizerStands) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.maxIterations = 4, o.remeshing.every = 3;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+  ASSERT_EQ(opt.timings().remeshings, 1);
+  const Pattern p = optimizedPattern(opt);
+  ASSERT_EQ(p.panels.size(), f.built.pattern.panels.size());
+  ASSERT_EQ(p.inflated.size(), p.panels.size());
+  EXPECT_EQ(p.stitches.size(), opt.pattern().stitches.size());
+  EXPECT_NE(p.panels[0].vertices.rows(), f.built.pattern.panels[0].vertices.rows()) << "the panels were meshed anew";
+  for (size_t k = 0; k < p.panels.size(); ++k) {
+    EXPECT_EQ(p.panels[k].vertices, opt.pattern().panels[k].vertices);
+    EXPECT_EQ(p.inflated[k].rows(), p.panels[k].vertices.rows());
+  }
+  EXPECT_EQ(p.material.name, f.built.pattern.material.name);
+  EXPECT_DOUBLE_EQ(p.pressure, f.built.pattern.pressure);
+  const SewnMesh mesh = sewPattern(p);
+  const Vertices start = startFromInflated(p, mesh);
+  ASSERT_EQ(start.rows(), opt.inflated().rows());
+  EXPECT_LT((start - opt.inflated()).cwiseAbs().maxCoeff(), 1e-12);
+}

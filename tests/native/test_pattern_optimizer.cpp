@@ -1,0 +1,504 @@
+// The pattern optimizer (optimize/pattern_optimizer.hpp) on whole runs: on the three-gore sphere the optimized
+// inflated shape is much closer to the target than the flattened one, seam lengths match exactly and the
+// objective decreases over every accepted step; the mechanisms that keep it going (predicted starts, Gauss-Seidel
+// sweeps, resettling, remeshing, the stopping rules, sliding seams), and a heavy seam stays where it was drawn
+// while a light one slides further.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+
+#include "optimize/adjoint.hpp"
+#include "optimize/harmonic_interior.hpp"
+#include "optimize/optimized_pattern.hpp"
+#include "optimize/pattern_optimizer.hpp"
+#include "optimize/rest_derivatives.hpp"
+#include "optimize/seam_projection.hpp"
+#include "optimize/stopping_rule.hpp"
+#include "optimize_fixture.hpp"
+#include "pattern/remesh_pattern.hpp"
+#include "simulate/initial_shape.hpp"
+
+using namespace billow;
+using namespace billow::test;
+
+// The optimizer's variables are the panels' outlines and the interior follows them, so what the optimizer shows
+// is what the cut panels give: their outlines meshed anew and inflated land within a few percent of the
+// optimizer's own figure.
+TEST(PatternOptimizer, ThreeGoreSphereGetsMuchCloser) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.maxIterations = 90;
+  o.keepShapes = true;
+  const OptimizeRun r = optimize(f, o, 90, true);
+  std::printf(
+      "[figures] three-gore sphere: preview quality (within 5 %% of the diagonal of the final shape) at "
+      "iteration %d, %.0f ms\n",
+      r.previewIteration, r.previewMs);
+  ASSERT_GE(r.history.size(), 3u);
+  const OptimizeRecord &first = r.history.front(), &last = r.history.back();
+  for (const auto& h : r.history)
+    std::printf(
+        "[figures] gores it %3d%s E %.4e (t %.2e s %.2e l %.2e b %.2e L %.2e) rms %.3f%% max %.3f%% "
+        "mismatch %.1e grad %.1e alpha %.2g newton %d %.0f ms\n",
+        h.iteration, h.projected ? "P" : " ", h.objective, h.terms.target, h.terms.seam, h.terms.length, h.terms.smooth,
+        h.terms.laplace, 100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch, h.gradient, h.stepLength,
+        h.equilibriumIterations, h.ms);
+  std::printf(
+      "[figures] three-gore sphere (%d triangles): distance rms %.3f%% -> %.3f%% of the diagonal (factor %.1f), "
+      "max %.3f%% -> %.3f%%, %zu records, %s, %.0f ms; cut panels %.3f%% (%d elements)\n",
+      f.built.figures.triangles, 100 * first.distanceRms, 100 * last.distanceRms, first.distanceRms / last.distanceRms,
+      100 * first.distanceMax, 100 * last.distanceMax, r.history.size(), toString(r.state), r.ms,
+      100 * r.cut.distanceRms, r.cut.elements);
+  EXPECT_GT(first.distanceRms / last.distanceRms, 2.5);  // 5.8 % -> 1.96 %: three gores on fixed meridians
+  EXPECT_LT(last.seamMismatch, 1e-4);
+  expectObjectiveNeverRises(r.history);
+  ASSERT_TRUE(r.cut.ok) << r.cut.message;
+  EXPECT_NEAR(r.cut.distanceRms, last.distanceRms, 0.1 * last.distanceRms);
+  EXPECT_LT(r.cut.distanceRms, 0.5 * first.distanceRms);
+}
+
+TEST(PatternOptimizer, ProjectedTrialsEndWhereTheTangentialGradientIsSmall) {
+  // With every trial projected onto equal seam lengths, the part of a step across that set is undone by the
+  // projection. The line search measures its slope along the projected path (g T d), so both the default
+  // steps and L-BFGS on the tangential part (OptimizeSearch::tangentSteps) end at a stationary point of the
+  // constrained problem, where the recorded (tangential) gradient is small. With the slope g d the default
+  // stopped at 5.0e-3, searching down to steps of 1e-4 along directions that were no descent once projected.
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  double rms[2] = {0, 0}, gradient[2] = {0, 0};
+  for (const bool tangent : {false, true}) {
+    OptimizeOptions o;
+    o.search.tangentSteps = tangent;
+    const OptimizeRun r = optimize(f, o, 80);
+    ASSERT_GE(r.history.size(), 3u);
+    EXPECT_LT(r.history.back().seamMismatch, 1e-4);
+    expectObjectiveNeverRises(r.history);
+    rms[tangent] = r.history.back().distanceRms;
+    gradient[tangent] = r.history.back().gradient;
+    std::printf("[figures] sphere gores 800, tangent steps %d: %d iterations, rms %.3f%%, gradient %.2e, %s\n",
+                int(tangent), r.iterations, 100 * rms[tangent], gradient[tangent], r.message.c_str());
+  }
+  EXPECT_LT(gradient[0], 1e-3);  // the Lagrangian's gradient (measured 1.2e-4; tangent steps 2.3e-4)
+  EXPECT_LT(gradient[1], 1e-3);
+  EXPECT_LT(rms[1], 1.01 * rms[0]);
+  EXPECT_LT(rms[0], 1.01 * rms[1]);
+}
+
+TEST(PatternOptimizer, GaussSeidelBeforeEachSolveSavesNewtonIterations) {
+  // A step of the panels leaves parts of the foil slack at the last shape (its rest lengths change by more than
+  // the sheet's strain); Gauss-Seidel sweeps push them out before Newton (OptimizeSearch::gaussSeidelSweeps).
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  double perSolve[2] = {0, 0};
+  for (int sweeps : {0, 10}) {
+    OptimizeOptions o;
+    o.search.gaussSeidelSweeps = sweeps;
+    o.search.predictEquilibrium = false;  // from the last shape, as before the prediction (next test)
+    PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+    while (opt.step(1) == OptimizeState::Running && opt.iterations() < 15) {
+    }
+    ASSERT_GE(opt.iterations(), 15) << opt.message();
+    int newton = 0;
+    for (size_t k = 1; k < opt.history().size(); ++k) newton += opt.history()[k].equilibriumIterations;
+    perSolve[sweeps > 0] = double(newton) / (opt.history().size() - 1);
+    expectObjectiveNeverRises(opt.history());
+    std::printf("[figures] sphere gores 800, %d sweeps: %.1f Newton iterations per accepted solve, rms %.3f%%\n",
+                sweeps, perSolve[sweeps > 0], 100 * opt.history().back().distanceRms);
+  }
+  EXPECT_LT(perSolve[1], 0.8 * perSolve[0]);
+}
+
+TEST(PatternOptimizer, PredictedStartSavesNewtonIterations) {
+  // Each trial's solve starts from x + dx, dx = -K^-1 dg/dX dX with the adjoint's factorization
+  // (OptimizeSearch::predictEquilibrium), instead of from the last shape.
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  double perSolve[2] = {0, 0};
+  for (bool predict : {false, true}) {
+    OptimizeOptions o;
+    o.search.predictEquilibrium = predict;
+    PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+    while (opt.step(1) == OptimizeState::Running && opt.iterations() < 15) {
+    }
+    ASSERT_GE(opt.iterations(), 15) << opt.message();
+    int newton = 0;
+    for (size_t k = 1; k < opt.history().size(); ++k) newton += opt.history()[k].equilibriumIterations;
+    perSolve[predict] = double(newton) / (opt.history().size() - 1);
+    expectObjectiveNeverRises(opt.history());
+    std::printf("[figures] sphere gores 800, prediction %s: %.1f Newton iterations per accepted solve, rms %.3f%%\n",
+                predict ? "on" : "off", perSolve[predict], 100 * opt.history().back().distanceRms);
+  }
+  EXPECT_LT(perSolve[1], 0.75 * perSolve[0]);
+}
+
+// The gallery's first fish: an internal panel in the middle plane between the back and belly seams. The
+// inflating sides pull that outline inward, so the panel goes slack: a floppy flap whose inside vertices have
+// no stiffness. The optimizer used to stop after one step there (its adjoint failed; 2.8 % RMS at 1k); now
+// it goes on like on any other design.
+TEST(PatternOptimizer, SlackInternalPanelDoesNotStopTheOptimizer) {
+  const Fixture f = makeFixture("fish-midplane.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  ASSERT_EQ(f.built.pattern.panels.size(), 3u);
+  ASSERT_TRUE(f.built.pattern.panels[2].internal);
+  OptimizeOptions oo;
+  oo.stopping.maxIterations = 30;
+  const OptimizeRun r = optimize(f, oo);
+  const auto& h = r.history;
+  std::printf(
+      "[figures] fish with a slack internal panel, 600 elements: %d iterations, rms %.3f %% -> %.3f %%, target to "
+      "inflated %.3f %% -> %.3f %% (%s)\n",
+      r.iterations, 100 * h.front().distanceRms, 100 * h.back().distanceRms, 100 * h.front().targetDistanceRms,
+      100 * h.back().targetDistanceRms, r.message.c_str());
+  EXPECT_EQ(r.iterations, 30) << r.message;
+  // before: 0.73; E_target alone 0.65; with E_cover 0.68 (it trades some of this figure for the target's side)
+  EXPECT_LT(h.back().distanceRms, 0.72 * h.front().distanceRms);
+  expectObjectiveNeverRises(h, 1e-12);
+}
+
+// The gallery fish's four outer panels without its internal panel, at 600 elements: after a few steps the
+// inflated shape sits in an unstable equilibrium (a tiny change of the panels makes it snap into another one,
+// so E(X) jumps and no step passes the line search). The optimizer used to stop there ("no further decrease
+// along the gradient", 1.56 % RMS at 1k after 6 iterations); it now takes the shape the balloon snaps into
+// (a "resettled" record, the objective may rise) and goes on. The seams' stiffness (InflateOptions::
+// seamStiffness) takes that instability away on this design (1.56 % -> 1.03 % in 25 plain iterations), so the
+// test runs without it, where the instability is known to occur.
+TEST(PatternOptimizer, UnstableEquilibriumIsResettledNotTheEnd) {
+  const Fixture f = makeFixture("fish-four-panels.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions oo;
+  oo.stopping.maxIterations = 25;
+  oo.inflate.seamStiffness = 0;
+  const OptimizeRun r = optimize(f, oo);
+  const auto& h = r.history;
+  const int resettled = int(std::count_if(h.begin(), h.end(), [](const OptimizeRecord& k) { return k.resettled; }));
+  std::printf(
+      "[figures] fish without its internal panel, 600 elements: %d iterations, %d resettled, rms %.3f %% -> "
+      "%.3f %% (%s)\n",
+      r.iterations, resettled, 100 * h.front().distanceRms, 100 * h.back().distanceRms, r.message.c_str());
+  EXPECT_EQ(r.iterations, 25) << r.message;
+  EXPECT_GE(resettled, 1);
+  EXPECT_EQ(resettled, r.resettlings);
+  EXPECT_LT(h.back().distanceRms, h.front().distanceRms);
+  expectObjectiveNeverRises(h, 1e-12);
+  expectEndsAtItsBest(h);
+}
+
+// Issue 24: a foil-balloon penguin (front and back panels, seen from the front) creeps towards the end of its
+// equilibrium: L-BFGS steps snap the balloon into another equilibrium, whose solve took 25-110 Newton iterations
+// before the line search refused it. A trial that leaves its predicted shape by far is now abandoned as it goes
+// (two such snaps in a row take the shape it snaps into, a resettling). And no step makes a panel's outline
+// cross itself: such a panel overlaps itself and cannot be cut, although none of its triangles folds (the
+// optimizer's cow and penguin did).
+TEST(PatternOptimizer, FrontBackPenguinAbandonsTrialsThatSnapAndKeepsItsOutlines) {
+  const Fixture f = makeFixture("../../bench/designs/penguin-front-back.billow.json", 3000);
+  ASSERT_TRUE(f.built.ok());
+  const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 20);
+  const PatternOptimizer& opt = *optimized;
+  const OptimizeTimings& t = opt.timings();
+  const auto& h = opt.history();
+  int newton = 0;
+  for (const auto& r : h) newton += r.equilibriumIterations;
+  std::printf(
+      "[figures] fb-penguin 3k: %d iterations, %d solves (%d trials refused, %d snapped), %d resettled, Newton %d "
+      "accepted, rms %.3f %% -> %.3f %%, %.1f s\n",
+      opt.iterations(), t.equilibriumSolves, t.rejectedTrials, t.snappedTrials, t.resettlings, newton,
+      100 * h.front().distanceRms, 100 * h.back().distanceRms, t.totalMs / 1000);
+  EXPECT_EQ(opt.iterations(), 20) << opt.message();
+  EXPECT_GE(t.snappedTrials, 1);
+  EXPECT_LT(h.back().distanceRms, 0.5 * h.front().distanceRms);
+  expectObjectiveNeverRises(h, 1e-12);
+  expectEndsAtItsBest(h);
+  expectCuttableOutlines(opt.pattern());
+}
+
+// The stuffed toy's outline from the front (the Outline tool's seam, tests/data) runs into thin notches (around the
+// thin disc ears): the flattened panels have slits, and steps that made their sides cross were refused until the
+// optimizer stopped (after 9 iterations at 2.9 % here). E_gap holds the sides apart, so the steps go along them.
+TEST(PatternOptimizer, FrontBackStuffedToyGoesOnAlongItsOutlinesThinNotches) {
+  const Fixture f = makeFixture("stuffedtoy-front-back.billow.json", 1500);
+  ASSERT_TRUE(f.built.ok());
+  const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 20);
+  const PatternOptimizer& opt = *optimized;
+  const auto& h = opt.history();
+  std::printf("[figures] stuffed toy front/back 1.5k: %d iterations, rms %.3f %% -> %.3f %%, E_gap %.2e, %.1f s\n",
+              opt.iterations(), 100 * h.front().distanceRms, 100 * h.back().distanceRms, h.back().terms.gap,
+              opt.timings().totalMs / 1000);
+  EXPECT_EQ(opt.iterations(), 20) << opt.message();
+  EXPECT_GT(h.back().terms.gap, 0) << "the barrier held an outline apart";
+  EXPECT_LT(h.back().distanceRms, 0.45 * h.front().distanceRms);
+  expectObjectiveNeverRises(h, 1e-5);
+  expectCuttableOutlines(opt.pattern());
+}
+
+// Sec. 5.3: the panels meshed again from their outlines (every 4 iterations here) and the optimization goes
+// on from there: no panel is lost, seams keep matching, the shape barely moves across the remesh and keeps
+// getting closer to the target afterwards.
+TEST(PatternOptimizer, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.remeshing.every = 4;
+  o.stopping.maxIterations = 30;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_GE(opt.timings().remeshings, 1);
+  const auto& h = opt.history();
+  const auto at = std::find_if(h.begin(), h.end(), [](const OptimizeRecord& r) { return r.remeshed; });
+  ASSERT_NE(at, h.end());
+  ASSERT_NE(at, h.begin());
+  const OptimizeRecord &before = *(at - 1), &after = *at, &last = h.back();
+  std::printf(
+      "[figures] remesh at iteration %d: rms %.3f%% -> %.3f%%, then %.3f%% after %d iterations; %d "
+      "remeshings (%.0f ms)\n",
+      after.iteration, 100 * before.distanceRms, 100 * after.distanceRms, 100 * last.distanceRms, last.iteration,
+      opt.timings().remeshings, opt.timings().remeshMs);
+  EXPECT_EQ(opt.pattern().panels.size(), f.built.pattern.panels.size());
+  EXPECT_NEAR(after.distanceRms, before.distanceRms, 0.2 * before.distanceRms);
+  EXPECT_LT(last.distanceRms, after.distanceRms);
+  EXPECT_LT(last.seamMismatch, 1e-4);
+  EXPECT_NO_THROW(sewPattern(opt.pattern()));
+  EXPECT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+}
+
+// OptimizeRemeshing::every remeshes on a schedule, at most once per iteration and none after the last one.
+TEST(PatternOptimizer, RemeshingOnItsSchedule) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.maxIterations = 6, o.remeshing.maxRemeshings = 100, o.remeshing.every = 3;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+  std::vector<int> at;
+  for (const OptimizeRecord& r : opt.history())
+    if (r.remeshed) at.push_back(r.iteration);
+  std::printf("[figures] every 3: %d iterations, %d remeshings\n", opt.iterations(), opt.timings().remeshings);
+  ASSERT_FALSE(at.empty());
+  for (size_t k = 1; k < at.size(); ++k) EXPECT_GT(at[k], at[k - 1]) << "two remeshings at iteration " << at[k];
+  for (int i : at) EXPECT_EQ(i % 3, 0) << i;
+  EXPECT_EQ(opt.timings().remeshings, (opt.iterations() - 1) / 3);
+  EXPECT_EQ(opt.pattern().panels.size(), f.built.pattern.panels.size());
+}
+
+// Outlines that zig-zag below the edge length (free seams, tangent steps, a weak E_smooth) resample into chords
+// that differ across a seam. Such a remeshing is refused and the old mesh kept, so every iterate still sews
+// (one used to go on with stitched edges 1.5 times apart).
+TEST(PatternOptimizer, RemeshingThatWouldNotSewKeepsTheOldMesh) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.search.tangentSteps = true, o.weights.seam = 0, o.weights.smooth = 0.05;
+  o.remeshing.every = 5, o.remeshing.maxRemeshings = 100, o.stopping.maxIterations = 60;
+  o.sliding.seamWeight = 0;  // these settings as they are, not those of sliding seams (slidingOptions)
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+  EXPECT_GE(opt.timings().remeshings, 3);
+  double worst = 0;
+  for (const OptimizeRecord& r : opt.history()) worst = std::max(worst, r.seamMismatch);
+  std::printf("[figures] %d iterations, %d remeshings, largest seam mismatch of any iterate %.1e\n", opt.iterations(),
+              opt.timings().remeshings, worst);
+  EXPECT_LT(worst, 1e-4);
+}
+
+// OptimizeStopping::windowDecrease: converged at the first iteration where the objective fell by less than
+// that fraction over the last windowIterations iterations, and not before.
+TEST(PatternOptimizer, StopsWhenTheObjectiveNoLongerDecreasesNoticeably) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.windowIterations = 5, o.stopping.windowMove = 0, o.stopping.windowDecrease = 0.05;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_EQ(opt.state(), OptimizeState::Converged);
+  EXPECT_EQ(opt.message(), "the objective no longer decreases noticeably");
+  std::vector<double> E(opt.iterations() + 1, NAN);
+  for (const OptimizeRecord& r : opt.history())
+    if (!r.projected) E[r.iteration] = r.objective;  // not the final seam-length projection
+  const int n = opt.iterations();
+  ASSERT_GE(n, 5);
+  EXPECT_LT(E[n - 5] - E[n], 0.05 * E[n]);
+  for (int k = 5; k < n; ++k) EXPECT_GE(E[k - 5] - E[k], 0.05 * E[k]) << "iteration " << k;
+  std::printf("[figures] sphere gores 800: stopped at iteration %d, objective %.4e (5 before: %.4e)\n", n, E[n],
+              E[n - 5]);
+}
+
+// A window with a remeshing in it is no stall either: the objective there is that of another mesh. With the
+// panels meshed anew every 4 iterations every 5-iteration window holds one, and the rule never ends the run
+// (without that, this run stopped at iteration 9). Every 5 iterations, a window may start on a fresh mesh and
+// is judged as any other.
+TEST(PatternOptimizer, ObjectiveWindowDoesNotSpanARemeshing) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  for (const int every : {4, 5}) {
+    OptimizeOptions o;
+    o.stopping.windowIterations = 5, o.stopping.windowMove = 0, o.stopping.windowDecrease = 0.05;
+    o.remeshing.every = every, o.remeshing.maxRemeshings = 100, o.stopping.maxIterations = 40;
+    PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+    while (opt.step(1) == OptimizeState::Running) {
+    }
+    std::printf("[figures] remeshing every %d: %s (%s) at iteration %d, %d remeshings\n", every, toString(opt.state()),
+                opt.message().c_str(), opt.iterations(), opt.timings().remeshings);
+    EXPECT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+    EXPECT_GE(opt.timings().remeshings, every == 4 ? 5 : 1);
+    if (every == 4) {
+      EXPECT_NE(opt.message(), "the objective no longer decreases noticeably");
+    } else {
+      EXPECT_EQ(opt.message(), "the objective no longer decreases noticeably");
+      EXPECT_EQ(opt.iterations() % 5, 0) << "a window over a remeshing was judged";
+    }
+  }
+}
+
+// OptimizeSliding::seamWeight: a seam whose weight (times weights.seam) is below it slides, and the
+// optimizer then steps tangent to equal seam lengths, meshes the panels anew on a schedule and holds its outline
+// regularizers at a physical length.
+TEST(PatternOptimizer, SlidingSeamsChangeHowTheOptimizerWorks) {
+  OptimizeOptions o;
+  o.stopping.maxIterations = 300;
+  o.stopping.windowDecrease = 0.01;
+  EXPECT_FALSE(hasSlidingSeams(o, {1, 1, 1}));
+  EXPECT_FALSE(hasSlidingSeams(o, {}));
+  EXPECT_TRUE(hasSlidingSeams(o, {1, 0.05, 1}));
+  EXPECT_TRUE(hasSlidingSeams(o, {1, 0, 1}));
+  OptimizeOptions unweighted = o;
+  unweighted.weights.seam = 0;
+  EXPECT_TRUE(hasSlidingSeams(unweighted, {1, 1}));
+  OptimizeOptions never = o;
+  never.sliding.seamWeight = 0;
+  EXPECT_FALSE(hasSlidingSeams(never, {0, 0}));
+
+  const double D = 2, atReference = o.sliding.regularizerEdgeLength * D;
+  const OptimizeOptions held = slidingOptions(o, {1, 1}, atReference / 2, D);
+  EXPECT_FALSE(held.search.tangentSteps);
+  EXPECT_EQ(held.stopping.maxIterations, o.stopping.maxIterations);
+  EXPECT_EQ(held.stopping.windowDecrease, o.stopping.windowDecrease);
+  EXPECT_EQ(held.remeshing.every, o.remeshing.every);
+  EXPECT_EQ(held.search.sobolevLength, o.search.sobolevLength);
+  EXPECT_EQ(held.weights.smooth, o.weights.smooth);
+  EXPECT_EQ(held.weights.slidingBelow, o.weights.slidingBelow);
+
+  const OptimizeOptions coarse = slidingOptions(o, {1, 0}, 2 * atReference, D);  // coarser than the reference
+  EXPECT_TRUE(coarse.search.tangentSteps);
+  EXPECT_EQ(coarse.remeshing.every, o.sliding.remeshEvery);
+  EXPECT_EQ(coarse.stopping.maxIterations, 2 * o.stopping.maxIterations);  // OptimizeSliding::iterationFactor
+  EXPECT_EQ(coarse.stopping.windowDecrease, 0);
+  EXPECT_GE(coarse.remeshing.maxRemeshings * coarse.remeshing.every, coarse.stopping.maxIterations);
+  EXPECT_EQ(coarse.search.sobolevLength, o.search.sobolevLength);
+  EXPECT_EQ(coarse.weights.smooth, o.weights.smooth);
+  EXPECT_EQ(coarse.weights.slidingSmooth, o.weights.slidingSmooth);
+  EXPECT_EQ(coarse.search.maxMoveEdges, o.search.maxMoveEdges);
+
+  const OptimizeOptions fine = slidingOptions(o, {1, 0}, atReference / 2, D);  // twice as fine
+  EXPECT_NEAR(fine.search.sobolevLength, 2 * o.search.sobolevLength, 1e-12);   // the same length in meters
+  EXPECT_NEAR(fine.search.maxMoveEdges, 2 * o.search.maxMoveEdges, 1e-12);
+  EXPECT_EQ(fine.weights.smooth, o.weights.smooth);  // held seams' outlines as they were
+  EXPECT_NEAR(fine.weights.slidingSmooth, 4 * o.weights.slidingSmooth, 1e-12);
+  EXPECT_EQ(fine.weights.slidingBelow, o.sliding.seamWeight);
+  EXPECT_EQ(fine.weights.target, o.weights.target);
+}
+
+// Paper Sec. 6: the sphere's seams were left free to slide. Three gores held on their meridians end near 2 %
+// RMS (ThreeGoreSphereGetsMuchCloser); let slide, the panels turn into S-shaped strips and the sphere gets far
+// closer, as cut (the final outlines meshed anew), with seams that still sew.
+TEST(PatternOptimizer, SlidingSeamsLetTheSphereFitFarBetter) {
+  Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.maxIterations = 110;
+  const OptimizeRun held = optimize(f, o, 110, true);
+  std::fill(f.weights.begin(), f.weights.end(), 0.0);
+  const OptimizeRun sliding = optimize(f, o, 110, true);
+  ASSERT_TRUE(held.cut.ok) << held.cut.message;
+  ASSERT_TRUE(sliding.cut.ok) << sliding.cut.message;
+  int remeshings = 0;
+  for (const OptimizeRecord& r : sliding.history) remeshings += r.remeshed;
+  std::printf(
+      "[figures] sphere gores 800: held seams %.3f%% (cut %.3f%%, %d iterations), sliding %.3f%% (cut %.3f%%, %d "
+      "iterations, %d remeshings)\n",
+      100 * held.history.back().distanceRms, 100 * held.cut.distanceRms, held.iterations,
+      100 * sliding.history.back().distanceRms, 100 * sliding.cut.distanceRms, sliding.iterations, remeshings);
+  EXPECT_GE(remeshings, 4);
+  EXPECT_LT(sliding.cut.distanceRms, 0.6 * held.cut.distanceRms);
+  EXPECT_LT(sliding.history.back().seamMismatch, 1e-4);
+  EXPECT_NO_THROW(sewPattern(sliding.pattern));
+  EXPECT_NE(sliding.state, OptimizeState::Failed) << sliding.message;
+}
+
+TEST(PatternOptimizer, HeavySeamStaysLightSeamSlides) {
+  Fixture f = makeFixture("sphere-gores.billow.json", 400);
+  OptimizeOptions o;
+  o.stopping.maxIterations = 25;
+  std::fill(f.weights.begin(), f.weights.end(), 100.0);
+  const OptimizeRun heavy = optimize(f, o, 25);
+  std::fill(f.weights.begin(), f.weights.end(), 0.01);
+  const OptimizeRun light = optimize(f, o, 25);
+  const double D = (f.scene->target.V.colwise().maxCoeff() - f.scene->target.V.colwise().minCoeff()).norm();
+  std::printf("[figures] seam shift: weight 100 -> %.3f %% of the diagonal, weight 0.01 -> %.3f %%\n",
+              100 * heavy.seamShift / D, 100 * light.seamShift / D);
+  EXPECT_LT(heavy.seamShift, 0.02 * D);
+  EXPECT_GT(light.seamShift, 2 * heavy.seamShift);
+}
+
+// DESIGN.md: "the optimizer must also recover from a poor [flattening]". The koala cut into 18 panels along
+// plane sections (bench/designs/teddy.billow.json) has segments far from developable: their flattened seam
+// sides differ by up to ~50 %, and projecting them onto equal lengths at once folds panels. The optimizer
+// then goes on with the seam-length penalty alone instead of stopping before its first step.
+TEST(PatternOptimizer, RecoversFromAPoorFlattening) {
+  Fixture f = makeFixture("../../bench/designs/teddy.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  if (f.built.figures.maxSeamLengthMismatch < 0.2) {
+    // The flattening got better: make it poor again, every other panel 1.5 times too large (its seam sides
+    // then differ from its neighbours' by up to 50 %).
+    for (size_t p = 0; p < f.built.pattern.panels.size(); p += 2) {
+      PanelVertices& V = f.built.pattern.panels[p].vertices;
+      const Eigen::RowVector2d c = V.colwise().mean();
+      V = ((V.rowwise() - c) * 1.5).rowwise() + c;
+    }
+  }
+  OptimizeOptions o;
+  o.stopping.maxIterations = 6;
+  const OptimizeRun r = optimize(f, o, 6);
+  std::printf(
+      "[figures] koala, 18 panels: %zu records, %s, distance rms %.3f%% -> %.3f%%, seam mismatch %.2f -> %.2f\n",
+      r.history.size(), toString(r.state), 100 * r.history.front().distanceRms, 100 * r.history.back().distanceRms,
+      r.history.front().seamMismatch, r.history.back().seamMismatch);
+  ASSERT_NE(r.state, OptimizeState::Failed);
+  ASSERT_GE(r.history.size(), 4u) << "no step was taken";
+  EXPECT_LT(r.history.back().objective, 0.9 * r.history.front().objective);
+  EXPECT_LT(r.history.back().distanceRms, r.history.front().distanceRms);
+}
+
+TEST(PatternOptimizer, APanelBoundedByOneLoopStaysSmoothWhereTheLoopStarts) {
+  // The two-disc sphere: each panel's outline is one seam loop, whose start is its only corner. The optimized
+  // outline turns there about as much as anywhere else (it bent into a 58 degree hook when left free).
+  const Fixture f = makeFixture("sphere-equator.billow.json", 600);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.maxIterations = 60;
+  const OptimizeRun r = optimize(f, o, 60);
+  for (size_t p = 0; p < r.pattern.panels.size(); ++p) {
+    ASSERT_EQ(f.built.panels[p].pieces.size(), 1u);
+    const int nb = f.built.panels[p].boundaryVertices;
+    const PanelVertices& V = r.pattern.panels[p].vertices;
+    std::vector<double> turn(nb);
+    for (int j = 0; j < nb; ++j) {
+      const Eigen::Vector2d u = V.row(j) - V.row((j + nb - 1) % nb), w = V.row((j + 1) % nb) - V.row(j);
+      turn[j] = std::abs(std::atan2(u.x() * w.y() - u.y() * w.x(), u.dot(w)));
+    }
+    const int corner = f.built.panels[p].pieces[0].rows.front();
+    std::vector<double> sorted = turn;
+    std::sort(sorted.begin(), sorted.end());
+    const double median = sorted[nb / 2];
+    std::printf("[figures] one-loop panel %zu: turns %.1f degrees at its corner, median %.1f, largest %.1f\n", p,
+                turn[corner] * 180 / M_PI, median * 180 / M_PI, sorted.back() * 180 / M_PI);
+    EXPECT_LT(turn[corner], 3 * median + 0.05) << "panel " << p;
+  }
+}
