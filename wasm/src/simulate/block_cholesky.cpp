@@ -167,13 +167,9 @@ bool partialCholesky(double* F, int m, int k, double tinyPivot, double raisedPiv
   return true;
 }
 
-}  // namespace
-
-void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& points, Ordering ordering) {
-  const int n = int(H.cols() / 3);
-  n_ = n;
-  // Vertex graph.
-  Graph g(n);
+// The vertex graph of H (3x3 blocks), neighbours sorted.
+Graph vertexGraph(const Eigen::SparseMatrix<double>& H) {
+  Graph g(H.cols() / 3);
   for (int c = 0; c < H.outerSize(); ++c)
     for (Eigen::SparseMatrix<double>::InnerIterator it(H, c); it; ++it) {
       const int u = int(it.row()) / 3, v = c / 3;
@@ -183,19 +179,31 @@ void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::M
     std::sort(a.begin(), a.end());
     a.erase(std::unique(a.begin(), a.end()), a.end());
   }
+  return g;
+}
+
+// perm[new] = old: nested dissection by the vertices' positions, or AMD on the graph.
+std::vector<int> fillReducingOrder(const Graph& g, const Eigen::MatrixXd& points, BlockCholesky::Ordering ordering) {
+  const int n = int(g.size());
   std::vector<int> perm;
-  if (ordering == Ordering::NestedDissection && points.rows() == n && points.cols() == 3) {
+  if (ordering == BlockCholesky::Ordering::NestedDissection && points.rows() == n && points.cols() == 3) {
     std::vector<int> all(n);
     std::iota(all.begin(), all.end(), 0);
     Dissection(g, points).order(std::move(all), perm);
   } else {
     perm = amdOrder(g);
   }
+  return perm;
+}
+
+// The elimination tree of the ordering perm (Liu's algorithm with path compression), then a postorder, so that
+// every subtree and every supernode is a range of consecutive columns: order[new] = old vertex and etree[new] =
+// the parent column (-1 at a root), both in the postordered numbering.
+void postorderedElimination(const Graph& g, const std::vector<int>& perm, std::vector<int>& order,
+                            std::vector<int>& etree) {
+  const int n = int(g.size());
   std::vector<int> pinv(n);
   for (int i = 0; i < n; ++i) pinv[perm[i]] = i;
-
-  // Elimination tree (Liu's algorithm with path compression), then a postorder so that every subtree and
-  // every supernode is a range of consecutive columns.
   std::vector<int> parent(n, -1), ancestor(n, -1);
   for (int j = 0; j < n; ++j)
     for (int u : g[perm[j]])
@@ -226,30 +234,38 @@ void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::M
   }
   std::vector<int> postInv(n);
   for (int k = 0; k < n; ++k) postInv[post[k]] = k;
-  perm_.resize(n);
-  std::vector<int> etree(n);
+  order.resize(n);
+  etree.resize(n);
   for (int k = 0; k < n; ++k) {
-    perm_[k] = perm[post[k]];
+    order[k] = perm[post[k]];
     etree[k] = parent[post[k]] == -1 ? -1 : postInv[parent[post[k]]];
   }
-  for (int i = 0; i < n; ++i) pinv[perm_[i]] = i;
+}
 
-  // Column counts of L (off-diagonal vertex blocks) by row subtrees: row i of L is the union of the tree
-  // paths from each lower neighbour j < i up to i.
+// Column counts of L (off-diagonal vertex blocks) by row subtrees: row i of L is the union of the tree paths from
+// each lower neighbour j < i up to i.
+std::vector<int> columnCounts(const Graph& g, const std::vector<int>& order, const std::vector<int>& pinv,
+                              const std::vector<int>& etree) {
+  const int n = int(g.size());
   std::vector<int> count(n, 0), mark(n, -1);
   for (int i = 0; i < n; ++i) {
     mark[i] = i;
-    for (int u : g[perm_[i]])
+    for (int u : g[order[i]])
       for (int j = pinv[u]; j < i && mark[j] != i; j = etree[j]) mark[j] = i, ++count[j];
   }
-  // Fundamental supernodes: j and its parent j+1 with nested structure.
+  return count;
+}
+
+// The first column of each supernode (and n at the end): fundamental supernodes (j and its parent j+1 with nested
+// structure), then relaxed amalgamation, which merges a supernode into its parent when it ends right before it
+// (the last child in postorder) and the merged panel stays mostly nonzero: bigger dense blocks run faster than
+// the zeros cost. Sizes in vertex blocks.
+std::vector<int> amalgamatedSupernodes(const std::vector<int>& etree, const std::vector<int>& count) {
+  const int n = int(etree.size());
   std::vector<int> sFirst = {0};
   for (int j = 0; j + 1 < n; ++j)
     if (!(etree[j] == j + 1 && count[j] == count[j + 1] + 1)) sFirst.push_back(j + 1);
   sFirst.push_back(n);
-  // Relaxed amalgamation: merge a supernode into its parent when it ends right before it (the last child in
-  // postorder) and the merged panel stays mostly nonzero: bigger dense blocks run faster than the zeros
-  // cost. Sizes in vertex blocks.
   const int ns0 = int(sFirst.size()) - 1;
   std::vector<int> superOf(n);
   for (int s = 0; s < ns0; ++s)
@@ -275,33 +291,51 @@ void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::M
     zeros[p] = z;
     firstCol[p] = firstCol[s];
   }
-  first_.clear();
+  std::vector<int> first;
   for (int s = 0; s < ns0; ++s)
-    if (into[s] == -1) first_.push_back(firstCol[s]);
-  first_.push_back(n);
-  const int ns = int(first_.size()) - 1;
+    if (into[s] == -1) first.push_back(firstCol[s]);
+  first.push_back(n);
+  return first;
+}
+
+}  // namespace
+
+void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& points, Ordering ordering) {
+  n_ = int(H.cols() / 3);
+  const Graph g = vertexGraph(H);
+  std::vector<int> etree;
+  postorderedElimination(g, fillReducingOrder(g, points, ordering), perm_, etree);
+  std::vector<int> pinv(n_);
+  for (int i = 0; i < n_; ++i) pinv[perm_[i]] = i;
+  first_ = amalgamatedSupernodes(etree, columnCounts(g, perm_, pinv, etree));
+  buildRowStructure(g, pinv, etree);
+  buildScatterMap(H, pinv);
+}
+
+void BlockCholesky::buildRowStructure(const std::vector<std::vector<int>>& g, const std::vector<int>& pinv,
+                                      const std::vector<int>& etree) {
+  const int n = n_, ns = int(first_.size()) - 1;
+  superOf_.assign(n, 0);
   for (int s = 0; s < ns; ++s)
-    for (int j = first_[s]; j < first_[s + 1]; ++j) superOf[j] = s;
+    for (int j = first_[s]; j < first_[s + 1]; ++j) superOf_[j] = s;
   parent_.assign(ns, -1);
   numChildren_.assign(ns, 0);
   std::vector<std::vector<int>> children(ns);
   for (int s = 0; s < ns; ++s) {
     const int pc = etree[first_[s + 1] - 1];
     if (pc != -1) {
-      parent_[s] = superOf[pc];
+      parent_[s] = superOf_[pc];
       ++numChildren_[parent_[s]];
       children[parent_[s]].push_back(s);
     }
   }
-
-  // Row structure of each supernode: its columns, then the rows below from H and from the children.
+  // Each supernode's rows: its columns, then the rows below from H and from the children.
   rowStart_.assign(1, 0);
   rows_.clear();
   relStart_.assign(ns + 1, 0);
   std::vector<int> relOf(ns);  // offset of each child's map in rel_, filled when its parent is built
   rel_.clear();
   std::vector<int> pos(n, -1), seen(n, -1);
-  std::vector<int> relBegin(ns + 1, 0);
   for (int s = 0; s < ns; ++s) {
     const int f = first_[s], l = first_[s + 1];
     std::vector<int> r;
@@ -328,8 +362,11 @@ void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::M
   }
   // relStart_[s]: where s's map (into its parent) starts.
   for (int s = 0; s < ns; ++s) relStart_[s] = parent_[s] == -1 ? 0 : relOf[s];
+}
 
-  // Scatter map: every stored value of H to its slot in a front (column-major, leading dimension m).
+void BlockCholesky::buildScatterMap(const Eigen::SparseMatrix<double>& H, const std::vector<int>& pinv) {
+  const int ns = int(first_.size()) - 1;
+  // Every stored value of H to its slot in a front (column-major, leading dimension m).
   std::vector<int> owner(H.nonZeros()), slot(H.nonZeros());
   std::vector<int> perSuper(ns + 1, 0);
   for (int c = 0; c < H.outerSize(); ++c)
@@ -337,7 +374,7 @@ void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::M
       const int r = H.innerIndexPtr()[k];
       int pr = pinv[r / 3], pc = pinv[c / 3], dr = r % 3, dc = c % 3;
       if (pr < pc) std::swap(pr, pc), std::swap(dr, dc);
-      const int s = superOf[pc];
+      const int s = superOf_[pc];
       const int m = 3 * (rowStart_[s + 1] - rowStart_[s]);
       // Rows of s are its own columns (in order) then the sorted rows below; find pr among them.
       const int* rb = rows_.data() + rowStart_[s];
@@ -358,6 +395,7 @@ void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::M
     scatterFrom_[at] = k;
     scatterTo_[at] = slot[k];
   }
+  // The factor's panels and the work space, once.
   panelStart_.assign(ns + 1, 0);
   int maxM = 0;
   for (int s = 0; s < ns; ++s) {
@@ -368,7 +406,7 @@ void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::M
   panels_.assign(panelStart_[ns], 0.0);
   front_.resize(maxM, maxM);
   stack_.clear();
-  work_.resize(3 * n);
+  work_.resize(3 * n_);
 }
 
 double BlockCholesky::factorNonZeros() const { return double(panels_.size()); }
