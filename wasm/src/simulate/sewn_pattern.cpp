@@ -49,21 +49,13 @@ void checkIndices(const Pattern& p, const PatternLimits& limits) {
   }
 }
 
-}  // namespace
-
-SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
-  checkIndices(p, limits);
+// Stitches join panel boundary vertices only (a stitch in a panel's interior is a drawing mistake); the panel
+// vertices they join, as sets.
+UnionFind stitchedVertices(const Pattern& p, const SewnMesh& m,
+                           const std::vector<std::map<std::pair<int, int>, std::pair<int, int>>>& boundary) {
   const int numPanels = static_cast<int>(p.panels.size());
-  SewnMesh m;
-  m.panelVertexStart.assign(numPanels + 1, 0);
-  for (int i = 0; i < numPanels; ++i)
-    m.panelVertexStart[i + 1] = m.panelVertexStart[i] + int(p.panels[i].vertices.rows());
-
-  // Stitches join panel boundary vertices only: a stitch in a panel's interior is a drawing mistake.
-  std::vector<std::map<std::pair<int, int>, std::pair<int, int>>> boundary(numPanels);
   std::vector<std::vector<char>> onBoundary(numPanels);
   for (int i = 0; i < numPanels; ++i) {
-    boundary[i] = outlineEdges(p.panels[i]);
     onBoundary[i].assign(p.panels[i].vertices.rows(), 0);
     for (const auto& [key, e] : boundary[i]) onBoundary[i][key.first] = onBoundary[i][key.second] = 1;
   }
@@ -76,7 +68,12 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
                                               "; stitches may only join panel edges.");
     uf.unite(m.panelVertexStart[st.panelA] + st.vertexA, m.panelVertexStart[st.panelB] + st.vertexB);
   }
-  // Simulation vertices numbered by first appearance: deterministic for a given file.
+  return uf;
+}
+
+// One simulation vertex per set of stitched panel vertices, numbered by first appearance: deterministic for a
+// given file.
+void numberSimulationVertices(UnionFind& uf, SewnMesh& m) {
   m.simVertexOf.assign(m.panelVertexStart.back(), -1);
   std::vector<int> rootIndex(m.panelVertexStart.back(), -1);
   for (int g = 0; g < m.panelVertexStart.back(); ++g) {
@@ -88,7 +85,11 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
     m.simVertexOf[g] = rootIndex[r];
     ++m.stitchedCount[rootIndex[r]];
   }
+}
 
+// The simulation triangles with their rest shapes; flat, clockwise or self-sewn triangles are refused.
+void sewTriangles(const Pattern& p, SewnMesh& m) {
+  const int numPanels = static_cast<int>(p.panels.size());
   const long long triangles = numTriangles(p);
   m.triangles.resize(triangles, 3);
   m.rest.resize(triangles);
@@ -122,8 +123,10 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
     }
   }
   m.meanEdgeLength = edgeSum / (3.0 * double(triangles));
+}
 
-  // The outer surface must close: every sewn edge is used once in each direction by outer triangles.
+// The outer surface must close: every sewn edge is used once in each direction by outer triangles.
+void checkClosed(const Pattern& p, const SewnMesh& m) {
   std::map<std::pair<int, int>, std::pair<int, int>> uses;  // directed edge -> (count, triangle)
   for (int f = 0; f < m.numTriangles(); ++f) {
     if (!m.outer[f]) continue;
@@ -158,8 +161,12 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
                     "every outer panel edge to a matching edge.",
                 panel, vertex);
   }
+}
 
-  // Warnings: sewn boundary edges of different lengths (DESIGN.md, Eq. 11 wants them equal).
+// Sewn boundary edges of different lengths (DESIGN.md: Eq. 11 wants them equal), as warnings.
+void warnSeamLengths(const Pattern& p, const std::vector<std::map<std::pair<int, int>, std::pair<int, int>>>& boundary,
+                     SewnMesh& m) {
+  const int numPanels = static_cast<int>(p.panels.size());
   std::map<std::pair<int, int>, std::pair<double, int>> sewnLength;  // sim edge -> (length, panel)
   for (int i = 0; i < numPanels; ++i)
     for (const auto& [key, e] : boundary[i]) {
@@ -178,6 +185,24 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
                                   " %; the seam will pucker.",
                               mismatch});
     }
+}
+
+}  // namespace
+
+SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
+  checkIndices(p, limits);
+  const int numPanels = static_cast<int>(p.panels.size());
+  SewnMesh m;
+  m.panelVertexStart.assign(numPanels + 1, 0);
+  for (int i = 0; i < numPanels; ++i)
+    m.panelVertexStart[i + 1] = m.panelVertexStart[i] + int(p.panels[i].vertices.rows());
+  std::vector<std::map<std::pair<int, int>, std::pair<int, int>>> boundary(numPanels);
+  for (int i = 0; i < numPanels; ++i) boundary[i] = outlineEdges(p.panels[i]);
+  UnionFind uf = stitchedVertices(p, m, boundary);
+  numberSimulationVertices(uf, m);
+  sewTriangles(p, m);
+  checkClosed(p, m);
+  warnSeamLengths(p, boundary, m);
   return m;
 }
 
