@@ -10,7 +10,7 @@ namespace billow {
 
 // Moves x (the inflated shape of pattern X) in place; returns the Gauss-Newton iterations used. Stops when the
 // step is below tolerance x D. The adjoint gradient needs the minimum itself: on a nearly rotation-invariant
-// target (a sphere) 30 steps left the reduced gradient 1-2 % off (tests/native/test_optimize.cpp).
+// target (a sphere) 30 steps left the reduced gradient 1-2 % off (tests/native/test_adjoint.cpp).
 int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vertices& x, int maxIterations = 300,
                double tolerance = 1e-12);
 
