@@ -31,6 +31,7 @@
 #include "io/design_json.hpp"
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
+#include "optimize/optimized_pattern.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/stopping_rule.hpp"
 #include "pattern/build_pattern.hpp"
@@ -65,8 +66,9 @@ struct BenchOptions {
   std::vector<std::pair<std::string, double>> set;
   bool remeshCheck = true;  // --no-remesh-check: skip the cut-panel figure (remeshedOutlines)
   double cutScale = 1;      // --cut-scale F: the cut panels are meshed at F x the design's edge length
-  std::string outDir;       // non-empty: the optimized pattern of each design is written there (NAME.pattern.json)
-  int perturb = 0;          // > 0: the seed of a rounding-level move of the flattened panels
+  std::string outDir;  // non-empty: the optimized pattern of each design, with its inflated shape, is written there
+                       // (NAME.pattern.json)
+  int perturb = 0;     // > 0: the seed of a rounding-level move of the flattened panels
 };
 
 // How far the shape a is from the final shape b: the largest vertex move when they share the mesh; else
@@ -279,7 +281,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   if (!bo.outDir.empty()) {
     std::filesystem::create_directories(bo.outDir);
     std::ofstream(bo.outDir + "/" + entry.at("name").get<std::string>() + ".pattern.json")
-        << writePatternJson(opt.pattern());
+        << writePatternJson(optimizedPattern(opt));
   }
   row.update({{"elements", built.figures.triangles},
               {"outlineTurningFlattened", turnFlat},
