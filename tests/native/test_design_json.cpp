@@ -166,7 +166,7 @@ TEST(DesignJson, ThreeDimensionalPointsAreProjectedOntoTheScaledTarget) {
   const Design d = readDesignJson(readFileBytes(path));
   const auto scene = makeDesignScene(d, path, {examplesDir()});
   EXPECT_NEAR(scene->scale, 0.25, 1e-6);
-  const std::vector<SeamSpec> specs = designSeamSpecs(d, scene->target, *scene->projector, scene->scale);
+  const std::vector<SeamSpec> specs = designSeamSpecs(d.seams, scene->target, *scene->projector, scene->scale);
   ASSERT_EQ(specs.size(), 1u);
   ASSERT_EQ(specs[0].controls.size(), 3u);
   EXPECT_TRUE(specs[0].closed);
@@ -180,7 +180,7 @@ TEST(DesignJson, ThreeDimensionalPointsAreProjectedOntoTheScaledTarget) {
   bad.seams[0].points[0].onSurface = true;
   bad.seams[0].points[0].surface.face = 99999;
   try {
-    designSeamSpecs(bad, scene->target, *scene->projector, scene->scale);
+    designSeamSpecs(bad.seams, scene->target, *scene->projector, scene->scale);
     ADD_FAILURE();
   } catch (const Error& e) {
     EXPECT_EQ(e.code, "design.bad-value");
@@ -334,7 +334,7 @@ TEST(DesignJson, FarThreeDimensionalPointsAreRefused) {
   // The design's points written in millimetres for a target in meters (or any unit 1000 times smaller).
   Design mm = d;
   for (DesignPoint& p : mm.seams[0].points) p.position *= 1000;
-  expectBadValue([&] { designSeamSpecs(mm, scene->target, *scene->projector, scene->scale); },
+  expectBadValue([&] { designSeamSpecs(mm.seams, scene->target, *scene->projector, scene->scale); },
                  "Seam 1 \"belly\": point 1");
 }
 

@@ -3,20 +3,11 @@
 // E_cover keeps the target's side in view without pulling a small loop's lens inward.
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
-#include "optimize/adjoint.hpp"
-#include "optimize/harmonic_interior.hpp"
-#include "optimize/optimized_pattern.hpp"
-#include "optimize/pattern_optimizer.hpp"
 #include "optimize/rest_derivatives.hpp"
-#include "optimize/seam_projection.hpp"
-#include "optimize/stopping_rule.hpp"
 #include "optimize_fixture.hpp"
-#include "pattern/remesh_pattern.hpp"
-#include "simulate/initial_shape.hpp"
 
 using namespace billow;
 using namespace billow::test;

@@ -1,20 +1,12 @@
 // optimize/seam_projection.hpp: equal seam lengths, the tangent of that set.
 #include <gtest/gtest.h>
 
-#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 
-#include "optimize/adjoint.hpp"
-#include "optimize/harmonic_interior.hpp"
-#include "optimize/optimized_pattern.hpp"
-#include "optimize/pattern_optimizer.hpp"
 #include "optimize/rest_derivatives.hpp"
 #include "optimize/seam_projection.hpp"
-#include "optimize/stopping_rule.hpp"
 #include "optimize_fixture.hpp"
-#include "pattern/remesh_pattern.hpp"
-#include "simulate/initial_shape.hpp"
 
 using namespace billow;
 using namespace billow::test;

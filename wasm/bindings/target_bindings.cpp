@@ -334,9 +334,7 @@ class TargetSession {
 
   // The seams' control points on the target (io/design_json.hpp designSeamSpecs: faces it has, 3D points near it).
   std::vector<billow::SeamSpec> seamSpecs(const std::vector<billow::DesignSeam>& seams) const {
-    billow::Design d;
-    d.seams = seams;
-    return billow::designSeamSpecs(d, mesh_, *projector_);
+    return billow::designSeamSpecs(seams, mesh_, *projector_);
   }
 
   static json curveJson(const billow::SeamCurve& c) {

@@ -42,7 +42,7 @@ int checkDesign(const std::string& path, bool asJson) {
   try {
     const Design design = readDesignJson(readFileBytes(path));
     const auto scene = loadDesignTargetScene(design, path, exampleSearchPath(executableDir()));
-    const std::vector<SeamSpec> specs = designSeamSpecs(design, scene->target, *scene->projector, scene->scale);
+    const std::vector<SeamSpec> specs = designSeamSpecs(design.seams, scene->target, *scene->projector, scene->scale);
     size_t points = 0;
     for (const SeamSpec& s : specs) points += s.controls.size();
     if (asJson) {

@@ -484,12 +484,12 @@ SeamSpec designSeamSpec(const DesignSeam& seam, int index, const TriMesh& target
   return placeSeam(seam, index, target, projector, scale, diagonal(target));
 }
 
-std::vector<SeamSpec> designSeamSpecs(const Design& d, const TriMesh& target, const SurfaceProjector& projector,
-                                      double scale) {
+std::vector<SeamSpec> designSeamSpecs(const std::vector<DesignSeam>& seams, const TriMesh& target,
+                                      const SurfaceProjector& projector, double scale) {
   const double size = diagonal(target);
   std::vector<SeamSpec> specs;
-  for (size_t i = 0; i < d.seams.size(); ++i)
-    specs.push_back(placeSeam(d.seams[i], static_cast<int>(i), target, projector, scale, size));
+  for (size_t i = 0; i < seams.size(); ++i)
+    specs.push_back(placeSeam(seams[i], static_cast<int>(i), target, projector, scale, size));
   return specs;
 }
 

@@ -128,9 +128,9 @@ SeamSpec designSeamSpec(const DesignSeam& seam, int index, const TriMesh& target
                         double scale = 1.0);
 constexpr double kMaxPointDistance = 1.0;
 
-// The design's seams as SeamSpec on `target`, by designSeamSpec.
-std::vector<SeamSpec> designSeamSpecs(const Design& design, const TriMesh& target, const SurfaceProjector& projector,
-                                      double scale = 1.0);
+// A design's seams as SeamSpec on `target`, by designSeamSpec.
+std::vector<SeamSpec> designSeamSpecs(const std::vector<DesignSeam>& seams, const TriMesh& target,
+                                      const SurfaceProjector& projector, double scale = 1.0);
 
 // The seam as the designer sees it: "seam 3" or "seam 3 \"belly\"" (index -1: "the seam", "the seam \"belly\"").
 std::string seamLabel(int index, const std::string& name);

@@ -42,7 +42,7 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
 void traceDesignSeams(DesignScene& scene) {
   const auto t1 = Clock::now();
   scene.curves.clear();
-  for (const SeamSpec& spec : designSeamSpecs(scene.design, scene.target, *scene.projector, scene.scale))
+  for (const SeamSpec& spec : designSeamSpecs(scene.design.seams, scene.target, *scene.projector, scene.scale))
     scene.curves.push_back(buildSeamCurve(*scene.geodesic, *scene.projector, spec));
   scene.seamsMs = msSince(t1);
 }
@@ -68,20 +68,14 @@ std::unique_ptr<DesignScene> loadDesignScene(const std::string& designPath,
   return makeDesignScene(readDesignJson(readFileBytes(designPath)), designPath, exampleDirs);
 }
 
-void useDesignConnections(const Design& design, PatternBuildOptions& options) {
-  options.connections.clear();
-  for (const DesignConnection& c : design.connections)
-    if (c.seams.size() == 2) options.connections.push_back({c.seams[0], c.seams[1]});
-  options.seamNames.clear();
-  for (const DesignSeam& s : design.seams) options.seamNames.push_back(s.name);
-}
-
 PatternBuildOptions designBuildOptions(const Design& design, int triangles) {
   PatternBuildOptions options;
   options.triangles = triangles;
   options.material = design.material;
   options.pressure = design.pressure;
-  useDesignConnections(design, options);
+  for (const DesignConnection& c : design.connections)
+    if (c.seams.size() == 2) options.connections.push_back({c.seams[0], c.seams[1]});
+  for (const DesignSeam& s : design.seams) options.seamNames.push_back(s.name);
   return options;
 }
 

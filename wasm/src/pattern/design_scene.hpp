@@ -42,11 +42,8 @@ void segmentDesignScene(DesignScene& scene);
 std::unique_ptr<DesignScene> loadDesignScene(const std::string& designPath,
                                              const std::vector<std::string>& exampleDirs);
 
-// The design's internal connections and seam names (for problems and panel names) as build options.
-void useDesignConnections(const Design& design, PatternBuildOptions& options);
-
 // The options the design's panels are built with at a resolution of `triangles`: its material, pressure,
-// internal connections and seam names.
+// internal connections and seam names (for problems and panel names).
 PatternBuildOptions designBuildOptions(const Design& design, int triangles);
 
 // The design's flattened panels (buildPattern with designBuildOptions), what the optimizer starts from.

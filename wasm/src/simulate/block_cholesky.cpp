@@ -308,23 +308,23 @@ void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::M
   std::vector<int> pinv(n_);
   for (int i = 0; i < n_; ++i) pinv[perm_[i]] = i;
   first_ = amalgamatedSupernodes(etree, columnCounts(g, perm_, pinv, etree));
-  buildRowStructure(g, pinv, etree);
-  buildScatterMap(H, pinv);
+  std::vector<int> superOf(n_);
+  for (int s = 0; s + 1 < int(first_.size()); ++s)
+    for (int j = first_[s]; j < first_[s + 1]; ++j) superOf[j] = s;
+  buildRowStructure(g, pinv, etree, superOf);
+  buildScatterMap(H, pinv, superOf);
 }
 
 void BlockCholesky::buildRowStructure(const std::vector<std::vector<int>>& g, const std::vector<int>& pinv,
-                                      const std::vector<int>& etree) {
+                                      const std::vector<int>& etree, const std::vector<int>& superOf) {
   const int n = n_, ns = int(first_.size()) - 1;
-  superOf_.assign(n, 0);
-  for (int s = 0; s < ns; ++s)
-    for (int j = first_[s]; j < first_[s + 1]; ++j) superOf_[j] = s;
   parent_.assign(ns, -1);
   numChildren_.assign(ns, 0);
   std::vector<std::vector<int>> children(ns);
   for (int s = 0; s < ns; ++s) {
     const int pc = etree[first_[s + 1] - 1];
     if (pc != -1) {
-      parent_[s] = superOf_[pc];
+      parent_[s] = superOf[pc];
       ++numChildren_[parent_[s]];
       children[parent_[s]].push_back(s);
     }
@@ -364,7 +364,8 @@ void BlockCholesky::buildRowStructure(const std::vector<std::vector<int>>& g, co
   for (int s = 0; s < ns; ++s) relStart_[s] = parent_[s] == -1 ? 0 : relOf[s];
 }
 
-void BlockCholesky::buildScatterMap(const Eigen::SparseMatrix<double>& H, const std::vector<int>& pinv) {
+void BlockCholesky::buildScatterMap(const Eigen::SparseMatrix<double>& H, const std::vector<int>& pinv,
+                                    const std::vector<int>& superOf) {
   const int ns = int(first_.size()) - 1;
   // Every stored value of H to its slot in a front (column-major, leading dimension m).
   std::vector<int> owner(H.nonZeros()), slot(H.nonZeros());
@@ -374,7 +375,7 @@ void BlockCholesky::buildScatterMap(const Eigen::SparseMatrix<double>& H, const 
       const int r = H.innerIndexPtr()[k];
       int pr = pinv[r / 3], pc = pinv[c / 3], dr = r % 3, dc = c % 3;
       if (pr < pc) std::swap(pr, pc), std::swap(dr, dc);
-      const int s = superOf_[pc];
+      const int s = superOf[pc];
       const int m = 3 * (rowStart_[s + 1] - rowStart_[s]);
       // Rows of s are its own columns (in order) then the sorted rows below; find pr among them.
       const int* rb = rows_.data() + rowStart_[s];

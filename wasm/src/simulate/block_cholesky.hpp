@@ -42,16 +42,16 @@ class BlockCholesky {
 
  private:
   // analyze()'s last phases: the supernodes' parents, rows and update maps; the scatter map of H into the fronts
-  // and the factor's storage.
+  // and the factor's storage. superOf: each new vertex's supernode.
   void buildRowStructure(const std::vector<std::vector<int>>& g, const std::vector<int>& pinv,
-                         const std::vector<int>& etree);
-  void buildScatterMap(const Eigen::SparseMatrix<double>& H, const std::vector<int>& pinv);
+                         const std::vector<int>& etree, const std::vector<int>& superOf);
+  void buildScatterMap(const Eigen::SparseMatrix<double>& H, const std::vector<int>& pinv,
+                       const std::vector<int>& superOf);
 
   int n_ = 0;                  // vertices
   int raised_ = 0;             // pivots raised by the last factorize()
   std::vector<int> perm_;      // new vertex -> old vertex
   std::vector<int> first_;     // supernode s owns new vertices [first_[s], first_[s+1])
-  std::vector<int> superOf_;   // new vertex -> its supernode
   std::vector<int> rowStart_;  // rows of s (new vertices, own columns first): rows_[rowStart_[s] ..]
   std::vector<int> rows_;
   std::vector<int> parent_;       // supernode parent, -1 at a root
