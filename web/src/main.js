@@ -21,6 +21,7 @@ import { Classroom, classroomRequested } from './app/classroom.js';
 import { LayoutCompare } from './app/compare.js';
 import { statusTooltip } from './views/status-line.js';
 import { dockBoxes } from './views/boxes.js';
+import { testFacade } from './app/test-facade.js';
 
 const $ = (id) => document.getElementById(id);
 const body = (id) => $(id).querySelector('.pane-body');
@@ -242,7 +243,6 @@ const tabGuard = new TabGuard({
 });
 app.tabGuard = tabGuard;
 
-// For the end-to-end tests and the curious: the app and its solver client.
 const gallery = new Gallery(app, $('gallery-button'));
 const compare = new LayoutCompare({ app, viewport, button: $('compare-button') });
 const classroom = new Classroom({ app, viewport, theme, exporter, seamTool, statusElement: $('status') });
@@ -256,7 +256,8 @@ window.addEventListener('hashchange', () => {
     classroom.start();
   }
 });
-window.billow = { app, client, viewport, seamTool, exporter, tabGuard, theme, gallery, classroom, compare };
+// The end-to-end tests' way in (test-facade.js).
+window.billow = { app, client, viewport, seamTool, exporter, tabGuard, theme, gallery, classroom, compare, test: testFacade({ app, seamTool, gallery, classroom, compare, tabGuard, client }) };
 tabGuard
   .start()
   .then(() => app.start())
