@@ -96,6 +96,39 @@ test('cancel stops a request between steps', async () => {
   assert.equal(ok.report.ok, true);
 });
 
+test('latest: a newer call of the same kind cancels the older, which reports nothing more; only the newest answers', async () => {
+  const client = newClient();
+  await client.ready;
+  const progress = { first: 0, second: 0 };
+  const first = client.latest('target', Op.loadTarget, { fileName: 'spot.obj', bytes: bytesOf('spot.obj') }, {
+    onProgress: () => (progress.first += 1),
+  });
+  assert.equal(client.running('target'), true);
+  const second = client.latest('target', Op.loadTarget, { fileName: 'sphere.obj', bytes: bytesOf('sphere.obj') }, {
+    onProgress: () => (progress.second += 1),
+  });
+  const seenByFirst = progress.first;
+  await assert.rejects(first.promise, (e) => e.code === ErrorCode.cancelled);
+  const result = await second.promise;
+  assert.equal(result.report.ok, true);
+  assert.equal(progress.first, seenByFirst, 'no progress of a superseded call');
+  assert.ok(progress.second > 0);
+  assert.equal(client.running('target'), false);
+  // Another kind is left alone; a supersede with nothing running does nothing.
+  client.supersede('segmentation');
+  const other = client.latest('presets', Op.materialPresets, {});
+  client.latest('target', Op.loadTarget, { fileName: 'sphere.obj', bytes: bytesOf('sphere.obj') }).promise.catch(() => {});
+  assert.ok((await other.promise).length > 0);
+  client.supersede('target');
+  // The worker keeps no cancel of a request it has already answered.
+  const done = client.call(Op.materialPresets, {});
+  await done.promise;
+  client.worker.postMessage({ kind: 'cancel', id: done.id });
+  await client.request(Op.setTarget, { positions: result.positions, indices: result.indices }); // queued after the rest
+  assert.equal(client.worker.runner.cancelled.size, 0);
+  assert.equal(client.worker.runner.unfinished.size, 0);
+});
+
 test('a crashed worker is replaced, the target replayed, and the crash loop is bounded', async () => {
   const crashes = [];
   const client = newClient({ onCrash: (c) => crashes.push(c) });

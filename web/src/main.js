@@ -245,7 +245,7 @@ app.tabGuard = tabGuard;
 
 const gallery = new Gallery(app, $('gallery-button'));
 const compare = new LayoutCompare({ app, viewport, button: $('compare-button') });
-const classroom = new Classroom({ app, viewport, theme, exporter, seamTool, statusElement: $('status') });
+const classroom = new Classroom({ app, viewport, theme, exporter, seamTool });
 $('classroom-button').addEventListener('click', () => {
   compare.close();
   classroom.start();

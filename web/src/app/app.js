@@ -1,14 +1,14 @@
 // The application controller: owns the design document (through its undo history), talks to the
 // worker, updates the panes, autosaves, and shares designs by link or file.
-import { Op } from '../worker/protocol.js';
+import { Op, ErrorCode } from '../worker/protocol.js';
 import { EXAMPLES, findExample } from './examples.js';
 import { newDesign, parseDesign, clampHeight } from './design.js';
 import { autosave, tabRecordKey } from './autosave.js';
-import { History } from './history.js';
+import { Store } from './store.js';
 import { encodeDesign, decodeDesign, linkNotice } from './share.js';
 import { awaitTarget } from './shared-link.js';
 import { PatternSession, patternForDisplay } from './pattern-session.js';
-import { canonicalJson, optimizeArgs, resultKey, DEFAULT_RESOLUTION } from './stored-result.js';
+import { optimizeArgs, resultKey } from './stored-result.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight, setUp, setMaterial, setPressure, setFabrication, setSeamAllowance, addValve, setValveWidth, removeValve } from './commands.js';
@@ -26,9 +26,6 @@ export const PATTERN_EXAMPLES = [
   { id: 'pillow', name: 'Pillow (two squares)' },
   { id: 'sphere3', name: 'Sphere (three gores)' },
 ];
-
-// What a design's panels are made from, besides the target and the resolution, as comparable text.
-const panelInputs = (design) => canonicalJson({ height: design.size.height, up: design.target.up, ...optimizeArgs(design, 0) });
 
 const AUTOSAVE_KEY = 'current';
 const STORED_STATUS = 'Showing the stored result while it is refined live';
@@ -49,40 +46,31 @@ export class App {
     this.messages = messages;
     this.el = elements;
     this.baseUrl = baseUrl;
-    this.history = new History(newDesign());
+    this.store = new Store(newDesign());
+    this.store.subscribe((what) => what === 'status' && (this.el.status.textContent = this.store.status));
     this.target = null; // { positions, indices, report, fileName }
-    this.busy = 0;
-    this.loadCounter = 0;
     this.patterns = new PatternSession({
       client,
+      store: this.store,
       panes,
       messages,
       status: (text) => this.setStatus(text),
       stats: elements.inflatedStats,
     });
     this.patterns.onPatternShown = (display, text) => this.refreshCutLines(display, text);
-    this.patterns.onRunChange = () => this.notifyChange();
-    this.changeListeners = new Set();
     this.seams = new SeamEditor(this);
-    this.patternTicket = 0;
-    this.resolution = DEFAULT_RESOLUTION; // triangles of the simulation mesh (view setting, not part of the design)
-    this.stored = null; // { revision, triangles } while a stored result is shown (showStoredResult)
   }
 
   get design() {
-    return this.history.present;
+    return this.store.design;
   }
 
-  // Views of derived state (the layout comparison) subscribe here instead of polling: fn() runs after every
-  // change of the design (edits, undo, redo, a new target) or of the resolution, and whenever panels start
-  // or finish being made or inflated. Returns the function that unsubscribes.
-  onChange(fn) {
-    this.changeListeners.add(fn);
-    return () => this.changeListeners.delete(fn);
+  get revision() {
+    return this.store.revision;
   }
 
-  notifyChange() {
-    for (const fn of [...this.changeListeners]) fn();
+  get resolution() {
+    return this.store.resolution;
   }
 
   async start() {
@@ -152,16 +140,16 @@ export class App {
   }
 
   setStatus(text) {
-    this.el.status.textContent = text;
+    this.store.setStatus(text);
   }
 
   async track(label, fn) {
-    this.busy += 1;
+    this.store.working('opening', +1);
     this.setStatus(label);
     try {
       return await fn();
     } finally {
-      this.busy -= 1;
+      this.store.working('opening', -1);
     }
   }
 
@@ -229,21 +217,16 @@ export class App {
   }
 
   async loadTargetBytes(fileName, bytes, design, { quiet, stored = null }) {
-    const ticket = ++this.loadCounter;
     // The worker takes one long operation at a time: panels still being made for the design on screen would
     // hold the new target back until they are done.
-    const interrupted = Boolean(this.optimizing || this.patterns.running);
-    this.patternTicket += 1;
-    this.optimizing?.cancel();
-    this.patterns.running?.cancel();
+    const interrupted = this.stopWork();
     try {
       const result = await this.track(`Opening ${fileName}…`, () =>
-        this.client.request(Op.loadTarget, { fileName, bytes }, {
+        this.client.latest('target', Op.loadTarget, { fileName, bytes }, {
           transfer: [bytes],
           onProgress: (p) => this.setStatus(`Opening ${fileName}: ${p.stage}…`),
-        }),
+        }).promise,
       );
-      if (ticket !== this.loadCounter) return; // a newer load won
       this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
       const opened = design;
       if (this.awaited) design = this.awaited.attach(fileName, result, design); // the linked design, if this file is its mesh
@@ -260,6 +243,7 @@ export class App {
       for (const issue of shown)
         if (!quiet || issue.severity !== 'notice') this.messages.show(issue.severity, issue.message, [], { cause: `target.${issue.code}` });
     } catch (error) {
+      if (error.code === ErrorCode.cancelled) return; // a newer load won
       const report = error.details?.report;
       const items = report ? report.issues.filter((i) => i.severity === 'error').map((i) => i.message) : [];
       const text = report
@@ -295,7 +279,7 @@ export class App {
   // its optimized panels and their inflated shape, shown at once. The live optimization then runs as usual
   // but shows none of its iterates, worse than the stored result until the last; its result replaces it.
   async showStoredResult(stored) {
-    this.stored = { revision: this.revision, triangles: this.resolution };
+    this.store.setResult('stored', true);
     const status = () => this.storedShown() && this.setStatus(`${STORED_STATUS}…`);
     const result = await this.patterns.open('the stored optimized panels', stored.patternText, { status });
     if (result) await this.measureDistance(result);
@@ -303,7 +287,7 @@ export class App {
 
   // True while the stored result belongs to the current design and resolution: no edit since it was shown.
   storedShown() {
-    return this.stored?.revision === this.revision && this.stored.triangles === this.resolution;
+    return Boolean(this.store.result('stored'));
   }
 
   // Mesh files carry no units: the design's height (m) along the target's up axis fixes the scale of its units.
@@ -315,18 +299,65 @@ export class App {
   commitDesign(design, { reset = false, mergeKey = null } = {}) {
     // Panels being made for the previous design are stale now, unless the edit left all they are made from
     // as it was (the mirror plane): those panels and any stored result still belong to the design.
-    if (reset || panelInputs(design) !== panelInputs(this.design)) {
-      this.revision = (this.revision ?? 0) + 1;
-      this.patternTicket += 1;
-      this.patterns.running?.cancel();
-      this.optimizing?.cancel();
-      this.el.compareGroup.hidden = true; // "before optimization" waits for this design's own panels
-    }
-    if (reset) this.history.reset(design);
-    else this.history.apply(() => design, { mergeKey });
+    if (this.store.commit(design, { reset, mergeKey })) this.panelsOutdated();
     this.showDesign();
     this.save();
-    this.notifyChange();
+  }
+
+  // What the panels are made from changed (a new revision): the panels and inflation under way are for the
+  // design before, and "before optimization" waits for this design's own panels.
+  panelsOutdated() {
+    this.stopWork();
+    this.el.compareGroup.hidden = true;
+  }
+
+  // Stops making and inflating panels; true when something was under way.
+  stopWork() {
+    const running = this.client.running('panels') || this.client.running('inflation');
+    this.client.supersede('panels');
+    this.client.supersede('inflation');
+    return running;
+  }
+
+  // The results on screen leave: the panes, their figures, the optimized panels (the classroom walk, done).
+  clearResults() {
+    this.store.clearResults();
+    this.store.show({ patternText: null, pattern: null, inflated: null, cut: null });
+    this.panes.inflated.clear();
+    this.panes.inflated.legend.hidden = true;
+    this.panes.pattern.clear();
+    this.panes.pattern.pattern = null;
+    for (const id of ['pane-inflated', 'pane-pattern']) document.querySelector(`#${id} .hint`)?.removeAttribute('hidden');
+    this.el.inflatedStats.replaceChildren();
+    this.el.patternStats.replaceChildren();
+    this.el.compareGroup.hidden = true;
+  }
+
+  // The designer's design set aside while another is shown (the classroom walk's example): its undo history,
+  // target and opened pattern; their autosave is left as it is until takeBack.
+  setAside() {
+    this.autosavePaused = true;
+    const history = this.store.swapHistory();
+    const optimized = this.store.result('optimized');
+    const own = optimized && [optimized.patternText, optimized.flattenedText].includes(this.store.shown.patternText);
+    return { history, target: this.target, exampleValue: this.el.exampleSelect.value, openedPattern: own ? null : this.store.shown.patternText };
+  }
+
+  // The design set aside comes back with its undo steps; its panels are made again from its seams, a pattern
+  // the designer had opened is opened again. False when its target could not be installed again.
+  async takeBack(aside) {
+    this.stopWork();
+    this.clearResults();
+    const design = aside.history.present;
+    if (design.target.example) await this.loadExample(design.target.example, design);
+    else await this.installSavedMesh(design, { positions: aside.target.positions, indices: aside.target.indices }).catch(() => {});
+    if (this.design !== design) return false;
+    this.store.swapHistory(aside.history);
+    this.el.exampleSelect.value = aside.exampleValue;
+    this.showDesign();
+    this.autosavePaused = false;
+    if (aside.openedPattern) await this.patterns.open('the pattern', aside.openedPattern);
+    return true;
   }
 
   // The panels of the current seams: flattened (shown at once in the pattern pane), then optimized in the
@@ -334,16 +365,14 @@ export class App {
   // edit supersedes this one (commitDesign cancels it).
   async makePattern() {
     this.setPanelsOutdated(false);
-    const ticket = ++this.patternTicket;
     const revision = this.revision;
-    this.patterns.running?.cancel();
-    this.optimizing?.cancel();
-    const call = this.client.call(
+    this.client.supersede('inflation');
+    const call = this.client.latest(
+      'panels',
       Op.optimizeDesign,
       { ...optimizeArgs(this.design, this.resolution), scale: this.scaleFor(this.design), up: upOf(this.design) },
       {
         onProgress: (p) => {
-          if (ticket !== this.patternTicket) return;
           if (p.flattenedText) this.flattenedText = p.flattenedText;
           const step = p.iteration !== undefined && p.stage === 'optimizing'
             ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance ${formatDistance({ rms: p.distanceRms, targetRms: p.targetDistanceRms })}` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
@@ -355,23 +384,20 @@ export class App {
         },
       },
     );
-    this.optimizing = call;
-    this.notifyChange();
+    this.store.working('panels', +1);
     try {
       const result = await call.promise;
-      if (ticket !== this.patternTicket) return;
-      this.optimized = { ...result, revision }; // the design revision these panels were made for
-      this.stored = null; // replaced by the live result
+      this.store.setResult('optimized', result, revision);
+      this.store.setResult('stored', false, revision); // replaced by the live result
       this.messages.resolve('pattern', { prefix: true });
       const shown = await this.showVersion('optimized');
-      if (shown && ticket === this.patternTicket) this.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
+      if (shown && revision === this.revision) this.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
     } catch (error) {
-      if (ticket !== this.patternTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
+      if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed || revision !== this.revision) return;
       this.patternFailed(error);
       this.setStatus('');
     } finally {
-      if (this.optimizing === call) this.optimizing = null;
-      this.notifyChange();
+      this.store.working('panels', -1);
     }
   }
 
@@ -416,14 +442,15 @@ export class App {
   // The inflated pane shows the optimized panels or, for comparison (paper Fig. 8), the panels as first
   // flattened: pressure rounds them, which is why they miss the target.
   async showVersion(which) {
-    if (!this.optimized) return null;
+    const optimized = this.store.result('optimized');
+    if (!optimized) return null;
     this.el.compareGroup.hidden = false;
     this.el.showOptimized.setAttribute('aria-pressed', String(which === 'optimized'));
     this.el.showFlattened.setAttribute('aria-pressed', String(which !== 'optimized'));
     const result =
       which === 'optimized'
-        ? await this.patterns.open('the optimized panels', this.optimized.patternText)
-        : await this.patterns.open('the flattened panels', this.optimized.flattenedText);
+        ? await this.patterns.open('the optimized panels', optimized.patternText)
+        : await this.patterns.open('the flattened panels', optimized.flattenedText);
     if (result) await this.measureDistance(result);
     return result;
   }
@@ -471,8 +498,8 @@ export class App {
   }
 
   setResolution(triangles) {
-    this.resolution = triangles;
-    this.notifyChange();
+    this.store.setResolution(triangles);
+    this.panelsOutdated();
     this.remakePattern();
   }
 
@@ -482,16 +509,14 @@ export class App {
   }
 
   // The cut lines (with the seam allowance) and the pattern's figures, from the solver's exporter.
-  async refreshCutLines(display = this.patterns.display, text = this.patterns.currentText) {
+  async refreshCutLines(display = this.store.shown.pattern, text = this.store.shown.patternText) {
     if (!text) return;
-    const ticket = (this.cutTicket = (this.cutTicket ?? 0) + 1);
     const f = this.design.fabrication;
     try {
-      const result = await this.client.request(Op.exportPattern, {
+      const result = await this.client.latest('cut-lines', Op.exportPattern, {
         patternText: text,
         options: exportOptions(f),
-      });
-      if (ticket !== this.cutTicket) return;
+      }).promise;
       const widths = Object.fromEntries(result.statistics.seams.map((seam) => [seam.id, seam.allowance_mm]));
       widths[-1] = result.statistics.free_edge_allowance_mm;
       const totals = result.statistics.totals;
@@ -506,14 +531,14 @@ export class App {
           size: (widthMm, heightMm) => formatSize(widthMm, heightMm, f.units),
         },
       });
-      this.cutStatistics = result.statistics;
+      this.store.show({ cut: result.statistics });
       this.messages.resolve('cut-lines');
       this.noteUnplacedValves(result.statistics.valves);
       this.allowancePanel?.setSeams(result.statistics);
       renderStats(this.el.patternStats, patternStatRows(result.statistics, f.units));
     } catch (error) {
-      if (ticket !== this.cutTicket || error.code === 'cancelled' || error.code === 'worker.crashed') return;
-      this.cutStatistics = null;
+      if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
+      this.store.show({ cut: null });
       renderStats(this.el.patternStats, []);
       // A piece wider than the sheet: the width that fits every piece, in one click.
       const fits = error.code === 'export.sheet-too-narrow' && error.details?.sheet_width <= MAX_SHEET && error.details.sheet_width;
@@ -582,7 +607,7 @@ export class App {
       this.showDesign(); // a field typed back to what it was shows the stored value again
       return;
     }
-    this.history.apply(() => next, { mergeKey });
+    this.store.commit(next, { mergeKey });
     this.showDesign();
     this.save();
     this.refreshCutLines();
@@ -641,9 +666,8 @@ export class App {
 
   // A fix-up that belongs to the edit just made: no new undo step.
   amendDesign(design) {
-    this.history.amend(() => design);
+    if (this.store.amend(design)) this.panelsOutdated();
     this.save();
-    this.notifyChange();
   }
 
   showDesign() {
@@ -672,8 +696,8 @@ export class App {
     if (this.panes.inflated.targetScale !== this.scaleFor(design) || this.panes.inflated.targetOf !== this.target)
       this.panes.inflated.setTarget(this.target, this.scaleFor(design));
     renderTargetStats(this.el.stats, this.target, this.scaleFor(design), upOf(design));
-    this.el.undoButton.disabled = !this.history.canUndo;
-    this.el.redoButton.disabled = !this.history.canRedo;
+    this.el.undoButton.disabled = !this.store.history.canUndo;
+    this.el.redoButton.disabled = !this.store.history.canRedo;
   }
 
   setHeight(meters) {
@@ -700,20 +724,18 @@ export class App {
 
 
   undo() {
-    this.history.undo();
-    this.afterHistoryMove();
+    this.afterHistoryMove(this.store.undo());
   }
 
   redo() {
-    this.history.redo();
-    this.afterHistoryMove();
+    this.afterHistoryMove(this.store.redo());
   }
 
-  afterHistoryMove() {
+  afterHistoryMove(newRevision) {
+    if (newRevision) this.panelsOutdated();
     this.seams.selection = null;
     this.showDesign();
     this.save();
-    this.notifyChange();
     this.seams.refresh();
     this.refreshCutLines();
   }

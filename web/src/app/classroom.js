@@ -11,7 +11,6 @@
 import { Box3, Sphere, Vector3 } from 'three';
 import { parseDesign } from './design.js';
 import { upFrameSize, upOf } from './up-axis.js';
-import { History } from './history.js';
 import { patternForDisplay } from './pattern-session.js';
 import { formatPercent, worseDistance } from './units.js';
 import { formatPressure } from './materials.js';
@@ -134,13 +133,12 @@ function distanceFigures(d) {
 
 export class Classroom {
   // seamTool: its mode is set to View for the walk and given back; exporter: the Export actions of step 8.
-  constructor({ app, viewport, theme, exporter, seamTool, statusElement }) {
+  constructor({ app, viewport, theme, exporter, seamTool }) {
     this.app = app;
     this.viewport = viewport;
     this.theme = theme;
     this.exporter = exporter;
     this.seamTool = seamTool;
-    this.statusElement = statusElement;
     this.active = false;
     this.index = 0;
     this.ticket = 0; // a newer step (or leaving) supersedes the step being shown
@@ -148,13 +146,15 @@ export class Classroom {
     this.naive = null; // { optimized, distance }: the first try's distance, for the panels it was measured on
     this.enteredFullscreen = false;
     this.waiting = new Set(); // the checks of until() still waiting
-    // They look again whenever the app changes (edits, panels started, made, inflated) or the seams are cut.
-    app.onChange(() => this.wake());
-    app.seams.onChange(() => this.wake());
     this.build();
-    // The seam editor redraws seams and segments as its work arrives; the early steps hide them again.
-    app.seams.onChange(() => this.active && this.hideTargetLayers());
-    new MutationObserver(() => this.showProgress()).observe(statusElement, { childList: true, characterData: true, subtree: true });
+    // The walk follows the app's store: waits look again at every change (edits, panels started, made,
+    // inflated, seams cut); the seam editor redraws seams and segments as its work arrives, which the early
+    // steps hide again; the status line is the walk's progress line.
+    app.store.subscribe((what) => {
+      this.wake();
+      if (what === 'seams' && this.active) this.hideTargetLayers();
+      if (what === 'status') this.showProgress();
+    });
     window.addEventListener('keydown', (e) => this.onKey(e), true);
     // Space activates a focused button on key up: in the walk, Space only means Next.
     window.addEventListener('keyup', (e) => this.active && e.key === ' ' && e.preventDefault(), true);
@@ -231,19 +231,13 @@ export class Classroom {
     this.naive = null;
     this.failed = null;
     this.saved = {
-      history: app.history,
-      target: app.target,
-      exampleValue: app.el.exampleSelect.value,
-      optimized: app.optimized,
-      pattern: app.patterns.currentText,
+      design: app.setAside(), // the walk's own history: loading its example resets it, not the designer's
       toolMode: this.seamTool.mode,
       messages: new Set(app.messages.container.children),
       hash: location.hash,
       colors: document.getElementById('color-select')?.value,
     };
     this.setColors('wrinkles'); // step 7 explains the wrinkle colors
-    app.autosavePaused = true;
-    app.history = new History(app.design); // the walk's own: loading its example resets it, not the designer's
     this.seamTool.setMode('orbit');
     app.seams.selection = null;
     document.body.dataset.classroom = 'true';
@@ -306,10 +300,12 @@ export class Classroom {
   async panelsReady(ticket) {
     await this.loading;
     const { app } = this;
+    const { store } = app;
     return this.until(() => {
-      const made = app.optimized && app.optimized.revision === app.revision;
-      if (made && !app.optimizing && !app.patterns.running) return true;
-      if (this.isExampleShown() && app.seams.segmentation && !app.optimizing && !made && !app.patterns.running && !app.busy) {
+      const made = store.result('optimized');
+      const working = store.isWorking('panels') || store.isWorking('inflation');
+      if (made && !working) return true;
+      if (this.isExampleShown() && app.seams.segmentation && !made && !store.isWorking()) {
         this.failed = 'The panels of the example could not be made (see the message).';
         this.show();
       }
@@ -362,7 +358,8 @@ export class Classroom {
 
   async showPanels(step, ticket) {
     const { app } = this;
-    const optimized = app.optimized;
+    const { shown } = app.store;
+    const optimized = app.store.result('optimized');
     if (step.id === 'flattened') {
       app.panes.pattern.setPattern(patternForDisplay(optimized.flattenedText, 'the flattened panels'));
       this.patternPaneOverridden = true;
@@ -372,8 +369,7 @@ export class Classroom {
     }
     const version = step.id === 'naive' ? 'flattened' : 'optimized';
     const texts = { optimized: optimized.patternText, flattened: optimized.flattenedText };
-    const shown = !this.patternPaneOverridden && app.patterns.last && app.patterns.currentText === texts[version];
-    if (!shown) {
+    if (this.patternPaneOverridden || !shown.inflated || shown.patternText !== texts[version]) {
       this.setFigure([['', version === 'flattened' ? 'Inflating the flattened panels…' : 'Inflating the optimized panels…']]);
       const result = await app.showVersion(version);
       if (ticket !== this.ticket) return;
@@ -381,8 +377,8 @@ export class Classroom {
       this.patternPaneOverridden = false;
     }
     this.reframe();
-    const naive = this.naiveDistance(version);
-    if (step.id === 'optimized' && !this.naive) await this.measureNaive(ticket);
+    const naive = this.naiveDistance(version, optimized);
+    if (step.id === 'optimized' && !this.naive) await this.measureNaive(ticket, optimized);
     if (ticket !== this.ticket) return;
     const figures = {
       naive: () => [['Pressure', formatPressure(app.design.pressure)], ...distanceFigures(naive)],
@@ -391,8 +387,8 @@ export class Classroom {
         ['First try', this.naive ? formatPercent(worseDistance(this.naive.distance)) : '—'],
         ['Optimizer steps', String(optimized.status?.iteration ?? '—')],
       ],
-      wrinkles: () => [['Most wrinkled', formatPercent(app.patterns.last?.maxCompression ?? 0), 'The largest share of the sheet taken up by wrinkles']],
-      cut: () => [['Panels', String(app.patterns.display?.panels.length ?? 0)], [app.design.fabrication.joining === 'sealed' ? 'Seal band' : 'Seam allowance', `${app.design.fabrication.allowance} mm`]],
+      wrinkles: () => [['Most wrinkled', formatPercent(shown.inflated?.maxCompression ?? 0), 'The largest share of the sheet taken up by wrinkles']],
+      cut: () => [['Panels', String(shown.pattern?.panels.length ?? 0)], [app.design.fabrication.joining === 'sealed' ? 'Seal band' : 'Seam allowance', `${app.design.fabrication.allowance} mm`]],
     };
     this.setFigure(figures[step.id]());
     if (step.id === 'cut') this.exportActions();
@@ -400,20 +396,18 @@ export class Classroom {
 
   // The distance of the first try (panels as flattened), measured once per set of panels: the inflated
   // pane's (app.showVersion measures what it shows, in the worker, on the target's own projector).
-  naiveDistance(version) {
-    const { app } = this;
-    if (this.naive?.optimized === app.optimized) return this.naive.distance;
-    const shown = app.panes.inflated.fields?.distance;
+  naiveDistance(version, optimized) {
+    if (this.naive?.optimized === optimized) return this.naive.distance;
+    const shown = this.app.panes.inflated.fields?.distance;
     if (version !== 'flattened' || !shown) return null;
-    this.naive = { optimized: app.optimized, distance: shown };
+    this.naive = { optimized, distance: shown };
     return shown;
   }
 
   // The first try's distance when its step was skipped: the flattened panels inflated in the worker,
   // without showing them.
-  async measureNaive(ticket) {
+  async measureNaive(ticket, optimized) {
     const { app } = this;
-    const optimized = app.optimized;
     this.setFigure([['', 'Measuring the first try…']]);
     try {
       const shape = await app.client.request(Op.inflatePattern, { patternText: optimized.flattenedText });
@@ -512,7 +506,7 @@ export class Classroom {
   // The app's status line, while something is being computed (its texts end with "…").
   showProgress() {
     if (!this.active) return;
-    const text = this.statusElement.textContent;
+    const text = this.app.store.status;
     this.progress.textContent = /…$/.test(text) ? text : '';
   }
 
@@ -585,38 +579,15 @@ export class Classroom {
     const { app } = this;
     const saved = this.saved;
     await this.loading?.catch(() => {});
-    app.optimizing?.cancel();
-    app.patterns.running?.cancel();
-    // The walk's results leave the panes; the designer's own are made again from their seams.
-    app.optimized = null;
-    Object.assign(app.patterns, { currentText: null, display: null, last: null, lastPattern: null });
-    app.panes.inflated.clear();
-    app.panes.inflated.legend.hidden = true;
-    app.panes.pattern.clear();
-    app.panes.pattern.pattern = null;
-    for (const id of ['pane-inflated', 'pane-pattern']) document.querySelector(`#${id} .hint`)?.removeAttribute('hidden');
-    app.el.inflatedStats.replaceChildren();
-    app.el.patternStats.replaceChildren();
-    app.el.compareGroup.hidden = true;
     this.patternPaneOverridden = false;
     // Messages about the walk's example go with it.
     for (const box of [...app.messages.container.children]) if (!saved.messages.has(box)) box.remove();
-    const design = saved.history.present;
-    if (design.target.example) await app.loadExample(design.target.example, design);
-    else await app.installSavedMesh(design, { positions: saved.target.positions, indices: saved.target.indices }).catch(() => {});
-    if (app.design !== design) {
-      // The autosave still holds the designer's design (it was paused): keep it so until the page reloads.
-      app.messages.show('error', 'Your design could not be put back after the classroom walk. It is safe in the autosave: reload the page to get it back.');
-      return;
-    }
-    app.history = saved.history; // the designer's undo steps too
-    app.el.exampleSelect.value = saved.exampleValue;
-    app.showDesign();
     this.seamTool.setMode(saved.toolMode);
     if (saved.colors) this.setColors(saved.colors);
-    app.autosavePaused = false;
-    // A pattern the designer had opened (not made from their seams) is opened again.
-    const own = saved.optimized && [saved.optimized.patternText, saved.optimized.flattenedText].includes(saved.pattern);
-    if (saved.pattern && !own) await app.patterns.open('the pattern', saved.pattern);
+    // The walk's results leave the panes; the designer's own are made again from their seams.
+    if (!(await app.takeBack(saved.design))) {
+      // The autosave still holds the designer's design (it was paused): keep it so until the page reloads.
+      app.messages.show('error', 'Your design could not be put back after the classroom walk. It is safe in the autosave: reload the page to get it back.');
+    }
   }
 }

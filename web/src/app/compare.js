@@ -1,10 +1,10 @@
 // Comparing seam layouts on one target: the designer keeps the current seams as Layout A (or B), changes
 // them, and sees the kept layouts beside the current one: the number of panels, the distance of the
-// inflated optimized panels to the target (the optimizer's own figure, App.optimized.status), the largest
+// inflated optimized panels to the target (the optimizer's own figure), the largest
 // distance and the worst wrinkling, with a thumbnail of the inflated shape. "Use" puts a kept layout's
 // seams back as an ordinary edit, so Undo returns to the seams it replaced. Kept layouts live in this
 // page only (they are views of the design, not part of it). While open, the panel follows the app through
-// App.onChange (edits, undo, panels started, made and inflated); it does nothing while the app is idle.
+// the app's store (edits, undo, panels started, made and inflated); it does nothing while the app is idle.
 import './compare.css';
 import { formatDistance, formatPercent } from './units.js';
 import { dialogHeader } from '../views/dialog-header.js';
@@ -78,7 +78,7 @@ export class LayoutCompare {
     if (!this.dialog.open) this.dialog.show();
     this.shownKey = null;
     this.render();
-    this.unsubscribe ??= this.app.onChange(() => this.render());
+    this.unsubscribe ??= this.app.store.subscribe((what) => what !== 'status' && this.render());
   }
 
   close() {
@@ -105,17 +105,16 @@ export class LayoutCompare {
 
   // The current layout's figures once its optimized panels are made and inflated, else null.
   currentFigures() {
-    const { app } = this;
-    const o = app.optimized;
-    const ready = o && o.revision === app.revision && !app.optimizing && !app.patterns.running && app.patterns.last && app.patterns.currentText === o.patternText;
-    if (!ready) return null;
+    const shown = this.app.store.optimizedShown();
+    if (!shown) return null;
+    const { optimized: o, inflated, pattern } = shown;
     return {
-      panels: app.patterns.display?.panels.length ?? 0,
+      panels: pattern?.panels.length ?? 0,
       distance: o.status?.distanceRms ?? null,
       distanceMax: o.status?.distanceMax ?? null,
       targetDistance: o.status?.targetDistanceRms ?? null,
       targetDistanceMax: o.status?.targetDistanceMax ?? null,
-      wrinkling: app.patterns.last.maxCompression ?? null,
+      wrinkling: inflated.maxCompression ?? null,
     };
   }
 
@@ -225,7 +224,7 @@ export class LayoutCompare {
     card.dataset.layout = 'current';
     card.classList.add('current');
     if (!figures) {
-      const busy = this.app.optimizing || this.app.patterns.running;
+      const busy = this.app.store.isWorking('panels') || this.app.store.isWorking('inflation');
       card.append(Object.assign(document.createElement('p'), {
         className: 'compare-note',
         textContent: busy ? 'Making the panels…' : 'No panels yet: draw seams that cut the target into pieces.',

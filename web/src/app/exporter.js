@@ -35,7 +35,7 @@ export class Exporter {
   }
 
   currentPattern() {
-    const text = this.app.patterns.currentText;
+    const text = this.app.store.shown.patternText;
     if (!text) throw new Error('there are no panels yet. Draw seams that cut the target into panels, or open a pattern.');
     return text;
   }
@@ -59,7 +59,7 @@ export class Exporter {
 
   // The outer surface of the inflated shape as one mesh, in meters.
   inflatedMesh() {
-    const shape = this.app.patterns.last;
+    const shape = this.app.store.shown.inflated;
     if (!shape) throw new Error('nothing is inflated yet.');
     const faces = [];
     for (let f = 0; f < shape.outer.length; f++) if (shape.outer[f]) faces.push(shape.triangles[3 * f], shape.triangles[3 * f + 1], shape.triangles[3 * f + 2]);

@@ -1,5 +1,6 @@
 // Importing a sewn pattern (billow-pattern JSON): the worker inflates it while the inflated pane shows
-// each streamed iterate and the pattern pane shows the panels. A new pattern cancels the running one.
+// each streamed iterate and the pattern pane shows the panels. A new pattern cancels the running one. What is
+// shown goes into the store (store.shown: the pattern, its inflated shape).
 import { Op, ErrorCode } from '../worker/protocol.js';
 import { formatVolume } from './units.js';
 import { renderStats } from '../views/stats-list.js';
@@ -74,18 +75,14 @@ export function internalPanelRow(pattern, result) {
 }
 
 export class PatternSession {
-  constructor({ client, panes, messages, status, stats }) {
+  constructor({ client, store, panes, messages, status, stats }) {
     this.client = client;
+    this.store = store;
     this.panes = panes;
     this.messages = messages;
     this.status = status; // (text) => void
     this.stats = stats; // element for the inflated shape's figures
-    this.running = null;
-    this.last = null; // the last good result
-    this.currentText = null; // the pattern shown (billow-pattern JSON text)
-    this.display = null; // the same, parsed, in meters
     this.onPatternShown = null; // (display, text) => void
-    this.onRunChange = null; // () => void: an inflation started or ended (running, last and currentText changed)
   }
 
   async openExample(name, triangles = 3000) {
@@ -102,15 +99,13 @@ export class PatternSession {
       this.messages.show('error', error.message);
       return null;
     }
-    this.running?.cancel();
     const started = performance.now();
     let shown = false;
-    const call = this.client.call(Op.inflatePattern, { patternText: text }, {
+    const call = this.client.latest('inflation', Op.inflatePattern, { patternText: text }, {
       onProgress: (p) => {
         if (p.triangles) {
           this.panes.pattern.setPattern(display);
-          this.currentText = text;
-          this.display = display;
+          this.store.show({ patternText: text, pattern: display });
           this.onPatternShown?.(display, text);
           this.panes.inflated.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer });
           shown = true;
@@ -121,28 +116,26 @@ export class PatternSession {
         status(p.iteration !== undefined ? `Inflating ${fileName}: step ${p.iteration}…` : `Inflating ${fileName}: ${p.stage}…`);
       },
     });
-    this.running = call;
-    this.onRunChange?.();
+    this.store.working('inflation', +1);
     try {
       const result = await call.promise;
       this.panes.inflated.setStrength(findMaterialPreset(display.material?.name)?.max_stress ?? null);
       this.panes.inflated.setResult(result, { frame: !shown });
-      this.last = result;
-      this.lastPattern = display;
+      this.store.show({ inflated: result });
       const seconds = ((performance.now() - started) / 1000).toFixed(1);
       // Optimized panels arrive in balance already: no steps to report then.
       status(result.iterations ? `Inflated ${fileName} in ${seconds} s (${result.iterations} steps)` : `Inflated ${fileName}: in balance under pressure`);
-      this.renderStats(result);
+      this.renderStats(result, display);
       return result;
     } catch (error) {
       if (error.code === ErrorCode.cancelled) return null;
+      const last = this.store.shown.inflated; // the last good result
       this.messages.show('error', `The pattern "${fileName}" could not be inflated: ${error.message}`);
-      status(this.last ? 'The last good result is shown.' : '');
-      if (this.last) this.panes.inflated.setResult(this.last, { frame: false });
+      status(last ? 'The last good result is shown.' : '');
+      if (last) this.panes.inflated.setResult(last, { frame: false });
       return null;
     } finally {
-      if (this.running === call) this.running = null;
-      this.onRunChange?.();
+      this.store.working('inflation', -1);
     }
   }
 
@@ -154,7 +147,7 @@ export class PatternSession {
     this.stats.title = 'The figures of the last inflated result: the panels are being optimized';
   }
 
-  renderStats(result, pattern = this.lastPattern) {
+  renderStats(result, pattern) {
     this.stats.classList.remove('stale');
     this.stats.removeAttribute('title');
     const peak = peakStress(result);

@@ -1,6 +1,7 @@
 // Seam editing: keeps the traced curves of the design's seams (derived from the document, cached by
 // their control points), previews the seam being drawn, applies seam commands through the App's
-// history, and asks the worker for the segmentation after each committed edit.
+// history, and asks the worker for the segmentation after each committed edit. Each redraw is a 'seams'
+// change of the app's store.
 import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
 import { upOf } from './up-axis.js';
@@ -18,11 +19,9 @@ export class SeamEditor {
     this.pending = new Map(); // keyOf(seam) -> promise
     this.preview = null; // Float32Array of the seam being drawn
     this.draftWarning = null; // { text, location } of what the seam being drawn would make wrong (checkDraft)
-    this.previewTicket = 0;
+    this.draft = null; // the seam being drawn, as its preview was asked for: { points, closed }
     this.selection = null; // { seam, index | null }
     this.segmentation = null;
-    this.segmentTicket = 0;
-    this.listeners = new Set();
   }
 
   get design() {
@@ -37,8 +36,13 @@ export class SeamEditor {
     return this.app.target;
   }
 
+  // fn() after every redraw of the seams and every new segmentation. Returns the function that unsubscribes.
   onChange(fn) {
-    this.listeners.add(fn);
+    return this.app.store.subscribe((what) => what === 'seams' && fn());
+  }
+
+  changed() {
+    this.app.store.changed('seams');
   }
 
   // The traces of the design's seams, aligned with design.seams (null while one is being traced).
@@ -105,25 +109,25 @@ export class SeamEditor {
     this.pane.setConnections(this.design.connections.map((c) => c.seams.map((k) => traces[k]?.curve ?? null)));
     this.pane.setSymmetryPlane(this.plane);
     this.pane.requestRender();
-    for (const fn of this.listeners) fn();
+    this.changed();
   }
 
   // The dashed curve of the seam being drawn (latest request wins); null clears it. closed: the cursor is on
   // the loop's start, so the seam would close there.
   async previewSeam(points, { closed = false } = {}) {
-    const ticket = ++this.previewTicket;
-    if (!points || points.length < 2) {
+    const draft = (this.draft = points?.length >= 2 ? { points, closed, smooth: true } : null); // as the new seam will be: smooth
+    if (!draft) {
+      this.app.client.supersede('seam-preview');
       this.preview = null;
       this.draftWarning = null;
       this.draw();
       return;
     }
     try {
-      const t = await this.trace(points, closed, true); // as the new seam will be: smooth
-      if (ticket !== this.previewTicket) return;
+      const t = await this.app.client.latest('seam-preview', Op.traceSeam, draft).promise;
       this.preview = t.curve;
       this.draw();
-      this.checkDraft({ points, closed, smooth: true }, ticket);
+      this.checkDraft(draft);
     } catch {
       // a preview that fails (e.g. the cursor left the surface) is simply not shown
     }
@@ -132,13 +136,13 @@ export class SeamEditor {
   // What the seam being drawn would make, before it is committed: a seam that crosses itself, a tiny piece or
   // a strip too thin to sew is shown as such (the preview in red, a note where it happens). One check at a
   // time: the cursor moves faster than the target is cut, so a check starts when the last one is back.
-  async checkDraft(draft, ticket) {
-    this.nextDraft = { draft, ticket };
+  async checkDraft(draft) {
+    this.nextDraft = draft;
     if (this.checkingDraft) return;
     this.checkingDraft = true;
     try {
       while (this.nextDraft) {
-        const { draft: next, ticket: nextTicket } = this.nextDraft;
+        const next = this.nextDraft;
         this.nextDraft = null;
         const seams = [...requestSeams(this.design), next];
         let result = null;
@@ -147,7 +151,7 @@ export class SeamEditor {
         } catch {
           // a check that fails says nothing about the seam: no warning
         }
-        if (nextTicket !== this.previewTicket) continue; // drawing moved on (or ended) meanwhile
+        if (next !== this.draft) continue; // drawing moved on (or ended) meanwhile
         this.draftWarning = result && draftProblem(result.problems, seams.length - 1, this.segmentation?.problems ?? [], next.closed);
         this.draw();
       }
@@ -175,7 +179,8 @@ export class SeamEditor {
   // Loops laid in one action (the section tool): lists of positions [[x, y, z]] shown as the seams-to-be; null
   // or an empty list clears them.
   previewLoops(loops) {
-    this.previewTicket++;
+    this.draft = null;
+    this.app.client.supersede('seam-preview');
     this.preview = loops?.length ? loops.map((positions) => Float32Array.from([...positions, positions[0]].flat())) : null;
     this.draftWarning = null;
     this.draw();
@@ -341,7 +346,7 @@ export class SeamEditor {
   }
 
   endDrag() {
-    this.app.history.lastKey = null; // the next drag is a new step
+    this.app.store.endStep(); // the next drag is a new step
     // Segment only once the last position is traced and the seam ends attached to the moved seam have
     // followed it (a drag's last re-trace may still be under way when the button comes up).
     this.refresh();
@@ -435,27 +440,28 @@ export class SeamEditor {
 
   // The segmentation of the target by the current seams (latest request wins).
   async segment() {
-    const ticket = ++this.segmentTicket;
     if (!this.design.seams.length) {
       // Nothing drawn yet is not a problem to report: the whole target is simply one piece.
+      this.app.client.supersede('segmentation');
       this.segmentation = null;
       this.pane.setSegments({ segments: [] });
-      for (const fn of this.listeners) fn();
+      this.changed();
       return;
     }
     const seams = requestSeams(this.design);
     try {
-      const result = await this.app.client.request(Op.segment, { seams, up: upOf(this.design) });
-      if (ticket !== this.segmentTicket) return;
+      const result = await this.app.client.latest('segmentation', Op.segment, { seams, up: upOf(this.design) }).promise;
       this.segmentation = result;
       this.pane.setSegments(result);
-      for (const fn of this.listeners) fn();
       const patternable = result.segments.length >= 2 && result.segments.every((s) => s.isDisk);
       this.app.messages.resolve('segment');
       // Seams that cut every handle open leave no handle to warn of.
       if (patternable) this.app.messages.resolve('target.mesh.genus');
+      // The panels are under way before anyone hears of the new segments: a segmentation that makes panels is
+      // never seen with none being made.
       if (patternable) this.app.makePattern();
       else this.app.setPanelsOutdated(true);
+      this.changed();
     } catch (error) {
       if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
       this.app.messages.show('error', `The target could not be cut along the seams: ${error.message}`, [], { cause: 'segment' });

@@ -9,7 +9,7 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
       return app.design;
     },
     get undoSteps() {
-      return app.history.past.length;
+      return app.store.history.past.length;
     },
     // Counts the design's changes that make new panels (a fabrication edit leaves it): results carry it.
     get revision() {
@@ -24,7 +24,7 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
       return app.scaleFor(app.design);
     },
     get status() {
-      return app.el.status.textContent;
+      return app.store.status;
     },
     // True while the walk shows its example and the designer's autosave is left alone.
     get autosavePaused() {
@@ -59,25 +59,25 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     // Panels: the optimization and the inflation under way, the optimized result of this design (null before
     // it is made, or when it belongs to an earlier revision), the pattern the panes show, its cut figures.
     get optimizing() {
-      return Boolean(app.optimizing);
+      return app.store.isWorking('panels');
     },
     get inflating() {
-      return Boolean(app.patterns.running);
+      return app.store.isWorking('inflation');
     },
     get optimized() {
-      return app.optimized ?? null;
+      return app.store.result('optimized');
     },
     get optimizedIsCurrent() {
-      return Boolean(app.optimized && app.optimized.revision === app.revision);
+      return Boolean(app.store.result('optimized'));
     },
     get shownPattern() {
-      return app.patterns.display;
+      return app.store.shown.pattern;
     },
     get shownPatternText() {
-      return app.patterns.currentText;
+      return app.store.shown.patternText;
     },
     get cutStatistics() {
-      return app.cutStatistics ?? null;
+      return app.store.shown.cut;
     },
     // The gallery's stored result is on screen: nothing was edited since it was shown.
     get storedShown() {
@@ -85,8 +85,7 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     },
     // The optimized panels of the design on screen are made, inflated and shown, and nothing runs.
     get resultShown() {
-      const o = app.optimized;
-      return Boolean(o && o.revision === app.revision && !app.optimizing && !app.patterns.running && app.patterns.currentText === o.patternText);
+      return Boolean(app.store.optimizedShown());
     },
 
     // The three views, to look at what they draw (their meshes, cameras and overlays).

@@ -15,6 +15,7 @@ export class SolverClient {
     this.nextId = 1;
     this.pending = new Map(); // id -> { resolve, reject, onProgress, op, args }
     this.replay = new Map(); // op -> args of the last successful replayable request
+    this.latestOf = new Map(); // kind -> the call latest() made last, while it runs
     this.crashes = 0;
     this.recentCrashes = 0; // crashes since the last successful reply: a loop guard
     this.broken = false;
@@ -32,7 +33,9 @@ export class SolverClient {
     this.worker.onmessageerror = () => this.crashed('a message from the solver could not be read');
   }
 
-  // Sends op(args); resolves with the result, rejects with a SolverError. Returns { promise, cancel }.
+  // Sends op(args); resolves with the result, rejects with a SolverError. Returns { promise, cancel }. A
+  // cancelled call rejects at once with ErrorCode.cancelled and reports no more progress; the worker stops it
+  // at its next step (or skips it, still queued).
   call(op, args = {}, { onProgress, transfer = [], replaying = false } = {}) {
     const id = this.nextId++;
     if (this.broken) {
@@ -44,10 +47,37 @@ export class SolverClient {
       this.pending.set(id, { resolve, reject, onProgress, op, args, replaying });
       this.worker.postMessage({ kind: 'request', id, op, args }, transfer);
       cancel = () => {
-        if (this.pending.has(id)) this.worker.postMessage({ kind: 'cancel', id });
+        if (!this.pending.has(id)) return;
+        this.pending.delete(id);
+        this.worker.postMessage({ kind: 'cancel', id });
+        reject(new SolverError(ErrorCode.cancelled, 'Cancelled.'));
       };
     });
     return { promise, cancel, id };
+  }
+
+  // The one way to ask for "the latest of its kind" (the segmentation of the seams on screen, the cut lines of
+  // the pattern shown, ...): the call of this kind still running is cancelled, so only the newest answer
+  // arrives; the older call's promise rejects with ErrorCode.cancelled. Returns { promise, cancel }.
+  latest(kind, op, args, options) {
+    this.supersede(kind);
+    const call = this.call(op, args, options);
+    this.latestOf.set(kind, call);
+    const done = () => this.latestOf.get(kind) === call && this.latestOf.delete(kind);
+    call.promise.then(done, done);
+    return call;
+  }
+
+  // Cancels the running call of this kind (latest), if there is one.
+  supersede(kind) {
+    const call = this.latestOf.get(kind);
+    this.latestOf.delete(kind);
+    call?.cancel();
+  }
+
+  // True while a call of this kind (latest) runs.
+  running(kind) {
+    return this.latestOf.has(kind);
   }
 
   request(op, args, options) {

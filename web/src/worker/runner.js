@@ -20,15 +20,17 @@ export class Runner {
     this.handlers = handlers;
     this.post = post;
     this.cancelled = new Set();
+    this.unfinished = new Set(); // ids queued or running: a cancel for any other id has nothing to stop
     this.queue = Promise.resolve();
   }
 
   receive(message) {
     if (message.kind === 'cancel') {
-      this.cancelled.add(message.id);
+      if (this.unfinished.has(message.id)) this.cancelled.add(message.id);
       return;
     }
     if (message.kind !== 'request') return;
+    this.unfinished.add(message.id);
     if (IMMEDIATE_OPS.has(message.op)) {
       // Quick, read-only operations (a seam preview while a long inflation runs) do not wait in line:
       // they run now, between two steps of whatever is running.
@@ -42,6 +44,7 @@ export class Runner {
   async run({ id, op, args }, { immediate = false } = {}) {
     const handler = this.handlers[op];
     if (!handler) {
+      this.unfinished.delete(id);
       this.post({ kind: 'reply', id, ok: false, error: { code: ErrorCode.unknownOp, message: `Unknown operation ${op}` } });
       return;
     }
@@ -69,6 +72,7 @@ export class Runner {
       }
     } finally {
       this.cancelled.delete(id);
+      this.unfinished.delete(id);
       try {
         steps?.return(); // runs the handler's finally blocks (frees wasm objects) on cancel and error
       } catch {
