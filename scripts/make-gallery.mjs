@@ -263,7 +263,7 @@ function roundPattern(pattern) {
 }
 
 // The stored result of one gallery design: its panels optimized by the worker's own handlers (as
-// App.makePattern asks for them), rounded, and checked to inflate in balance as stored.
+// Panels.make asks for them), rounded, and checked to inflate in balance as stored.
 async function makeResult(api, file) {
   const { parseDesign } = await import('../web/src/app/design.js');
   const { findExample } = await import('../web/src/app/examples.js');

@@ -37,6 +37,5 @@ export class HeadlessApp {
   amendDesign(design) {
     this.store.amend(design);
   }
-  makePattern() {}
-  setPanelsOutdated() {}
+  panels = { make: () => {}, remake: () => {}, markOutdated: () => {} };
 }

@@ -135,8 +135,8 @@ document.addEventListener('click', (event) => {
   if (exportMenu.open && !exportMenu.contains(event.target)) exportMenu.open = false;
 });
 $('resolution-select').addEventListener('change', (event) => app.setResolution(Number(event.target.value)));
-$('show-optimized').addEventListener('click', () => app.showVersion('optimized'));
-$('show-flattened').addEventListener('click', () => app.showVersion('flattened'));
+$('show-optimized').addEventListener('click', () => app.panels.showVersion('optimized'));
+$('show-flattened').addEventListener('click', () => app.panels.showVersion('flattened'));
 // The inflated pane's colors: wrinkles, stress, distance to target (only for the target's own panels).
 const colorSelect = $('color-select');
 const setColorMode = (mode) => {

@@ -7,18 +7,17 @@ import { autosave, tabRecordKey } from './autosave.js';
 import { Store } from './store.js';
 import { encodeDesign, decodeDesign, linkNotice } from './share.js';
 import { awaitTarget } from './shared-link.js';
-import { PatternSession, patternForDisplay } from './pattern-session.js';
-import { optimizeArgs, resultKey } from './stored-result.js';
+import { PatternSession } from './pattern-session.js';
+import { Panels } from './panels.js';
+import { resultKey } from './stored-result.js';
 import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight, setUp, setMaterial, setPressure, setFabrication, setSeamAllowance, addValve, setValveWidth, removeValve } from './commands.js';
 import { upOf, heightScale, withGuessedUp } from './up-axis.js';
 import { standUp } from '../views/up-frame.js';
-import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, MAX_VALVE_WIDTH, DEFAULT_VALVE_WIDTH, fabricationWithJoining, patternStatRows, exportOptions, grainMode, GRAIN_FIELDS, seamLabel, formatMillimeters, formatSize, joiningOf } from './fabrication.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, MAX_VALVE_WIDTH, DEFAULT_VALVE_WIDTH, fabricationWithJoining, grainMode, GRAIN_FIELDS, seamLabel, joiningOf } from './fabrication.js';
 import { download } from './download.js';
-import { renderStats } from '../views/stats-list.js';
 import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
-import { formatDistance } from './units.js';
 
 // Example patterns computed by the solver (wasm/src/simulate/example_patterns.cpp).
 export const PATTERN_EXAMPLES = [
@@ -28,16 +27,7 @@ export const PATTERN_EXAMPLES = [
 ];
 
 const AUTOSAVE_KEY = 'current';
-const STORED_STATUS = 'Showing the stored result while it is refined live';
 const TAB_RECORD_DAYS = 30; // per-tab records older than this are deleted
-
-// How the optimizer ended (its state, OptimizeState in pattern_optimizer.hpp), in a designer's words: a run
-// that reached its limit is not one that settled.
-export function optimizerEnd({ state, iteration }) {
-  const steps = `${iteration} step${iteration === 1 ? '' : 's'}`;
-  if (state === 'converged') return `settled after ${steps}`;
-  return `stopped at the optimizer's limit (${steps}) before settling; the panels may fit a little better than shown`;
-}
 
 export class App {
   constructor({ client, panes, messages, elements, baseUrl }) {
@@ -57,7 +47,8 @@ export class App {
       status: (text) => this.setStatus(text),
       stats: elements.inflatedStats,
     });
-    this.patterns.onPatternShown = (display, text) => this.refreshCutLines(display, text);
+    this.panels = new Panels(this, this.patterns);
+    this.patterns.onPatternShown = (display, text) => this.panels.refreshCutLines(display, text);
     this.seams = new SeamEditor(this);
   }
 
@@ -219,7 +210,7 @@ export class App {
   async loadTargetBytes(fileName, bytes, design, { quiet, stored = null }) {
     // The worker takes one long operation at a time: panels still being made for the design on screen would
     // hold the new target back until they are done.
-    const interrupted = this.stopWork();
+    const interrupted = this.panels.stop();
     try {
       const result = await this.track(`Opening ${fileName}…`, () =>
         this.client.latest('target', Op.loadTarget, { fileName, bytes }, {
@@ -251,7 +242,7 @@ export class App {
         : `${error.message}${this.target ? ' Your current design is unchanged.' : ''}`;
       this.messages.show('error', text, items);
       if (!this.target) this.setStatus('');
-      if (interrupted) this.remakePattern(); // the design stays: so do its panels
+      if (interrupted) this.panels.remake(); // the design stays: so do its panels
     }
   }
 
@@ -267,27 +258,12 @@ export class App {
     this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
     this.panes.target.setTarget(this.target, this.scaleFor(design));
     this.seams.reset();
-    this.setPanelsOutdated(false);
+    this.panels.markOutdated(false);
     this.commitDesign(design, { reset: true });
     // The seams (and so the live optimization) after the stored result: its inflation and cut lines are then
     // queued in the worker first, not held back until the optimization is done.
-    if (stored) this.showStoredResult(stored).finally(() => this.seams.refresh());
+    if (stored) this.panels.showStored(stored).finally(() => this.seams.refresh());
     else this.seams.refresh();
-  }
-
-  // A stored result of the design just opened (a gallery design's, made at build time by this pipeline):
-  // its optimized panels and their inflated shape, shown at once. The live optimization then runs as usual
-  // but shows none of its iterates, worse than the stored result until the last; its result replaces it.
-  async showStoredResult(stored) {
-    this.store.setResult('stored', true);
-    const status = () => this.storedShown() && this.setStatus(`${STORED_STATUS}…`);
-    const result = await this.patterns.open('the stored optimized panels', stored.patternText, { status });
-    if (result) await this.measureDistance(result);
-  }
-
-  // True while the stored result belongs to the current design and resolution: no edit since it was shown.
-  storedShown() {
-    return Boolean(this.store.result('stored'));
   }
 
   // Mesh files carry no units: the design's height (m) along the target's up axis fixes the scale of its units.
@@ -299,38 +275,9 @@ export class App {
   commitDesign(design, { reset = false, mergeKey = null } = {}) {
     // Panels being made for the previous design are stale now, unless the edit left all they are made from
     // as it was (the mirror plane): those panels and any stored result still belong to the design.
-    if (this.store.commit(design, { reset, mergeKey })) this.panelsOutdated();
+    if (this.store.commit(design, { reset, mergeKey })) this.panels.designChanged();
     this.showDesign();
     this.save();
-  }
-
-  // What the panels are made from changed (a new revision): the panels and inflation under way are for the
-  // design before, and "before optimization" waits for this design's own panels.
-  panelsOutdated() {
-    this.stopWork();
-    this.el.compareGroup.hidden = true;
-  }
-
-  // Stops making and inflating panels; true when something was under way.
-  stopWork() {
-    const running = this.client.running('panels') || this.client.running('inflation');
-    this.client.supersede('panels');
-    this.client.supersede('inflation');
-    return running;
-  }
-
-  // The results on screen leave: the panes, their figures, the optimized panels (the classroom walk, done).
-  clearResults() {
-    this.store.clearResults();
-    this.store.show({ patternText: null, pattern: null, inflated: null, cut: null });
-    this.panes.inflated.clear();
-    this.panes.inflated.legend.hidden = true;
-    this.panes.pattern.clear();
-    this.panes.pattern.pattern = null;
-    for (const id of ['pane-inflated', 'pane-pattern']) document.querySelector(`#${id} .hint`)?.removeAttribute('hidden');
-    this.el.inflatedStats.replaceChildren();
-    this.el.patternStats.replaceChildren();
-    this.el.compareGroup.hidden = true;
   }
 
   // The designer's design set aside while another is shown (the classroom walk's example): its undo history,
@@ -346,8 +293,8 @@ export class App {
   // The design set aside comes back with its undo steps; its panels are made again from its seams, a pattern
   // the designer had opened is opened again. False when its target could not be installed again.
   async takeBack(aside) {
-    this.stopWork();
-    this.clearResults();
+    this.panels.stop();
+    this.panels.clear();
     const design = aside.history.present;
     if (design.target.example) await this.loadExample(design.target.example, design);
     else await this.installSavedMesh(design, { positions: aside.target.positions, indices: aside.target.indices }).catch(() => {});
@@ -360,136 +307,6 @@ export class App {
     return true;
   }
 
-  // The panels of the current seams: flattened (shown at once in the pattern pane), then optimized in the
-  // worker so their inflated shape matches the target (paper Sec. 5), then inflated for the panes. A newer
-  // edit supersedes this one (commitDesign cancels it).
-  async makePattern() {
-    this.setPanelsOutdated(false);
-    const revision = this.revision;
-    this.client.supersede('inflation');
-    const call = this.client.latest(
-      'panels',
-      Op.optimizeDesign,
-      { ...optimizeArgs(this.design, this.resolution), scale: this.scaleFor(this.design), up: upOf(this.design) },
-      {
-        onProgress: (p) => {
-          if (p.flattenedText) this.flattenedText = p.flattenedText;
-          const step = p.iteration !== undefined && p.stage === 'optimizing'
-            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance ${formatDistance({ rms: p.distanceRms, targetRms: p.targetDistanceRms })}` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
-            : null;
-          if (this.storedShown()) return this.setStatus(`${STORED_STATUS}: ${step ?? p.stage}…`);
-          if (p.flattenedText) this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
-          this.showIterate(p);
-          this.setStatus(step ? `Optimizing the panels: ${step}…` : `Making the panels: ${p.stage}…`);
-        },
-      },
-    );
-    this.store.working('panels', +1);
-    try {
-      const result = await call.promise;
-      this.store.setResult('optimized', result, revision);
-      this.store.setResult('stored', false, revision); // replaced by the live result
-      this.messages.resolve('pattern', { prefix: true });
-      const shown = await this.showVersion('optimized');
-      if (shown && revision === this.revision) this.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
-    } catch (error) {
-      if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed || revision !== this.revision) return;
-      this.patternFailed(error);
-      this.setStatus('');
-    } finally {
-      this.store.working('panels', -1);
-    }
-  }
-
-  // The panels shown were made from seams that have changed and now make none (SeamEditor.segment): they stay in
-  // view, dimmed and marked, the status says so, and what was said about their shape goes, until new panels.
-  setPanelsOutdated(outdated) {
-    const shown = Boolean(this.panes.inflated.shape || this.panes.pattern.pattern);
-    for (const pane of [this.panes.inflated, this.panes.pattern]) pane.element.closest('.pane')?.toggleAttribute('data-stale', outdated && shown);
-    if (!outdated || !shown) return;
-    this.messages.resolve('distance.uncovered', { prefix: true });
-    this.setStatus('These seams make no panels yet (see the seam panel): the panels shown are from the seams before');
-  }
-
-  // Panels that could not be made: each problem the builder placed is its own message, with "Show where"; memory
-  // messages say what to do on their own; others are about the seams.
-  patternFailed(error) {
-    this.messages.resolve('pattern', { prefix: true });
-    const placed = (error.details?.problems ?? []).filter((p) => p.location);
-    if (error.code === 'pattern.not-built' && placed.length) {
-      placed.slice(0, 3).reverse().forEach((p, i) => { // the first problem in last, to lead the stack
-        this.messages.show('error', `The panels could not be made from these seams: ${p.message}`, [], { cause: `pattern.${i}`, locate: () => this.showPlace(p.location) });
-      });
-      return;
-    }
-    const text = error.code?.startsWith('memory') ? error.message : `The panels could not be made from these seams: ${error.message}`;
-    this.messages.show('error', text, [], { cause: 'pattern' });
-  }
-
-  // An optimization iterate: its inflated shape (colored by its distance to the target when that is the
-  // chosen view) and, now and then, its panels. The final result replaces both.
-  showIterate(p) {
-    const pane = this.panes.inflated;
-    if (p.triangles) {
-      pane.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer }, { frame: !pane.shape });
-      this.patterns.markStatsStale();
-    }
-    else if (p.positions && pane.shape && pane.position?.count * 3 === p.positions.length) pane.updatePositions(p.positions);
-    if (p.distances && pane.shape) pane.setDistances(p.distances, p.distance, p.uncoveredTriangles);
-    if (p.patternText) this.panes.pattern.setPattern(patternForDisplay(p.patternText, 'the panels being optimized'), { frame: false });
-  }
-
-  // The inflated pane shows the optimized panels or, for comparison (paper Fig. 8), the panels as first
-  // flattened: pressure rounds them, which is why they miss the target.
-  async showVersion(which) {
-    const optimized = this.store.result('optimized');
-    if (!optimized) return null;
-    this.el.compareGroup.hidden = false;
-    this.el.showOptimized.setAttribute('aria-pressed', String(which === 'optimized'));
-    this.el.showFlattened.setAttribute('aria-pressed', String(which !== 'optimized'));
-    const result =
-      which === 'optimized'
-        ? await this.patterns.open('the optimized panels', optimized.patternText)
-        : await this.patterns.open('the flattened panels', optimized.flattenedText);
-    if (result) await this.measureDistance(result);
-    return result;
-  }
-
-  // The signed distance of an inflated shape ({ positions, triangles, outer }) to the target, from the worker:
-  // { distances (per vertex, m), rms, max (outer surface, over the target's diagonal), diagonal }.
-  distanceOf(shape) {
-    const { positions, triangles, outer } = shape;
-    return this.client.call(Op.distanceToTarget, { positions, triangles, outer, scale: this.scaleFor(this.design), up: upOf(this.design) }).promise;
-  }
-
-  // The signed distance of the shown inflated shape to the target, for the "distance to target" colors, and the
-  // other way: the parts of the target it leaves out, each a warning that shows where.
-  async measureDistance(result) {
-    const pane = this.panes.inflated;
-    const serial = pane.serial;
-    try {
-      const d = await this.distanceOf(result);
-      if (pane.serial !== serial) return;
-      pane.setDistances(d.distances, d, d.uncoveredTriangles);
-      this.warnUncovered(d.uncovered ?? []);
-    } catch (error) {
-      // Without distances the pane keeps its other colors; a crashed worker says so elsewhere.
-      if (error.code !== 'cancelled' && error.code !== 'worker.crashed') console.warn('distance to target:', error.message);
-    }
-  }
-
-  // The parts of the target the shown inflated shape leaves out (UncoveredRegion in surface_distance.hpp): where,
-  // how much, and what helps.
-  warnUncovered(regions) {
-    this.messages.resolve('distance.uncovered', { prefix: true });
-    // The newest message is on top of the stack (messages.js): the largest part goes in last, to lead.
-    const shown = regions.slice(0, 3);
-    for (let i = shown.length - 1; i >= 0; i--) {
-      const r = shown[i];
-      this.messages.show('warning', r.message, [], { cause: `distance.uncovered.${i}`, locate: () => this.showPlace(r.position, { radius: r.radius, colors: 'distance' }) });
-    }
-  }
-
   // Turns the target and inflated panes towards a place on the target (its own units) and marks it there.
   showPlace(position, { radius = 0, colors = null } = {}) {
     this.panes.target.showPlace(position, radius);
@@ -499,62 +316,8 @@ export class App {
 
   setResolution(triangles) {
     this.store.setResolution(triangles);
-    this.panelsOutdated();
-    this.remakePattern();
-  }
-
-  // After a change of the physics (resolution, material, pressure): new panels when the seams give some.
-  remakePattern() {
-    if (this.seams.segmentation?.segments?.every((s) => s.isDisk) && this.design.seams.length) this.makePattern();
-  }
-
-  // The cut lines (with the seam allowance) and the pattern's figures, from the solver's exporter.
-  async refreshCutLines(display = this.store.shown.pattern, text = this.store.shown.patternText) {
-    if (!text) return;
-    const f = this.design.fabrication;
-    try {
-      const result = await this.client.latest('cut-lines', Op.exportPattern, {
-        patternText: text,
-        options: exportOptions(f),
-      }).promise;
-      const widths = Object.fromEntries(result.statistics.seams.map((seam) => [seam.id, seam.allowance_mm]));
-      widths[-1] = result.statistics.free_edge_allowance_mm;
-      const totals = result.statistics.totals;
-      this.panes.pattern.setCutResult(display, {
-        ...result,
-        seams: result.statistics.seams,
-        sealed: result.statistics.joining === 'sealed',
-        widths,
-        captions: {
-          width: formatMillimeters(totals.sheet_width_mm, f.units),
-          length: formatMillimeters(totals.sheet_length_mm, f.units),
-          size: (widthMm, heightMm) => formatSize(widthMm, heightMm, f.units),
-        },
-      });
-      this.store.show({ cut: result.statistics });
-      this.messages.resolve('cut-lines');
-      this.noteUnplacedValves(result.statistics.valves);
-      this.allowancePanel?.setSeams(result.statistics);
-      renderStats(this.el.patternStats, patternStatRows(result.statistics, f.units));
-    } catch (error) {
-      if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
-      this.store.show({ cut: null });
-      renderStats(this.el.patternStats, []);
-      // A piece wider than the sheet: the width that fits every piece, in one click.
-      const fits = error.code === 'export.sheet-too-narrow' && error.details?.sheet_width <= MAX_SHEET && error.details.sheet_width;
-      const action = fits ? { label: `Use a ${formatMillimeters(fits, f.units)} sheet`, run: () => this.setFabrication({ sheet_width: fits }) } : null;
-      this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`, [], { cause: 'cut-lines', action });
-    }
-  }
-
-  // Valves on seams this pattern does not have (the seams were redrawn): said once, with a way to drop them.
-  noteUnplacedValves(valves = []) {
-    const lost = valves.map((v, index) => ({ ...v, index })).filter((v) => !v.placed);
-    if (!lost.length) return this.messages.resolve('valves');
-    const names = lost.map((v) => v.label).join(', ');
-    const text = `${lost.length === 1 ? 'A fill valve is' : `${lost.length} fill valves are`} on ${names}, which this pattern does not have (the seams were redrawn), so ${lost.length === 1 ? 'it is' : 'they are'} not in the cut files. Open Seams to place ${lost.length === 1 ? 'it' : 'them'} again.`;
-    const action = { label: lost.length === 1 ? 'Remove it' : 'Remove them', run: () => this.removeValves(lost.map((v) => v.index)) };
-    this.messages.show('warning', text, [], { cause: 'valves', action });
+    this.panels.designChanged();
+    this.panels.remake();
   }
 
   // Sewn or heat sealed ('sewn' | 'sealed'): an allowance left at its joining's default follows.
@@ -610,7 +373,7 @@ export class App {
     this.store.commit(next, { mergeKey });
     this.showDesign();
     this.save();
-    this.refreshCutLines();
+    this.panels.refreshCutLines();
   }
 
   // One seam's own allowance [mm] (id as in the exporter's statistics; labelled S<id + 1>), or null for the
@@ -649,7 +412,7 @@ export class App {
   setMaterialPreset(name) {
     if (name === 'custom' || (isPresetMaterial(this.design.material) && this.design.material.name === name)) return;
     this.commitDesign(setMaterial(this.design, presetMaterial(name)));
-    this.remakePattern();
+    this.panels.remake();
   }
 
   setPressure(pascals) {
@@ -661,12 +424,12 @@ export class App {
     this.messages.resolve('pressure');
     if (pascals === this.design.pressure) return;
     this.commitDesign(setPressure(this.design, pascals), { mergeKey: 'pressure' });
-    this.remakePattern();
+    this.panels.remake();
   }
 
   // A fix-up that belongs to the edit just made: no new undo step.
   amendDesign(design) {
-    if (this.store.amend(design)) this.panelsOutdated();
+    if (this.store.amend(design)) this.panels.designChanged();
     this.save();
   }
 
@@ -710,7 +473,7 @@ export class App {
     const height = clampHeight(meters);
     if (height === this.design.size.height) return;
     this.commitDesign(setHeight(this.design, height), { mergeKey: 'height' });
-    this.remakePattern(); // the panels' size changed: the edit cancelled the running optimization (commitDesign)
+    this.panels.remake(); // the panels' size changed: the edit cancelled the running optimization (commitDesign)
   }
   // Which of the target's own axes points up (up-axis.js): it stands on it and Height is measured along it, so
   // like the height it changes the panels' size; the problems' places ("near the top") are read in it too, so
@@ -732,12 +495,12 @@ export class App {
   }
 
   afterHistoryMove(newRevision) {
-    if (newRevision) this.panelsOutdated();
+    if (newRevision) this.panels.designChanged();
     this.seams.selection = null;
     this.showDesign();
     this.save();
     this.seams.refresh();
-    this.refreshCutLines();
+    this.panels.refreshCutLines();
   }
 
   // Puts the design into the page's link and copies it; a target from the designer's own file travels in

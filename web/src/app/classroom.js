@@ -371,7 +371,7 @@ export class Classroom {
     const texts = { optimized: optimized.patternText, flattened: optimized.flattenedText };
     if (this.patternPaneOverridden || !shown.inflated || shown.patternText !== texts[version]) {
       this.setFigure([['', version === 'flattened' ? 'Inflating the flattened panels…' : 'Inflating the optimized panels…']]);
-      const result = await app.showVersion(version);
+      const result = await app.panels.showVersion(version);
       if (ticket !== this.ticket) return;
       if (!result) return this.setFigure([['', 'The panels could not be inflated (see the message).']]);
       this.patternPaneOverridden = false;
@@ -395,7 +395,7 @@ export class Classroom {
   }
 
   // The distance of the first try (panels as flattened), measured once per set of panels: the inflated
-  // pane's (app.showVersion measures what it shows, in the worker, on the target's own projector).
+  // pane's (Panels.showVersion measures what it shows, in the worker, on the target's own projector).
   naiveDistance(version, optimized) {
     if (this.naive?.optimized === optimized) return this.naive.distance;
     const shown = this.app.panes.inflated.fields?.distance;
@@ -411,7 +411,7 @@ export class Classroom {
     this.setFigure([['', 'Measuring the first try…']]);
     try {
       const shape = await app.client.request(Op.inflatePattern, { patternText: optimized.flattenedText });
-      const distance = await app.distanceOf(shape);
+      const distance = await app.panels.distanceOf(shape);
       if (ticket !== this.ticket) return;
       this.naive = { optimized, distance };
     } catch {

@@ -90,7 +90,7 @@ export class PatternSession {
     return this.open(`${name} pattern`, patternText);
   }
 
-  // status: what reports the inflation's progress (a stored result's says so instead; see App.showStoredResult).
+  // status: what reports the inflation's progress (a stored result's says so instead; see Panels.showStored).
   async open(fileName, text, { status = this.status } = {}) {
     let display;
     try {

@@ -423,19 +423,19 @@ export class SeamEditor {
   setWeight(seam, weight) {
     this.app.commitDesign(this.withTwin(seam, (d, i) => cmd.setSeamWeight(d, i, weight)), { mergeKey: `weight:${seam}` });
     this.draw();
-    this.app.remakePattern();
+    this.app.panels.remake();
   }
 
   connect(a, b) {
     this.app.commitDesign(cmd.addConnection(this.design, a, b));
     this.draw();
-    this.app.remakePattern();
+    this.app.panels.remake();
   }
 
   deleteConnection(index) {
     this.app.commitDesign(cmd.deleteConnection(this.design, index));
     this.draw();
-    this.app.remakePattern();
+    this.app.panels.remake();
   }
 
   // The segmentation of the target by the current seams (latest request wins).
@@ -459,8 +459,8 @@ export class SeamEditor {
       if (patternable) this.app.messages.resolve('target.mesh.genus');
       // The panels are under way before anyone hears of the new segments: a segmentation that makes panels is
       // never seen with none being made.
-      if (patternable) this.app.makePattern();
-      else this.app.setPanelsOutdated(true);
+      if (patternable) this.app.panels.make();
+      else this.app.panels.markOutdated(true);
       this.changed();
     } catch (error) {
       if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;

@@ -8,10 +8,10 @@ export const RESULT_FORMAT = 'billow-gallery-result';
 // 2: made with the seams' stiffness (wasm/src/simulate/seam_rods.hpp); results of version 1 are not used.
 export const RESULT_VERSION = 2;
 
-// The app's resolution when it opens (App.resolution, the Panels menu's "coarse"): stored results are made at it.
+// The app's resolution when it opens (the store's resolution, the Panels menu's "coarse"): stored results are made at it.
 export const DEFAULT_RESOLUTION = 1000;
 
-// What App.makePattern asks the worker to optimize (Op.optimizeDesign) for a design at a resolution
+// What Panels.make asks the worker to optimize (Op.optimizeDesign) for a design at a resolution
 // (triangles of the simulation mesh), but the scale, which follows from the target mesh and the height.
 export function optimizeArgs(design, triangles) {
   return {

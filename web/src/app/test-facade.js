@@ -81,7 +81,7 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     },
     // The gallery's stored result is on screen: nothing was edited since it was shown.
     get storedShown() {
-      return app.storedShown();
+      return app.panels.storedShown();
     },
     // The optimized panels of the design on screen are made, inflated and shown, and nothing runs.
     get resultShown() {
@@ -109,8 +109,8 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     resolveMessages: (cause, options) => app.messages.resolve(cause, options),
     clearMessages: () => app.messages.clear(),
     setStatus: (text) => app.setStatus(text),
-    showPanelProblems: (error) => app.patternFailed(error),
-    warnUncovered: (regions) => app.warnUncovered(regions),
+    showPanelProblems: (error) => app.panels.showFailure(error),
+    warnUncovered: (regions) => app.panels.warnUncovered(regions),
 
     // The classroom walk's figures of a step ([label, value] rows).
     classroomFigures: (step) => classroom.targetFigures(step),

@@ -1,0 +1,262 @@
+// The design's panels: made from the seams' segments, optimized in the worker so their inflated shape matches
+// the target (paper Sec. 5), inflated and shown in the inflated and pattern panes with their distance to the
+// target and their cut lines. Results go into the store keyed by the design revision they were made for; a
+// newer edit supersedes the work under way (the worker client's latest).
+import { Op, ErrorCode } from '../worker/protocol.js';
+import { patternForDisplay } from './pattern-session.js';
+import { optimizeArgs } from './stored-result.js';
+import { upOf } from './up-axis.js';
+import { MAX_SHEET, patternStatRows, exportOptions, formatMillimeters, formatSize } from './fabrication.js';
+import { renderStats } from '../views/stats-list.js';
+import { formatDistance } from './units.js';
+
+const STORED_STATUS = 'Showing the stored result while it is refined live';
+
+// How the optimizer ended (its state, OptimizeState in pattern_optimizer.hpp), in a designer's words: a run
+// that reached its limit is not one that settled.
+export function optimizerEnd({ state, iteration }) {
+  const steps = `${iteration} step${iteration === 1 ? '' : 's'}`;
+  if (state === 'converged') return `settled after ${steps}`;
+  return `stopped at the optimizer's limit (${steps}) before settling; the panels may fit a little better than shown`;
+}
+
+export class Panels {
+  // app: the App (the design, its target's scale, the status line, "Show where"); patterns: the PatternSession
+  // that inflates and shows a pattern.
+  constructor(app, patterns) {
+    this.app = app;
+    this.client = app.client;
+    this.store = app.store;
+    this.panes = app.panes;
+    this.messages = app.messages;
+    this.el = app.el;
+    this.patterns = patterns;
+  }
+
+  // A stored result of the design just opened (a gallery design's, made at build time by this pipeline):
+  // its optimized panels and their inflated shape, shown at once. The live optimization then runs as usual
+  // but shows none of its iterates, worse than the stored result until the last; its result replaces it.
+  async showStored(stored) {
+    this.store.setResult('stored', true);
+    const status = () => this.storedShown() && this.app.setStatus(`${STORED_STATUS}…`);
+    const result = await this.patterns.open('the stored optimized panels', stored.patternText, { status });
+    if (result) await this.measureDistance(result);
+  }
+
+  // True while the stored result belongs to the current design and resolution: no edit since it was shown.
+  storedShown() {
+    return Boolean(this.store.result('stored'));
+  }
+
+  // What the panels are made from changed (a new revision): the panels and inflation under way are for the
+  // design before, and "before optimization" waits for this design's own panels.
+  designChanged() {
+    this.stop();
+    this.el.compareGroup.hidden = true;
+  }
+
+  // Stops making and inflating panels; true when something was under way.
+  stop() {
+    const running = this.client.running('panels') || this.client.running('inflation');
+    this.client.supersede('panels');
+    this.client.supersede('inflation');
+    return running;
+  }
+
+  // The results on screen leave: the panes, their figures, the optimized panels (the classroom walk, done).
+  clear() {
+    this.store.clearResults();
+    this.store.show({ patternText: null, pattern: null, inflated: null, cut: null });
+    this.panes.inflated.clear();
+    this.panes.inflated.legend.hidden = true;
+    this.panes.pattern.clear();
+    this.panes.pattern.pattern = null;
+    for (const id of ['pane-inflated', 'pane-pattern']) document.querySelector(`#${id} .hint`)?.removeAttribute('hidden');
+    this.el.inflatedStats.replaceChildren();
+    this.el.patternStats.replaceChildren();
+    this.el.compareGroup.hidden = true;
+  }
+
+  // The panels of the current seams: flattened (shown at once in the pattern pane), then optimized in the
+  // worker so their inflated shape matches the target (paper Sec. 5), then inflated for the panes. A newer
+  // edit supersedes this one (commitDesign cancels it).
+  async make() {
+    this.markOutdated(false);
+    const revision = this.app.revision;
+    this.client.supersede('inflation');
+    const call = this.client.latest(
+      'panels',
+      Op.optimizeDesign,
+      { ...optimizeArgs(this.app.design, this.app.resolution), scale: this.app.scaleFor(this.app.design), up: upOf(this.app.design) },
+      {
+        onProgress: (p) => {
+          const step = p.iteration !== undefined && p.stage === 'optimizing'
+            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance ${formatDistance({ rms: p.distanceRms, targetRms: p.targetDistanceRms })}` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
+            : null;
+          if (this.storedShown()) return this.app.setStatus(`${STORED_STATUS}: ${step ?? p.stage}…`);
+          if (p.flattenedText) this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
+          this.showIterate(p);
+          this.app.setStatus(step ? `Optimizing the panels: ${step}…` : `Making the panels: ${p.stage}…`);
+        },
+      },
+    );
+    this.store.working('panels', +1);
+    try {
+      const result = await call.promise;
+      this.store.setResult('optimized', result, revision);
+      this.store.setResult('stored', false, revision); // replaced by the live result
+      this.messages.resolve('pattern', { prefix: true });
+      const shown = await this.showVersion('optimized');
+      if (shown && revision === this.app.revision) this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
+    } catch (error) {
+      if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed || revision !== this.app.revision) return;
+      this.showFailure(error);
+      this.app.setStatus('');
+    } finally {
+      this.store.working('panels', -1);
+    }
+  }
+
+  // The panels shown were made from seams that have changed and now make none (SeamEditor.segment): they stay in
+  // view, dimmed and marked, the status says so, and what was said about their shape goes, until new panels.
+  markOutdated(outdated) {
+    const shown = Boolean(this.panes.inflated.shape || this.panes.pattern.pattern);
+    for (const pane of [this.panes.inflated, this.panes.pattern]) pane.element.closest('.pane')?.toggleAttribute('data-stale', outdated && shown);
+    if (!outdated || !shown) return;
+    this.messages.resolve('distance.uncovered', { prefix: true });
+    this.app.setStatus('These seams make no panels yet (see the seam panel): the panels shown are from the seams before');
+  }
+
+  // Panels that could not be made: each problem the builder placed is its own message, with "Show where"; memory
+  // messages say what to do on their own; others are about the seams.
+  showFailure(error) {
+    this.messages.resolve('pattern', { prefix: true });
+    const placed = (error.details?.problems ?? []).filter((p) => p.location);
+    if (error.code === 'pattern.not-built' && placed.length) {
+      placed.slice(0, 3).reverse().forEach((p, i) => { // the first problem in last, to lead the stack
+        this.messages.show('error', `The panels could not be made from these seams: ${p.message}`, [], { cause: `pattern.${i}`, locate: () => this.app.showPlace(p.location) });
+      });
+      return;
+    }
+    const text = error.code?.startsWith('memory') ? error.message : `The panels could not be made from these seams: ${error.message}`;
+    this.messages.show('error', text, [], { cause: 'pattern' });
+  }
+
+  // An optimization iterate: its inflated shape (colored by its distance to the target when that is the
+  // chosen view) and, now and then, its panels. The final result replaces both.
+  showIterate(p) {
+    const pane = this.panes.inflated;
+    if (p.triangles) {
+      pane.setResult({ positions: p.positions, triangles: p.triangles, outer: p.outer }, { frame: !pane.shape });
+      this.patterns.markStatsStale();
+    }
+    else if (p.positions && pane.shape && pane.position?.count * 3 === p.positions.length) pane.updatePositions(p.positions);
+    if (p.distances && pane.shape) pane.setDistances(p.distances, p.distance, p.uncoveredTriangles);
+    if (p.patternText) this.panes.pattern.setPattern(patternForDisplay(p.patternText, 'the panels being optimized'), { frame: false });
+  }
+
+  // The inflated pane shows the optimized panels or, for comparison (paper Fig. 8), the panels as first
+  // flattened: pressure rounds them, which is why they miss the target.
+  async showVersion(which) {
+    const optimized = this.store.result('optimized');
+    if (!optimized) return null;
+    this.el.compareGroup.hidden = false;
+    this.el.showOptimized.setAttribute('aria-pressed', String(which === 'optimized'));
+    this.el.showFlattened.setAttribute('aria-pressed', String(which !== 'optimized'));
+    const result =
+      which === 'optimized'
+        ? await this.patterns.open('the optimized panels', optimized.patternText)
+        : await this.patterns.open('the flattened panels', optimized.flattenedText);
+    if (result) await this.measureDistance(result);
+    return result;
+  }
+
+  // The signed distance of an inflated shape ({ positions, triangles, outer }) to the target, from the worker:
+  // { distances (per vertex, m), rms, max (outer surface, over the target's diagonal), diagonal }.
+  distanceOf(shape) {
+    const { positions, triangles, outer } = shape;
+    return this.client.call(Op.distanceToTarget, { positions, triangles, outer, scale: this.app.scaleFor(this.app.design), up: upOf(this.app.design) }).promise;
+  }
+
+  // The signed distance of the shown inflated shape to the target, for the "distance to target" colors, and the
+  // other way: the parts of the target it leaves out, each a warning that shows where.
+  async measureDistance(result) {
+    const pane = this.panes.inflated;
+    const serial = pane.serial;
+    try {
+      const d = await this.distanceOf(result);
+      if (pane.serial !== serial) return;
+      pane.setDistances(d.distances, d, d.uncoveredTriangles);
+      this.warnUncovered(d.uncovered ?? []);
+    } catch (error) {
+      // Without distances the pane keeps its other colors; a crashed worker says so elsewhere.
+      if (error.code !== 'cancelled' && error.code !== 'worker.crashed') console.warn('distance to target:', error.message);
+    }
+  }
+
+  // The parts of the target the shown inflated shape leaves out (UncoveredRegion in surface_distance.hpp): where,
+  // how much, and what helps.
+  warnUncovered(regions) {
+    this.messages.resolve('distance.uncovered', { prefix: true });
+    // The newest message is on top of the stack (messages.js): the largest part goes in last, to lead.
+    const shown = regions.slice(0, 3);
+    for (let i = shown.length - 1; i >= 0; i--) {
+      const r = shown[i];
+      this.messages.show('warning', r.message, [], { cause: `distance.uncovered.${i}`, locate: () => this.app.showPlace(r.position, { radius: r.radius, colors: 'distance' }) });
+    }
+  }
+
+  // After a change of the physics (resolution, material, pressure): new panels when the seams give some.
+  remake() {
+    if (this.app.seams.segmentation?.segments?.every((s) => s.isDisk) && this.app.design.seams.length) this.make();
+  }
+
+  // The cut lines (with the seam allowance) and the pattern's figures, from the solver's exporter.
+  async refreshCutLines(display = this.store.shown.pattern, text = this.store.shown.patternText) {
+    if (!text) return;
+    const f = this.app.design.fabrication;
+    try {
+      const result = await this.client.latest('cut-lines', Op.exportPattern, {
+        patternText: text,
+        options: exportOptions(f),
+      }).promise;
+      const widths = Object.fromEntries(result.statistics.seams.map((seam) => [seam.id, seam.allowance_mm]));
+      widths[-1] = result.statistics.free_edge_allowance_mm;
+      const totals = result.statistics.totals;
+      this.panes.pattern.setCutResult(display, {
+        ...result,
+        seams: result.statistics.seams,
+        sealed: result.statistics.joining === 'sealed',
+        widths,
+        captions: {
+          width: formatMillimeters(totals.sheet_width_mm, f.units),
+          length: formatMillimeters(totals.sheet_length_mm, f.units),
+          size: (widthMm, heightMm) => formatSize(widthMm, heightMm, f.units),
+        },
+      });
+      this.store.show({ cut: result.statistics });
+      this.messages.resolve('cut-lines');
+      this.noteUnplacedValves(result.statistics.valves);
+      this.app.allowancePanel?.setSeams(result.statistics);
+      renderStats(this.el.patternStats, patternStatRows(result.statistics, f.units));
+    } catch (error) {
+      if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) return;
+      this.store.show({ cut: null });
+      renderStats(this.el.patternStats, []);
+      // A piece wider than the sheet: the width that fits every piece, in one click.
+      const fits = error.code === 'export.sheet-too-narrow' && error.details?.sheet_width <= MAX_SHEET && error.details.sheet_width;
+      const action = fits ? { label: `Use a ${formatMillimeters(fits, f.units)} sheet`, run: () => this.app.setFabrication({ sheet_width: fits }) } : null;
+      this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`, [], { cause: 'cut-lines', action });
+    }
+  }
+
+  // Valves on seams this pattern does not have (the seams were redrawn): said once, with a way to drop them.
+  noteUnplacedValves(valves = []) {
+    const lost = valves.map((v, index) => ({ ...v, index })).filter((v) => !v.placed);
+    if (!lost.length) return this.messages.resolve('valves');
+    const names = lost.map((v) => v.label).join(', ');
+    const text = `${lost.length === 1 ? 'A fill valve is' : `${lost.length} fill valves are`} on ${names}, which this pattern does not have (the seams were redrawn), so ${lost.length === 1 ? 'it is' : 'they are'} not in the cut files. Open Seams to place ${lost.length === 1 ? 'it' : 'them'} again.`;
+    const action = { label: lost.length === 1 ? 'Remove it' : 'Remove them', run: () => this.app.removeValves(lost.map((v) => v.index)) };
+    this.messages.show('warning', text, [], { cause: 'valves', action });
+  }
+}
