@@ -195,7 +195,7 @@ async function makeThumbnails(only = []) {
     for (const id of ids) {
       const started = Date.now();
       await page.evaluate(() => { document.querySelector('#status').textContent = ''; });
-      await page.evaluate((i) => window.billow.gallery.open(i), id);
+      await page.evaluate((i) => window.billow.test.openGalleryDesign(i), id);
       await page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent)
         && !/^Inflated the flattened/.test(document.querySelector('#status').textContent), null, { timeout: 300000 });
       const seconds = ((Date.now() - started) / 1000).toFixed(1);
@@ -207,7 +207,7 @@ async function makeThumbnails(only = []) {
       // A long target is seen from its side and closer than the pane frames it.
       if (pane === 'target' && THUMBNAIL_VIEWS[id]) {
         await page.evaluate(({ direction, zoom }) => {
-          const { camera, controls, viewport } = window.billow.app.panes.target;
+          const { camera, controls, viewport } = window.billow.test.panes.target;
           const distance = camera.position.distanceTo(controls.target) / zoom;
           const n = Math.hypot(...direction);
           camera.position.set(...direction.map((d, k) => controls.target.getComponent(k) + (distance * d) / n));

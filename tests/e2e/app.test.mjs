@@ -124,17 +124,17 @@ test('panes resize with the window and the pattern pane pans and zooms', async (
   assert.ok((await paintedFraction(page, '#pane-target .pane-body')) > 0.05, 'still drawn after resize');
   const pattern = page.locator('#pane-pattern .pane-body');
   const box = await pattern.boundingBox();
-  const zoom0 = await page.evaluate(() => window.billow.app.panes.pattern.camera.zoom);
+  const zoom0 = await page.evaluate(() => window.billow.test.panes.pattern.camera.zoom);
   await page.mouse.move(box.x + box.width / 2, box.y + box.height / 2);
   await page.mouse.wheel(0, -400);
   await page.waitForTimeout(100);
-  const zoom1 = await page.evaluate(() => window.billow.app.panes.pattern.camera.zoom);
+  const zoom1 = await page.evaluate(() => window.billow.test.panes.pattern.camera.zoom);
   assert.ok(zoom1 > zoom0, `zoomed in (${zoom0} -> ${zoom1})`);
-  const x0 = await page.evaluate(() => window.billow.app.panes.pattern.camera.position.x);
+  const x0 = await page.evaluate(() => window.billow.test.panes.pattern.camera.position.x);
   await page.mouse.down();
   await page.mouse.move(box.x + box.width / 2 + 120, box.y + box.height / 2, { steps: 5 });
   await page.mouse.up();
-  const x1 = await page.evaluate(() => window.billow.app.panes.pattern.camera.position.x);
+  const x1 = await page.evaluate(() => window.billow.test.panes.pattern.camera.position.x);
   assert.ok(x1 < x0, 'dragging right moves the view left');
   await screenshot(page, 'app-resized');
   assertNoErrors(page);
@@ -148,7 +148,7 @@ test('the target and inflated panes turn together, each keeping its own zoom', a
       const d = pane.camera.position.clone().sub(pane.controls.target);
       return { dir: d.clone().normalize().toArray(), distance: d.length() };
     };
-    const { target, inflated } = window.billow.app.panes;
+    const { target, inflated } = window.billow.test.panes;
     return { target: at(target), inflated: at(inflated) };
   });
   const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
@@ -185,7 +185,7 @@ test('the target and inflated panes turn together, each keeping its own zoom', a
 
 test('a crashed solver is replaced, the designer is told, and work goes on', async () => {
   const page = await fresh();
-  const code = await page.evaluate(() => window.billow.client.request('crashForTesting').catch((e) => e.code));
+  const code = await page.evaluate(() => window.billow.test.request('crashForTesting').catch((e) => e.code));
   assert.equal(code, 'worker.crashed');
   await page.locator('.message.warning', { hasText: 'restarted' }).waitFor();
   await page.selectOption('#example-select', 'blub');

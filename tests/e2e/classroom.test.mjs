@@ -39,8 +39,8 @@ const percent = (text) => Number(text.replace(/[^\d.]/g, ''));
 // The designer's state that leaving the walk must give back.
 const designerState = (page) =>
   page.evaluate(() => {
-    const app = window.billow.app;
-    return { design: JSON.stringify(app.design), past: app.history.past.length, example: app.design.target.example };
+    const t = window.billow.test;
+    return { design: JSON.stringify(t.design), past: t.undoSteps, example: t.design.target.example };
   });
 
 // The design in the autosave record every new tab opens.
@@ -63,9 +63,9 @@ const resultShown = (page) => optimizedResultShown(page, LONG.timeout);
 test('the classroom walk shows each step of the method and gives the design back', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   // The designer's own work: the penguin with its seam, and one edit to undo.
-  await page.evaluate(() => window.billow.gallery.open('toy'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('toy'));
   await resultShown(page);
-  await page.evaluate(() => window.billow.app.setHeight(0.95));
+  await page.evaluate(() => window.billow.test.setHeight(0.95));
   const mine = await designerState(page);
   assert.equal(mine.past, 1, 'one undo step');
   await page.waitForFunction(async (design) => {
@@ -82,31 +82,31 @@ test('the classroom walk shows each step of the method and gives the design back
   await page.click('#classroom-button');
   await page.waitForSelector('aside.classroom:not([hidden])');
   assert.equal(new URL(page.url()).hash, '#classroom', 'the address is a link to the walk');
-  await page.waitForFunction(() => window.billow.app.design.target.example === 'sphere' && window.billow.app.design.seams.length === 3, null, LONG);
+  await page.waitForFunction(() => window.billow.test.design.target.example === 'sphere' && window.billow.test.design.seams.length === 3, null, LONG);
   let s = await walkState(page);
   assert.equal(s.counter, '1 / 8');
   assert.equal(s.title, 'The target shape');
   assert.deepEqual(s.panes, ['target'], 'only the target pane');
   assert.equal(await page.isVisible('.topbar'), false, 'the top bar makes room');
   // The bare target: no seams drawn, no segments colored (even once the seams are traced).
-  await page.waitForFunction(() => window.billow.app.seams.segmentation, null, LONG);
-  assert.equal(await page.evaluate(() => window.billow.app.panes.target.seams.items.children.length), 0, 'no seams on step 1');
-  assert.equal(await page.evaluate(() => Boolean(window.billow.app.panes.target.segmentsMesh)), false, 'no segments on step 1');
+  await page.waitForFunction(() => window.billow.test.segmentation, null, LONG);
+  assert.equal(await page.evaluate(() => window.billow.test.panes.target.seams.items.children.length), 0, 'no seams on step 1');
+  assert.equal(await page.evaluate(() => Boolean(window.billow.test.panes.target.segmentsMesh)), false, 'no segments on step 1');
   await screenshot(page, 'classroom-1-target');
 
   await page.keyboard.press('ArrowRight');
   await waitCounter(page, '2 / 8');
   await waitFigure(page, 'seams', /^3$/);
-  assert.ok(await page.evaluate(() => window.billow.app.panes.target.seams.items.children.length) > 0, 'the seams are drawn');
-  assert.equal(await page.evaluate(() => Boolean(window.billow.app.panes.target.segmentsMesh)), false, 'no segments yet');
+  assert.ok(await page.evaluate(() => window.billow.test.panes.target.seams.items.children.length) > 0, 'the seams are drawn');
+  assert.equal(await page.evaluate(() => Boolean(window.billow.test.panes.target.segmentsMesh)), false, 'no segments yet');
   // Editing shortcuts do nothing in the walk: D would switch to drawing seams.
   await page.keyboard.press('d');
-  assert.equal(await page.evaluate(() => window.billow.seamTool.mode), 'orbit');
+  assert.equal(await page.evaluate(() => window.billow.test.toolMode), 'orbit');
 
   await page.keyboard.press(' ');
   await waitCounter(page, '3 / 8');
   await waitFigure(page, 'segments', /^3$/);
-  assert.equal(await page.evaluate(() => Boolean(window.billow.app.panes.target.segmentsMesh)), true, 'the segments are colored');
+  assert.equal(await page.evaluate(() => Boolean(window.billow.test.panes.target.segmentsMesh)), true, 'the segments are colored');
   await screenshot(page, 'classroom-3-segments');
 
   await page.click('aside.classroom .classroom-next');
@@ -114,7 +114,7 @@ test('the classroom walk shows each step of the method and gives the design back
   await waitFigure(page, 'panels', /^3$/);
   s = await walkState(page);
   assert.deepEqual(s.panes, ['target', 'pattern']);
-  assert.equal(await page.evaluate(() => window.billow.app.panes.pattern.pattern.panels.length), 3, 'three panels in the pattern pane');
+  assert.equal(await page.evaluate(() => window.billow.test.panes.pattern.pattern.panels.length), 3, 'three panels in the pattern pane');
   await screenshot(page, 'classroom-4-flattened');
 
   await page.keyboard.press('PageDown');
@@ -123,7 +123,7 @@ test('the classroom walk shows each step of the method and gives the design back
   s = await walkState(page);
   assert.deepEqual(s.panes, ['target', 'inflated']);
   const naive = percent(s.figures['distance-to-target']);
-  assert.ok(await page.evaluate(() => window.billow.app.patterns.currentText === window.billow.app.optimized.flattenedText), 'the flattened panels are inflated');
+  assert.ok(await page.evaluate(() => window.billow.test.shownPatternText === window.billow.test.optimized.flattenedText), 'the flattened panels are inflated');
   await page.waitForTimeout(100); // the frame after the reframe
   assert.ok((await paintedFraction(page, '#pane-inflated .pane-body')) > 0.02, 'the first try is drawn');
   await screenshot(page, 'classroom-5-naive');
@@ -137,9 +137,9 @@ test('the classroom walk shows each step of the method and gives the design back
   const optimized = percent(s.figures['distance-to-target']);
   assert.ok(optimized < naive, `the optimized panels come closer: ${optimized} % < ${naive} %`);
   assert.equal(percent(s.figures['first-try']), naive);
-  const solver = await page.evaluate(() => Math.max(window.billow.app.optimized.status.distanceRms, window.billow.app.optimized.status.targetDistanceRms) * 100);
+  const solver = await page.evaluate(() => Math.max(window.billow.test.optimized.status.distanceRms, window.billow.test.optimized.status.targetDistanceRms) * 100);
   assert.ok(Math.abs(optimized - solver) < 0.5 * solver, `the walk's measure (${optimized} %) agrees with the optimizer's (${solver.toFixed(2)} %)`);
-  assert.ok(await page.evaluate(() => window.billow.app.patterns.currentText === window.billow.app.optimized.patternText), 'the optimized panels are inflated');
+  assert.ok(await page.evaluate(() => window.billow.test.shownPatternText === window.billow.test.optimized.patternText), 'the optimized panels are inflated');
   await screenshot(page, 'classroom-6-optimized');
 
   await page.keyboard.press('ArrowRight');
@@ -154,7 +154,7 @@ test('the classroom walk shows each step of the method and gives the design back
   await waitFigure(page, 'panels', /^3$/);
   assert.deepEqual((await walkState(page)).panes, ['pattern']);
   assert.equal(await page.locator('aside.classroom [data-export]').count(), 3, 'the Export actions');
-  await page.waitForFunction(() => Boolean(window.billow.app.panes.pattern.cutLines), null, LONG);
+  await page.waitForFunction(() => Boolean(window.billow.test.panes.pattern.cutLines), null, LONG);
   assert.equal(await page.isDisabled('aside.classroom .classroom-next'), true);
   await page.waitForTimeout(100);
   await screenshot(page, 'classroom-8-cut');
@@ -172,22 +172,22 @@ test('the classroom walk shows each step of the method and gives the design back
   await page.keyboard.press('Home');
   await waitCounter(page, '1 / 8');
   assert.equal(await page.isDisabled('aside.classroom .classroom-back'), true);
-  assert.equal(await page.evaluate(() => window.billow.app.panes.target.seams.items.children.length), 0, 'step 1 again: no seams');
+  assert.equal(await page.evaluate(() => window.billow.test.panes.target.seams.items.children.length), 0, 'step 1 again: no seams');
 
   // Escape: the penguin comes back with its undo step; the autosave never held the walk's example.
   await page.keyboard.press('Escape');
   await page.waitForSelector('aside.classroom', { state: 'hidden' });
-  await page.waitForFunction(() => window.billow.app.design.target.example === 'penguin' && !window.billow.app.autosavePaused, null, LONG);
+  await page.waitForFunction(() => window.billow.test.design.target.example === 'penguin' && !window.billow.test.autosavePaused, null, LONG);
   assert.deepEqual(await designerState(page), mine);
   assert.equal(await page.isEnabled('#undo-button'), true);
   assert.equal(await page.isVisible('.topbar'), true);
   assert.equal(new URL(page.url()).hash, '', 'the #classroom link is gone');
-  assert.equal(await page.evaluate(() => window.billow.seamTool.mode), 'orbit');
+  assert.equal(await page.evaluate(() => window.billow.test.toolMode), 'orbit');
   assert.equal(await autosaved(page), mine.design, 'the autosave still holds the designer\'s design');
   await resultShown(page); // the designer's panels are made again
-  assert.equal(await page.evaluate(() => window.billow.app.patterns.display.panels.length), 2);
+  assert.equal(await page.evaluate(() => window.billow.test.shownPattern.panels.length), 2);
   await page.click('#undo-button');
-  assert.equal(await page.evaluate(() => window.billow.app.design.size.height), 0.9, 'their undo step works');
+  assert.equal(await page.evaluate(() => window.billow.test.design.size.height), 0.9, 'their undo step works');
   assert.deepEqual(page.errors, []);
   await page.close();
 });
@@ -222,8 +222,8 @@ test('a #classroom link opens the walk; full screen and larger text for a projec
   assert.equal(await page.getAttribute('html', 'data-large-type'), 'false');
   await page.click('aside.classroom .classroom-leave');
   await page.waitForSelector('aside.classroom', { state: 'hidden' });
-  await page.waitForFunction(() => !window.billow.app.autosavePaused, null, LONG);
-  assert.equal(await page.evaluate(() => window.billow.app.design.target.example), 'spot', 'the default design is back');
+  await page.waitForFunction(() => !window.billow.test.autosavePaused, null, LONG);
+  assert.equal(await page.evaluate(() => window.billow.test.design.target.example), 'spot', 'the default design is back');
   assert.deepEqual(page.errors, []);
   await page.close();
 });
@@ -240,7 +240,7 @@ const cards = (page) =>
 
 test('two seam layouts compared side by side; either one can be put back, undoably', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('sphere3'));
   await resultShown(page);
   await page.click('#compare-button');
   await page.waitForSelector('dialog.compare-dialog[open]');
@@ -249,7 +249,7 @@ test('two seam layouts compared side by side; either one can be put back, undoab
 
   // Layout B: one meridian fewer, so two panels.
   await page.locator('#seam-panel .seam-list .delete').nth(2).click();
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 2);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 2);
   await page.waitForSelector('.compare-card[data-layout="current"] [data-figure="panels"]', LONG);
   let shown = await cards(page);
   assert.equal(shown.length, 2, 'two layouts side by side');
@@ -264,32 +264,21 @@ test('two seam layouts compared side by side; either one can be put back, undoab
 
   // Back to A: the two-seam layout is kept as B, so it is one click away too.
   await page.click('.compare-card[data-layout="A"] .compare-use');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 3);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 3);
   await page.waitForSelector('.compare-card[data-layout="A"].current');
   shown = await cards(page);
   assert.deepEqual(shown.map((c) => [c.layout, c.panels]), [['A', '3'], ['B', '2']]);
   await resultShown(page);
-  assert.equal(await page.evaluate(() => window.billow.app.patterns.display.panels.length), 3, 'layout A\'s panels are made again');
+  assert.equal(await page.evaluate(() => window.billow.test.shownPattern.panels.length), 3, 'layout A\'s panels are made again');
   // Undo returns to the layout that was replaced.
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 2);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 2);
   await page.waitForSelector('.compare-card[data-layout="B"].current');
   await page.click('.compare-card[data-layout="A"] .compare-use');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 3);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 3);
   await resultShown(page);
   // While the app is idle the panel does nothing: it follows the app's changes, it does not poll.
-  const idleRenders = await page.evaluate(async () => {
-    const compare = window.billow.compare;
-    const render = compare.render;
-    let calls = 0;
-    compare.render = function counted() {
-      calls += 1;
-      return render.call(this);
-    };
-    await new Promise((resolve) => setTimeout(resolve, 1500));
-    compare.render = render;
-    return calls;
-  });
+  const idleRenders = await page.evaluate(() => window.billow.test.compareRenders(1500));
   assert.equal(idleRenders, 0, 'no renders while idle');
   await page.click('dialog.compare-dialog .compare-close');
   assert.equal(await page.isVisible('dialog.compare-dialog'), false);
@@ -299,7 +288,7 @@ test('two seam layouts compared side by side; either one can be put back, undoab
 
 test('the comparison stays off the pattern pane, and its Keep buttons stay ready when only the mirror plane changes', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('sphere3'));
   await resultShown(page);
   await page.click('#compare-button');
   await page.waitForSelector('dialog.compare-dialog [data-keep="A"]:not([disabled])');
@@ -316,15 +305,15 @@ test('the comparison stays off the pattern pane, and its Keep buttons stay ready
   await screenshot(page, 'compare-beside-pattern');
   // The mirror plane is not something the panels are made from: they stay, and so do the figures.
   for (const axis of ['x', null]) {
-    const revision = await page.evaluate(() => window.billow.app.revision);
-    await page.evaluate((a) => window.billow.app.seams.setSymmetry(a), axis);
-    assert.equal(await page.evaluate(() => window.billow.app.design.symmetry?.axis ?? null), axis);
-    assert.equal(await page.evaluate(() => window.billow.app.revision), revision, 'the panels still belong to the design');
+    const revision = await page.evaluate(() => window.billow.test.revision);
+    await page.evaluate((a) => window.billow.test.setSymmetry(a), axis);
+    assert.equal(await page.evaluate(() => window.billow.test.design.symmetry?.axis ?? null), axis);
+    assert.equal(await page.evaluate(() => window.billow.test.revision), revision, 'the panels still belong to the design');
     await page.waitForSelector('dialog.compare-dialog [data-keep="B"]:not([disabled])', { timeout: 5000 });
     assert.equal(await page.isDisabled('dialog.compare-dialog [data-keep="A"]'), false, `Keep after symmetry ${axis}`);
   }
   // A seam edit still makes the panels stale until they are made again.
-  await page.evaluate(() => window.billow.app.setPressure(1500));
+  await page.evaluate(() => window.billow.test.setPressure(1500));
   assert.equal(await page.isDisabled('dialog.compare-dialog [data-keep="B"]'), true, 'Keep waits for the new panels');
   await resultShown(page);
   await page.waitForSelector('dialog.compare-dialog [data-keep="B"]:not([disabled])');

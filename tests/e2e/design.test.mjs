@@ -42,7 +42,7 @@ test('a shared link opens the same design in a fresh page; a damaged link gets a
   await page.selectOption('#example-select', 'blub');
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'blub.obj');
   await setHeight(page, 0.75);
-  const url = await page.evaluate(() => window.billow.app.shareLink());
+  const url = await page.evaluate(() => window.billow.test.shareLink());
   assert.match(url, /#design=/);
   await page.locator('.message.notice', { hasText: 'link' }).waitFor();
   await page.close();

@@ -21,7 +21,7 @@ test('two discs for a sphere: distance both ways, the parts left out shown where
   const steps = statuses.filter((s) => /^Optimizing the panels: step [1-9]/.test(s));
   assert.ok(steps.length > 0, statuses.slice(-5).join(' | '));
   for (const s of steps) assert.match(s, /distance [\d.]+ % (target → inflated|inflated → target), [\d.]+ % (inflated → target|target → inflated)/);
-  const status = await page.evaluate(() => window.billow.app.optimized.status);
+  const status = await page.evaluate(() => window.billow.test.optimized.status);
   assert.ok(status.targetDistanceRms > status.distanceRms, `two flat discs miss the sphere's poles: ${JSON.stringify(status)}`);
   assert.match(steps.at(-1), /distance [\d.]+ % target → inflated, [\d.]+ % inflated → target/, 'the worse way leads');
   // The end says how the optimizer ended.
@@ -48,14 +48,14 @@ test('two discs for a sphere: distance both ways, the parts left out shown where
   await warning.locator('button.locate').click();
   assert.equal(await page.inputValue('#color-select'), 'distance', 'showing it picks the distance colors');
   const shown = await page.evaluate(() => {
-    const app = window.billow.app;
-    const ghost = app.panes.inflated.uncoveredMesh;
-    return { mark: Boolean(app.panes.target.placeMark), ghost: Boolean(ghost?.visible), triangles: ghost ? ghost.geometry.index.count / 3 : 0,
+    const t = window.billow.test;
+    const ghost = t.panes.inflated.uncoveredMesh;
+    return { mark: Boolean(t.panes.target.placeMark), ghost: Boolean(ghost?.visible), triangles: ghost ? ghost.geometry.index.count / 3 : 0,
       note: document.querySelector('#pane-inflated .legend .note').textContent };
   });
   assert.ok(shown.mark, 'the place is marked on the target');
   const outside = await page.evaluate(() => {
-    const pane = window.billow.app.panes.inflated;
+    const pane = window.billow.test.panes.inflated;
     const Vector3 = pane.camera.position.constructor;
     const mesh = pane.uncoveredMesh, positions = mesh.geometry.attributes.position, index = mesh.geometry.index;
     mesh.updateMatrixWorld(true);
@@ -75,24 +75,20 @@ test('two discs for a sphere: distance both ways, the parts left out shown where
   await screenshot(page, 'designer-shape-uncovered');
   // Back to wrinkles: the ghost goes with the distance colors.
   await page.selectOption('#color-select', 'wrinkles');
-  assert.equal(await page.evaluate(() => window.billow.app.panes.inflated.uncoveredMesh.visible), false);
+  assert.equal(await page.evaluate(() => window.billow.test.panes.inflated.uncoveredMesh.visible), false);
   // A new seam layout takes the warning away with its cause until the new result says otherwise.
-  await page.evaluate(() => window.billow.app.warnUncovered([]));
+  await page.evaluate(() => window.billow.test.warnUncovered([]));
   assert.equal(await page.locator('.message.warning', { hasText: /of the target/ }).count(), 0);
 
   // A seam that makes the layout unpatternable (a slit inside the top disc): the panels shown are marked out of
   // date, and the status says why, until an undo brings panels back.
-  await page.evaluate(() => {
-    const app = window.billow.app;
-    const slit = { name: 'slit', closed: false, weight: 1, points: [[0.3, 0.9, 0.3], [-0.3, 0.9, 0.3]] };
-    app.commitDesign({ ...app.design, seams: [...app.design.seams, slit] });
-    app.seams.refresh();
-  });
+  const slit = { name: 'slit', closed: false, weight: 1, points: [[0.3, 0.9, 0.3], [-0.3, 0.9, 0.3]] };
+  await page.evaluate((seam) => window.billow.test.addSeam(seam), slit);
   await page.waitForFunction(() => document.querySelector('#pane-inflated').hasAttribute('data-stale'), null, { timeout: 30000 });
   assert.ok(await page.evaluate(() => document.querySelector('#pane-pattern').hasAttribute('data-stale')));
   assert.match(await page.textContent('#status'), /These seams make no panels yet/);
   await screenshot(page, 'designer-shape-outdated');
-  await page.click('#undo-button').catch(() => page.evaluate(() => window.billow.app.undo()));
+  await page.click('#undo-button').catch(() => page.evaluate(() => window.billow.test.undo()));
   await page.waitForFunction(() => !document.querySelector('#pane-inflated').hasAttribute('data-stale'), null, { timeout: 30000 });
   assert.deepEqual(page.errors, []);
   await page.close();
@@ -111,12 +107,12 @@ test('a problem in the seam panel, clicked, turns the view to its place and sele
   const texts = await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent));
   assert.equal(new Set(texts).size, texts.length, `no two problems share a text: ${texts.join(' | ')}`);
   assert.ok(texts.some((t) => /^(Segment 1, near|Seam 1 )/.test(t)), texts.join(' | '));
-  const before = await page.evaluate(() => window.billow.app.panes.target.viewDirection().toArray());
+  const before = await page.evaluate(() => window.billow.test.panes.target.viewDirection().toArray());
   await page.locator('#seam-panel .problem .problem-text', { hasText: 'Seam 1' }).first().click();
   const after = await page.evaluate(() => ({
-    direction: window.billow.app.panes.target.viewDirection().toArray(),
-    mark: window.billow.app.panes.target.placeMark?.position.toArray() ?? null,
-    selection: window.billow.app.seams.selection,
+    direction: window.billow.test.panes.target.viewDirection().toArray(),
+    mark: window.billow.test.panes.target.placeMark?.position.toArray() ?? null,
+    selection: window.billow.test.selection,
   }));
   assert.ok(after.mark, 'the place is marked');
   assert.equal(after.selection?.seam, 0, 'its seam is selected');
@@ -126,7 +122,7 @@ test('a problem in the seam panel, clicked, turns the view to its place and sele
   await screenshot(page, 'designer-shape-problem');
   // Panels the builder refuses (a segment that would overlap itself laid flat): each problem is its own message
   // with "Show where", and new panels take them away.
-  await page.evaluate(() => window.billow.app.patternFailed({
+  await page.evaluate(() => window.billow.test.showPanelProblems({
     code: 'pattern.not-built', message: 'two problems',
     details: { problems: [
       { code: 'pattern.overlaps', severity: 'error', message: 'Segment 1 would overlap itself when laid flat, near the top of the shape: a seam across it there lets it lie flat as two panels.', location: [0, 1, 0] },
@@ -136,9 +132,9 @@ test('a problem in the seam panel, clicked, turns the view to its place and sele
   const refused = page.locator('.message.error', { hasText: 'The panels could not be made from these seams' });
   assert.equal(await refused.count(), 2);
   await refused.filter({ hasText: 'Panel 2' }).locator('button.locate').click();
-  const mark = await page.evaluate(() => window.billow.app.panes.target.placeMark?.position.toArray());
+  const mark = await page.evaluate(() => window.billow.test.panes.target.placeMark?.position.toArray());
   assert.deepEqual(mark, [-1, 0, 0], 'the mark is at the place the problem names');
-  await page.evaluate(() => window.billow.app.messages.resolve('pattern', { prefix: true }));
+  await page.evaluate(() => window.billow.test.resolveMessages('pattern', { prefix: true }));
   assert.equal(await refused.count(), 0);
   assert.deepEqual(page.errors, []);
   await page.close();
@@ -146,11 +142,11 @@ test('a problem in the seam panel, clicked, turns the view to its place and sele
 
 test('the wheel zooms towards the point under the cursor, in the target and the pattern', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.waitForFunction(() => window.billow.app.panes.target.mesh);
+  await page.waitForFunction(() => window.billow.test.panes.target.mesh);
   const box = await page.locator('#pane-target').boundingBox();
   // Off the centre of the view, on the model: the point there stays under the cursor as the view closes in.
   const at = await page.evaluate(({ left, top, width, height }) => {
-    const pane = window.billow.app.panes.target;
+    const pane = window.billow.test.panes.target;
     for (let dy = -0.2; dy <= 0.2; dy += 0.05)
       for (let dx = 0.25; dx >= 0.08; dx -= 0.03) {
         const x = left + width * (0.5 + dx), y = top + height * (0.5 + dy);
@@ -161,7 +157,7 @@ test('the wheel zooms towards the point under the cursor, in the target and the 
   }, { left: box.x, top: box.y, width: box.width, height: box.height });
   assert.ok(at, 'a point of the model off the centre');
   const distance = () => page.evaluate(() => {
-    const pane = window.billow.app.panes.target;
+    const pane = window.billow.test.panes.target;
     return pane.camera.position.distanceTo(pane.controls.target);
   });
   const before = await distance();
@@ -170,7 +166,7 @@ test('the wheel zooms towards the point under the cursor, in the target and the 
   await page.waitForTimeout(200);
   assert.ok(await distance() < 0.8 * before, 'the view closed in');
   const drift = await page.evaluate(({ x, y, position }) => {
-    const pane = window.billow.app.panes.target;
+    const pane = window.billow.test.panes.target;
     const p = pane.mesh.localToWorld(new (pane.camera.position.constructor)(...position)).project(pane.camera);
     const r = pane.element.getBoundingClientRect();
     return Math.hypot(r.left + (p.x + 1) / 2 * r.width - x, r.top + (1 - p.y) / 2 * r.height - y);
@@ -180,7 +176,7 @@ test('the wheel zooms towards the point under the cursor, in the target and the 
   const pattern = await page.locator('#pane-pattern').boundingBox();
   const px = pattern.x + pattern.width * 0.3, py = pattern.y + pattern.height * 0.4;
   const sheetPoint = (x, y) => page.evaluate(({ x, y }) => {
-    const pane = window.billow.app.panes.pattern;
+    const pane = window.billow.test.panes.pattern;
     const r = pane.element.getBoundingClientRect();
     const v = new (pane.camera.position.constructor)(((x - r.left) / r.width) * 2 - 1, 1 - ((y - r.top) / r.height) * 2, 0).unproject(pane.camera);
     return [v.x, v.y];
@@ -190,9 +186,9 @@ test('the wheel zooms towards the point under the cursor, in the target and the 
   for (let i = 0; i < 3; i++) await page.mouse.wheel(0, -200);
   await page.waitForTimeout(200);
   const p1 = await sheetPoint(px, py);
-  const zoom = await page.evaluate(() => window.billow.app.panes.pattern.camera.zoom);
+  const zoom = await page.evaluate(() => window.billow.test.panes.pattern.camera.zoom);
   assert.ok(zoom > 1.2, `the pattern closed in (zoom ${zoom})`);
-  const span = await page.evaluate(() => { const c = window.billow.app.panes.pattern.camera; return (c.right - c.left) / c.zoom; });
+  const span = await page.evaluate(() => { const c = window.billow.test.panes.pattern.camera; return (c.right - c.left) / c.zoom; });
   assert.ok(Math.hypot(p1[0] - p0[0], p1[1] - p0[1]) < 0.01 * span, `the sheet point under the cursor stays (${p0} -> ${p1})`);
   assert.deepEqual(page.errors, []);
   await page.close();

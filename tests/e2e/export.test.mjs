@@ -51,7 +51,7 @@ test('the panels of a design export to every format, checked file by file', asyn
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
   await page.waitForFunction(() => document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
   // The optimized panels are sewable: stitched edges of equal length (paper Sec. 5.1), no pucker warning.
-  const status = await page.evaluate(() => window.billow.app.optimized.status);
+  const status = await page.evaluate(() => window.billow.test.optimized.status);
   assert.ok(status.seamMismatch < 1e-4, `seam mismatch ${status.seamMismatch} (${status.message})`);
   assert.equal(await page.locator('.message', { hasText: 'pucker' }).count(), 0);
   // Balloon figures: a 0.5 m sphere of 25 µm foil floats on helium.
@@ -138,10 +138,10 @@ test('the seam allowance and the units change the cut outline and the figures at
   const page = await openPage(env.context, env.server.url);
   await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
-  await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines && document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
+  await page.waitForFunction(() => window.billow.test.panes.pattern.cutLines && document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
   const area = async () => parseFloat(await stat(page, 'pattern', 'material'));
   // The cut lines are redrawn (and briefly absent) whenever the panels or the settings change: wait for them.
-  const cutLength = async () => (await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines?.geometry.attributes.position.count)).jsonValue();
+  const cutLength = async () => (await page.waitForFunction(() => window.billow.test.panes.pattern.cutLines?.geometry.attributes.position.count)).jsonValue();
   const with10 = await area();
   assert.ok((await cutLength()) > 0, 'cut lines are drawn');
   await page.fill('#allowance-input', '0');
@@ -172,7 +172,7 @@ test('the seam allowance and the units change the cut outline and the figures at
 // ends) to the cut line drawn in the pattern pane.
 const paneWidths = (page) =>
   page.evaluate(() => {
-    const pane = window.billow.app.panes.pattern;
+    const pane = window.billow.test.panes.pattern;
     const lines = pane.cutLines?.userData.lines;
     if (!pane.seams || !lines) return null;
     const widths = {};
@@ -211,7 +211,7 @@ async function waitWidths(page, expected) {
 // Screen point of the middle of seam `id` on its first panel in the pattern pane.
 const seamPoint = (page, id) =>
   page.evaluate((seam) => {
-    const pane = window.billow.app.panes.pattern;
+    const pane = window.billow.test.panes.pattern;
     const run = pane.seams.runs.get(seam)[0];
     const [x0, y0, x1, y1] = run.segments[run.segments.length >> 1];
     const p = pane.camera.position.clone().set((x0 + x1) / 2, (y0 + y1) / 2, 0).project(pane.camera);
@@ -231,11 +231,11 @@ async function svgCutPerimeters(page) {
 
 test('one seam gets its own allowance by a click on it: only its cut line moves; undo, grain and reload', async () => {
   const page = await openFreshPage(env.context, env.server.url); // the other tests' autosaved settings are not this test's
-  await page.evaluate(() => window.billow.app.setJoining('sewn')); // a new design is foil, heat sealed: sewn here
+  await page.evaluate(() => window.billow.test.setJoining('sewn')); // a new design is foil, heat sealed: sewn here
   await page.selectOption('#example-select', 'pattern:sphere3');
   await waitInflated(page);
   await waitWidths(page, { 0: 10, 1: 10, 2: 10 });
-  const statistics = await page.evaluate(() => window.billow.app.cutStatistics);
+  const statistics = await page.evaluate(() => window.billow.test.cutStatistics);
   const s2 = statistics.seams[1];
   assert.equal(s2.label, 'S2');
   const before = await svgCutPerimeters(page);
@@ -256,7 +256,7 @@ test('one seam gets its own allowance by a click on it: only its cut line moves;
   assert.match(await page.getAttribute('#seam-allowance-panel tr[data-seam="1"]', 'class'), /\bown\b/);
   assert.doesNotMatch(await page.getAttribute('#seam-allowance-panel tr[data-seam="0"]', 'class'), /\bown\b/);
   assert.equal(await page.textContent('#seams-button'), 'Seams (1 own)');
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design.fabrication.seam_allowance), { 1: 0 });
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.fabrication.seam_allowance), { 1: 0 });
   // The cut file: the two panels sewn at S2 lose its allowance along it, the third panel is as it was.
   const after = await svgCutPerimeters(page);
   for (const panel of [0, 1, 2]) {
@@ -281,33 +281,33 @@ test('one seam gets its own allowance by a click on it: only its cut line moves;
 
   // Grain. On a 1700 mm sheet the nesting turns one gore by 90 degrees when the panels may turn freely;
   // kept along the roll they are turned 0 or 180 degrees only (a longer sheet); as drawn, not at all.
-  const rotations = () => page.evaluate(() => window.billow.app.cutStatistics.panels.map((p) => Math.round(Math.abs(p.rotation_deg))));
-  const sheetLength = () => page.evaluate(() => window.billow.app.cutStatistics.totals.sheet_length_mm);
+  const rotations = () => page.evaluate(() => window.billow.test.cutStatistics.panels.map((p) => Math.round(Math.abs(p.rotation_deg))));
+  const sheetLength = () => page.evaluate(() => window.billow.test.cutStatistics.totals.sheet_length_mm);
   await page.fill('#sheet-input', '1700');
   await page.press('#sheet-input', 'Enter');
-  await page.waitForFunction(() => window.billow.app.cutStatistics.totals.sheet_width_mm === 1700);
+  await page.waitForFunction(() => window.billow.test.cutStatistics.totals.sheet_width_mm === 1700);
   assert.ok((await rotations()).includes(90), `turned freely: ${await rotations()}`);
   const freeLength = await sheetLength();
   const freeSheet = await stat(page, 'pattern', 'sheet');
   await page.selectOption('#grain-select', 'grain');
-  await page.waitForFunction(() => window.billow.app.design.fabrication.grain_lock === true && !('rotate' in window.billow.app.design.fabrication));
-  await page.waitForFunction(() => window.billow.app.cutStatistics.panels.every((p) => [0, 180].includes(Math.round(Math.abs(p.rotation_deg)))));
+  await page.waitForFunction(() => window.billow.test.design.fabrication.grain_lock === true && !('rotate' in window.billow.test.design.fabrication));
+  await page.waitForFunction(() => window.billow.test.cutStatistics.panels.every((p) => [0, 180].includes(Math.round(Math.abs(p.rotation_deg)))));
   assert.ok((await sheetLength()) > freeLength + 100, `grain kept: ${await sheetLength()} mm of sheet, turned freely ${freeLength} mm`);
   assert.notEqual(await stat(page, 'pattern', 'sheet'), freeSheet, 'the Sheet figure follows');
   await screenshot(page, 'export-keep-grain');
   await page.selectOption('#grain-select', 'fixed');
-  await page.waitForFunction(() => window.billow.app.design.fabrication.rotate === false && !('grain_lock' in window.billow.app.design.fabrication));
-  await page.waitForFunction(() => window.billow.app.cutStatistics.panels.every((p) => Math.abs(p.rotation_deg) < 1e-9));
+  await page.waitForFunction(() => window.billow.test.design.fabrication.rotate === false && !('grain_lock' in window.billow.test.design.fabrication));
+  await page.waitForFunction(() => window.billow.test.cutStatistics.panels.every((p) => Math.abs(p.rotation_deg) < 1e-9));
   await page.selectOption('#grain-select', 'grain');
   // (As drawn, every panel is turned 0 degrees too: wait for the setting itself before the autosave.)
-  await page.waitForFunction(() => window.billow.app.design.fabrication.grain_lock === true);
-  await page.waitForFunction(() => window.billow.app.cutStatistics.panels.every((p) => [0, 180].includes(Math.round(Math.abs(p.rotation_deg)))));
+  await page.waitForFunction(() => window.billow.test.design.fabrication.grain_lock === true);
+  await page.waitForFunction(() => window.billow.test.cutStatistics.panels.every((p) => [0, 180].includes(Math.round(Math.abs(p.rotation_deg)))));
 
   // Saved with the design: a reload keeps S2's own allowance and the grain, for this pattern again.
   await page.waitForTimeout(300); // the autosave
   await page.reload();
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design.fabrication), { allowance: 10, sheet_width: 1700, units: 'mm', joining: 'sewn', seam_allowance: { 1: 0 }, grain_lock: true });
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.fabrication), { allowance: 10, sheet_width: 1700, units: 'mm', joining: 'sewn', seam_allowance: { 1: 0 }, grain_lock: true });
   assert.equal(await page.inputValue('#grain-select'), 'grain');
   assert.equal(await page.textContent('#seams-button'), 'Seams (1 own)');
   await page.selectOption('#example-select', 'pattern:sphere3');
@@ -319,7 +319,7 @@ test('one seam gets its own allowance by a click on it: only its cut line moves;
   await page.locator('#seam-allowance-panel tr[data-seam="1"] .reset').focus();
   await page.keyboard.press('Enter');
   await waitWidths(page, { 0: 10, 1: 10, 2: 10 });
-  assert.equal(await page.evaluate(() => 'seam_allowance' in window.billow.app.design.fabrication), false);
+  assert.equal(await page.evaluate(() => 'seam_allowance' in window.billow.test.design.fabrication), false);
   // A typed value out of range is refused with a message, and the field shows the allowance again.
   await page.fill('#seam-allowance-panel tr[data-seam="2"] input', '500');
   await page.press('#seam-allowance-panel tr[data-seam="2"] input', 'Enter');
@@ -334,16 +334,16 @@ test('free edges get their own allowance; own allowances of seams that are gone 
   // The sphere of three gores with an internal panel whose two tips are left unsewn: free edges inside.
   // (Those tips are floppy flaps without pressure: at 500-1000 triangles Newton creeps near the tolerance and
   // stops after 1000 iterations, issue 3; at 1200 it settles in ~210.)
-  const pattern = JSON.parse(await page.evaluate(async () => (await window.billow.client.request('examplePattern', { name: 'sphere3-internal', triangles: 1200 })).patternText));
+  const pattern = JSON.parse(await page.evaluate(async () => (await window.billow.test.request('examplePattern', { name: 'sphere3-internal', triangles: 1200 })).patternText));
   const xs = pattern.panels[3].vertices.map(([x]) => x);
   const [lo, hi] = [Math.min(...xs), Math.max(...xs)];
   const tip = (panel, v) => panel === 3 && Math.abs(pattern.panels[3].vertices[v][0] - (lo + hi) / 2) > 0.35 * (hi - lo);
   pattern.stitches = pattern.stitches.filter(([pa, va, pb, vb]) => !tip(pa, va) && !tip(pb, vb));
-  await page.evaluate(() => window.billow.app.setJoining('sewn')); // a new design is foil, heat sealed: sewn here
-  await page.evaluate(() => window.billow.app.setSeamAllowance(7, 3)); // a seam this pattern does not have
+  await page.evaluate(() => window.billow.test.setJoining('sewn')); // a new design is foil, heat sealed: sewn here
+  await page.evaluate(() => window.billow.test.setSeamAllowance(7, 3)); // a seam this pattern does not have
   await page.setInputFiles('#file-input', { name: 'open-tips.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(pattern)) });
   await waitInflated(page);
-  await page.waitForFunction(() => window.billow.app.cutStatistics?.totals.free_edge_mm > 0);
+  await page.waitForFunction(() => window.billow.test.cutStatistics?.totals.free_edge_mm > 0);
   await page.click('#seams-button');
   const free = page.locator('#seam-allowance-panel tr[data-seam="-1"]');
   assert.match(await free.textContent(), /Free edges/);
@@ -353,10 +353,10 @@ test('free edges get their own allowance; own allowances of seams that are gone 
   await free.locator('input').fill('25');
   await free.locator('input').press('Enter');
   await waitWidths(page, { '-1': 25, ...Object.fromEntries(seamIds.map((id) => [id, 10])) });
-  assert.equal(await page.evaluate(() => window.billow.app.design.fabrication.free_edge_allowance), 25);
+  assert.equal(await page.evaluate(() => window.billow.test.design.fabrication.free_edge_allowance), 25);
   await screenshot(page, 'export-free-edges');
   await gone.locator('.reset').click();
-  await page.waitForFunction(() => !window.billow.app.design.fabrication.seam_allowance);
+  await page.waitForFunction(() => !window.billow.test.design.fabrication.seam_allowance);
   assert.equal(await gone.count(), 0);
   await free.locator('.reset').click();
   await waitWidths(page, { '-1': 10, ...Object.fromEntries(seamIds.map((id) => [id, 10])) });
@@ -382,16 +382,16 @@ test('the sheet view shows the pieces nested as the cut file has them, with thei
   const page = await openFreshPage(env.context, env.server.url);
   await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
-  await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines && document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
+  await page.waitForFunction(() => window.billow.test.panes.pattern.cutLines && document.querySelector('#pattern-stats dd[data-stat="panels"]')?.textContent === '2');
   await page.fill('#sheet-input', '800');
   await page.press('#sheet-input', 'Enter');
   await page.waitForFunction(() => /^800 mm/.test(document.querySelector('#pattern-stats dd[data-stat="sheet"]')?.textContent ?? ''));
   await page.click('#pattern-view [data-view="sheet"]');
   assert.equal(await page.getAttribute('#pattern-view [data-view="sheet"]', 'aria-pressed'), 'true');
   assert.equal(await page.getAttribute('#pattern-view [data-view="panels"]', 'aria-pressed'), 'false');
-  await page.waitForFunction(() => window.billow.app.panes.pattern.sheetMesh && window.billow.app.panes.pattern.cutLines);
+  await page.waitForFunction(() => window.billow.test.panes.pattern.sheetMesh && window.billow.test.panes.pattern.cutLines);
   const shown = await page.evaluate(() => {
-    const pane = window.billow.app.panes.pattern;
+    const pane = window.billow.test.panes.pattern;
     const placed = (lines) =>
       lines.map((line, i) => {
         const place = pane.placement(i);
@@ -441,10 +441,10 @@ test('the sheet view shows the pieces nested as the cut file has them, with thei
   // N (not in a field) goes back to the panels side by side; the choice is remembered on this device.
   await page.evaluate(() => document.activeElement?.blur());
   await page.keyboard.press('n');
-  await page.waitForFunction(() => window.billow.app.panes.pattern.view === 'panels' && !window.billow.app.panes.pattern.sheetMesh);
+  await page.waitForFunction(() => window.billow.test.panes.pattern.view === 'panels' && !window.billow.test.panes.pattern.sheetMesh);
   assert.equal(await page.getAttribute('#pattern-view [data-view="panels"]', 'aria-pressed'), 'true');
   assert.equal(await page.evaluate(() => localStorage.getItem('billow.patternView')), 'panels');
-  assert.ok(await page.evaluate(() => window.billow.app.panes.pattern.notches?.userData.count > 4), 'notches in the panels view too');
+  assert.ok(await page.evaluate(() => window.billow.test.panes.pattern.notches?.userData.count > 4), 'notches in the panels view too');
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -12,14 +12,14 @@ const env = useBrowser({ before, after });
 
 // The client point at the middle of the target pane's framed square (on the model for the examples).
 const middleOfView = (page) => page.evaluate(() => {
-  const s = window.billow.app.panes.target.square;
+  const s = window.billow.test.panes.target.square;
   return { x: s.left + s.side / 2, y: s.top + s.side / 2 };
 });
 
 // Turns the target pane's view to look at the model from `direction` (its own axes, as it stands).
 const lookFrom = (page, direction) =>
   page.evaluate((direction) => {
-    const pane = window.billow.app.panes.target;
+    const pane = window.billow.test.panes.target;
     const distance = pane.camera.position.distanceTo(pane.controls.target);
     pane.camera.position.copy(pane.controls.target).addScaledVector(new (pane.camera.position.constructor)(...direction), distance);
     pane.controls.update();
@@ -28,7 +28,7 @@ const lookFrom = (page, direction) =>
 
 // The control points of seam i, as positions in the target's own units, once traced.
 const controls = (page, i) => page.waitForFunction((i) => {
-  const trace = window.billow.app.seams.seamTraces()[i];
+  const trace = window.billow.test.seamTraces()[i];
   if (!trace) return null;
   const c = Array.from(trace.controls);
   return Array.from({ length: c.length / 3 }, (_, k) => c.slice(3 * k, 3 * k + 3));
@@ -36,15 +36,15 @@ const controls = (page, i) => page.waitForFunction((i) => {
 
 // The segmentation shown now, and the next one once an edit is cut anew (not the one before it, still shown
 // while the new one is made).
-const markSegmentation = (page) => page.evaluate(() => (window.shownSegmentation = window.billow.app.seams.segmentation));
+const markSegmentation = (page) => page.evaluate(() => (window.shownSegmentation = window.billow.test.segmentation));
 const newSegmentation = (page) => page.waitForFunction(() => {
-  const s = window.billow.app.seams.segmentation;
+  const s = window.billow.test.segmentation;
   return s && s !== window.shownSegmentation && { segments: s.segments.map((x) => ({ isDisk: x.isDisk })), problems: s.problems.map((p) => ({ message: p.message })) };
 }, null, { timeout: 30000 }).then((h) => h.jsonValue());
 
 test('a section seam is laid in one click, across the model or the view, and undone like any seam', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.waitForFunction(() => window.billow.app.panes.target.mesh);
+  await page.waitForFunction(() => window.billow.test.panes.target.mesh);
   assert.equal(await page.isVisible('.section-axis'), false, 'the plane is chosen only for sections');
   await page.keyboard.press('s');
   assert.equal(await page.getAttribute('#seam-panel button[data-tool="section"]', 'aria-pressed'), 'true');
@@ -53,15 +53,15 @@ test('a section seam is laid in one click, across the model or the view, and und
   const at = await middleOfView(page);
   await page.mouse.move(at.x + 3, at.y);
   await page.mouse.move(at.x, at.y);
-  const preview = await page.evaluate(() => window.billow.app.seams.preview?.[0]?.length ?? 0);
+  const preview = await page.evaluate(() => window.billow.test.seamPreview?.[0]?.length ?? 0);
   assert.ok(preview > 3 * 20, `the loop is previewed under the pointer (${preview / 3} points)`);
   await screenshot(page, 'flat-cut-section-preview');
   await page.mouse.move(5, 5); // out of the pane: no section previewed there
-  assert.equal(await page.evaluate(() => window.billow.app.seams.preview), null, 'the preview goes with the pointer');
+  assert.equal(await page.evaluate(() => window.billow.test.seamPreview), null, 'the preview goes with the pointer');
   await page.mouse.move(at.x, at.y);
   await page.mouse.click(at.x, at.y);
-  await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 2, null, { timeout: 30000 });
-  const seam = await page.evaluate(() => window.billow.app.design.seams[0]);
+  await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 2, null, { timeout: 30000 });
+  const seam = await page.evaluate(() => window.billow.test.design.seams[0]);
   assert.equal(seam.closed, true);
   assert.equal(seam.smooth, false, 'surface paths between the points follow the section');
   assert.ok(seam.points.length >= 12 && seam.points.every((p) => Number.isInteger(p.face) && p.bary.length === 3), JSON.stringify(seam.points[0]));
@@ -69,27 +69,27 @@ test('a section seam is laid in one click, across the model or the view, and und
   // Across Y as the model stands (Y up here): every control point at one height.
   const ys = (await controls(page, 0)).map((p) => p[1]);
   assert.ok(Math.max(...ys) - Math.min(...ys) < 1e-6, `one plane: heights ${Math.min(...ys)} to ${Math.max(...ys)}`);
-  assert.equal(await page.evaluate(() => window.billow.app.seams.preview), null, 'the preview gives way to the seam');
+  assert.equal(await page.evaluate(() => window.billow.test.seamPreview), null, 'the preview gives way to the seam');
   await page.waitForTimeout(300);
   await screenshot(page, 'flat-cut-section-laid');
 
   // Undo takes it away, redo brings it back.
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 0);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
   await page.click('#redo-button');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 1);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 1);
 
   // Across the view: a plane facing the viewer through the clicked point, the front/back split as seen.
   await page.selectOption('.section-axis', 'view');
   const side = { x: at.x + 8, y: at.y - 40 };
   await page.mouse.move(side.x, side.y);
   const normal = await page.evaluate(() => {
-    const pane = window.billow.app.panes.target;
+    const pane = window.billow.test.panes.target;
     const n = pane.viewDirection().transformDirection(pane.mesh.matrixWorld.clone().invert());
     return n.toArray();
   });
   await page.mouse.click(side.x, side.y);
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 2);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 2);
   const heights = (await controls(page, 1)).map((p) => p[0] * normal[0] + p[1] * normal[1] + p[2] * normal[2]);
   assert.ok(Math.max(...heights) - Math.min(...heights) < 1e-5, `one plane across the view: ${Math.min(...heights)} to ${Math.max(...heights)}`);
   // Esc goes back to viewing, the plane's choice with it.
@@ -101,17 +101,17 @@ test('a section seam is laid in one click, across the model or the view, and und
 
 test('the outline as seen is laid in one action: a front and a back panel, and a note on what it joined', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.waitForFunction(() => window.billow.app.panes.target.mesh);
+  await page.waitForFunction(() => window.billow.test.panes.target.mesh);
   // Spot seen from its side (+x), as a foil balloon of a cow is drawn.
   await lookFrom(page, [1, 0, 0]);
   await page.click('#seam-panel button.outline');
-  await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 2, null, { timeout: 30000 });
-  const seam = await page.evaluate(() => window.billow.app.design.seams[0]);
+  await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 2, null, { timeout: 30000 });
+  const seam = await page.evaluate(() => window.billow.test.design.seams[0]);
   assert.equal(seam.closed, true);
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), [], 'a clean cut: no problem');
   // Front and back: two halves of about the same area, the seam where the surface turns away (x near the
   // middle plane of a cow seen from its side: its control points face neither way).
-  const areas = await page.evaluate(() => window.billow.app.seams.segmentation.segments.map((s) => s.area));
+  const areas = await page.evaluate(() => window.billow.test.segmentation.segments.map((s) => s.area));
   assert.ok(Math.min(...areas) > 0.3 * (areas[0] + areas[1]), `front and back halves: ${areas}`);
   const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
   await note.waitFor({ timeout: 10000 });
@@ -120,10 +120,10 @@ test('the outline as seen is laid in one action: a front and a back panel, and a
   await screenshot(page, 'flat-cut-outline');
   // Laid again from the front: a second seam, and the note of the first gives way to the second's.
   await page.keyboard.press('o');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 2);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 2);
   assert.ok(await note.count() <= 1);
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 1);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 1);
   assert.deepEqual(page.errors, []);
   await page.close();
 });
@@ -144,12 +144,12 @@ function ringObj(R = 1, r = 0.35, n = 64, m = 24) {
 test('the outline of a ring seen face on: its rim, its hole and two seams across cut it into four panels, and say so', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await page.setInputFiles('#file-input', { name: 'ring.obj', mimeType: 'text/plain', buffer: Buffer.from(ringObj()) });
-  await page.waitForFunction(() => window.billow.app.target?.fileName === 'ring.obj' && window.billow.app.panes.target.mesh);
+  await page.waitForFunction(() => window.billow.test.target?.fileName === 'ring.obj' && window.billow.test.panes.target.mesh);
   await lookFrom(page, [0, 0, 1]);
   await page.keyboard.press('o');
-  await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 4, null, { timeout: 30000 });
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams.map((s) => s.name)), ['Outline', 'Outline, hole 1', 'Across the ring 1', 'Across the ring 2']);
-  assert.equal(await page.evaluate(() => window.billow.app.seams.segmentation.segments.every((s) => s.isDisk)), true);
+  await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 4, null, { timeout: 30000 });
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name)), ['Outline', 'Outline, hole 1', 'Across the ring 1', 'Across the ring 2']);
+  assert.equal(await page.evaluate(() => window.billow.test.segmentation.segments.every((s) => s.isDisk)), true);
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
   const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
   await note.waitFor({ timeout: 10000 });
@@ -157,15 +157,15 @@ test('the outline of a ring seen face on: its rim, its hole and two seams across
   await screenshot(page, 'flat-cut-outline-ring');
   // One step of the history: undo takes all four away.
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 0);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
   assert.deepEqual(page.errors, []);
   await page.close();
 });
 
 test('a sheet narrower than a piece: the pattern pane offers the width that fits, in one click', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.evaluate(() => window.billow.gallery.open('koala'));
-  await page.waitForFunction(() => window.billow.app.panes.pattern.cutLines, null, { timeout: 60000 });
+  await page.evaluate(() => window.billow.test.openGalleryDesign('koala'));
+  await page.waitForFunction(() => window.billow.test.panes.pattern.cutLines, null, { timeout: 60000 });
   await page.fill('#sheet-input', '150');
   await page.press('#sheet-input', 'Enter');
   const warning = page.locator('.message.warning', { hasText: 'The cut outline could not be drawn' });
@@ -177,10 +177,10 @@ test('a sheet narrower than a piece: the pattern pane offers the width that fits
   assert.ok(width > 150 && width <= 1000, label);
   await screenshot(page, 'flat-cut-sheet-offer');
   await offer.click();
-  await page.waitForFunction((w) => window.billow.app.cutStatistics?.totals.sheet_width_mm === w, width, { timeout: 30000 });
+  await page.waitForFunction((w) => window.billow.test.cutStatistics?.totals.sheet_width_mm === w, width, { timeout: 30000 });
   assert.equal(await page.inputValue('#sheet-input'), String(width));
   assert.equal(await warning.count(), 0, 'the warning goes with its cause');
-  assert.ok(await page.evaluate(() => Boolean(window.billow.app.panes.pattern.cutLines)), 'the cut outline is drawn');
+  assert.ok(await page.evaluate(() => Boolean(window.billow.test.panes.pattern.cutLines)), 'the cut outline is drawn');
   assert.deepEqual(page.errors, []);
   await page.close();
 });
@@ -189,7 +189,7 @@ test('a sheet narrower than a piece: the pattern pane offers the width that fits
 async function bandOnTheSphere() {
   const page = await openFreshPage(env.context, env.server.url);
   await page.selectOption('#example-select', 'sphere');
-  await page.waitForFunction(() => window.billow.app.design.target.example === 'sphere' && window.billow.app.panes.target.mesh);
+  await page.waitForFunction(() => window.billow.test.design.target.example === 'sphere' && window.billow.test.panes.target.mesh);
   await page.click('#seam-panel button[data-tool="section"]');
   await page.selectOption('.section-axis', 'y');
   await page.fill('.section-band input', '40');
@@ -202,24 +202,24 @@ test('a gusset band: one click lays two sections the chosen width apart and a se
   const at = await middleOfView(page);
   await page.mouse.move(at.x + 3, at.y);
   await page.mouse.move(at.x, at.y);
-  assert.equal(await page.evaluate(() => window.billow.app.seams.preview?.length), 2, 'both seams of the band are previewed');
+  assert.equal(await page.evaluate(() => window.billow.test.seamPreview?.length), 2, 'both seams of the band are previewed');
   await page.mouse.click(at.x, at.y);
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 3 && window.billow.app.seams.segmentation?.segments?.length === 3, null, { timeout: 30000 });
-  const names = await page.evaluate(() => window.billow.app.design.seams.map((s) => s.name));
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 3 && window.billow.test.segmentation?.segments?.length === 3, null, { timeout: 30000 });
+  const names = await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name));
   assert.deepEqual(names, ['Band 40 mm, side 1', 'Band 40 mm, side 2', 'Band 40 mm, across']);
   // The strip is one panel: a disk once the seam across opens it, its ends on both sides.
-  const across = await page.evaluate(() => window.billow.app.design.seams[2]);
+  const across = await page.evaluate(() => window.billow.test.design.seams[2]);
   assert.deepEqual(across.points.map((p) => p.on), [0, 1]);
-  assert.ok(await page.evaluate(() => window.billow.app.seams.segmentation.segments.every((s) => s.isDisk)));
+  assert.ok(await page.evaluate(() => window.billow.test.segmentation.segments.every((s) => s.isDisk)));
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
   // 40 mm apart on the model at its height: the planes' heights differ by 40 mm over the scale.
   const [a, b] = [(await controls(page, 0))[0][1], (await controls(page, 1))[0][1]];
-  const unitsPerMm = await page.evaluate(() => 1 / (1000 * window.billow.app.scaleFor(window.billow.app.design)));
+  const unitsPerMm = await page.evaluate(() => 1 / (1000 * window.billow.test.scale));
   assert.ok(Math.abs(Math.abs(a - b) - 40 * unitsPerMm) < 1e-6, `${Math.abs(a - b)} units apart, ${40 * unitsPerMm} asked`);
   await page.waitForTimeout(300);
   await screenshot(page, 'flat-cut-band');
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 0);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
   assert.deepEqual(page.errors, []);
   await page.close();
 });
@@ -229,8 +229,8 @@ test('a band\'s width is changed in the seam panel: its sides and the seam acros
   const at = await middleOfView(page);
   await page.mouse.move(at.x, at.y);
   await page.mouse.click(at.x, at.y);
-  await page.waitForFunction(() => window.billow.app.seams.segmentation?.segments?.length === 3, null, { timeout: 30000 });
-  const before = await page.evaluate(() => window.billow.app.design);
+  await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 3, null, { timeout: 30000 });
+  const before = await page.evaluate(() => window.billow.test.design);
   const heightsOf = async () => [(await controls(page, 0))[0][1], (await controls(page, 1))[0][1]];
   const [a0, b0] = await heightsOf();
   // The seam across is selected once laid: its row offers the band's width.
@@ -239,40 +239,40 @@ test('a band\'s width is changed in the seam panel: its sides and the seam acros
   await markSegmentation(page);
   await width.fill('80');
   await width.press('Enter');
-  await page.waitForFunction(() => window.billow.app.design.seams[0].name === 'Band 80 mm, side 1', null, { timeout: 30000 });
+  await page.waitForFunction(() => window.billow.test.design.seams[0].name === 'Band 80 mm, side 1', null, { timeout: 30000 });
   await newSegmentation(page);
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams.map((s) => s.name)), ['Band 80 mm, side 1', 'Band 80 mm, side 2', 'Band 80 mm, across']);
-  const unitsPerMm = await page.evaluate(() => 1 / (1000 * window.billow.app.scaleFor(window.billow.app.design)));
-  await page.waitForFunction((y) => Math.abs(Array.from(window.billow.app.seams.seamTraces()[0]?.controls ?? [0, y])[1] - y) > 1e-6, a0);
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name)), ['Band 80 mm, side 1', 'Band 80 mm, side 2', 'Band 80 mm, across']);
+  const unitsPerMm = await page.evaluate(() => 1 / (1000 * window.billow.test.scale));
+  await page.waitForFunction((y) => Math.abs(Array.from(window.billow.test.seamTraces()[0]?.controls ?? [0, y])[1] - y) > 1e-6, a0);
   const [a, b] = await heightsOf();
   assert.ok(Math.abs(Math.abs(a - b) - 80 * unitsPerMm) < 1e-6, `${Math.abs(a - b)} units apart, ${80 * unitsPerMm} asked (${Math.abs(a0 - b0)} before)`);
   assert.ok(Math.abs((a + b) / 2 - (a0 + b0) / 2) < 1e-6, 'about the same middle');
-  assert.ok(await page.evaluate(() => window.billow.app.seams.segmentation.segments.every((s) => s.isDisk)));
+  assert.ok(await page.evaluate(() => window.billow.test.segmentation.segments.every((s) => s.isDisk)));
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
   assert.equal(await page.locator('#seam-panel .seam.selected .band-width input').inputValue(), '80');
   await page.waitForTimeout(300);
   await screenshot(page, 'flat-cut-band-width');
   // One step of the history: undo gives the 40 mm band back, as it was.
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.seams[0].name === 'Band 40 mm, side 1');
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design), before);
+  await page.waitForFunction(() => window.billow.test.design.seams[0].name === 'Band 40 mm, side 1');
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design), before);
   assert.deepEqual(page.errors, []);
   await page.close();
 });
 
 test('with a band width, Outline lays a band around the outline as seen: front, back and a strip between', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.waitForFunction(() => window.billow.app.panes.target.mesh);
+  await page.waitForFunction(() => window.billow.test.panes.target.mesh);
   // Spot seen from its side (+x).
   await lookFrom(page, [1, 0, 0]);
   await page.fill('.section-band input', '30');
   await page.press('.section-band input', 'Enter');
   await page.click('#seam-panel button.outline');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 3 && window.billow.app.seams.segmentation?.segments?.length === 3, null, { timeout: 30000 });
-  const seams = await page.evaluate(() => window.billow.app.design.seams);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 3 && window.billow.test.segmentation?.segments?.length === 3, null, { timeout: 30000 });
+  const seams = await page.evaluate(() => window.billow.test.design.seams);
   assert.deepEqual(seams.map((s) => s.name), ['Band 30 mm, front side', 'Band 30 mm, back side', 'Band 30 mm, across']);
   assert.deepEqual(seams.map((s) => [s.band.kind, s.band.part, s.band.width_mm]), [['outline', 'side 1', 30], ['outline', 'side 2', 30], ['outline', 'across', 30]]);
-  assert.ok(await page.evaluate(() => window.billow.app.seams.segmentation.segments.every((s) => s.isDisk)));
+  assert.ok(await page.evaluate(() => window.billow.test.segmentation.segments.every((s) => s.isDisk)));
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), [], 'a clean cut: no problem');
   await page.waitForTimeout(300);
   await screenshot(page, 'flat-cut-outline-band');
@@ -280,12 +280,12 @@ test('with a band width, Outline lays a band around the outline as seen: front, 
   await markSegmentation(page);
   await page.locator('#seam-panel .seam.selected .band-width input').fill('50');
   await page.press('#seam-panel .seam.selected .band-width input', 'Enter');
-  await page.waitForFunction(() => window.billow.app.design.seams[0].name === 'Band 50 mm, front side', null, { timeout: 30000 });
+  await page.waitForFunction(() => window.billow.test.design.seams[0].name === 'Band 50 mm, front side', null, { timeout: 30000 });
   const wider = await newSegmentation(page);
   assert.equal(wider.segments.length, 3);
   assert.deepEqual(wider.problems.map((p) => p.message), []);
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.seams[0].name === 'Band 30 mm, front side');
+  await page.waitForFunction(() => window.billow.test.design.seams[0].name === 'Band 30 mm, front side');
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -45,7 +45,7 @@ test('each gallery item opens from its card and shows its result', async () => {
     await page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent)
       && !/flattened/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
     const seconds = (Date.now() - started) / 1000;
-    const panels = await page.evaluate(() => window.billow.app.patterns.display?.panels.length ?? 0);
+    const panels = await page.evaluate(() => window.billow.test.shownPattern?.panels.length ?? 0);
     assert.ok(panels >= 2, `${item.id}: ${panels} panels`);
     await page.waitForTimeout(200);
     assert.ok((await paintedFraction(page, '#pane-inflated .pane-body')) > 0.02, `${item.id}: the inflated shape is drawn`);
@@ -59,7 +59,7 @@ test('each gallery item opens from its card and shows its result', async () => {
 test('a gallery item that cannot be fetched gets a message', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await page.route('**/gallery/*.json', (route) => route.abort());
-  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('sphere3'));
   await page.locator('.message.error', { hasText: 'could not be loaded from the gallery' }).waitFor();
   await page.close();
 });
@@ -67,15 +67,15 @@ test('a gallery item that cannot be fetched gets a message', async () => {
 // Records every status line and, while the stored result is shown and no inflation runs, which panels and
 // which inflated shape the panes show (window.seen).
 const watch = (page) => page.evaluate(() => {
-  const app = window.billow.app;
+  const t = window.billow.test;
   const seen = { statuses: [], shown: new Set(), storedSamples: 0 };
   window.seen = seen;
   const status = document.querySelector('#status');
   new MutationObserver(() => seen.statuses.push(status.textContent)).observe(status, { childList: true, characterData: true, subtree: true });
   const look = () => {
-    if (app.storedShown() && !app.patterns.running && app.panes.inflated.shape) {
+    if (t.storedShown && !t.inflating && t.panes.inflated.shape) {
       seen.storedSamples++;
-      seen.shown.add(`${app.panes.inflated.serial}:${app.patterns.currentText?.length}:${app.panes.pattern.pattern?.panels?.length}`);
+      seen.shown.add(`${t.inflatedSerial}:${t.shownPatternText?.length}:${t.panes.pattern.pattern?.panels?.length}`);
     }
     requestAnimationFrame(look);
   };
@@ -87,7 +87,7 @@ test('a design opens with its stored result, keeps it while the live optimizatio
   const panels = stored.pattern.panels.length;
   const page = await openFreshPage(env.context, env.server.url);
   // A design with its live result first: its "before optimization" must not be offered for the koala.
-  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('sphere3'));
   await optimizedResultShown(page);
   assert.equal(await page.isVisible('#show-flattened'), true);
   await watch(page);
@@ -95,9 +95,9 @@ test('a design opens with its stored result, keeps it while the live optimizatio
   await page.click('.gallery-card[data-item="koala"]');
   // The stored result is in both panes while the worker is still optimizing the panels.
   await page.waitForFunction((count) => {
-    const app = window.billow.app;
-    return /stored result/.test(document.querySelector('#status').textContent) && app.optimizing && !app.patterns.running
-      && app.panes.inflated.shape && app.patterns.display?.panels.length === count;
+    const t = window.billow.test;
+    return /stored result/.test(document.querySelector('#status').textContent) && t.optimizing && !t.inflating
+      && t.panes.inflated.shape && t.shownPattern?.panels.length === count;
   }, panels, { timeout: 30000 });
   const inflated = await paintedFraction(page, '#pane-inflated .pane-body');
   const pattern = await paintedFraction(page, '#pane-pattern .pane-body');
@@ -117,9 +117,9 @@ test('a design opens with its stored result, keeps it while the live optimizatio
   for (const l of labels.filter((x) => x.compact)) assert.match(l.text, /^\d+$/);
   const during = await page.evaluate(() => ({
     compare: !document.querySelector('#compare-group').hidden,
-    optimizing: Boolean(window.billow.app.optimizing),
+    optimizing: window.billow.test.optimizing,
     status: document.querySelector('#status').textContent,
-    patternPanels: window.billow.app.panes.pattern.pattern?.panels.length,
+    patternPanels: window.billow.test.panes.pattern.pattern?.panels.length,
   }));
   assert.ok(during.optimizing, 'the panes were looked at while the live optimization ran');
   assert.match(during.status, /^Showing the stored result while it is refined live/);
@@ -131,9 +131,9 @@ test('a design opens with its stored result, keeps it while the live optimizatio
   await optimizedResultShown(page);
   const after = await page.evaluate(() => ({
     status: document.querySelector('#status').textContent,
-    stored: window.billow.app.stored,
+    stored: window.billow.test.stored,
     compare: !document.querySelector('#compare-group').hidden,
-    panels: window.billow.app.patterns.display.panels.length,
+    panels: window.billow.test.shownPattern.panels.length,
     seen: { statuses: window.seen.statuses, shown: [...window.seen.shown], storedSamples: window.seen.storedSamples },
   }));
   assert.match(after.status, /^Inflated the optimized panels/);
@@ -154,27 +154,27 @@ test('a design opens with its stored result, keeps it while the live optimizatio
 
 test('an edit before the live result arrives ends the stored result: it does not come back, not even by undo', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.evaluate(() => window.billow.gallery.open('koala'));
-  await page.waitForFunction(() => /stored result/.test(document.querySelector('#status').textContent) && window.billow.app.optimizing,
+  await page.evaluate(() => window.billow.test.openGalleryDesign('koala'));
+  await page.waitForFunction(() => /stored result/.test(document.querySelector('#status').textContent) && window.billow.test.optimizing,
     null, { timeout: 30000 });
   await watch(page);
   // What the status says from the edit on (the same task: no live step in between).
   await page.evaluate(() => {
     window.seen.statuses.length = 0;
-    window.billow.app.setPressure(1200);
+    window.billow.test.setPressure(1200);
   });
   await optimizedResultShown(page);
-  const edited = await page.evaluate(() => ({ pressure: JSON.parse(window.billow.app.patterns.currentText).pressure, statuses: window.seen.statuses }));
+  const edited = await page.evaluate(() => ({ pressure: JSON.parse(window.billow.test.shownPatternText).pressure, statuses: window.seen.statuses }));
   assert.equal(edited.pressure, 1200, 'the panels shown are those of the edited design');
   assert.ok(edited.statuses.some((s) => /^Optimizing the panels: step/.test(s)), 'the edited design streams its iterates as usual');
   assert.equal(await page.evaluate(() => document.querySelector('#inflated-stats').classList.contains('stale')), false, 'the new result\'s figures are not marked as old');
-  await page.evaluate(() => window.billow.app.undo());
-  await page.waitForFunction(() => window.billow.app.optimizing, null, { timeout: 30000 }).catch(() => {});
+  await page.evaluate(() => window.billow.test.undo());
+  await page.waitForFunction(() => window.billow.test.optimizing, null, { timeout: 30000 }).catch(() => {});
   await optimizedResultShown(page);
   const undone = await page.evaluate(() => ({
-    pressure: JSON.parse(window.billow.app.patterns.currentText).pressure,
+    pressure: JSON.parse(window.billow.test.shownPatternText).pressure,
     statuses: window.seen.statuses,
-    stored: window.billow.app.storedShown(),
+    stored: window.billow.test.storedShown,
   }));
   assert.equal(undone.pressure, 1000, 'undo gives the gallery design back, optimized live');
   assert.equal(undone.stored, false);
@@ -190,7 +190,7 @@ test('a stale or damaged stored result is ignored: the result is computed live, 
     const page = await openFreshPage(env.context, env.server.url);
     await page.route('**/gallery/sphere3.result.json', (route) => route.fulfill({ status: 200, contentType: 'application/json', body }));
     await watch(page);
-    await page.evaluate(() => window.billow.gallery.open('sphere3'));
+    await page.evaluate(() => window.billow.test.openGalleryDesign('sphere3'));
     await optimizedResultShown(page);
     const seen = await page.evaluate(() => ({ statuses: window.seen.statuses, samples: window.seen.storedSamples }));
     assert.ok(!seen.statuses.some((s) => /stored result/.test(s)), `${what}: no stored result shown`);
@@ -204,7 +204,7 @@ test('a stale or damaged stored result is ignored: the result is computed live, 
 
 test('a seam\'s weight slider set to 0 lets the seams slide, and the status says so while the panels are optimized', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('sphere3'));
   await optimizedResultShown(page);
   await watch(page);
   const slider = page.locator('input[aria-label="Weight of meridian 1"]');
@@ -215,7 +215,7 @@ test('a seam\'s weight slider set to 0 lets the seams slide, and the status says
       throw new Error(`no status said the seams slide; the last ones: ${JSON.stringify((await page.evaluate(() => window.seen.statuses)).slice(-3))} (${error.message})`);
     });
   const state = await page.evaluate(() => ({
-    weights: window.billow.app.design.seams.map((s) => s.weight),
+    weights: window.billow.test.design.seams.map((s) => s.weight),
     statuses: window.seen.statuses,
     stale: document.querySelector('#inflated-stats').classList.contains('stale'),
   }));
@@ -223,23 +223,23 @@ test('a seam\'s weight slider set to 0 lets the seams slide, and the status says
   assert.deepEqual(state.weights, [0, 1, 1]);
   assert.ok(state.statuses.some((s) => /^Optimizing the panels: step \d+, distance [\d.]+ % (target|inflated) → (inflated|target), [\d.]+ % (target|inflated) → (inflated|target), light seams sliding/.test(s)), state.statuses.slice(-3).join(' | '));
   await screenshot(page, 'gallery-sphere3-sliding-live');
-  await page.evaluate(() => window.billow.app.optimizing?.cancel());
+  await page.evaluate(() => window.billow.test.cancelOptimizing());
   assert.deepEqual(page.errors, []);
   await page.close();
 });
 
 test('deleting an internal connection makes the panels again, without the internal panel', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.evaluate(() => window.billow.gallery.open('fish'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('fish'));
   await optimizedResultShown(page);
-  const before = await page.evaluate(() => window.billow.app.patterns.display.panels.length);
+  const before = await page.evaluate(() => window.billow.test.shownPattern.panels.length);
   await page.click('#seam-panel .connection .delete');
-  assert.equal(await page.evaluate(() => window.billow.app.design.connections.length), 0);
-  await page.waitForFunction((n) => window.billow.app.patterns.display?.panels.length === n - 1, before, { timeout: 60000 })
+  assert.equal(await page.evaluate(() => window.billow.test.design.connections.length), 0);
+  await page.waitForFunction((n) => window.billow.test.shownPattern?.panels.length === n - 1, before, { timeout: 60000 })
     .catch(async (error) => {
-      throw new Error(`the panels were not made again: ${await page.evaluate(() => window.billow.app.patterns.display?.panels.length)} of ${before} (${error.message})`);
+      throw new Error(`the panels were not made again: ${await page.evaluate(() => window.billow.test.shownPattern?.panels.length)} of ${before} (${error.message})`);
     });
-  await page.evaluate(() => window.billow.app.optimizing?.cancel());
+  await page.evaluate(() => window.billow.test.cancelOptimizing());
   assert.deepEqual(page.errors, []);
   await page.close();
 });

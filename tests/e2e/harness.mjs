@@ -93,11 +93,7 @@ export async function openDesignFixture(page, fileName) {
 
 // Waits until the panels of the current design are optimized and shown (nothing running, nothing stale).
 export function optimizedResultShown(page, timeout = 180000) {
-  return page.waitForFunction(() => {
-    const app = window.billow.app;
-    return app.optimized && app.optimized.revision === app.revision && !app.optimizing && !app.patterns.running
-      && app.patterns.currentText === app.optimized.patternText;
-  }, null, { timeout });
+  return page.waitForFunction(() => window.billow.test.resultShown, null, { timeout });
 }
 
 export async function screenshot(page, name) {

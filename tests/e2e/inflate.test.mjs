@@ -37,7 +37,7 @@ test('the Mylar example inflates: shape, wrinkle overlay, figures and two labell
 
 test('an imported pattern file inflates; a broken one gets a message and the last result stays', async () => {
   const page = await openPage(env.context, env.server.url);
-  const text = await page.evaluate(async () => (await window.billow.client.request('examplePattern', { name: 'pillow', triangles: 800 })).patternText);
+  const text = await page.evaluate(async () => (await window.billow.test.request('examplePattern', { name: 'pillow', triangles: 800 })).patternText);
   await page.setInputFiles('#file-input', { name: 'pillow.json', mimeType: 'application/json', buffer: Buffer.from(text) });
   await waitInflated(page);
   const volume = await page.textContent('#inflated-stats dd[data-stat="volume"]');

@@ -12,7 +12,7 @@ const env = useBrowser({ before, after });
 // The outer surface's vertex colors, counted: bluish (inside), orange (outside), pale (on target) and other.
 const colorCounts = (page) =>
   page.evaluate(() => {
-    const pane = window.billow.app.panes.inflated;
+    const pane = window.billow.test.panes.inflated;
     const color = pane.outerMesh.geometry.getAttribute('color');
     const counts = { blue: 0, orange: 0, pale: 0, other: 0 };
     for (let v = 0; v < color.count; v++) {
@@ -36,9 +36,9 @@ const waitInflated = (page) =>
 
 test('the inflated shape colors by wrinkles, stress and distance to target; distance shows what optimization gains', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('sphere3'));
   await waitInflated(page);
-  await page.waitForFunction(() => window.billow.app.panes.inflated.hasDistances, null, { timeout: 30000 });
+  await page.waitForFunction(() => window.billow.test.panes.inflated.hasDistances, null, { timeout: 30000 });
   // Wrinkles by default.
   assert.equal(await page.inputValue('#color-select'), 'wrinkles');
   assert.equal((await legend(page)).title, 'Wrinkles (compression)');
@@ -49,7 +49,7 @@ test('the inflated shape colors by wrinkles, stress and distance to target; dist
   let l = await legend(page);
   assert.equal(l.title, 'Distance to target');
   assert.match(l.ends, /mm inside.*on target.*mm outside/);
-  const optimized = await page.evaluate(() => window.billow.app.panes.inflated.fields.distance);
+  const optimized = await page.evaluate(() => window.billow.test.panes.inflated.fields.distance);
   // Both ways, the worse first.
   assert.match(l.note, new RegExp(`${(100 * optimized.rms).toFixed(2)} % inflated → target`));
   assert.match(l.note, new RegExp(`${(100 * optimized.targetRms).toFixed(2)} % target → inflated`));
@@ -58,13 +58,13 @@ test('the inflated shape colors by wrinkles, stress and distance to target; dist
   await screenshot(page, 'inflated-distance-optimized');
 
   // Before optimization: pressure rounds the flattened panels, so they miss the target by more.
-  const serial = await page.evaluate(() => window.billow.app.panes.inflated.serial);
+  const serial = await page.evaluate(() => window.billow.test.inflatedSerial);
   await page.click('#show-flattened');
   await page.waitForFunction((s) => {
-    const pane = window.billow.app.panes.inflated;
-    return pane.serial > s && pane.hasDistances && /^Inflated/.test(document.querySelector('#status').textContent);
+    const pane = window.billow.test.panes.inflated;
+    return window.billow.test.inflatedSerial > s && pane.hasDistances && /^Inflated/.test(document.querySelector('#status').textContent);
   }, serial, { timeout: 90000 });
-  const flattened = await page.evaluate(() => window.billow.app.panes.inflated.fields.distance);
+  const flattened = await page.evaluate(() => window.billow.test.panes.inflated.fields.distance);
   assert.ok(flattened.rms > 1.2 * optimized.rms, `before optimization ${flattened.rms} vs optimized ${optimized.rms}`);
   assert.equal(await page.inputValue('#color-select'), 'distance', 'the chosen colors stay');
   const flattenedColors = await colorCounts(page);
@@ -97,7 +97,7 @@ test('the inflated shape colors by wrinkles, stress and distance to target; dist
 
 test('a pattern file opened on its own offers no distance to target', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.evaluate(() => window.billow.gallery.open('star'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('star'));
   await waitInflated(page);
   assert.equal(await page.isDisabled('#color-select option[value="distance"]'), true);
   await page.selectOption('#color-select', 'stress');
@@ -111,18 +111,18 @@ test('each optimization iterate streams: its shape with its distance colors, and
   await page.selectOption('#color-select', 'distance').catch(() => {}); // disabled until a result: set below
   // Watch the panes while the gallery's three-panel sphere is optimized.
   await page.evaluate(() => {
-    const app = window.billow.app;
+    const t = window.billow.test;
     const seen = { distances: new Set(), patterns: new Set(), statuses: new Set(), shapes: 0 };
     window.streamSeen = seen;
     let lastPattern = null;
     const look = () => {
-      const pane = app.panes.inflated;
+      const pane = t.panes.inflated;
       const status = document.querySelector('#status').textContent;
       if (/^Optimizing/.test(status)) {
         seen.statuses.add(status);
         if (pane.fields?.distance) seen.distances.add(pane.fields.distance.rms.toFixed(6));
-        if (app.panes.pattern.pattern && app.panes.pattern.pattern !== lastPattern) {
-          lastPattern = app.panes.pattern.pattern;
+        if (t.panes.pattern.pattern && t.panes.pattern.pattern !== lastPattern) {
+          lastPattern = t.panes.pattern.pattern;
           seen.patterns.add(seen.patterns.size);
         }
         if (pane.shape) seen.shapes++;
@@ -131,7 +131,7 @@ test('each optimization iterate streams: its shape with its distance colors, and
     };
     requestAnimationFrame(look);
   });
-  await page.evaluate(() => window.billow.app.panes.inflated.setColorMode('distance'));
+  await page.evaluate(() => window.billow.test.panes.inflated.setColorMode('distance'));
   // Opened as a design file: from the Gallery it would show its stored result instead of the iterates.
   const buffer = await readFile(join(ROOT, 'web/public/gallery/sphere3.billow.json'));
   await page.setInputFiles('#file-input', { name: 'sphere3.billow.json', mimeType: 'application/json', buffer });

@@ -19,7 +19,7 @@ const SIZES = [[1400, 900], [1024, 768], [1920, 1080]];
 // The top bar's and every pane's rectangles with the status set to `text`, measured at once (layout is
 // synchronous), so nothing the app does meanwhile can change the status first.
 const layoutWith = (page, text) => page.evaluate((t) => {
-  window.billow.app.setStatus(t);
+  window.billow.test.setStatus(t);
   const box = (el) => {
     const r = el.getBoundingClientRect();
     return [r.left, r.top, r.width, r.height].map((v) => Math.round(v * 10) / 10);
@@ -55,7 +55,7 @@ test('a long status is cut short with its full text as its tooltip, and no pane 
       if (text === LONG_STATUSES[0]) assert.ok(!long.status.cut, `${width}x${height}: the optimizer's status is shown whole`);
       if (text === LONG_STATUSES[2]) assert.ok(long.status.cut, `${width}x${height}: the long status is cut short`);
     }
-    await page.evaluate((t) => window.billow.app.setStatus(t), LONG_STATUSES[0]);
+    await page.evaluate((t) => window.billow.test.setStatus(t), LONG_STATUSES[0]);
     await screenshot(page, `layout-status-${width}x${height}`);
   }
   await page.setViewportSize({ width: 1400, height: 900 });
@@ -65,7 +65,7 @@ test('a long status is cut short with its full text as its tooltip, and no pane 
 
 // Client rectangles { left, top, right, bottom } of what a pane frames and of the boxes over the panes.
 const framing = (page) => page.evaluate(() => {
-  const { panes } = window.billow.app;
+  const panes = window.billow.test.panes;
   const Vector3 = panes.target.camera.position.constructor;
   // The screen box of the world-space box `box` seen by `camera` in the pane whose view is `body`.
   const screenBox = (box, camera, body) => {
@@ -120,11 +120,11 @@ function assertClear(seen, label) {
 const nextFrames = (page) => page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r))));
 
 async function openKoala(page) {
-  await page.evaluate(() => window.billow.gallery.open('koala'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('koala'));
   // The stored result in every pane, with the figures beside it.
   await page.waitForFunction(() => {
-    const { app } = window.billow;
-    return app.panes.inflated.shape && app.panes.pattern.cutLines && app.design.seams.length === 7
+    const t = window.billow.test;
+    return t.panes.inflated.shape && t.panes.pattern.cutLines && t.design.seams.length === 7
       && document.querySelector('#inflated-stats').childElementCount && document.querySelector('#target-stats').childElementCount;
   }, null, { timeout: 60000 });
 }
@@ -133,14 +133,14 @@ test('the docked boxes and the messages leave the target, the inflated shape and
   const page = await openFreshPage(env.context, env.server.url);
   await openKoala(page);
   await page.evaluate(() => {
-    const { messages } = window.billow.app;
-    messages.show('warning', 'Seam "left ear" is shorter on one panel than on the other by 3 mm: the panels are eased together when sewn.');
-    messages.show('notice', 'This tab autosaves your design again.');
-    messages.show('error', 'The solver stopped unexpectedly and was restarted. Your design is safe.');
+    const t = window.billow.test;
+    t.showMessage('warning', 'Seam "left ear" is shorter on one panel than on the other by 3 mm: the panels are eased together when sewn.');
+    t.showMessage('notice', 'This tab autosaves your design again.');
+    t.showMessage('error', 'The solver stopped unexpectedly and was restarted. Your design is safe.');
   });
   for (const [width, height] of SIZES) {
     await page.setViewportSize({ width, height });
-    await page.evaluate(() => window.billow.app.setStatus(
+    await page.evaluate(() => window.billow.test.setStatus(
       "Inflated the optimized panels: stopped at the optimizer's limit (150 steps) before settling; the panels may fit a little better than shown"));
     await nextFrames(page);
     assertClear(await framing(page), `${width}x${height}`);
@@ -151,7 +151,7 @@ test('the docked boxes and the messages leave the target, the inflated shape and
   await page.setViewportSize({ width: 1400, height: 900 });
   await page.fill('#allowance-input', '100');
   await page.press('#allowance-input', 'Enter');
-  await page.waitForFunction(() => Math.max(...window.billow.app.cutStatistics.seams.map((s) => s.allowance_mm)) === 100, null, { timeout: 30000 });
+  await page.waitForFunction(() => Math.max(...window.billow.test.cutStatistics.seams.map((s) => s.allowance_mm)) === 100, null, { timeout: 30000 });
   await nextFrames(page);
   assertClear(await framing(page), 'a 100 mm allowance');
   await screenshot(page, 'layout-koala-wide-allowance');
@@ -161,7 +161,7 @@ test('the docked boxes and the messages leave the target, the inflated shape and
     const m = [...document.querySelectorAll('.messages .message')];
     return m.at(-1).getBoundingClientRect().top < m[0].getBoundingClientRect().top;
   }), 'the newest message is on top of the stack');
-  await page.evaluate(() => window.billow.app.messages.clear());
+  await page.evaluate(() => window.billow.test.clearMessages());
   await page.setViewportSize({ width: 1024, height: 768 });
   await nextFrames(page);
 
@@ -215,9 +215,9 @@ test('no two labels of the sheet view overlap: the pieces\', the sheet\'s and th
   const page = await openFreshPage(env.context, env.server.url);
   await openKoala(page);
   await page.click('#pattern-view [data-view="sheet"]');
-  await page.waitForFunction(() => window.billow.app.panes.pattern.sheetMesh, null, { timeout: 30000 });
+  await page.waitForFunction(() => window.billow.test.panes.pattern.sheetMesh, null, { timeout: 30000 });
   await nextFrames(page);
-  const panels = await page.evaluate(() => window.billow.app.panes.pattern.pattern.panels.length);
+  const panels = await page.evaluate(() => window.billow.test.panes.pattern.pattern.panels.length);
   const labels = await shownLabels(page);
   const pieces = labels.filter((l) => /panel-label/.test(l.kind));
   assert.ok(pieces.length >= panels / 2, `${pieces.length} of ${panels} piece labels shown`);
@@ -230,7 +230,7 @@ test('no two labels of the sheet view overlap: the pieces\', the sheet\'s and th
   await page.click('#seams-button');
   for (const zoom of [1, 0.6, 1.8]) {
     await page.evaluate((z) => {
-      const pane = window.billow.app.panes.pattern;
+      const pane = window.billow.test.panes.pattern;
       pane.camera.zoom = z;
       pane.camera.updateProjectionMatrix();
       pane.viewport.requestRender();

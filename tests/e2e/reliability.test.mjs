@@ -9,8 +9,8 @@ import { openPage, openFreshPage, openDesignFixture, useBrowser } from './harnes
 const env = useBrowser({ before, after });
 
 const ready = (page) => page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
-const isPrimary = (page) => page.evaluate(() => window.billow.tabGuard.isPrimary);
-const waitPrimary = (page) => page.waitForFunction(() => window.billow.tabGuard.isPrimary === true, null, { timeout: 10000 });
+const isPrimary = (page) => page.evaluate(() => window.billow.test.isPrimaryTab);
+const waitPrimary = (page) => page.waitForFunction(() => window.billow.test.isPrimaryTab === true, null, { timeout: 10000 });
 const secondaryWarning = (page) => page.locator('.message.warning', { hasText: 'already open in another tab' });
 const primaryNotice = (page) => page.locator('.message.notice', { hasText: 'autosaves your design again' });
 
@@ -19,7 +19,7 @@ const fresh = () => openFreshPage(env.context, env.server.url);
 async function setHeight(page, meters) {
   await page.fill('#height-input', String(meters));
   await page.press('#height-input', 'Enter');
-  await page.waitForFunction((h) => window.billow.app.design.size.height === h, meters);
+  await page.waitForFunction((h) => window.billow.test.design.size.height === h, meters);
 }
 
 // The height of the design autosaved in this browser profile (IndexedDB 'billow', key 'current').
@@ -91,7 +91,7 @@ test('a second tab does not autosave over the first, and takes over when the fir
 test('a second tab keeps its own work across its reloads, a shared link included', async () => {
   const first = await fresh();
   await setHeight(first, 0.9);
-  const url = await first.evaluate(() => window.billow.app.shareLink());
+  const url = await first.evaluate(() => window.billow.test.shareLink());
   await setHeight(first, 0.7);
   await first.waitForTimeout(300);
 
@@ -143,7 +143,7 @@ test('a page closed without unload handling loses nothing: the next page restore
 
   const next = await openPage(env.context, env.server.url);
   assert.equal(await next.inputValue('#height-input'), '1.3', 'the height is restored');
-  assert.equal(await next.evaluate(() => window.billow.app.design.size.height), 1.3);
+  assert.equal(await next.evaluate(() => window.billow.test.design.size.height), 1.3);
   assertNoErrors(next);
   await next.close();
 });
@@ -197,7 +197,7 @@ test('soak: 30 edits each cancelling the panels of the one before leave no memor
   const memory = async () => {
     await cdp.send('HeapProfiler.collectGarbage');
     const { usedSize } = await cdp.send('Runtime.getHeapUsage');
-    const wasm = await page.evaluate(() => window.billow.client.request('memoryStats', {}));
+    const wasm = await page.evaluate(() => window.billow.test.request('memoryStats', {}));
     return { js: usedSize, ...wasm };
   };
   const cycle = async (k) => {
@@ -213,14 +213,14 @@ test('soak: 30 edits each cancelling the panels of the one before leave no memor
   const complete = async (kPa) => {
     await page.fill('#pressure-input', kPa);
     await page.press('#pressure-input', 'Enter');
-    await page.waitForFunction(() => window.billow.app.optimized?.revision === window.billow.app.revision && /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
+    await page.waitForFunction(() => window.billow.test.optimizedIsCurrent && /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
   };
   for (let k = 0; k < 5; k++) await cycle(k); // warm up: caches, JIT, the allocator's pools
   await complete('1.15');
   const before = await memory();
   for (let k = 5; k < 35; k++) await cycle(k);
   await complete('1.25');
-  assert.equal(await page.evaluate(() => window.billow.app.design.pressure), 1250);
+  assert.equal(await page.evaluate(() => window.billow.test.design.pressure), 1250);
   const after = await memory();
   const MB = 1 << 20;
   console.log(`[soak] wasm heap ${before.heapBytes / MB} -> ${after.heapBytes / MB} MB, probe ${(before.probe / MB).toFixed(2)} -> ${(after.probe / MB).toFixed(2)} MB, JS heap ${(before.js / MB).toFixed(1)} -> ${(after.js / MB).toFixed(1)} MB`);

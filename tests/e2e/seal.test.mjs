@@ -21,7 +21,7 @@ async function cutFile(page) {
 // A point of seam `id` in the pattern pane, `share` of the way along its first run, in client pixels.
 const seamPoint = (page, id, share) =>
   page.evaluate(([seam, share]) => {
-    const pane = window.billow.app.panes.pattern;
+    const pane = window.billow.test.panes.pattern;
     const run = pane.seams.runs.get(seam)[0];
     const [x0, y0, x1, y1] = run.segments[Math.floor(share * run.segments.length)];
     const p = pane.camera.position.clone().set((x0 + x1) / 2, (y0 + y1) / 2, 0).project(pane.camera);
@@ -32,7 +32,7 @@ const seamPoint = (page, id, share) =>
 // The centres of the valve marks drawn in the pattern pane, in client pixels.
 const markCentres = (page) =>
   page.evaluate(() => {
-    const pane = window.billow.app.panes.pattern;
+    const pane = window.billow.test.panes.pattern;
     const r = pane.element.getBoundingClientRect();
     return pane.cut.valves.flatMap((marks, i) =>
       marks.map((mark) => {
@@ -52,12 +52,12 @@ test('a foil balloon is heat sealed: the seal band is drawn, a fill valve goes w
   const page = await openFreshPage(env.context, env.server.url);
   await page.selectOption('#example-select', 'pattern:mylar');
   await waitInflated(page);
-  await page.waitForFunction(() => window.billow.app.cutStatistics && window.billow.app.panes.pattern.sealBands);
+  await page.waitForFunction(() => window.billow.test.cutStatistics && window.billow.test.panes.pattern.sealBands);
   // The header says what the allowance is: a 5 mm seal band, tinted around both discs.
   assert.match(await page.textContent('label:has(#allowance-input)'), /^Seal band/);
   assert.equal(await page.inputValue('#allowance-input'), '5');
-  assert.equal(await page.evaluate(() => window.billow.app.panes.pattern.sealBands.userData.count), 2);
-  assert.equal(await page.evaluate(() => window.billow.app.cutStatistics.joining), 'sealed');
+  assert.equal(await page.evaluate(() => window.billow.test.panes.pattern.sealBands.userData.count), 2);
+  assert.equal(await page.evaluate(() => window.billow.test.cutStatistics.joining), 'sealed');
   let svg = await cutFile(page);
   assert.match(svg, /<g id="seal-band"/);
   assert.doesNotMatch(svg, /<g id="sew"/);
@@ -71,8 +71,8 @@ test('a foil balloon is heat sealed: the seal band is drawn, a fill valve goes w
   await page.mouse.move(at.x, at.y);
   assert.match(await page.getAttribute('#pane-pattern .pane-body', 'title'), /click to place the fill valve here/);
   await page.mouse.click(at.x, at.y);
-  await page.waitForFunction(() => window.billow.app.design.fabrication.valves?.length === 1);
-  await page.waitForFunction(() => window.billow.app.panes.pattern.valveMarks?.userData.count === 2);
+  await page.waitForFunction(() => window.billow.test.design.fabrication.valves?.length === 1);
+  await page.waitForFunction(() => window.billow.test.panes.pattern.valveMarks?.userData.count === 2);
   assert.equal(await page.getAttribute('.valve-head button', 'aria-pressed'), 'false');
   assert.match(await page.textContent('.valve-list li'), /^On S1 at \d+ %, gap/);
   // Its gap is drawn where the seam was clicked, and on the other disc too (the same place once sealed).
@@ -89,31 +89,31 @@ test('a foil balloon is heat sealed: the seal band is drawn, a fill valve goes w
   // A wider gap, typed; undone like any edit; kept through a reload.
   await page.fill('.valve-list input', '35');
   await page.press('.valve-list input', 'Enter');
-  await page.waitForFunction(() => window.billow.app.design.fabrication.valves[0].width === 35);
-  await page.waitForFunction(() => window.billow.app.cutStatistics.valves[0].width_mm === 35);
+  await page.waitForFunction(() => window.billow.test.design.fabrication.valves[0].width === 35);
+  await page.waitForFunction(() => window.billow.test.cutStatistics.valves[0].width_mm === 35);
   await screenshot(page, 'seal-band-and-valve');
   assert.equal([...(await cutFile(page)).matchAll(/valve 35 mm/g)].length, 2);
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.fabrication.valves[0].width === 20);
+  await page.waitForFunction(() => window.billow.test.design.fabrication.valves[0].width === 20);
   await page.waitForTimeout(300); // the autosave
   await page.reload();
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
-  assert.deepEqual((await page.evaluate(() => window.billow.app.design.fabrication.valves)).map((v) => v.width), [20]);
+  assert.deepEqual((await page.evaluate(() => window.billow.test.design.fabrication.valves)).map((v) => v.width), [20]);
 
   // A valve on a seam the pattern does not have: said so, and removed in one click.
-  await page.evaluate(() => window.billow.app.addValve(5, 0.5));
+  await page.evaluate(() => window.billow.test.addValve(5, 0.5));
   await page.selectOption('#example-select', 'pattern:mylar');
   await waitInflated(page);
   const lost = page.locator('.message.warning', { hasText: 'S6, which this pattern does not have' });
   await lost.waitFor();
   await lost.locator('button', { hasText: 'Remove it' }).click();
-  await page.waitForFunction(() => window.billow.app.design.fabrication.valves?.length === 1);
+  await page.waitForFunction(() => window.billow.test.design.fabrication.valves?.length === 1);
   await page.locator('.message.warning', { hasText: 'which this pattern does not have' }).waitFor({ state: 'detached' });
 
   // Sewn instead: the allowance is a sewing allowance again (10 mm), with a sewing line and no band.
   await page.click('#seams-button');
   await page.selectOption('#seam-allowance-panel-joining', 'sewn');
-  await page.waitForFunction(() => window.billow.app.cutStatistics?.joining === 'sewn' && !window.billow.app.panes.pattern.sealBands);
+  await page.waitForFunction(() => window.billow.test.cutStatistics?.joining === 'sewn' && !window.billow.test.panes.pattern.sealBands);
   assert.match(await page.textContent('label:has(#allowance-input)'), /^Allowance/);
   assert.equal(await page.inputValue('#allowance-input'), '10');
   svg = await cutFile(page);
@@ -121,7 +121,7 @@ test('a foil balloon is heat sealed: the seal band is drawn, a fill valve goes w
   assert.match(svg, /<g id="valves"/, 'a sewn seam keeps its valve gap');
   // Removing the valve.
   await page.click('.valve-list .reset');
-  await page.waitForFunction(() => !('valves' in window.billow.app.design.fabrication));
+  await page.waitForFunction(() => !('valves' in window.billow.test.design.fabrication));
   assert.deepEqual(page.errors, []);
   await page.close();
 });
@@ -129,15 +129,15 @@ test('a foil balloon is heat sealed: the seal band is drawn, a fill valve goes w
 test('the material sets the joining: ripstop is sewn with a 10 mm allowance, foil sealed with a 5 mm band', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await page.selectOption('#material-select', 'ripstop');
-  await page.waitForFunction(() => window.billow.app.design.fabrication.joining === 'sewn');
+  await page.waitForFunction(() => window.billow.test.design.fabrication.joining === 'sewn');
   assert.equal(await page.inputValue('#allowance-input'), '10');
   assert.match(await page.textContent('label:has(#allowance-input)'), /^Allowance/);
   await page.selectOption('#material-select', 'foil');
-  await page.waitForFunction(() => window.billow.app.design.fabrication.joining === 'sealed');
+  await page.waitForFunction(() => window.billow.test.design.fabrication.joining === 'sealed');
   assert.equal(await page.inputValue('#allowance-input'), '5');
   // One step of the history each: undo goes back to ripstop and its sewing allowance.
   await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.app.design.material.name === 'ripstop');
+  await page.waitForFunction(() => window.billow.test.design.material.name === 'ripstop');
   assert.equal(await page.inputValue('#allowance-input'), '10');
   assert.deepEqual(page.errors, []);
   await page.close();

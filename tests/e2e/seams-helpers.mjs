@@ -3,7 +3,7 @@
 // center along each direction leaves the surface (found by raycasting from outside), for the pane camera.
 export async function surfaceScreenPoints(page, dirs) {
   return page.evaluate((directions) => {
-    const pane = window.billow.app.panes.target;
+    const pane = window.billow.test.panes.target;
     const mesh = pane.mesh;
     const box = mesh.geometry.boundingBox;
     const center = box.getCenter(new mesh.position.constructor());
@@ -25,9 +25,9 @@ export async function surfaceScreenPoints(page, dirs) {
 // The screen point of seam `seam`'s traced curve halfway (by sample count) between control points k and k+1.
 export async function seamMidScreenPoint(page, seam, k) {
   return page.evaluate(([s, i]) => {
-    const app = window.billow.app;
-    const pane = app.panes.target;
-    const trace = app.seams.seamTraces()[s];
+    const t = window.billow.test;
+    const pane = t.panes.target;
+    const trace = t.seamTraces()[s];
     const from = trace.controlSamples[i];
     const to = trace.controlSamples[i + 1] ?? trace.faces.length;
     const m = Math.round((from + to) / 2);
@@ -47,12 +47,12 @@ export async function clickOnSeam(page, seam, k) {
     p = await seamMidScreenPoint(page, seam, k);
     await page.mouse.move(p.x, p.y);
     const snapped = await page
-      .waitForFunction(() => window.billow.app.panes.target.seams.cursor.material.color.getHexString() === 'd55e00', null, { timeout: 3000 })
+      .waitForFunction(() => window.billow.test.panes.target.seams.cursor.material.color.getHexString() === 'd55e00', null, { timeout: 3000 })
       .then(() => true, () => false);
     if (snapped) {
-      const before = await page.evaluate(() => window.billow.seamTool.drawing?.points.length ?? 0);
+      const before = await page.evaluate(() => window.billow.test.drawnPoints);
       await page.mouse.click(p.x, p.y);
-      await page.waitForFunction((n) => (window.billow.seamTool.drawing?.points.length ?? 0) > n, before, { timeout: 5000 });
+      await page.waitForFunction((n) => window.billow.test.drawnPoints > n, before, { timeout: 5000 });
       return p;
     }
   }

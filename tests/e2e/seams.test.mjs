@@ -22,7 +22,7 @@ const waitSummary = (page, re) =>
 async function openSphere(page) {
   await page.selectOption('#example-select', 'sphere');
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'sphere.obj');
-  await page.waitForFunction(() => !window.billow.app.design.seams.length);
+  await page.waitForFunction(() => !window.billow.test.design.seams.length);
 }
 
 async function clickAt(page, p) {
@@ -39,9 +39,9 @@ async function drawTwoSeams(page) {
   for (const p of [a, b, c]) await clickAt(page, p);
   // Before closing, the cursor over the first point shows the snap (orange).
   await page.mouse.move(a.x, a.y);
-  const snapColor = () => window.billow.app.panes.target.seams.cursor.material.color.getHexString();
+  const snapColor = () => window.billow.test.panes.target.seams.cursor.material.color.getHexString();
   // Wait for the cursor to turn (under load a frame may be late), then check it did.
-  await page.waitForFunction(() => window.billow.app.panes.target.seams.cursor.material.color.getHexString() === 'd55e00', null, { timeout: 5000 }).catch(() => {});
+  await page.waitForFunction(() => window.billow.test.panes.target.seams.cursor.material.color.getHexString() === 'd55e00', null, { timeout: 5000 }).catch(() => {});
   assert.equal(await page.evaluate(snapColor), 'd55e00');
   await clickAt(page, a);
   await waitSummary(page, /1 seam, 2 segments/);
@@ -56,13 +56,13 @@ test('draw a closed seam (two segments), then a snapped seam across it (three)',
   const page = await openPage(env.context, env.server.url);
   await openSphere(page);
   await drawTwoSeams(page);
-  const design = await page.evaluate(() => window.billow.app.design);
+  const design = await page.evaluate(() => window.billow.test.design);
   assert.equal(design.seams.length, 2);
   assert.equal(design.seams[0].closed, true);
   assert.equal(design.seams[0].points.length, 3);
   assert.equal(design.seams[1].closed, false);
   for (const p of design.seams[1].points) assert.equal(typeof p.face, 'number');
-  const seg = await page.evaluate(() => window.billow.app.seams.segmentation);
+  const seg = await page.evaluate(() => window.billow.test.segmentation);
   assert.equal(seg.segments.length, 3);
   assert.ok(seg.segments.every((s) => s.isDisk));
   assert.equal(seg.problems.filter((p) => p.severity === 'error').length, 0);
@@ -75,24 +75,24 @@ test('drag a control point, undo and redo, reload, and open the shared link', as
   const page = await openPage(env.context, env.server.url);
   await openSphere(page);
   await drawTwoSeams(page);
-  const before = await page.evaluate(() => window.billow.app.design.seams[0].points[2]);
+  const before = await page.evaluate(() => window.billow.test.design.seams[0].points[2]);
   await page.keyboard.press('e');
   const [c, target] = await surfaceScreenPoints(page, [[0.1, -0.3, 1], [0.0, -0.6, 1]]);
   await page.mouse.move(c.x, c.y);
   await page.mouse.down();
   await page.mouse.move(target.x, target.y, { steps: 6 });
   await page.mouse.up();
-  const moved = await page.evaluate(() => window.billow.app.design.seams[0].points[2]);
+  const moved = await page.evaluate(() => window.billow.test.design.seams[0].points[2]);
   assert.notDeepEqual(moved, before, 'the control point moved');
   await waitSummary(page, /2 seams, 3 segments/);
   await page.keyboard.press('Control+z');
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams[0].points[2]), before, 'one undo step undoes the whole drag');
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.seams[0].points[2]), before, 'one undo step undoes the whole drag');
   await page.keyboard.press('Control+z');
-  assert.equal(await page.evaluate(() => window.billow.app.design.seams.length), 1);
+  assert.equal(await page.evaluate(() => window.billow.test.design.seams.length), 1);
   await waitSummary(page, /1 seam, 2 segments/);
   await page.keyboard.press('Control+Shift+z');
   await page.keyboard.press('Control+Shift+z');
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design.seams[0].points[2]), moved);
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.seams[0].points[2]), moved);
   await waitSummary(page, /2 seams, 3 segments/);
 
   await page.waitForTimeout(300);
@@ -100,12 +100,12 @@ test('drag a control point, undo and redo, reload, and open the shared link', as
   await page.waitForSelector('body[data-ready="true"]');
   await waitSummary(page, /2 seams, 3 segments/);
 
-  const url = await page.evaluate(() => window.billow.app.shareLink());
+  const url = await page.evaluate(() => window.billow.test.shareLink());
   const other = await launch();
   try {
     const fresh = await openPage(other, url);
     await waitSummary(fresh, /2 seams, 3 segments/);
-    assert.deepEqual(await fresh.evaluate(() => window.billow.app.design.seams), await page.evaluate(() => window.billow.app.design.seams));
+    assert.deepEqual(await fresh.evaluate(() => window.billow.test.design.seams), await page.evaluate(() => window.billow.test.design.seams));
     assert.deepEqual(fresh.errors, []);
   } finally {
     await other.close();
@@ -118,23 +118,23 @@ test('a design on the designer\'s own mesh file travels by link with its mesh, a
   const page = await openPage(env.context, env.server.url);
   await page.setInputFiles('#file-input', { name: 'my ball.obj', mimeType: 'text/plain', buffer: readFileSync(join(MESHES, 'sphere.obj')) });
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'my ball.obj');
-  await page.waitForFunction(() => !window.billow.app.design.seams.length);
+  await page.waitForFunction(() => !window.billow.test.design.seams.length);
   await drawTwoSeams(page);
-  const url = await page.evaluate(() => window.billow.app.shareLink());
+  const url = await page.evaluate(() => window.billow.test.shareLink());
   assert.match(url, /#design=[A-Za-z0-9_-]+&mesh=[A-Za-z0-9_-]+$/);
   const other = await launch();
   try {
     const fresh = await openPage(other, url);
     await waitSummary(fresh, /2 seams, 3 segments/);
     assert.equal(await fresh.textContent('#target-stats dd[data-stat="file"]'), 'my ball.obj');
-    assert.equal(await fresh.evaluate(() => window.billow.app.target.indices.length), 1280 * 3);
+    assert.equal(await fresh.evaluate(() => window.billow.test.target.indices.length), 1280 * 3);
     // The same control points in space (the link renumbers the triangles, so faces and barycentrics differ).
     // The grid moves a point by at most 0.002 on this sphere (edges 0.15); a point snapped onto another seam
     // follows that seam as traced on the received mesh, a little further.
-    const places = () => window.billow.app.design.seams.map((seam) => ({
+    const places = () => window.billow.test.design.seams.map((seam) => ({
       closed: seam.closed,
       points: seam.points.map(({ face, bary }) => {
-        const { positions, indices } = window.billow.app.target;
+        const { positions, indices } = window.billow.test.target;
         return [0, 1, 2].map((a) => bary.reduce((sum, w, c) => sum + w * positions[3 * indices[3 * face + c] + a], 0));
       }),
     }));
@@ -155,7 +155,7 @@ test('a design on the designer\'s own mesh file travels by link with its mesh, a
   }
   await page.setInputFiles('#file-input', { name: 'hand.obj', mimeType: 'text/plain', buffer: readFileSync(join(MESHES, 'hand.obj')) });
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'hand.obj', null, { timeout: 60000 });
-  const handUrl = await page.evaluate(() => window.billow.app.shareLink());
+  const handUrl = await page.evaluate(() => window.billow.test.shareLink());
   assert.match(handUrl, /#design=[A-Za-z0-9_-]+&mesh=[A-Za-z0-9_-]+$/, 'hand.obj (15,982 triangles) travels in its link');
   assert.ok(handUrl.length < 61000, `${handUrl.length} characters`);
   assert.deepEqual(page.errors, []);
@@ -166,13 +166,13 @@ test('mirror symmetry: a seam drawn on one side gets a twin; dragging, undo and 
   const page = await openPage(env.context, env.server.url);
   await openSphere(page);
   await page.selectOption('#seam-panel select.symmetry', 'x');
-  await page.waitForFunction(() => window.billow.app.design.symmetry?.axis === 'x');
+  await page.waitForFunction(() => window.billow.test.design.symmetry?.axis === 'x');
   await page.keyboard.press('d');
   const [a, b, c] = await surfaceScreenPoints(page, [[0.7, 0.4, 0.8], [0.3, 0.0, 1], [0.7, -0.4, 0.8]]);
   for (const p of [a, b, c]) await clickAt(page, p);
   await clickAt(page, a); // closes the loop
   await waitSummary(page, /2 seams, 3 segments/);
-  const position = (seam, k) => page.evaluate(([i, j]) => window.billow.app.seams.positionOf(window.billow.app.design.seams[i].points[j]), [seam, k]);
+  const position = (seam, k) => page.evaluate(([i, j]) => window.billow.test.positionOf(window.billow.test.design.seams[i].points[j]), [seam, k]);
   const mirrorError = async () => {
     let worst = 0;
     for (let k = 0; k < 3; k++) {
@@ -182,7 +182,7 @@ test('mirror symmetry: a seam drawn on one side gets a twin; dragging, undo and 
     return worst;
   };
   assert.ok((await mirrorError()) < 0.02, 'the twin mirrors the seam across x = 0');
-  assert.equal(await page.evaluate(() => window.billow.app.design.seams[1].mirror), 0);
+  assert.equal(await page.evaluate(() => window.billow.test.design.seams[1].mirror), 0);
   await screenshot(page, 'seams-mirror-symmetry');
 
   await page.keyboard.press('e');
@@ -223,7 +223,7 @@ test('touch: tapping points and "Close loop" draws a seam; a finger drags a cont
   await openSphere(page);
   const kinds = [];
   await page.exposeFunction('recordPointer', (kind) => kinds.push(kind));
-  await page.evaluate(() => window.billow.app.panes.target.element.addEventListener('pointerdown', (e) => window.recordPointer(e.pointerType)));
+  await page.evaluate(() => window.billow.test.panes.target.element.addEventListener('pointerdown', (e) => window.recordPointer(e.pointerType)));
   await page.click('#seam-panel button[data-tool="draw"]');
   assert.equal(await page.isHidden('#seam-panel .drawbar'), true, 'no draw buttons before the first point');
   const [a, b, c] = await surfaceScreenPoints(page, [[0.5, 0.6, 1], [-0.3, 0.5, 1], [0.1, -0.3, 1]]);
@@ -236,7 +236,7 @@ test('touch: tapping points and "Close loop" draws a seam; a finger drags a cont
   assert.ok(kinds.length >= 3 && kinds.every((k) => k === 'touch'), `pointer types ${kinds}`);
   await page.tap('#seam-panel .drawbar button:has-text("Close loop")').catch(() => page.click('#seam-panel .drawbar button:has-text("Close loop")'));
   await waitSummary(page, /1 seam, 2 segments/);
-  const seam = await page.evaluate(() => window.billow.app.design.seams[0]);
+  const seam = await page.evaluate(() => window.billow.test.design.seams[0]);
   assert.equal(seam.closed, true);
   assert.equal(seam.points.length, 3);
   assert.equal(await page.isHidden('#seam-panel .drawbar'), true);
@@ -246,9 +246,9 @@ test('touch: tapping points and "Close loop" draws a seam; a finger drags a cont
   const [to] = await surfaceScreenPoints(page, [[-0.5, 0.7, 1]]);
   // Where control point 1 is on screen now (where the tap put it), and 15 px off it: beyond a mouse's reach.
   const grip = await page.evaluate(() => {
-    const app = window.billow.app;
-    const pane = app.panes.target;
-    const c = app.seams.seamTraces()[0].controls;
+    const t = window.billow.test;
+    const pane = t.panes.target;
+    const c = t.seamTraces()[0].controls;
     const p = pane.mesh.localToWorld(new pane.mesh.position.constructor(c[3], c[4], c[5])).project(pane.camera);
     const rect = pane.element.getBoundingClientRect();
     return { x: rect.left + ((p.x + 1) / 2) * rect.width, y: rect.top + ((1 - p.y) / 2) * rect.height };
@@ -258,7 +258,7 @@ test('touch: tapping points and "Close loop" draws a seam; a finger drags a cont
   for (let k = 1; k <= 6; k++)
     await cdp.send('Input.dispatchTouchEvent', { type: 'touchMove', touchPoints: [{ x: start.x + ((to.x - start.x) * k) / 6, y: start.y + ((to.y - start.y) * k) / 6 }] });
   await cdp.send('Input.dispatchTouchEvent', { type: 'touchEnd', touchPoints: [] });
-  await page.waitForFunction((before) => JSON.stringify(window.billow.app.design.seams[0].points[1]) !== before, JSON.stringify(seam.points[1]));
+  await page.waitForFunction((before) => JSON.stringify(window.billow.test.design.seams[0].points[1]) !== before, JSON.stringify(seam.points[1]));
   await waitSummary(page, /1 seam, 2 segments/);
   await screenshot(page, 'seams-touch');
   assert.deepEqual(page.errors, []);
@@ -275,12 +275,12 @@ test('Escape cancels a seam being drawn and Backspace removes its last point', a
   await page.keyboard.press('Backspace');
   await clickAt(page, c);
   await page.keyboard.press('Enter');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 1);
-  assert.equal(await page.evaluate(() => window.billow.app.design.seams[0].points.length), 2, 'a and c');
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 1);
+  assert.equal(await page.evaluate(() => window.billow.test.design.seams[0].points.length), 2, 'a and c');
   await clickAt(page, b);
   await page.keyboard.press('Escape');
   await page.waitForTimeout(200);
-  assert.equal(await page.evaluate(() => window.billow.app.design.seams.length), 1, 'nothing added');
+  assert.equal(await page.evaluate(() => window.billow.test.design.seams.length), 1, 'nothing added');
   assert.match(await summary(page), /1 seam/);
   assert.deepEqual(page.errors, []);
   await page.close();
@@ -291,7 +291,7 @@ test('a seam that would cross itself or cut off a tiny piece is shown as such wh
   await openSphere(page);
   await page.keyboard.press('d');
   const note = page.locator('#pane-target ~ .pane-labels .draft-warning, .draft-warning').first();
-  const previewColor = () => page.evaluate(() => window.billow.app.panes.target.seams.items.children.at(-1)?.material.color.getHexString());
+  const previewColor = () => page.evaluate(() => window.billow.test.panes.target.seams.items.children.at(-1)?.material.color.getHexString());
   // A bow tie: a, b, c clicked, the cursor at d: the stretch c-d crosses a-b.
   const [a, b, c, d] = await surfaceScreenPoints(page, [[0.6, 0.6, 1], [-0.6, -0.6, 1], [0.6, -0.6, 1], [-0.6, 0.6, 1]]);
   for (const p of [a, b, c]) await clickAt(page, p);
@@ -324,7 +324,7 @@ test('a seam that would cross itself or cut off a tiny piece is shown as such wh
   assert.equal(await note.textContent(), 'Closing here: cuts off a tiny piece');
   await page.keyboard.press('Escape');
   await note.waitFor({ state: 'hidden', timeout: 5000 });
-  assert.equal(await page.evaluate(() => window.billow.app.design.seams.length), 0, 'nothing was committed');
+  assert.equal(await page.evaluate(() => window.billow.test.design.seams.length), 0, 'nothing was committed');
   assert.deepEqual(page.errors, []);
   await page.close();
 });
@@ -340,20 +340,20 @@ test('an internal connection joins two seams: listed, drawn translucent, undoabl
   await clickAt(page, c);
   await clickAt(page, d);
   await page.keyboard.press('Enter');
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 2);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 2);
   await page.click('#seam-panel .seam:nth-child(1) .name');
   await page.click('#seam-panel .seam:nth-child(2) .connect');
-  assert.deepEqual(await page.evaluate(() => window.billow.app.design.connections), [{ seams: [0, 1] }]);
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.connections), [{ seams: [0, 1] }]);
   assert.match(await page.textContent('#seam-panel .connection'), /Internal panel: Seam 1 ↔ Seam 2/);
-  assert.equal(await page.evaluate(() => window.billow.app.panes.target.connections.children.length), 1);
+  assert.equal(await page.evaluate(() => window.billow.test.panes.target.connections.children.length), 1);
   await page.keyboard.press('Control+z');
-  assert.equal(await page.evaluate(() => window.billow.app.design.connections.length), 0);
+  assert.equal(await page.evaluate(() => window.billow.test.design.connections.length), 0);
   await page.keyboard.press('Control+Shift+z');
-  assert.equal(await page.evaluate(() => window.billow.app.design.connections.length), 1);
+  assert.equal(await page.evaluate(() => window.billow.test.design.connections.length), 1);
   await screenshot(page, 'seams-connection');
   await page.click('#seam-panel .connection .delete');
-  assert.equal(await page.evaluate(() => window.billow.app.design.connections.length), 0);
-  assert.equal(await page.evaluate(() => window.billow.app.panes.target.connections.children.length), 0);
+  assert.equal(await page.evaluate(() => window.billow.test.design.connections.length), 0);
+  assert.equal(await page.evaluate(() => window.billow.test.panes.target.connections.children.length), 0);
   assert.deepEqual(page.errors, []);
   await page.close();
 });

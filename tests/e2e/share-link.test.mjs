@@ -23,14 +23,14 @@ async function openDesignOn(page, file, faces) {
     seams: [{ name: 'palm', closed: false, weight: 1, points: faces.map((face, i) => ({ face, bary: [0.2 + 0.1 * i, 0.3, 0.5 - 0.1 * i] })) }],
   };
   await page.setInputFiles('#file-input', { name: 'palm.billow.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(design)) });
-  await page.waitForFunction(() => window.billow.app.design.seams.length === 1);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 1);
 }
 
 // The seams' control points in space, on the page's own target.
 const places = () =>
-  window.billow.app.design.seams.map((seam) =>
+  window.billow.test.design.seams.map((seam) =>
     seam.points.map(({ face, bary }) => {
-      const { positions, indices } = window.billow.app.target;
+      const { positions, indices } = window.billow.test.target;
       return [0, 1, 2].map((a) => bary.reduce((sum, w, c) => sum + w * positions[3 * indices[3 * face + c] + a], 0));
     }),
   );
@@ -63,15 +63,15 @@ test('a design on hand.obj (15,982 triangles) travels with its mesh; its seam co
   await openMesh(page, 'hand.obj', readFileSync(join(MESHES, 'hand.obj')));
   await fileShown(page, 'hand.obj');
   await openDesignOn(page, 'hand.obj', [4000, 4100, 4200]);
-  const url = await page.evaluate(() => window.billow.app.shareLink());
+  const url = await page.evaluate(() => window.billow.test.shareLink());
   assert.match(url, /#design=[A-Za-z0-9_-]+&mesh=[A-Za-z0-9_-]+$/);
   assert.ok(url.length < 61000, `${url.length} characters`);
   const other = await launch();
   try {
     const fresh = await openPage(other, url);
     await fileShown(fresh, 'hand.obj');
-    await fresh.waitForFunction(() => window.billow.app.design.seams.length === 1);
-    assert.equal(await fresh.evaluate(() => window.billow.app.target.indices.length), 15982 * 3);
+    await fresh.waitForFunction(() => window.billow.test.design.seams.length === 1);
+    assert.equal(await fresh.evaluate(() => window.billow.test.target.indices.length), 15982 * 3);
     const sent = await page.evaluate(places);
     const received = await fresh.evaluate(places);
     sent[0].forEach((p, k) => {
@@ -94,10 +94,10 @@ test('a mesh too large for a link: the link asks for its file, another file is r
   await openMesh(page, 'big hand.obj', big);
   await fileShown(page, 'big hand.obj', 120000);
   await openDesignOn(page, 'big hand.obj', [40000, 40400, 40800]);
-  const url = await page.evaluate(() => window.billow.app.shareLink());
+  const url = await page.evaluate(() => window.billow.test.shareLink());
   assert.match(url, /#design=[A-Za-z0-9_-]+&target=63928\.\d+\.[0-9a-f]{8}$/);
   await page.locator('.message.notice', { hasText: 'send the file along' }).waitFor();
-  const sent = await page.evaluate(() => window.billow.app.design.seams);
+  const sent = await page.evaluate(() => window.billow.test.design.seams);
 
   const other = await launch();
   try {
@@ -108,12 +108,12 @@ test('a mesh too large for a link: the link asks for its file, another file is r
     await openMesh(fresh, 'hand.obj', hand);
     await fileShown(fresh, 'hand.obj');
     await fresh.locator('.message.warning', { hasText: 'is not the mesh the shared design was drawn on' }).waitFor();
-    assert.equal(await fresh.evaluate(() => window.billow.app.design.seams.length), 0, 'another file opens on its own');
+    assert.equal(await fresh.evaluate(() => window.billow.test.design.seams.length), 0, 'another file opens on its own');
 
     await openMesh(fresh, 'big hand.obj', big);
     await fileShown(fresh, 'big hand.obj', 120000);
-    await fresh.waitForFunction(() => window.billow.app.design.seams.length === 1);
-    assert.deepEqual(await fresh.evaluate(() => window.billow.app.design.seams), sent, 'the same seam on the same triangles');
+    await fresh.waitForFunction(() => window.billow.test.design.seams.length === 1);
+    assert.deepEqual(await fresh.evaluate(() => window.billow.test.design.seams), sent, 'the same seam on the same triangles');
     assert.equal(await fresh.locator('.message.warning', { hasText: 'shared design' }).count(), 0, 'nothing waits any more');
     assert.deepEqual(fresh.errors, []);
   } finally {

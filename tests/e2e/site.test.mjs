@@ -33,7 +33,7 @@ const ready = (page) => page.waitForSelector('body[data-ready="true"]', { timeou
 // The three panes are there and the target is drawn.
 async function assertRendered(page, what) {
   for (const pane of ['target', 'inflated', 'pattern']) assert.ok(await page.isVisible(`#pane-${pane}`), `${what}: the ${pane} pane`);
-  await page.waitForFunction(() => window.billow.viewport && document.querySelector('#status').textContent === 'Ready');
+  await page.waitForFunction(() => window.billow.test && document.querySelector('#status').textContent === 'Ready');
   await page.evaluate(() => new Promise((resolve) => requestAnimationFrame(() => requestAnimationFrame(resolve))));
   const painted = await paintedFraction(page, '#pane-target .pane-body');
   assert.ok(painted > 0.05, `${what}: the target is drawn (${(painted * 100).toFixed(1)} % of the pane)`);

@@ -67,7 +67,7 @@ test('every visible control has a tooltip and a name, in every state of the page
   await check('the Export menu');
   await page.click('#export-menu summary');
 
-  await page.evaluate(() => window.billow.gallery.open('sphere3'));
+  await page.evaluate(() => window.billow.test.openGalleryDesign('sphere3'));
   await resultShown(page);
   await check('a design with its result');
   // The pattern pane's list of seams with their own allowances.
@@ -92,7 +92,7 @@ test('every visible control has a tooltip and a name, in every state of the page
   await check('mirror symmetry');
   await page.selectOption('#seam-panel select.symmetry', '');
   await page.click('#seam-panel button[data-tool="draw"]');
-  const square = await page.evaluate(() => window.billow.app.panes.target.square); // where the target is framed
+  const square = await page.evaluate(() => window.billow.test.panes.target.square); // where the target is framed
   await page.mouse.click(square.left + square.side / 2, square.top + square.side / 2);
   await page.waitForSelector('#seam-panel .drawbar:not([hidden])');
   await check('drawing a seam');
@@ -109,7 +109,7 @@ test('every visible control has a tooltip and a name, in every state of the page
   await check('help');
   await page.click('#help-dialog .close');
 
-  await page.evaluate(() => window.billow.app.messages.show('notice', 'A message to dismiss.'));
+  await page.evaluate(() => window.billow.test.showMessage('notice', 'A message to dismiss.'));
   await check('a message');
   await page.click('#messages .message button');
 

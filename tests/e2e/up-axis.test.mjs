@@ -35,7 +35,7 @@ async function statSize(page) {
 // direction its own z axis points to, and whether the inflated pane is turned the same way.
 function standing(page, axis = 2) {
   return page.evaluate((k) => {
-    const pane = window.billow.app.panes.target;
+    const pane = window.billow.test.panes.target;
     const mesh = pane.mesh;
     const Vector3 = mesh.position.constructor;
     const position = mesh.geometry.getAttribute('position');
@@ -55,7 +55,7 @@ function standing(page, axis = 2) {
       if (!feet || z < feet.z) feet = { z, y };
     }
     const zAxis = new Vector3(0, 0, 1).transformDirection(mesh.matrixWorld);
-    const inflated = window.billow.app.panes.inflated.group.quaternion;
+    const inflated = window.billow.test.panes.inflated.group.quaternion;
     return {
       width: right - left, height: bottom - top, headY: head.y, feetY: feet.y, zAxis: [zAxis.x, zAxis.y, zAxis.z],
       sameTurn: Math.abs(inflated.dot(pane.group.quaternion)) > 1 - 1e-9,
@@ -66,7 +66,7 @@ function standing(page, axis = 2) {
 // Picks the target at the screen point of its own point `position` and returns the pick (null: nothing there).
 function pickAt(page, position) {
   return page.evaluate((p) => {
-    const pane = window.billow.app.panes.target;
+    const pane = window.billow.test.panes.target;
     const world = pane.mesh.localToWorld(new pane.mesh.position.constructor(...p)).project(pane.camera);
     const rect = pane.element.getBoundingClientRect();
     const event = { clientX: rect.left + ((world.x + 1) / 2) * rect.width, clientY: rect.top + ((1 - world.y) / 2) * rect.height };
@@ -76,7 +76,7 @@ function pickAt(page, position) {
 
 const near = (a, b, tolerance, what) => assert.ok(Math.abs(a - b) <= tolerance, `${what}: ${a} is not ${b} ± ${tolerance}`);
 const waitSegments = (page, n) =>
-  page.waitForFunction((count) => window.billow.app.seams.segmentation?.segments.length === count, n, { timeout: 30000 });
+  page.waitForFunction((count) => window.billow.test.segmentation?.segments.length === count, n, { timeout: 30000 });
 
 test('a Z-up file opens standing Z up; Up turns it, undo turns it back, Height follows the axis', async () => {
   const page = await openFreshPage(env.context, env.server.url);
@@ -94,7 +94,7 @@ test('a Z-up file opens standing Z up; Up turns it, undo turns it back, Height f
   near(w / h, 3.76012 / 5.33893, 0.01, 'W / H standing Z up');
   near(d / h, 9.21337 / 5.33893, 0.01, 'D / H standing Z up');
   // The classroom's figure for the target reads its height as it stands too.
-  const classroomHeight = await page.evaluate(() => window.billow.classroom.targetFigures('target')[0][1]);
+  const classroomHeight = await page.evaluate(() => window.billow.test.classroomFigures('target')[0][1]);
   assert.equal(classroomHeight, `${Math.round(100 * height)} cm`);
   const upright = await standing(page);
   assert.ok(upright.zAxis[1] > 0.999, `the file's z axis points up on screen: ${upright.zAxis}`);
@@ -113,12 +113,12 @@ test('a Z-up file opens standing Z up; Up turns it, undo turns it back, Height f
     await page.waitForTimeout(120);
   }
   await waitSegments(page, 2);
-  const seams = await page.evaluate(() => JSON.stringify(window.billow.app.design.seams));
+  const seams = await page.evaluate(() => JSON.stringify(window.billow.test.design.seams));
   await page.keyboard.press('v');
 
   // Y up, the file's own: the koala stands on its tail, Height along its length.
   await page.selectOption('#up-select', '+y');
-  await page.waitForFunction(() => window.billow.app.design.target.up === undefined);
+  await page.waitForFunction(() => window.billow.test.design.target.up === undefined);
   [w, h, d] = await statSize(page);
   near(h, height, 0.001, 'H is the height');
   near(w / h, 3.76012 / 9.21337, 0.01, 'W / H standing Y up');
@@ -127,7 +127,7 @@ test('a Z-up file opens standing Z up; Up turns it, undo turns it back, Height f
   assert.ok(onTail.height / onTail.width > 1.3 * (upright.height / upright.width), `taller on its tail: ${JSON.stringify(onTail)}`);
   assert.ok(onTail.sameTurn, 'the inflated pane stands the same way');
   assert.equal(await page.locator('.message.notice', { hasText: 'koala-zup.obj' }).count(), 0, 'the guess notice goes');
-  assert.equal(await page.evaluate(() => JSON.stringify(window.billow.app.design.seams)), seams, 'the seams are where they were');
+  assert.equal(await page.evaluate(() => JSON.stringify(window.billow.test.design.seams)), seams, 'the seams are where they were');
   await waitSegments(page, 2);
 
   // Undo: Z up again, the seam still on the same triangles; then Height applies along Z.
@@ -136,11 +136,11 @@ test('a Z-up file opens standing Z up; Up turns it, undo turns it back, Height f
   [w, h] = await statSize(page);
   near(w / h, 3.76012 / 5.33893, 0.01, 'W / H after undo');
   assert.ok((await standing(page)).zAxis[1] > 0.999, 'standing Z up after undo');
-  assert.equal(await page.evaluate(() => JSON.stringify(window.billow.app.design.seams)), seams);
+  assert.equal(await page.evaluate(() => JSON.stringify(window.billow.test.design.seams)), seams);
   // Picking in the turned frame: the seam's first point, placed from its {face, bary}, is found there.
   const first = await page.evaluate(() => {
-    const { face, bary } = window.billow.app.design.seams[0].points[0];
-    const pane = window.billow.app.panes.target;
+    const { face, bary } = window.billow.test.design.seams[0].points[0];
+    const pane = window.billow.test.panes.target;
     const pos = pane.mesh.geometry.getAttribute('position');
     const index = pane.mesh.geometry.index.array;
     const corner = (c, k) => pos.array[3 * index[3 * face + c] + k];

@@ -257,7 +257,7 @@ window.addEventListener('hashchange', () => {
   }
 });
 // The end-to-end tests' way in (test-facade.js).
-window.billow = { app, client, viewport, seamTool, exporter, tabGuard, theme, gallery, classroom, compare, test: testFacade({ app, seamTool, gallery, classroom, compare, tabGuard, client }) };
+window.billow = { test: testFacade({ app, seamTool, gallery, classroom, compare, tabGuard, client }) };
 tabGuard
   .start()
   .then(() => app.start())

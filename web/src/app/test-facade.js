@@ -83,6 +83,11 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     get storedShown() {
       return app.panels.storedShown();
     },
+    // The gallery's stored result last shown, as { revision, triangles } of the design it was shown for; null
+    // once the live result has replaced it (or when none was shown).
+    get stored() {
+      return app.stored;
+    },
     // The optimized panels of the design on screen are made, inflated and shown, and nothing runs.
     get resultShown() {
       return Boolean(app.store.optimizedShown());
@@ -91,6 +96,10 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     // The three views, to look at what they draw (their meshes, cameras and overlays).
     get panes() {
       return app.panes;
+    },
+    // Which inflated shape the inflated pane shows: a count that grows with each new shape it is given.
+    get inflatedSerial() {
+      return app.panes.inflated.serial;
     },
 
     // Actions a designer takes through fields and menus.
@@ -102,6 +111,13 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     setSeamAllowance: (id, mm) => app.setSeamAllowance(id, mm),
     addValve: (seam, at) => app.addValve(seam, at),
     setSymmetry: (axis) => app.seams.setSymmetry(axis),
+    // A seam as a design file writes it, added in one undo step; the seams are traced and segmented again.
+    addSeam(seam) {
+      app.commitDesign({ ...app.design, seams: [...app.design.seams, seam] });
+      app.seams.refresh();
+    },
+    // Stops the optimization under way, if any (a test that leaves nothing running).
+    cancelOptimizing: () => app.optimizing?.cancel(),
     openGalleryDesign: (id) => gallery.open(id),
 
     // What the app says: messages and the status line, as the app would set them (layout tests of long texts).
