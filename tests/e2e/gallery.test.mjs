@@ -223,7 +223,7 @@ test('a seam\'s weight slider set to 0 lets the seams slide, and the status says
   assert.deepEqual(state.weights, [0, 1, 1]);
   assert.ok(state.statuses.some((s) => /^Optimizing the panels: step \d+, distance [\d.]+ % (target|inflated) → (inflated|target), [\d.]+ % (target|inflated) → (inflated|target), light seams sliding/.test(s)), state.statuses.slice(-3).join(' | '));
   await screenshot(page, 'gallery-sphere3-sliding-live');
-  await page.evaluate(() => window.billow.test.cancelOptimizing());
+  await page.evaluate(() => window.billow.test.stopWork());
   assert.deepEqual(page.errors, []);
   await page.close();
 });
@@ -239,7 +239,7 @@ test('deleting an internal connection makes the panels again, without the intern
     .catch(async (error) => {
       throw new Error(`the panels were not made again: ${await page.evaluate(() => window.billow.test.shownPattern?.panels.length)} of ${before} (${error.message})`);
     });
-  await page.evaluate(() => window.billow.test.cancelOptimizing());
+  await page.evaluate(() => window.billow.test.stopWork());
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -104,7 +104,7 @@ export class Panels {
     try {
       const result = await call.promise;
       this.store.setResult('optimized', result, revision);
-      this.store.setResult('stored', false, revision); // replaced by the live result
+      this.store.dropResult('stored'); // replaced by the live result
       this.messages.resolve('pattern', { prefix: true });
       const shown = await this.showVersion('optimized');
       if (shown && revision === this.app.revision) this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);

@@ -106,6 +106,11 @@ export class Store {
     return r && r.revision === this.revision ? r.value : null;
   }
 
+  dropResult(kind) {
+    this.results.delete(kind);
+    this.changed('results');
+  }
+
   clearResults() {
     this.results.clear();
     this.changed('results');

@@ -83,10 +83,10 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     get storedShown() {
       return app.panels.storedShown();
     },
-    // The gallery's stored result last shown, as { revision, triangles } of the design it was shown for; null
-    // once the live result has replaced it (or when none was shown).
+    // The gallery's stored result on record, as { revision, value } (the revision it was shown for); null once
+    // the live result has replaced it (or when none was shown).
     get stored() {
-      return app.stored;
+      return app.store.results.get('stored') ?? null;
     },
     // The optimized panels of the design on screen are made, inflated and shown, and nothing runs.
     get resultShown() {
@@ -116,8 +116,8 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
       app.commitDesign({ ...app.design, seams: [...app.design.seams, seam] });
       app.seams.refresh();
     },
-    // Stops the optimization under way, if any (a test that leaves nothing running).
-    cancelOptimizing: () => app.optimizing?.cancel(),
+    // Stops making and inflating panels (a test that leaves nothing running).
+    stopWork: () => app.panels.stop(),
     openGalleryDesign: (id) => gallery.open(id),
 
     // What the app says: messages and the status line, as the app would set them (layout tests of long texts).
