@@ -401,7 +401,10 @@ TEST(DesignJson, UpAxisIsReadByTheSameRulesAsTheApp) {
     EXPECT_EQ(warnings[0].field, "target.up");
     EXPECT_EQ(d.target.up, UpAxis{}) << "Y up instead of " << value;
     EXPECT_EQ(d.target.name, "sphere") << "the target itself is kept";
+    // The worker reads an up axis alone by the same rule.
+    EXPECT_THROW(readDesignUp(value), Error) << value;
   }
+  for (const json& value : cases["good"]) EXPECT_EQ(toString(readDesignUp(value)), value.get<std::string>());
 }
 
 // The height is the target's extent along its up axis (the app's heightScale has the same rule and the same

@@ -63,5 +63,5 @@ test('problems say where as the target stands on its up axis', () => {
   assert.deepEqual(words(undefined), yUp, 'no axis given is Y up');
   const zUp = words('+z');
   assert.ok(zUp.length > 0 && zUp.every((m) => !/ near the top /.test(m)), zUp.join(' | '));
-  assert.throws(() => check([ring(0)], 'sideways'), /up axis must be one of/);
+  assert.throws(() => check([ring(0)], 'sideways'), /up axis \(target\.up\) must be one of/);
 });

@@ -317,15 +317,13 @@ class TargetSession {
     return j;
   }
 
-  // The options' "up" (the design's target.up): absent means +y.
+  // The options' "up" (the design's target.up) by the design reader's rule. Left out, null or "" (how embind
+  // passes a string the page left out), it is Y up, as for a design without one.
   static billow::UpAxis readUp(const json& options) {
-    billow::UpAxis up;
-    if (!options.is_object() || !options.contains("up") || options["up"].is_null() ||
-        (options["up"].is_string() && options["up"].get<std::string>().empty()))
-      return up;
-    if (!options["up"].is_string() || !billow::parseUpAxis(options["up"].get<std::string>(), up))
-      throw billow::Error("target.bad-up", "The target's up axis must be one of +y, -y, +z, -z, +x, -x.");
-    return up;
+    if (!options.is_object() || !options.contains("up")) return {};
+    const json& up = options["up"];
+    if (up.is_null() || (up.is_string() && up.get<std::string>().empty())) return {};
+    return billow::readDesignUp(up);
   }
 
   void requireTarget() const {

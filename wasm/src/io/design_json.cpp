@@ -189,12 +189,17 @@ bool readInlineMesh(FieldReader& r, const json& t, TriMesh& mesh) {
   return true;
 }
 
+UpAxis readUp(FieldReader& r, const json& value) {
+  UpAxis up;
+  if (value.is_string() && parseUpAxis(value.get<std::string>(), up)) return up;
+  r.bad("target.up", "The target's up axis (target.up) must be one of \"+y\", \"-y\", \"+z\", \"-z\", \"+x\", \"-x\", not " +
+                         shortDump(value) + ".");
+  return UpAxis{};
+}
+
 bool readTarget(FieldReader& r, const json& t, DesignTarget& out) {
   if (!t.is_object()) return r.bad("target", "The target must be an object such as {\"example\": \"spot\"}.");
-  if (t.contains("up") && !(t["up"].is_string() && parseUpAxis(t["up"].get<std::string>(), out.up)))
-    r.bad("target.up",
-          "The target's up axis (target.up) must be one of \"+y\", \"-y\", \"+z\", \"-z\", \"+x\", \"-x\", not " +
-              t["up"].dump() + ".");
+  if (t.contains("up")) out.up = readUp(r, t["up"]);
   const int kinds =
       int(t.contains("example")) + int(t.contains("obj")) + int(t.contains("file")) + int(t.contains("vertices"));
   if (kinds != 1)
@@ -331,6 +336,11 @@ double readDesignPressure(const json& value, double fallback, const DesignReadOp
                           std::vector<DesignWarning>* warnings) {
   FieldReader r(options, warnings);
   return r.number(value, fallback, 1.0, 1e7, "pressure", "The pressure", "between 1 Pa and 10 MPa");
+}
+
+UpAxis readDesignUp(const json& value, const DesignReadOptions& options, std::vector<DesignWarning>* warnings) {
+  FieldReader r(options, warnings);
+  return readUp(r, value);
 }
 
 std::string writeDesignJson(const Design& d, int indent) {

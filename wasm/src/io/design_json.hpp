@@ -104,6 +104,10 @@ Material readDesignMaterial(const nlohmann::json& value, const Material& base = 
 // The over-pressure [Pa], 1 Pa to 10 MPa; `fallback` when not strict and bad.
 double readDesignPressure(const nlohmann::json& value, double fallback = 1000.0, const DesignReadOptions& options = {},
                           std::vector<DesignWarning>* warnings = nullptr);
+// The target's up axis, a design's target.up when it has one: "+y", "-y", "+z", "-z", "+x" or "-x" (a design
+// without one stands Y up).
+UpAxis readDesignUp(const nlohmann::json& value, const DesignReadOptions& options = {},
+                    std::vector<DesignWarning>* warnings = nullptr);
 std::string writeDesignJson(const Design& design, int indent = 2);
 
 // Folders searched for `{ "example": id }` targets (<dir>/<id>.obj): $BILLOW_EXAMPLES (':'-separated), then

@@ -46,9 +46,9 @@ struct OptimizeWeights {
   double cover = 1.0;   // E_cover
   // E_cover's kernel scale tau, a fraction of the target's diagonal D: each target point costs
   // rho(d) = tau^2 d^2 / (d^2 + tau^2) (Geman-McClure), about d^2 near the shape and at most tau^2 far from it,
-  // so a part of the target the shape cannot reach does not pull it (a small loop's lens on a sphere). 6 %: the
-  // "left out" threshold of uncoveredRegions (bench/README.md: 3 % leaves the two-disc sphere's lens where it
-  // slid, 12 % lets a small loop's lens drift).
+  // so a part of the target the shape cannot reach does not pull it (a small loop's lens on a sphere). The
+  // "left out" threshold of uncoveredRegions: what the figures call left out is what stops pulling (the
+  // scales tried: bench/README.md).
   double coverReach = 0.06;
   double seam = 1.0;     // multiplies every seam's sigma_i (the design's seam weight)
   double length = 10.0;  // E_length; the final seam-length projection makes it exact (see PatternOptimizer)

@@ -47,8 +47,8 @@ void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const 
 
 // The seam rods' coefficient of the panels X: seamRodCoefficient of the mesh sewn from them (its outer panels' rest
 // area, its mean rest edge length), and when given its derivative in X (2 per panel vertex). The pattern optimizer's
-// rods follow the panels so, as the cut panels' own rods do: a rod stiffness frozen at the flattened panels let the
-// optimizer walk to where 10 % stiffer rods snap the balloon into another shape (fb-spot, bench/README.md).
+// rods follow the panels so, as the cut panels' own rods do: the optimized panels must balance with the rods they
+// will be sewn with, not the flattened panels' (what a frozen stiffness did: bench/README.md).
 double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, double pressure,
                             double beta, Eigen::VectorXd* dcdX = nullptr);
 

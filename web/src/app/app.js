@@ -1,7 +1,7 @@
 // The application controller: owns the design document (through its undo history), talks to the
 // worker, updates the panes, autosaves, and shares designs by link or file.
 import { Op, ErrorCode } from '../worker/protocol.js';
-import { EXAMPLES, findExample } from './examples.js';
+import { findExample } from './examples.js';
 import { newDesign, parseDesign, clampHeight } from './design.js';
 import { autosave, tabRecordKey } from './autosave.js';
 import { Store } from './store.js';
@@ -10,31 +10,38 @@ import { awaitTarget } from './shared-link.js';
 import { PatternSession } from './pattern-session.js';
 import { Panels } from './panels.js';
 import { resultKey } from './stored-result.js';
-import { renderTargetStats } from './target-stats.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight, setUp, setMaterial, setPressure, setFabrication, setSeamAllowance, addValve, setValveWidth, removeValve } from './commands.js';
 import { upOf, heightScale, withGuessedUp } from './up-axis.js';
 import { standUp } from '../views/up-frame.js';
-import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MM_PER_INCH, MAX_VALVE_WIDTH, DEFAULT_VALVE_WIDTH, fabricationWithJoining, grainMode, GRAIN_FIELDS, seamLabel, joiningOf } from './fabrication.js';
+import { DesignFields } from '../views/design-fields.js';
+import { MAX_ALLOWANCE, MIN_SHEET, MAX_SHEET, MAX_VALVE_WIDTH, DEFAULT_VALVE_WIDTH, fabricationWithJoining, GRAIN_FIELDS, seamLabel } from './fabrication.js';
 import { download } from './download.js';
-import { MATERIAL_PRESETS, MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, describeMaterial, formatPressure } from './materials.js';
+import { MIN_PRESSURE, MAX_PRESSURE, presetMaterial, isPresetMaterial, formatPressure } from './materials.js';
 
-// Example patterns computed by the solver (wasm/src/simulate/example_patterns.cpp).
-export const PATTERN_EXAMPLES = [
-  { id: 'mylar', name: 'Mylar balloon (two discs)' },
-  { id: 'pillow', name: 'Pillow (two squares)' },
-  { id: 'sphere3', name: 'Sphere (three gores)' },
-];
+// What a typed value must be, by the field's message cause, and what the designer is told otherwise (the
+// ranges are the design reader's: design.js, fabrication.js, materials.js).
+const TYPED_RULES = {
+  height: { above: 0, message: () => 'The height must be a positive number of meters.' },
+  pressure: { min: MIN_PRESSURE, max: MAX_PRESSURE, message: () => `The pressure must be between ${formatPressure(MIN_PRESSURE)} and ${formatPressure(MAX_PRESSURE)}.` },
+  'fabrication.allowance': { min: 0, max: MAX_ALLOWANCE, message: () => `The seam allowance must be between 0 and ${MAX_ALLOWANCE} mm.` },
+  'fabrication.sheet_width': { min: MIN_SHEET, max: MAX_SHEET, message: () => `The sheet width must be between ${MIN_SHEET} and ${MAX_SHEET} mm.` },
+  'fabrication.free_edge_allowance': { min: 0, max: MAX_ALLOWANCE, message: () => `The allowance of free edges must be between 0 and ${MAX_ALLOWANCE} mm.` },
+  'fabrication.valve': { above: 0, max: MAX_VALVE_WIDTH, message: () => `A fill valve's gap must be wider than 0 and at most ${MAX_VALVE_WIDTH} mm.` },
+  'seam-allowance': { min: 0, max: MAX_ALLOWANCE, message: (id) => `The allowance of seam ${seamLabel(id)} must be between 0 and ${MAX_ALLOWANCE} mm.` },
+};
 
 const AUTOSAVE_KEY = 'current';
 const TAB_RECORD_DAYS = 30; // per-tab records older than this are deleted
 
 export class App {
-  constructor({ client, panes, messages, elements, baseUrl }) {
+  // elements: the page's status line, figures and version buttons; fields: the design's fields (DesignFields).
+  constructor({ client, panes, messages, elements, fields, baseUrl }) {
     this.client = client;
     this.panes = panes;
     this.messages = messages;
     this.el = elements;
+    this.fields = new DesignFields(fields);
     this.baseUrl = baseUrl;
     this.store = new Store(newDesign());
     this.store.subscribe((what) => what === 'status' && (this.el.status.textContent = this.store.status));
@@ -65,8 +72,6 @@ export class App {
   }
 
   async start() {
-    this.populateExamples();
-    this.populateMaterials();
     this.tabKey = tabRecordKey();
     autosave.pruneTabs(this.tabKey, TAB_RECORD_DAYS * 86400e3).catch(() => {});
     if (await this.openFromLink(location.hash)) return;
@@ -117,19 +122,6 @@ export class App {
     return true;
   }
 
-  populateExamples() {
-    const select = this.el.exampleSelect;
-    select.replaceChildren();
-    select.append(new Option('Choose…', ''));
-    const targets = document.createElement('optgroup');
-    targets.label = 'Targets';
-    for (const e of EXAMPLES) targets.append(new Option(e.name, e.id));
-    const patterns = document.createElement('optgroup');
-    patterns.label = 'Patterns to inflate';
-    for (const e of PATTERN_EXAMPLES) patterns.append(new Option(e.name, `pattern:${e.id}`));
-    select.append(targets, patterns);
-  }
-
   setStatus(text) {
     this.store.setStatus(text);
   }
@@ -155,7 +147,7 @@ export class App {
   async loadExample(id, design = null, { stored = null } = {}) {
     const example = findExample(id);
     if (!example) return this.messages.show('error', `There is no example called "${id}".`);
-    this.el.exampleSelect.value = id;
+    this.fields.example = id;
     let bytes;
     try {
       const response = await fetch(new URL(`examples/${example.file}`, this.baseUrl));
@@ -163,7 +155,7 @@ export class App {
       bytes = await response.arrayBuffer();
     } catch {
       // Offline before the examples were cached, or the site is missing the file.
-      this.el.exampleSelect.value = this.design.target.example ?? '';
+      this.fields.example = this.design.target.example ?? '';
       return this.messages.show(
         'error',
         `The example "${example.name}" could not be loaded: check the connection and try again.${this.target ? ' Your current design is unchanged.' : ''}`,
@@ -178,7 +170,7 @@ export class App {
     if (/\.json$/i.test(file.name)) return this.openJsonFile(file);
     const bytes = await file.arrayBuffer();
     const design = { ...newDesign(), target: { file: file.name }, size: { height: this.design.size.height } };
-    this.el.exampleSelect.value = '';
+    this.fields.example = '';
     return this.loadTargetBytes(file.name, bytes, design, { quiet: false });
   }
 
@@ -247,7 +239,7 @@ export class App {
   }
 
   async installSavedMesh(design, mesh) {
-    this.el.exampleSelect.value = '';
+    this.fields.example = '';
     const result = await this.client.request(Op.setTarget, mesh);
     this.client.remember(Op.setTarget, mesh);
     this.installTarget(design.target.file, result, design);
@@ -287,7 +279,7 @@ export class App {
     const history = this.store.swapHistory();
     const optimized = this.store.result('optimized');
     const own = optimized && [optimized.patternText, optimized.flattenedText].includes(this.store.shown.patternText);
-    return { history, target: this.target, exampleValue: this.el.exampleSelect.value, openedPattern: own ? null : this.store.shown.patternText };
+    return { history, target: this.target, exampleValue: this.fields.example, openedPattern: own ? null : this.store.shown.patternText };
   }
 
   // The design set aside comes back with its undo steps; its panels are made again from its seams, a pattern
@@ -300,7 +292,7 @@ export class App {
     else await this.installSavedMesh(design, { positions: aside.target.positions, indices: aside.target.indices }).catch(() => {});
     if (this.design !== design) return false;
     this.store.swapHistory(aside.history);
-    this.el.exampleSelect.value = aside.exampleValue;
+    this.fields.example = aside.exampleValue;
     this.showDesign();
     this.autosavePaused = false;
     if (aside.openedPattern) await this.patterns.open('the pattern', aside.openedPattern);
@@ -330,13 +322,22 @@ export class App {
     this.applyFabrication(addValve(this.design, { seam, at: Math.min(1, Math.max(0, at)), width: DEFAULT_VALVE_WIDTH }), null);
   }
 
-  setValveWidth(index, mm) {
-    if (!(Number.isFinite(mm) && mm > 0 && mm <= MAX_VALVE_WIDTH)) {
-      this.messages.show('warning', `A fill valve's gap must be wider than 0 and at most ${MAX_VALVE_WIDTH} mm.`, [], { cause: 'fabrication.valve' });
-      this.showDesign();
-      return;
+  // A typed value against its rule (TYPED_RULES): outside it the designer is told why and the fields show the
+  // design's values again (false); within it an earlier warning about the field goes (true).
+  accepts(field, value, subject) {
+    const rule = TYPED_RULES[field];
+    const ok = Number.isFinite(value) && !(value <= rule.above) && !(value < rule.min) && !(value > rule.max);
+    if (ok) {
+      this.messages.resolve(field);
+      return true;
     }
-    this.messages.resolve('fabrication.valve');
+    this.messages.show('warning', rule.message(subject), [], { cause: field });
+    this.showDesign();
+    return false;
+  }
+
+  setValveWidth(index, mm) {
+    if (!this.accepts('fabrication.valve', mm)) return;
     this.applyFabrication(setValveWidth(this.design, index, mm), `valve-width-${index}`);
   }
 
@@ -348,20 +349,8 @@ export class App {
 
   // Fabrication settings change the cut files only, never the panels: no new optimization.
   setFabrication(changes) {
-    const checks = {
-      allowance: [0, MAX_ALLOWANCE, `The seam allowance must be between 0 and ${MAX_ALLOWANCE} mm.`],
-      sheet_width: [MIN_SHEET, MAX_SHEET, `The sheet width must be between ${MIN_SHEET} and ${MAX_SHEET} mm.`],
-      free_edge_allowance: [0, MAX_ALLOWANCE, `The allowance of free edges must be between 0 and ${MAX_ALLOWANCE} mm.`],
-    };
-    for (const [key, [lo, hi, message]] of Object.entries(checks)) {
-      const v = changes[key];
-      if (v !== undefined && !(Number.isFinite(v) && v >= lo && v <= hi)) {
-        this.messages.show('warning', message, [], { cause: `fabrication.${key}` });
-        this.showDesign();
-        return;
-      }
-      if (v !== undefined) this.messages.resolve(`fabrication.${key}`);
-    }
+    for (const key of ['allowance', 'sheet_width', 'free_edge_allowance'])
+      if (changes[key] !== undefined && !this.accepts(`fabrication.${key}`, changes[key])) return;
     this.applyFabrication(setFabrication(this.design, changes), `fabrication-${Object.keys(changes).join()}`);
   }
 
@@ -379,11 +368,7 @@ export class App {
   // One seam's own allowance [mm] (id as in the exporter's statistics; labelled S<id + 1>), or null for the
   // seam allowance; 0 for a heat-sealed seam.
   setSeamAllowance(id, mm) {
-    if (mm !== null && !(Number.isFinite(mm) && mm >= 0 && mm <= MAX_ALLOWANCE)) {
-      this.messages.show('warning', `The allowance of seam ${seamLabel(id)} must be between 0 and ${MAX_ALLOWANCE} mm.`);
-      this.showDesign();
-      return;
-    }
+    if (mm !== null && !this.accepts('seam-allowance', mm, id)) return;
     this.applyFabrication(setSeamAllowance(this.design, id, mm), `seam-allowance-${id}`);
   }
 
@@ -397,18 +382,6 @@ export class App {
     if (GRAIN_FIELDS[mode]) this.applyFabrication(setFabrication(this.design, GRAIN_FIELDS[mode]), 'fabrication-grain');
   }
 
-  populateMaterials() {
-    const select = this.el.materialSelect;
-    select.replaceChildren(
-      ...MATERIAL_PRESETS.map((m) => {
-        const option = new Option(m.label, m.name);
-        option.title = describeMaterial(m);
-        return option;
-      }),
-      Object.assign(new Option('Custom (from the design file)', 'custom'), { disabled: true }),
-    );
-  }
-
   setMaterialPreset(name) {
     if (name === 'custom' || (isPresetMaterial(this.design.material) && this.design.material.name === name)) return;
     this.commitDesign(setMaterial(this.design, presetMaterial(name)));
@@ -416,12 +389,7 @@ export class App {
   }
 
   setPressure(pascals) {
-    if (!Number.isFinite(pascals) || pascals < MIN_PRESSURE || pascals > MAX_PRESSURE) {
-      this.messages.show('warning', `The pressure must be between ${formatPressure(MIN_PRESSURE)} and ${formatPressure(MAX_PRESSURE)}.`, [], { cause: 'pressure' });
-      this.showDesign();
-      return;
-    }
-    this.messages.resolve('pressure');
+    if (!this.accepts('pressure', pascals)) return;
     if (pascals === this.design.pressure) return;
     this.commitDesign(setPressure(this.design, pascals), { mergeKey: 'pressure' });
     this.panels.remake();
@@ -433,48 +401,26 @@ export class App {
     this.save();
   }
 
+  // The design on the page: its fields, the target pane's scale, both 3D panes standing on its up axis.
   showDesign() {
     const design = this.design;
-    this.el.heightInput.value = String(design.size.height);
-    const material = design.material;
-    this.el.materialSelect.value = isPresetMaterial(material) ? material.name : 'custom';
-    this.el.materialSelect.title = `The sheet the panels are cut from: ${describeMaterial(material)}`;
-    const f = design.fabrication;
-    const inches = f.units === 'in';
-    this.el.unitsSelect.value = f.units;
-    this.el.allowanceInput.value = String(+(inches ? f.allowance / MM_PER_INCH : f.allowance).toFixed(inches ? 3 : 1));
-    const sealed = joiningOf(f) === 'sealed';
-    this.el.allowanceLabel.firstChild.textContent = sealed ? 'Seal band ' : 'Allowance ';
-    this.el.allowanceLabel.title = sealed
-      ? 'Heat sealed: the band along the outline where the two pieces are sealed; the cut line runs at its outer edge'
-      : 'Extra material outside the sewing line, on every seam without its own allowance; 0 for heat sealing';
-    this.el.sheetInput.value = String(+(inches ? f.sheet_width / MM_PER_INCH : f.sheet_width).toFixed(inches ? 2 : 0));
-    if (this.el.grainSelect) this.el.grainSelect.value = grainMode(f);
-    this.allowancePanel?.render(f);
-    const unit = Number(this.el.pressureUnit.value) || 1000;
-    this.el.pressureInput.value = String(+(design.pressure / unit).toPrecision(6));
-    this.panes.target.setScale(this.scaleFor(design));
-    this.el.upSelect.value = upOf(design);
+    const scale = this.scaleFor(design);
+    this.fields.render({ design, target: this.target, scale, history: this.store.history });
+    this.allowancePanel?.render(design.fabrication);
+    this.panes.target.setScale(scale);
     standUp(this.panes, upOf(design)); // the target and its inflated shape stand on the design's up axis
-    if (this.panes.inflated.targetScale !== this.scaleFor(design) || this.panes.inflated.targetOf !== this.target)
-      this.panes.inflated.setTarget(this.target, this.scaleFor(design));
-    renderTargetStats(this.el.stats, this.target, this.scaleFor(design), upOf(design));
-    this.el.undoButton.disabled = !this.store.history.canUndo;
-    this.el.redoButton.disabled = !this.store.history.canRedo;
+    if (this.panes.inflated.targetScale !== scale || this.panes.inflated.targetOf !== this.target) this.panes.inflated.setTarget(this.target, scale);
   }
 
+
   setHeight(meters) {
-    if (!Number.isFinite(meters) || meters <= 0) {
-      this.messages.show('warning', 'The height must be a positive number of meters.', [], { cause: 'height' });
-      this.el.heightInput.value = String(this.design.size.height);
-      return;
-    }
-    this.messages.resolve('height');
+    if (!this.accepts('height', meters)) return;
     const height = clampHeight(meters);
     if (height === this.design.size.height) return;
     this.commitDesign(setHeight(this.design, height), { mergeKey: 'height' });
     this.panels.remake(); // the panels' size changed: the edit cancelled the running optimization (commitDesign)
   }
+
   // Which of the target's own axes points up (up-axis.js): it stands on it and Height is measured along it, so
   // like the height it changes the panels' size; the problems' places ("near the top") are read in it too, so
   // the target is segmented again, which makes the panels anew.

@@ -8,7 +8,7 @@ import './gallery.css';
 import { dialogHeader } from '../views/dialog-header.js';
 
 // open: { design: file } a billow-design in web/public/gallery (its stored result beside it, <id>.result.json);
-// { pattern: id } a solver example pattern (PATTERN_EXAMPLES in app.js); { patternFile: file } a billow-pattern
+// { pattern: id } a solver example pattern (PATTERN_EXAMPLES in pattern-session.js); { patternFile: file } a billow-pattern
 // in web/public/gallery.
 export const GALLERY_ITEMS = [
   {

@@ -7,6 +7,13 @@ import { renderStats } from '../views/stats-list.js';
 import { balloonFigures, balloonRows, peakStress } from './fabrication.js';
 import { findMaterialPreset } from './materials.js';
 
+// Example patterns computed by the solver (wasm/src/simulate/example_patterns.cpp).
+export const PATTERN_EXAMPLES = [
+  { id: 'mylar', name: 'Mylar balloon (two discs)' },
+  { id: 'pillow', name: 'Pillow (two squares)' },
+  { id: 'sphere3', name: 'Sphere (three gores)' },
+];
+
 const UNIT_SCALE = { m: 1, cm: 0.01, mm: 0.001 };
 
 // The panels in meters, for display. Throws Error with a designer-facing message for a non-pattern.
