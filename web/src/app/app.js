@@ -1,5 +1,7 @@
-// The application controller: owns the design document (through its undo history), talks to the
-// worker, updates the panes, autosaves, and shares designs by link or file.
+// The design document's controller: every edit, with its checks, goes through here into the store (store.js:
+// undo history, revision); it opens targets, design files and links, shares and autosaves. The panels made from
+// the design are Panels' (panels.js), the seams the SeamEditor's (seam-editor.js), the fields on the page
+// DesignFields' (views/design-fields.js).
 import { Op, ErrorCode } from '../worker/protocol.js';
 import { findExample } from './examples.js';
 import { newDesign, parseDesign, clampHeight } from './design.js';
