@@ -16,11 +16,9 @@
 #include "export/polygon.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "pattern/design_scene.hpp"
+#include "test_support.hpp"
 
 namespace billow::test {
-
-inline std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
-inline std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
 
 struct Fixture {
   std::unique_ptr<DesignScene> scene;

@@ -19,12 +19,11 @@
 #include "util/error.hpp"
 
 using namespace billow;
+using billow::test::dataPath;
+using billow::test::examplesDir;
 using nlohmann::json;
 
 namespace {
-
-std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
-std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
 
 json minimal() {
   return json::parse(R"({"format": "billow-design", "version": 1, "target": {"example": "sphere"},

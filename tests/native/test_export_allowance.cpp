@@ -234,8 +234,8 @@ TEST(CliDesign, CutFileUsesTheDesignsSeamAllowancesAndGrain) {
 #ifdef __EMSCRIPTEN__
   GTEST_SKIP() << "the CLI is native only";
 #else
-  json doc = json::parse(readFileBytes(std::string(BILLOW_TEST_DATA_DIR) + "/sphere-gores.billow.json"));
-  doc["target"] = {{"obj", std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples/sphere.obj"}};
+  json doc = json::parse(readFileBytes(test::dataPath("sphere-gores.billow.json")));
+  doc["target"] = {{"obj", test::examplesDir() + "/sphere.obj"}};
   doc["fabrication"] = {{"allowance", 20}, {"seam_allowance", {{"1", 0}}}, {"grain_lock", true}};
   const std::string design = testing::TempDir() + "billow-allowance.billow.json";
   std::ofstream(design) << doc.dump();
@@ -305,8 +305,8 @@ TEST(CliDesign, ASheetTooNarrowLosesNothingElse) {
 #ifdef __EMSCRIPTEN__
   GTEST_SKIP() << "the CLI is native only";
 #else
-  json doc = json::parse(readFileBytes(std::string(BILLOW_TEST_DATA_DIR) + "/sphere-gores.billow.json"));
-  doc["target"] = {{"obj", std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples/sphere.obj"}};
+  json doc = json::parse(readFileBytes(test::dataPath("sphere-gores.billow.json")));
+  doc["target"] = {{"obj", test::examplesDir() + "/sphere.obj"}};
   doc["fabrication"] = {{"sheet_width", 100}};
   const std::string design = testing::TempDir() + "billow-narrow.billow.json";
   std::ofstream(design) << doc.dump();

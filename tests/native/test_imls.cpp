@@ -15,8 +15,7 @@ namespace {
 
 // The example sphere scaled to radius 0.25 m, centred at the origin.
 TriMesh sphere() {
-  TriMesh m = readMeshBytes(readFileBytes(std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples/sphere.obj"),
-                            "sphere.obj");
+  TriMesh m = readMeshBytes(readFileBytes(test::examplesDir() + "/sphere.obj"), "sphere.obj");
   const Eigen::RowVector3d c = m.V.colwise().mean();
   m.V.rowwise() -= c;
   m.V *= 0.25 / m.V.rowwise().norm().maxCoeff();

@@ -25,13 +25,12 @@
 #include "test_support.hpp"
 
 using namespace billow;
+using billow::test::dataPath;
+using billow::test::examplesDir;
 using billow::test::expectDisk;
 using billow::test::signedArea;
 
 namespace {
-
-std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
-std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
 
 // The 0.5 m sphere cut into three gores by meridians 1, 2, 3 (pole to pole), plus extra seams.
 std::unique_ptr<DesignScene> gores(const std::vector<DesignSeam>& extra = {}) {

@@ -19,14 +19,13 @@
 #include "test_support.hpp"
 
 using namespace billow;
+using billow::test::dataPath;
+using billow::test::examplesDir;
 using billow::test::expectDisk;
 using billow::test::panelArea;
 using billow::test::signedArea;
 
 namespace {
-
-std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
-std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
 
 std::unique_ptr<DesignScene> fixture(const std::string& name) {
   const std::string path = dataPath(name);

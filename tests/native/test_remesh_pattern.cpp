@@ -16,14 +16,13 @@
 #include "util/error.hpp"
 
 using namespace billow;
+using billow::test::dataPath;
+using billow::test::examplesDir;
 using billow::test::expectDisk;
 using billow::test::panelArea;
 using billow::test::signedArea;
 
 namespace {
-
-std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
-std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
 
 // The 0.5 m sphere cut into three gores (pole to pole); `connect`: an internal panel between seams 0 and 1.
 BuiltPattern gores(bool connect, int triangles = 1500) {

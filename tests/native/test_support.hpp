@@ -19,6 +19,10 @@ inline std::string meshPath(const std::string& name) { return std::string(BILLOW
 
 inline TriMesh loadShared(const std::string& name) { return readMeshBytes(readFileBytes(meshPath(name)), name); }
 
+// A file of tests/data, and the app's example meshes (web/public/examples) that designs name.
+inline std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
+inline std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
+
 // The billow CLI built next to this test binary (native suites only run it).
 inline std::string cliPath() {
   char buf[PATH_MAX];

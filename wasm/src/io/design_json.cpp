@@ -192,8 +192,9 @@ bool readInlineMesh(FieldReader& r, const json& t, TriMesh& mesh) {
 UpAxis readUp(FieldReader& r, const json& value) {
   UpAxis up;
   if (value.is_string() && parseUpAxis(value.get<std::string>(), up)) return up;
-  r.bad("target.up", "The target's up axis (target.up) must be one of \"+y\", \"-y\", \"+z\", \"-z\", \"+x\", \"-x\", not " +
-                         shortDump(value) + ".");
+  r.bad("target.up",
+        "The target's up axis (target.up) must be one of \"+y\", \"-y\", \"+z\", \"-z\", \"+x\", \"-x\", not " +
+            shortDump(value) + ".");
   return UpAxis{};
 }
 
