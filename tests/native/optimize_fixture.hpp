@@ -46,7 +46,7 @@ inline Eigen::VectorXd randomDirection(const Eigen::VectorXd& X, unsigned seed) 
     const double x = X[2 * i], y = X[2 * i + 1];
     v[2 * i] = a * x + c * std::sin(k * y), v[2 * i + 1] = b * y + d * std::cos(k * x);
   }
-  return v / v.lpNorm<Eigen::Infinity>();
+  return v / v.cwiseAbs().maxCoeff();
 }
 
 // The largest absolute length difference of two stitched edges [m].
@@ -97,9 +97,11 @@ inline OptimizeRun optimize(const Fixture& f, const OptimizeOptions& o,
 // a new mesh (a new discretization of E) and a resettled shape (another equilibrium of the same panels) are
 // not steps.
 inline void expectObjectiveNeverRises(const std::vector<OptimizeRecord>& h, double relative = 0) {
-  for (size_t k = 1; k < h.size(); ++k)
-    if (!h[k].projected && !h[k].remeshed && !h[k].resettled)
+  for (size_t k = 1; k < h.size(); ++k) {
+    if (!h[k].projected && !h[k].remeshed && !h[k].resettled) {
       EXPECT_LE(h[k].objective, h[k - 1].objective * (1 + relative)) << "iteration " << k;
+    }
+  }
 }
 
 // Nothing the optimizer found is lost: a resettling may leave it at a worse equilibrium, and then it goes back to

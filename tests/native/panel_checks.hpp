@@ -49,7 +49,9 @@ inline void expectDisk(const Panel& p, int boundaryVertices, const std::string& 
   EXPECT_EQ(static_cast<long>(p.vertices.rows()) - static_cast<long>(edges.size()) + p.triangles.rows(), 1) << what;
   EXPECT_EQ(boundary, boundaryVertices) << what;
   EXPECT_EQ(static_cast<int>(onBoundary.size()), boundaryVertices) << what;
-  if (!onBoundary.empty()) EXPECT_EQ(*onBoundary.rbegin(), boundaryVertices - 1) << what << ": boundary rows first";
+  if (!onBoundary.empty()) {
+    EXPECT_EQ(*onBoundary.rbegin(), boundaryVertices - 1) << what << ": boundary rows first";
+  }
 }
 
 }  // namespace billow::test

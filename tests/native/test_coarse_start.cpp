@@ -41,7 +41,9 @@ TEST_P(CoarsenExample, SewsCleanlyWithFewerTrianglesAndTheSameJunctions) {
   SewnMesh coarseMesh;
   ASSERT_NO_THROW(coarseMesh = sewPattern(*coarse));
   // Seams of equal length stay so (sphere3-internal's internal gore is narrower than the seams it joins).
-  if (fineMesh.warnings.empty()) EXPECT_TRUE(coarseMesh.warnings.empty()) << coarseMesh.warnings.front().message;
+  if (fineMesh.warnings.empty()) {
+    EXPECT_TRUE(coarseMesh.warnings.empty()) << coarseMesh.warnings.front().message;
+  }
   EXPECT_GT(coarseMesh.numTriangles(), 500);
   EXPECT_LT(coarseMesh.numTriangles(), 2000);
   // Panel areas are kept up to the boundary's chords (every coarse boundary vertex is a fine one).

@@ -249,10 +249,10 @@ TEST(CliDesign, CutFileUsesTheDesignsSeamAllowancesAndGrain) {
   // The cut lines of the SVG are those of the written pattern with S2 cut on its sewing line.
   const Pattern pattern = readPatternJson(readFileBytes(dir + "/pattern.json"));
   const auto perimeters = [](std::vector<Polygon2> cuts) {
-    std::vector<double> out;
-    for (const Polygon2& c : cuts) out.push_back(perimeter(c));
-    std::sort(out.begin(), out.end());
-    return out;
+    std::vector<double> lengths;
+    for (const Polygon2& c : cuts) lengths.push_back(perimeter(c));
+    std::sort(lengths.begin(), lengths.end());
+    return lengths;
   };
   std::vector<Polygon2> svgCuts;
   for (const test::ReadPath& r : test::readSvgPaths(readFileBytes(dir + "/pattern.svg")))

@@ -56,8 +56,9 @@ TEST(Nesting, RandomPiecesDoNotOverlapAndStayOnTheSheet) {
       o.allowRotation = rotate;
       const NestResult r = nestPieces(pieces, o);
       expectValid(pieces, r, o);
-      if (!rotate)
+      if (!rotate) {
         for (const Placement2& pl : r.placements) EXPECT_EQ(pl.angle, 0);
+      }
     }
   }
 }

@@ -41,7 +41,9 @@ TEST(Notches, EqualArcLengthsOnBothSidesOfEverySeam) {
       for (size_t k = 0; k < A.size(); ++k) EXPECT_NEAR(A[k], B[k], 1e-12);
       // Measured along the sides: the point at arc s really is s from the seam start along the panel edge.
       for (const Notch& n : notches)
-        if (n.seam == s.id && !n.junction) EXPECT_LE(n.arc, std::min(s.a.length, s.b.length));
+        if (n.seam == s.id && !n.junction) {
+          EXPECT_LE(n.arc, std::min(s.a.length, s.b.length));
+        }
     }
   }
 }

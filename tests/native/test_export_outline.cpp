@@ -22,8 +22,9 @@ void expectConsistent(const Pattern& p, const Outlines& out) {
   for (const Seam& s : out.seams) {
     ASSERT_EQ(s.a.edges.size(), s.b.edges.size());
     for (int e : s.a.edges) EXPECT_EQ(out.panels[s.a.panel].edgeSeam[e], s.id);
-    if (s.shared)
+    if (s.shared) {
       for (int e : s.b.edges) EXPECT_EQ(out.panels[s.b.panel].edgeSeam[e], s.id);
+    }
   }
 }
 

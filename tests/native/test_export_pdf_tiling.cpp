@@ -27,16 +27,16 @@ Drawing sparseSheet() {
   Drawing d;
   d.width = 1000, d.length = 1000;
   // Inside tile (1,1) alone.
-  d.paths.push_back({Layer::Cut, 0, true, rectangle(20, 880, 150, 1000)});
+  d.paths.push_back({Layer::Cut, 0, true, rectangle(20, 880, 150, 1000), {}});
   d.texts.push_back({Layer::Label, 0, {85, 940}, 10, "1  one"});
   // Tile (5,5), reaching 5 mm into the strip it shares with (5,6): (5,6) shows nothing else.
-  d.paths.push_back({Layer::Cut, 1, true, rectangle(780, 20, 905, 150)});
-  d.paths.push_back({Layer::Notch, 1, false, {{902, 80}, {908, 80}}});
+  d.paths.push_back({Layer::Cut, 1, true, rectangle(780, 20, 905, 150), {}});
+  d.paths.push_back({Layer::Notch, 1, false, {{902, 80}, {908, 80}}, {}});
   // Only in the strip tiles (3,3) and (3,4) share: one of them, the first.
-  d.paths.push_back({Layer::Cut, 2, true, rectangle(542, 520, 548, 540)});
+  d.paths.push_back({Layer::Cut, 2, true, rectangle(542, 520, 548, 540), {}});
   // From tile (1,2) to tile (2,3) through the corner square the four tiles (1-2, 2-3) share: (2,2), which
   // shows more of the line than (1,3), joins them along edges.
-  d.paths.push_back({Layer::Cut, 3, false, {{300, 912}, {430, 782}}});
+  d.paths.push_back({Layer::Cut, 3, false, {{300, 912}, {430, 782}}, {}});
   return d;
 }
 
@@ -117,7 +117,7 @@ TEST(PdfTiling, PrintsOnlyTilesWithSomethingToCut) {
 TEST(PdfTiling, EveryTileOfAFullSheetIsPrinted) {
   Drawing d;
   d.width = 500, d.length = 400;
-  for (double x = 10; x < 490; x += 20) d.paths.push_back({Layer::Cut, 0, false, {{x, 0}, {x, 400}}});
+  for (double x = 10; x < 490; x += 20) d.paths.push_back({Layer::Cut, 0, false, {{x, 0}, {x, 400}}, {}});
   PdfOptions o;
   o.paper = PaperSize::Letter;
   const PdfTiling t = pdfTiling(d, o);

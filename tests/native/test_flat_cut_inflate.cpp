@@ -59,7 +59,9 @@ TEST(FlatCutExamples, AreTheSolidsTheySayWithEveryPieceSewn) {
       SewnMesh mesh;
       ASSERT_NO_THROW(mesh = sewPattern(p));
       EXPECT_NEAR(mesh.numTriangles(), triangles, 0.25 * triangles);
-      if (area.count(name)) EXPECT_NEAR(patternArea(p), area.at(name), 0.01 * area.at(name));
+      if (area.count(name)) {
+        EXPECT_NEAR(patternArea(p), area.at(name), 0.01 * area.at(name));
+      }
       // Closed: every outline vertex is sewn to another piece's (or, the gusset's two ends, its own).
       for (size_t k = 0; k < p.panels.size(); ++k)
         for (int v : outlineVertices(p.panels[k]))

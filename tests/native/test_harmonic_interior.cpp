@@ -52,7 +52,9 @@ TEST(HarmonicInterior, HarmonicInteriorFollowsAffineMotionsAndChainsGradients) {
   Eigen::VectorXd g = c;
   interior.reduce(g);
   for (int r = 0; r < g.size() / 2; ++r)
-    if (interior.interior(r)) EXPECT_EQ(g.segment<2>(2 * r).norm(), 0);
+    if (interior.interior(r)) {
+      EXPECT_EQ(g.segment<2>(2 * r).norm(), 0);
+    }
   Eigen::VectorXd Xp = X0 + 1e-3 * v, Xm = X0 - 1e-3 * v;
   interior.extend(Xp), interior.extend(Xm);
   const double fd = (c.dot(Xp) - c.dot(Xm)) / 2e-3;

@@ -118,7 +118,6 @@ TEST(InternalPanels, ConnectionBetweenTwoMeridiansAddsAnInternalPanelSewnOnBothS
   // Every piece on a seam is sewn to an outer piece there, sample k to sample N - k: the same simulation
   // vertex, the same point on the target, the same flattened edge lengths.
   const SewnMesh sewn = sewPattern(bp.pattern);
-  const double diag = (scene->target.V.colwise().maxCoeff() - scene->target.V.colwise().minCoeff()).norm();
   double worstEdge = 0;
   for (const PanelPiece& piece : built.pieces) {
     ASSERT_GE(piece.neighborPanel, 0);
@@ -132,13 +131,17 @@ TEST(InternalPanels, ConnectionBetweenTwoMeridiansAddsAnInternalPanelSewnOnBothS
       const int vi = piece.rows[k], vo = outer.rows[n - k], vp = other.rows[k];
       EXPECT_EQ(sewn.simVertex(3, vi), sewn.simVertex(piece.neighborPanel, vo));
       EXPECT_EQ(sewn.simVertex(3, vi), sewn.simVertex(outer.neighborPanel, vp));
-      if (k > 0 && k < n) EXPECT_EQ(built.seam[vi], piece.seam);  // corners: the seam of the piece leaving them
+      if (k > 0 && k < n) {
+        EXPECT_EQ(built.seam[vi], piece.seam);  // corners: the seam of the piece leaving them
+      }
       // The stitched point: the mean of the outer panels' points there (which differ by the flattening only).
       const Eigen::Vector3d mean = 0.5 * (bp.panels[piece.neighborPanel].targetPosition.row(vo) +
                                           bp.panels[outer.neighborPanel].targetPosition.row(vp))
                                              .transpose();
       const bool pole = std::abs(std::abs(mean.y()) - 0.25) < 1e-9;  // a third outer panel meets there
-      if (!pole) EXPECT_LT((built.targetPosition.row(vi).transpose() - mean).norm(), 1e-9);
+      if (!pole) {
+        EXPECT_LT((built.targetPosition.row(vi).transpose() - mean).norm(), 1e-9);
+      }
       EXPECT_LE((built.targetPosition.row(vi) - bp.panels[piece.neighborPanel].targetPosition.row(vo)).norm(),
                 bp.figures.maxStitchTargetDistance + 1e-12);
       EXPECT_LT(std::abs(built.targetPosition.row(vi).norm() - 0.25), 5e-3 * 0.25);  // on the sphere

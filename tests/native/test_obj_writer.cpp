@@ -51,6 +51,10 @@ TEST(ObjWriter, ACommentBecomesTheFirstLineAndIsIgnoredWhenRead) {
   EXPECT_EQ(back.V, m.V);
   EXPECT_EQ(back.F, m.F);
   EXPECT_EQ(writeObj(m.V, m.F).rfind("v ", 0), 0u) << "no comment line without a comment";
+  // A comment of two lines stays a comment: its second line adds no vertex.
+  const std::string two = writeObj(m.V, m.F, "first\nv 1 2 3");
+  EXPECT_EQ(two.rfind("# first\n# v 1 2 3\nv ", 0), 0u) << two;
+  EXPECT_EQ(readObj(two).V, m.V);
 }
 
 TEST(ObjWriter, CoordinatesKeepNineSignificantDigits) {

@@ -224,7 +224,9 @@ TEST(Segmentation, OpenSeamIsASlitWithAWarning) {
   EXPECT_EQ(count(s, "segment.one-piece"), 1);
   EXPECT_FALSE(s.ok());
   for (const SegmentationProblem& p : s.problems)
-    if (p.code == "seam.dangling") EXPECT_EQ(p.message.rfind("Seam 1 ends", 0), 0u) << p.message;
+    if (p.code == "seam.dangling") {
+      EXPECT_EQ(p.message.rfind("Seam 1 ends", 0), 0u) << p.message;
+    }
   expectSound(scene, s);
 }
 

@@ -212,4 +212,5 @@ TEST(Statistics, HeatSealedPatternsSayTheSealBand) {
   const json j = statistics(cube(), o);
   EXPECT_EQ(j["joining"], "sealed");
   EXPECT_EQ(summaryLines(j, o)[0], "6 panels, 12 seams, heat sealed, seal band 6 mm");
+  EXPECT_EQ(summaryLines(j, o)[3], "seams 2400 mm in total, largest mismatch 0 mm") << "no sewing time: it is not sewn";
 }

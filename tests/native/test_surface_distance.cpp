@@ -56,7 +56,9 @@ TEST(TargetCoverage, AreaWeightedRmsMatchesTheIntegralWhateverTheMeshing) {
     EXPECT_NEAR(c.summary.rms, exact, 0.03 * exact);
     EXPECT_NEAR(c.summary.max, 0.5, 1e-12);
     const double plain = std::sqrt(c.distances.cwiseAbs2().mean());
-    if (target == &uneven) EXPECT_GT(plain, 1.2 * exact) << "the meshing would have weighed in";
+    if (target == &uneven) {
+      EXPECT_GT(plain, 1.2 * exact) << "the meshing would have weighed in";
+    }
   }
 }
 
@@ -125,7 +127,8 @@ TEST(UncoveredRegions, SeparatePartsAreSeparateRegionsLargestFirstAndSmallOnesIg
   EXPECT_TRUE(uncoveredRegions(square, c.distances, 1.0, UpAxis{}, 0.31, 0.0).empty());
   // Two parts that read the same (both near the left: two strips beside each other, with a covered strip
   // between) are one region of two parts, said once.
-  const Triangles gap = trianglesWhere(square, [](const Eigen::Vector3d& c) { return c.x() > 0.12 && c.x() < 0.16; });
+  const Triangles gap =
+      trianglesWhere(square, [](const Eigen::Vector3d& centre) { return centre.x() > 0.12 && centre.x() < 0.16; });
   Triangles shown(middle.rows() + gap.rows(), 3);
   shown << middle, gap;
   const TargetCoverage twoLeft = targetCoverage(square, square.V, shown, 1.0);
@@ -142,7 +145,7 @@ TEST(UncoveredRegions, SeparatePartsAreSeparateRegionsLargestFirstAndSmallOnesIg
   EXPECT_NE(part.find("leaves out part of the target " + regions[0].where + ": 26."), std::string::npos) << part;
   EXPECT_NE(part.find("A seam around that part"), std::string::npos) << part;
   // Most of it: more seams, not a seam around it.
-  const Triangles corner = trianglesWhere(square, [](const Eigen::Vector3d& c) { return c.x() > 0.9; });
+  const Triangles corner = trianglesWhere(square, [](const Eigen::Vector3d& centre) { return centre.x() > 0.9; });
   const std::vector<UncoveredRegion> most =
       uncoveredRegions(square, targetCoverage(square, square.V, corner, 1.0).distances, 1.0, UpAxis{}, 0.03, 0.01);
   ASSERT_EQ(most.size(), 1u);

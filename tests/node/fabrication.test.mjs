@@ -237,6 +237,7 @@ test('pattern statistics read in the chosen units', () => {
   assert.equal(rows.Seams, '2.50 m, about 9 min to sew');
   assert.equal(rows['Seam mismatch'], '< 1 mm');
   assert.match(Object.fromEntries(patternStatRows(statistics, 'in')).Sheet, /^39\.37 in × 31\.50 in/);
+  assert.equal(Object.fromEntries(patternStatRows({ ...statistics, joining: 'sealed' })).Seams, '2.50 m', 'a sealed pattern is not sewn');
 });
 
 test('a foil sphere floats on helium when its envelope is lighter than the lift', () => {

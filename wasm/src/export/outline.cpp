@@ -5,19 +5,10 @@
 #include <numeric>
 
 #include "util/error.hpp"
+#include "util/union_find.hpp"
 
 namespace billow {
 namespace {
-
-struct UnionFind {
-  std::vector<int> parent;
-  explicit UnionFind(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int x) {
-    while (parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
-  void join(int a, int b) { parent[find(a)] = find(b); }
-};
 
 // The boundary of a triangle mesh with counterclockwise triangles, as one counterclockwise vertex loop.
 std::vector<int> boundaryLoop(const Panel& panel) {
@@ -68,7 +59,7 @@ Outlines buildOutlines(const Pattern& pattern) {
   for (int p = 0; p < np; ++p) firstVertex[p + 1] = firstVertex[p] + int(pattern.panels[p].vertices.rows());
   UnionFind groups(firstVertex[np]);
   for (const Stitch& s : pattern.stitches)
-    groups.join(firstVertex[s.panelA] + s.vertexA, firstVertex[s.panelB] + s.vertexB);
+    groups.unite(firstVertex[s.panelA] + s.vertexA, firstVertex[s.panelB] + s.vertexB);
   auto group = [&](int p, int v) { return groups.find(firstVertex[p] + v); };
 
   std::vector<std::vector<int>> loops(np);

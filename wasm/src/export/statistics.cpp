@@ -121,8 +121,11 @@ std::vector<std::string> summaryLines(const nlohmann::json& j, const ExportOptio
     for (const std::string& s : own) allowance += ", " + s;
   if (t["free_edge_mm"].get<double>() > 0 && allowanceOf(-1, o) != o.allowance)
     allowance += ", free edges " + length(allowanceOf(-1, o), o);
-  lines.push_back(std::to_string(t["panels"].get<int>()) + " panels, " + std::to_string(t["seams"].get<int>()) +
-                  " seams, " + allowance);
+  const auto count = [](int n, const std::string& what) {
+    return std::to_string(n) + " " + what + (n == 1 ? "" : "s");
+  };
+  lines.push_back(count(t["panels"].get<int>(), "panel") + ", " + count(t["seams"].get<int>(), "seam") + ", " +
+                  allowance);
   for (const auto& valve : j["valves"])
     if (valve["placed"].get<bool>())
       lines.push_back("fill valve on " + valve["label"].get<std::string>() + ": leave " +
@@ -132,10 +135,15 @@ std::vector<std::string> summaryLines(const nlohmann::json& j, const ExportOptio
   lines.push_back(buf);
   lines.push_back("panel area " + area(t["panel_area_m2"], o) + ", cut pieces " + area(t["material_area_m2"], o) +
                   ", sheet " + area(t["sheet_area_m2"], o));
-  std::snprintf(buf, sizeof buf, "seams %s in total, largest mismatch %s; sewing about %.0f min",
+  // The sewing time is a sewing machine's: a heat-sealed pattern is not sewn.
+  std::snprintf(buf, sizeof buf, "seams %s in total, largest mismatch %s",
                 length(t["seam_length_mm"].get<double>(), o).c_str(),
-                length(t["max_seam_mismatch_mm"].get<double>(), o).c_str(), t["sewing_minutes"].get<double>());
+                length(t["max_seam_mismatch_mm"].get<double>(), o).c_str());
   lines.push_back(buf);
+  if (!o.sealed) {
+    std::snprintf(buf, sizeof buf, "; sewing about %.0f min", t["sewing_minutes"].get<double>());
+    lines.back() += buf;
+  }
   return lines;
 }
 

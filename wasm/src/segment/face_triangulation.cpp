@@ -52,7 +52,6 @@ struct Triangulation {
       if (score > bestScore) bestScore = score, best = t, edge = low;
     }
     const Tri t = tris[best];
-    const Vec2 &a = p[t[edge]], &b = p[t[(edge + 1) % 3]];
     const double scale = (p[t[0]] - p[t[1]]).norm() + (p[t[1]] - p[t[2]]).norm() + (p[t[2]] - p[t[0]]).norm();
     if (bestScore > 1e-12 * scale) {  // strictly inside: three triangles
       tris[best] = {t[0], t[1], i};
@@ -61,7 +60,6 @@ struct Triangulation {
       return;
     }
     splitEdge(t[edge], t[(edge + 1) % 3], i);
-    (void)a, (void)b;
   }
 
   // i lies on edge (a, b): split the one or two triangles that hold it.

@@ -1,22 +1,13 @@
 // Segment labels, wedges and boundary loops (see segment_topology.hpp).
 #include "segment/segment_topology.hpp"
 
-#include <numeric>
 #include <unordered_map>
+
+#include "util/union_find.hpp"
 
 namespace billow {
 
 namespace {
-
-struct Sets {
-  std::vector<int> parent;
-  explicit Sets(int n) : parent(n) { std::iota(parent.begin(), parent.end(), 0); }
-  int find(int a) {
-    while (parent[a] != a) a = parent[a] = parent[parent[a]];
-    return a;
-  }
-  void unite(int a, int b) { parent[find(a)] = find(b); }
-};
 
 // For each half-edge (3t + k, from corner k to k+1) the opposite half-edge, or -1.
 std::vector<int> twins(const TriMesh& m) {
@@ -43,7 +34,7 @@ void labelSegments(const CutMesh& cut, Segmentation& out) {
   const int nf = m.numTriangles();
   const std::vector<int> twin = twins(m);
   auto isSeam = [&](int h) { return cut.seamEdge.count(edgeKey(m.F(h / 3, h % 3), m.F(h / 3, (h % 3 + 1) % 3))) > 0; };
-  Sets faces(nf), corners(3 * nf);
+  UnionFind faces(nf), corners(3 * nf);
   for (int h = 0; h < 3 * nf; ++h) {
     if (twin[h] < h || isSeam(h)) continue;
     const int t = h / 3, k = h % 3, s = twin[h] / 3, j = twin[h] % 3;

@@ -4,6 +4,7 @@
 // consistent, which hand-derived eigenvalue chains rarely are.
 #pragma once
 #include <Eigen/Dense>
+#include <cmath>
 
 namespace billow::detail {
 

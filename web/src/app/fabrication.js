@@ -181,7 +181,8 @@ export function patternStatRows(statistics, units = 'mm') {
     ['Panels', String(statistics.panels.length)],
     ['Material', `${t.material_area_m2.toFixed(2)} m² with allowance`],
     ['Sheet', `${formatMillimeters(t.sheet_width_mm, units)} × ${formatMillimeters(t.sheet_length_mm, units)} (${Math.round(100 * t.utilisation)} % used)`],
-    ['Seams', `${(t.seam_length_mm / 1000).toFixed(2)} m, about ${minutes >= 90 ? `${(minutes / 60).toFixed(1)} h` : `${minutes} min`} to sew`],
+    // A heat-sealed pattern is not sewn: the sewing time is for sewn ones.
+    ['Seams', `${(t.seam_length_mm / 1000).toFixed(2)} m${statistics.joining === 'sealed' ? '' : `, about ${minutes >= 90 ? `${(minutes / 60).toFixed(1)} h` : `${minutes} min`} to sew`}`],
     ['Seam mismatch', `${formatMillimeters(t.max_seam_mismatch_mm, units === 'in' ? 'in' : 'mm').replace(/^0 mm$/, '< 1 mm')}`],
   ];
 }
