@@ -2,9 +2,11 @@
 // per design of bench/designs/manifest.json, through the worker's handlers (web/src/worker/handlers.js),
 // so every iterate's shape and its distance to the target are computed as the app streams them.
 //   node bench/design-bench-wasm.mjs [--json] [--designs sphere3,teddy] [--max-seconds S] [--triangles N] [--trace]
-// --triangles overrides every design's element count (quick runs), as in the native bench.
+//                                    [--json-out FILE]
+// --triangles overrides every design's element count (quick runs), as in the native bench; --json-out FILE writes the
+// rows --json prints besides the table (bench/table1.mjs reads them).
 // Needs build/wasm/billow_node.{cjs,wasm}; BILLOW_WASM_DIR overrides.
-import { readFileSync } from 'node:fs';
+import { readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { loadApi } from '../tests/node/load-module.mjs';
@@ -106,4 +108,7 @@ for (const entry of manifest.designs) {
     (100 * row.targetDistanceRms).toFixed(3).padStart(9), (row.seamMismatch ?? 0).toExponential(1).padStart(9), row.heapMb.toFixed(0).padStart(9), row.state,
   ].join(' '));
 }
-if (asJson) console.log(JSON.stringify({ runtime: 'wasm (node)', rows }, null, 2));
+const result = { runtime: 'wasm (node)', rows };
+if (asJson) console.log(JSON.stringify(result, null, 2));
+const jsonOut = option('--json-out', null);
+if (jsonOut) writeFileSync(jsonOut, `${JSON.stringify(result, null, 2)}\n`);

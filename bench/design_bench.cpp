@@ -5,7 +5,7 @@
 // seam mismatch and the peak RSS.
 //   billow_design_bench [--json] [--designs sphere3,teddy] [--max-seconds S] [--manifest FILE] [--triangles N]
 //                       [--trace] [--app-rule] [--set NAME=VALUE ...] [--no-remesh-check] [--cut-scale F]
-//                       [--out-dir DIR] [--perturb SEED]
+//                       [--out-dir DIR] [--perturb SEED] [--json-out FILE]
 // --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
 // --set changes an optimizer option (sobolevLength, quality, laplace, smooth, seam, cover,
 // gap, coverReach, maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants;
@@ -13,7 +13,8 @@
 // each run the final outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check
 // skips it; --cut-scale F meshes them at F x the design's edge length). --perturb SEED moves every flattened panel
 // vertex by up to 1e-12 of the edge length (seeded): a start that differs at the rounding level, to see the
-// spread of a design's runs, which one run does not show (bench/README.md "How much one run tells").
+// spread of a design's runs, which one run does not show (bench/README.md "How much one run tells"). --json-out FILE
+// writes the rows --json prints besides the table (bench/table1.mjs reads them).
 #include <sys/resource.h>
 
 #include <algorithm>
@@ -337,6 +338,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
 
 int main(int argc, char** argv) {
   bool asJson = false;
+  std::string jsonOut;  // the rows as --json prints them, written to this file besides the table
   BenchOptions bo;
   std::vector<std::string> only;
   std::string manifestPath = std::string(BILLOW_SOURCE_DIR) + "/bench/designs/manifest.json";
@@ -364,6 +366,8 @@ int main(int argc, char** argv) {
       bo.set.emplace_back(kv.substr(0, kv.find('=')), std::stod(kv.substr(kv.find('=') + 1)));
     } else if (a == "--manifest" && hasValue)
       manifestPath = argv[++i];
+    else if (a == "--json-out" && hasValue)
+      jsonOut = argv[++i];
     else if (a == "--out-dir" && hasValue)
       bo.outDir = argv[++i];
     else if (a == "--perturb" && hasValue)
@@ -372,7 +376,7 @@ int main(int argc, char** argv) {
       std::fprintf(stderr,
                    "usage: billow_design_bench [--json] [--designs NAME,..] [--max-seconds S] [--manifest FILE] "
                    "[--triangles N] [--trace] [--app-rule] [--set NAME=VALUE] [--no-remesh-check] [--out-dir DIR] "
-                   "[--perturb SEED]\n");
+                   "[--perturb SEED] [--json-out FILE]\n");
       return 2;
     }
   }
@@ -414,6 +418,8 @@ int main(int argc, char** argv) {
         row["seamMismatch"].get<double>(), row["peakRssMb"].get<double>(), row["state"].get<std::string>().c_str());
     std::fflush(stdout);
   }
-  if (asJson) std::printf("%s\n", json({{"runtime", "native"}, {"rows", rows}}).dump(2).c_str());
+  const json result = {{"runtime", "native"}, {"rows", rows}};
+  if (asJson) std::printf("%s\n", result.dump(2).c_str());
+  if (!jsonOut.empty()) std::ofstream(jsonOut) << result.dump(2) << "\n";
   return 0;
 }

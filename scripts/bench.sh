@@ -13,8 +13,11 @@ fi
 # Pattern optimization (the paper's Table 1): BILLOW_BENCH_DESIGNS=sphere3,teddy picks designs.
 designs=()
 [ -n "${BILLOW_BENCH_DESIGNS:-}" ] && designs=(--designs "$BILLOW_BENCH_DESIGNS")
+mkdir -p "$ROOT/build/bench"
 log "pattern optimization, native"
-"$NATIVE_DIR/billow_design_bench" "${designs[@]}"
+"$NATIVE_DIR/billow_design_bench" "${designs[@]}" --json-out "$ROOT/build/bench/design-native.json"
 log "pattern optimization, wasm (node)"
-node "$ROOT/bench/design-bench-wasm.mjs" "${designs[@]}"
+node "$ROOT/bench/design-bench-wasm.mjs" "${designs[@]}" --json-out "$ROOT/build/bench/design-wasm.json"
+log "the paper's Table 1 beside Billow's runs"
+node "$ROOT/bench/table1.mjs" "$ROOT/build/bench/design-native.json" "$ROOT/build/bench/design-wasm.json"
 bash "$ROOT/scripts/build.sh" web >/dev/null && log "site (headless Chromium)" && node "$ROOT/bench/site-bench.mjs"
