@@ -10,6 +10,8 @@ import { formatDistance, formatPercent } from './units.js';
 import { dialogHeader } from '../views/dialog-header.js';
 
 const LETTERS = ['A', 'B'];
+// The store's changes the cards follow (Store.subscribe).
+const RENDERED_ON = new Set(['design', 'results', 'work', 'shown']);
 const THUMB_SIZE = 150;
 
 // What makes a layout: the seams and internal connections (and the mirror plane they were drawn with).
@@ -78,7 +80,9 @@ export class LayoutCompare {
     if (!this.dialog.open) this.dialog.show();
     this.shownKey = null;
     this.render();
-    this.unsubscribe ??= this.app.store.subscribe((what) => what !== 'status' && this.render());
+    // What the cards show: the design, its results, the work under way and the panes' result; not the seams'
+    // redraws (every pointer move while drawing) nor the status line.
+    this.unsubscribe ??= this.app.store.subscribe((what) => RENDERED_ON.has(what) && this.render());
   }
 
   close() {

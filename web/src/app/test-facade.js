@@ -67,9 +67,6 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
     get optimized() {
       return app.store.result('optimized');
     },
-    get optimizedIsCurrent() {
-      return Boolean(app.store.result('optimized'));
-    },
     get shownPattern() {
       return app.store.shown.pattern;
     },
