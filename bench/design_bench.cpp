@@ -151,6 +151,12 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.search.predictEquilibrium = v != 0;
   else if (name == "tangentSteps")
     o.search.tangentSteps = v != 0;
+  else if (name == "gaussNewton")
+    o.search.gaussNewton = v != 0;
+  else if (name == "gaussNewtonCg")
+    o.search.gaussNewtonCg = int(v);
+  else if (name == "gaussNewtonCgTolerance")
+    o.search.gaussNewtonCgTolerance = v;
   else if (name == "slidingSeamWeight")
     o.sliding.seamWeight = v;
   else if (name == "slidingRemeshEvery")

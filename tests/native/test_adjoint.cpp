@@ -36,6 +36,50 @@ TEST(Adjoint, ReducedGradientMatchesFiniteDifferences) {
   }
 }
 
+// The Gauss-Newton matrix of the shape terms (what sliding seams step with) against second differences:
+// v^T J^T H J v = 2 sum_k w_k (dr_k . dx)^2 with dx the change of the placed equilibrium along v, by central
+// differences of x(X), re-solved and re-aligned; and u^T (H v) = v^T (H u), J^T taken by the adjoint as J.
+TEST(Adjoint, GaussNewtonMatrixMatchesTheEquilibriumsChange) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 300);
+  OptimizeOptions o;
+  o.inflate.tolerance = 1e-11;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  ASSERT_EQ(opt.gaussNewtonShapeProduct(Eigen::VectorXd::Ones(packPattern(f.built.pattern).size())).size(), 0)
+      << "no model before the first equilibrium";
+  opt.step(0);  // the first equilibrium and its gradient
+  const Eigen::VectorXd X = packPattern(opt.pattern());
+  const Vertices x0 = opt.inflated();
+  std::vector<PatternObjective::ResidualRow> rows;
+  opt.objective().residualRows(x0, X, rows);
+  std::vector<Eigen::VectorXd> products;
+  for (unsigned s = 1; s <= 2; ++s) {
+    const Eigen::VectorXd v = randomDirection(X, s);
+    Eigen::VectorXd dX;
+    const Eigen::VectorXd Hv = opt.gaussNewtonShapeProduct(v, &dX);
+    ASSERT_EQ(Hv.size(), X.size());
+    const double model = v.dot(Hv);
+    const double eps = 1e-5 * opt.objective().meanEdgeLength() / dX.cwiseAbs().maxCoeff();
+    Vertices xp, xm;
+    ASSERT_TRUE(opt.evaluate(X + eps * dX, nullptr, nullptr, &xp));
+    ASSERT_TRUE(opt.evaluate(X - eps * dX, nullptr, nullptr, &xm));
+    const Vertices dx = (xp - xm) / (2 * eps);
+    double differences = 0;
+    for (const PatternObjective::ResidualRow& r : rows) {
+      double z = 0;
+      for (int a = 0; a < r.count; ++a) z += r.grad[a].dot(dx.row(r.vertex[a]).transpose());
+      differences += 2 * r.weight * z * z;
+    }
+    std::printf("[figures] Gauss-Newton curvature direction %u: model %.6e, differences %.6e\n", s, model, differences);
+    EXPECT_GT(model, 0);
+    EXPECT_NEAR(model, differences, 0.02 * differences) << "direction " << s;
+    products.push_back(Hv);
+    if (s == 2) {
+      const Eigen::VectorXd u = randomDirection(X, 1);
+      EXPECT_NEAR(u.dot(Hv), v.dot(products[0]), 1e-8 * std::sqrt(model * u.dot(products[0])));
+    }
+  }
+}
+
 // A vertex with no stiffness at all (inside a slack internal panel: no pressure there and every triangle
 // slack) is a zero row of K. The adjoint treats it as free (lambda = 0 there) and solves the rest exactly;
 // before, no factorization succeeded and the reduced gradient lost its equilibrium part.

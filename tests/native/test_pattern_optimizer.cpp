@@ -368,6 +368,7 @@ TEST(PatternOptimizer, SlidingSeamsChangeHowTheOptimizerWorks) {
   const double D = 2, atReference = o.sliding.regularizerEdgeLength * D;
   const OptimizeOptions held = slidingOptions(o, {1, 1}, atReference / 2, D);
   EXPECT_FALSE(held.search.tangentSteps);
+  EXPECT_FALSE(held.search.gaussNewton);
   EXPECT_EQ(held.stopping.maxIterations, o.stopping.maxIterations);
   EXPECT_EQ(held.stopping.windowDecrease, o.stopping.windowDecrease);
   EXPECT_EQ(held.remeshing.every, o.remeshing.every);
@@ -377,6 +378,7 @@ TEST(PatternOptimizer, SlidingSeamsChangeHowTheOptimizerWorks) {
 
   const OptimizeOptions coarse = slidingOptions(o, {1, 0}, 2 * atReference, D);  // coarser than the reference
   EXPECT_TRUE(coarse.search.tangentSteps);
+  EXPECT_TRUE(coarse.search.gaussNewton);
   EXPECT_EQ(coarse.remeshing.every, o.sliding.remeshEvery);
   EXPECT_EQ(coarse.stopping.maxIterations, 2 * o.stopping.maxIterations);  // OptimizeSliding::iterationFactor
   EXPECT_EQ(coarse.stopping.windowDecrease, 0);

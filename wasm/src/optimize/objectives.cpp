@@ -297,6 +297,38 @@ double PatternObjective::shapeEnergy(const Vertices& x, const Eigen::VectorXd& X
   return Et + Ec + Es;
 }
 
+void PatternObjective::residualRows(const Vertices& x, const Eigen::VectorXd& X, std::vector<ResidualRow>& rows) const {
+  rows.clear();
+  const Eigen::VectorXd weight = targetWeights(X);
+  Eigen::Vector3d n;
+  for (int i = 0; i < n_; ++i) {
+    if (weight[i] == 0) continue;
+    ResidualRow r;
+    imls_.distance(x.row(i).transpose(), &n);
+    r.count = 1, r.vertex[0] = i, r.grad[0] = n, r.weight = weight[i];
+    rows.push_back(r);
+  }
+  std::vector<CoverPoint> cover;
+  coverPoints(x, cover);
+  for (const CoverPoint& c : cover) {
+    const Eigen::Vector3d d = c.closest - c.target;
+    const double len = d.norm();
+    if (!(len > 0)) continue;
+    double irls = 1;
+    coverKernel(len * len, &irls);
+    ResidualRow r;
+    r.count = 3, r.weight = c.weight * irls;
+    for (int k = 0; k < 3; ++k) r.vertex[k] = outer_[c.triangle].vertex[k], r.grad[k] = c.bary[k] * d / len;
+    rows.push_back(r);
+  }
+  for (const SeamVertex& s : seams_)
+    for (int axis = 0; axis < 3; ++axis) {
+      ResidualRow r;
+      r.count = 1, r.vertex[0] = s.vertex, r.grad[0] = Eigen::Vector3d::Unit(axis), r.weight = seamWeight(s);
+      rows.push_back(r);
+    }
+}
+
 double PatternObjective::patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad, ObjectiveTerms* terms) const {
   if (grad) grad->setZero(X.size());
   const auto P = [&](int v) { return Eigen::Vector2d(X.segment<2>(2 * v)); };

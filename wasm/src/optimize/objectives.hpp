@@ -104,6 +104,16 @@ class PatternObjective {
   // (dE/dX at fixed x, through E_target's area weights; 2 per panel vertex) when given.
   double shapeEnergy(const Vertices& x, const Eigen::VectorXd& X, Eigen::VectorXd* gradx,
                      Eigen::VectorXd* gradX = nullptr, ObjectiveTerms* terms = nullptr) const;
+  // E_target + E_cover + E_seam as weighted squared residuals, sum_k weight_k r_k^2, each residual's gradient in x
+  // given per vertex (at most three): the Gauss-Newton matrix 2 sum_k weight_k (dr_k/dx)(dr_k/dx)^T of the shape
+  // terms, as the rigid alignment linearizes them (E_cover point-to-plane, its kernel by its IRLS weight).
+  struct ResidualRow {
+    int count = 0;
+    int vertex[3] = {0, 0, 0};
+    Eigen::Vector3d grad[3] = {Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()};
+    double weight = 0;
+  };
+  void residualRows(const Vertices& x, const Eigen::VectorXd& X, std::vector<ResidualRow>& rows) const;
   // E_length + E_smooth + E_laplace + E_quality + E_gap at pattern coordinates X (2 per panel vertex, sewn order);
   // E_quality is +inf when a rest triangle is folded or degenerate, E_gap when an outline touches itself.
   double patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad, ObjectiveTerms* terms = nullptr) const;

@@ -75,6 +75,13 @@ struct OptimizeSearch {
   // An unstable equilibrium (E(X) jumps: PatternOptimizer::resettle) is left for the one the balloon snaps into
   // at most this many times (0: the run stops there instead).
   int maxResettlings = 10;
+  // Gauss-Newton directions instead of L-BFGS (on for sliding seams: slidingOptions): the shape terms' Gauss-Newton
+  // matrix in X, J^T H J with J = dx/dX by the adjoint's factorization and the rigid placement eliminated, plus the
+  // pattern terms' Hessian, damped by mu (I + b K) (Levenberg-Marquardt) and solved by preconditioned CG to a
+  // relative residual gaussNewtonCgTolerance in at most gaussNewtonCg iterations (bench/README.md "Sliding seams").
+  bool gaussNewton = false;
+  int gaussNewtonCg = 30;
+  double gaussNewtonCgTolerance = 0.1;
 };
 
 // Remeshing (Sec. 5.3, pattern/remesh_pattern.hpp): every `every` iterations (0: never) the panels are meshed
@@ -87,7 +94,8 @@ struct OptimizeRemeshing {
 
 // Sliding seams (Sec. 6, "Seam Placement": a seam of small weight moves to where the shape fits best). When some
 // seam's sigma x weights.seam is below seamWeight (<= 0: never), only E_smooth holds its outline and
-// slidingOptions changes the run: tangent steps; the panels meshed anew every remeshEvery iterations; the
+// slidingOptions changes the run: tangent steps, Gauss-Newton directions (they leave the symmetric first plateau
+// sooner); the panels meshed anew every remeshEvery iterations; the
 // outline regularizers and the step held at a physical length (tuned at an edge length of regularizerEdgeLength
 // x the model size: at an edge length h that many times finer, sobolevLength and maxMoveEdges grow with 1/h and
 // E_smooth along sliding seams with 1/h^2, else the outlines zig-zag below the edge length); maxIterations x
@@ -207,6 +215,9 @@ class PatternOptimizer {
   // For tests: E(x(X), X) and its reduced gradient dE/dX (every row of X, interior ones too) at pattern
   // coordinates X, solving equilibrium from the current x. Returns false when the equilibrium fails.
   bool evaluate(const Eigen::VectorXd& X, double* E, Eigen::VectorXd* grad, Vertices* x = nullptr);
+  // For tests: the Gauss-Newton matrix of the shape terms times v at the current iterate (v's interior rows are
+  // ignored; empty before the first step), and the pattern change dX that v makes (the interior following).
+  Eigen::VectorXd gaussNewtonShapeProduct(const Eigen::VectorXd& v, Eigen::VectorXd* dX = nullptr) const;
 
  private:
   // Everything that follows from the (flattened or remeshed) pattern: mesh, objective, variables, the
@@ -273,6 +284,19 @@ class PatternOptimizer {
   Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> sobolev_;  // I + b K (options.search.sobolevLength)
   bool sobolevReady_ = false;
   Eigen::VectorXd precondition(const Eigen::VectorXd& v) const;  // (I + b K)^-1 v in the variables
+  Eigen::SparseMatrix<double> sobolevMatrix_;                    // I + b K
+  // Gauss-Newton's damping mu = damping_ x dampingScale_ (its scale set at the phase's first direction).
+  double damping_ = 1, dampingScale_ = 0;
+  bool gaussNewtonStalled_ = false;  // the last Gauss-Newton step barely lowered E: the next is L-BFGS
+  struct ShapeModel;
+  // The Gauss-Newton model of the shape terms at the current iterate; null without the adjoint's factorization there.
+  std::unique_ptr<ShapeModel> shapeModel() const;
+  // J^T H J v and the pattern terms' Hessian v (central differences of their gradient), v in the variables.
+  Eigen::VectorXd shapeProduct(const ShapeModel& model, const Eigen::VectorXd& v) const;
+  Eigen::VectorXd patternProduct(const Eigen::VectorXd& v) const;
+  // The damped Gauss-Newton direction at the current iterate and the decrease its model predicts; empty when there
+  // is no model.
+  Eigen::VectorXd gaussNewtonDirection(double* predicted);
   // v, or its part tangent to equal seam lengths at X when steps are (OptimizeSearch::tangentSteps).
   Eigen::VectorXd tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const;
   Pattern pattern_;

@@ -41,12 +41,17 @@ void seamLengthResiduals(const std::vector<PatternObjective::EdgePair>& pairs, c
   J.setFromTriplets(trip.begin(), trip.end());  // duplicates (shared vertices) are summed
 }
 
-// The minimum-norm step that changes J X by b: J^T (J J^T)^-1 b. False when J J^T does not factorize.
-bool normalStep(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& b, Eigen::VectorXd& step) {
+bool factorizeNormal(const Eigen::SparseMatrix<double>& J, Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>>& ldlt) {
   Eigen::SparseMatrix<double> JJt = J * J.transpose();
   for (int k = 0; k < JJt.rows(); ++k) JJt.coeffRef(k, k) += 1e-12;  // pairs that share both edges' vertices
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(JJt);
-  if (ldlt.info() != Eigen::Success) return false;
+  ldlt.compute(JJt);
+  return ldlt.info() == Eigen::Success;
+}
+
+// The minimum-norm step that changes J X by b: J^T (J J^T)^-1 b. False when J J^T does not factorize.
+bool normalStep(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& b, Eigen::VectorXd& step) {
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt;
+  if (!factorizeNormal(J, ldlt)) return false;
   step = J.transpose() * ldlt.solve(b);
   return step.allFinite();
 }
@@ -74,6 +79,19 @@ double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, 
     X -= step;
   }
   return maxMismatch(pairs, X);
+}
+
+SeamTangent::SeamTangent(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X) {
+  if (pairs.empty()) return;
+  Eigen::VectorXd r;
+  seamLengthResiduals(pairs, X, r, J_);
+  ok_ = factorizeNormal(J_, JJt_);
+}
+
+Eigen::VectorXd SeamTangent::operator()(const Eigen::VectorXd& v) const {
+  if (!ok_) return v;
+  const Eigen::VectorXd step = J_.transpose() * JJt_.solve(J_ * v);
+  return step.allFinite() ? Eigen::VectorXd(v - step) : v;
 }
 
 }  // namespace billow

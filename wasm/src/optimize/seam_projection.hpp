@@ -3,6 +3,7 @@
 // monotonically); at the end the pattern is projected onto the constraint set r_e(X) = L_a - L_b = 0 by
 // Gauss-Newton minimum-norm steps dX = -J^T (J J^T)^-1 r, which move the panel boundaries the least.
 #pragma once
+#include <Eigen/SparseCholesky>
 #include <vector>
 
 #include "optimize/objectives.hpp"
@@ -18,5 +19,17 @@ double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, 
 // (interior vertices, which J never touches) stay zero.
 Eigen::VectorXd tangentToSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
                                      const Eigen::VectorXd& v);
+
+// tangentToSeamLengths at one X for many v: J and the factorization of J J^T made once.
+class SeamTangent {
+ public:
+  SeamTangent(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X);
+  Eigen::VectorXd operator()(const Eigen::VectorXd& v) const;
+
+ private:
+  Eigen::SparseMatrix<double> J_;
+  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> JJt_;
+  bool ok_ = false;
+};
 
 }  // namespace billow
