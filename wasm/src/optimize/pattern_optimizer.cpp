@@ -494,10 +494,14 @@ std::unique_ptr<PatternOptimizer::ShapeModel> PatternOptimizer::shapeModel() con
   return model;
 }
 
-Eigen::VectorXd PatternOptimizer::shapeProduct(const ShapeModel& model, const Eigen::VectorXd& v) const {
-  Eigen::VectorXd dX = X_ + v;  // the interior follows the outline
+Eigen::VectorXd PatternOptimizer::patternChange(const Eigen::VectorXd& v) const {
+  Eigen::VectorXd dX = X_ + v;  // the interior follows the outline (an affine map: the change is linear in v)
   followBoundary(dX);
-  dX -= X_;
+  return dX - X_;
+}
+
+Eigen::VectorXd PatternOptimizer::shapeProduct(const ShapeModel& model, const Eigen::VectorXd& v) const {
+  const Eigen::VectorXd dX = patternChange(v);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * x_.rows()), dx, lambda, out = Eigen::VectorXd::Zero(v.size());
   addRestJacobianProduct(mesh_, pattern_, X_, x_, dX, material_, b);
   addRodJacobianProduct(*model.rods, x_, model.dcdX, dX, b);
@@ -530,9 +534,7 @@ Eigen::VectorXd PatternOptimizer::shapeProduct(const ShapeModel& model, const Ei
 }
 
 Eigen::VectorXd PatternOptimizer::patternProduct(const Eigen::VectorXd& v) const {
-  Eigen::VectorXd dX = X_ + v;
-  followBoundary(dX);
-  dX -= X_;
+  const Eigen::VectorXd dX = patternChange(v);
   const double h = 1e-7 * objective_->meanEdgeLength() / std::max(dX.lpNorm<Eigen::Infinity>(), 1e-300);
   Eigen::VectorXd gp, gm, out = Eigen::VectorXd::Zero(v.size());
   objective_->patternEnergy(X_ + h * dX, &gp);
@@ -547,7 +549,7 @@ Eigen::VectorXd PatternOptimizer::gaussNewtonShapeProduct(const Eigen::VectorXd&
   const std::unique_ptr<ShapeModel> model = shapeModel();
   Eigen::VectorXd w = v;
   toVariables(w);
-  if (dX) *dX = X_ + w, followBoundary(*dX), *dX -= X_;
+  if (dX) *dX = patternChange(w);
   return model ? shapeProduct(*model, w) : Eigen::VectorXd();
 }
 

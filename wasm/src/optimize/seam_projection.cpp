@@ -60,11 +60,7 @@ bool normalStep(const Eigen::SparseMatrix<double>& J, const Eigen::VectorXd& b, 
 
 Eigen::VectorXd tangentToSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, const Eigen::VectorXd& X,
                                      const Eigen::VectorXd& v) {
-  if (pairs.empty()) return v;
-  Eigen::VectorXd r, step;
-  Eigen::SparseMatrix<double> J;
-  seamLengthResiduals(pairs, X, r, J);
-  return normalStep(J, J * v, step) ? Eigen::VectorXd(v - step) : v;
+  return SeamTangent(pairs, X)(v);
 }
 
 double projectSeamLengths(const std::vector<PatternObjective::EdgePair>& pairs, Eigen::VectorXd& X, int maxIterations,
