@@ -159,6 +159,10 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.search.gaussNewtonCgTolerance = v;
   else if (name == "slidingSeamWeight")
     o.sliding.seamWeight = v;
+  else if (name == "slidingDistanceWindow")
+    o.sliding.distanceWindow = int(v);
+  else if (name == "distanceDecrease")
+    o.stopping.distanceDecrease = v;
   else if (name == "slidingRemeshEvery")
     o.sliding.remeshEvery = int(v);
   else if (name == "regularizerEdgeLength")

@@ -371,6 +371,7 @@ TEST(PatternOptimizer, SlidingSeamsChangeHowTheOptimizerWorks) {
   EXPECT_FALSE(held.search.gaussNewton);
   EXPECT_EQ(held.stopping.maxIterations, o.stopping.maxIterations);
   EXPECT_EQ(held.stopping.windowDecrease, o.stopping.windowDecrease);
+  EXPECT_EQ(held.stopping.distanceWindow, 0);
   EXPECT_EQ(held.remeshing.every, o.remeshing.every);
   EXPECT_EQ(held.search.sobolevLength, o.search.sobolevLength);
   EXPECT_EQ(held.weights.smooth, o.weights.smooth);
@@ -382,6 +383,7 @@ TEST(PatternOptimizer, SlidingSeamsChangeHowTheOptimizerWorks) {
   EXPECT_EQ(coarse.remeshing.every, o.sliding.remeshEvery);
   EXPECT_EQ(coarse.stopping.maxIterations, 2 * o.stopping.maxIterations);  // OptimizeSliding::iterationFactor
   EXPECT_EQ(coarse.stopping.windowDecrease, 0);
+  EXPECT_EQ(coarse.stopping.distanceWindow, o.sliding.distanceWindow);
   EXPECT_GE(coarse.remeshing.maxRemeshings * coarse.remeshing.every, coarse.stopping.maxIterations);
   EXPECT_EQ(coarse.search.sobolevLength, o.search.sobolevLength);
   EXPECT_EQ(coarse.weights.smooth, o.weights.smooth);
@@ -407,7 +409,13 @@ TEST(PatternOptimizer, SlidingSeamsLetTheSphereFitFarBetter) {
   o.stopping.maxIterations = 110;
   const OptimizeRun held = optimize(f, o, 110, true);
   std::fill(f.weights.begin(), f.weights.end(), 0.0);
-  const OptimizeRun sliding = optimize(f, o, 110, true);
+  // Sliding, to its own stop: the distance window (OptimizeSliding::distanceWindow) ends it well before the
+  // iteration limit, and not on the first plateau (held-seam figures) but once the seams have slid.
+  o.stopping.maxIterations = 300;
+  const OptimizeRun sliding = optimize(f, o, std::numeric_limits<int>::max(), true);
+  EXPECT_EQ(sliding.state, OptimizeState::Converged) << sliding.message;
+  EXPECT_NE(sliding.message.find("distance"), std::string::npos) << sliding.message;
+  EXPECT_LT(sliding.iterations, 300);
   ASSERT_TRUE(held.cut.ok) << held.cut.message;
   ASSERT_TRUE(sliding.cut.ok) << sliding.cut.message;
   int remeshings = 0;

@@ -67,6 +67,7 @@ OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector
   if (o.sliding.iterationFactor > 1)
     o.stopping.maxIterations = int(std::lround(o.stopping.maxIterations * o.sliding.iterationFactor));
   o.stopping.windowDecrease = 0;
+  o.stopping.distanceWindow = o.sliding.distanceWindow;
   if (o.sliding.remeshEvery > 0) {
     o.remeshing.every =
         o.remeshing.every > 0 ? std::min(o.remeshing.every, o.sliding.remeshEvery) : o.sliding.remeshEvery;
@@ -785,6 +786,16 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
         return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
     }
   }
+  if (options_.stopping.distanceWindow > 0 && iteration_ >= options_.stopping.distanceWindow) {
+    double before = INFINITY, best = INFINITY;
+    for (const OptimizeRecord& r : history_) {
+      if (r.projected) continue;
+      best = std::min(best, r.bothWaysDistance());
+      if (r.iteration <= iteration_ - options_.stopping.distanceWindow) before = std::min(before, r.bothWaysDistance());
+    }
+    if (std::isfinite(before) && before - best < options_.stopping.distanceDecrease * best)
+      return StopReason{OptimizeState::Converged, "the distance to the target no longer decreases noticeably", false};
+  }
   if (iteration_ >= options_.stopping.maxIterations)
     return StopReason{OptimizeState::Stopped, "the iteration limit was reached"};
   if (options_.stopping.maxMillis > 0 && elapsedMs() > options_.stopping.maxMillis)
@@ -825,8 +836,9 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       // Converged on this mesh while the panels are meshed anew as they go (sliding seams): a fresh mesh first,
       // whose discretization may lead off where this one stopped (three sliding gores at 400 elements stall on
       // their symmetric layout, a minimum of that mesh only: bench/README.md "Sliding seams").
-      const bool remeshFirst = stop->state == OptimizeState::Converged && sliding_ && options_.remeshing.every > 0 &&
-                               timings_.remeshings < options_.remeshing.maxRemeshings && remeshedAt_ != iteration_;
+      const bool remeshFirst = stop->state == OptimizeState::Converged && stop->thisMesh && sliding_ &&
+                               options_.remeshing.every > 0 && timings_.remeshings < options_.remeshing.maxRemeshings &&
+                               remeshedAt_ != iteration_;
       if (!remeshFirst) {
         finish(stop->state, stop->message);
         break;

@@ -44,6 +44,11 @@ struct OptimizeStopping {
   // Converged when the best objective fell by less than windowDecrease (relative) over the window (0: off): the
   // line search's tail against unstable equilibria, where the RMS moves in its third digit.
   double windowDecrease = 0;
+  // Converged when the best distance to the target (both ways, OptimizeRecord::bothWaysDistance) fell by less than
+  // distanceDecrease (relative) over the last distanceWindow iterations (0: off). Unlike E it is comparable across
+  // remeshings, so it can judge a run that remeshes every few iterations (sliding seams).
+  int distanceWindow = 0;
+  double distanceDecrease = 0.05;
   int maxIterations = 300;
   double maxMillis = 0;  // total budget over all steps (<= 0: none)
 };
@@ -100,10 +105,12 @@ struct OptimizeRemeshing {
 // x the model size: at an edge length h that many times finer, sobolevLength and maxMoveEdges grow with 1/h and
 // E_smooth along sliding seams with 1/h^2, else the outlines zig-zag below the edge length); maxIterations x
 // iterationFactor and no objective window, which cannot tell the first plateau, before the seams move, from the
-// end (bench/README.md "Sliding seams").
+// end, but a distance window over distanceWindow iterations (two remeshings, longer than the first plateau under
+// Gauss-Newton steps; bench/README.md "Sliding seams").
 struct OptimizeSliding {
   double seamWeight = 0.1;
   double iterationFactor = 2;
+  int distanceWindow = 40;
   int remeshEvery = 20;
   double regularizerEdgeLength = 0.055;
 };
@@ -162,6 +169,10 @@ struct OptimizeRecord {
   // The optimizer went back to its best iterate of this mesh at the end (not an L-BFGS step): resettlings had
   // left it at a worse equilibrium.
   bool restored = false;
+  // The distance to the target both ways as one figure: the RMS of the two ways' RMS.
+  double bothWaysDistance() const {
+    return std::sqrt(0.5 * (distanceRms * distanceRms + targetDistanceRms * targetDistanceRms));
+  }
 };
 
 struct OptimizeTimings {
@@ -226,9 +237,11 @@ class PatternOptimizer {
   struct StopReason {
     OptimizeState state;
     const char* message;
+    bool thisMesh = true;  // a rule judging this mesh alone (not the distance window, which spans meshes)
   };
   // Why the run ends before another iteration, by the options' stopping rules in this order: the gradient, the
-  // stall, the window's move and decrease, the iteration and time limits; nothing while it goes on.
+  // stall, the window's move and decrease, the distance window, the iteration and time limits; nothing while it
+  // goes on.
   std::optional<StopReason> stopReason() const;
   // Starts the window (options.stopping.windowIterations) anew once full, or after a remeshing changed the mesh.
   void slideWindow();
