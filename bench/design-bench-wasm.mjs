@@ -24,6 +24,24 @@ const triangles = Number(option('--triangles', 0));
 const manifestPath = resolve(option('--manifest', join(HERE, 'designs/manifest.json')));
 const manifest = JSON.parse(readFileSync(manifestPath, 'utf8'));
 
+// The largest move of a vertex between two shapes of one mesh (flat x, y, z arrays).
+function largestMove(a, b) {
+  let worst = 0;
+  for (let i = 0; i < b.length; i += 3) worst = Math.max(worst, Math.hypot(a[i] - b[i], a[i + 1] - b[i + 1], a[i + 2] - b[i + 2]));
+  return worst;
+}
+
+// The largest distance from a vertex of a to the closest vertex of b.
+function farthest(a, b) {
+  let worst = 0;
+  for (let i = 0; i < a.length; i += 3) {
+    let closest = Infinity;
+    for (let j = 0; j < b.length; j += 3) closest = Math.min(closest, (a[i] - b[j]) ** 2 + (a[i + 1] - b[j + 1]) ** 2 + (a[i + 2] - b[j + 2]) ** 2);
+    worst = Math.max(worst, closest);
+  }
+  return Math.sqrt(worst);
+}
+
 const api = await loadApi();
 
 function targetOf(design, designPath) {
@@ -55,8 +73,9 @@ function run(entry) {
     if (v.iteration === 0 && !first) (first = v), (patternSeconds = (performance.now() - t0) / 1000), (tStart = performance.now());
     last = v;
     // Preview time counts from the start of the job (the target, the panels and the first inflation), as
-    // the designer waits for it; iteration 0 arrives only after that first inflation.
-    shapes.push({ iteration: v.iteration ?? 0, seconds: (performance.now() - t0) / 1000, positions: v.positions });
+    // the designer waits for it. The first iterate is the built panels before any inflation (the target's own
+    // surface): no preview; the second is the first inflation (iteration 0 again).
+    if (v !== first) shapes.push({ iteration: v.iteration ?? 0, seconds: (performance.now() - t0) / 1000, positions: v.positions, remeshings: v.remeshings ?? 0 });
     if (trace) {
       const scalars = Object.entries(v).filter(([, x]) => typeof x === 'number' || typeof x === 'string' || typeof x === 'boolean');
       console.error(`${entry.name} ${((performance.now() - t0) / 1000).toFixed(2)} s ${scalars.filter(([k]) => k !== 'stage').map(([k, x]) => `${k} ${typeof x === 'number' ? +x.toPrecision(4) : x}`).join(' ')}`);
@@ -64,12 +83,13 @@ function run(entry) {
     if ((performance.now() - tStart) / 1000 > maxSeconds) break;
   }
   const seconds = (performance.now() - tStart) / 1000;
-  // Preview quality: the first iterate within 5 % of the model size (the target's diagonal) of the final one.
+  // Preview quality: the first iterate within 5 % of the model size (the target's diagonal) of the final one: the
+  // largest vertex move on the same mesh, else (before a remeshing) as shapeDistance in design_bench.cpp.
   const final = last.positions, diagonal = first.distance.diagonal;
+  const finalRemeshings = last.remeshings ?? 0;
   let preview = null;
   for (const s of shapes) {
-    let worst = 0;
-    for (let i = 0; i < final.length; i += 3) worst = Math.max(worst, Math.hypot(s.positions[i] - final[i], s.positions[i + 1] - final[i + 1], s.positions[i + 2] - final[i + 2]));
+    const worst = s.remeshings === finalRemeshings ? largestMove(s.positions, final) : Math.max(farthest(s.positions, final), farthest(final, s.positions));
     if (worst < 0.05 * diagonal) { preview = s; break; }
   }
   const pattern = JSON.parse(first.flattenedText);

@@ -73,10 +73,10 @@ struct BenchOptions {
 };
 
 // How far the shape a is from the final shape b: the largest vertex move when they share the mesh; else
-// (an iterate before a remeshing) the larger of the two one-sided largest distances
+// (an iterate before a remeshing, whatever its vertex count) the larger of the two one-sided largest distances
 // to the other's closest vertex.
-double shapeDistance(const Vertices& a, const Vertices& b) {
-  if (a.rows() == b.rows()) return (a - b).rowwise().norm().maxCoeff();
+double shapeDistance(const Vertices& a, const Vertices& b, bool sameMesh) {
+  if (sameMesh) return (a - b).rowwise().norm().maxCoeff();
   const auto oneSided = [](const Vertices& p, const Vertices& q) {
     double worst = 0;
     for (int i = 0; i < p.rows(); ++i)
@@ -227,9 +227,13 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   const double D = opt.objective().modelSize();
   int previewIteration = -1;
   double previewSeconds = 0;
-  for (size_t k = 0; k < opt.shapes().size() && previewIteration < 0; ++k)
-    if (shapeDistance(opt.shapes()[k], opt.inflated()) < 0.05 * D)
+  int remeshingsAfter = 0;  // remeshings after the shape looked at, so before the final one
+  for (const auto& h : history) remeshingsAfter += h.remeshed;
+  for (size_t k = 0; k < opt.shapes().size() && previewIteration < 0; ++k) {
+    remeshingsAfter -= history[k].remeshed;
+    if (shapeDistance(opt.shapes()[k], opt.inflated(), remeshingsAfter == 0) < 0.05 * D)
       previewIteration = history[k].iteration, previewSeconds = history[k].ms / 1000;
+  }
   int newton = 0;
   for (const auto& h : history) newton += h.equilibriumIterations;
   // Each vertex's distance to the target (relative to D), for the RMS figures below.
