@@ -7,6 +7,7 @@
 
 #include "optimize/adjoint.hpp"
 #include "optimize/rest_derivatives.hpp"
+#include "optimize/rigid_align.hpp"
 #include "optimize_fixture.hpp"
 
 using namespace billow;
@@ -164,4 +165,32 @@ TEST(Adjoint, ReducedGradientMatchesFiniteDifferencesAt3k) {
   std::printf("[figures] sphere3 at %d elements, iteration %d: adjoint %.9e, finite differences %.9e\n",
               f.built.figures.triangles, opt.iterations(), an, fd);
   EXPECT_NEAR(fd, an, 1e-3 * std::abs(an));
+}
+
+// A line-search trial needs only E (rigid_align.hpp): on the nearly rotation-invariant sphere the alignment crawls
+// along the rotation, and the decrease rule ends it long before the step rule, at an E the exact one barely lowers.
+TEST(Alignment, TheDecreaseRuleEndsTheCrawlAtAlmostTheExactEnergy) {
+  Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  PatternOptimizer opt(f.scene->target, f.built, f.weights);
+  ASSERT_NE(opt.step(0), OptimizeState::Failed);
+  const PatternObjective& objective = opt.objective();
+  const Eigen::VectorXd X = packPattern(opt.pattern());
+  Vertices moved = opt.inflated();
+  const Eigen::RowVector3d center = moved.colwise().mean();
+  const Eigen::Matrix3d R = Eigen::AngleAxisd(0.05, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  const Eigen::RowVector3d shift(0.05 * objective.modelSize(), 0, 0);
+  for (int i = 0; i < moved.rows(); ++i) moved.row(i) = (moved.row(i) - center) * R.transpose() + center + shift;
+  Vertices exact = moved, trial = moved;
+  const int exactSteps = alignRigid(objective, X, exact, 300, 1e-12);
+  const int trialSteps = alignRigid(objective, X, trial, 300, 1e-6, 1e-9);
+  const double E0 = objective.shapeEnergy(moved, X, nullptr), Eexact = objective.shapeEnergy(exact, X, nullptr),
+               Etrial = objective.shapeEnergy(trial, X, nullptr);
+  std::printf(
+      "[figures] alignment of a moved sphere: exact %d steps, E %.9e; decrease rule %d steps, E %.9e (from %.3e)\n",
+      exactSteps, Eexact, trialSteps, Etrial, E0);
+  EXPECT_LT(Eexact, 0.9 * E0);
+  EXPECT_LE(Eexact, Etrial);
+  EXPECT_LT(Etrial - Eexact, 1e-6 * Eexact);
+  EXPECT_LT(2 * trialSteps, exactSteps);
 }

@@ -25,7 +25,7 @@ double nowMs() {
 
 // A line-search trial needs only E, which settles long before the alignment's step does; the accepted trial is
 // aligned to the default tolerance before its gradient.
-constexpr double kTrialAlignment = 1e-6;
+constexpr double kTrialAlignment = 1e-6, kTrialAlignDecrease = 1e-9;
 // A refused trial whose equilibrium lies this far (x the model size) from the predicted one, and further than 1.5
 // times the predicted move, snapped into another equilibrium.
 constexpr double kSnapDistance = 1e-2;
@@ -309,7 +309,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (snapped && *snapped) return false;
   if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) return false;
   x = solver.positions();
-  align(X, x, limits.alignTolerance);
+  align(X, x, limits.alignTolerance, limits.alignDecrease);
   return x.allFinite();
 }
 
@@ -319,9 +319,9 @@ std::shared_ptr<const SeamRods> PatternOptimizer::rodsAt(const Eigen::VectorXd& 
   return rods;
 }
 
-void PatternOptimizer::align(const Eigen::VectorXd& X, Vertices& x, double tolerance) {
+void PatternOptimizer::align(const Eigen::VectorXd& X, Vertices& x, double tolerance, double relativeDecrease) {
   const double t0 = nowMs();
-  alignRigid(*objective_, X, x, 300, tolerance);
+  alignRigid(*objective_, X, x, 300, tolerance, relativeDecrease);
   timings_.alignMs += nowMs() - t0;
 }
 
@@ -676,8 +676,9 @@ bool PatternOptimizer::iterate() {
     const Vertices predicted = predictEquilibrium(X);
     const double predictedMove = (predicted - x_).rowwise().norm().maxCoeff();
     bool snapped = false;
-    const EquilibriumLimits trial{
-        kTrialAlignment, std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize()), trialNewton};
+    const EquilibriumLimits trial{kTrialAlignment, kTrialAlignDecrease,
+                                  std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize()),
+                                  trialNewton};
     const bool solved = solveEquilibrium(X, predicted, x, &newton, false, trial, &snapped);
     double E = solved ? energy(X, x, nullptr) : NAN;
     if (!(solved && std::isfinite(E) && E <= E_ + 1e-4 * alpha * slope)) {
@@ -741,7 +742,7 @@ bool PatternOptimizer::resettle(const Vertices& from) {
   Vertices x;
   int newton = 0;
   // From an abandoned trial's shape (not settled): a solve that does not settle soon is no resettling.
-  if (!solveEquilibrium(X_, from, x, &newton, false, {1e-12, 0, kResettleNewton})) return false;
+  if (!solveEquilibrium(X_, from, x, &newton, false, {1e-12, 0, 0, kResettleNewton})) return false;
   const double E = settledEnergy(X_, x);
   Eigen::VectorXd g;
   if (std::isfinite(E) && std::abs(E - E_) > 1e-6 * std::abs(E_)) variableGradient(X_, x, g);

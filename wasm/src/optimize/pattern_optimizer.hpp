@@ -187,6 +187,7 @@ struct OptimizeTimings {
 // How PatternOptimizer solves one equilibrium (line-search trials, resettling).
 struct EquilibriumLimits {
   double alignTolerance = 1e-12;  // of the rigid alignment, x the model size (rigid_align.hpp)
+  double alignDecrease = 0;       // the alignment's relativeDecrease (rigid_align.hpp)
   // > 0: a solve whose Newton iterate moves further than that from its start is abandoned (false, *snapped set,
   // x where it was)
   double snapLimit = 0;
@@ -259,7 +260,7 @@ class PatternOptimizer {
   bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton, bool asCut = false,
                         const EquilibriumLimits& limits = {}, bool* snapped = nullptr);
   // Places x at its best rigid motion (rigid_align.hpp) to tolerance x the model size.
-  void align(const Eigen::VectorXd& X, Vertices& x, double tolerance);
+  void align(const Eigen::VectorXd& X, Vertices& x, double tolerance, double relativeDecrease = 0);
   void reducedGradient(const Eigen::VectorXd& X, const Vertices& x, Eigen::VectorXd& grad);
   // Where the equilibrium of panels X should be to first order from the current one (options.search.predictEquilibrium;
   // x_ when there is no factorization at the current iterate).

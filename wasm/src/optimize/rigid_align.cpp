@@ -74,7 +74,7 @@ void applyRigid(Vertices& x, const Eigen::Vector3d& center, const Vector6d& step
 }  // namespace
 
 int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vertices& x, int maxIterations,
-               double tolerance) {
+               double tolerance, double relativeDecrease) {
   const double D = objective.modelSize();
   const Eigen::VectorXd w = objective.targetWeights(X);
   Eigen::Vector3d center = x.colwise().mean().transpose();
@@ -100,7 +100,8 @@ int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vert
       Vector6d gt;
       const double Et = evaluate(objective, w, trial, trialCenter, Ht, gt);
       if (std::isfinite(Et) && Et <= E) {
-        const bool small = step.head<3>().norm() * D + step.tail<3>().norm() < tolerance * D;
+        const bool small =
+            step.head<3>().norm() * D + step.tail<3>().norm() < tolerance * D || E - Et < relativeDecrease * E;
         x = std::move(trial), E = Et, H = Ht, g = gt, center = trialCenter, accepted = true;
         mu = std::max(mu * 0.1, 1e-12);
         if (small) return it + 1;

@@ -9,9 +9,11 @@
 namespace billow {
 
 // Moves x (the inflated shape of pattern X) in place; returns the Gauss-Newton iterations used. Stops when the
-// step is below tolerance x D. The adjoint gradient needs the minimum itself: on a nearly rotation-invariant
-// target (a sphere) 30 steps left the reduced gradient 1-2 % off (tests/native/test_adjoint.cpp).
+// step is below tolerance x D, or lowered E by less than relativeDecrease x E (0: never). The adjoint gradient
+// needs the minimum itself: on a nearly rotation-invariant target (a sphere) 30 steps left the reduced gradient
+// 1-2 % off (tests/native/test_adjoint.cpp). A line-search trial needs only E: there the steps along the nearly
+// free rotation (5e-5 of the size, each lowering E by 1e-10 relative, a hundred of them) are not worth taking.
 int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vertices& x, int maxIterations = 300,
-               double tolerance = 1e-12);
+               double tolerance = 1e-12, double relativeDecrease = 0);
 
 }  // namespace billow
