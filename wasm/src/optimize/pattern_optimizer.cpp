@@ -709,7 +709,7 @@ bool PatternOptimizer::iterate() {
     }
     // The adjoint gradient needs the alignment's minimum itself (rigid_align.hpp); aligning further only
     // lowers E, so the accepted trial stays accepted.
-    align(X, x, EquilibriumLimits{}.alignTolerance, EquilibriumLimits{}.alignDecrease);
+    align(X, x, EquilibriumLimits{}.alignTolerance);
     E = settledEnergy(X, x);
     Eigen::VectorXd g;
     variableGradient(X, x, g);
@@ -742,9 +742,7 @@ bool PatternOptimizer::resettle(const Vertices& from) {
   Vertices x;
   int newton = 0;
   // From an abandoned trial's shape (not settled): a solve that does not settle soon is no resettling.
-  EquilibriumLimits limits;
-  limits.maxNewton = kResettleNewton;
-  if (!solveEquilibrium(X_, from, x, &newton, false, limits)) return false;
+  if (!solveEquilibrium(X_, from, x, &newton, false, {1e-12, 0, 0, kResettleNewton})) return false;
   const double E = settledEnergy(X_, x);
   Eigen::VectorXd g;
   if (std::isfinite(E) && std::abs(E - E_) > 1e-6 * std::abs(E_)) variableGradient(X_, x, g);

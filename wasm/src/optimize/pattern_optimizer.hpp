@@ -187,10 +187,7 @@ struct OptimizeTimings {
 // How PatternOptimizer solves one equilibrium (line-search trials, resettling).
 struct EquilibriumLimits {
   double alignTolerance = 1e-12;  // of the rigid alignment, x the model size (rigid_align.hpp)
-  // The alignment's relativeDecrease (rigid_align.hpp). 1e-12: the reduced gradient then agrees with finite
-  // differences to 6-7 digits instead of 9 (1e-10: 4-5), and on a round target the last hundreds of steps,
-  // along the nearly free rotation, are not taken.
-  double alignDecrease = 1e-12;
+  double alignDecrease = 0;       // the alignment's relativeDecrease (rigid_align.hpp)
   // > 0: a solve whose Newton iterate moves further than that from its start is abandoned (false, *snapped set,
   // x where it was)
   double snapLimit = 0;
