@@ -742,7 +742,9 @@ bool PatternOptimizer::resettle(const Vertices& from) {
   Vertices x;
   int newton = 0;
   // From an abandoned trial's shape (not settled): a solve that does not settle soon is no resettling.
-  if (!solveEquilibrium(X_, from, x, &newton, false, {1e-12, 0, 0, kResettleNewton})) return false;
+  EquilibriumLimits limits;
+  limits.maxNewton = kResettleNewton;
+  if (!solveEquilibrium(X_, from, x, &newton, false, limits)) return false;
   const double E = settledEnergy(X_, x);
   Eigen::VectorXd g;
   if (std::isfinite(E) && std::abs(E - E_) > 1e-6 * std::abs(E_)) variableGradient(X_, x, g);
@@ -791,8 +793,9 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
     double before = INFINITY, best = INFINITY;
     for (const OptimizeRecord& r : history_) {
       if (r.projected) continue;
-      best = std::min(best, r.bothWaysDistance());
-      if (r.iteration <= iteration_ - options_.stopping.distanceWindow) before = std::min(before, r.bothWaysDistance());
+      const double d = r.bothWaysDistance();
+      best = std::min(best, d);
+      if (r.iteration <= iteration_ - options_.stopping.distanceWindow) before = std::min(before, d);
     }
     if (std::isfinite(before) && before - best < options_.stopping.distanceDecrease * best)
       return StopReason{OptimizeState::Converged, "the distance to the target no longer decreases noticeably", false};

@@ -305,9 +305,9 @@ class PatternOptimizer {
   struct ShapeModel;
   // The Gauss-Newton model of the shape terms at the current iterate; null without the adjoint's factorization there.
   std::unique_ptr<ShapeModel> shapeModel() const;
-  // J^T H J v and the pattern terms' Hessian v (central differences of their gradient), v in the variables.
   // The change of every pattern row that a change v of the variables makes (the interior following).
   Eigen::VectorXd patternChange(const Eigen::VectorXd& v) const;
+  // J^T H J v and the pattern terms' Hessian v (central differences of their gradient), v in the variables.
   Eigen::VectorXd shapeProduct(const ShapeModel& model, const Eigen::VectorXd& v) const;
   Eigen::VectorXd patternProduct(const Eigen::VectorXd& v) const;
   // The damped Gauss-Newton direction at the current iterate and the decrease its model predicts; empty when there
