@@ -108,6 +108,38 @@ TEST(Adjoint, AdjointSolvesAroundAVertexWithoutStiffness) {
   EXPECT_LT(r.norm(), 1e-10 * b.norm());
 }
 
+// An alignment stopped short of its minimum leaves a rigid part in dE/dx, which pins would turn into gradient
+// error (adjoint.hpp). removeRigidPart takes a field's rigid motion away, however centred, and nothing else.
+TEST(Adjoint, RemoveRigidPartLeavesNoNetForceOrTorque) {
+  Vertices x(40, 3);
+  for (int i = 0; i < x.rows(); ++i)
+    x.row(i) << std::sin(1.3 * i), std::cos(0.7 * i) + 0.1 * i, 0.5 * std::sin(2.9 * i + 1);
+  const Eigen::Vector3d t(0.3, -1.2, 0.8), omega(-0.4, 0.9, 2.0), somewhere(5, -3, 1);
+  Eigen::VectorXd rigid(3 * x.rows()), other(3 * x.rows());
+  for (int i = 0; i < x.rows(); ++i) {
+    rigid.segment<3>(3 * i) = t + omega.cross(x.row(i).transpose() - somewhere);
+    other.segment<3>(3 * i) << std::cos(3.1 * i), std::sin(0.3 * i * i), std::cos(i) * std::sin(2.0 * i);
+  }
+  Eigen::VectorXd b = rigid;
+  removeRigidPart(x, b);
+  EXPECT_LT(b.norm(), 1e-12 * rigid.norm()) << "a rigid motion is all rigid part";
+
+  b = other + rigid;
+  removeRigidPart(x, b);
+  const Eigen::Vector3d center = x.colwise().mean().transpose();
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+  for (int i = 0; i < x.rows(); ++i)
+    force += b.segment<3>(3 * i), torque += (x.row(i).transpose() - center).cross(b.segment<3>(3 * i));
+  EXPECT_LT(force.norm() + torque.norm(), 1e-12 * b.norm());
+  Eigen::VectorXd again = b;
+  removeRigidPart(x, again);
+  EXPECT_LT((again - b).norm(), 1e-12 * b.norm()) << "what is left has no rigid part";
+  Eigen::VectorXd alone = other;
+  removeRigidPart(x, alone);
+  EXPECT_LT((alone - b).norm(), 1e-12 * b.norm()) << "the rigid motion added changes nothing";
+  EXPECT_GT(b.norm(), 0.5 * other.norm()) << "the rest is kept";
+}
+
 // PinnedStiffness keeps solveAdjoint's factorization: another right-hand side solves with the same K (the
 // optimizer's prediction of the next equilibrium), held at the pins and the DOFs without stiffness.
 TEST(Adjoint, PinnedStiffnessSolvesAgainWithTheSameFactorization) {

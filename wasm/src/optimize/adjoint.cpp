@@ -29,6 +29,24 @@ std::vector<int> rigidPins(const Vertices& x) {
   return pins;
 }
 
+void removeRigidPart(const Vertices& x, Eigen::VectorXd& b) {
+  const int n = static_cast<int>(x.rows());
+  if (n < 3 || b.size() != 3 * n) return;
+  const Eigen::Vector3d center = x.colwise().mean().transpose();
+  Eigen::Vector3d force = Eigen::Vector3d::Zero(), torque = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();
+  for (int i = 0; i < n; ++i) {
+    const Eigen::Vector3d r = x.row(i).transpose() - center, f = b.segment<3>(3 * i);
+    force += f, torque += r.cross(f);
+    inertia += r.squaredNorm() * Eigen::Matrix3d::Identity() - r * r.transpose();
+  }
+  // b_i -= t + omega x r_i, the rigid motion (t, omega) nearest b: translations and rotations about the centroid
+  // are orthogonal, so t is the mean and omega solves the inertia tensor against the torque.
+  const Eigen::Vector3d t = force / n, omega = inertia.ldlt().solve(torque);
+  if (!omega.allFinite()) return;
+  for (int i = 0; i < n; ++i) b.segment<3>(3 * i) -= t + omega.cross(x.row(i).transpose() - center);
+}
+
 double solveAdjoint(const Eigen::SparseMatrix<double>& K, const Eigen::VectorXd& b, const std::vector<int>& pins,
                     Eigen::VectorXd& lambda) {
   PinnedStiffness s;

@@ -3,8 +3,8 @@
 // dx/dX = -K^-1 dg/dX, so the reduced gradient of E(x(X), X) is
 //     dE/dX = dE/dX|_x - lambda^T dg/dX,   K lambda = dE/dx.
 // K is singular along the six rigid motions; they are pinned (3-2-1 on three far-apart vertices). Which
-// pins does not matter because x is rigidly aligned to minimize E first (rigid_align.hpp): then dE/dx has
-// no rigid component and every choice of pins gives the same dE/dX.
+// pins does not matter when dE/dx has no rigid component: x is rigidly aligned to minimize E first
+// (rigid_align.hpp), and what an alignment stopped short of its minimum leaves is removed (removeRigidPart).
 #pragma once
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
@@ -19,6 +19,11 @@ namespace billow {
 // Six DOF indices (3 v + axis) that remove the rigid motions of x: all of vertex a, two coordinates of the
 // farthest vertex b, one of the vertex c farthest from the line ab.
 std::vector<int> rigidPins(const Vertices& x);
+
+// Removes from b (3 per vertex of x) its least-squares rigid part: the net force and the net torque about the
+// centroid. At the alignment's minimum there is none; an alignment stopped early leaves some, and pinned, it
+// would enter the gradient through whichever pins were chosen.
+void removeRigidPart(const Vertices& x, Eigen::VectorXd& b);
 
 // Solves K lambda = b with lambda = 0 at the pins and at DOFs without any stiffness (zero rows of K: the
 // inside of a slack internal panel) (the supernodal Cholesky, K being positive definite at a stable

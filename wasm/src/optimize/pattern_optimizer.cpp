@@ -340,6 +340,7 @@ void PatternOptimizer::reducedGradient(const Eigen::VectorXd& X, const Vertices&
   rebuildRest(X, mesh);
   Eigen::VectorXd dEdx, dEdX, lambda, dcdX, product = Eigen::VectorXd::Zero(X.size());
   objective_->shapeEnergy(x, X, &dEdx, &dEdX);
+  removeRigidPart(x, dEdx);
   const std::shared_ptr<const SeamRods> rods = rodsAt(X, &dcdX);
   const Eigen::SparseMatrix<double> K = assembleStiffness(mesh, x, material_, pattern_.pressure, rods.get());
   if (!stiffness_) stiffness_ = std::make_unique<PinnedStiffness>();
