@@ -427,32 +427,54 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
 
 void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   message_ = message;
-  if (s != OptimizeState::Failed && best_.E < E_ && best_.X.size() == X_.size()) {
-    // A resettling took the optimizer to a worse equilibrium and it did not get back below its best: the best
-    // iterate is what it found (a settled equilibrium of those panels), nothing of it is lost.
-    X_ = best_.X, x_ = best_.x, g_ = best_.g, E_ = settledEnergy(X_, x_);
-    unpackPattern(X_, pattern_);
-    record(0, 0, false);
-    history_.back().restored = true;
+  if (s == OptimizeState::Failed) {
+    state_ = s;
+    timings_.totalMs = elapsedMs();
+    return;
   }
-  if (s != OptimizeState::Failed) {  // equal seam lengths exactly, as the panels are cut
-    Eigen::VectorXd X = X_;
-    projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12);
-    followBoundary(X);
-    Vertices x;
-    int newton = 0;
-    if (solveEquilibrium(X, x_, x, &newton, true)) {
-      X_ = X, x_ = x;
-      E_ = settledEnergy(X_, x_);
-      unpackPattern(X_, pattern_);
-      variableGradient(X_, x_, g_);
-      record(0, newton, true);
-    } else {
-      message_ += (message_.empty() ? "" : "; ") + std::string("the exact seam-length projection did not settle");
+  // A resettling took the optimizer to a worse equilibrium and it did not get back below its best: the best
+  // iterate is what it found (a settled equilibrium of those panels), nothing of it is lost. But that iterate
+  // may sit where its equilibrium is about to vanish (why the resettling came), and cut it can snap into the
+  // other one (fb-spot: the head swung 7 cm across the thickness, E +22 %); the last iterate, settled on the
+  // branch the balloon snapped into, then cuts better. The designer gets the better of the two cut shapes.
+  std::optional<CutShape> cut;
+  bool restore = best_.E < E_ && best_.X.size() == X_.size();
+  if (restore) {
+    cut = cutShape(best_.X, best_.x);
+    if (!cut || cut->E > E_) {
+      std::optional<CutShape> last = cutShape(X_, x_);
+      if (last && (!cut || last->E < cut->E)) cut = std::move(last), restore = false;
     }
+    if (restore) {
+      X_ = best_.X, x_ = best_.x, g_ = best_.g, E_ = settledEnergy(X_, x_);
+      unpackPattern(X_, pattern_);
+      record(0, 0, false);
+      history_.back().restored = true;
+    }
+  } else {
+    cut = cutShape(X_, x_);
+  }
+  if (cut) {
+    X_ = std::move(cut->X), x_ = std::move(cut->x);
+    E_ = settledEnergy(X_, x_);
+    unpackPattern(X_, pattern_);
+    variableGradient(X_, x_, g_);
+    record(0, cut->newton, true);
+  } else {
+    message_ += (message_.empty() ? "" : "; ") + std::string("the exact seam-length projection did not settle");
   }
   state_ = s;
   timings_.totalMs = elapsedMs();
+}
+
+std::optional<PatternOptimizer::CutShape> PatternOptimizer::cutShape(const Eigen::VectorXd& X0, const Vertices& x0) {
+  CutShape c;
+  c.X = X0;
+  projectSeamLengths(objective_->edgePairs(), c.X, 10, 1e-12);
+  followBoundary(c.X);
+  if (!solveEquilibrium(c.X, x0, c.x, &c.newton, true)) return std::nullopt;
+  c.E = settledEnergy(c.X, c.x);
+  return c;
 }
 
 Eigen::VectorXd PatternOptimizer::tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const {

@@ -281,6 +281,14 @@ class PatternOptimizer {
   // current state. False when it is no different.
   bool resettle(const Vertices& from);
   void finish(OptimizeState s, const std::string& message);
+  // The panels X with equal seam lengths exactly, as they are cut, settled from x0 with the cut panels' own rods.
+  struct CutShape {
+    Eigen::VectorXd X;
+    Vertices x;
+    double E = INFINITY;
+    int newton = 0;
+  };
+  std::optional<CutShape> cutShape(const Eigen::VectorXd& X0, const Vertices& x0);
   void record(double alpha, int newton, bool projected);
   bool rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) const;
   // Whether every panel's outline at X is a simple polygon (no two of its edges meet but neighbours).
