@@ -435,7 +435,7 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   // A resettling took the optimizer to a worse equilibrium and it did not get back below its best: the best
   // iterate is what it found (a settled equilibrium of those panels), nothing of it is lost. But that iterate
   // may sit where its equilibrium is about to vanish (why the resettling came), and cut it can snap into the
-  // other one (fb-spot: one end moved 7 cm across the thickness, E +22 %); the last iterate, settled on the
+  // other one (fb-spot: the head moved 7 cm across the thickness, E +22 %); the last iterate, settled on the
   // branch the balloon snapped into, then cuts better. The designer gets the better of the two cut shapes.
   std::optional<CutShape> cut;
   bool restore = best_.E < E_ && best_.X.size() == X_.size();
