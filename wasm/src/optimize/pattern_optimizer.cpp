@@ -427,11 +427,12 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
 
 void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   message_ = message;
-  if (s == OptimizeState::Failed) {
-    state_ = s;
-    timings_.totalMs = elapsedMs();
-    return;
-  }
+  if (s != OptimizeState::Failed) takeCutShape();
+  state_ = s;
+  timings_.totalMs = elapsedMs();
+}
+
+void PatternOptimizer::takeCutShape() {
   // A resettling took the optimizer to a worse equilibrium and it did not get back below its best: the best
   // iterate is what it found (a settled equilibrium of those panels), nothing of it is lost. But that iterate
   // may sit where its equilibrium is about to vanish (why the resettling came), and cut it can snap into the
@@ -463,8 +464,6 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   } else {
     message_ += (message_.empty() ? "" : "; ") + std::string("the exact seam-length projection did not settle");
   }
-  state_ = s;
-  timings_.totalMs = elapsedMs();
 }
 
 std::optional<PatternOptimizer::CutShape> PatternOptimizer::cutShape(const Eigen::VectorXd& X0, const Vertices& x0) {
