@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <limits>
@@ -16,6 +17,7 @@
 #include "export/polygon.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "pattern/design_scene.hpp"
+#include "simulate/seam_rods.hpp"
 #include "test_support.hpp"
 
 namespace billow::test {
@@ -134,6 +136,19 @@ inline void expectCuttableOutlines(const Pattern& pattern) {
     for (int v : outlineVertices(panel)) polygon.push_back(panel.vertices.row(v).transpose());
     EXPECT_FALSE(selfIntersects(polygon)) << panel.name;
   }
+}
+
+// The cut panels inflate with the seam rods the optimizer's balloon had: the simulator's corner rule (seam_rods.hpp)
+// picks the same seam vertices on the optimized pattern as on the flattened one (E_corner).
+inline void expectSameSeamRods(const Pattern& flattened, const Pattern& optimized) {
+  const auto rods = [](const Pattern& p) {
+    std::vector<std::array<int, 3>> t = makeSeamRods(sewPattern(p), 1).triples;
+    std::sort(t.begin(), t.end());
+    return t;
+  };
+  const std::vector<std::array<int, 3>> before = rods(flattened), after = rods(optimized);
+  EXPECT_FALSE(before.empty());
+  EXPECT_EQ(before, after) << before.size() << " rods in the flattened pattern, " << after.size() << " cut";
 }
 
 }  // namespace billow::test

@@ -5,6 +5,7 @@
 
 #include "io/pattern_json.hpp"
 #include "simulate/example_patterns.hpp"
+#include "simulate/seam_rods.hpp"
 #include "util/error.hpp"
 
 using namespace billow;
@@ -57,6 +58,7 @@ TEST(PatternJson, RoundTripIsExact) {
   for (const std::string& name : exampleNames()) {
     Pattern p = examplePattern(name, eo);
     p.material.density = 1390;
+    p.panels[0].seamCorners = seamCornersByTurn(p.panels[0]);  // marked (perhaps none); the others not
     p.pressure = 1234.5678901234567;
     const std::string text = writePatternJson(p);
     const Pattern q = readPatternJson(text);
@@ -65,6 +67,7 @@ TEST(PatternJson, RoundTripIsExact) {
     for (size_t i = 0; i < p.panels.size(); ++i) {
       EXPECT_TRUE(q.panels[i].vertices == p.panels[i].vertices) << name;  // bitwise equal doubles
       EXPECT_TRUE(q.panels[i].triangles == p.panels[i].triangles) << name;
+      EXPECT_EQ(q.panels[i].seamCorners, p.panels[i].seamCorners) << name;
     }
     EXPECT_EQ(q.pressure, p.pressure);
     EXPECT_EQ(q.material.density, 1390);
@@ -98,6 +101,16 @@ TEST(PatternJson, EveryErrorHasItsCode) {
   j = tinyPattern();
   j["stitches"][1] = {0, 1, 5, 1};
   EXPECT_EQ(codeOf(j), "pattern.bad-index");
+  j = tinyPattern();
+  j["panels"][0]["seam_corners"] = {1, 3};  // the panel has three vertices
+  EXPECT_EQ(codeOf(j), "pattern.bad-index");
+  EXPECT_NE(std::string(errorOf(j).what()).find("seam corner"), std::string::npos) << errorOf(j).what();
+  j["panels"][0]["seam_corners"] = {0.5};
+  EXPECT_EQ(codeOf(j), "pattern.bad-index");
+  j["panels"][0]["seam_corners"] = 1;
+  EXPECT_EQ(codeOf(j), "pattern.bad-value");
+  j["panels"][0]["seam_corners"] = {1};
+  EXPECT_EQ(codeOf(j), "no error");
   j = tinyPattern();
   j["stitches"].erase(2);
   EXPECT_EQ(codeOf(j), "pattern.open");

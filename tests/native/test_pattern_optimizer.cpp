@@ -202,6 +202,7 @@ TEST(PatternOptimizer, FrontBackPenguinAbandonsTrialsThatSnapAndKeepsItsOutlines
   expectObjectiveNeverRises(h, 1e-12);
   expectEndsAtItsBest(h);
   expectCuttableOutlines(opt.pattern());
+  expectSameSeamRods(f.built.pattern, opt.pattern());
 }
 
 // The stuffed toy's outline from the front (the Outline tool's seam, tests/data) runs into thin notches (around the
@@ -221,6 +222,7 @@ TEST(PatternOptimizer, FrontBackStuffedToyGoesOnAlongItsOutlinesThinNotches) {
   EXPECT_LT(h.back().distanceRms, 0.45 * h.front().distanceRms);
   expectObjectiveNeverRises(h, 1e-5);
   expectCuttableOutlines(opt.pattern());
+  expectSameSeamRods(f.built.pattern, opt.pattern());
 }
 
 // Sec. 5.3: the panels meshed again from their outlines (every 4 iterations here) and the optimization goes

@@ -11,6 +11,7 @@
 #include "panel_checks.hpp"
 #include "pattern/design_scene.hpp"
 #include "pattern/remesh_pattern.hpp"
+#include "simulate/seam_rods.hpp"
 #include "simulate/sewn_pattern.hpp"
 #include "test_support.hpp"
 #include "util/error.hpp"
@@ -145,6 +146,40 @@ TEST(RemeshPattern, PanelsMovedByTheOptimizerAreMeshedFromTheirNewOutline) {
   expectGoodRemesh(built, r, h);
   EXPECT_GT(minPanelAngleDeg(r.built.pattern), before) << "remeshing restores the triangles' quality";
   EXPECT_GT(minPanelAngleDeg(r.built.pattern), 15);
+}
+
+// The seam corners a pattern marks (the optimizer's: the seam rods it optimized with) stay where they were on the
+// outline, at the nearest new outline vertex; a pattern that marks none still marks none.
+TEST(RemeshPattern, MarkedSeamCornersStayWhereTheyWere) {
+  BuiltPattern built = gores(false);
+  const double h = built.figures.edgeLength;
+  EXPECT_FALSE(remeshPattern(built, built.pattern.inflated, h).built.pattern.panels[0].seamCorners);
+  for (Panel& panel : built.pattern.panels) {
+    panel.seamCorners = seamCornersByTurn(panel);
+    const std::vector<int> outline = outlineVertices(panel);
+    for (size_t k = 3; k < outline.size(); k += 7) panel.seamCorners->push_back(outline[k]);
+  }
+  for (const double factor : {0.7, 1.5}) {
+    SCOPED_TRACE("h x " + std::to_string(factor));
+    const RemeshedPattern r = remeshPattern(built, built.pattern.inflated, factor * h);
+    for (size_t p = 0; p < built.pattern.panels.size(); ++p) {
+      const Panel &before = built.pattern.panels[p], &after = r.built.pattern.panels[p];
+      ASSERT_TRUE(after.seamCorners);
+      EXPECT_GE(after.seamCorners->size(), before.seamCorners->size() / 2);
+      EXPECT_LE(after.seamCorners->size(), before.seamCorners->size());
+      const auto nearest = [](const Panel& from, int v, const Panel& to) {
+        double d = INFINITY;
+        for (int u : *to.seamCorners) d = std::min(d, (to.vertices.row(u) - from.vertices.row(v)).norm());
+        return d;
+      };
+      const std::vector<int> outline = outlineVertices(after);
+      for (int v : *after.seamCorners) {
+        EXPECT_TRUE(std::binary_search(outline.begin(), outline.end(), v)) << "on the outline";
+        EXPECT_LT(nearest(after, v, before), std::max(1.0, factor) * h);
+      }
+      for (int v : *before.seamCorners) EXPECT_LT(nearest(before, v, after), std::max(1.0, factor) * h);
+    }
+  }
 }
 
 TEST(RemeshPattern, InternalPanelsStaySewnToBothSeams) {

@@ -88,6 +88,37 @@ TEST(SeamRods, EverySmoothSeamVertexCarriesOneRodAndCornersNone) {
   EXPECT_EQ(seamRodCoefficient(mylar, 1000, 0), 0);
 }
 
+// A pattern may mark its seam corners (the optimizer does, so the cut panels keep the rods it optimized with):
+// the marks replace the 45-degree rule, panel by panel; the rule's own marks give the same rods as the rule.
+TEST(SeamRods, CornersThePatternMarksReplaceTheTurnRule) {
+  ExampleOptions eo;
+  eo.triangles = 700;
+  Pattern pillow = examplePattern("pillow", eo);
+  const int rim = rimVertices(sewPattern(pillow));
+  for (Panel& panel : pillow.panels) {
+    panel.seamCorners = seamCornersByTurn(panel);
+    EXPECT_EQ(panel.seamCorners->size(), 4u) << "the square's corners";
+  }
+  EXPECT_EQ(int(makeSeamRods(sewPattern(pillow), 1).triples.size()), rim - 4);
+  for (Panel& panel : pillow.panels) panel.seamCorners->clear();  // marked: no corner at all
+  EXPECT_EQ(int(makeSeamRods(sewPattern(pillow), 1).triples.size()), rim);
+  // A corner marked on one side of a smooth seam only: the other side's rod still bends through it.
+  Pattern mylar = examplePattern("mylar", eo);
+  const SewnMesh unmarked = sewPattern(mylar);
+  const int rimVertex = outlineVertices(mylar.panels[0]).front();
+  mylar.panels[0].seamCorners = std::vector<int>{rimVertex};
+  EXPECT_EQ(makeSeamRods(sewPattern(mylar), 1).triples.size(), makeSeamRods(unmarked, 1).triples.size());
+  mylar.panels[1].seamCorners = seamCornersByTurn(mylar.panels[1]);
+  ASSERT_TRUE(mylar.panels[1].seamCorners->empty());
+  for (const Stitch& s : mylar.stitches)
+    if (s.panelA == 0 && s.vertexA == rimVertex)
+      mylar.panels[1].seamCorners->push_back(s.vertexB);
+    else if (s.panelB == 0 && s.vertexB == rimVertex)
+      mylar.panels[1].seamCorners->push_back(s.vertexA);
+  ASSERT_EQ(mylar.panels[1].seamCorners->size(), 1u);
+  EXPECT_EQ(int(makeSeamRods(sewPattern(mylar), 1).triples.size()), rimVertices(unmarked) - 1);
+}
+
 namespace {
 
 struct RimFigures {

@@ -76,6 +76,11 @@ Panel readPanel(const json& j, int i, double scale, long long& triangleBudget) {
     throw Error("pattern.too-large", "The pattern has too many triangles for Billow. Use a coarser resolution.");
   p.vertices = readRows<2, PanelVertices>(arrayField(j, "vertices", where), where + " vertices", scale);
   p.triangles = readRows<3, Triangles>(tris, where + " triangles", 1);
+  if (j.contains("seam_corners")) {
+    const json& corners = arrayField(j, "seam_corners", where);
+    p.seamCorners.emplace();
+    for (const json& v : corners) p.seamCorners->push_back(index(v, where + " seam_corners"));
+  }
   return p;
 }
 
@@ -158,7 +163,9 @@ std::string writePatternJson(const Pattern& p, int indent) {
     for (int r = 0; r < panel.vertices.rows(); ++r) v.push_back({panel.vertices(r, 0), panel.vertices(r, 1)});
     for (int r = 0; r < panel.triangles.rows(); ++r)
       t.push_back({panel.triangles(r, 0), panel.triangles(r, 1), panel.triangles(r, 2)});
-    j["panels"].push_back({{"name", panel.name}, {"internal", panel.internal}, {"vertices", v}, {"triangles", t}});
+    json out = {{"name", panel.name}, {"internal", panel.internal}, {"vertices", v}, {"triangles", t}};
+    if (panel.seamCorners) out["seam_corners"] = *panel.seamCorners;
+    j["panels"].push_back(std::move(out));
   }
   j["stitches"] = json::array();
   for (const Stitch& s : p.stitches) j["stitches"].push_back({s.panelA, s.vertexA, s.panelB, s.vertexB});

@@ -103,11 +103,15 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
 void PatternOptimizer::setUp(const BuiltPattern& built) {
   built_ = built;
   pattern_ = built.pattern;
+  // Which seam vertices carry a rod is fixed for the phase (a corner is judged by its rest angle, a jump), so E(X)
+  // stays smooth; their coefficient follows the panels (rodsAt), as the cut panels' own rods do. The pattern marks
+  // its corners, so the cut panels keep these rods wherever the optimizer turned an outline across 45 degrees
+  // (fb-penguin's cut shape snapped from 1.62 to 2.42 % over six such vertices, bench/README.md).
+  for (Panel& panel : pattern_.panels)
+    if (!panel.seamCorners) panel.seamCorners = seamCornersByTurn(panel);
   mesh_ = sewPattern(pattern_);
   solver_.reset();
   stiffness_.reset();
-  // Which seam vertices carry a rod is fixed for the phase (a corner is judged by its rest angle, a jump), so E(X)
-  // stays smooth; their coefficient follows the panels (rodsAt), as the cut panels' own rods do.
   rods_ = std::make_shared<const SeamRods>(
       makeSeamRods(mesh_, seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness)));
   objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, options_.weights);
@@ -271,7 +275,8 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   io.seamRods = asCut ? nullptr : rodsAt(X);
   if (limits.maxNewton > 0) io.maxIterations = std::min(io.maxIterations, limits.maxNewton);
   if (asCut) {
-    // As the cut panels inflate on their own (billow inflate, the app's stored results): their own seam rods.
+    // As the cut panels inflate on their own (billow inflate, the app's stored results): their own seam rods, at
+    // the corners the pattern marks (the rods the optimizer had).
     Pattern cut = pattern_;
     unpackPattern(X, cut);
     try {

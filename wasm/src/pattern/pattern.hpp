@@ -2,6 +2,7 @@
 // data"); what the designer cuts, and what the simulator sews (simulate/sewn_pattern.hpp).
 #pragma once
 #include <map>
+#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -17,6 +18,10 @@ struct Panel {
   bool internal = false;  // internal connection: no pressure load, not part of the outer surface
   PanelVertices vertices;
   Triangles triangles;  // #t by 3, counterclockwise in the panel plane = as seen from outside
+  // Outline vertices where a seam may kink: no seam rod bends through them (simulate/seam_rods.hpp). Absent: the
+  // simulator judges by the outline's turn there. The optimizer writes the corners of the flattened panels, so the
+  // cut panels inflate with the seam rods the optimized balloon had.
+  std::optional<std::vector<int>> seamCorners;
 };
 
 // Panel vertex `vertexA` of panel `panelA` is sewn to `vertexB` of `panelB`. Stitches chain: a corner where

@@ -68,6 +68,11 @@ Panel remeshPanel(const Panel& old, const BuiltPanel& oldBuilt, const Vertices& 
   Vertices target(boundary, 3), inflated(boundary, 3);
   std::vector<int> seam(boundary, -1);
   std::vector<char> corner(boundary, 0);
+  // The seam corners the pattern marks (Panel::seamCorners) go to the new outline vertex nearest along the piece.
+  std::vector<char> marked(old.vertices.rows(), 0);
+  if (old.seamCorners)
+    for (int v : *old.seamCorners) marked[v] = 1;
+  std::vector<int> seamCorners;
   int row = 0;
   for (int k = 0; k < np; ++k) {
     const PanelPiece& piece = oldBuilt.pieces[k];
@@ -90,6 +95,13 @@ Panel remeshPanel(const Panel& old, const BuiltPanel& oldBuilt, const Vertices& 
       seam[r] = piece.seam;
       corner[r] = i == 0;
     }
+    for (int j = 0; j + 1 < static_cast<int>(piece.rows.size()); ++j) {  // the last row is the next piece's first
+      if (!marked[piece.rows[j]]) continue;
+      int nearest = 0;
+      for (int i = 1; i <= counts[k]; ++i)
+        if (std::abs(param(i) - j) < std::abs(param(nearest) - j)) nearest = i;
+      seamCorners.push_back((row + nearest) % boundary);
+    }
     row += counts[k];
   }
   const TriMesh mesh = meshPanel(outline, h);
@@ -99,6 +111,11 @@ Panel remeshPanel(const Panel& old, const BuiltPanel& oldBuilt, const Vertices& 
   panel.internal = old.internal;
   panel.vertices = mesh.V.leftCols(2);
   panel.triangles = mesh.F;
+  if (old.seamCorners) {
+    std::sort(seamCorners.begin(), seamCorners.end());
+    seamCorners.erase(std::unique(seamCorners.begin(), seamCorners.end()), seamCorners.end());
+    panel.seamCorners = std::move(seamCorners);
+  }
   carried.target.resize(nv, 3);
   carried.inflated.resize(nv, 3);
   carried.target.topRows(boundary) = target;

@@ -7,7 +7,8 @@
 //   3. the interior is meshed anew at edge length h (meshPanel: constrained Delaunay refinement);
 //   4. stitches are made again (sample k of a piece to sample N - k of its partner);
 //   5. what each panel vertex carries comes over: the target position (s_j of Eq. 10 on seams) and the
-//      inflated position, along the old piece on the boundary and by barycentric location inside.
+//      inflated position, along the old piece on the boundary and by barycentric location inside; a seam corner
+//      the pattern marks, to the nearest new outline vertex along its piece.
 #pragma once
 #include <vector>
 

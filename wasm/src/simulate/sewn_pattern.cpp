@@ -32,6 +32,10 @@ void checkIndices(const Pattern& p, const PatternLimits& limits) {
                   panelLabel(p, int(i)) + " has a triangle that refers to a vertex it does not have.");
     if (!panel.vertices.allFinite())
       throw Error("pattern.degenerate", panelLabel(p, int(i)) + " has a vertex with an invalid coordinate.");
+    if (panel.seamCorners)
+      for (int v : *panel.seamCorners)
+        if (v < 0 || v >= panel.vertices.rows())
+          throw Error("pattern.bad-index", panelLabel(p, int(i)) + " has a seam corner at a vertex it does not have.");
   }
   if (triangles > limits.maxTriangles)
     throw Error("pattern.too-large", "The pattern has " + std::to_string(triangles) +
@@ -200,6 +204,12 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
   for (int i = 0; i < numPanels; ++i) boundary[i] = outlineEdges(p.panels[i]);
   UnionFind uf = stitchedVertices(p, m, boundary);
   numberSimulationVertices(uf, m);
+  m.seamCorner.assign(m.panelVertexStart.back(), -1);
+  for (int i = 0; i < numPanels; ++i) {
+    if (!p.panels[i].seamCorners) continue;
+    std::fill(m.seamCorner.begin() + m.panelVertexStart[i], m.seamCorner.begin() + m.panelVertexStart[i + 1], 0);
+    for (int v : *p.panels[i].seamCorners) m.seamCorner[m.panelVertexStart[i] + v] = 1;
+  }
   sewTriangles(p, m);
   checkClosed(p, m);
   warnSeamLengths(p, boundary, m);

@@ -19,8 +19,10 @@ struct SewnMesh {
   std::vector<int> panelVertexStart;  // #panels+1: panel p's vertices are simVertexOf[start[p] ..]
   std::vector<int> simVertexOf;       // panel vertex -> simulation vertex
   std::vector<int> stitchedCount;     // #numVertices: panel vertices merged into each simulation vertex
-  double meanEdgeLength = 0;          // rest, over all triangles [m]
-  double outerArea = 0;               // rest area of the outer panels [m^2]
+  // Per panel vertex (as simVertexOf): 1 a seam corner, 0 not, -1 not given (Panel::seamCorners).
+  std::vector<signed char> seamCorner;
+  double meanEdgeLength = 0;  // rest, over all triangles [m]
+  double outerArea = 0;       // rest area of the outer panels [m^2]
   std::vector<PatternWarning> warnings;
 
   int numTriangles() const { return static_cast<int>(triangles.rows()); }
