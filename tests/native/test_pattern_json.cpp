@@ -5,7 +5,7 @@
 
 #include "io/pattern_json.hpp"
 #include "simulate/example_patterns.hpp"
-#include "simulate/seam_rods.hpp"
+#include "simulate/sewn_pattern.hpp"
 #include "util/error.hpp"
 
 using namespace billow;
@@ -58,7 +58,7 @@ TEST(PatternJson, RoundTripIsExact) {
   for (const std::string& name : exampleNames()) {
     Pattern p = examplePattern(name, eo);
     p.material.density = 1390;
-    p.panels[0].seamCorners = seamCornersByTurn(p.panels[0]);  // marked (perhaps none); the others not
+    p.panels[0].seamCorners = seamCorners(sewPattern(p), 0);  // marked (perhaps none); the others not
     p.pressure = 1234.5678901234567;
     const std::string text = writePatternJson(p);
     const Pattern q = readPatternJson(text);

@@ -11,7 +11,6 @@
 #include "panel_checks.hpp"
 #include "pattern/design_scene.hpp"
 #include "pattern/remesh_pattern.hpp"
-#include "simulate/seam_rods.hpp"
 #include "simulate/sewn_pattern.hpp"
 #include "test_support.hpp"
 #include "util/error.hpp"
@@ -154,8 +153,10 @@ TEST(RemeshPattern, MarkedSeamCornersStayWhereTheyWere) {
   BuiltPattern built = gores(false);
   const double h = built.figures.edgeLength;
   EXPECT_FALSE(remeshPattern(built, built.pattern.inflated, h).built.pattern.panels[0].seamCorners);
-  for (Panel& panel : built.pattern.panels) {
-    panel.seamCorners = seamCornersByTurn(panel);
+  const SewnMesh sewn = sewPattern(built.pattern);
+  for (size_t p = 0; p < built.pattern.panels.size(); ++p) {
+    Panel& panel = built.pattern.panels[p];
+    panel.seamCorners = seamCorners(sewn, int(p));
     const std::vector<int> outline = outlineVertices(panel);
     for (size_t k = 3; k < outline.size(); k += 7) panel.seamCorners->push_back(outline[k]);
   }

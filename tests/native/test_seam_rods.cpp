@@ -95,9 +95,10 @@ TEST(SeamRods, CornersThePatternMarksReplaceTheTurnRule) {
   eo.triangles = 700;
   Pattern pillow = examplePattern("pillow", eo);
   const int rim = rimVertices(sewPattern(pillow));
-  for (Panel& panel : pillow.panels) {
-    panel.seamCorners = seamCornersByTurn(panel);
-    EXPECT_EQ(panel.seamCorners->size(), 4u) << "the square's corners";
+  const SewnMesh byTurn = sewPattern(pillow);
+  for (size_t p = 0; p < pillow.panels.size(); ++p) {
+    pillow.panels[p].seamCorners = seamCorners(byTurn, int(p));
+    EXPECT_EQ(pillow.panels[p].seamCorners->size(), 4u) << "the square's corners";
   }
   EXPECT_EQ(int(makeSeamRods(sewPattern(pillow), 1).triples.size()), rim - 4);
   for (Panel& panel : pillow.panels) panel.seamCorners->clear();  // marked: no corner at all
@@ -108,7 +109,7 @@ TEST(SeamRods, CornersThePatternMarksReplaceTheTurnRule) {
   const int rimVertex = outlineVertices(mylar.panels[0]).front();
   mylar.panels[0].seamCorners = std::vector<int>{rimVertex};
   EXPECT_EQ(makeSeamRods(sewPattern(mylar), 1).triples.size(), makeSeamRods(unmarked, 1).triples.size());
-  mylar.panels[1].seamCorners = seamCornersByTurn(mylar.panels[1]);
+  mylar.panels[1].seamCorners = seamCorners(unmarked, 1);
   ASSERT_TRUE(mylar.panels[1].seamCorners->empty());
   for (const Stitch& s : mylar.stitches)
     if (s.panelA == 0 && s.vertexA == rimVertex)

@@ -107,9 +107,9 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   // stays smooth; their coefficient follows the panels (rodsAt), as the cut panels' own rods do. The pattern marks
   // its corners, so the cut panels keep these rods wherever the optimizer turned an outline across 45 degrees
   // (fb-penguin's cut shape snapped from 1.62 to 2.42 % over six such vertices, bench/README.md).
-  for (Panel& panel : pattern_.panels)
-    if (!panel.seamCorners) panel.seamCorners = seamCornersByTurn(panel);
   mesh_ = sewPattern(pattern_);
+  for (size_t p = 0; p < pattern_.panels.size(); ++p)
+    if (!pattern_.panels[p].seamCorners) pattern_.panels[p].seamCorners = seamCorners(mesh_, int(p));
   solver_.reset();
   stiffness_.reset();
   rods_ = std::make_shared<const SeamRods>(

@@ -34,50 +34,17 @@ double seamRodCoefficient(double outerArea, double meanEdgeLength, double pressu
   return beta * pressure * R2 * R2 / (l * l * l);
 }
 
-namespace {
-// A seam turning by more than 45 degrees in its panel at rest (angleSum: the rest angles of the panel's triangles
-// at the vertex) has a corner there.
-bool turnsAtCorner(double angleSum) { return std::abs(M_PI - angleSum) > M_PI / 4; }
-
-double cornerAngle(const Eigen::Vector2d& u, const Eigen::Vector2d& v) {
-  return std::atan2(std::abs(u.x() * v.y() - u.y() * v.x()), u.dot(v));
-}
-}  // namespace
-
-std::vector<int> seamCornersByTurn(const Panel& panel) {
-  std::vector<double> angle(panel.vertices.rows(), 0.0);
-  for (int f = 0; f < panel.triangles.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = panel.triangles(f, k), b = panel.triangles(f, (k + 1) % 3), c = panel.triangles(f, (k + 2) % 3);
-      const Eigen::Vector2d pa = panel.vertices.row(a).transpose();
-      angle[a] += cornerAngle(Eigen::Vector2d(panel.vertices.row(b).transpose()) - pa,
-                              Eigen::Vector2d(panel.vertices.row(c).transpose()) - pa);
-    }
-  std::vector<int> corners;
-  for (int v : outlineVertices(panel))
-    if (turnsAtCorner(angle[v])) corners.push_back(v);
-  return corners;
-}
-
 SeamRods makeSeamRods(const SewnMesh& mesh, double coefficient) {
   SeamRods rods;
   rods.coefficient = coefficient;
   if (!(coefficient > 0)) return rods;
-  // Boundary edges of each panel (an edge of one triangle of that panel), and each boundary vertex's rest
-  // angle inside its panel.
+  // Boundary edges of each panel (an edge of one triangle of that panel).
   std::map<std::tuple<int, int, int>, int> edgeCount;
-  std::map<std::pair<int, int>, double> angle;  // (panel, vertex) -> sum of rest corner angles
-  for (int f = 0; f < mesh.numTriangles(); ++f) {
-    const int panel = mesh.trianglePanel[f];
-    const Eigen::Matrix2d Dm = mesh.rest[f].DmInv.inverse();
-    const Eigen::Vector2d P[3] = {Eigen::Vector2d::Zero(), Dm.col(0), Dm.col(1)};
+  for (int f = 0; f < mesh.numTriangles(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.triangles(f, k), b = mesh.triangles(f, (k + 1) % 3);
-      ++edgeCount[std::make_tuple(panel, std::min(a, b), std::max(a, b))];
-      const Eigen::Vector2d u = P[(k + 1) % 3] - P[k], v = P[(k + 2) % 3] - P[k];
-      angle[{panel, a}] += cornerAngle(u, v);
+      ++edgeCount[std::make_tuple(mesh.trianglePanel[f], std::min(a, b), std::max(a, b))];
     }
-  }
   std::map<std::pair<int, int>, std::vector<int>> neighbours;  // (panel, vertex) -> along the boundary
   std::map<std::pair<int, int>, int> sides;                    // boundary edge -> panels it bounds
   for (const auto& [key, count] : edgeCount) {
@@ -88,21 +55,16 @@ SeamRods makeSeamRods(const SewnMesh& mesh, double coefficient) {
     ++sides[{a, b}];
   }
   auto sewn = [&](int a, int b) { return sides[{std::min(a, b), std::max(a, b)}] >= 2; };
-  // The corners the pattern marks, per (panel, simulation vertex): 1 a corner, 0 not, -1 not marked.
-  std::map<std::pair<int, int>, signed char> marked;
-  for (size_t p = 0; p + 1 < mesh.panelVertexStart.size() && !mesh.seamCorner.empty(); ++p)
+  std::set<std::pair<int, int>> corners;  // (panel, simulation vertex) at a seam corner (SewnMesh::seamCorner)
+  for (size_t p = 0; p + 1 < mesh.panelVertexStart.size(); ++p)
     for (int g = mesh.panelVertexStart[p]; g < mesh.panelVertexStart[p + 1]; ++g)
-      if (mesh.seamCorner[g] >= 0) {
-        signed char& m = marked.try_emplace({int(p), mesh.simVertexOf[g]}, 0).first->second;
-        m = std::max(m, mesh.seamCorner[g]);
-      }
+      if (mesh.seamCorner[g]) corners.insert({int(p), mesh.simVertexOf[g]});
   std::set<std::array<int, 3>> seen;
   for (const auto& [key, ns] : neighbours) {
     const int b = key.second;
     if (ns.size() != 2 || mesh.stitchedCount[b] < 2) continue;
     if (!sewn(ns[0], b) || !sewn(b, ns[1])) continue;  // the end of a seam
-    const auto mark = marked.find(key);
-    if (mark != marked.end() ? mark->second == 1 : turnsAtCorner(angle[key])) continue;  // a corner
+    if (corners.count(key)) continue;                  // a corner
     const std::array<int, 3> t{std::min(ns[0], ns[1]), b, std::max(ns[0], ns[1])};
     if (seen.insert(t).second) rods.triples.push_back(t);  // once, not once per panel
   }

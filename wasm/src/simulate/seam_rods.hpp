@@ -51,15 +51,10 @@ double seamRodCoefficient(const SewnMesh& mesh, double pressure, double beta);
 double seamRodCoefficient(double outerArea, double meanEdgeLength, double pressure, double beta);
 
 // The rods of every seam of the mesh with the given coefficient. A seam vertex is left out (as the middle of a
-// triple) at a corner of its panel: one the pattern marks (Panel::seamCorners), or, where the pattern marks none,
-// where the seam turns by more than 45 degrees in its panel at rest (the pillow's corners, a seam's end at a
-// junction, the gores' poles). A seam shared by three panels (an internal panel sewn into a
-// seam) carries rods like any other: without them its crease crimped, and Newton chattered there
-// (sphere3-internal at 20k triangles: 103 iterations, 25 with them).
+// triple) at a seam corner of its panel (SewnMesh::seamCorner: one the pattern marks, else where the seam turns by
+// more than 45 degrees in its panel at rest: the pillow's corners, a seam's end at a junction, the gores' poles). A
+// seam shared by three panels (an internal panel sewn into a seam) carries rods like any other: without them its crease
+// crimped, and Newton chattered there (sphere3-internal at 20k triangles: 103 iterations, 25 with them).
 SeamRods makeSeamRods(const SewnMesh& mesh, double coefficient);
-
-// The outline vertices of a panel where its seam turns by more than 45 degrees at rest: the corners makeSeamRods
-// finds where a pattern marks none.
-std::vector<int> seamCornersByTurn(const Panel& panel);
 
 }  // namespace billow

@@ -91,6 +91,34 @@ void numberSimulationVertices(UnionFind& uf, SewnMesh& m) {
   }
 }
 
+// SewnMesh::seamCorner: the marks of a panel that has them; else where the outline turns by more than 45 degrees,
+// the rest angles of the panel's triangles summed over its vertices sewn into one point (a gusset strip's two
+// ends, sewn together, continue its seam).
+void markSeamCorners(const Pattern& p, SewnMesh& m) {
+  m.seamCorner.assign(m.panelVertexStart.back(), 0);
+  for (size_t i = 0; i < p.panels.size(); ++i) {
+    const Panel& panel = p.panels[i];
+    const int start = m.panelVertexStart[i];
+    if (panel.seamCorners) {
+      for (int v : *panel.seamCorners) m.seamCorner[start + v] = 1;
+      continue;
+    }
+    const std::vector<int> outline = outlineVertices(panel);
+    std::map<int, double> angle;  // simulation vertex -> the panel's rest angles there
+    for (int v : outline) angle[m.simVertexOf[start + v]] = 0;
+    for (int f = 0; f < panel.triangles.rows(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const auto at = angle.find(m.simVertexOf[start + panel.triangles(f, k)]);
+        if (at == angle.end()) continue;
+        const Eigen::Vector2d a = panel.vertices.row(panel.triangles(f, k)).transpose();
+        const Eigen::Vector2d u = panel.vertices.row(panel.triangles(f, (k + 1) % 3)).transpose() - a;
+        const Eigen::Vector2d w = panel.vertices.row(panel.triangles(f, (k + 2) % 3)).transpose() - a;
+        at->second += std::atan2(std::abs(u.x() * w.y() - u.y() * w.x()), u.dot(w));
+      }
+    for (int v : outline) m.seamCorner[start + v] = std::abs(M_PI - angle[m.simVertexOf[start + v]]) > M_PI / 4;
+  }
+}
+
 // The simulation triangles with their rest shapes; flat, clockwise or self-sewn triangles are refused.
 void sewTriangles(const Pattern& p, SewnMesh& m) {
   const int numPanels = static_cast<int>(p.panels.size());
@@ -204,16 +232,18 @@ SewnMesh sewPattern(const Pattern& p, const PatternLimits& limits) {
   for (int i = 0; i < numPanels; ++i) boundary[i] = outlineEdges(p.panels[i]);
   UnionFind uf = stitchedVertices(p, m, boundary);
   numberSimulationVertices(uf, m);
-  m.seamCorner.assign(m.panelVertexStart.back(), -1);
-  for (int i = 0; i < numPanels; ++i) {
-    if (!p.panels[i].seamCorners) continue;
-    std::fill(m.seamCorner.begin() + m.panelVertexStart[i], m.seamCorner.begin() + m.panelVertexStart[i + 1], 0);
-    for (int v : *p.panels[i].seamCorners) m.seamCorner[m.panelVertexStart[i] + v] = 1;
-  }
+  markSeamCorners(p, m);
   sewTriangles(p, m);
   checkClosed(p, m);
   warnSeamLengths(p, boundary, m);
   return m;
+}
+
+std::vector<int> seamCorners(const SewnMesh& mesh, int panel) {
+  std::vector<int> corners;
+  for (int g = mesh.panelVertexStart[panel]; g < mesh.panelVertexStart[panel + 1]; ++g)
+    if (mesh.seamCorner[g]) corners.push_back(g - mesh.panelVertexStart[panel]);
+  return corners;
 }
 
 Triangles outerTriangles(const SewnMesh& mesh) {

@@ -19,8 +19,10 @@ struct SewnMesh {
   std::vector<int> panelVertexStart;  // #panels+1: panel p's vertices are simVertexOf[start[p] ..]
   std::vector<int> simVertexOf;       // panel vertex -> simulation vertex
   std::vector<int> stitchedCount;     // #numVertices: panel vertices merged into each simulation vertex
-  // Per panel vertex (as simVertexOf): 1 a seam corner, 0 not, -1 not given (Panel::seamCorners).
-  std::vector<signed char> seamCorner;
+  // Per panel vertex (as simVertexOf): 1 at a seam corner, where no seam rod bends through (seam_rods.hpp): one
+  // its panel marks (Panel::seamCorners), or, on a panel that marks none, where its outline turns by more than 45
+  // degrees at rest (the angles of the panel's triangles there, a panel's own stitched copies together).
+  std::vector<char> seamCorner;
   double meanEdgeLength = 0;  // rest, over all triangles [m]
   double outerArea = 0;       // rest area of the outer panels [m^2]
   std::vector<PatternWarning> warnings;
@@ -33,6 +35,9 @@ struct SewnMesh {
 // pattern.open, pattern.non-manifold, pattern.orientation, pattern.too-large, pattern.empty.
 // Sewn edges of different rest length (beyond 1e-3 relative) are reported in SewnMesh::warnings.
 SewnMesh sewPattern(const Pattern& pattern, const PatternLimits& limits = {});
+
+// Panel p's seam corners (its vertices with seamCorner 1), as Panel::seamCorners marks them.
+std::vector<int> seamCorners(const SewnMesh& mesh, int panel);
 
 // Outer triangles only, as a closed mesh with merged vertices (for OBJ export and the volume).
 Triangles outerTriangles(const SewnMesh& mesh);
