@@ -20,11 +20,18 @@ const TYPES = {
   '.png': 'image/png', '.svg': 'image/svg+xml',
 };
 
-// A static file server for DIST, optionally under a sub-path (e.g. '/billow/').
+// An empty page of the server's origin (not part of the site), where a test clears the origin's storage.
+const BLANK = '__blank__.html';
+
+// A static file server for DIST, optionally under a sub-path (e.g. '/billow/'), and the blank page.
 export async function serve({ base = '/' } = {}) {
   const server = createServer(async (req, res) => {
     try {
       let path = decodeURIComponent(new URL(req.url, 'http://x').pathname);
+      if (path === `/${BLANK}`) {
+        res.writeHead(200, { 'content-type': TYPES['.html'] }).end('<!doctype html><title>blank</title><link rel="icon" href="data:,">');
+        return;
+      }
       if (!path.startsWith(base)) throw new Error('outside');
       path = normalize(path.slice(base.length));
       if (path.startsWith('..')) throw new Error('outside');
@@ -58,31 +65,32 @@ export async function launch({ serviceWorkers = 'block' } = {}) {
 }
 
 // Opens url in a new page of context and collects console errors; assertNoErrors() fails on any.
-export async function openPage(context, url) {
+// fresh: the origin's autosave is deleted first (on the blank page, so the app loads once).
+export async function openPage(context, url, { fresh = false } = {}) {
   const page = await context.newPage();
   const errors = [];
   page.on('console', (m) => m.type() === 'error' && errors.push(`console: ${m.text()}`));
   page.on('pageerror', (e) => errors.push(`page error: ${e.message}`));
   page.on('requestfailed', (r) => errors.push(`request failed: ${r.url()}`));
   page.errors = errors;
+  if (fresh) {
+    await page.goto(new URL(`/${BLANK}`, url).href);
+    await page.evaluate(
+      () => new Promise((resolve, reject) => {
+        const request = indexedDB.deleteDatabase('billow');
+        request.onsuccess = resolve;
+        request.onerror = () => reject(request.error);
+      }),
+    );
+  }
   await page.goto(url);
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
   return page;
 }
 
 // A page with no autosaved design: the app starts on its default example.
-export async function openFreshPage(context, url) {
-  const page = await openPage(context, url);
-  await page.evaluate(
-    () => new Promise((resolve, reject) => {
-      const request = indexedDB.deleteDatabase('billow');
-      request.onsuccess = resolve;
-      request.onerror = () => reject(request.error);
-    }),
-  );
-  await page.reload();
-  await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
-  return page;
+export function openFreshPage(context, url) {
+  return openPage(context, url, { fresh: true });
 }
 
 // Opens a design file of tests/data with the file picker, as a designer would.

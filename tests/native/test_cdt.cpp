@@ -13,13 +13,13 @@
 #include "remesh/cdt.hpp"
 #include "remesh/predicates.hpp"
 #include "remesh/refine.hpp"
+#include "test_support.hpp"
 
 using namespace billow;
 using Eigen::Vector2d;
+using test::kPi;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Vector2d pt(const Points2& P, int i) { return P.row(i).transpose(); }
 

@@ -9,13 +9,13 @@
 
 #include "cube_fixture.hpp"
 #include "seams/funnel.hpp"
+#include "test_support.hpp"
 
 using namespace billow;
+using test::kPi;
 using test::pointIn;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Pieces hold both their ends, interior points lie on mesh edges or vertices, and the length is the sum.
 void expectWellFormed(const TriMesh& m, const MeshTopology& topo, const GeodesicPath& g) {

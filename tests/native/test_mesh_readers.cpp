@@ -18,6 +18,9 @@
 
 using namespace billow;
 
+// Outside the anonymous namespace: the parameter of a test fixture class.
+enum class PlyFormat { Ascii, LittleEndian, BigEndian };
+
 namespace {
 
 TriMesh tetrahedron() {
@@ -72,8 +75,6 @@ std::string stlAscii(const TriMesh& m) {
   out << "endsolid test\n";
   return out.str();
 }
-
-enum class PlyFormat { Ascii, LittleEndian, BigEndian };
 
 // With extras: vertex normals and uchar colours, an 'edge' element between vertices and faces, a face flag
 // after the index list, and a trailing 'material' element with a list.

@@ -10,14 +10,14 @@
 
 #include "remesh/panel_mesher.hpp"
 #include "remesh/predicates.hpp"
+#include "test_support.hpp"
 #include "util/error.hpp"
 
 using namespace billow;
 using Eigen::Vector2d;
+using test::kPi;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 Points2 toPoints(const std::vector<Vector2d>& v) {
   Points2 P(static_cast<Eigen::Index>(v.size()), 2);

@@ -9,12 +9,12 @@
 
 #include "cube_fixture.hpp"
 #include "segment/segment_topology.hpp"
+#include "test_support.hpp"
 
 using namespace billow;
+using test::kPi;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 // Labels mesh m with these seam edges (seam id per edge), as the segmentation does after cutting.
 Segmentation labelled(const TriMesh& m, const std::vector<std::pair<std::pair<int, int>, int>>& seamEdges) {

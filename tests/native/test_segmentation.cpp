@@ -13,10 +13,9 @@
 #include "test_support.hpp"
 
 using namespace billow;
+using test::kPi;
 
 namespace {
-
-constexpr double kPi = 3.14159265358979323846;
 
 struct Scene {
   TriMesh mesh;

@@ -15,6 +15,8 @@
 
 namespace billow::test {
 
+inline constexpr double kPi = 3.14159265358979323846;
+
 inline std::string meshPath(const std::string& name) { return std::string(BILLOW_MESH_DIR) + "/" + name; }
 
 inline TriMesh loadShared(const std::string& name) { return readMeshBytes(readFileBytes(meshPath(name)), name); }
