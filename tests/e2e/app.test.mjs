@@ -25,6 +25,14 @@ test('the app opens on an example target, renders it and shows its statistics', 
   const painted = await paintedFraction(page, '#pane-target .pane-body');
   assert.ok(painted > 0.05, `the target is drawn (${(painted * 100).toFixed(1)} % of the pane)`);
   await screenshot(page, 'app-start');
+  // Headless Chromium renders on SwiftShader: no multisampling there (viewport.js).
+  const gl = await page.evaluate(() => {
+    const context = document.getElementById('viewport').getContext('webgl2');
+    const info = context.getExtension('WEBGL_debug_renderer_info');
+    return { renderer: context.getParameter(info.UNMASKED_RENDERER_WEBGL), antialias: context.getContextAttributes().antialias };
+  });
+  assert.match(gl.renderer, /SwiftShader/i);
+  assert.equal(gl.antialias, false, 'no multisampling on a software rasterizer');
   assertNoErrors(page);
   await page.close();
 });

@@ -2,10 +2,22 @@
 // own rectangle with the scissor test. Rendering is on demand (after input, resize or new content).
 import { WebGLRenderer, Color } from 'three';
 
+// Whether WebGL runs on a software rasterizer, by the renderer's name (Chromium and Firefox expose it).
+function softwareRendering() {
+  const gl = document.createElement('canvas').getContext('webgl2');
+  if (!gl) return false;
+  const info = gl.getExtension('WEBGL_debug_renderer_info');
+  const name = String(gl.getParameter(info ? info.UNMASKED_RENDERER_WEBGL : gl.RENDERER));
+  gl.getExtension('WEBGL_lose_context')?.loseContext();
+  return /swiftshader|llvmpipe|softpipe|software/i.test(name);
+}
+
 export class Viewport {
   constructor(canvas) {
     this.canvas = canvas;
-    this.renderer = new WebGLRenderer({ canvas, antialias: true, preserveDrawingBuffer: true });
+    // Multisampling on a software rasterizer (no GPU: SwiftShader, llvmpipe) costs the CPU the solver needs,
+    // about a quarter of the time of a gallery walk; there the edges stay unsmoothed.
+    this.renderer = new WebGLRenderer({ canvas, antialias: !softwareRendering(), preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     this.renderer.setScissorTest(true);
     this.panes = [];
