@@ -15,8 +15,8 @@ function softwareRendering() {
 export class Viewport {
   constructor(canvas) {
     this.canvas = canvas;
-    // Multisampling on a software rasterizer (no GPU: SwiftShader, llvmpipe) costs the CPU the solver needs,
-    // about a quarter of the time of a gallery walk; there the edges stay unsmoothed.
+    // No multisampling on a software rasterizer (no GPU: SwiftShader, llvmpipe): there it costs the CPU the
+    // solver needs, so the edges stay unsmoothed.
     this.renderer = new WebGLRenderer({ canvas, antialias: !softwareRendering(), preserveDrawingBuffer: true });
     this.renderer.setPixelRatio(Math.min(window.devicePixelRatio || 1, 2));
     this.renderer.setScissorTest(true);
