@@ -31,6 +31,11 @@ suite() {
       f=$(sed -E 's/.* ([0-9]+) tests failed out of ([0-9]+).*/\1/' <<<"$line")
       p=$(( $(sed -E 's/.* out of ([0-9]+).*/\1/' <<<"$line") - f ))
     fi
+  elif [ "$kind" = gtest-shards ]; then
+    # ctest ran GoogleTest shards: count their tests from the shards' output, which ctest keeps whole.
+    local shards_log="$WASM_DIR/Testing/Temporary/LastTest.log"
+    p=$(grep -hE '^\[  PASSED  \] [0-9]+ tests?\.' "$shards_log" | awk '{s += $4} END {print s + 0}')
+    f=$(grep -hE '^\[  FAILED  \] [0-9]+ tests?, listed below' "$shards_log" | awk '{s += $4} END {print s + 0}')
   else
     p=$(grep -E '^# pass [0-9]+' "$log_file" | tail -1 | awk '{print $3}')
     f=$(grep -E '^# fail [0-9]+' "$log_file" | tail -1 | awk '{print $3}')
@@ -42,7 +47,7 @@ suite() {
 }
 
 suite native ctest ctest --test-dir "$NATIVE_DIR" --output-on-failure -j2
-suite wasm ctest ctest --test-dir "$WASM_DIR" --output-on-failure -j2
+suite wasm gtest-shards ctest --test-dir "$WASM_DIR" --output-on-failure -j2
 suite node node node --test --test-timeout=120000 "$ROOT/tests/node/"
 # The timeout is per file as well as per test: the gallery file runs eight designs live (160 s alone, 300 s
 # and more with a build beside it on the second core).
