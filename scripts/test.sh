@@ -34,8 +34,8 @@ suite() {
   elif [ "$kind" = gtest-shards ]; then
     # ctest ran GoogleTest shards: count their tests from the shards' output, which ctest keeps whole.
     local shards_log="$WASM_DIR/Testing/Temporary/LastTest.log"
-    p=$(grep -hE '^\[  PASSED  \] [0-9]+ tests?\.' "$shards_log" | awk '{s += $4} END {print s + 0}')
-    f=$(grep -hE '^\[  FAILED  \] [0-9]+ tests?, listed below' "$shards_log" | awk '{s += $4} END {print s + 0}')
+    p=$(awk '/^\[  PASSED  \] [0-9]+ tests?\./ {s += $4} END {print s + 0}' "$shards_log")
+    f=$(awk '/^\[  FAILED  \] [0-9]+ tests?, listed below/ {s += $4} END {print s + 0}' "$shards_log")
   else
     p=$(grep -E '^# pass [0-9]+' "$log_file" | tail -1 | awk '{print $3}')
     f=$(grep -E '^# fail [0-9]+' "$log_file" | tail -1 | awk '{print $3}')
