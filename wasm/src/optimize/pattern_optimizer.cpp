@@ -814,6 +814,25 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
       }
       if (std::isfinite(before) && before - best < options_.stopping.windowDecrease * std::abs(E_))
         return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
+      // A resettled branch that has not come below the best iterate before it within half a window will not:
+      // the ones that pay come back within a few iterations (the fish: 5 and 7), fb-spot's never did.
+      double bestBefore = INFINITY, bestSince = INFINITY;
+      int resettledAt = -1;
+      for (size_t j = history_.size(); j-- > 0;) {
+        const OptimizeRecord& r = history_[j];
+        if (r.remeshed) break;
+        if (r.projected) continue;
+        if (resettledAt < 0 && r.resettled) {
+          resettledAt = r.iteration;
+        } else if (resettledAt >= 0) {
+          bestBefore = std::min(bestBefore, r.objective);
+        } else {
+          bestSince = std::min(bestSince, r.objective);
+        }
+      }
+      if (resettledAt >= 0 && iteration_ - resettledAt >= options_.stopping.windowIterations / 2 &&
+          !(bestSince < bestBefore))
+        return StopReason{OptimizeState::Converged, "the balloon keeps snapping away from its best shape"};
     }
   }
   if (options_.stopping.distanceWindow > 0 && iteration_ >= options_.stopping.distanceWindow) {
