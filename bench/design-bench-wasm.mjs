@@ -66,12 +66,13 @@ function run(entry) {
     connections: design.connections ?? [],
   });
   const shapes = [];
-  let tStart = 0, last = null, first = null, patternSeconds = 0;
+  let tStart = 0, last = null, first = null, patternSeconds = 0, endMesh = null;
   for (let step = job.next(); !step.done; step = job.next()) {
     const v = step.value;
     if (v.stage !== 'optimizing') continue;
     if (v.iteration === 0 && !first) (first = v), (patternSeconds = (performance.now() - t0) / 1000), (tStart = performance.now());
     last = v;
+    if (v.triangles) endMesh = v.triangles; // the mesh the run ends on (a coarse first phase streams its own)
     // Preview time counts from the start of the job (the target, the panels and the first inflation), as
     // the designer waits for it. The first iterate is the built panels before any inflation (the target's own
     // surface): no preview; the second is the first inflation (iteration 0 again).
@@ -94,7 +95,7 @@ function run(entry) {
   }
   const pattern = JSON.parse(first.flattenedText);
   return {
-    design: entry.name, class: entry.class, elements: first.triangles.length / 3, panels: pattern.panels.length,
+    design: entry.name, class: entry.class, elements: endMesh.length / 3, panels: pattern.panels.length,
     internalPanels: pattern.panels.filter((p) => p.internal).length, remeshingSteps: last.remeshings ?? 0,
     iterations: last.iteration ?? 0, patternSeconds, previewIteration: preview?.iteration ?? -1, previewSeconds: preview?.seconds ?? 0,
     seconds, state: last.state ?? 'time limit', message: last.message ?? '',

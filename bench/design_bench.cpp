@@ -137,6 +137,12 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.remeshing.every = int(v);
   else if (name == "maxRemeshings")
     o.remeshing.maxRemeshings = int(v);
+  else if (name == "coarseFactor")
+    o.remeshing.coarseFactor = v;
+  else if (name == "coarseIterations")
+    o.remeshing.coarseIterations = int(v);
+  else if (name == "coarseMinTriangles")
+    o.remeshing.coarseMinTriangles = int(v);
   else if (name == "tolerance")
     o.inflate.tolerance = v;
   else if (name == "projectEveryStep")

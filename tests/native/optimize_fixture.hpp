@@ -123,6 +123,7 @@ inline void expectEndsAtItsBest(const std::vector<OptimizeRecord>& h) {
 inline std::unique_ptr<PatternOptimizer> optimizedFor(const Fixture& f, int iterations) {
   OptimizeOptions oo;
   oo.stopping.maxIterations = iterations;
+  oo.remeshing.coarseFactor = 1;  // the design's mesh throughout: the tests follow its outlines and seam rods
   auto opt = std::make_unique<PatternOptimizer>(f.scene->target, f.built, f.weights, oo);
   while (opt->step(5) == OptimizeState::Running) {
   }

@@ -225,6 +225,44 @@ TEST(PatternOptimizer, FrontBackStuffedToyGoesOnAlongItsOutlinesThinNotches) {
   expectSameSeamRods(f.built.pattern, opt.pattern());
 }
 
+// The coarse first phase (OptimizeRemeshing::coarseFactor, on by default at 3k): the flattened panels meshed at
+// twice the edge length until that mesh's stopping rule or its iterations end it, then the outlines meshed at
+// the design's edge length. What the coarse phase found carries over (the penguin's fine phase starts at a
+// quarter of the flattened panels' distance), and however the run ends, it ends on the design's mesh.
+TEST(PatternOptimizer, CoarseFirstPhaseCarriesOverToTheDesignsMesh) {
+  const Fixture f = makeFixture("../../bench/designs/penguin-front-back.billow.json", 3000);
+  ASSERT_TRUE(f.built.ok());
+  const int designTriangles = f.built.figures.triangles;
+  for (const int iterations : {40, 6}) {
+    OptimizeOptions o;
+    o.stopping.maxIterations = iterations;
+    o.keepShapes = true;
+    PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+    while (opt.step(1) == OptimizeState::Running) {
+    }
+    const auto& h = opt.history();
+    const auto switched = std::find_if(h.begin(), h.end(), [](const OptimizeRecord& r) { return r.remeshed; });
+    ASSERT_NE(switched, h.end()) << "no switch to the design's mesh";
+    const size_t k = size_t(switched - h.begin());
+    std::printf(
+        "[figures] fb-penguin 3k, %d iterations: coarse phase %d iterations (%.2f s), rms %.3f %% -> %.3f %%; "
+        "fine phase from %.3f %% to %.3f %%, %.1f s\n",
+        iterations, switched->iteration, h[k - 1].ms / 1000, 100 * h.front().distanceRms, 100 * h[k - 1].distanceRms,
+        100 * switched->distanceRms, 100 * h.back().distanceRms, opt.timings().totalMs / 1000);
+    EXPECT_EQ(std::count_if(h.begin(), h.end(), [](const OptimizeRecord& r) { return r.remeshed; }), 1);
+    EXPECT_LE(switched->iteration, iterations / 2);
+    EXPECT_LT(opt.shapes().front().rows(), 0.4 * opt.inflated().rows()) << "the first phase is not coarse";
+    EXPECT_NEAR(opt.mesh().numTriangles(), designTriangles, 0.15 * designTriangles);
+    EXPECT_EQ(opt.iterations(), iterations) << opt.message();
+    EXPECT_LT(h.back().seamMismatch, 1e-9);
+    expectCuttableOutlines(opt.pattern());
+    if (iterations == 40) {
+      EXPECT_LT(switched->distanceRms, 0.5 * h.front().distanceRms);
+      EXPECT_LT(h.back().distanceRms, switched->distanceRms);
+    }
+  }
+}
+
 // Sec. 5.3: the panels meshed again from their outlines (every 4 iterations here) and the optimization goes
 // on from there: no panel is lost, seams keep matching, the shape barely moves across the remesh and keeps
 // getting closer to the target afterwards.

@@ -85,6 +85,17 @@ namespace {
 double boundingDiagonal(const TriMesh& mesh) {
   return mesh.V.rows() ? (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm() : 0.0;
 }
+
+// remeshPattern at edge length h, and again at the edge length that gives about `triangles` (> 0) when h gave
+// more than 10 % off: the remesher's triangles at an edge length are 0.7-1.25 x the pattern builder's.
+RemeshedPattern remeshNear(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h,
+                           double triangles) {
+  RemeshedPattern out = remeshPattern(built, inflated, h);
+  const double ratio = triangles > 0 ? out.built.figures.triangles / triangles : 1;
+  if (std::abs(ratio - 1) > 0.1) out = remeshPattern(built, inflated, h * std::sqrt(ratio));
+  return out;
+}
+
 }  // namespace
 
 PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& built,
@@ -96,7 +107,18 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
   imls_ = std::make_unique<ImlsDistance>(target, options.imls);
   material_ = membraneMaterial(built.pattern.material, options.inflate);
   fineEdgeLength_ = built.figures.edgeLength;
-  setUp(built);
+  designTriangles_ = built.figures.triangles;
+  const OptimizeRemeshing& remeshing = options_.remeshing;
+  if (!sliding_ && remeshing.coarseFactor > 1 && built.pattern.inflated.size() == built.pattern.panels.size() &&
+      int(built.figures.triangles) >= remeshing.coarseMinTriangles) {
+    try {
+      const double f = remeshing.coarseFactor;
+      setUp(remeshNear(built, built.pattern.inflated, f * fineEdgeLength_, built.figures.triangles / (f * f)).built);
+      coarsePhase_ = true, flattened_ = built;
+    } catch (const Error&) {  // an outline the coarse edge length cannot mesh: no coarse phase
+    }
+  }
+  if (!coarsePhase_) setUp(built);
   timings_.setupMs = elapsedMs();
 }
 
@@ -166,14 +188,14 @@ bool PatternOptimizer::projectStart() {
 
 std::vector<Vertices> PatternOptimizer::panelInflated() const { return panelPositions(mesh_, x_); }
 
-bool PatternOptimizer::remesh(double h) {
+bool PatternOptimizer::remesh(double h, double triangles) {
   const double t0 = nowMs();
   BuiltPattern current = built_;
   current.pattern = pattern_;
   const std::vector<Vertices> inflated = panelInflated();
   RemeshedPattern remeshed;
   try {
-    remeshed = remeshPattern(current, inflated, h);
+    remeshed = remeshNear(current, inflated, h, triangles);
   } catch (const Error&) {
     return false;  // an outline that no longer bounds a simple polygon: go on with the old mesh
   }
@@ -194,6 +216,29 @@ bool PatternOptimizer::remesh(double h) {
     timings_.remeshMs += nowMs() - t0;
     return false;
   }
+  x_ = std::move(x);
+  E_ = settledEnergy(X_, x_);
+  variableGradient(X_, x_, g_);
+  ++timings_.remeshings;
+  timings_.remeshMs += nowMs() - t0;
+  record(0, newton, false);
+  history_.back().remeshed = true;
+  return true;
+}
+
+bool PatternOptimizer::leaveCoarsePhase() {
+  coarsePhase_ = false;
+  remeshedAt_ = iteration_, stalled_ = 0;
+  const BuiltPattern flattened = std::move(flattened_);
+  flattened_ = {};
+  if (remesh(fineEdgeLength_, designTriangles_)) return true;
+  // The optimized outlines do not mesh or settle at the design's edge length: the flattened panels again.
+  const double t0 = nowMs();
+  setUp(flattened);
+  if (options_.search.projectEveryStep) projectTrials_ = projectStart();
+  Vertices x;
+  int newton = 0;
+  if (!solveEquilibrium(X_, x_, x, &newton)) return false;
   x_ = std::move(x);
   E_ = settledEnergy(X_, x_);
   variableGradient(X_, x_, g_);
@@ -872,7 +917,15 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     if (options_.search.projectEveryStep) projectTrials_ = projectStart();
     Vertices x;
     int newton = 0;
-    if (!solveEquilibrium(X_, x_, x, &newton)) {
+    bool settled = solveEquilibrium(X_, x_, x, &newton);
+    if (!settled && coarsePhase_) {  // the coarse mesh alone may not settle: the design's mesh from the start
+      coarsePhase_ = false;
+      setUp(flattened_);
+      flattened_ = {};
+      if (options_.search.projectEveryStep) projectTrials_ = projectStart();
+      settled = solveEquilibrium(X_, x_, x, &newton);
+    }
+    if (!settled) {
       finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
       return state_;
     }
@@ -882,7 +935,16 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     record(0, newton, false);
   }
   for (int k = 0; k < maxIterations; ++k) {
-    if (const std::optional<StopReason> stop = stopReason()) {
+    std::optional<StopReason> stop = stopReason();
+    // Whatever ends the coarse phase, the run ends on the design's mesh: the limits are checked again there.
+    if (coarsePhase_ &&
+        ((stop && stop->state != OptimizeState::Failed) ||
+         iteration_ >= std::min(options_.remeshing.coarseIterations, options_.stopping.maxIterations / 2))) {
+      if (leaveCoarsePhase()) continue;
+      finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
+      break;
+    }
+    if (stop) {
       // Converged on this mesh while the panels are meshed anew as they go (sliding seams): a fresh mesh first,
       // whose discretization may lead off where this one stopped (three sliding gores at 400 elements stall on
       // their symmetric layout, a minimum of that mesh only: bench/README.md "Sliding seams").
@@ -911,6 +973,11 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
         continue;
       }
       if (S_.empty()) {  // not even a short steepest-descent step helps: a (numerical) minimum
+        if (coarsePhase_) {
+          if (leaveCoarsePhase()) continue;
+          finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
+          break;
+        }
         if (iteration_ == 0)
           finish(OptimizeState::Converged, "no change of the panels brings the inflated shape closer to the target");
         else

@@ -95,6 +95,14 @@ struct OptimizeSearch {
 struct OptimizeRemeshing {
   int every = 0;
   int maxRemeshings = 10;
+  // Held seams, at least coarseMinTriangles: a first phase on the panels meshed at coarseFactor x the design's
+  // edge length (<= 1: none), until a stopping rule of that mesh ends it or coarseIterations (at most half the
+  // iterations) are spent; then the outlines are meshed at the design's edge length and the run goes on there. A
+  // coarse iterate costs a sixth, so the shapes near the final one come sooner, and the fine phase starts off the
+  // folds the flattened panels' first steps meet (bench/README.md "The coarse first phase").
+  double coarseFactor = 2;
+  int coarseMinTriangles = 1500;
+  int coarseIterations = 30;
 };
 
 // Sliding seams (Sec. 6, "Seam Placement": a seam of small weight moves to where the shape fits best). When some
@@ -251,9 +259,12 @@ class PatternOptimizer {
   // Projects the current panels onto equal stitched edge lengths; false (nothing changed) when that folds a
   // rest triangle.
   bool projectStart();
-  // Meshes the panels again from their current outlines (options.remeshing.every) and solves the new
-  // equilibrium; false (the old mesh kept) when that fails.
-  bool remesh(double h);
+  // Meshes the panels again from their current outlines (options.remeshing.every) at edge length h, or near it
+  // at about `triangles` (> 0), and solves the new equilibrium; false (the old mesh kept) when that fails.
+  bool remesh(double h, double triangles = 0);
+  // Ends the coarse first phase (OptimizeRemeshing::coarseFactor): the outlines meshed at the design's edge
+  // length, else the flattened panels started again; false when neither settles.
+  bool leaveCoarsePhase();
   // Per panel, the current inflated position x of each panel vertex (what remeshPattern carries over).
   std::vector<Vertices> panelInflated() const;
   // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
@@ -361,6 +372,9 @@ class PatternOptimizer {
   Eigen::VectorXd adjointPattern_;
   Vertices adjointShape_;
   double fineEdgeLength_ = 0;   // the design's edge length [m]
+  int designTriangles_ = 0;     // and its triangles
+  bool coarsePhase_ = false;    // in the coarse first phase (OptimizeRemeshing::coarseFactor)
+  BuiltPattern flattened_;      // the flattened panels at the design's edge length, during the coarse phase
   bool projectTrials_ = false;  // options.search.projectEveryStep, unless projecting the flattened panels folds them
   double start_ = 0;            // steady-clock ms at construction
 };
