@@ -75,6 +75,34 @@ test('seams of weight 0 slide, and every iterate says so; the panels are meshed 
   assert.ok(Math.max(...remeshed.triangles) < remeshed.positions.length / 3, 'its triangles index its own vertices');
 });
 
+test('a design of 1,500 triangles and more starts on a coarse mesh, and its switch to the design\'s mesh streams that mesh', () => {
+  const handlers = createHandlers(api);
+  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
+  for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
+  const design = JSON.parse(read('../../web/public/gallery/sphere3.billow.json'));
+  const seams = design.seams.map(({ points, closed }) => ({ points, closed, weight: 1 }));
+  const iterates = [];
+  const run = handlers.optimizeDesign({ seams, scale: 0.25, triangles: 1600, maxIterations: 40 });
+  let step = run.next();
+  for (; !step.done; step = run.next()) if (step.value.stage === 'optimizing') iterates.push(step.value);
+  const first = iterates[0];
+  assert.ok(first.triangles.length / 3 < 0.4 * 1600, `the first mesh is coarse: ${first.triangles.length / 3} triangles`);
+  const switched = iterates.findIndex((it, i) => i > 0 && it.state && it.remeshings !== (iterates[i - 1].remeshings ?? 0));
+  assert.ok(switched > 0, 'the run switched to the design\'s mesh');
+  const fine = iterates[switched];
+  assert.ok(Math.abs(fine.triangles.length / 3 - 1600) < 0.15 * 1600, `the design's mesh: ${fine.triangles.length / 3} triangles`);
+  const vertices = Math.max(...fine.triangles) + 1;
+  for (const it of iterates.slice(switched)) {
+    assert.equal(it.positions.length / 3, vertices, `iteration ${it.iteration}: positions of the design's mesh`);
+    assert.equal(it.distances.length, vertices);
+  }
+  for (const it of iterates.slice(1, switched)) assert.equal(it.positions.length, first.positions.length, 'the coarse phase on its own mesh');
+  assert.ok(iterates.at(-1).distanceRms < iterates[1].distanceRms, 'closer than the flattened panels');
+  const optimized = JSON.parse(step.value.patternText);
+  const triangles = optimized.panels.reduce((n, panel) => n + panel.triangles.length, 0);
+  assert.ok(Math.abs(triangles - 1600) < 0.15 * 1600, `the optimized pattern has the design's triangles: ${triangles}`);
+});
+
 test('panels that cannot be made are refused with each problem and its place on the target, in its own units', () => {
   const handlers = createHandlers(api);
   const sphere = readObjText(read('../../web/public/examples/sphere.obj'));

@@ -922,6 +922,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       coarsePhase_ = false;
       setUp(flattened_);
       flattened_ = {};
+      ++timings_.remeshings;  // a new mesh, which the app fetches by this count
       if (options_.search.projectEveryStep) projectTrials_ = projectStart();
       settled = solveEquilibrium(X_, x_, x, &newton);
     }

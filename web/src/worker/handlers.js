@@ -122,24 +122,28 @@ export function createHandlers(api) {
       yield { stage: 'optimizing', iteration: 0, flattenedText, ...meshOf(), ...iterate() };
       // The flattened panels inflated (the first equilibrium, iteration 0 again): the first look at the balloon,
       // one solve after the panels instead of one optimizer iteration later.
+      // Panels meshed anew (the coarse first phase's end, sliding seams) make a new sewn mesh: its triangles go
+      // with the iterate.
+      let remeshings = 0;
+      const remeshed = () => {
+        if (status.remeshings === remeshings) return false;
+        remeshings = status.remeshings;
+        mesh = session.optimizedMesh();
+        surface = outerSurface(mesh.triangles, mesh.outer);
+        return true;
+      };
       let status = session.optimizeStep(0, STEP_MILLIS);
       if (status.state === 'failed') throw new SolverError('optimize.failed', status.message);
-      yield { stage: 'optimizing', ...status, ...iterate() };
-      let remeshings = 0;
+      const startMesh = remeshed() ? meshOf() : {}; // the design's mesh when its coarse one did not settle
+      yield { stage: 'optimizing', ...status, ...iterate(), ...startMesh };
       let lastPanels = performance.now();
       for (;;) {
         status = session.optimizeStep(1, STEP_MILLIS);
         if (status.state === 'failed') throw new SolverError('optimize.failed', status.message);
-        // Panels meshed anew (sliding seams) make a new sewn mesh: its triangles go with the iterate.
-        const remeshed = status.remeshings !== remeshings;
-        if (remeshed) {
-          remeshings = status.remeshings;
-          mesh = session.optimizedMesh();
-          surface = outerSurface(mesh.triangles, mesh.outer);
-        }
+        const newMesh = remeshed() ? meshOf() : {};
         const panels = performance.now() - lastPanels > PANELS_EVERY_MS ? { patternText: JSON.stringify(session.optimizedPattern()) } : {};
         if (panels.patternText) lastPanels = performance.now();
-        yield { stage: 'optimizing', ...status, ...iterate(), ...(remeshed ? meshOf() : {}), ...panels };
+        yield { stage: 'optimizing', ...status, ...iterate(), ...newMesh, ...panels };
         if (status.state !== 'running' || status.iteration >= maxIterations) break;
       }
       return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status };
