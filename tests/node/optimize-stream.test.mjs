@@ -10,11 +10,16 @@ import { createHandlers } from '../../web/src/worker/handlers.js';
 
 const api = await loadApi();
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
-
-test('each optimizer iterate streams its shape and its distance to the target, the optimizer\'s own figure', () => {
+// The worker's handlers with the sphere example as the target.
+const sphereSession = () => {
   const handlers = createHandlers(api);
   const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
   for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
+  return { handlers, sphere };
+};
+
+test('each optimizer iterate streams its shape and its distance to the target, the optimizer\'s own figure', () => {
+  const { handlers, sphere } = sphereSession();
   const design = JSON.parse(read('../../web/public/gallery/sphere3.billow.json'));
   const seams = design.seams.map(({ points, closed }) => ({ points, closed, weight: 1 }));
   const iterates = [];
@@ -56,9 +61,7 @@ test('each optimizer iterate streams its shape and its distance to the target, t
 });
 
 test('seams of weight 0 slide, and every iterate says so; the panels are meshed anew on the way', () => {
-  const handlers = createHandlers(api);
-  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
-  for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
+  const { handlers } = sphereSession();
   const design = JSON.parse(read('../../web/public/gallery/sphere-sliding.billow.json'));
   assert.ok(design.seams.every((s) => s.weight === 0), 'the gallery\'s sliding sphere has seams of weight 0');
   const seams = design.seams.map(({ points, closed, weight }) => ({ points, closed, weight }));
@@ -76,9 +79,7 @@ test('seams of weight 0 slide, and every iterate says so; the panels are meshed 
 });
 
 test('a design of 1,500 triangles and more starts on a coarse mesh, and its switch to the design\'s mesh streams that mesh', () => {
-  const handlers = createHandlers(api);
-  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
-  for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
+  const { handlers } = sphereSession();
   const design = JSON.parse(read('../../web/public/gallery/sphere3.billow.json'));
   const seams = design.seams.map(({ points, closed }) => ({ points, closed, weight: 1 }));
   const iterates = [];
@@ -104,9 +105,7 @@ test('a design of 1,500 triangles and more starts on a coarse mesh, and its swit
 });
 
 test('panels that cannot be made are refused with each problem and its place on the target, in its own units', () => {
-  const handlers = createHandlers(api);
-  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
-  for (const _ of handlers.setTarget({ positions: sphere.positions, indices: sphere.indices }));
+  const { handlers, sphere } = sphereSession();
   // No seam: the sphere stays one closed piece, which no panel can be.
   const seams = [];
   const run = handlers.optimizeDesign({ seams, scale: 0.25, triangles: 600, maxIterations: 5, up: '+y' });

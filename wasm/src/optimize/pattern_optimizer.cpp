@@ -107,7 +107,6 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
   imls_ = std::make_unique<ImlsDistance>(target, options.imls);
   material_ = membraneMaterial(built.pattern.material, options.inflate);
   fineEdgeLength_ = built.figures.edgeLength;
-  designTriangles_ = built.figures.triangles;
   const OptimizeRemeshing& remeshing = options_.remeshing;
   if (!sliding_ && remeshing.coarseFactor > 1 && built.pattern.inflated.size() == built.pattern.panels.size() &&
       int(built.figures.triangles) >= remeshing.coarseMinTriangles) {
@@ -216,29 +215,11 @@ bool PatternOptimizer::remesh(double h, double triangles) {
     timings_.remeshMs += nowMs() - t0;
     return false;
   }
-  x_ = std::move(x);
-  E_ = settledEnergy(X_, x_);
-  variableGradient(X_, x_, g_);
-  ++timings_.remeshings;
-  timings_.remeshMs += nowMs() - t0;
-  record(0, newton, false);
-  history_.back().remeshed = true;
+  takeNewMesh(std::move(x), newton, t0);
   return true;
 }
 
-bool PatternOptimizer::leaveCoarsePhase() {
-  coarsePhase_ = false;
-  remeshedAt_ = iteration_, stalled_ = 0;
-  const BuiltPattern flattened = std::move(flattened_);
-  flattened_ = {};
-  if (remesh(fineEdgeLength_, designTriangles_)) return true;
-  // The optimized outlines do not mesh or settle at the design's edge length: the flattened panels again.
-  const double t0 = nowMs();
-  setUp(flattened);
-  if (options_.search.projectEveryStep) projectTrials_ = projectStart();
-  Vertices x;
-  int newton = 0;
-  if (!solveEquilibrium(X_, x_, x, &newton)) return false;
+void PatternOptimizer::takeNewMesh(Vertices x, int newton, double t0) {
   x_ = std::move(x);
   E_ = settledEnergy(X_, x_);
   variableGradient(X_, x_, g_);
@@ -246,6 +227,32 @@ bool PatternOptimizer::leaveCoarsePhase() {
   timings_.remeshMs += nowMs() - t0;
   record(0, newton, false);
   history_.back().remeshed = true;
+}
+
+void PatternOptimizer::setUpFlattened() {
+  coarsePhase_ = false;
+  const BuiltPattern flattened = std::move(flattened_);
+  flattened_ = {};
+  setUp(flattened);
+  if (options_.search.projectEveryStep) projectTrials_ = projectStart();
+}
+
+bool PatternOptimizer::leaveCoarsePhase() {
+  remeshedAt_ = iteration_, stalled_ = 0;
+  if (remesh(fineEdgeLength_, flattened_.figures.triangles)) {
+    coarsePhase_ = false, flattened_ = {};
+    return true;
+  }
+  // The optimized outlines do not mesh or settle at the design's edge length: the flattened panels again.
+  const double t0 = nowMs();
+  setUpFlattened();
+  Vertices x;
+  int newton = 0;
+  if (!solveEquilibrium(X_, x_, x, &newton)) {
+    finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
+    return false;
+  }
+  takeNewMesh(std::move(x), newton, t0);
   return true;
 }
 
@@ -848,23 +855,15 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
       // snapped into another equilibrium) may raise the objective and the steps after it bring it down again:
       // only a new best counts, so an optimizer that keeps snapping between equilibria stops too. Not over a
       // remeshing (the objective of another discretization); a window may start with one.
-      double before = INFINITY, best = INFINITY;
+      // In the same pass, the last resettled branch: the best objective since it and the best before it.
+      double before = INFINITY, best = INFINITY, bestBefore = INFINITY, bestSince = INFINITY;
+      int resettledAt = -1;
       for (size_t j = history_.size(); j-- > 0;) {
         const OptimizeRecord& r = history_[j];
         if (!r.projected) {
           best = std::min(best, r.objective);
           if (r.iteration <= iteration_ - options_.stopping.windowIterations) before = std::min(before, r.objective);
         }
-        if (r.remeshed) break;
-      }
-      if (std::isfinite(before) && before - best < options_.stopping.windowDecrease * std::abs(E_))
-        return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
-      // A resettled branch that has not come below the best iterate before it within half a window will not:
-      // the ones that pay come back within a few iterations (the fish: 5 and 7), fb-spot's never did.
-      double bestBefore = INFINITY, bestSince = INFINITY;
-      int resettledAt = -1;
-      for (size_t j = history_.size(); j-- > 0;) {
-        const OptimizeRecord& r = history_[j];
         if (r.remeshed) break;
         if (r.projected) continue;
         if (resettledAt < 0 && r.resettled) {
@@ -875,6 +874,10 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
           bestSince = std::min(bestSince, r.objective);
         }
       }
+      if (std::isfinite(before) && before - best < options_.stopping.windowDecrease * std::abs(E_))
+        return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
+      // A resettled branch that has not come below the best iterate before it within half a window will not:
+      // the ones that pay come back within a few iterations (the fish: 5 and 7), fb-spot's never did.
       if (resettledAt >= 0 && iteration_ - resettledAt >= options_.stopping.windowIterations / 2 &&
           !(bestSince < bestBefore))
         return StopReason{OptimizeState::Converged, "the balloon keeps snapping away from its best shape"};
@@ -919,11 +922,8 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     int newton = 0;
     bool settled = solveEquilibrium(X_, x_, x, &newton);
     if (!settled && coarsePhase_) {  // the coarse mesh alone may not settle: the design's mesh from the start
-      coarsePhase_ = false;
-      setUp(flattened_);
-      flattened_ = {};
+      setUpFlattened();
       ++timings_.remeshings;  // a new mesh, which the app fetches by this count
-      if (options_.search.projectEveryStep) projectTrials_ = projectStart();
       settled = solveEquilibrium(X_, x_, x, &newton);
     }
     if (!settled) {
@@ -942,7 +942,6 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
         ((stop && stop->state != OptimizeState::Failed) ||
          iteration_ >= std::min(options_.remeshing.coarseIterations, options_.stopping.maxIterations / 2))) {
       if (leaveCoarsePhase()) continue;
-      finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
       break;
     }
     if (stop) {
@@ -976,7 +975,6 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       if (S_.empty()) {  // not even a short steepest-descent step helps: a (numerical) minimum
         if (coarsePhase_) {
           if (leaveCoarsePhase()) continue;
-          finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
           break;
         }
         if (iteration_ == 0)

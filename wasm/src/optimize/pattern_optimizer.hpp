@@ -262,8 +262,13 @@ class PatternOptimizer {
   // Meshes the panels again from their current outlines (options.remeshing.every) at edge length h, or near it
   // at about `triangles` (> 0), and solves the new equilibrium; false (the old mesh kept) when that fails.
   bool remesh(double h, double triangles = 0);
-  // Ends the coarse first phase (OptimizeRemeshing::coarseFactor): the outlines meshed at the design's edge
-  // length, else the flattened panels started again; false when neither settles.
+  // The new mesh's equilibrium x (newton iterations, the remeshing started at t0 ms) as the current iterate, recorded
+  // as a remeshing.
+  void takeNewMesh(Vertices x, int newton, double t0);
+  // Leaves the coarse first phase for the flattened panels at the design's edge length (setUp, projected).
+  void setUpFlattened();
+  // Ends the coarse first phase (OptimizeRemeshing::coarseFactor): the outlines meshed at the design's triangle
+  // count, else the flattened panels started again; false (the run failed) when neither settles.
   bool leaveCoarsePhase();
   // Per panel, the current inflated position x of each panel vertex (what remeshPattern carries over).
   std::vector<Vertices> panelInflated() const;
@@ -372,9 +377,8 @@ class PatternOptimizer {
   Eigen::VectorXd adjointPattern_;
   Vertices adjointShape_;
   double fineEdgeLength_ = 0;   // the design's edge length [m]
-  int designTriangles_ = 0;     // and its triangles
   bool coarsePhase_ = false;    // in the coarse first phase (OptimizeRemeshing::coarseFactor)
-  BuiltPattern flattened_;      // the flattened panels at the design's edge length, during the coarse phase
+  BuiltPattern flattened_;      // the flattened panels at the design's edge length (and count), in the coarse phase
   bool projectTrials_ = false;  // options.search.projectEveryStep, unless projecting the flattened panels folds them
   double start_ = 0;            // steady-clock ms at construction
 };
