@@ -31,15 +31,65 @@ function largestMove(a, b) {
   return worst;
 }
 
-// The largest distance from a vertex of a to the closest vertex of b.
-function farthest(a, b) {
-  let worst = 0;
-  for (let i = 0; i < a.length; i += 3) {
-    let closest = Infinity;
-    for (let j = 0; j < b.length; j += 3) closest = Math.min(closest, (a[i] - b[j]) ** 2 + (a[i + 1] - b[j + 1]) ** 2 + (a[i + 2] - b[j + 2]) ** 2);
-    worst = Math.max(worst, closest);
+// The squared distance from p to triangle (a, b, c) (points as [x, y, z]): the closest point by the region
+// of the triangle p projects to (vertex, edge or face).
+function triangleDistance2(p, a, b, c) {
+  const sub = (u, v) => [u[0] - v[0], u[1] - v[1], u[2] - v[2]];
+  const dot = (u, v) => u[0] * v[0] + u[1] * v[1] + u[2] * v[2];
+  const at = (o, u, s, v, t) => [o[0] + s * u[0] + t * v[0], o[1] + s * u[1] + t * v[1], o[2] + s * u[2] + t * v[2]];
+  const ab = sub(b, a), ac = sub(c, a), ap = sub(p, a);
+  const d1 = dot(ab, ap), d2 = dot(ac, ap);
+  let q;
+  if (d1 <= 0 && d2 <= 0) q = a;
+  else {
+    const bp = sub(p, b), d3 = dot(ab, bp), d4 = dot(ac, bp);
+    const cp = sub(p, c), d5 = dot(ab, cp), d6 = dot(ac, cp);
+    const vc = d1 * d4 - d3 * d2, vb = d5 * d2 - d1 * d6, va = d3 * d6 - d5 * d4;
+    if (d3 >= 0 && d4 <= d3) q = b;
+    else if (d6 >= 0 && d5 <= d6) q = c;
+    else if (vc <= 0 && d1 >= 0 && d3 <= 0) q = at(a, ab, d1 / (d1 - d3), ac, 0);
+    else if (vb <= 0 && d2 >= 0 && d6 <= 0) q = at(a, ab, 0, ac, d2 / (d2 - d6));
+    else if (va <= 0 && d4 - d3 >= 0 && d5 - d6 >= 0) q = at(b, sub(c, b), (d4 - d3) / (d4 - d3 + (d5 - d6)), ab, 0);
+    else {
+      const denominator = va + vb + vc;
+      q = at(a, ab, vb / denominator, ac, vc / denominator);
+    }
   }
-  return Math.sqrt(worst);
+  const d = sub(p, q);
+  return dot(d, d);
+}
+
+// Whether some vertex of the shape a lies farther than tol from the surface of the shape b (triangles tb):
+// triangles are binned by their bounding boxes into cells of size tol, so the 27 cells around a vertex hold
+// every triangle within tol of it.
+function fartherThan(a, b, tb, tol) {
+  const cells = new Map(), key = (i, j, k) => `${i},${j},${k}`, cell = (x) => Math.floor(x / tol);
+  const corner = (t) => [b[3 * t], b[3 * t + 1], b[3 * t + 2]];
+  for (let f = 0; f < tb.length; f += 3) {
+    const lo = [0, 1, 2].map((d) => cell(Math.min(b[3 * tb[f] + d], b[3 * tb[f + 1] + d], b[3 * tb[f + 2] + d])));
+    const hi = [0, 1, 2].map((d) => cell(Math.max(b[3 * tb[f] + d], b[3 * tb[f + 1] + d], b[3 * tb[f + 2] + d])));
+    for (let i = lo[0]; i <= hi[0]; i++)
+      for (let j = lo[1]; j <= hi[1]; j++)
+        for (let k = lo[2]; k <= hi[2]; k++) {
+          const list = cells.get(key(i, j, k));
+          if (list) list.push(f);
+          else cells.set(key(i, j, k), [f]);
+        }
+  }
+  for (let v = 0; v < a.length; v += 3) {
+    const p = [a[v], a[v + 1], a[v + 2]], [ci, cj, ck] = p.map(cell);
+    let near = false;
+    for (let i = ci - 1; i <= ci + 1 && !near; i++)
+      for (let j = cj - 1; j <= cj + 1 && !near; j++)
+        for (let k = ck - 1; k <= ck + 1 && !near; k++)
+          for (const f of cells.get(key(i, j, k)) ?? [])
+            if (triangleDistance2(p, corner(tb[f]), corner(tb[f + 1]), corner(tb[f + 2])) <= tol * tol) {
+              near = true;
+              break;
+            }
+    if (!near) return true;
+  }
+  return false;
 }
 
 const api = await loadApi();
@@ -66,17 +116,17 @@ function run(entry) {
     connections: design.connections ?? [],
   });
   const shapes = [];
-  let tStart = 0, last = null, first = null, patternSeconds = 0, endMesh = null;
+  let tStart = 0, last = null, first = null, patternSeconds = 0, meshTriangles = null;
   for (let step = job.next(); !step.done; step = job.next()) {
     const v = step.value;
     if (v.stage !== 'optimizing') continue;
     if (v.iteration === 0 && !first) (first = v), (patternSeconds = (performance.now() - t0) / 1000), (tStart = performance.now());
     last = v;
-    if (v.triangles) endMesh = v.triangles; // the mesh the run ends on (a coarse first phase streams its own)
+    if (v.triangles) meshTriangles = v.triangles; // from this iterate on (a coarse first phase streams its own mesh)
     // Preview time counts from the start of the job (the target, the panels and the first inflation), as
     // the designer waits for it. The first iterate is the built panels before any inflation (the target's own
     // surface): no preview; the second is the first inflation (iteration 0 again).
-    if (v !== first) shapes.push({ iteration: v.iteration ?? 0, seconds: (performance.now() - t0) / 1000, positions: v.positions, remeshings: v.remeshings ?? 0 });
+    if (v !== first) shapes.push({ iteration: v.iteration ?? 0, seconds: (performance.now() - t0) / 1000, positions: v.positions, triangles: meshTriangles, remeshings: v.remeshings ?? 0 });
     if (trace) {
       const scalars = Object.entries(v).filter(([, x]) => typeof x === 'number' || typeof x === 'string' || typeof x === 'boolean');
       console.error(`${entry.name} ${((performance.now() - t0) / 1000).toFixed(2)} s ${scalars.filter(([k]) => k !== 'stage').map(([k, x]) => `${k} ${typeof x === 'number' ? +x.toPrecision(4) : x}`).join(' ')}`);
@@ -85,17 +135,19 @@ function run(entry) {
   }
   const seconds = (performance.now() - tStart) / 1000;
   // Preview quality: the first iterate within 5 % of the model size (the target's diagonal) of the final one: the
-  // largest vertex move on the same mesh, else (before a remeshing) as shapeDistance in design_bench.cpp.
-  const final = last.positions, diagonal = first.distance.diagonal;
+  // largest vertex move on the same mesh, else (before a remeshing) every vertex of either within that of the other's
+  // surface, as shapeDistance in design_bench.cpp.
+  const final = last.positions, diagonal = first.distance.diagonal, tol = 0.05 * diagonal;
   const finalRemeshings = last.remeshings ?? 0;
   let preview = null;
   for (const s of shapes) {
-    const worst = s.remeshings === finalRemeshings ? largestMove(s.positions, final) : Math.max(farthest(s.positions, final), farthest(final, s.positions));
-    if (worst < 0.05 * diagonal) { preview = s; break; }
+    const close = s.remeshings === finalRemeshings ? largestMove(s.positions, final) < tol
+      : !fartherThan(s.positions, final, meshTriangles, tol) && !fartherThan(final, s.positions, s.triangles, tol);
+    if (close) { preview = s; break; }
   }
   const pattern = JSON.parse(first.flattenedText);
   return {
-    design: entry.name, class: entry.class, elements: endMesh.length / 3, panels: pattern.panels.length,
+    design: entry.name, class: entry.class, elements: meshTriangles.length / 3, panels: pattern.panels.length,
     internalPanels: pattern.panels.filter((p) => p.internal).length, remeshingSteps: last.remeshings ?? 0,
     iterations: last.iteration ?? 0, patternSeconds, previewIteration: preview?.iteration ?? -1, previewSeconds: preview?.seconds ?? 0,
     seconds, state: last.state ?? 'time limit', message: last.message ?? '',

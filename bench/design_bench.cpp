@@ -37,6 +37,7 @@
 #include "optimize/stopping_rule.hpp"
 #include "pattern/build_pattern.hpp"
 #include "pattern/design_scene.hpp"
+#include "seams/surface_point.hpp"
 
 namespace {
 
@@ -72,18 +73,22 @@ struct BenchOptions {
   int perturb = 0;     // > 0: the seed of a rounding-level move of the flattened panels
 };
 
-// How far the shape a is from the final shape b: the largest vertex move when they share the mesh; else
-// (an iterate before a remeshing, whatever its vertex count) the larger of the two one-sided largest distances
-// to the other's closest vertex.
-double shapeDistance(const Vertices& a, const Vertices& b, bool sameMesh) {
-  if (sameMesh) return (a - b).rowwise().norm().maxCoeff();
-  const auto oneSided = [](const Vertices& p, const Vertices& q) {
+// How far the shape a (triangles Fa) is from the final shape b (triangles Fb): the largest distance from a vertex
+// of either to the other's surface. Vertex to vertex would count a coarse-phase iterate's spacing as a difference
+// of shape (half a coarse edge, 1-3 % of the model size at 3,000 elements).
+double shapeDistance(const Vertices& a, const Triangles& Fa, const Vertices& b, const Triangles& Fb) {
+  const auto oneSided = [](const Vertices& p, const Vertices& q, const Triangles& Fq) {
+    const TriMesh surface{q, Fq};
+    const SurfaceProjector projector(surface);
     double worst = 0;
-    for (int i = 0; i < p.rows(); ++i)
-      worst = std::max(worst, (q.rowwise() - p.row(i)).rowwise().squaredNorm().minCoeff());
-    return std::sqrt(worst);
+    for (int i = 0; i < p.rows(); ++i) {
+      double d = 0;
+      projector.project(p.row(i).transpose(), &d);
+      worst = std::max(worst, d);
+    }
+    return worst;
   };
-  return std::max(oneSided(a, b), oneSided(b, a));
+  return std::max(oneSided(a, b, Fb), oneSided(b, a, Fa));
 }
 
 // Total |turning| of each panel's outline [degrees] (its first boundaryVertices rows, in order): about 360 for
@@ -141,6 +146,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.remeshing.coarseFactor = v;
   else if (name == "coarseIterations")
     o.remeshing.coarseIterations = int(v);
+  else if (name == "coarseWindow")
+    o.remeshing.coarseWindow = int(v);
   else if (name == "coarseMinTriangles")
     o.remeshing.coarseMinTriangles = int(v);
   else if (name == "tolerance")
@@ -220,7 +227,16 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
                    h.stepLength, h.equilibriumIterations, h.ms);
     }
   };
+  // The mesh of each remeshing (the coarse first phase's, then the design's; sliding seams remesh often), for the
+  // preview's distance between shapes on different meshes.
+  std::vector<Triangles> meshes{opt.mesh().triangles};
+  const auto keepMesh = [&] {
+    int remeshings = 0;
+    for (const auto& h : opt.history()) remeshings += h.remeshed;
+    if (remeshings >= int(meshes.size())) meshes.resize(remeshings + 1, opt.mesh().triangles);
+  };
   while (opt.step(1) == OptimizeState::Running) {
+    keepMesh();
     trace();
     if (secondsSince(t1) > bo.maxSeconds) break;
   }
@@ -233,12 +249,15 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   const double D = opt.objective().modelSize();
   int previewIteration = -1;
   double previewSeconds = 0;
-  int remeshingsAfter = 0;  // remeshings after the shape looked at, so before the final one
-  for (const auto& h : history) remeshingsAfter += h.remeshed;
+  keepMesh();
+  int meshOfShape = 0;  // the remeshings up to the shape looked at
   for (size_t k = 0; k < opt.shapes().size() && previewIteration < 0; ++k) {
-    remeshingsAfter -= history[k].remeshed;
-    if (shapeDistance(opt.shapes()[k], opt.inflated(), remeshingsAfter == 0) < 0.05 * D)
-      previewIteration = history[k].iteration, previewSeconds = history[k].ms / 1000;
+    meshOfShape += history[k].remeshed;
+    const Vertices& shape = opt.shapes()[k];
+    const double moved = meshOfShape + 1 == int(meshes.size())
+                             ? (shape - opt.inflated()).rowwise().norm().maxCoeff()
+                             : shapeDistance(shape, meshes[meshOfShape], opt.inflated(), meshes.back());
+    if (moved < 0.05 * D) previewIteration = history[k].iteration, previewSeconds = history[k].ms / 1000;
   }
   int newton = 0;
   for (const auto& h : history) newton += h.equilibriumIterations;
