@@ -34,6 +34,8 @@ constexpr int kResettleNewton = 100;
 // kTrialNewtonFloor) before it counts as one that does not settle: in wasm a fb-blub trial took 1,000 (10 s)
 // where accepted ones take 5-30.
 constexpr int kTrialNewtonFactor = 5, kTrialNewtonFloor = 50;
+// The largest move of the predicted equilibrium, in multiples of the panels' largest move, that is trusted.
+constexpr double kPredictionReach = 1000;
 // A Gauss-Newton step that lowered E by less than this (relative) is followed by an L-BFGS step.
 constexpr double kGaussNewtonStall = 1e-4;
 }  // namespace
@@ -418,6 +420,14 @@ Vertices PatternOptimizer::predictEquilibrium(const Eigen::VectorXd& X) const {
   addRestJacobianProduct(mesh_, pattern_, X_, x_, X - X_, material_, b);
   addRodJacobianProduct(*rodsAt(X_, &dcdX), x_, dcdX, X - X_, b);
   if (!stiffness_->solveAgain(b, dx)) return x_;
+  // A K near singular (a floppy internal panel about to snap) makes the first-order response explode: the fish's
+  // moved 3e5-3e8 times as far as its panels, and those trials did not settle in 100 Newton iterations where the
+  // same steps from x settle in 9; where it holds, the response is 1-25 times the panels' move.
+  double panelMove = 0, shapeMove = 0;
+  for (int v = 0; v < X.size() / 2; ++v)
+    panelMove = std::max(panelMove, (X.segment<2>(2 * v) - X_.segment<2>(2 * v)).norm());
+  for (int v = 0; v < x_.rows(); ++v) shapeMove = std::max(shapeMove, dx.segment<3>(3 * v).norm());
+  if (!(shapeMove <= kPredictionReach * panelMove)) return x_;
   Vertices x = x_;
   for (int v = 0; v < x.rows(); ++v) x.row(v) -= dx.segment<3>(3 * v).transpose();
   return x;
@@ -850,7 +860,9 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
     if (windowFull &&
         (x_ - windowX_).rowwise().norm().maxCoeff() < options_.stopping.windowMove * objective_->modelSize())
       return StopReason{OptimizeState::Converged, "the shape stopped changing"};
-    if (options_.stopping.windowDecrease > 0 && iteration_ >= options_.stopping.windowIterations) {
+    const int window = coarsePhase_ ? std::min(options_.remeshing.coarseWindow, options_.stopping.windowIterations)
+                                    : options_.stopping.windowIterations;
+    if (options_.stopping.windowDecrease > 0 && iteration_ >= window) {
       // How much the best objective fell over the last windowIterations iterations. A resettling (the balloon
       // snapped into another equilibrium) may raise the objective and the steps after it bring it down again:
       // only a new best counts, so an optimizer that keeps snapping between equilibria stops too. Not over a
@@ -862,7 +874,7 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
         const OptimizeRecord& r = history_[j];
         if (!r.projected) {
           best = std::min(best, r.objective);
-          if (r.iteration <= iteration_ - options_.stopping.windowIterations) before = std::min(before, r.objective);
+          if (r.iteration <= iteration_ - window) before = std::min(before, r.objective);
         }
         if (r.remeshed) break;
         if (r.projected) continue;
@@ -878,8 +890,7 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
         return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
       // A resettled branch that has not come below the best iterate before it within half a window will not:
       // the ones that pay come back within a few iterations (the fish: 5 and 7), fb-spot's never did.
-      if (resettledAt >= 0 && iteration_ - resettledAt >= options_.stopping.windowIterations / 2 &&
-          !(bestSince < bestBefore))
+      if (resettledAt >= 0 && iteration_ - resettledAt >= window / 2 && !(bestSince < bestBefore))
         return StopReason{OptimizeState::Converged, "the balloon keeps snapping away from its best shape"};
     }
   }

@@ -96,13 +96,15 @@ struct OptimizeRemeshing {
   int every = 0;
   int maxRemeshings = 10;
   // Held seams, at least coarseMinTriangles: a first phase on the panels meshed at coarseFactor x the design's
-  // edge length (<= 1: none), until a stopping rule of that mesh ends it or coarseIterations (at most half the
-  // iterations) are spent; then the outlines are meshed at the design's triangle count and the run goes on there. A
-  // coarse iterate costs a sixth, so the shapes near the final one come sooner, and the fine phase starts off the
-  // folds the flattened panels' first steps meet (bench/README.md "The coarse first phase").
+  // edge length (<= 1: none), until a stopping rule of that mesh ends it (the objective window over coarseWindow
+  // iterations, not the fine mesh's 20) or coarseIterations (at most half the iterations) are spent; then the outlines
+  // are meshed at the design's triangle count and the run goes on there. A coarse iterate costs a sixth, so the shapes
+  // near the final one come sooner, and the fine phase starts off the folds the flattened panels' first steps meet
+  // (bench/README.md "The coarse first phase").
   double coarseFactor = 2;
   int coarseMinTriangles = 1500;
   int coarseIterations = 30;
+  int coarseWindow = 10;
 };
 
 // Sliding seams (Sec. 6, "Seam Placement": a seam of small weight moves to where the shape fits best). When some
