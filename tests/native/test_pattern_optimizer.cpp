@@ -284,16 +284,12 @@ TEST(PatternOptimizer, CoarsePhaseEndsOnItsOwnWindow) {
       size_t(std::find_if(h.begin(), h.end(), [](const OptimizeRecord& r) { return r.remeshed; }) - h.begin());
   const int window = o.remeshing.coarseWindow, last = h[k - 1].iteration;
   ASSERT_LT(window, o.stopping.windowIterations);
-  // The window rule as the coarse phase saw it after iteration `at`.
+  // The window rule as the coarse phase read it after iteration `at`.
   const auto windowEnds = [&](int at) {
-    double before = INFINITY, best = INFINITY, E = 0;
-    for (size_t j = 0; j < k && h[j].iteration <= at; ++j) {
-      E = h[j].objective;
-      if (h[j].projected) continue;
-      best = std::min(best, h[j].objective);
-      if (h[j].iteration <= at - window) before = std::min(before, h[j].objective);
-    }
-    return std::isfinite(before) && before - best < o.stopping.windowDecrease * std::abs(E);
+    std::vector<OptimizeRecord> seen;
+    for (size_t j = 0; j < k && h[j].iteration <= at; ++j) seen.push_back(h[j]);
+    return readObjectiveWindow(seen, at, window, o.stopping.windowDecrease, seen.back().objective) !=
+           ObjectiveWindow::GoesOn;
   };
   std::printf("[figures] fb-spot 3k, app rule: coarse phase %d iterations, %.2f s, rms %.3f %% -> %.3f %%\n", last,
               h[k - 1].ms / 1000, 100 * h.front().distanceRms, 100 * h[k - 1].distanceRms);

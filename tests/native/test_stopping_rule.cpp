@@ -25,3 +25,73 @@ TEST(StoppingRule, AppStoppingRuleSetsOnlyWhenToStop) {
   EXPECT_EQ(OptimizeOptions{}.stopping.windowIterations, 0)
       << "the CLI's and the bench's runs go on to full convergence";
 }
+
+namespace {
+// A history of objectives, one record per iteration from 0.
+std::vector<OptimizeRecord> objectiveHistory(const std::vector<double>& objectives) {
+  std::vector<OptimizeRecord> h;
+  for (size_t i = 0; i < objectives.size(); ++i) {
+    OptimizeRecord r;
+    r.iteration = int(i), r.objective = objectives[i];
+    h.push_back(r);
+  }
+  return h;
+}
+}  // namespace
+
+// The objective window: only a decrease of the best objective over the last `window` iterations keeps the run
+// going, never measured across a remeshing, and the final seam-length projection counts as no iterate.
+TEST(StoppingRule, ObjectiveWindowCountsNewBestsOfThisMesh) {
+  std::vector<double> E(31);
+  for (int i = 0; i <= 30; ++i) E[i] = 1.0 - 0.002 * i;  // 2 % over 10 iterations
+  const auto last = [](const std::vector<OptimizeRecord>& h) { return h.back().objective; };
+  std::vector<OptimizeRecord> h = objectiveHistory(E);
+  EXPECT_EQ(readObjectiveWindow(h, 30, 10, 1e-2, last(h)), ObjectiveWindow::GoesOn);
+  EXPECT_EQ(readObjectiveWindow(h, 30, 10, 3e-2, last(h)), ObjectiveWindow::NoDecrease);
+  EXPECT_EQ(readObjectiveWindow(h, 9, 10, 3e-2, last(h)), ObjectiveWindow::GoesOn) << "the window is not full";
+
+  // Snapping back and forth: the objective alternates, the best does not move.
+  for (int i = 15; i <= 30; ++i) h[i].objective = (i % 2 ? 0.90 : 0.80);
+  EXPECT_EQ(readObjectiveWindow(h, 30, 10, 1e-2, 0.90), ObjectiveWindow::NoDecrease);
+
+  // A remeshing five iterations ago: the window has not yet a start on this mesh.
+  h = objectiveHistory(std::vector<double>(31, 0.5));
+  h[26].remeshed = true;
+  EXPECT_EQ(readObjectiveWindow(h, 30, 10, 1e-2, 0.5), ObjectiveWindow::GoesOn);
+  h[26].remeshed = false, h[15].remeshed = true;
+  EXPECT_EQ(readObjectiveWindow(h, 30, 10, 1e-2, 0.5), ObjectiveWindow::NoDecrease);
+
+  // The final projection's record (lower than any iterate) is not a new best.
+  h = objectiveHistory(std::vector<double>(31, 0.5));
+  OptimizeRecord projected = h.back();
+  projected.objective = 0.1, projected.projected = true;
+  h.push_back(projected);
+  EXPECT_EQ(readObjectiveWindow(h, 30, 10, 1e-2, 0.5), ObjectiveWindow::NoDecrease);
+}
+
+// A resettled branch (the balloon snapped into another equilibrium, its objective higher) is given half a window
+// to come below the best iterate before it; the fish's branches that paid came back in 5 and 7 iterations.
+TEST(StoppingRule, AResettledBranchHasHalfAWindowToComeBack) {
+  // Falling fast to 0.70 at iteration 20, then snapped up to 0.80 and falling 1 % of E per iteration.
+  std::vector<double> E(21);
+  for (int i = 0; i <= 20; ++i) E[i] = 1.0 - 0.015 * i;
+  std::vector<OptimizeRecord> h = objectiveHistory(E);
+  OptimizeRecord snapped = h.back();
+  snapped.objective = 0.80, snapped.resettled = true;
+  h.push_back(snapped);
+  for (int i = 21; i <= 26; ++i) {
+    OptimizeRecord r;
+    r.iteration = i, r.objective = 0.80 - 0.008 * (i - 20);
+    h.push_back(r);
+  }
+  // Iteration 24, 4 since the resettling: still its time (the best before it, 0.70, not yet reached: 0.768).
+  std::vector<OptimizeRecord> upTo24(h.begin(), h.begin() + 26);
+  ASSERT_EQ(upTo24.back().iteration, 24);
+  EXPECT_EQ(readObjectiveWindow(upTo24, 24, 20, 1e-3, upTo24.back().objective), ObjectiveWindow::GoesOn);
+  // Iteration 26, half a window (10) gone? Not yet: 6. At a window of 12 it is.
+  EXPECT_EQ(readObjectiveWindow(h, 26, 20, 1e-3, h.back().objective), ObjectiveWindow::GoesOn);
+  EXPECT_EQ(readObjectiveWindow(h, 26, 12, 1e-3, h.back().objective), ObjectiveWindow::SnapsAway);
+  // A branch that comes below the best before it goes on.
+  h.back().objective = 0.69;
+  EXPECT_EQ(readObjectiveWindow(h, 26, 12, 1e-3, h.back().objective), ObjectiveWindow::GoesOn);
+}

@@ -9,6 +9,7 @@
 #include "optimize/rest_derivatives.hpp"
 #include "optimize/rigid_align.hpp"
 #include "optimize/seam_projection.hpp"
+#include "optimize/stopping_rule.hpp"
 #include "pattern/remesh_pattern.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "seams/surface_distance.hpp"
@@ -862,36 +863,15 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
       return StopReason{OptimizeState::Converged, "the shape stopped changing"};
     const int window = coarsePhase_ ? std::min(options_.remeshing.coarseWindow, options_.stopping.windowIterations)
                                     : options_.stopping.windowIterations;
-    if (options_.stopping.windowDecrease > 0 && iteration_ >= window) {
-      // How much the best objective fell over the last windowIterations iterations. A resettling (the balloon
-      // snapped into another equilibrium) may raise the objective and the steps after it bring it down again:
-      // only a new best counts, so an optimizer that keeps snapping between equilibria stops too. Not over a
-      // remeshing (the objective of another discretization); a window may start with one.
-      // In the same pass, the last resettled branch: the best objective since it and the best before it.
-      double before = INFINITY, best = INFINITY, bestBefore = INFINITY, bestSince = INFINITY;
-      int resettledAt = -1;
-      for (size_t j = history_.size(); j-- > 0;) {
-        const OptimizeRecord& r = history_[j];
-        if (!r.projected) {
-          best = std::min(best, r.objective);
-          if (r.iteration <= iteration_ - window) before = std::min(before, r.objective);
-        }
-        if (r.remeshed) break;
-        if (r.projected) continue;
-        if (resettledAt < 0 && r.resettled) {
-          resettledAt = r.iteration;
-        } else if (resettledAt >= 0) {
-          bestBefore = std::min(bestBefore, r.objective);
-        } else {
-          bestSince = std::min(bestSince, r.objective);
-        }
+    if (options_.stopping.windowDecrease > 0) {
+      switch (readObjectiveWindow(history_, iteration_, window, options_.stopping.windowDecrease, E_)) {
+        case ObjectiveWindow::NoDecrease:
+          return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
+        case ObjectiveWindow::SnapsAway:
+          return StopReason{OptimizeState::Converged, "the balloon keeps snapping away from its best shape"};
+        case ObjectiveWindow::GoesOn:
+          break;
       }
-      if (std::isfinite(before) && before - best < options_.stopping.windowDecrease * std::abs(E_))
-        return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
-      // A resettled branch that has not come below the best iterate before it within half a window will not:
-      // the ones that pay come back within a few iterations (the fish: 5 and 7), fb-spot's never did.
-      if (resettledAt >= 0 && iteration_ - resettledAt >= window / 2 && !(bestSince < bestBefore))
-        return StopReason{OptimizeState::Converged, "the balloon keeps snapping away from its best shape"};
     }
   }
   if (options_.stopping.distanceWindow > 0 && iteration_ >= options_.stopping.distanceWindow) {

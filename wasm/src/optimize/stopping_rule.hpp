@@ -11,4 +11,13 @@ namespace billow {
 // seams slide: OptimizeSliding::iterationFactor, as they keep visibly improving the shape for longer).
 OptimizeOptions appStoppingRule(OptimizeOptions options = {});
 
+// The objective window (OptimizeStopping::windowDecrease), read from a run's history after `iteration`, E the
+// current objective, over the last `window` iterations of the current mesh:
+// - NoDecrease: the best objective fell by less than decrease x |E| (only new bests count, so snapping back and
+//   forth between two equilibria ends the run too; never across a remeshing, the objective of another mesh);
+// - SnapsAway: the last resettled branch has not come below the best iterate before it within half a window.
+enum class ObjectiveWindow { GoesOn, NoDecrease, SnapsAway };
+ObjectiveWindow readObjectiveWindow(const std::vector<OptimizeRecord>& history, int iteration, int window,
+                                    double decrease, double E);
+
 }  // namespace billow
