@@ -59,30 +59,34 @@ function triangleDistance2(p, a, b, c) {
   return dot(d, d);
 }
 
-// Whether some vertex of the shape a lies farther than tol from the surface of the shape b (triangles tb):
-// triangles are binned by their bounding boxes into cells of size tol, so the 27 cells around a vertex hold
-// every triangle within tol of it.
-function fartherThan(a, b, tb, tol) {
-  const cells = new Map(), key = (i, j, k) => `${i},${j},${k}`, cell = (x) => Math.floor(x / tol);
-  const corner = (t) => [b[3 * t], b[3 * t + 1], b[3 * t + 2]];
+// The triangles tb of the shape b binned by their bounding boxes into cells of size tol, so the 27 cells around a
+// point hold every triangle within tol of it.
+function surfaceCells(b, tb, tol) {
+  const cells = new Map(), cell = (x) => Math.floor(x / tol);
   for (let f = 0; f < tb.length; f += 3) {
     const lo = [0, 1, 2].map((d) => cell(Math.min(b[3 * tb[f] + d], b[3 * tb[f + 1] + d], b[3 * tb[f + 2] + d])));
     const hi = [0, 1, 2].map((d) => cell(Math.max(b[3 * tb[f] + d], b[3 * tb[f + 1] + d], b[3 * tb[f + 2] + d])));
     for (let i = lo[0]; i <= hi[0]; i++)
       for (let j = lo[1]; j <= hi[1]; j++)
         for (let k = lo[2]; k <= hi[2]; k++) {
-          const list = cells.get(key(i, j, k));
+          const list = cells.get(`${i},${j},${k}`);
           if (list) list.push(f);
-          else cells.set(key(i, j, k), [f]);
+          else cells.set(`${i},${j},${k}`, [f]);
         }
   }
+  return { b, tb, tol, cell, cells };
+}
+
+// Whether some vertex of the shape a lies farther than tol from the surface binned in `surface` (surfaceCells).
+function fartherThan(a, { b, tb, tol, cell, cells }) {
+  const corner = (t) => [b[3 * t], b[3 * t + 1], b[3 * t + 2]];
   for (let v = 0; v < a.length; v += 3) {
     const p = [a[v], a[v + 1], a[v + 2]], [ci, cj, ck] = p.map(cell);
     let near = false;
     for (let i = ci - 1; i <= ci + 1 && !near; i++)
       for (let j = cj - 1; j <= cj + 1 && !near; j++)
         for (let k = ck - 1; k <= ck + 1 && !near; k++)
-          for (const f of cells.get(key(i, j, k)) ?? [])
+          for (const f of cells.get(`${i},${j},${k}`) ?? [])
             if (triangleDistance2(p, corner(tb[f]), corner(tb[f + 1]), corner(tb[f + 2])) <= tol * tol) {
               near = true;
               break;
@@ -139,10 +143,11 @@ function run(entry) {
   // surface, as shapeDistance in design_bench.cpp.
   const final = last.positions, diagonal = first.distance.diagonal, tol = 0.05 * diagonal;
   const finalRemeshings = last.remeshings ?? 0;
+  const finalSurface = surfaceCells(final, meshTriangles, tol);
   let preview = null;
   for (const s of shapes) {
     const close = s.remeshings === finalRemeshings ? largestMove(s.positions, final) < tol
-      : !fartherThan(s.positions, final, meshTriangles, tol) && !fartherThan(final, s.positions, s.triangles, tol);
+      : !fartherThan(s.positions, finalSurface) && !fartherThan(final, surfaceCells(s.positions, s.triangles, tol));
     if (close) { preview = s; break; }
   }
   const pattern = JSON.parse(first.flattenedText);

@@ -73,22 +73,17 @@ struct BenchOptions {
   int perturb = 0;     // > 0: the seed of a rounding-level move of the flattened panels
 };
 
-// How far the shape a (triangles Fa) is from the final shape b (triangles Fb): the largest distance from a vertex
-// of either to the other's surface. Vertex to vertex would count a coarse-phase iterate's spacing as a difference
-// of shape (half a coarse edge, 1-3 % of the model size at 3,000 elements).
-double shapeDistance(const Vertices& a, const Triangles& Fa, const Vertices& b, const Triangles& Fb) {
-  const auto oneSided = [](const Vertices& p, const Vertices& q, const Triangles& Fq) {
-    const TriMesh surface{q, Fq};
-    const SurfaceProjector projector(surface);
-    double worst = 0;
-    for (int i = 0; i < p.rows(); ++i) {
-      double d = 0;
-      projector.project(p.row(i).transpose(), &d);
-      worst = std::max(worst, d);
-    }
-    return worst;
-  };
-  return std::max(oneSided(a, b, Fb), oneSided(b, a, Fa));
+// The largest distance from a vertex of p to the surface `to` (its projector). Two shapes on different meshes
+// are compared both ways, vertex to surface: vertex to vertex would count a coarse-phase iterate's spacing as a
+// difference of shape (half a coarse edge, 1-3 % of the model size at 3,000 elements).
+double farthestFrom(const Vertices& p, const SurfaceProjector& to) {
+  double worst = 0;
+  for (int i = 0; i < p.rows(); ++i) {
+    double d = 0;
+    to.project(p.row(i).transpose(), &d);
+    worst = std::max(worst, d);
+  }
+  return worst;
 }
 
 // Total |turning| of each panel's outline [degrees] (its first boundaryVertices rows, in order): about 360 for
@@ -250,13 +245,19 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   int previewIteration = -1;
   double previewSeconds = 0;
   keepMesh();
+  const TriMesh finalSurface{opt.inflated(), meshes.back()};
+  const SurfaceProjector toFinal(finalSurface);
   int meshOfShape = 0;  // the remeshings up to the shape looked at
   for (size_t k = 0; k < opt.shapes().size() && previewIteration < 0; ++k) {
     meshOfShape += history[k].remeshed;
     const Vertices& shape = opt.shapes()[k];
-    const double moved = meshOfShape + 1 == int(meshes.size())
-                             ? (shape - opt.inflated()).rowwise().norm().maxCoeff()
-                             : shapeDistance(shape, meshes[meshOfShape], opt.inflated(), meshes.back());
+    double moved = 0;
+    if (meshOfShape + 1 == int(meshes.size())) {
+      moved = (shape - opt.inflated()).rowwise().norm().maxCoeff();
+    } else {
+      const TriMesh surface{shape, meshes[meshOfShape]};
+      moved = std::max(farthestFrom(shape, toFinal), farthestFrom(opt.inflated(), SurfaceProjector(surface)));
+    }
     if (moved < 0.05 * D) previewIteration = history[k].iteration, previewSeconds = history[k].ms / 1000;
   }
   int newton = 0;
