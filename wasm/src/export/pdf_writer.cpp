@@ -7,7 +7,7 @@
 namespace billow {
 namespace {
 
-std::string num(double v) {
+std::string pdfNumber(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.3f", v);
   std::string s = buf;
@@ -19,17 +19,19 @@ std::string num(double v) {
 std::string rgb(const char* hex, const char* op) {
   unsigned r = 0, g = 0, b = 0;
   std::sscanf(hex + 1, "%2x%2x%2x", &r, &g, &b);
-  return num(r / 255.0) + " " + num(g / 255.0) + " " + num(b / 255.0) + " " + op + "\n";
+  return pdfNumber(r / 255.0) + " " + pdfNumber(g / 255.0) + " " + pdfNumber(b / 255.0) + " " + op + "\n";
 }
 std::string rgb(Layer layer, const char* op) { return rgb(layerColor(layer), op); }
 
 std::string text(double x, double y, double size, const std::string& s) {
-  return "BT /F1 " + num(size) + " Tf " + num(x) + " " + num(y) + " Td (" + escapePdfText(s) + ") Tj ET\n";
+  return "BT /F1 " + pdfNumber(size) + " Tf " + pdfNumber(x) + " " + pdfNumber(y) + " Td (" + escapePdfText(s) +
+         ") Tj ET\n";
 }
 
 std::string moves(const Polygon2& points) {
   std::string s;
-  for (size_t i = 0; i < points.size(); ++i) s += num(points[i].x()) + " " + num(points[i].y()) + (i ? " l\n" : " m\n");
+  for (size_t i = 0; i < points.size(); ++i)
+    s += pdfNumber(points[i].x()) + " " + pdfNumber(points[i].y()) + (i ? " l\n" : " m\n");
   return s;
 }
 
@@ -67,7 +69,7 @@ std::string drawingOps(const Drawing& d, const Box2& view, bool labels) {
 
 std::string circle(const Vec2& c, double r) {
   const double k = 0.5523 * r;  // cubic Bezier quarter-circle handle
-  auto p = [](double x, double y) { return num(x) + " " + num(y) + " "; };
+  auto p = [](double x, double y) { return pdfNumber(x) + " " + pdfNumber(y) + " "; };
   return p(c.x() + r, c.y()) + "m\n" + p(c.x() + r, c.y() + k) + p(c.x() + k, c.y() + r) + p(c.x(), c.y() + r) + "c\n" +
          p(c.x() - k, c.y() + r) + p(c.x() - r, c.y() + k) + p(c.x() - r, c.y()) + "c\n" + p(c.x() - r, c.y() - k) +
          p(c.x() - k, c.y() - r) + p(c.x(), c.y() - r) + "c\n" + p(c.x() + k, c.y() - r) + p(c.x() + r, c.y() - k) +
@@ -78,7 +80,7 @@ std::string circle(const Vec2& c, double r) {
 std::string footer(const PdfOptions& o, const std::string& label, int page, int pages) {
   const double m = o.margin * kPointsPerMm, side = kCheckSquareMm * kPointsPerMm;
   std::string s = "q 0 0 0 RG 0 0 0 rg 0.5 w [] 0 d\n% scale-check-square\n";
-  s += num(m) + " " + num(m) + " " + num(side) + " " + num(side) + " re S\n";
+  s += pdfNumber(m) + " " + pdfNumber(m) + " " + pdfNumber(side) + " " + pdfNumber(side) + " re S\n";
   const bool inches = o.units == DisplayUnits::Inches;
   s += text(m + 4, m + side / 2, 8, "50 mm");
   s += text(m + 4, m + side / 2 - 10, 6, inches ? "= 1.97 in" : "check square");
@@ -138,13 +140,16 @@ std::string writePdf(const Drawing& d, const PdfOptions& o) {
     const double gridW = (t.columns - 1) * t.stepX + t.contentWidth;
     const double scale = std::min(t.contentWidth / gridW, availH / t.height);
     const double ox = m + (t.contentWidth - scale * gridW) / 2, oy = m + kPdfFooterMm;
-    std::string s = "q " + num(k * scale) + " 0 0 " + num(k * scale) + " " + num(k * ox) + " " + num(k * oy) + " cm\n";
+    std::string s = "q " + pdfNumber(k * scale) + " 0 0 " + pdfNumber(k * scale) + " " + pdfNumber(k * ox) + " " +
+                    pdfNumber(k * oy) + " cm\n";
     Box2 all;
     all.add({-1e9, -1e9}), all.add({1e9, 1e9});
-    s += "0.6 0.6 0.6 RG " + num(0.5 / scale) + " w 0 0 " + num(d.width) + " " + num(d.length) + " re S\n";
+    s += "0.6 0.6 0.6 RG " + pdfNumber(0.5 / scale) + " w 0 0 " + pdfNumber(d.width) + " " + pdfNumber(d.length) +
+         " re S\n";
     auto tileRect = [&](int r, int c) {
       const Box2 b = t.tileBox(r, c);
-      return num(b.lo.x()) + " " + num(b.lo.y()) + " " + num(t.contentWidth) + " " + num(t.contentHeight) + " re";
+      return pdfNumber(b.lo.x()) + " " + pdfNumber(b.lo.y()) + " " + pdfNumber(t.contentWidth) + " " +
+             pdfNumber(t.contentHeight) + " re";
     };
     s += "0.92 0.92 0.92 rg\n";  // skipped tiles shaded under the drawing, which may reach into their strips
     for (int r = 0; r < t.rows; ++r)
@@ -153,7 +158,7 @@ std::string writePdf(const Drawing& d, const PdfOptions& o) {
     s += drawingOps(d, all, true);
     // The tile grid with each tile's row and column, so a maker knows where each page goes; skipped tiles
     // are grey and crossed out, drawn first so that the printed tiles' edges stay green where they overlap.
-    s += num(0.3 / scale) + " w [] 0 d\n";
+    s += pdfNumber(0.3 / scale) + " w [] 0 d\n";
     for (bool printed : {false, true})
       for (int r = 0; r < t.rows; ++r)
         for (int c = 0; c < t.columns; ++c) {
@@ -162,8 +167,9 @@ std::string writePdf(const Drawing& d, const PdfOptions& o) {
           s += printed ? "0.2 0.6 0.2 RG 0.2 0.6 0.2 rg\n" : "0.6 0.6 0.6 RG 0.6 0.6 0.6 rg\n";
           s += tileRect(r, c) + " S\n";
           if (!printed)
-            s += num(b.lo.x()) + " " + num(b.lo.y()) + " m " + num(b.hi.x()) + " " + num(b.hi.y()) + " l " +
-                 num(b.lo.x()) + " " + num(b.hi.y()) + " m " + num(b.hi.x()) + " " + num(b.lo.y()) + " l S\n";
+            s += pdfNumber(b.lo.x()) + " " + pdfNumber(b.lo.y()) + " m " + pdfNumber(b.hi.x()) + " " +
+                 pdfNumber(b.hi.y()) + " l " + pdfNumber(b.lo.x()) + " " + pdfNumber(b.hi.y()) + " m " +
+                 pdfNumber(b.hi.x()) + " " + pdfNumber(b.lo.y()) + " l S\n";
           const std::string lab = std::to_string(r + 1) + "," + std::to_string(c + 1);
           const double size = std::min(0.15 * t.contentWidth, 4 / scale);
           s += text(b.lo.x() + 0.5 * t.contentWidth - pdfTextWidth(lab, size) / 2, b.lo.y() + 0.5 * t.contentHeight,
@@ -183,9 +189,10 @@ std::string writePdf(const Drawing& d, const PdfOptions& o) {
       if (!t.isPrinted(r, c)) continue;
       const Box2 view = t.tileBox(r, c);
       const double x0 = view.lo.x(), y0 = view.lo.y();
-      std::string s = "q " + num(k * m) + " " + num(k * (m + kPdfFooterMm)) + " " + num(k * t.contentWidth) + " " +
-                      num(k * t.contentHeight) + " re W n\n";
-      s += num(k) + " 0 0 " + num(k) + " " + num(k * (m - x0)) + " " + num(k * (m + kPdfFooterMm - y0)) + " cm\n";
+      std::string s = "q " + pdfNumber(k * m) + " " + pdfNumber(k * (m + kPdfFooterMm)) + " " +
+                      pdfNumber(k * t.contentWidth) + " " + pdfNumber(k * t.contentHeight) + " re W n\n";
+      s += pdfNumber(k) + " 0 0 " + pdfNumber(k) + " " + pdfNumber(k * (m - x0)) + " " +
+           pdfNumber(k * (m + kPdfFooterMm - y0)) + " cm\n";
       s += drawingOps(d, view, true);
       // Alignment crosshairs in the middle of the overlap strips; each appears on every tile that shares it.
       s += "0 0 0 RG 0.2 w [] 0 d\n";
@@ -194,12 +201,14 @@ std::string writePdf(const Drawing& d, const PdfOptions& o) {
           const Vec2 p(i * t.stepX + overlap / 2, t.height - j * t.stepY - overlap / 2);
           if (p.x() < x0 - 6 || p.x() > x0 + t.contentWidth + 6 || p.y() < y0 - 6 || p.y() > y0 + t.contentHeight + 6)
             continue;
-          s += num(p.x() - 6) + " " + num(p.y()) + " m " + num(p.x() + 6) + " " + num(p.y()) + " l S\n";
-          s += num(p.x()) + " " + num(p.y() - 6) + " m " + num(p.x()) + " " + num(p.y() + 6) + " l S\n";
+          s += pdfNumber(p.x() - 6) + " " + pdfNumber(p.y()) + " m " + pdfNumber(p.x() + 6) + " " + pdfNumber(p.y()) +
+               " l S\n";
+          s += pdfNumber(p.x()) + " " + pdfNumber(p.y() - 6) + " m " + pdfNumber(p.x()) + " " + pdfNumber(p.y() + 6) +
+               " l S\n";
           s += circle(p, 3);
         }
-      s += "0.6 0.6 0.6 RG 0.2 w [1 1] 0 d " + num(x0) + " " + num(y0) + " " + num(t.contentWidth) + " " +
-           num(t.contentHeight) + " re S\nQ\n";
+      s += "0.6 0.6 0.6 RG 0.2 w [1 1] 0 d " + pdfNumber(x0) + " " + pdfNumber(y0) + " " + pdfNumber(t.contentWidth) +
+           " " + pdfNumber(t.contentHeight) + " re S\nQ\n";
       const std::string label = "row " + std::to_string(r + 1) + ", column " + std::to_string(c + 1);
       streams.push_back(s + footer(o, label, int(streams.size()) + 1, pages));
       labels.push_back(label);
@@ -221,7 +230,7 @@ std::string writePdf(const Drawing& d, const PdfOptions& o) {
   object("<< /Type /Pages /Kids [" + kids + "] /Count " + std::to_string(pages) + " >>");
   object("<< /Type /Font /Subtype /Type1 /BaseFont /Helvetica /Encoding /WinAnsiEncoding >>");
   object("<< /Title (" + escapePdfText(o.title) + ") /Producer (Billow) >>");
-  const std::string box = "[0 0 " + num(t.pageWidth * k) + " " + num(t.pageHeight * k) + "]";
+  const std::string box = "[0 0 " + pdfNumber(t.pageWidth * k) + " " + pdfNumber(t.pageHeight * k) + "]";
   for (int i = 0; i < pages; ++i) {
     object("<< /Type /Page /Parent 2 0 R /MediaBox " + box + " /Resources << /Font << /F1 3 0 R >> >> /Contents " +
            std::to_string(6 + 2 * i) + " 0 R >>");

@@ -1,15 +1,13 @@
 // Small 2D polygon helpers shared by the fabrication outputs (outlines, allowance, nesting, writers).
 // A polygon is a closed loop of points (the last point is not repeated); counterclockwise = positive area.
 #pragma once
-#include <Eigen/Dense>
 #include <vector>
+
+#include "util/vec2.hpp"
 
 namespace billow {
 
-using Vec2 = Eigen::Vector2d;
 using Polygon2 = std::vector<Vec2>;  // #n points, closed implicitly (edge n-1 -> 0)
-
-inline double cross2(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 double signedArea(const Polygon2& p);  // > 0 for counterclockwise
 double perimeter(const Polygon2& p);

@@ -6,7 +6,7 @@
 namespace billow {
 namespace {
 
-std::string num(double v) {
+std::string svgNumber(double v) {
   char buf[32];
   std::snprintf(buf, sizeof buf, "%.4f", v);  // 0.1 um: lengths round-trip far below 0.01 mm
   std::string s = buf;
@@ -45,12 +45,13 @@ std::string escapeXml(const std::string& text) {
 
 std::string writeSvg(const Drawing& d, const std::string& title) {
   const double W = d.width, L = d.length;
-  auto X = [](double x) { return num(x); };
-  auto Y = [L](double y) { return num(L - y); };
+  auto X = [](double x) { return svgNumber(x); };
+  auto Y = [L](double y) { return svgNumber(L - y); };
   std::string s;
   s += "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
   s += "<svg xmlns=\"http://www.w3.org/2000/svg\" xmlns:inkscape=\"http://www.inkscape.org/namespaces/inkscape\" ";
-  s += "width=\"" + num(W) + "mm\" height=\"" + num(L) + "mm\" viewBox=\"0 0 " + num(W) + " " + num(L) + "\">\n";
+  s += "width=\"" + svgNumber(W) + "mm\" height=\"" + svgNumber(L) + "mm\" viewBox=\"0 0 " + svgNumber(W) + " " +
+       svgNumber(L) + "\">\n";
   s += "<title>" + escapeXml(title) + "</title>\n";
   // A path's d attribute: "M x y x y ..." and " Z" when closed.
   const auto pathData = [&](const Polygon2& points, bool closed) {
@@ -68,7 +69,7 @@ std::string writeSvg(const Drawing& d, const std::string& title) {
       s += " fill=\"" + color + "\" font-family=\"Helvetica, Arial, sans-serif\" text-anchor=\"middle\">\n";
       for (const DrawnText& t : d.texts)
         if (t.layer == layer)
-          s += "<text x=\"" + X(t.at.x()) + "\" y=\"" + Y(t.at.y()) + "\" font-size=\"" + num(t.height) +
+          s += "<text x=\"" + X(t.at.x()) + "\" y=\"" + Y(t.at.y()) + "\" font-size=\"" + svgNumber(t.height) +
                "\" data-panel=\"" + std::to_string(t.panel) + "\">" + escapeXml(t.text) + "</text>\n";
     } else if (layer == Layer::Seal) {
       // The band tinted between the cut line and the sealing line (even-odd fill), then the sealing line.

@@ -6,13 +6,12 @@
 #include <cmath>
 #include <vector>
 
+#include "util/vec2.hpp"
+
 namespace billow {
 namespace {
 
 using Mat2 = Eigen::Matrix2d;
-using Vec2 = Eigen::Vector2d;
-
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Direction angle alpha(v) = atan2(v_y, v_x): gradient perp(v) / |v|^2 and its Hessian.
 Vec2 directionGrad(const Vec2& v) { return Vec2(-v.y(), v.x()) / v.squaredNorm(); }
@@ -82,7 +81,7 @@ Eigen::VectorXd polygonAngles(const Points2& Q) {
   for (int j = 0; j < n; ++j) {
     const Vec2 a = (Q.row(j) - Q.row((j + n - 1) % n)).transpose();
     const Vec2 b = (Q.row((j + 1) % n) - Q.row(j)).transpose();
-    angles[j] = M_PI - std::atan2(cross(a, b), a.dot(b));
+    angles[j] = M_PI - std::atan2(cross2(a, b), a.dot(b));
   }
   return angles;
 }

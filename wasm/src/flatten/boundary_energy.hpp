@@ -8,10 +8,9 @@
 #include <Eigen/SparseCore>
 
 #include "flatten/segment_boundary.hpp"
+#include "util/vec2.hpp"
 
 namespace billow {
-
-using Points2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;  // #points by 2
 
 // Interior angle at each vertex of a closed polygon, in [0, 2 pi): pi minus the signed turning angle,
 // so a CCW convex polygon has angles below pi and sum (n - 2) pi.

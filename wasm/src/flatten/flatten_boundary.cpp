@@ -12,24 +12,15 @@
 #include <numeric>
 #include <vector>
 
+#include "util/vec2.hpp"
+
 namespace billow {
 namespace {
 
-using Vec2 = Eigen::Vector2d;
-
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
-double signedArea(const Points2& Q) {
-  double a = 0;
-  for (int j = 0, n = static_cast<int>(Q.rows()); j < n; ++j)
-    a += cross(Q.row(j).transpose(), Q.row((j + 1) % n).transpose());
-  return 0.5 * a;
-}
-
 // Closed segments p0p1 and q0q1 share a point (touching counts).
 bool segmentsMeet(const Vec2& p0, const Vec2& p1, const Vec2& q0, const Vec2& q1) {
-  const double d1 = cross(p1 - p0, q0 - p0), d2 = cross(p1 - p0, q1 - p0);
-  const double d3 = cross(q1 - q0, p0 - q0), d4 = cross(q1 - q0, p1 - q0);
+  const double d1 = cross2(p1 - p0, q0 - p0), d2 = cross2(p1 - p0, q1 - p0);
+  const double d3 = cross2(q1 - q0, p0 - q0), d4 = cross2(q1 - q0, p1 - q0);
   if (((d1 > 0 && d2 < 0) || (d1 < 0 && d2 > 0)) && ((d3 > 0 && d4 < 0) || (d3 < 0 && d4 > 0))) return true;
   auto onSegment = [](const Vec2& a, const Vec2& b, const Vec2& p) {
     return p.x() >= std::min(a.x(), b.x()) && p.x() <= std::max(a.x(), b.x()) && p.y() >= std::min(a.y(), b.y()) &&
@@ -75,7 +66,7 @@ bool isSimpleCcwPolygon(const Points2& Q) {
   for (int i = 0; i < n; ++i) {
     // Adjacent edges only meet at their shared vertex, unless the polygon folds back on itself there.
     const Vec2 a = P(i + 1) - P(i), b = P(i + 2) - P(i + 1);
-    if (cross(a, b) == 0 && a.dot(b) < 0) return false;
+    if (cross2(a, b) == 0 && a.dot(b) < 0) return false;
     for (int k = i + 2; k < n; ++k) {
       if (i == 0 && k == n - 1) continue;
       const Vec2 p0 = P(i), p1 = P(i + 1), q0 = P(k), q1 = P(k + 1);

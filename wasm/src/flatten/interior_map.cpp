@@ -10,16 +10,15 @@
 #include <cmath>
 #include <limits>
 
+#include "util/vec2.hpp"
+
 namespace billow {
 namespace {
 
-using Vec2 = Eigen::Vector2d;
 using Triplet = Eigen::Triplet<double>;
 
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
-
 double signedArea2(const Points2& uv, int a, int b, int c) {
-  return cross((uv.row(b) - uv.row(a)).transpose(), (uv.row(c) - uv.row(a)).transpose());
+  return cross2((uv.row(b) - uv.row(a)).transpose(), (uv.row(c) - uv.row(a)).transpose());
 }
 
 // Symmetric edge weights w_ij (#V by #V): 1 per edge, or (cot alpha + cot beta) / 2 measured in 3D.
@@ -47,7 +46,7 @@ Eigen::SparseMatrix<double> edgeWeights(const TriMesh& m, LaplacianWeights weigh
 }
 
 // Untangling after Freitag and Plassmann: the position p of a vertex that maximizes the smallest signed area
-// of its triangles, a small linear program in (p, t): max t s.t. cross(b - a, p - a) >= t for every link
+// of its triangles, a small linear program in (p, t): max t s.t. cross2(b - a, p - a) >= t for every link
 // edge (a, b). For an interior vertex the link is closed, so t is bounded and the optimum is a vertex where
 // three constraints are active: try every triple.
 bool maxMinAreaPosition(const std::vector<std::pair<int, int>>& link, const Points2& uv, Vec2& best, double& bestT) {

@@ -12,7 +12,7 @@ namespace billow {
 namespace {
 
 using Key = std::int64_t;
-Key edgeKey(int i, int j, int n) { return static_cast<Key>(i) * n + j; }
+Key directedEdgeKey(int i, int j, int n) { return static_cast<Key>(i) * n + j; }
 
 [[noreturn]] void notDisk(const std::string& why) {
   throw Error("flatten.not-disk", "this segment is not a disk: " + why + "; add seams so that it can be unrolled flat");
@@ -37,12 +37,12 @@ void checkIndicesAndUse(const TriMesh& m) {
 
 // Sorted directed edges; a repeated one means an edge shared by more than two triangles or two
 // neighbours that disagree on which side is outside.
-std::vector<Key> directedEdges(const TriMesh& m) {
+std::vector<Key> sortedDirectedEdges(const TriMesh& m) {
   const int n = m.numVertices();
   std::vector<Key> e;
   e.reserve(3 * m.numTriangles());
   for (int t = 0; t < m.numTriangles(); ++t)
-    for (int c = 0; c < 3; ++c) e.push_back(edgeKey(m.F(t, c), m.F(t, (c + 1) % 3), n));
+    for (int c = 0; c < 3; ++c) e.push_back(directedEdgeKey(m.F(t, c), m.F(t, (c + 1) % 3), n));
   std::sort(e.begin(), e.end());
   if (std::adjacent_find(e.begin(), e.end()) != e.end())
     throw Error("flatten.non-manifold",
@@ -56,12 +56,12 @@ std::vector<Key> directedEdges(const TriMesh& m) {
 std::vector<std::vector<int>> findBoundaryLoops(const TriMesh& mesh) {
   checkIndicesAndUse(mesh);
   const int n = mesh.numVertices();
-  const std::vector<Key> edges = directedEdges(mesh);
+  const std::vector<Key> edges = sortedDirectedEdges(mesh);
   // A boundary half-edge i->j has no twin j->i; next[i] = j walks the boundary with the surface on the left.
   std::vector<int> next(n, -1);
   for (Key k : edges) {
     const int i = static_cast<int>(k / n), j = static_cast<int>(k % n);
-    if (std::binary_search(edges.begin(), edges.end(), edgeKey(j, i, n))) continue;
+    if (std::binary_search(edges.begin(), edges.end(), directedEdgeKey(j, i, n))) continue;
     if (next[i] >= 0)
       throw Error("flatten.non-manifold", "this segment is pinched: two of its borders touch at a single point");
     next[i] = j;

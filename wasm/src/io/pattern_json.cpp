@@ -10,27 +10,27 @@ namespace {
 
 using nlohmann::json;
 
-[[noreturn]] void bad(const std::string& what) { throw Error("pattern.bad-value", what); }
+[[noreturn]] void badPatternValue(const std::string& what) { throw Error("pattern.bad-value", what); }
 
 double positiveNumber(const json& obj, const char* key, const std::string& where, bool required = true,
                       double fallback = 0) {
   if (!obj.contains(key)) {
-    if (required) bad(where + " has no \"" + key + "\".");
+    if (required) badPatternValue(where + " has no \"" + key + "\".");
     return fallback;
   }
   const json& v = obj.at(key);
   if (!v.is_number() || !std::isfinite(v.get<double>()) || v.get<double>() <= 0)
-    bad(where + ": \"" + key + "\" must be a positive number.");
+    badPatternValue(where + ": \"" + key + "\" must be a positive number.");
   return v.get<double>();
 }
 
 const json& arrayField(const json& obj, const char* key, const std::string& where) {
-  if (!obj.contains(key) || !obj.at(key).is_array()) bad(where + " needs a \"" + key + "\" list.");
+  if (!obj.contains(key) || !obj.at(key).is_array()) badPatternValue(where + " needs a \"" + key + "\" list.");
   return obj.at(key);
 }
 
 double number(const json& v, const std::string& where) {
-  if (!v.is_number()) bad(where + " must contain numbers only.");
+  if (!v.is_number()) badPatternValue(where + " must contain numbers only.");
   return v.get<double>();
 }
 
@@ -47,7 +47,7 @@ Matrix readRows(const json& list, const std::string& where, double scale) {
   for (size_t r = 0; r < list.size(); ++r) {
     const json& row = list[r];
     if (!row.is_array() || row.size() != Cols)
-      bad(where + ": every entry must be a list of " + std::to_string(Cols) + " numbers.");
+      badPatternValue(where + ": every entry must be a list of " + std::to_string(Cols) + " numbers.");
     for (int c = 0; c < Cols; ++c) {
       if constexpr (std::is_same_v<typename Matrix::Scalar, int>)
         m(r, c) = index(row[c], where);
@@ -60,14 +60,14 @@ Matrix readRows(const json& list, const std::string& where, double scale) {
 
 Panel readPanel(const json& j, int i, double scale, long long& triangleBudget) {
   const std::string where = "panel " + std::to_string(i);
-  if (!j.is_object()) bad(where + " must be an object.");
+  if (!j.is_object()) badPatternValue(where + " must be an object.");
   Panel p;
   if (j.contains("name")) {
-    if (!j["name"].is_string()) bad(where + ": \"name\" must be text.");
+    if (!j["name"].is_string()) badPatternValue(where + ": \"name\" must be text.");
     p.name = j["name"].get<std::string>();
   }
   if (j.contains("internal")) {
-    if (!j["internal"].is_boolean()) bad(where + ": \"internal\" must be true or false.");
+    if (!j["internal"].is_boolean()) badPatternValue(where + ": \"internal\" must be true or false.");
     p.internal = j["internal"].get<bool>();
   }
   const json& tris = arrayField(j, "triangles", where);
@@ -109,14 +109,14 @@ Pattern readPatternJson(std::string_view text, std::vector<PatternWarning>* warn
     else if (u == "mm")
       scale = 0.001;
     else
-      bad("\"units\" must be \"m\", \"cm\" or \"mm\".");
+      badPatternValue("\"units\" must be \"m\", \"cm\" or \"mm\".");
   }
   Pattern p;
   p.pressure = positiveNumber(j, "pressure", "The pattern");
-  if (!j.contains("material") || !j["material"].is_object()) bad("The pattern needs a \"material\".");
+  if (!j.contains("material") || !j["material"].is_object()) badPatternValue("The pattern needs a \"material\".");
   const json& mat = j["material"];
   if (mat.contains("name")) {
-    if (!mat["name"].is_string()) bad("The material's \"name\" must be text.");
+    if (!mat["name"].is_string()) badPatternValue("The material's \"name\" must be text.");
     p.material.name = mat["name"].get<std::string>();
   }
   p.material.thickness = positiveNumber(mat, "thickness", "The material");
@@ -136,10 +136,10 @@ Pattern readPatternJson(std::string_view text, std::vector<PatternWarning>* warn
   }
   if (j.contains("inflated")) {
     const json& inf = arrayField(j, "inflated", "The pattern");
-    if (inf.size() != panels.size()) bad("\"inflated\" needs one list of 3D positions per panel.");
+    if (inf.size() != panels.size()) badPatternValue("\"inflated\" needs one list of 3D positions per panel.");
     for (size_t i = 0; i < inf.size(); ++i) {
       if (!inf[i].is_array() || inf[i].size() != size_t(p.panels[i].vertices.rows()))
-        bad("\"inflated\" for panel " + std::to_string(i) + " needs one 3D position per panel vertex.");
+        badPatternValue("\"inflated\" for panel " + std::to_string(i) + " needs one 3D position per panel vertex.");
       p.inflated.push_back(readRows<3, Vertices>(inf[i], "inflated", scale));
     }
   }

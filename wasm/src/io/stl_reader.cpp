@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "util/error.hpp"
+#include "util/text.hpp"
 
 namespace billow {
 
@@ -14,8 +15,6 @@ namespace {
 
 constexpr size_t kHeaderBytes = 84;
 constexpr size_t kTriangleBytes = 50;
-
-std::string plural(std::uint64_t n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
 void checkTriangleLimit(std::uint64_t triangles, const MeshReadOptions& options) {
   if (triangles > static_cast<std::uint64_t>(options.maxTriangles))

@@ -7,7 +7,7 @@
 namespace billow {
 
 using Vertices = Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor>;  // V  #V by 3
-using Triangles = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;    // F  #F by 3, 0-based, CCW seen from outside
+using Triangles = Eigen::Matrix<int, Eigen::Dynamic, 3, Eigen::RowMajor>;  // F  #F by 3, 0-based, CCW seen from outside
 
 struct TriMesh {
   Vertices V;
@@ -20,6 +20,11 @@ struct TriMesh {
 inline std::uint64_t edgeKey(int a, int b) {
   const auto lo = static_cast<std::uint32_t>(std::min(a, b)), hi = static_cast<std::uint32_t>(std::max(a, b));
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
+}
+
+inline double triangleArea(const TriMesh& m, int f) {
+  const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+  return 0.5 * (b - a).cross(c - a).norm();
 }
 
 }  // namespace billow

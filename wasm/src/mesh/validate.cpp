@@ -12,6 +12,7 @@
 #include <set>
 
 #include "mesh/location.hpp"
+#include "util/text.hpp"
 
 namespace billow {
 
@@ -30,12 +31,8 @@ struct DisjointSets {
 struct HalfEdge {
   uint64_t key;  // undirected edge (min, max)
   int face;
-  int local;     // edge `local` runs from corner local to corner (local + 1) % 3
+  int local;  // edge `local` runs from corner local to corner (local + 1) % 3
 };
-
-std::string plural(int n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
 
 class Validator {
  public:
@@ -88,9 +85,7 @@ class Validator {
   Eigen::Vector3d centroid(int f) const {
     return (m_.V.row(m_.F(f, 0)) + m_.V.row(m_.F(f, 1)) + m_.V.row(m_.F(f, 2))).transpose() / 3.0;
   }
-  std::string where(const Eigen::Vector3d& p) const {
-    return describeLocation(p, r_.stats.bboxMin, r_.stats.bboxMax);
-  }
+  std::string where(const Eigen::Vector3d& p) const { return describeLocation(p, r_.stats.bboxMin, r_.stats.bboxMax); }
 
   void add(const std::string& code, const std::string& severity, const std::string& message, int count,
            const Eigen::Vector3d* at = nullptr) {
@@ -115,8 +110,8 @@ class Validator {
         if (m_.F(f, c) < 0 || m_.F(f, c) >= nV) ++badIndex;
     if (badIndex > 0) {
       add("mesh.bad-index", "error",
-          "The file refers to vertices that do not exist (" + plural(badIndex, "bad index", "bad indices") +
-              " among " + std::to_string(nV) + " vertices). The file is damaged; export it again.",
+          "The file refers to vertices that do not exist (" + plural(badIndex, "bad index", "bad indices") + " among " +
+              std::to_string(nV) + " vertices). The file is damaged; export it again.",
           badIndex);
       return false;
     }
@@ -188,9 +183,8 @@ class Validator {
         const int a = m_.F(f, e), b = m_.F(f, (e + 1) % 3);
         if (a != b) half_.push_back({edgeKey(a, b), f, e});
       }
-    std::sort(half_.begin(), half_.end(), [](const HalfEdge& x, const HalfEdge& y) {
-      return x.key != y.key ? x.key < y.key : x.face < y.face;
-    });
+    std::sort(half_.begin(), half_.end(),
+              [](const HalfEdge& x, const HalfEdge& y) { return x.key != y.key ? x.key < y.key : x.face < y.face; });
   }
 
   // Visits each group of half-edges with the same undirected edge: [begin, end).
@@ -378,8 +372,8 @@ class Validator {
     r_.modified = true;
     const Eigen::Vector3d p = centroid(toFlip.front());
     add("mesh.reoriented", "notice",
-        plural(static_cast<int>(toFlip.size()), "triangle faced", "triangles faced") +
-            " the wrong way (the first " + where(p) + "); Billow turned them around.",
+        plural(static_cast<int>(toFlip.size()), "triangle faced", "triangles faced") + " the wrong way (the first " +
+            where(p) + "); Billow turned them around.",
         static_cast<int>(toFlip.size()), &p);
   }
 

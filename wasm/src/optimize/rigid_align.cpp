@@ -3,18 +3,14 @@
 #include <Eigen/Dense>
 #include <cmath>
 
+#include "util/skew.hpp"
+
 namespace billow {
 
 namespace {
 
 using Vector6d = Eigen::Matrix<double, 6, 1>;
 using Matrix6d = Eigen::Matrix<double, 6, 6>;
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d S;
-  S << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return S;
-}
 
 // E_target + E_cover + E_seam at x (as PatternObjective::shapeEnergy), and its Gauss-Newton normal equations in
 // (rotation vector, translation) about `center`: one pass over the IMLS distances serves both, since each accepted

@@ -1,7 +1,6 @@
 #include "pattern/build_pattern.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <numeric>
@@ -10,6 +9,7 @@
 #include "pattern/panel_stages.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "simulate/sewn_pattern.hpp"
+#include "util/clock.hpp"
 #include "util/error.hpp"
 #include "util/union_find.hpp"
 
@@ -33,9 +33,6 @@ double patternEdgeLength(double panelArea, const PatternBuildOptions& options) {
 }
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
 
 void addProblem(BuiltPattern& out, const Segmentation& seg, int s, const std::string& code, const std::string& severity,
                 const std::string& message) {

@@ -1,17 +1,11 @@
 #include "pattern/design_scene.hpp"
 
-#include <chrono>
-
 #include "io/mesh_file.hpp"
 #include "mesh/validate.hpp"
+#include "util/clock.hpp"
 #include "util/error.hpp"
 
 namespace billow {
-
-namespace {
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-}  // namespace
 
 std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const std::string& designPath,
                                                    const std::vector<std::string>& exampleDirs) {

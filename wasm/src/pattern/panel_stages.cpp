@@ -34,7 +34,7 @@ SurfacePoint targetPointOf(const TriMesh& target, const Segmentation& seg, int t
 namespace {
 
 // Directed edge (a, b) of the segment mesh -> (triangle, corner of a).
-std::unordered_map<std::uint64_t, std::pair<int, int>> directedEdges(const TriMesh& m) {
+std::unordered_map<std::uint64_t, std::pair<int, int>> directedEdgeCorners(const TriMesh& m) {
   std::unordered_map<std::uint64_t, std::pair<int, int>> e;
   for (int t = 0; t < m.numTriangles(); ++t)
     for (int k = 0; k < 3; ++k) e[directedKey(m.F(t, k), m.F(t, (k + 1) % 3))] = {t, k};
@@ -68,7 +68,7 @@ void meshFlatSegment(const TriMesh& target, const Segmentation& seg, const FlatS
   const TriMesh& sub = fs.sub.mesh;
 
   // Boundary rows: on flattened edge (i, i + 1) at fraction s; the same fraction of the 3D edge.
-  const auto edges = directedEdges(sub);
+  const auto edges = directedEdgeCorners(sub);
   for (int r = 0; r < nb; ++r) {
     int i = static_cast<int>(std::floor(rb.param(r)));
     double s = rb.param(r) - i;

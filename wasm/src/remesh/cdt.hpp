@@ -9,11 +9,11 @@
 #include <vector>
 
 #include "mesh/tri_mesh.hpp"
+#include "util/vec2.hpp"
 
 namespace billow {
 
-using Points2 = Eigen::Matrix<double, Eigen::Dynamic, 2, Eigen::RowMajor>;  // P  #P by 2
-using Segments = Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor>;    // S  #S by 2, indices into P
+using Segments = Eigen::Matrix<int, Eigen::Dynamic, 2, Eigen::RowMajor>;  // S  #S by 2, indices into P
 
 // A planar straight-line graph. Segments must enclose the region to mesh: a triangle is kept when every
 // path to the outside crosses an odd number of segments (so nested loops alternate inside/outside, and a

@@ -10,21 +10,11 @@
 #include "remesh/predicates.hpp"
 #include "remesh/refine.hpp"
 #include "util/error.hpp"
+#include "util/vec2.hpp"
 
 namespace billow {
 
-double signedArea(const Points2& P) {
-  double a = 0;
-  for (Eigen::Index i = 0; i < P.rows(); ++i) {
-    const Eigen::Index j = (i + 1) % P.rows();
-    a += P(i, 0) * P(j, 1) - P(i, 1) * P(j, 0);
-  }
-  return 0.5 * a;
-}
-
 namespace {
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 // Sorted, unique corners; vertex 0 when there are none.
 std::vector<int> sortedCorners(const Points2& polygon, const std::vector<int>& corners) {
@@ -59,7 +49,7 @@ double minAngleAt(const TriMesh& m, int f) {
     const Eigen::Vector2d p = m.V.row(m.F(f, k)).head<2>().transpose();
     const Eigen::Vector2d q = m.V.row(m.F(f, (k + 1) % 3)).head<2>().transpose();
     const Eigen::Vector2d r = m.V.row(m.F(f, (k + 2) % 3)).head<2>().transpose();
-    best = std::min(best, std::atan2(std::abs(cross(q - p, r - p)), (q - p).dot(r - p)));
+    best = std::min(best, std::atan2(std::abs(cross2(q - p, r - p)), (q - p).dot(r - p)));
   }
   return best;
 }
@@ -68,7 +58,7 @@ bool positive(const TriMesh& m, int f) {
   const Eigen::Vector2d p = m.V.row(m.F(f, 0)).head<2>().transpose();
   const Eigen::Vector2d q = m.V.row(m.F(f, 1)).head<2>().transpose();
   const Eigen::Vector2d r = m.V.row(m.F(f, 2)).head<2>().transpose();
-  return cross(q - p, r - p) > 0;
+  return cross2(q - p, r - p) > 0;
 }
 
 // Laplacian smoothing of interior vertices; a move is kept only if no incident triangle flips and the worst
@@ -268,8 +258,8 @@ TriMesh meshPanel(const Points2& boundary, double h, const PanelMeshOptions& opt
     double expected = outlineArea, meshed = 0;
     for (const Points2& hole : holes) expected += signedArea(hole);
     for (int f = 0; f < mesh.numTriangles(); ++f)
-      meshed += 0.5 * cross((r.points.row(mesh.F(f, 1)) - r.points.row(mesh.F(f, 0))).transpose(),
-                            (r.points.row(mesh.F(f, 2)) - r.points.row(mesh.F(f, 0))).transpose());
+      meshed += 0.5 * cross2((r.points.row(mesh.F(f, 1)) - r.points.row(mesh.F(f, 0))).transpose(),
+                             (r.points.row(mesh.F(f, 2)) - r.points.row(mesh.F(f, 0))).transpose());
     if (std::abs(meshed - expected) > 1e-9 * outlineArea)
       throw Error("panel.bad-hole", "A hole in a panel must lie inside its outline and outside its other holes.");
   }
@@ -286,9 +276,9 @@ Eigen::Vector2d xy(const TriMesh& m, int v) { return m.V.row(v).head<2>().transp
 // Closest point of triangle (a, b, c) to p, as barycentric weights (Ericson's region tests, in 2D).
 Eigen::Vector3d closestWeights(const Eigen::Vector2d& p, const Eigen::Vector2d& a, const Eigen::Vector2d& b,
                                const Eigen::Vector2d& c) {
-  const double area = cross(b - a, c - a);
+  const double area = cross2(b - a, c - a);
   if (area > 0) {
-    const double wa = cross(b - p, c - p) / area, wb = cross(c - p, a - p) / area;
+    const double wa = cross2(b - p, c - p) / area, wb = cross2(c - p, a - p) / area;
     const Eigen::Vector3d w(wa, wb, 1 - wa - wb);
     if (w.minCoeff() >= 0) return w;
   }

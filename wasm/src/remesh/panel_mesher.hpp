@@ -12,9 +12,6 @@
 
 namespace billow {
 
-// Area of a closed polygon (#P by 2), positive when it runs counter-clockwise.
-double signedArea(const Points2& polygon);
-
 // Number of segments for a boundary piece of the given length at target edge length h: max(1, round(L / h)).
 int segmentCountFor(double length, double h);
 

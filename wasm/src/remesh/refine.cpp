@@ -10,21 +10,18 @@
 #include <deque>
 
 #include "remesh/predicates.hpp"
+#include "util/vec2.hpp"
 
 namespace billow {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 enum class Badness { None, Shape, Size };
-
-double cross(const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 class Refiner {
  public:
   Refiner(Cdt& cdt, const RefineOptions& opt) : cdt_(cdt), opt_(opt) {
-    sinMin_ = std::sin(std::clamp(opt.minAngleDeg, 0.0, 60.0) * kPi / 180.0);
+    sinMin_ = std::sin(std::clamp(opt.minAngleDeg, 0.0, 60.0) * M_PI / 180.0);
     isInput_.assign(cdt.numVertices(), 1);
     root_.assign(cdt.numVertices(), {-1, -1});
   }
@@ -123,7 +120,7 @@ class Refiner {
   Badness badness(const Cdt::Tri& T, int& shortEdge) const {
     const Eigen::Vector2d &a = P(T.v[0]), &b = P(T.v[1]), &c = P(T.v[2]);
     const double l[3] = {(b - c).squaredNorm(), (c - a).squaredNorm(), (a - b).squaredNorm()};
-    const double area2 = std::abs(cross(b - a, c - a));
+    const double area2 = std::abs(cross2(b - a, c - a));
     shortEdge = static_cast<int>(std::min_element(l, l + 3) - l);
     if (area2 > 2.0 * opt_.maxArea) return Badness::Size;
     if (std::max({l[0], l[1], l[2]}) > opt_.maxEdgeLength * opt_.maxEdgeLength) return Badness::Size;
@@ -159,7 +156,7 @@ class Refiner {
       return;
     }
     const Eigen::Vector2d &a = P(T.v[0]), b = P(T.v[1]) - a, c = P(T.v[2]) - a;
-    const double d = 2.0 * cross(b, c);
+    const double d = 2.0 * cross2(b, c);
     const Eigen::Vector2d cc = a + Eigen::Vector2d(c.y() * b.squaredNorm() - b.y() * c.squaredNorm(),
                                                    b.x() * c.squaredNorm() - c.x() * b.squaredNorm()) /
                                        d;

@@ -5,13 +5,11 @@
 #include <cmath>
 
 #include "util/error.hpp"
+#include "util/vec2.hpp"
 
 namespace billow {
 
 namespace {
-
-using Vec2 = Eigen::Vector2d;
-double cross(const Vec2& a, const Vec2& b) { return a.x() * b.y() - a.y() * b.x(); }
 
 struct Portal {
   Vec2 left = Vec2::Zero(), right = Vec2::Zero();
@@ -75,8 +73,8 @@ std::vector<Apex> funnel(const std::vector<Portal>& portals) {
   auto isApex = [&](const Vec2& x, int id) { return (id >= 0 && id == apexId) || (x - apex).squaredNorm() == 0; };
   for (int i = 1, guard = 0; i <= last && guard < 8 * (last + 2) * (last + 2); ++i, ++guard) {
     const Portal& q = portals[i];
-    if (cross(R - apex, q.right - apex) >= 0) {  // the right side narrows
-      if (isApex(R, rId) || cross(L - apex, q.right - apex) <= 0) {
+    if (cross2(R - apex, q.right - apex) >= 0) {  // the right side narrows
+      if (isApex(R, rId) || cross2(L - apex, q.right - apex) <= 0) {
         R = q.right, rId = q.rightId, ri = i;
       } else {  // crosses the left side: the left corner becomes the apex
         apex = L, apexId = lId;
@@ -85,8 +83,8 @@ std::vector<Apex> funnel(const std::vector<Portal>& portals) {
         continue;
       }
     }
-    if (cross(L - apex, q.left - apex) <= 0) {  // the left side narrows
-      if (isApex(L, lId) || cross(R - apex, q.left - apex) >= 0) {
+    if (cross2(L - apex, q.left - apex) <= 0) {  // the left side narrows
+      if (isApex(L, lId) || cross2(R - apex, q.left - apex) >= 0) {
         L = q.left, lId = q.leftId, li = i;
       } else {
         apex = R, apexId = rId;
@@ -115,8 +113,8 @@ PathPoint crossing(const TriMesh& m, const MeshTopology& topo, const Portal& q, 
   if (q.rightId == A.vertex || q.rightId == B.vertex) return meshVertexPoint(m, topo, q.rightId, face);
   if (q.leftId == A.vertex || q.leftId == B.vertex) return meshVertexPoint(m, topo, q.leftId, face);
   const Vec2 d = q.left - q.right, s = B.p - A.p;
-  const double den = cross(s, d);
-  double t = std::abs(den) > 1e-300 ? cross(s, A.p - q.right) / den : 0.5;
+  const double den = cross2(s, d);
+  double t = std::abs(den) > 1e-300 ? cross2(s, A.p - q.right) / den : 0.5;
   t = std::min(1.0, std::max(0.0, t));
   if (t < 1e-12) return meshVertexPoint(m, topo, q.rightId, face);
   if (t > 1 - 1e-12) return meshVertexPoint(m, topo, q.leftId, face);
@@ -187,7 +185,7 @@ StripPath straightenInStrip(const TriMesh& m, const MeshTopology& topo, const st
   for (size_t i = 1; i + 1 < apexes.size(); ++i) {
     const Vec2 u = apexes[i].p - apexes[i - 1].p, w = apexes[i + 1].p - apexes[i].p;
     if (apexes[i].vertex < 0 || u.squaredNorm() == 0 || w.squaredNorm() == 0) continue;
-    out.wraps.push_back({apexes[i].vertex, apexes[i].portal, std::abs(std::atan2(cross(u, w), u.dot(w)))});
+    out.wraps.push_back({apexes[i].vertex, apexes[i].portal, std::abs(std::atan2(cross2(u, w), u.dot(w)))});
   }
   return out;
 }

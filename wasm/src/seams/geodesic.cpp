@@ -13,8 +13,6 @@ namespace billow {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
-
 // Faces around v from `from` to `to` (both included) turning in direction dir; empty if not reached.
 std::vector<int> fan(const TriMesh& m, const MeshTopology& topo, int v, int from, int to, int dir) {
   std::vector<int> out{from};
@@ -69,8 +67,8 @@ bool flipOut(const TriMesh& m, const MeshTopology& topo, const StripPath& sp, st
   bool changed = false;
   int barrier = static_cast<int>(strip.size());  // wraps are handled back to front, runs never overlap
   for (auto w = sp.wraps.rbegin(); w != sp.wraps.rend(); ++w) {
-    const double other = topo.angleSum[w->vertex] - (kPi + w->turn);
-    if (other >= kPi - 1e-9) continue;
+    const double other = topo.angleSum[w->vertex] - (M_PI + w->turn);
+    if (other >= M_PI - 1e-9) continue;
     int i = w->portal - 1, j = w->portal;
     if (i < 0 || j >= barrier || !hasVertex(m, strip[i], w->vertex) || !hasVertex(m, strip[j], w->vertex)) continue;
     while (i > 0 && hasVertex(m, strip[i - 1], w->vertex)) --i;

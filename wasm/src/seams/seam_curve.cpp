@@ -65,8 +65,8 @@ GeodesicPath smoothSpan(const GeodesicSolver& solver, const SurfaceProjector& pr
 
 // Whether 2D segments ab and cd cross or touch (barycentric coordinates of one face: an affine frame, so
 // crossing there is crossing on the face).
-bool segmentsMeet(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
-                  const Eigen::Vector2d& d) {
+bool segmentsMeetInFace(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
+                        const Eigen::Vector2d& d) {
   const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
   const double eps = 1e-12;
   const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
@@ -103,7 +103,7 @@ std::vector<char> crossingSpans(const GeodesicSolver& solver, const std::vector<
       for (size_t j = i + 1; j < pieces.size(); ++j) {
         const int gap = std::abs(pieces[i].index - pieces[j].index);
         if (gap <= 1 || (closed && gap == total - 1)) continue;  // neighbours share their joint
-        if (segmentsMeet(pieces[i].a, pieces[i].b, pieces[j].a, pieces[j].b))
+        if (segmentsMeetInFace(pieces[i].a, pieces[i].b, pieces[j].a, pieces[j].b))
           crossing[pieces[i].span] = crossing[pieces[j].span] = 1;
       }
   return crossing;

@@ -44,15 +44,6 @@ DistanceSummary summarizeDistances(const Eigen::VectorXd& distances, const Trian
 
 namespace {
 
-double triangleArea(const TriMesh& m, int f) {
-  const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
-  return 0.5 * (b - a).cross(c - a).norm();
-}
-
-}  // namespace
-
-namespace {
-
 // targetCoverage against the shape's projector (measureDistance uses it again for what helps).
 TargetCoverage coverage(const TriMesh& target, const SurfaceProjector& shapeProjector, double diagonal) {
   TargetCoverage c;

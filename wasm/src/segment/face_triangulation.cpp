@@ -5,11 +5,12 @@
 #include <algorithm>
 #include <set>
 
+#include "util/vec2.hpp"
+
 namespace billow {
 
 namespace {
 
-using Vec2 = Eigen::Vector2d;
 using Tri = std::array<int, 3>;
 
 double orient(const Vec2& a, const Vec2& b, const Vec2& c) {

@@ -22,11 +22,6 @@ std::vector<int> twins(const TriMesh& m) {
   return twin;
 }
 
-double triangleArea(const TriMesh& m, int t) {
-  const Eigen::Vector3d a = m.V.row(m.F(t, 0)), b = m.V.row(m.F(t, 1)), c = m.V.row(m.F(t, 2));
-  return 0.5 * (b - a).cross(c - a).norm();
-}
-
 }  // namespace
 
 void labelSegments(const CutMesh& cut, Segmentation& out) {

@@ -9,6 +9,7 @@
 
 #include "mesh/location.hpp"
 #include "segment/segment_topology.hpp"
+#include "util/text.hpp"
 
 namespace billow {
 
@@ -102,8 +103,6 @@ void junctions(const CutMesh& cut, Segmentation& out) {
     out.junctions.push_back({v, out.mesh.V.row(v).transpose(), segments, degree[v]});
   }
 }
-
-std::string plural(int n, const std::string& word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
 void segmentProblems(double totalArea, const SegmentationOptions& options, Segmentation& out) {
   const double diagonal = (out.boxMax - out.boxMin).norm();

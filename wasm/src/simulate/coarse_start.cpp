@@ -1,7 +1,6 @@
 #include "simulate/coarse_start.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <map>
 #include <unordered_map>
@@ -10,6 +9,7 @@
 #include "remesh/panel_mesher.hpp"
 #include "simulate/gauss_seidel.hpp"
 #include "simulate/initial_shape.hpp"
+#include "util/clock.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -75,7 +75,7 @@ std::optional<Pattern> coarsenPattern(const Pattern& pattern, const SewnMesh& me
   // Key simulation vertices: corners on any panel, and junctions: where a boundary changes partner (the
   // pole of a gored sphere, the ends of a free edge) or where panels meet that its edges do not join. Along
   // a seam shared by three panels (an internal connection sewn into a seam) no vertex is a key.
-  constexpr double cornerAngle = 30.0 * 3.14159265358979323846 / 180.0;
+  constexpr double cornerAngle = 30.0 * M_PI / 180.0;
   std::vector<char> key(mesh.numVertices, 0);
   for (int p = 0; p < numPanels; ++p)
     for (const auto& loop : loops[p]) {
@@ -286,9 +286,9 @@ Vertices startPositions(const Pattern& pattern, const SewnMesh& mesh, const Infl
   r = StartReport{};
   if (options.coarseStartTriangles > 0 && mesh.numTriangles() >= options.coarseStartTriangles &&
       options.coarseStartRatio > 1) {
-    const auto t0 = std::chrono::steady_clock::now();
+    const auto t0 = Clock::now();
     x = coarseToFine(pattern, mesh, options, r);
-    r.coarseMs = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    r.coarseMs = msSince(t0);
     if (x.rows() == mesh.numVertices && x.allFinite()) return x;
     r.levels = 0;
   }

@@ -1,15 +1,9 @@
 #include "simulate/enclosed_volume.hpp"
 
+#include "util/skew.hpp"
+
 namespace billow {
-namespace {
-
-Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
-  Eigen::Matrix3d s;
-  s << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
-  return s;
-}
-
-}  // namespace
+namespace {}  // namespace
 
 void triangleVolumeDerivatives(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c,
                                Vector9d* grad, Matrix9d* hess) {

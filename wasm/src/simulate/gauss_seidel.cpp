@@ -1,20 +1,20 @@
 #include "simulate/gauss_seidel.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <memory>
 
 #include "simulate/enclosed_volume.hpp"
 #include "simulate/membrane_energy.hpp"
 #include "simulate/seam_rods.hpp"
+#include "util/clock.hpp"
 
 namespace billow {
 
 GaussSeidelReport gaussSeidelSweeps(const SewnMesh& mesh, const Material& material, double pressure,
                                     const InflateOptions& options, Vertices& x, int sweeps, double threshold,
                                     bool measure) {
-  const auto start = std::chrono::steady_clock::now();
+  const auto start = Clock::now();
   GaussSeidelReport report;
   const int n = mesh.numVertices, F = mesh.numTriangles();
   if (x.rows() != n || n == 0) return report;
@@ -149,7 +149,7 @@ GaussSeidelReport gaussSeidelSweeps(const SewnMesh& mesh, const Material& materi
     ++report.sweeps;
   }
   if (measure) report.residualAfter = largestForce();
-  report.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+  report.ms = msSince(start);
   return report;
 }
 

@@ -2,7 +2,6 @@
 #include "simulate/inflate.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <limits>
 
@@ -10,16 +9,10 @@
 #include "simulate/coarse_start.hpp"
 #include "simulate/enclosed_volume.hpp"
 #include "simulate/initial_shape.hpp"
+#include "util/clock.hpp"
 #include "util/error.hpp"
 
 namespace billow {
-namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t) { return std::chrono::duration<double, std::milli>(Clock::now() - t).count(); }
-
-}  // namespace
-
 MembraneMaterial membraneMaterial(const Material& material, const InflateOptions& options) {
   MembraneMaterial m;
   m.youngsModulus = material.youngsModulus;
