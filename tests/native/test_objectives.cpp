@@ -226,6 +226,7 @@ TEST(Objectives, TargetDistanceDoesNotRewardSlidingVertices) {
 }
 
 TEST(Objectives, CoverKeepsTheTargetsSideInView) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
   // Two discs for a sphere, 3k elements: with E_target alone the first rigid alignment already slid the lens
   // towards the sphere's bottom (the inflated shape's points near the target, its top left out: 18.6 % the
   // other way) and the optimizer went on from there; E_cover brings the target's side back. On plain d^2 the

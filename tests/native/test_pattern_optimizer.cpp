@@ -130,6 +130,7 @@ TEST(PatternOptimizer, PredictedStartSavesNewtonIterations) {
 // no stiffness. The optimizer used to stop after one step there (its adjoint failed; 2.8 % RMS at 1k); now
 // it goes on like on any other design.
 TEST(PatternOptimizer, SlackInternalPanelDoesNotStopTheOptimizer) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
   const Fixture f = makeFixture("fish-midplane.billow.json", 600);
   ASSERT_TRUE(f.built.ok());
   ASSERT_EQ(f.built.pattern.panels.size(), 3u);
@@ -184,6 +185,7 @@ TEST(PatternOptimizer, UnstableEquilibriumIsResettledNotTheEnd) {
 // cross itself: such a panel overlaps itself and cannot be cut, although none of its triangles folds (the
 // optimizer's cow and penguin did).
 TEST(PatternOptimizer, FrontBackPenguinAbandonsTrialsThatSnapAndKeepsItsOutlines) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
   const Fixture f = makeFixture("../../bench/designs/penguin-front-back.billow.json", 3000);
   ASSERT_TRUE(f.built.ok());
   const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 20);
@@ -231,6 +233,7 @@ TEST(PatternOptimizer, FrontBackStuffedToyGoesOnAlongItsOutlinesThinNotches) {
 // the design's edge length. What the coarse phase found carries over (the penguin's fine phase starts at a
 // quarter of the flattened panels' distance), and however the run ends, it ends on the design's mesh.
 TEST(PatternOptimizer, CoarseFirstPhaseCarriesOverToTheDesignsMesh) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
   const Fixture f = makeFixture("../../bench/designs/penguin-front-back.billow.json", 3000);
   ASSERT_TRUE(f.built.ok());
   const int designTriangles = f.built.figures.triangles;
@@ -479,6 +482,7 @@ TEST(PatternOptimizer, SlidingSeamsChangeHowTheOptimizerWorks) {
 // RMS (ThreeGoreSphereGetsMuchCloser); let slide, the panels turn into S-shaped strips and the sphere gets far
 // closer, as cut (the final outlines meshed anew), with seams that still sew.
 TEST(PatternOptimizer, SlidingSeamsLetTheSphereFitFarBetter) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
   Fixture f = makeFixture("sphere-gores.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;

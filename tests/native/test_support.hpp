@@ -25,6 +25,14 @@ inline TriMesh loadShared(const std::string& name) { return readMeshBytes(readFi
 inline std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
 inline std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
 
+// The longest optimizer runs (10-17 s each in wasm, half the wasm suite's time) are tested natively only: the
+// wasm build runs the same optimizer in the node and end-to-end suites.
+#ifdef __EMSCRIPTEN__
+#define BILLOW_NATIVE_ONLY_LONG_RUN() GTEST_SKIP() << "a long optimizer run, tested natively"
+#else
+#define BILLOW_NATIVE_ONLY_LONG_RUN() (void)0
+#endif
+
 // The billow CLI built next to this test binary (native suites only run it).
 inline std::string cliPath() {
   char buf[PATH_MAX];
