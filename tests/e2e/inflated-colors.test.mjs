@@ -135,7 +135,11 @@ test('each optimization iterate streams: its shape with its distance colors, and
   // Opened as a design file: from the Gallery it would show its stored result instead of the iterates.
   const buffer = await readFile(join(ROOT, 'web/public/gallery/sphere3.billow.json'));
   await page.setInputFiles('#file-input', { name: 'sphere3.billow.json', mimeType: 'application/json', buffer });
-  await waitInflated(page);
+  // Until enough iterates have streamed (the whole run takes 20-40 s under test; its end is tested elsewhere).
+  await page.waitForFunction(() => {
+    const seen = window.streamSeen;
+    return seen.statuses.size >= 3 && seen.distances.size >= 3 && seen.patterns.size >= 2 && seen.shapes > 0;
+  }, null, { timeout: 120000 }).catch(() => {});
   const seen = await page.evaluate(() => ({
     distances: window.streamSeen.distances.size,
     patterns: window.streamSeen.patterns.size,
