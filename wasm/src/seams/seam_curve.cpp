@@ -7,6 +7,7 @@
 
 #include "seams/mesh_topology.hpp"
 #include "util/error.hpp"
+#include "util/vec2.hpp"
 
 namespace billow {
 
@@ -67,13 +68,13 @@ GeodesicPath smoothSpan(const GeodesicSolver& solver, const SurfaceProjector& pr
 // crossing there is crossing on the face).
 bool segmentsMeetInFace(const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& c,
                         const Eigen::Vector2d& d) {
-  const auto cross = [](const Eigen::Vector2d& u, const Eigen::Vector2d& v) { return u.x() * v.y() - u.y() * v.x(); };
   const double eps = 1e-12;
-  const double d1 = cross(b - a, c - a), d2 = cross(b - a, d - a), d3 = cross(d - c, a - c), d4 = cross(d - c, b - c);
+  const double d1 = cross2(b - a, c - a), d2 = cross2(b - a, d - a), d3 = cross2(d - c, a - c),
+               d4 = cross2(d - c, b - c);
   if (((d1 > eps && d2 < -eps) || (d1 < -eps && d2 > eps)) && ((d3 > eps && d4 < -eps) || (d3 < -eps && d4 > eps)))
     return true;
   const auto onSegment = [&](const Eigen::Vector2d& p, const Eigen::Vector2d& q, const Eigen::Vector2d& r) {
-    return std::abs(cross(q - p, r - p)) <= eps && (r - p).dot(r - q) <= eps;  // r on pq
+    return std::abs(cross2(q - p, r - p)) <= eps && (r - p).dot(r - q) <= eps;  // r on pq
   };
   return onSegment(a, b, c) || onSegment(a, b, d) || onSegment(c, d, a) || onSegment(c, d, b);
 }
