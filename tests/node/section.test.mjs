@@ -56,7 +56,7 @@ test('where a plane cuts a shape in several loops, the one through the click is 
 
 // The loop as the tools lay it: no crossing, no tiny or thin segment, and the target cut in two.
 function expectClean(mesh, loop, label) {
-  const seam = { closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, loop) };
+  const seam = { closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, loop, { corners: true }) };
   const result = run(handlers.checkSeams({ seams: [seam] }));
   const bad = result.problems.filter((p) => ['seam.self-crossing', 'segment.sliver', 'segment.thin'].includes(p.code));
   assert.deepEqual(bad.map((p) => p.message), [], label);
@@ -104,7 +104,7 @@ test('a ring seen face on: its rim, its hole and two sections across it cut it i
   const turn = side(across[0]) - side(across[1]);
   const apart = Math.abs(Math.atan2(Math.sin(turn), Math.cos(turn)));
   assert.ok(apart > 2.5, `opposite: ${apart} rad apart`);
-  const seams = [outline.loop, ...outline.holes, ...across].map((loop) => ({ closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, loop) }));
+  const seams = [outline.loop, ...outline.holes, ...across].map((loop) => ({ closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, loop, { corners: true }) }));
   const result = run(handlers.checkSeams({ seams }));
   const bad = result.problems.filter((p) => ['seam.self-crossing', 'segment.sliver', 'segment.thin', 'segment.not-disk'].includes(p.code) || p.severity === 'error');
   assert.deepEqual(bad.map((p) => p.message), []);
@@ -131,3 +131,53 @@ for (const file of readdirSync(MESHES).filter((f) => f.endsWith('.obj')).sort())
     }
   });
 }
+
+// A five-pointed star pillow (a foil star balloon's target), front and back mirror images about z = 0, its rim on
+// the vertices: rings of `around` vertices from each pole out to the rim.
+function starPillow(around = 100, rings = 12) {
+  const radius = (t) => 0.45 + 0.55 * Math.abs(((t * 5) / (2 * Math.PI)) % 1 - 0.5) * 2;
+  const positions = [0, 0, 0.35, 0, 0, -0.35];
+  const ring = (side, i) => (i === rings ? 2 + 2 * (rings - 1) * around : 2 + (side * (rings - 1) + i - 1) * around);
+  for (const side of [0, 1])
+    for (let i = 1; i < rings; i++)
+      for (let j = 0; j < around; j++) {
+        const t = (2 * Math.PI * j) / around, s = i / rings, r = radius(t);
+        positions.push(s * r * Math.cos(t), s * r * Math.sin(t), (side ? -0.35 : 0.35) * Math.sqrt(1 - s * s));
+      }
+  for (let j = 0; j < around; j++) {
+    const t = (2 * Math.PI * j) / around;
+    positions.push(radius(t) * Math.cos(t), radius(t) * Math.sin(t), 0);
+  }
+  const indices = [];
+  for (const side of [0, 1]) {
+    const tri = (a, b, c) => indices.push(...(side ? [a, c, b] : [a, b, c]));
+    for (let j = 0; j < around; j++) tri(side, ring(side, 1) + j, ring(side, 1) + ((j + 1) % around));
+    for (let i = 1; i < rings; i++)
+      for (let j = 0; j < around; j++) {
+        const a = ring(side, i) + j, b = ring(side, i) + ((j + 1) % around);
+        const c = ring(side, i + 1) + ((j + 1) % around), d = ring(side, i + 1) + j;
+        tri(a, d, c), tri(a, c, b);
+      }
+  }
+  return { positions: Float64Array.from(positions), indices: Int32Array.from(indices) };
+}
+
+test("an outline keeps a control point at every sharp turn: a star's tips go to neither side", () => {
+  // Points at equal arc length skip most tips; the seam's shortest path from one side of a tip to the other then
+  // cuts across it, and the tip (its curvature, a corner of the panel) goes to one panel only.
+  const star = starPillow();
+  const outline = outlineLoop(star, [0, 0, 1]);
+  const points = sectionSeamPoints(star, outline.loop, { corners: true }).map((p) => positionOf(star, p));
+  const { diagonal } = middle(star);
+  for (let k = 0; k < 5; k++) {
+    const tip = [Math.cos((2 * Math.PI * k) / 5), Math.sin((2 * Math.PI * k) / 5), 0];
+    const near = Math.min(...points.map((p) => Math.hypot(p[0] - tip[0], p[1] - tip[1], p[2] - tip[2])));
+    assert.ok(near < 1e-4 * diagonal, `tip ${k}: the nearest control point is ${(near / diagonal).toExponential(1)} of the size away`);
+  }
+  run(handlers.setTarget(star));
+  const seam = { closed: true, smooth: false, weight: 1, points: sectionSeamPoints(star, outline.loop, { corners: true }) };
+  const result = run(handlers.checkSeams({ seams: [seam] }));
+  assert.deepEqual(result.problems.map((p) => p.message), []);
+  const [front, back] = result.segments.map((s) => s.area);
+  assert.ok(Math.abs(front - back) < 1e-3 * front, `front ${front} and back ${back}: mirror images`);
+});

@@ -100,10 +100,15 @@ class Cutter {
       for (const PathPoint& p : c.points) chain.push_back(reg_.add(p.point));
       for (size_t i = 0; i + 1 < chain.size(); ++i)
         if (chain[i] != chain[i + 1]) byFace_[c.faces[i]].push_back({chain[i], chain[i + 1], c.faces[i], s});
-      for (size_t i = 0; i < chain.size(); ++i)  // a seam passing twice through one point touches itself
-        for (size_t j = i + 2; j < chain.size(); ++j)
-          if (chain[i] == chain[j] && !(c.closed && i == 0 && j + 1 == chain.size()) && chain[i] != chain[j - 1])
-            out_.selfCrossings.push_back({s, position(m_, reg_.origin[chain[i]])});
+      // A seam passing twice through one point touches itself; points merged into one (a path through a vertex)
+      // pass once.
+      std::vector<int> passes;
+      for (int id : chain)
+        if (passes.empty() || passes.back() != id) passes.push_back(id);
+      for (size_t i = 0; i < passes.size(); ++i)
+        for (size_t j = i + 2; j < passes.size(); ++j)
+          if (passes[i] == passes[j] && !(c.closed && i == 0 && j + 1 == passes.size()))
+            out_.selfCrossings.push_back({s, position(m_, reg_.origin[passes[i]])});
       out_.seamVertices.push_back(std::move(chain));
     }
   }

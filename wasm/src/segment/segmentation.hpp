@@ -15,8 +15,8 @@ struct SegmentationOptions {
   double minSegmentAreaRatio = 1e-3;   // a segment below this share of the target's area is a sliver
   double minSegmentWidthRatio = 5e-3;  // a segment narrower on average than this share of the diagonal is thin
   double minFlatShare = 0.25;  // a disk segment of which a flat panel inside its seam covers less is too big for it
-  double tolerance = 1e-9;     // barycentric merge tolerance for seam points
-  UpAxis up;                   // the problems' places ("near the top left") as the target stands
+  double tolerance = kSeamPointTolerance;  // barycentric merge tolerance for seam points (cut_mesh.hpp)
+  UpAxis up;                               // the problems' places ("near the top left") as the target stands
 };
 
 struct BoundaryLoop {

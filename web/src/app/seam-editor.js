@@ -198,7 +198,7 @@ export class SeamEditor {
     const id = band && cmd.nextBandId(next);
     const record = (part) => band && { ...band, id, part };
     const laid = [];
-    const { sides, across: ends } = across && loops.length === 2 ? bandSeamPoints(target, loops, across, { width: this.stripWidth(band) }) : { sides: loops.map((loop) => sectionSeamPoints(target, loop)) };
+    const { sides, across: ends } = across && loops.length === 2 ? bandSeamPoints(target, loops, across, { width: this.stripWidth(band) }) : { sides: loops.map((loop) => sectionSeamPoints(target, loop, { corners: true })) };
     for (const [k, points] of sides.entries()) {
       next = cmd.addSeam(next, { points, closed: true, smooth: false, name: names[k], band: record(BAND_PARTS[k]) });
       laid.push(next.seams.length - 1);

@@ -64,21 +64,22 @@ export function zeroLoops({ positions, indices }, values) {
 // few), within these counts; the surface paths between them follow the section.
 const SECTION_SPACING = 0.02;
 const SECTION_POINTS = [12, 160];
+const CORNER_STRAY = 0.1;
+const CORNER_POINTS_MAX = 400;
 
 export const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
 
 export const loopLength = (loop) => loop.reduce((s, p, i) => s + distance(p.position, loop[(i + 1) % loop.length].position), 0);
 
-// n points at equal arc length along a closed loop of planeSection, each in the face between its neighbours on
-// the loop: a point between two crossings lies in the face the walk crossed from one to the other.
-export function resampleLoop({ indices }, loop, n) {
-  const total = loopLength(loop);
+// Points at the given arc lengths (ascending, from the loop's first point) along a closed loop of planeSection,
+// each in the face between its neighbours on the loop: a point between two crossings lies in the face the walk
+// crossed from one to the other.
+export function resampleLoop({ indices }, loop, arcs) {
   const out = [];
   let i = 0;
   let walked = 0;
   const span = (k) => distance(loop[k].position, loop[(k + 1) % loop.length].position);
-  for (let k = 0; k < n; k++) {
-    const want = (k * total) / n;
+  for (const want of arcs) {
     while (i < loop.length - 1 && walked + span(i) < want) walked += span(i++);
     const a = loop[i];
     const b = loop[(i + 1) % loop.length];
@@ -114,11 +115,54 @@ export function sectionThrough(mesh, at, normal) {
 }
 
 // The control points ({ face, bary }) of the seam a section loop makes: the loop at equal arc length, spaced
-// by SECTION_SPACING.
-export function sectionSeamPoints(mesh, loop) {
+// by SECTION_SPACING; with `corners`, where the loop strays from the chord between two of them by more than
+// CORNER_STRAY of that spacing, its farthest point too, until none does. The seam runs along shortest paths between
+// its points, and one that skips a sharp turn of an outline (a star's tip, a letter's corner) would cut it off and
+// give it to the other side. A band's sides go without: they are offsets of the outline, and followed into every
+// turn they would pinch the strip.
+export function sectionSeamPoints(mesh, loop, { corners = false } = {}) {
   const { diagonal } = bounds(mesh);
-  const n = Math.round(Math.min(SECTION_POINTS[1], Math.max(SECTION_POINTS[0], loopLength(loop) / (SECTION_SPACING * diagonal))));
-  return resampleLoop(mesh, loop, n).map(({ face, bary }) => ({ face, bary }));
+  const total = loopLength(loop);
+  const n = Math.round(Math.min(SECTION_POINTS[1], Math.max(SECTION_POINTS[0], total / (SECTION_SPACING * diagonal))));
+  const arcOf = [0];
+  for (let i = 1; i <= loop.length; i++) arcOf.push(arcOf[i - 1] + distance(loop[i - 1].position, loop[i % loop.length].position));
+  const at = (arc) => {
+    // The position at an arc length, from the loop point before it (arc in [0, total]).
+    let lo = 0;
+    let hi = loop.length;
+    while (hi - lo > 1) (arcOf[(lo + hi) >> 1] <= arc ? (lo = (lo + hi) >> 1) : (hi = (lo + hi) >> 1));
+    const a = loop[lo].position;
+    const b = loop[(lo + 1) % loop.length].position;
+    const s = Math.min(1, Math.max(0, (arc - arcOf[lo]) / Math.max(arcOf[lo + 1] - arcOf[lo], 1e-300)));
+    return a.map((x, c) => x + s * (b[c] - x));
+  };
+  const stray = CORNER_STRAY * (total / n);
+  const arcs = Array.from({ length: n }, (_, k) => (k * total) / n);
+  // Farthest loop point strictly between arcs a < b from the chord between their positions, or -1.
+  const farthest = (a, b) => {
+    const p = at(a);
+    const q = at(b % total);
+    const d = q.map((x, c) => x - p[c]);
+    const dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    let best = -1;
+    let bestGap = stray;
+    for (let i = 0; i <= loop.length; i++) {
+      const arc = arcOf[i] + (arcOf[i] <= a ? total : 0);
+      if (!(arc > a && arc < b)) continue;
+      const x = loop[i % loop.length].position;
+      const t = dd > 0 ? Math.min(1, Math.max(0, ((x[0] - p[0]) * d[0] + (x[1] - p[1]) * d[1] + (x[2] - p[2]) * d[2]) / dd)) : 0;
+      const gap = distance(x, p.map((y, c) => y + t * d[c]));
+      if (gap > bestGap) (bestGap = gap), (best = arcOf[i] % total);
+    }
+    return best;
+  };
+  for (let k = 0; corners && k < arcs.length && arcs.length < CORNER_POINTS_MAX; k++) {
+    const a = arcs[k];
+    const b = k + 1 < arcs.length ? arcs[k + 1] : arcs[0] + total;
+    const corner = farthest(a, b);
+    if (corner >= 0 && corner !== a) arcs.splice(k + 1, 0, corner), k--;
+  }
+  return resampleLoop(mesh, loop, arcs).map(({ face, bary }) => ({ face, bary }));
 }
 
 // The outline of the target as seen from `towards` (the unit direction from the target to the viewer, in its
