@@ -124,45 +124,47 @@ export function sectionSeamPoints(mesh, loop, { corners = false } = {}) {
   const { diagonal } = bounds(mesh);
   const total = loopLength(loop);
   const n = Math.round(Math.min(SECTION_POINTS[1], Math.max(SECTION_POINTS[0], total / (SECTION_SPACING * diagonal))));
+  const arcs = Array.from({ length: n }, (_, k) => (k * total) / n);
+  if (corners) keepTurns(loop, arcs, CORNER_STRAY * (total / n));
+  return resampleLoop(mesh, loop, arcs).map(({ face, bary }) => ({ face, bary }));
+}
+
+// Inserts into `arcs` (ascending arc lengths from the loop's first point, the first 0) the arc of the loop point
+// farthest from the chord between two neighbouring arcs, while one strays from it by more than `stray`.
+function keepTurns(loop, arcs, stray) {
   const arcOf = [0];
   for (let i = 1; i <= loop.length; i++) arcOf.push(arcOf[i - 1] + distance(loop[i - 1].position, loop[i % loop.length].position));
-  const at = (arc) => {
-    // The position at an arc length, from the loop point before it (arc in [0, total]).
+  const total = arcOf[loop.length];
+  const after = (arc) => {
+    // The last loop point at or before an arc length in [0, total].
     let lo = 0;
     let hi = loop.length;
     while (hi - lo > 1) (arcOf[(lo + hi) >> 1] <= arc ? (lo = (lo + hi) >> 1) : (hi = (lo + hi) >> 1));
-    const a = loop[lo].position;
-    const b = loop[(lo + 1) % loop.length].position;
-    const s = Math.min(1, Math.max(0, (arc - arcOf[lo]) / Math.max(arcOf[lo + 1] - arcOf[lo], 1e-300)));
+    return lo;
+  };
+  const at = (arc) => {
+    const k = after(arc);
+    const a = loop[k].position;
+    const b = loop[(k + 1) % loop.length].position;
+    const s = Math.min(1, Math.max(0, (arc - arcOf[k]) / Math.max(arcOf[k + 1] - arcOf[k], 1e-300)));
     return a.map((x, c) => x + s * (b[c] - x));
   };
-  const stray = CORNER_STRAY * (total / n);
-  const arcs = Array.from({ length: n }, (_, k) => (k * total) / n);
-  // Farthest loop point strictly between arcs a < b from the chord between their positions, or -1.
-  const farthest = (a, b) => {
-    const p = at(a);
-    const q = at(b % total);
-    const d = q.map((x, c) => x - p[c]);
-    const dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
-    let best = -1;
-    let bestGap = stray;
-    for (let i = 0; i <= loop.length; i++) {
-      const arc = arcOf[i] + (arcOf[i] <= a ? total : 0);
-      if (!(arc > a && arc < b)) continue;
-      const x = loop[i % loop.length].position;
-      const t = dd > 0 ? Math.min(1, Math.max(0, ((x[0] - p[0]) * d[0] + (x[1] - p[1]) * d[1] + (x[2] - p[2]) * d[2]) / dd)) : 0;
-      const gap = distance(x, p.map((y, c) => y + t * d[c]));
-      if (gap > bestGap) (bestGap = gap), (best = arcOf[i] % total);
-    }
-    return best;
-  };
-  for (let k = 0; corners && k < arcs.length && arcs.length < CORNER_POINTS_MAX; k++) {
+  for (let k = 0; k < arcs.length && arcs.length < CORNER_POINTS_MAX; k++) {
     const a = arcs[k];
-    const b = k + 1 < arcs.length ? arcs[k + 1] : arcs[0] + total;
-    const corner = farthest(a, b);
-    if (corner >= 0 && corner !== a) arcs.splice(k + 1, 0, corner), k--;
+    const b = k + 1 < arcs.length ? arcs[k + 1] : total;
+    const p = at(a);
+    const d = at(b).map((x, c) => x - p[c]);
+    const dd = d[0] * d[0] + d[1] * d[1] + d[2] * d[2];
+    let corner = -1;
+    let gap = stray;
+    for (let i = after(a) + 1; i < loop.length && arcOf[i] < b; i++) {
+      const x = loop[i].position;
+      const t = dd > 0 ? Math.min(1, Math.max(0, ((x[0] - p[0]) * d[0] + (x[1] - p[1]) * d[1] + (x[2] - p[2]) * d[2]) / dd)) : 0;
+      const off = distance(x, p.map((y, c) => y + t * d[c]));
+      if (off > gap) (gap = off), (corner = arcOf[i]);
+    }
+    if (corner > a) arcs.splice(k + 1, 0, corner), k--;
   }
-  return resampleLoop(mesh, loop, arcs).map(({ face, bary }) => ({ face, bary }));
 }
 
 // The outline of the target as seen from `towards` (the unit direction from the target to the viewer, in its
