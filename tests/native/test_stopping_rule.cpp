@@ -95,3 +95,30 @@ TEST(StoppingRule, AResettledBranchHasHalfAWindowToComeBack) {
   h.back().objective = 0.69;
   EXPECT_EQ(readObjectiveWindow(h, 26, 12, 1e-3, h.back().objective), ObjectiveWindow::GoesOn);
 }
+
+// Steps that come after a snapped trial are held at a fold of the balloon's equilibria: longer ones cross it. A
+// quarter window of such steps ends the run once they gain less than the window's rate (1 % over 20: 0.25 % over
+// 5); so does nothing else: a step that found no snap, a resettling or a faster gain keeps it going.
+TEST(StoppingRule, StepsHeldAtAFoldEndTheRunAtTheWindowsRate) {
+  // 5 % over the first 20 iterations (the full window goes on), then 0.2 % over the last five.
+  std::vector<double> E(26);
+  for (int i = 0; i <= 20; ++i) E[i] = 1.0 - 0.0025 * i;
+  for (int i = 21; i <= 25; ++i) E[i] = E[20] - 0.0004 * (i - 20);
+  std::vector<OptimizeRecord> h = objectiveHistory(E);
+  const auto verdict = [&](const std::vector<OptimizeRecord>& r) {
+    return readObjectiveWindow(r, 25, 20, 1e-2, r.back().objective);
+  };
+  EXPECT_EQ(verdict(h), ObjectiveWindow::GoesOn) << "no step was held";
+  for (int i = 21; i <= 25; ++i) h[i].snapLimited = true;
+  EXPECT_EQ(verdict(h), ObjectiveWindow::HeldAtFold);
+
+  std::vector<OptimizeRecord> free = h;
+  free[23].snapLimited = false;
+  EXPECT_EQ(verdict(free), ObjectiveWindow::GoesOn) << "one of the five steps met no snap";
+  std::vector<OptimizeRecord> resettled = h;
+  resettled[23].resettled = true;
+  EXPECT_EQ(verdict(resettled), ObjectiveWindow::GoesOn) << "a resettling within the five";
+  std::vector<OptimizeRecord> faster = h;
+  for (int i = 21; i <= 25; ++i) faster[i].objective = E[20] - 0.001 * (i - 20);
+  EXPECT_EQ(verdict(faster), ObjectiveWindow::GoesOn) << "0.5 % over five steps: the window's rate is 0.25 %";
+}

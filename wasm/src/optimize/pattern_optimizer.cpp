@@ -741,6 +741,7 @@ bool PatternOptimizer::iterate() {
   // resettle().
   double lastExcess = INFINITY;
   int jumps = 0;
+  bool snapLimited = false;
   // Backtracking: after a trial with a finite E the next alpha minimizes the quadratic through E_, the slope
   // and E(alpha), kept within [0.1, 0.5] alpha (Nocedal & Wright, Sec. 3.5); after a failed solve, alpha / 2.
   double next = 0.5 * alpha;
@@ -790,6 +791,7 @@ bool PatternOptimizer::iterate() {
                     : 0;
         lastExcess = std::isfinite(E) ? excess : INFINITY;
       }
+      snapLimited = snapLimited || jumps > 0;
       if (jumps >= 2) {
         if (resettle(x)) return true;
         // No resettling left: shorter steps jump too (each trial an abandoned solve), the line search ends here.
@@ -822,6 +824,7 @@ bool PatternOptimizer::iterate() {
     X_ = X, x_ = std::move(x), g_ = std::move(g), E_ = E, ++iteration_;
     unpackPattern(X_, pattern_);
     record(alpha, newton, false);
+    history_.back().snapLimited = snapLimited;
     return true;
   }
   return false;
@@ -869,6 +872,9 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
           return StopReason{OptimizeState::Converged, "the objective no longer decreases noticeably"};
         case ObjectiveWindow::SnapsAway:
           return StopReason{OptimizeState::Converged, "the balloon keeps snapping away from its best shape"};
+        case ObjectiveWindow::HeldAtFold:
+          return StopReason{OptimizeState::Converged,
+                            "the steps that would bring the balloon closer make it snap into another shape"};
         case ObjectiveWindow::GoesOn:
           break;
       }

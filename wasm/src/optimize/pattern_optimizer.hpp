@@ -176,6 +176,9 @@ struct OptimizeRecord {
   // The inflated shape snapped to another equilibrium of the same panels (not an L-BFGS step; the objective
   // may rise): the one it was in proved unstable (see PatternOptimizer::resettle).
   bool resettled = false;
+  // The line search came to this step after a trial snapped into another equilibrium: the balloon is at the
+  // edge of a shape it can hold (a fold of its equilibria), which longer steps cross.
+  bool snapLimited = false;
   // The optimizer went back to its best iterate of this mesh at the end (not an L-BFGS step): resettlings had
   // left it at a worse equilibrium.
   bool restored = false;

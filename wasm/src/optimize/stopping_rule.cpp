@@ -19,13 +19,20 @@ ObjectiveWindow readObjectiveWindow(const std::vector<OptimizeRecord>& history, 
   // One pass back to the last remeshing (a window may start with one): the best objective, the best up to the
   // window's start, and around the last resettled branch the best since it and the best before it. The final
   // seam-length projection is no iterate.
-  double before = INFINITY, best = INFINITY, bestBefore = INFINITY, bestSince = INFINITY;
-  int resettledAt = -1;
+  double before = INFINITY, best = INFINITY, bestBefore = INFINITY, bestSince = INFINITY, beforeHeld = INFINITY;
+  int resettledAt = -1, held = 0;
+  bool holding = true;
+  const int heldWindow = std::max(2, window / 4);  // one step alone never decides
   for (size_t j = history.size(); j-- > 0;) {
     const OptimizeRecord& r = history[j];
     if (!r.projected) {
       best = std::min(best, r.objective);
       if (r.iteration <= iteration - window) before = std::min(before, r.objective);
+      if (r.iteration <= iteration - heldWindow) beforeHeld = std::min(beforeHeld, r.objective);
+      if (holding && r.iteration > iteration - heldWindow) {
+        holding = r.snapLimited && !r.resettled && !r.remeshed;
+        held += holding;
+      }
     }
     if (r.remeshed) break;
     if (r.projected) continue;
@@ -37,6 +44,9 @@ ObjectiveWindow readObjectiveWindow(const std::vector<OptimizeRecord>& history, 
       bestSince = std::min(bestSince, r.objective);
   }
   if (std::isfinite(before) && before - best < decrease * std::abs(E)) return ObjectiveWindow::NoDecrease;
+  if (held == heldWindow && std::isfinite(beforeHeld) &&
+      beforeHeld - best < decrease * heldWindow / window * std::abs(E))
+    return ObjectiveWindow::HeldAtFold;
   // A resettling may raise the objective and the steps after it bring it down again; the branches that pay come
   // back within a few iterations (the fish: 5 and 7), fb-spot's never did.
   if (resettledAt >= 0 && iteration - resettledAt >= window / 2 && !(bestSince < bestBefore))
