@@ -22,7 +22,8 @@ ObjectiveWindow readObjectiveWindow(const std::vector<OptimizeRecord>& history, 
   double before = INFINITY, best = INFINITY, bestBefore = INFINITY, bestSince = INFINITY, beforeHeld = INFINITY;
   int resettledAt = -1, held = 0;
   bool holding = true;
-  const int heldWindow = std::max(2, window / 4);  // one step alone never decides
+  // Five steps at least: the coarse phase's window is 10, and two held steps ended it on paths that cost more.
+  const int heldWindow = std::max(5, window / 4);
   for (size_t j = history.size(); j-- > 0;) {
     const OptimizeRecord& r = history[j];
     if (!r.projected) {

@@ -17,7 +17,7 @@ OptimizeOptions appStoppingRule(OptimizeOptions options = {});
 // - NoDecrease: the best objective fell by less than decrease x |E| (only new bests count, so snapping back and
 //   forth between two equilibria ends the run too; never across a remeshing, the objective of another mesh);
 // - SnapsAway: the last resettled branch has not come below the best iterate before it within half a window;
-// - HeldAtFold: each of the last quarter window's steps (at least two) came after a trial that snapped, and the
+// - HeldAtFold: each of the last quarter window's steps (at least five) came after a trial that snapped, and the
 //   best objective fell by less than their share of `decrease` over them: NoDecrease's rate, on steps that
 //   cannot grow, since longer ones cross the fold.
 enum class ObjectiveWindow { GoesOn, NoDecrease, SnapsAway, HeldAtFold };
