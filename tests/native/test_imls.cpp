@@ -7,6 +7,7 @@
 #include <random>
 
 #include "optimize/imls_distance.hpp"
+#include "seams/surface_point.hpp"
 #include "test_support.hpp"
 
 using namespace billow;
@@ -198,4 +199,71 @@ TEST(Imls, NoKernelReachesFarOrNonFinitePoints) {
   EXPECT_EQ(S, 0);
   EXPECT_FALSE(imls.imls(Eigen::Vector3d(NAN, 0, 0), &d, nullptr, &S));
   EXPECT_FALSE(imls.imls(Eigen::Vector3d(0, -INFINITY, 0), &d, nullptr, &S));
+}
+
+// The closest-face hint (SurfaceProjector::project, ImlsDistance::distance) only speeds the search up: from any
+// hint, a right or a wrong one, the same distance as without.
+TEST(Imls, TheClosestFaceHintChangesNoDistance) {
+  const TriMesh T = sphere();
+  const ImlsDistance imls(T);
+  const SurfaceProjector projector(T);
+  std::mt19937 rng(3);
+  std::normal_distribution<double> n(0, 1);
+  std::uniform_int_distribution<int> face(0, T.numTriangles() - 1);
+  int hinted = 0;
+  for (int k = 0; k < 300; ++k) {
+    const Eigen::Vector3d x = (0.25 + 0.2 * std::abs(n(rng))) * Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+    double plain = 0;
+    const SurfacePoint p = projector.project(x, &plain);
+    for (int hint : {-1, face(rng), p.face, T.numTriangles() + 5}) {
+      double d = 0;
+      const SurfacePoint q = projector.project(x, &d, hint);
+      EXPECT_NEAR(d, plain, 1e-15) << "hint " << hint;
+      EXPECT_NEAR((position(T, q) - position(T, p)).norm(), 0, 1e-12);
+    }
+    Eigen::Vector3d g0, g;
+    const double d0 = imls.distance(x, &g0);
+    int last = face(rng);
+    const double d = imls.distance(x, &g, &last);
+    EXPECT_NEAR(d, d0, 1e-15);
+    EXPECT_NEAR((g - g0).norm(), 0, 1e-12);
+    hinted += last >= 0;
+  }
+  EXPECT_GT(hinted, 100);  // most of these points lie beyond the kernels, where the fallback answers
+}
+
+// Beyond a sharp tip every face around it is equally close, and a face of the far side faces away from the point:
+// the fallback's sign comes from the tip's angle-weighted normal, so it is right whichever face the search names.
+TEST(Imls, TheFallbackSignIsRightAtASharpTipWhicheverFaceIsNamed) {
+  TriMesh spike;  // a square pyramid 2 cm wide and 30 cm tall, closed, faces outward
+  spike.V.resize(5, 3);
+  spike.V << -0.01, -0.01, 0, 0.01, -0.01, 0, 0.01, 0.01, 0, -0.01, 0.01, 0, 0, 0, 0.3;
+  spike.F.resize(6, 3);
+  spike.F << 0, 1, 4, 1, 2, 4, 2, 3, 4, 3, 0, 4, 0, 2, 1, 0, 3, 2;
+  const ImlsDistance imls(spike);
+  const Eigen::Vector3d tip = spike.V.row(4).transpose();
+  std::mt19937 rng(4);
+  std::uniform_real_distribution<double> weight(0.05, 1);
+  int facingAway = 0;
+  for (int k = 0; k < 50; ++k) {
+    // A direction in the tip's normal cone: a positive mix of its four faces' normals.
+    Eigen::Vector3d dir = Eigen::Vector3d::Zero();
+    std::vector<Eigen::Vector3d> normals;
+    for (int f = 0; f < 4; ++f) {
+      const Eigen::Vector3d a = spike.V.row(spike.F(f, 0)), b = spike.V.row(spike.F(f, 1)),
+                            c = spike.V.row(spike.F(f, 2));
+      normals.push_back((b - a).cross(c - a).normalized());
+      dir += weight(rng) * normals.back();
+    }
+    const Eigen::Vector3d x = tip + 0.05 * dir.normalized();
+    for (int f = 0; f < 4; ++f) {
+      int named = f;
+      Eigen::Vector3d g;
+      const double d = imls.fallback(x, &g, &named);
+      EXPECT_NEAR(d, 0.05, 1e-12) << "named face " << f;
+      EXPECT_NEAR((g - dir.normalized()).norm(), 0, 1e-9);
+      facingAway += normals[size_t(f)].dot(x - tip) < 0;
+    }
+  }
+  EXPECT_GT(facingAway, 20);  // the case the face's own side gets wrong
 }

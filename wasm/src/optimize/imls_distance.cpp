@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <unordered_map>
 
 #include "util/error.hpp"
 
@@ -26,6 +28,26 @@ ImlsDistance::ImlsDistance(const TriMesh& target, const ImlsOptions& options)
     const double len = normals_.row(v).norm();
     if (len > 0) normals_.row(v) /= len;
   }
+  // The fallback's pseudo-normals: vertex sums by corner angle, and each edge's two faces.
+  angleNormals_ = Vertices::Zero(T.numVertices(), 3);
+  faceAcross_.assign(size_t(3) * T.numTriangles(), -1);
+  std::unordered_map<std::uint64_t, int> edgeFace;
+  edgeFace.reserve(size_t(3) * T.numTriangles());
+  const auto edgeKey = [](int u, int v) {
+    return (std::uint64_t(std::min(u, v)) << 32) | std::uint32_t(std::max(u, v));
+  };
+  for (int f = 0; f < T.numTriangles(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int v = T.F(f, k), u = T.F(f, (k + 1) % 3), w = T.F(f, (k + 2) % 3);
+      const Eigen::Vector3d e1 = T.V.row(u) - T.V.row(v), e2 = T.V.row(w) - T.V.row(v);
+      angleNormals_.row(v) += std::atan2(e1.cross(e2).norm(), e1.dot(e2)) * faceNormals_.row(f);
+      const auto [it, fresh] = edgeFace.emplace(edgeKey(u, w), 3 * f + k);
+      if (!fresh && it->second >= 0) {
+        faceAcross_[size_t(3) * f + k] = it->second / 3;
+        faceAcross_[size_t(it->second)] = f;
+        it->second = -1;  // a third face on this edge (non-manifold) keeps its own normal
+      }
+    }
   h_ = options.supportScale * edgeSum / (3.0 * T.numTriangles());
   origin_ = T.V.colwise().minCoeff().transpose();
   // Cells of size h, the 27 around a query's holding every kernel within h. A long, thin target lying
@@ -145,12 +167,27 @@ bool ImlsDistance::imls(const Eigen::Vector3d& x, double* d, Eigen::Vector3d* gr
   return true;
 }
 
-double ImlsDistance::fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad) const {
-  const SurfacePoint p = projector_->project(x);
-  const Eigen::Vector3d n = faceNormals_.row(p.face).transpose(), r = x - position(*target_, p);
+double ImlsDistance::fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, int* closestFace) const {
+  const SurfacePoint p = projector_->project(x, nullptr, closestFace ? *closestFace : -1);
+  if (closestFace) *closestFace = p.face;
+  // The pseudo-normal at p: a vertex's where two weights are zero, an edge's where one is.
+  Eigen::Vector3d n = faceNormals_.row(p.face).transpose();
+  const int zeros = int(p.bary[0] == 0) + int(p.bary[1] == 0) + int(p.bary[2] == 0);
+  if (zeros == 2) {
+    int k = 0;
+    p.bary.maxCoeff(&k);
+    n = angleNormals_.row(target_->F(p.face, k)).transpose();
+  } else if (zeros == 1) {
+    int k = 0;
+    p.bary.minCoeff(&k);
+    const int across = faceAcross_[size_t(3) * p.face + k];
+    if (across >= 0) n += faceNormals_.row(across).transpose();
+  }
+  if (n.squaredNorm() > 0) n.normalize();
+  const Eigen::Vector3d r = x - position(*target_, p);
   const double len = r.norm();
-  // Signed Euclidean distance (continuous across faces, unlike the face-plane distance); the sign from the
-  // closest face's side.
+  // Signed Euclidean distance (continuous across faces, unlike the face-plane distance), signed by the
+  // pseudo-normal's side.
   if (len < 1e-12 * h_) {
     if (grad) *grad = n;
     return r.dot(n);
@@ -166,7 +203,7 @@ double ImlsDistance::closestDistance(const Eigen::Vector3d& x) const {
   return d;
 }
 
-double ImlsDistance::distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad) const {
+double ImlsDistance::distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad, int* closestFace) const {
   double dI = 0, S = 0;
   Eigen::Vector3d gI = Eigen::Vector3d::Zero(), gS = Eigen::Vector3d::Zero();
   // Without grad, no gradients at all (the optimizer's energy-only evaluations).
@@ -176,7 +213,7 @@ double ImlsDistance::distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad) c
     return dI;
   }
   Eigen::Vector3d gF;
-  const double dF = fallback(x, grad ? &gF : nullptr);
+  const double dF = fallback(x, grad ? &gF : nullptr, closestFace);
   if (!inside) {
     if (grad) *grad = gF;
     return dF;

@@ -10,7 +10,10 @@
 // correctBias the numerator uses n_k . (x - c_k) - b_k, b_k the uncorrected d(c_k): d then vanishes at
 // the target vertices to second order, which is what the optimizer should aim at.
 // Fallback outside the kernels' support: the signed Euclidean distance +-|x - p| to the closest target
-// point p (SurfaceProjector), signed by the side of p's face f. Between the two, a C1 blend by smoothstep(sum phi /
+// point p (SurfaceProjector), signed by the side of p's pseudo-normal: its face's normal inside the face, the two
+// faces' sum on an edge, the angle-weighted normal at a vertex (Baerentzen and Aanaes 2005). Then the sign is
+// right wherever p lies on a closed surface, and the same whichever face the search names for an edge or a vertex
+// (one face's side can be wrong there, at a sharp ridge or tip). Between the two, a C1 blend by smoothstep(sum phi /
 // blendThreshold), so d and its gradient stay continuous for the optimizer's line search.
 #pragma once
 #include <Eigen/Core>
@@ -34,8 +37,10 @@ class ImlsDistance {
   explicit ImlsDistance(const TriMesh& target, const ImlsOptions& options = {});
   ~ImlsDistance();
 
-  // Signed distance d(x) [m], positive outside; grad receives dd/dx when given.
-  double distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad = nullptr) const;
+  // Signed distance d(x) [m], positive outside; grad receives dd/dx when given. closestFace, when given, is the
+  // fallback's closest target face for x at the last call (-1: none yet) and receives this call's: a hint for
+  // the search (SurfaceProjector::project), not a change of d.
+  double distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad = nullptr, int* closestFace = nullptr) const;
 
   // The IMLS part alone (no fallback): false when no kernel reaches x. weightSum = sum phi_k(x) and, when
   // given, weightSumGrad its gradient (for the blend). Gradients are only accumulated when grad or
@@ -43,7 +48,7 @@ class ImlsDistance {
   bool imls(const Eigen::Vector3d& x, double* d, Eigen::Vector3d* grad, double* weightSum,
             Eigen::Vector3d* weightSumGrad = nullptr) const;
   // The fallback alone: +-|x - p|, p the closest target point, signed by the side of its face.
-  double fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad) const;
+  double fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, int* closestFace = nullptr) const;
 
   // Unsigned distance to the closest target point [m] (progress figures).
   double closestDistance(const Eigen::Vector3d& x) const;
@@ -59,6 +64,8 @@ class ImlsDistance {
   std::unique_ptr<SurfaceProjector> projector_;
   Vertices normals_;  // #V by 3, unit, area-weighted
   Vertices faceNormals_;
+  Vertices angleNormals_;        // #V by 3: angle-weighted sums of the face normals around each vertex
+  std::vector<int> faceAcross_;  // 3 per face: the face across the edge opposite corner k (-1: none)
   double h_ = 0, blend_ = 0.05;
   // The grid: cell (i, j, k) of size cell_ from origin_ holds kernels cellStart_[c] .. cellStart_[c + 1] - 1,
   // c = (i dims_[1] + j) dims_[2] + k, so a column's cells k0..k1 are one contiguous run. Kernels in cell

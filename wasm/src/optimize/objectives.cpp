@@ -12,7 +12,7 @@ namespace billow {
 
 PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern& built, const SewnMesh& mesh,
                                    const std::vector<double>& seamWeights, const OptimizeWeights& weights)
-    : imls_(imls), w_(weights), n_(mesh.numVertices) {
+    : imls_(imls), w_(weights), n_(mesh.numVertices), targetFace_(size_t(mesh.numVertices), -1) {
   const Vertices& T = imls.target().V;
   D_ = (T.colwise().maxCoeff() - T.colwise().minCoeff()).norm();
   norm_ = 1.0 / (std::max(n_, 1) * D_ * D_);
@@ -196,6 +196,7 @@ double PatternObjective::coverKernel(double d2, double* irls) const {
 }
 
 void PatternObjective::trackCover(const Vertices& x) const {
+  const std::vector<int> last = std::move(coverTriangle_);  // search hints
   coverTriangle_.clear();
   if (!(w_.cover > 0) || coverVertex_.empty() || outer_.empty()) return;
   TriMesh surface;
@@ -205,7 +206,9 @@ void PatternObjective::trackCover(const Vertices& x) const {
     for (int c = 0; c < 3; ++c) surface.F(long(t), c) = outer_[t].vertex[c];
   const SurfaceProjector projector(surface);
   const Vertices& T = imls_.target().V;
-  for (int v : coverVertex_) coverTriangle_.push_back(projector.project(T.row(v).transpose()).face);
+  for (size_t k = 0; k < coverVertex_.size(); ++k)
+    coverTriangle_.push_back(
+        projector.project(T.row(coverVertex_[k]).transpose(), nullptr, k < last.size() ? last[k] : -1).face);
 }
 
 void PatternObjective::coverPoints(const Vertices& x, std::vector<CoverPoint>& out) const {
@@ -256,7 +259,7 @@ double PatternObjective::shapeEnergy(const Vertices& x, const Eigen::VectorXd& X
   Eigen::VectorXd d2 = Eigen::VectorXd::Zero(n_);
   for (int i = 0; i < n_; ++i) {
     if (weight[i] == 0) continue;
-    const double d = imls_.distance(x.row(i).transpose(), gradx ? &g : nullptr);
+    const double d = targetDistance(i, x.row(i).transpose(), gradx ? &g : nullptr);
     d2[i] = d * d;
     Et += weight[i] * d * d;  // Eq. 9, squared
     if (gradx) gradx->segment<3>(3 * i) += 2 * weight[i] * d * g;
@@ -304,7 +307,7 @@ void PatternObjective::residualRows(const Vertices& x, const Eigen::VectorXd& X,
   for (int i = 0; i < n_; ++i) {
     if (weight[i] == 0) continue;
     ResidualRow r;
-    imls_.distance(x.row(i).transpose(), &n);
+    targetDistance(i, x.row(i).transpose(), &n);
     r.count = 1, r.vertex[0] = i, r.grad[0] = n, r.weight = weight[i];
     rows.push_back(r);
   }

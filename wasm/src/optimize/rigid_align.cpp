@@ -23,7 +23,7 @@ double evaluate(const PatternObjective& obj, const Eigen::VectorXd& w, const Ver
   for (int i = 0; i < x.rows(); ++i) {
     if (w[i] == 0) continue;
     const Eigen::Vector3d xi = x.row(i).transpose();
-    const double d = obj.imls().distance(xi, &n);
+    const double d = obj.targetDistance(i, xi, &n);
     Vector6d J;
     J << (xi - center).cross(n), n;  // d(d)/d(omega, t)
     E += w[i] * d * d;

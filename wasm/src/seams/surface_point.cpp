@@ -91,10 +91,17 @@ double boxDistance2(const Eigen::Vector3d& q, const Eigen::Vector3d& lo, const E
 }
 }  // namespace
 
-SurfacePoint SurfaceProjector::project(const Eigen::Vector3d& q, double* distance) const {
+SurfacePoint SurfaceProjector::project(const Eigen::Vector3d& q, double* distance, int hintFace) const {
   SurfacePoint best;
   double best2 = std::numeric_limits<double>::max();
   if (nodes_.empty()) return best;
+  if (hintFace >= 0 && hintFace < mesh_.numTriangles()) {
+    const Eigen::Vector3d a = mesh_.V.row(mesh_.F(hintFace, 0)), b = mesh_.V.row(mesh_.F(hintFace, 1)),
+                          c = mesh_.V.row(mesh_.F(hintFace, 2));
+    best.bary = closestPointBarycentric(q, a, b, c);
+    best.face = hintFace;
+    best2 = (best.bary[0] * a + best.bary[1] * b + best.bary[2] * c - q).squaredNorm();
+  }
   int stack[128];
   int top = 0;
   stack[top++] = 0;
