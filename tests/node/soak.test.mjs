@@ -43,6 +43,7 @@ const mb = (bytes) => `${(bytes / MB).toFixed(2)} MB`;
 function solver(handlers) {
   const pending = new Map();
   let nextId = 1;
+  let lastProgress = 0; // progress events of the last request answered
   const runner = new Runner(handlers, (message) => {
     if (message.kind === 'crashed') {
       for (const entry of pending.values()) entry.reject(new Error(`the solver crashed: ${message.message}`));
@@ -54,11 +55,13 @@ function solver(handlers) {
     if (message.kind === 'progress' && ++entry.progress === entry.cancelAfter) runner.receive({ kind: 'cancel', id: message.id });
     if (message.kind === 'reply') {
       pending.delete(message.id);
+      lastProgress = entry.progress;
       if (message.ok) entry.resolve(message.result);
       else entry.reject(message.error);
     }
   });
   return {
+    lastProgress: () => lastProgress,
     call(op, args, { cancelAfter = Infinity } = {}) {
       const id = nextId++;
       return new Promise((resolve, reject) => {
@@ -72,10 +75,17 @@ function solver(handlers) {
 const cancelled = (error) => error.code === 'cancelled';
 
 test('200 inflations started and cancelled (every 20th run to the end) leave no memory behind', async (t) => {
-  // 1,500 triangles: the solve spans several of the worker's 30 ms steps, so every cancel point below comes
-  // before it converges (at 600 a faster assembly let it finish in one step).
-  const patternText = JSON.stringify(api.examplePattern('mylar', 1500));
-  const { call } = solver(createHandlers(api));
+  // The solve must span several of the worker's 30 ms steps, so that every cancel point below (the third at most)
+  // comes before it converges: the smallest balloon that takes eight on this machine, a margin for the later
+  // solves' warmer code (1,500 triangles took two steps on a fast machine).
+  const { call, lastProgress } = solver(createHandlers(api));
+  let patternText = '';
+  for (const triangles of [1500, 3000, 6000, 12000, 24000]) {
+    patternText = JSON.stringify(api.examplePattern('mylar', triangles));
+    await call('inflatePattern', { patternText });
+    if (lastProgress() >= 8) break;
+  }
+  assert.ok(lastProgress() >= 8, `an uncancelled solve reports ${lastProgress()} progress events`);
   const started = performance.now();
   let baseline = null;
   let jsBaseline = 0;
