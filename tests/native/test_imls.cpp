@@ -201,16 +201,14 @@ TEST(Imls, NoKernelReachesFarOrNonFinitePoints) {
   EXPECT_FALSE(imls.imls(Eigen::Vector3d(0, -INFINITY, 0), &d, nullptr, &S));
 }
 
-// The closest-face hint (SurfaceProjector::project, ImlsDistance::distance) only speeds the search up: from any
-// hint, a right or a wrong one, the same distance as without.
+// The closest-face hint (SurfaceProjector::project) only speeds the search up: from any hint, a right or a wrong
+// one, the same distance as without.
 TEST(Imls, TheClosestFaceHintChangesNoDistance) {
   const TriMesh T = sphere();
-  const ImlsDistance imls(T);
   const SurfaceProjector projector(T);
   std::mt19937 rng(3);
   std::normal_distribution<double> n(0, 1);
   std::uniform_int_distribution<int> face(0, T.numTriangles() - 1);
-  int hinted = 0;
   for (int k = 0; k < 300; ++k) {
     const Eigen::Vector3d x = (0.25 + 0.2 * std::abs(n(rng))) * Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
     double plain = 0;
@@ -221,15 +219,50 @@ TEST(Imls, TheClosestFaceHintChangesNoDistance) {
       EXPECT_NEAR(d, plain, 1e-15) << "hint " << hint;
       EXPECT_NEAR((position(T, q) - position(T, p)).norm(), 0, 1e-12);
     }
+  }
+}
+
+// A point that wanders, mostly by less than its cache's reach and now and then farther, gets from its cache the
+// distance and gradient a fresh search gives, at every step: outside the sphere, and near its centre, where every
+// face is nearly as close as the closest and a small move makes another one the closest.
+TEST(Imls, TheFallbackCacheChangesNoDistance) {
+  const TriMesh T = sphere();
+  const ImlsDistance imls(T);
+  const double h = imls.supportRadius();
+  std::mt19937 rng(5);
+  std::normal_distribution<double> n(0, 1);
+  std::uniform_real_distribution<double> u(0, 1);
+  ClosestFaceCache cache;
+  Eigen::Vector3d x(0.4, 0.05, -0.02);
+  int fromCache = 0, renewed = 0;
+  for (int k = 0; k < 4000; ++k) {
+    const double step = u(rng) < 0.9 ? 0.005 * h : 0.5 * h;
+    x += step * Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+    if (k == 2000) x.setZero();  // the second half near the centre
+    if (k < 2000 && (x.norm() < 0.25 + 2 * h || x.norm() > 0.6)) x = (0.25 + 2 * h + 0.3 * u(rng)) * x.normalized();
+    if (k >= 2000 && x.norm() > 0.05) x *= 0.05 / x.norm();
+    const bool within = cache.reach >= 0 && (x - cache.center).norm() <= cache.reach;
     Eigen::Vector3d g0, g;
-    const double d0 = imls.distance(x, &g0);
-    int last = face(rng);
-    const double d = imls.distance(x, &g, &last);
+    const double d0 = imls.fallback(x, &g0);
+    const double d = imls.fallback(x, &g, &cache);
     EXPECT_NEAR(d, d0, 1e-15);
     EXPECT_NEAR((g - g0).norm(), 0, 1e-12);
-    hinted += last >= 0;
+    fromCache += within;
+    renewed += !within;
   }
-  EXPECT_GT(hinted, 100);  // most of these points lie beyond the kernels, where the fallback answers
+  EXPECT_GT(fromCache, 2000);
+  EXPECT_GT(renewed, 200);
+  EXPECT_LT(cache.faces.size(), size_t(T.numTriangles()) / 2);  // a cache of candidates, not the whole target
+  // At the edge of a cache's reach, near the centre: the closest face is among the candidates.
+  for (int k = 0; k < 200; ++k) {
+    ClosestFaceCache fresh;
+    const Eigen::Vector3d c = 0.01 * Eigen::Vector3d(n(rng), n(rng), n(rng));
+    imls.fallback(c, nullptr, &fresh);
+    ASSERT_GT(fresh.reach, 0);
+    const Eigen::Vector3d q = c + 0.999 * fresh.reach * Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+    EXPECT_NEAR(imls.fallback(q, nullptr, &fresh), imls.fallback(q, nullptr), 1e-15);
+    EXPECT_EQ(fresh.center, c);  // answered from the candidates, not renewed
+  }
 }
 
 // Beyond a sharp tip every face around it is equally close, and a face of the far side faces away from the point:
@@ -257,7 +290,8 @@ TEST(Imls, TheFallbackSignIsRightAtASharpTipWhicheverFaceIsNamed) {
     }
     const Eigen::Vector3d x = tip + 0.05 * dir.normalized();
     for (int f = 0; f < 4; ++f) {
-      int named = f;
+      ClosestFaceCache named;  // the search's candidates: this face alone
+      named.center = x, named.reach = 1, named.faces = {f};
       Eigen::Vector3d g;
       const double d = imls.fallback(x, &g, &named);
       EXPECT_NEAR(d, 0.05, 1e-12) << "named face " << f;

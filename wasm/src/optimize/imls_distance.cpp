@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <unordered_map>
 
 #include "util/error.hpp"
@@ -167,9 +168,29 @@ bool ImlsDistance::imls(const Eigen::Vector3d& x, double* d, Eigen::Vector3d* gr
   return true;
 }
 
-double ImlsDistance::fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, int* closestFace) const {
-  const SurfacePoint p = projector_->project(x, nullptr, closestFace ? *closestFace : -1);
-  if (closestFace) *closestFace = p.face;
+double ImlsDistance::fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, ClosestFaceCache* cache) const {
+  SurfacePoint p;
+  if (cache && cache->reach >= 0 && (x - cache->center).squaredNorm() <= cache->reach * cache->reach) {
+    const TriMesh& T = *target_;
+    double best2 = std::numeric_limits<double>::max();
+    for (int f : cache->faces) {
+      const Eigen::Vector3d a = T.V.row(T.F(f, 0)), b = T.V.row(T.F(f, 1)), c = T.V.row(T.F(f, 2));
+      const Eigen::Vector3d w = closestPointBarycentric(x, a, b, c);
+      const double d2 = (w[0] * a + w[1] * b + w[2] * c - x).squaredNorm();
+      if (d2 < best2) best2 = d2, p.face = f, p.bary = w;
+    }
+  } else {
+    double d = 0;
+    p = projector_->project(x, &d, cache && !cache->faces.empty() ? cache->faces.front() : -1);
+    if (cache) {
+      // A reach of a fiftieth of the kernels' radius: about ten candidates for a point several edges off the
+      // target, and the rigid alignment's steps, most of the evaluations, stay within it (bench/README.md).
+      cache->center = x, cache->reach = 0.02 * h_;
+      cache->faces.clear();
+      cache->faces.push_back(p.face);  // first: the next renewal's search hint
+      projector_->facesWithin(x, d + 2 * cache->reach, cache->faces);
+    }
+  }
   // The pseudo-normal at p: a vertex's where two weights are zero, an edge's where one is.
   Eigen::Vector3d n = faceNormals_.row(p.face).transpose();
   const int zeros = int(p.bary[0] == 0) + int(p.bary[1] == 0) + int(p.bary[2] == 0);
@@ -203,7 +224,7 @@ double ImlsDistance::closestDistance(const Eigen::Vector3d& x) const {
   return d;
 }
 
-double ImlsDistance::distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad, int* closestFace) const {
+double ImlsDistance::distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad, ClosestFaceCache* cache) const {
   double dI = 0, S = 0;
   Eigen::Vector3d gI = Eigen::Vector3d::Zero(), gS = Eigen::Vector3d::Zero();
   // Without grad, no gradients at all (the optimizer's energy-only evaluations).
@@ -213,7 +234,7 @@ double ImlsDistance::distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad, i
     return dI;
   }
   Eigen::Vector3d gF;
-  const double dF = fallback(x, grad ? &gF : nullptr, closestFace);
+  const double dF = fallback(x, grad ? &gF : nullptr, cache);
   if (!inside) {
     if (grad) *grad = gF;
     return dF;

@@ -31,16 +31,26 @@ struct ImlsOptions {
   bool correctBias = true;       // subtract each kernel's own bias b_k (see above)
 };
 
+// The target faces that can be closest to any point within `reach` of `center`: those within d + 2 reach of it, d
+// its own closest distance (a point q within reach has a face within d + reach, and every face that close to q lies
+// within d + 2 reach of the center). One per moving point, so that its next fallback searches a few faces instead
+// of the tree: the pattern optimizer asks for the same vertices at every evaluation, mostly moved a hair.
+struct ClosestFaceCache {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double reach = -1;  // < 0: empty
+  std::vector<int> faces;
+};
+
 class ImlsDistance {
  public:
   // target: closed, outward-oriented triangle mesh [m]. Copied (the projector needs a stable address).
   explicit ImlsDistance(const TriMesh& target, const ImlsOptions& options = {});
   ~ImlsDistance();
 
-  // Signed distance d(x) [m], positive outside; grad receives dd/dx when given. closestFace, when given, is the
-  // fallback's closest target face for x at the last call (-1: none yet) and receives this call's: a hint for
-  // the search (SurfaceProjector::project), not a change of d.
-  double distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad = nullptr, int* closestFace = nullptr) const;
+  // Signed distance d(x) [m], positive outside; grad receives dd/dx when given. cache, when given, holds the
+  // fallback's candidate faces for points near the last one asked about with it (and is renewed when x lies
+  // beyond its reach): the same d, found faster.
+  double distance(const Eigen::Vector3d& x, Eigen::Vector3d* grad = nullptr, ClosestFaceCache* cache = nullptr) const;
 
   // The IMLS part alone (no fallback): false when no kernel reaches x. weightSum = sum phi_k(x) and, when
   // given, weightSumGrad its gradient (for the blend). Gradients are only accumulated when grad or
@@ -48,7 +58,7 @@ class ImlsDistance {
   bool imls(const Eigen::Vector3d& x, double* d, Eigen::Vector3d* grad, double* weightSum,
             Eigen::Vector3d* weightSumGrad = nullptr) const;
   // The fallback alone: +-|x - p|, p the closest target point, signed by the side of its face.
-  double fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, int* closestFace = nullptr) const;
+  double fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, ClosestFaceCache* cache = nullptr) const;
 
   // Unsigned distance to the closest target point [m] (progress figures).
   double closestDistance(const Eigen::Vector3d& x) const;

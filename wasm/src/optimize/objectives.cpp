@@ -12,7 +12,7 @@ namespace billow {
 
 PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern& built, const SewnMesh& mesh,
                                    const std::vector<double>& seamWeights, const OptimizeWeights& weights)
-    : imls_(imls), w_(weights), n_(mesh.numVertices), targetFace_(size_t(mesh.numVertices), -1) {
+    : imls_(imls), w_(weights), n_(mesh.numVertices), targetCache_(size_t(mesh.numVertices)) {
   const Vertices& T = imls.target().V;
   D_ = (T.colwise().maxCoeff() - T.colwise().minCoeff()).norm();
   norm_ = 1.0 / (std::max(n_, 1) * D_ * D_);

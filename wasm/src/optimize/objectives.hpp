@@ -125,9 +125,9 @@ class PatternObjective {
   double seamWeight(const SeamVertex& s) const { return w_.seam * s.sigma * norm_; }  // of |x_j - s_j|^2
   const ImlsDistance& imls() const { return imls_; }
   // E_target's signed distance d(x) of simulation vertex i at x, and its gradient when given (ImlsDistance::distance,
-  // with the vertex's last closest target face as the search hint).
+  // with the vertex's own candidate faces).
   double targetDistance(int i, const Eigen::Vector3d& x, Eigen::Vector3d* grad) const {
-    return imls_.distance(x, grad, &targetFace_[size_t(i)]);
+    return imls_.distance(x, grad, &targetCache_[size_t(i)]);
   }
   const std::vector<EdgePair>& edgePairs() const { return pairs_; }
   const std::vector<SeamVertex>& seamVertices() const { return seams_; }
@@ -178,8 +178,8 @@ class PatternObjective {
   Eigen::VectorXd coverWeight_;
   std::vector<int> aroundStart_, around_;
   mutable std::vector<int> coverTriangle_;
-  mutable std::vector<int> targetFace_;  // per simulation vertex, its closest target face at the last fallback
-  double coverTau2_ = 0;                 // tau^2 of E_cover's kernel (0: plain d^2)
+  mutable std::vector<ClosestFaceCache> targetCache_;  // per simulation vertex, for E_target's fallback
+  double coverTau2_ = 0;                               // tau^2 of E_cover's kernel (0: plain d^2)
 };
 
 }  // namespace billow

@@ -130,4 +130,29 @@ SurfacePoint SurfaceProjector::project(const Eigen::Vector3d& q, double* distanc
   return best;
 }
 
+void SurfaceProjector::facesWithin(const Eigen::Vector3d& q, double radius, std::vector<int>& out) const {
+  if (nodes_.empty()) return;
+  const double r2 = radius * radius;
+  int stack[128];
+  int top = 0;
+  stack[top++] = 0;
+  while (top > 0) {
+    const Node& n = nodes_[stack[--top]];
+    if (boxDistance2(q, n.lo, n.hi) > r2) continue;
+    if (n.left < 0) {
+      for (int i = n.begin; i < n.end; ++i) {
+        const int f = order_[i];
+        const Eigen::Vector3d a = mesh_.V.row(mesh_.F(f, 0)), b = mesh_.V.row(mesh_.F(f, 1)),
+                              c = mesh_.V.row(mesh_.F(f, 2));
+        const Eigen::Vector3d w = closestPointBarycentric(q, a, b, c);
+        if ((w[0] * a + w[1] * b + w[2] * c - q).squaredNorm() <= r2) out.push_back(f);
+      }
+      continue;
+    }
+    if (top + 2 > 128) continue;
+    stack[top++] = n.right;
+    stack[top++] = n.left;
+  }
+}
+
 }  // namespace billow

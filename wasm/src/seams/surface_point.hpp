@@ -31,6 +31,9 @@ class SurfaceProjector {
   // face of the mesh, is measured first: a query near its last answer then prunes nearly the whole tree (the
   // pattern optimizer asks for the same moving points at every evaluation). The answer is the same either way.
   SurfacePoint project(const Eigen::Vector3d& q, double* distance = nullptr, int hintFace = -1) const;
+  // The faces within `radius` of q (appended to out, in tree order).
+  void facesWithin(const Eigen::Vector3d& q, double radius, std::vector<int>& out) const;
+  const TriMesh& mesh() const { return mesh_; }
 
  private:
   struct Node {
