@@ -177,7 +177,7 @@ double ImlsDistance::fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, C
       const Eigen::Vector3d a = T.V.row(T.F(f, 0)), b = T.V.row(T.F(f, 1)), c = T.V.row(T.F(f, 2));
       const Eigen::Vector3d w = closestPointBarycentric(x, a, b, c);
       const double d2 = (w[0] * a + w[1] * b + w[2] * c - x).squaredNorm();
-      if (d2 < best2) best2 = d2, p.face = f, p.bary = w;
+      if (d2 < best2 || (d2 == best2 && f < p.face)) best2 = d2, p.face = f, p.bary = w;  // ties as project's
     }
   } else {
     double d = 0;

@@ -107,7 +107,7 @@ SurfacePoint SurfaceProjector::project(const Eigen::Vector3d& q, double* distanc
   stack[top++] = 0;
   while (top > 0) {
     const Node& n = nodes_[stack[--top]];
-    if (boxDistance2(q, n.lo, n.hi) >= best2) continue;
+    if (boxDistance2(q, n.lo, n.hi) > best2) continue;  // not >=: an equally close face may have a lower index
     if (n.left < 0) {
       for (int i = n.begin; i < n.end; ++i) {
         const int f = order_[i];
@@ -115,7 +115,7 @@ SurfacePoint SurfaceProjector::project(const Eigen::Vector3d& q, double* distanc
                               c = mesh_.V.row(mesh_.F(f, 2));
         const Eigen::Vector3d w = closestPointBarycentric(q, a, b, c);
         const double d2 = (w[0] * a + w[1] * b + w[2] * c - q).squaredNorm();
-        if (d2 < best2) best2 = d2, best.face = f, best.bary = w;
+        if (d2 < best2 || (d2 == best2 && f < best.face)) best2 = d2, best.face = f, best.bary = w;
       }
       continue;
     }

@@ -27,7 +27,8 @@ Eigen::Vector3d closestPointBarycentric(const Eigen::Vector3d& q, const Eigen::V
 class SurfaceProjector {
  public:
   explicit SurfaceProjector(const TriMesh& mesh);
-  // The surface point closest to q (ties: any). distance, when given, receives |q - position|. hintFace, when a
+  // The surface point closest to q (ties: the lowest face index, so that no hint or search order changes the
+  // answer). distance, when given, receives |q - position|. hintFace, when a
   // face of the mesh, is measured first: a query near its last answer then prunes nearly the whole tree (the
   // pattern optimizer asks for the same moving points at every evaluation). The answer is the same either way.
   SurfacePoint project(const Eigen::Vector3d& q, double* distance = nullptr, int hintFace = -1) const;
