@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
-#include <limits>
 #include <unordered_map>
 
 #include "util/error.hpp"
@@ -171,14 +170,7 @@ bool ImlsDistance::imls(const Eigen::Vector3d& x, double* d, Eigen::Vector3d* gr
 double ImlsDistance::fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, ClosestFaceCache* cache) const {
   SurfacePoint p;
   if (cache && cache->reach >= 0 && (x - cache->center).squaredNorm() <= cache->reach * cache->reach) {
-    const TriMesh& T = *target_;
-    double best2 = std::numeric_limits<double>::max();
-    for (int f : cache->faces) {
-      const Eigen::Vector3d a = T.V.row(T.F(f, 0)), b = T.V.row(T.F(f, 1)), c = T.V.row(T.F(f, 2));
-      const Eigen::Vector3d w = closestPointBarycentric(x, a, b, c);
-      const double d2 = (w[0] * a + w[1] * b + w[2] * c - x).squaredNorm();
-      if (d2 < best2 || (d2 == best2 && f < p.face)) best2 = d2, p.face = f, p.bary = w;  // ties as project's
-    }
+    p = projector_->closestAmong(cache->faces, x);
   } else {
     double d = 0;
     p = projector_->project(x, &d, cache && !cache->faces.empty() ? cache->faces.front() : -1);

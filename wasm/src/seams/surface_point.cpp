@@ -91,17 +91,25 @@ double boxDistance2(const Eigen::Vector3d& q, const Eigen::Vector3d& lo, const E
 }
 }  // namespace
 
+void SurfaceProjector::measure(int f, const Eigen::Vector3d& q, SurfacePoint& best, double& best2) const {
+  const Eigen::Vector3d a = mesh_.V.row(mesh_.F(f, 0)), b = mesh_.V.row(mesh_.F(f, 1)), c = mesh_.V.row(mesh_.F(f, 2));
+  const Eigen::Vector3d w = closestPointBarycentric(q, a, b, c);
+  const double d2 = (w[0] * a + w[1] * b + w[2] * c - q).squaredNorm();
+  if (d2 < best2 || (d2 == best2 && f < best.face)) best2 = d2, best.face = f, best.bary = w;
+}
+
+SurfacePoint SurfaceProjector::closestAmong(const std::vector<int>& faces, const Eigen::Vector3d& q) const {
+  SurfacePoint best;
+  double best2 = std::numeric_limits<double>::max();
+  for (int f : faces) measure(f, q, best, best2);
+  return best;
+}
+
 SurfacePoint SurfaceProjector::project(const Eigen::Vector3d& q, double* distance, int hintFace) const {
   SurfacePoint best;
   double best2 = std::numeric_limits<double>::max();
   if (nodes_.empty()) return best;
-  if (hintFace >= 0 && hintFace < mesh_.numTriangles()) {
-    const Eigen::Vector3d a = mesh_.V.row(mesh_.F(hintFace, 0)), b = mesh_.V.row(mesh_.F(hintFace, 1)),
-                          c = mesh_.V.row(mesh_.F(hintFace, 2));
-    best.bary = closestPointBarycentric(q, a, b, c);
-    best.face = hintFace;
-    best2 = (best.bary[0] * a + best.bary[1] * b + best.bary[2] * c - q).squaredNorm();
-  }
+  if (hintFace >= 0 && hintFace < mesh_.numTriangles()) measure(hintFace, q, best, best2);
   int stack[128];
   int top = 0;
   stack[top++] = 0;
@@ -109,14 +117,7 @@ SurfacePoint SurfaceProjector::project(const Eigen::Vector3d& q, double* distanc
     const Node& n = nodes_[stack[--top]];
     if (boxDistance2(q, n.lo, n.hi) > best2) continue;  // not >=: an equally close face may have a lower index
     if (n.left < 0) {
-      for (int i = n.begin; i < n.end; ++i) {
-        const int f = order_[i];
-        const Eigen::Vector3d a = mesh_.V.row(mesh_.F(f, 0)), b = mesh_.V.row(mesh_.F(f, 1)),
-                              c = mesh_.V.row(mesh_.F(f, 2));
-        const Eigen::Vector3d w = closestPointBarycentric(q, a, b, c);
-        const double d2 = (w[0] * a + w[1] * b + w[2] * c - q).squaredNorm();
-        if (d2 < best2 || (d2 == best2 && f < best.face)) best2 = d2, best.face = f, best.bary = w;
-      }
+      for (int i = n.begin; i < n.end; ++i) measure(order_[i], q, best, best2);
       continue;
     }
     const double dl = boxDistance2(q, nodes_[n.left].lo, nodes_[n.left].hi);
@@ -141,11 +142,10 @@ void SurfaceProjector::facesWithin(const Eigen::Vector3d& q, double radius, std:
     if (boxDistance2(q, n.lo, n.hi) > r2) continue;
     if (n.left < 0) {
       for (int i = n.begin; i < n.end; ++i) {
-        const int f = order_[i];
-        const Eigen::Vector3d a = mesh_.V.row(mesh_.F(f, 0)), b = mesh_.V.row(mesh_.F(f, 1)),
-                              c = mesh_.V.row(mesh_.F(f, 2));
-        const Eigen::Vector3d w = closestPointBarycentric(q, a, b, c);
-        if ((w[0] * a + w[1] * b + w[2] * c - q).squaredNorm() <= r2) out.push_back(f);
+        SurfacePoint p;
+        double d2 = std::numeric_limits<double>::max();
+        measure(order_[i], q, p, d2);
+        if (d2 <= r2) out.push_back(order_[i]);
       }
       continue;
     }

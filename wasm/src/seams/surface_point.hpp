@@ -34,6 +34,8 @@ class SurfaceProjector {
   SurfacePoint project(const Eigen::Vector3d& q, double* distance = nullptr, int hintFace = -1) const;
   // The faces within `radius` of q (appended to out, in tree order).
   void facesWithin(const Eigen::Vector3d& q, double radius, std::vector<int>& out) const;
+  // Of these faces, the point closest to q, as project answers when they hold its answer (ties alike).
+  SurfacePoint closestAmong(const std::vector<int>& faces, const Eigen::Vector3d& q) const;
   const TriMesh& mesh() const { return mesh_; }
 
  private:
@@ -43,6 +45,8 @@ class SurfaceProjector {
     int begin = 0, end = 0;     // range in order_ (leaves)
   };
   int build(int begin, int end, std::vector<Eigen::Vector3d>& centers);
+  // The closest point to q on face f, kept in best when nearer than best2 (ties: the lower face index).
+  void measure(int f, const Eigen::Vector3d& q, SurfacePoint& best, double& best2) const;
   const TriMesh& mesh_;
   std::vector<int> order_;  // triangle ids, grouped by leaf
   std::vector<Node> nodes_;
