@@ -179,8 +179,10 @@ double ImlsDistance::fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, C
       // target, and the rigid alignment's steps, most of the evaluations, stay within it (bench/README.md).
       cache->center = x, cache->reach = 0.02 * h_;
       cache->faces.clear();
-      cache->faces.push_back(p.face);  // first: the next renewal's search hint
       projector_->facesWithin(x, d + 2 * cache->reach, cache->faces);
+      // The closest first: the next renewal's search hint.
+      const auto closest = std::find(cache->faces.begin(), cache->faces.end(), p.face);
+      if (closest != cache->faces.end()) std::iter_swap(cache->faces.begin(), closest);
     }
   }
   // The pseudo-normal at p: a vertex's where two weights are zero, an edge's where one is.

@@ -57,7 +57,7 @@ class ImlsDistance {
   // weightSumGrad is given; d is the same either way.
   bool imls(const Eigen::Vector3d& x, double* d, Eigen::Vector3d* grad, double* weightSum,
             Eigen::Vector3d* weightSumGrad = nullptr) const;
-  // The fallback alone: +-|x - p|, p the closest target point, signed by the side of its face.
+  // The fallback alone: +-|x - p|, p the closest target point, signed by the side of its pseudo-normal.
   double fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, ClosestFaceCache* cache = nullptr) const;
 
   // Unsigned distance to the closest target point [m] (progress figures).

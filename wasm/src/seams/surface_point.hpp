@@ -28,15 +28,13 @@ class SurfaceProjector {
  public:
   explicit SurfaceProjector(const TriMesh& mesh);
   // The surface point closest to q (ties: the lowest face index, so that no hint or search order changes the
-  // answer). distance, when given, receives |q - position|. hintFace, when a
-  // face of the mesh, is measured first: a query near its last answer then prunes nearly the whole tree (the
-  // pattern optimizer asks for the same moving points at every evaluation). The answer is the same either way.
+  // answer). distance, when given, receives |q - position|. hintFace, when a face of the mesh, is measured first,
+  // so the search starts from a bound (a point near its last answer); the answer is the same either way.
   SurfacePoint project(const Eigen::Vector3d& q, double* distance = nullptr, int hintFace = -1) const;
   // The faces within `radius` of q (appended to out, in tree order).
   void facesWithin(const Eigen::Vector3d& q, double radius, std::vector<int>& out) const;
   // Of these faces, the point closest to q, as project answers when they hold its answer (ties alike).
   SurfacePoint closestAmong(const std::vector<int>& faces, const Eigen::Vector3d& q) const;
-  const TriMesh& mesh() const { return mesh_; }
 
  private:
   struct Node {
