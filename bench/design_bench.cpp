@@ -307,7 +307,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   // What the cut panels give (PatternOptimizer::checkCutPanels).
   json remeshed = nullptr;
   if (bo.remeshCheck) {
-    const CutPanelsCheck cut = opt.checkCutPanels(bo.cutScale * built.figures.edgeLength);
+    const CutPanelsCheck cut = opt.checkCutPanels(bo.cutScale == 1 ? 0 : bo.cutScale * built.figures.edgeLength);
     remeshed = cut.ok ? json{{"distanceRms", cut.distanceRms},
                              {"distanceMax", cut.distanceMax},
                              {"targetDistanceRms", cut.targetDistanceRms},

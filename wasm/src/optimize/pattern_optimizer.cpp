@@ -103,13 +103,20 @@ RemeshedPattern remeshNear(const BuiltPattern& built, const std::vector<Vertices
 
 PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& built,
                                    const std::vector<double>& seamWeights, const OptimizeOptions& options)
-    : options_(slidingOptions(options, seamWeights, built.figures.edgeLength, boundingDiagonal(target))),
+    : PatternOptimizer(nullptr, built, seamWeights, options, target) {}
+
+PatternOptimizer::PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
+                                   const std::vector<double>& seamWeights, const OptimizeOptions& options,
+                                   const TriMesh& target)
+    : options_(slidingOptions(options, seamWeights, built.figures.edgeLength,
+                              boundingDiagonal(imls ? imls->target() : target))),
       sliding_(hasSlidingSeams(options, seamWeights)),
       seamWeights_(seamWeights),
+      imls_(std::move(imls)),
       start_(nowMs()) {
-  imls_ = std::make_unique<ImlsDistance>(target, options.imls);
+  if (!imls_) imls_ = std::make_shared<const ImlsDistance>(target, options.imls);
   material_ = membraneMaterial(built.pattern.material, options.inflate);
-  fineEdgeLength_ = built.figures.edgeLength;
+  fineEdgeLength_ = built.figures.edgeLength, designTriangles_ = built.figures.triangles;
   const OptimizeRemeshing& remeshing = options_.remeshing;
   if (!sliding_ && remeshing.coarseFactor > 1 && built.pattern.inflated.size() == built.pattern.panels.size() &&
       int(built.figures.triangles) >= remeshing.coarseMinTriangles) {
@@ -261,27 +268,37 @@ bool PatternOptimizer::leaveCoarsePhase() {
 
 PatternOptimizer::~PatternOptimizer() = default;
 
+std::unique_ptr<PatternOptimizer> PatternOptimizer::cutPanels(double h, double triangles) const {
+  BuiltPattern current = built_;
+  current.pattern = pattern_;
+  const RemeshedPattern remeshed =
+      triangles > 0 ? remeshNear(current, panelInflated(), h, triangles) : remeshPattern(current, panelInflated(), h);
+  // Settled on the cut mesh itself: a coarse first phase would mesh the outlines at twice the edge length and
+  // back, losing their detail (the bench's cut figure did: bench/README.md "The cut panels").
+  OptimizeOptions settle = options_;
+  settle.stopping.maxIterations = 0, settle.stopping.maxMillis = 0, settle.keepShapes = false;
+  settle.remeshing.coarseFactor = 1, settle.remeshing.every = 0;
+  std::unique_ptr<PatternOptimizer> cut(new PatternOptimizer(imls_, remeshed.built, seamWeights_, settle, {}));
+  while (cut->step(1) == OptimizeState::Running) {
+  }
+  return cut;
+}
+
 CutPanelsCheck PatternOptimizer::checkCutPanels(double h) const {
   const double t0 = nowMs();
   CutPanelsCheck out;
-  BuiltPattern current = built_;
-  current.pattern = pattern_;
   try {
-    const RemeshedPattern remeshed = remeshPattern(current, panelInflated(), h > 0 ? h : fineEdgeLength_);
-    OptimizeOptions settle = options_;
-    settle.stopping.maxIterations = 0, settle.keepShapes = false, settle.stopping.maxMillis = 0;
-    PatternOptimizer check(imls_->target(), remeshed.built, seamWeights_, settle);
-    while (check.step(1) == OptimizeState::Running) {
-    }
-    out.elements = check.mesh().numTriangles();
-    if (check.state() == OptimizeState::Failed || check.history().empty()) {
-      out.message = check.message().empty() ? "the cut panels do not settle under pressure" : check.message();
+    const std::unique_ptr<PatternOptimizer> cut =
+        h > 0 ? cutPanels(h, 0) : cutPanels(fineEdgeLength_, designTriangles_);
+    out.elements = cut->mesh().numTriangles();
+    if (cut->state() == OptimizeState::Failed || cut->history().empty()) {
+      out.message = cut->message().empty() ? "the cut panels do not settle under pressure" : cut->message();
     } else {
+      const OptimizeRecord& r = cut->history().back();
       out.ok = true;
-      out.distanceRms = check.history().back().distanceRms;
-      out.distanceMax = check.history().back().distanceMax;
-      out.targetDistanceRms = check.history().back().targetDistanceRms;
-      out.targetDistanceMax = check.history().back().targetDistanceMax;
+      out.distanceRms = r.distanceRms, out.distanceMax = r.distanceMax;
+      out.targetDistanceRms = r.targetDistanceRms, out.targetDistanceMax = r.targetDistanceMax;
+      out.pattern = cut->pattern();
     }
   } catch (const Error& e) {
     out.message = e.what();

@@ -156,6 +156,7 @@ struct CutPanelsCheck {
   double targetDistanceRms = 0, targetDistanceMax = 0;
   int elements = 0;
   double ms = 0;
+  Pattern pattern;  // the cut panels, as settled (equal seam lengths)
 };
 
 struct OptimizeRecord {
@@ -214,6 +215,8 @@ class PatternOptimizer {
   PatternOptimizer(const TriMesh& target, const BuiltPattern& built, const std::vector<double>& seamWeights,
                    const OptimizeOptions& options = {});
   ~PatternOptimizer();
+  PatternOptimizer(const PatternOptimizer&) = delete;
+  PatternOptimizer& operator=(const PatternOptimizer&) = delete;
 
   // Up to maxIterations L-BFGS iterations or maxMillis (<= 0: none), whichever first; checked between
   // iterations (one iteration may overrun). The first call also solves the initial equilibrium.
@@ -232,9 +235,9 @@ class PatternOptimizer {
   const OptimizeOptions& options() const { return options_; }  // as used (slidingOptions)
   bool slidingSeams() const { return sliding_; }
 
-  // Meshes the current panels anew from their outlines at edge length h (<= 0: the design's), inflates them
-  // from the current shape, places them as the iterates are placed (after the exact seam-length projection)
-  // and measures their distance to the target.
+  // Meshes the current panels anew from their outlines at edge length h (<= 0: the design's, at about its
+  // triangle count), inflates them from the current shape, places them as the iterates are placed (after
+  // the exact seam-length projection) and measures their distance to the target.
   CutPanelsCheck checkCutPanels(double h = 0) const;
 
   // For tests: E(x(X), X) and its reduced gradient dE/dX (every row of X, interior ones too) at pattern
@@ -248,6 +251,13 @@ class PatternOptimizer {
   // Everything that follows from the (flattened or remeshed) pattern: mesh, objective, variables, the
   // preconditioner, the start x (its `inflated`); the L-BFGS memory is cleared.
   void setUp(const BuiltPattern& built);
+  // With imls, the target distance of another run (its kernels are built once per target); else built from
+  // target, within this run's time.
+  PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
+                   const std::vector<double>& seamWeights, const OptimizeOptions& options, const TriMesh& target);
+  // The current panels' outlines meshed anew at edge length h (near `triangles` when > 0) and settled as cut, in a
+  // run of their own that takes no step. Throws billow::Error when they do not mesh or sew.
+  std::unique_ptr<PatternOptimizer> cutPanels(double h, double triangles) const;
   struct StopReason {
     OptimizeState state;
     const char* message;
@@ -323,7 +333,7 @@ class PatternOptimizer {
   bool sliding_ = false;  // some seam slides (options_ are slidingOptions)
   std::vector<double> seamWeights_;
   BuiltPattern built_;  // as flattened or last remeshed (its pattern's X is not kept up to date)
-  std::unique_ptr<ImlsDistance> imls_;
+  std::shared_ptr<const ImlsDistance> imls_;
   std::unique_ptr<PatternObjective> objective_;
   std::unique_ptr<HarmonicInterior> interior_;
   std::vector<int> boundaryVertices_;                           // per panel
@@ -382,6 +392,7 @@ class PatternOptimizer {
   Eigen::VectorXd adjointPattern_;
   Vertices adjointShape_;
   double fineEdgeLength_ = 0;   // the design's edge length [m]
+  int designTriangles_ = 0;     // and its triangle count (the flattened pattern's)
   bool coarsePhase_ = false;    // in the coarse first phase (OptimizeRemeshing::coarseFactor)
   BuiltPattern flattened_;      // the flattened panels at the design's edge length (and count), in the coarse phase
   bool projectTrials_ = false;  // options.search.projectEveryStep, unless projecting the flattened panels folds them
