@@ -268,28 +268,22 @@ bool PatternOptimizer::leaveCoarsePhase() {
 
 PatternOptimizer::~PatternOptimizer() = default;
 
-std::unique_ptr<PatternOptimizer> PatternOptimizer::cutPanels(double h, double triangles) const {
-  BuiltPattern current = built_;
-  current.pattern = pattern_;
-  const RemeshedPattern remeshed =
-      triangles > 0 ? remeshNear(current, panelInflated(), h, triangles) : remeshPattern(current, panelInflated(), h);
-  // Settled on the cut mesh itself: a coarse first phase would mesh the outlines at twice the edge length and
-  // back, losing their detail (the bench's cut figure did: bench/README.md "The cut panels").
-  OptimizeOptions settle = options_;
-  settle.stopping.maxIterations = 0, settle.stopping.maxMillis = 0, settle.keepShapes = false;
-  settle.remeshing.coarseFactor = 1, settle.remeshing.every = 0;
-  std::unique_ptr<PatternOptimizer> cut(new PatternOptimizer(imls_, remeshed.built, seamWeights_, settle, {}));
-  while (cut->step(1) == OptimizeState::Running) {
-  }
-  return cut;
-}
-
 CutPanelsCheck PatternOptimizer::checkCutPanels(double h) const {
   const double t0 = nowMs();
   CutPanelsCheck out;
+  BuiltPattern current = built_;
+  current.pattern = pattern_;
   try {
-    const std::unique_ptr<PatternOptimizer> cut =
-        h > 0 ? cutPanels(h, 0) : cutPanels(fineEdgeLength_, designTriangles_);
+    const RemeshedPattern remeshed = h > 0 ? remeshPattern(current, panelInflated(), h)
+                                           : remeshNear(current, panelInflated(), fineEdgeLength_, designTriangles_);
+    // Settled on the cut mesh itself: a coarse first phase would mesh the outlines at twice the edge length and
+    // back, losing their detail (the bench's cut figure did: bench/README.md "The cut panels").
+    OptimizeOptions settle = options_;
+    settle.stopping.maxIterations = 0, settle.stopping.maxMillis = 0, settle.keepShapes = false;
+    settle.remeshing.coarseFactor = 1, settle.remeshing.every = 0;
+    const std::unique_ptr<PatternOptimizer> cut(new PatternOptimizer(imls_, remeshed.built, seamWeights_, settle, {}));
+    while (cut->step(1) == OptimizeState::Running) {
+    }
     out.elements = cut->mesh().numTriangles();
     if (cut->state() == OptimizeState::Failed || cut->history().empty()) {
       out.message = cut->message().empty() ? "the cut panels do not settle under pressure" : cut->message();

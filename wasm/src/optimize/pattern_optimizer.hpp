@@ -215,8 +215,6 @@ class PatternOptimizer {
   PatternOptimizer(const TriMesh& target, const BuiltPattern& built, const std::vector<double>& seamWeights,
                    const OptimizeOptions& options = {});
   ~PatternOptimizer();
-  PatternOptimizer(const PatternOptimizer&) = delete;
-  PatternOptimizer& operator=(const PatternOptimizer&) = delete;
 
   // Up to maxIterations L-BFGS iterations or maxMillis (<= 0: none), whichever first; checked between
   // iterations (one iteration may overrun). The first call also solves the initial equilibrium.
@@ -255,9 +253,6 @@ class PatternOptimizer {
   // target, within this run's time.
   PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
                    const std::vector<double>& seamWeights, const OptimizeOptions& options, const TriMesh& target);
-  // The current panels' outlines meshed anew at edge length h (near `triangles` when > 0) and settled as cut, in a
-  // run of their own that takes no step. Throws billow::Error when they do not mesh or sew.
-  std::unique_ptr<PatternOptimizer> cutPanels(double h, double triangles) const;
   struct StopReason {
     OptimizeState state;
     const char* message;
