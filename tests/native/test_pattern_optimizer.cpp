@@ -272,7 +272,7 @@ TEST(PatternOptimizer, CoarseFirstPhaseCarriesOverToTheDesignsMesh) {
 // A maker cuts the outlines: the cut panels are the current outlines meshed anew at the design's edge length. The
 // check once settled them through a coarse first phase of its own, which meshed the outlines at twice the edge
 // length and back: here their vertices then lay up to 13 mm (2 % of the model) off the outlines and inflated 18 %
-// farther from the target than the run's own figure (the cat from its side: 1.476 % against 0.883 % cut at once,
+// farther from the target than the run's own figure (the cat from its side: 1.476 % against 0.824 % cut at once,
 // bench/README.md "The cut panels"). Meshed at once, they move only where the exact seam lengths pull chords
 // that differ across a seam (4 mm here, 7 %).
 TEST(PatternOptimizer, CutPanelsAreTheOutlinesMeshedAtTheDesignsEdgeLength) {
