@@ -11,6 +11,7 @@
 #include "export/outline.hpp"
 #include "optimize/stopping_rule.hpp"
 #include "optimize_fixture.hpp"
+#include "seams/surface_distance.hpp"
 
 using namespace billow;
 using namespace billow::test;
@@ -50,6 +51,25 @@ TEST(PatternOptimizer, ThreeGoreSphereGetsMuchCloser) {
   ASSERT_TRUE(r.cut.ok) << r.cut.message;
   EXPECT_NEAR(r.cut.distanceRms, last.distanceRms, 0.1 * last.distanceRms);
   EXPECT_LT(r.cut.distanceRms, 0.5 * first.distanceRms);
+}
+
+// The target's distances to the inflated shape are measured once per iterate (for the record's figure), and
+// the app streams them from there: they are the shape's own until the shape changes.
+TEST(PatternOptimizer, TargetDistancesAreThoseOfTheCurrentShape) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.maxIterations = 3;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  EXPECT_EQ(opt.targetDistances(), nullptr) << "nothing measured before the first equilibrium";
+  for (int k = 0; k < 3 && opt.step(1) == OptimizeState::Running; ++k) {
+    const Eigen::VectorXd* measured = opt.targetDistances();
+    ASSERT_NE(measured, nullptr);
+    const TargetCoverage fresh = targetCoverage(opt.objective().imls().target(), opt.inflated(),
+                                                outerTriangles(opt.mesh()), opt.objective().modelSize());
+    EXPECT_EQ(*measured, fresh.distances);
+    EXPECT_NEAR(opt.history().back().targetDistanceRms, fresh.summary.rms, 1e-15);
+  }
 }
 
 TEST(PatternOptimizer, ProjectedTrialsEndWhereTheTangentialGradientIsSmall) {

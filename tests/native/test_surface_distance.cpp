@@ -91,6 +91,30 @@ TEST(TargetCoverage, OneWayAloneMissesAHalfLeftOutAndBothWaysSeeIt) {
   EXPECT_TRUE(oneWay.uncovered.empty());
 }
 
+// The app streams each iterate's distances both ways, the other way as the optimizer measured it already: given,
+// it gives what measuring again gives, what helps included.
+TEST(TargetCoverage, MeasuredDistancesGivenGiveTheSameFiguresAsMeasuringAgain) {
+  const TriMesh spot = test::loadShared("spot.obj");
+  const SurfaceProjector projector(spot);
+  const double midZ = 0.5 * (spot.V.col(2).minCoeff() + spot.V.col(2).maxCoeff());
+  const Triangles back = trianglesWhere(spot, [&](const Eigen::Vector3d& c) { return c.z() < midZ; });
+  const Eigen::VectorXd measured = targetCoverage(spot, spot.V, back, 1.0).distances;
+  const TwoWayDistance fresh = measureDistance(spot, projector, spot.V, back, UpAxis{});
+  const TwoWayDistance given = measureDistance(spot, projector, spot.V, back, UpAxis{}, &measured);
+  EXPECT_EQ(given.targetToInflated.distances, fresh.targetToInflated.distances);
+  EXPECT_EQ(given.targetToInflated.summary.rms, fresh.targetToInflated.summary.rms);
+  EXPECT_EQ(given.targetToInflated.summary.max, fresh.targetToInflated.summary.max);
+  EXPECT_EQ(given.inflatedToTarget.rms, fresh.inflatedToTarget.rms);
+  ASSERT_EQ(given.uncovered.size(), fresh.uncovered.size());
+  ASSERT_FALSE(fresh.uncovered.empty());
+  for (size_t k = 0; k < fresh.uncovered.size(); ++k) {
+    EXPECT_EQ(given.uncovered[k].triangles, fresh.uncovered[k].triangles);
+    EXPECT_EQ(given.uncovered[k].insideFraction, fresh.uncovered[k].insideFraction);
+    EXPECT_EQ(given.uncovered[k].offFlatSide, fresh.uncovered[k].offFlatSide);
+    EXPECT_EQ(uncoveredMessage(given.uncovered[k]), uncoveredMessage(fresh.uncovered[k]));
+  }
+}
+
 TEST(UncoveredRegions, SeparatePartsAreSeparateRegionsLargestFirstAndSmallOnesIgnored) {
   // The square's middle band is covered; its left strip (x < 0.3) and a smaller right strip (x > 0.85) are
   // not: two regions, the left one first.

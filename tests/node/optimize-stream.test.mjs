@@ -123,3 +123,30 @@ test('panels that cannot be made are refused with each problem and its place on 
     return true;
   });
 });
+
+test('the streamed distance is the shape\'s own: the target\'s side as the optimizer measured it equals measuring again', () => {
+  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
+  const session = api.targetSession();
+  session.setTarget(sphere.positions, sphere.indices);
+  const design = JSON.parse(read('../../web/public/gallery/sphere3.billow.json'));
+  const seams = design.seams.map(({ points, closed }) => ({ points, closed, weight: 1 }));
+  const scale = 0.25;
+  assert.ok(session.startOptimization(seams, { scale, triangles: 600 }).ok);
+  for (let k = 0; k < 4; k++) {
+    const status = session.optimizeStep(1, 0);
+    assert.ok(status.state === 'running' || status.state === 'converged', status.message);
+    const streamed = session.optimizedDistance(scale, '+y');
+    const mesh = session.optimizedMesh();
+    const surface = [];
+    for (let f = 0; f < mesh.outer.length; f++) if (mesh.outer[f]) surface.push(...mesh.triangles.slice(3 * f, 3 * f + 3));
+    const fresh = session.distanceToTarget(session.optimizedPositions(), scale, surface, '+y');
+    for (const key of ['rms', 'max', 'targetRms', 'targetMax']) {
+      assert.ok(Math.abs(streamed[key] - fresh[key]) <= 1e-12 * Math.max(1, fresh[key]), `${key}: ${streamed[key]} vs ${fresh[key]}`);
+    }
+    assert.ok(Math.abs(streamed.targetRms - status.targetDistanceRms) <= 1e-12, 'the record\'s figure');
+    assert.deepEqual(streamed.distances, fresh.distances);
+    assert.deepEqual(streamed.uncoveredTriangles, fresh.uncoveredTriangles);
+    assert.deepEqual(streamed.uncovered.map((r) => r.message), fresh.uncovered.map((r) => r.message));
+  }
+  session.delete();
+});

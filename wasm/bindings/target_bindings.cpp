@@ -37,6 +37,7 @@
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
 //   optimizedTrianglesPtr() #F*3 i32 / optimizedTriangles(), optimizedOuterPtr() #F i32: the optimizer's sewn mesh
+//   t.optimizedDistance(scale, up): distanceToTarget of the optimizer's current shape on its outer surface
 //   t.distanceToTarget(positionsPtr, numVertices, scale, surfacePtr, numSurfaceTriangles, up)
 //     -> { rms, max, diagonal }
 //     (rms and max of |d| over the diagonal of the target's box, over the corners of the #S x 3 int32 surface
@@ -210,22 +211,44 @@ class TargetSession {
           Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(surface), numSurfaceTriangles, 3);
       if (F.size() && (F.minCoeff() < 0 || F.maxCoeff() >= numVertices))
         throw billow::Error("seams.bad-input", "The shape's surface refers to points it does not have.");
-      const billow::TwoWayDistance d = billow::measureDistance(mesh_, *projector_, x, F, readUp(json{{"up", up}}));
-      distances_ = scale * d.signedDistances;
-      uncoveredTriangles_.clear();
-      for (const billow::UncoveredRegion& r : d.uncovered)
-        for (int f : r.triangles)
-          for (int k = 0; k < 3; ++k) uncoveredTriangles_.push_back(mesh_.F(f, k));
-      const double diagonal = scale * d.diagonal;
-      json out = {{"rms", d.inflatedToTarget.rms}, {"max", d.inflatedToTarget.max}, {"diagonal", diagonal}};
-      if (F.rows()) {
-        out["targetRms"] = d.targetToInflated.summary.rms;
-        out["targetMax"] = d.targetToInflated.summary.max;
-        out["uncoveredDistance"] = billow::kUncoveredDistance;
-        out["uncovered"] = billow::uncoveredJson(d.uncovered);
-      }
-      return out.dump();
+      return distanceJson(billow::measureDistance(mesh_, *projector_, x, F, readUp(json{{"up", up}})), scale);
     });
+  }
+
+  // distanceToTarget of the optimizer's current shape on its outer surface, the other way as its last record
+  // measured it when the shape has not changed since (one closest-point search per target vertex less per
+  // iterate streamed).
+  std::string optimizedDistance(double scale, const std::string& up) {
+    return guarded([&] {
+      requireTarget();
+      if (!optimizer_) throw billow::Error("optimize.not-started", "There are no panels to optimize yet.");
+      if (!(scale > 0) || !std::isfinite(scale))
+        throw billow::Error("pattern.bad-scale", "The target's size is not valid.");
+      const billow::Vertices x = optimizer_->inflated() / scale;
+      const Eigen::VectorXd* measured = optimizer_->targetDistances();
+      const Eigen::VectorXd targetDistances = measured ? Eigen::VectorXd(*measured / scale) : Eigen::VectorXd();
+      return distanceJson(billow::measureDistance(mesh_, *projector_, x, billow::outerTriangles(optimizer_->mesh()),
+                                                  readUp(json{{"up", up}}), measured ? &targetDistances : nullptr),
+                          scale);
+    });
+  }
+
+  // distanceToTarget's figures; keeps the per-point distances [m] and the uncovered triangles for their pointers.
+  std::string distanceJson(const billow::TwoWayDistance& d, double scale) {
+    distances_ = scale * d.signedDistances;
+    uncoveredTriangles_.clear();
+    for (const billow::UncoveredRegion& r : d.uncovered)
+      for (int f : r.triangles)
+        for (int k = 0; k < 3; ++k) uncoveredTriangles_.push_back(mesh_.F(f, k));
+    const double diagonal = scale * d.diagonal;
+    json out = {{"rms", d.inflatedToTarget.rms}, {"max", d.inflatedToTarget.max}, {"diagonal", diagonal}};
+    if (d.targetToInflated.distances.size()) {  // measured on a surface
+      out["targetRms"] = d.targetToInflated.summary.rms;
+      out["targetMax"] = d.targetToInflated.summary.max;
+      out["uncoveredDistance"] = billow::kUncoveredDistance;
+      out["uncovered"] = billow::uncoveredJson(d.uncovered);
+    }
+    return out.dump();
   }
   uintptr_t distancesPtr() const { return reinterpret_cast<uintptr_t>(distances_.data()); }
   uintptr_t uncoveredTrianglesPtr() const { return reinterpret_cast<uintptr_t>(uncoveredTriangles_.data()); }
@@ -430,6 +453,7 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("cutTrianglesPtr", &TargetSession::cutTrianglesPtr)
       .function("faceSegmentPtr", &TargetSession::faceSegmentPtr)
       .function("distanceToTarget", &TargetSession::distanceToTarget)
+      .function("optimizedDistance", &TargetSession::optimizedDistance)
       .function("distancesPtr", &TargetSession::distancesPtr)
       .function("uncoveredTrianglesPtr", &TargetSession::uncoveredTrianglesPtr)
       .function("uncoveredTriangles", &TargetSession::uncoveredTriangles);

@@ -489,8 +489,9 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
     r.distanceRms += d * d, r.distanceMax = std::max(r.distanceMax, d), ++count;
   }
   r.distanceRms = count ? std::sqrt(r.distanceRms / count) : 0;
-  const DistanceSummary coverage = targetCoverage(imls_->target(), x_, outerTriangles(mesh_), D).summary;
-  r.targetDistanceRms = coverage.rms, r.targetDistanceMax = coverage.max;
+  TargetCoverage coverage = targetCoverage(imls_->target(), x_, outerTriangles(mesh_), D);
+  r.targetDistanceRms = coverage.summary.rms, r.targetDistanceMax = coverage.summary.max;
+  targetDistances_ = std::move(coverage.distances), coverageShape_ = x_;
   r.seamMismatch = objective_->maxEdgeMismatch(X_);
   const double norm = double(objective_->numVertices()) * D;
   // With every trial projected onto equal seam lengths the constraint is hard, and stationarity is that of the
@@ -502,6 +503,11 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
   history_.push_back(r);
   if (options_.keepShapes) shapes_.push_back(x_);
   if (!projected && r.objective < best_.E) best_ = {r.objective, X_, x_, g_};
+}
+
+const Eigen::VectorXd* PatternOptimizer::targetDistances() const {
+  const bool current = coverageShape_.rows() == x_.rows() && (coverageShape_.array() == x_.array()).all();
+  return current && targetDistances_.size() ? &targetDistances_ : nullptr;
 }
 
 void PatternOptimizer::finish(OptimizeState s, const std::string& message) {

@@ -229,6 +229,10 @@ class PatternOptimizer {
   const PatternObjective& objective() const { return *objective_; }
   const std::vector<OptimizeRecord>& history() const { return history_; }
   const std::vector<Vertices>& shapes() const { return shapes_; }  // when options.keepShapes
+  // Per target vertex, its distance to the inflated outer surface [m], as the last record measured it for
+  // targetDistanceRms; null once the shape has changed since. The app streams every iterate's distances both
+  // ways, and so need not measure this way again.
+  const Eigen::VectorXd* targetDistances() const;
   const OptimizeTimings& timings() const { return timings_; }
   const OptimizeOptions& options() const { return options_; }  // as used (slidingOptions)
   bool slidingSeams() const { return sliding_; }
@@ -369,6 +373,8 @@ class PatternOptimizer {
   std::vector<Eigen::VectorXd> S_, Y_;  // L-BFGS pairs
   std::vector<OptimizeRecord> history_;
   std::vector<Vertices> shapes_;
+  Eigen::VectorXd targetDistances_;  // targetDistances(), of the shape coverageShape_
+  Vertices coverageShape_;
   OptimizeTimings timings_;
   OptimizeState state_ = OptimizeState::Running;
   std::string message_;

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <numeric>
+#include <optional>
 #include <vector>
 
 #include "mesh/location.hpp"
@@ -44,12 +45,11 @@ DistanceSummary summarizeDistances(const Eigen::VectorXd& distances, const Trian
 
 namespace {
 
-// targetCoverage against the shape's projector (measureDistance uses it again for what helps).
-TargetCoverage coverage(const TriMesh& target, const SurfaceProjector& shapeProjector, double diagonal) {
+// The target's distances to a shape, summarized: RMS weighted by the target vertices' areas, max.
+TargetCoverage summarizeCoverage(const TriMesh& target, Eigen::VectorXd distances, double diagonal) {
   TargetCoverage c;
-  c.distances = Eigen::VectorXd::Zero(target.numVertices());
+  c.distances = std::move(distances);
   if (target.numVertices() == 0) return c;
-  for (int v = 0; v < target.numVertices(); ++v) shapeProjector.project(target.V.row(v).transpose(), &c.distances[v]);
   Eigen::VectorXd area = Eigen::VectorXd::Zero(target.numVertices());
   for (int f = 0; f < target.numTriangles(); ++f)
     for (int k = 0; k < 3; ++k) area[target.F(f, k)] += triangleArea(target, f) / 3;
@@ -57,6 +57,13 @@ TargetCoverage coverage(const TriMesh& target, const SurfaceProjector& shapeProj
   if (total > 0) c.summary.rms = std::sqrt(area.dot(c.distances.cwiseAbs2()) / total) / diagonal;
   c.summary.max = c.distances.maxCoeff() / diagonal;
   return c;
+}
+
+// targetCoverage against the shape's projector.
+TargetCoverage coverage(const TriMesh& target, const SurfaceProjector& shapeProjector, double diagonal) {
+  Eigen::VectorXd distances = Eigen::VectorXd::Zero(target.numVertices());
+  for (int v = 0; v < target.numVertices(); ++v) shapeProjector.project(target.V.row(v).transpose(), &distances[v]);
+  return summarizeCoverage(target, std::move(distances), diagonal);
 }
 
 }  // namespace
@@ -259,19 +266,22 @@ DistanceSummary TwoWayDistance::worse() const {
 }
 
 TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points,
-                               const Triangles& surface, const UpAxis& up) {
+                               const Triangles& surface, const UpAxis& up, const Eigen::VectorXd* targetDistances) {
   TwoWayDistance d;
   d.diagonal = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
   d.signedDistances = signedDistances(target, projector, points);
   d.inflatedToTarget = summarizeDistances(d.signedDistances, surface, d.diagonal);
   if (surface.rows() == 0) return d;
   const TriMesh shape{points, surface};
-  const SurfaceProjector shapeProjector(shape);
-  d.targetToInflated = coverage(target, shapeProjector, d.diagonal);
+  std::optional<SurfaceProjector> shapeProjector;
+  if (!targetDistances) shapeProjector.emplace(shape);
+  d.targetToInflated = targetDistances ? summarizeCoverage(target, *targetDistances, d.diagonal)
+                                       : coverage(target, *shapeProjector, d.diagonal);
   d.uncovered = uncoveredRegions(target, d.targetToInflated.distances, d.diagonal, up);
+  if (!d.uncovered.empty() && !shapeProjector) shapeProjector.emplace(shape);
   for (UncoveredRegion& r : d.uncovered) {
-    r.insideFraction = insideFraction(target, r, shape, shapeProjector);
-    r.offFlatSide = offFlatSide(target, r, shape, shapeProjector);
+    r.insideFraction = insideFraction(target, r, shape, *shapeProjector);
+    r.offFlatSide = offFlatSide(target, r, shape, *shapeProjector);
   }
   return d;
 }

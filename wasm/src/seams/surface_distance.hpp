@@ -84,8 +84,10 @@ struct TwoWayDistance {
 };
 
 // points: the shape in the target's units; surface: its outer triangles (none: one way only, over every point);
-// up: how the target stands, for the places of the parts left out.
+// up: how the target stands, for the places of the parts left out; targetDistances: the other way, per target
+// vertex, when already measured on this shape (PatternOptimizer::targetDistances, in the target's units).
 TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points,
-                               const Triangles& surface, const UpAxis& up);
+                               const Triangles& surface, const UpAxis& up,
+                               const Eigen::VectorXd* targetDistances = nullptr);
 
 }  // namespace billow

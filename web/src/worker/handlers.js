@@ -111,10 +111,9 @@ export function createHandlers(api) {
       // Every iterate streams: its inflated shape with its distance to the target, and every half second
       // the panels themselves (paper Sec. 5: the designer watches the optimization).
       let mesh = session.optimizedMesh();
-      let surface = outerSurface(mesh.triangles, mesh.outer);
       const iterate = () => {
         const positions = session.optimizedPositions();
-        const d = scale > 0 ? session.distanceToTarget(positions, scale, surface, physics.up) : null;
+        const d = scale > 0 ? session.optimizedDistance(scale, physics.up) : null;
         return { positions: new Float32Array(positions), distances: d?.distances, uncoveredTriangles: d?.uncoveredTriangles, distance: d && distanceSummary(d) };
       };
       // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
@@ -129,7 +128,6 @@ export function createHandlers(api) {
         if (status.remeshings === remeshings) return false;
         remeshings = status.remeshings;
         mesh = session.optimizedMesh();
-        surface = outerSurface(mesh.triangles, mesh.outer);
         return true;
       };
       let status = session.optimizeStep(0, STEP_MILLIS);

@@ -253,6 +253,18 @@ export class TargetSession {
     const tris = Int32Array.from(surface);
     const n = pos.length / 3;
     const summary = this.api.withHeap([pos, tris], (p, t) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale, t, tris.length / 3, up)));
+    return this.distanceArrays(summary, n);
+  }
+
+  // distanceToTarget of the optimizer's current shape on its outer surface (the target's side as the
+  // optimizer's last iterate measured it, not measured again).
+  optimizedDistance(scale, up = '+y') {
+    const summary = SolverApi.unwrap(this.session.optimizedDistance(scale, up));
+    return this.distanceArrays(summary, this.session.optimizedVertices());
+  }
+
+  // A distance summary with the per-point distances and the uncovered triangles its call left on the heap.
+  distanceArrays(summary, n) {
     const distances = new Float32Array(this.api.fromHeap(Float64Array, this.session.distancesPtr(), n));
     if (summary.targetRms === undefined) return { ...summary, distances };
     const uncoveredTriangles = new Uint32Array(this.api.fromHeap(Int32Array, this.session.uncoveredTrianglesPtr(), 3 * this.session.uncoveredTriangles()).buffer);
