@@ -120,8 +120,7 @@ inline void expectEndsAtItsBest(const std::vector<OptimizeRecord>& h) {
 }
 
 // The optimizer after `iterations` iterations (or where it stopped), stepped as the app's worker steps it.
-inline std::unique_ptr<PatternOptimizer> optimizedFor(const Fixture& f, int iterations) {
-  OptimizeOptions oo;
+inline std::unique_ptr<PatternOptimizer> optimizedFor(const Fixture& f, int iterations, OptimizeOptions oo = {}) {
   oo.stopping.maxIterations = iterations;
   oo.remeshing.coarseFactor = 1;  // the design's mesh throughout: the tests follow its outlines and seam rods
   auto opt = std::make_unique<PatternOptimizer>(f.scene->target, f.built, f.weights, oo);

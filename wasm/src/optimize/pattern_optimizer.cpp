@@ -781,8 +781,23 @@ bool PatternOptimizer::iterate() {
     }
     Vertices x;
     int newton = 0;
-    const Vertices predicted = predictEquilibrium(X);
-    const double predictedMove = (predicted - x_).rowwise().norm().maxCoeff();
+    Vertices predicted = predictEquilibrium(X);
+    double predictedMove = (predicted - x_).rowwise().norm().maxCoeff();
+    const double reach =
+        options_.search.shapeStepGrowth *
+        (predictedMoves_.empty() ? 0 : *std::max_element(predictedMoves_.begin(), predictedMoves_.end()));
+    if (h == 0 && reach > 0 && predictedMove > reach) {
+      alpha *= reach / predictedMove, next = 0.5 * alpha;
+      X = X_ + alpha * d;
+      if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12);
+      followBoundary(X);
+      if (simple && !outlinesSimple(X)) {
+        ++timings_.rejectedTrials;
+        continue;
+      }
+      predicted = predictEquilibrium(X);
+      predictedMove = (predicted - x_).rowwise().norm().maxCoeff();
+    }
     bool snapped = false;
     const EquilibriumLimits trial{kTrialAlignment, kTrialAlignDecrease,
                                   std::max(3 * predictedMove, 2 * kSnapDistance * objective_->modelSize()),
@@ -838,10 +853,12 @@ bool PatternOptimizer::iterate() {
         damping_ = std::min(damping_ * 4, 1e2);
     }
     stalled_ = (E_ - E) <= options_.stopping.relativeDecrease * std::abs(E_) ? stalled_ + 1 : 0;
+    predictedMoves_.push_back(predictedMove);
+    if (predictedMoves_.size() > 3) predictedMoves_.pop_front();
     X_ = X, x_ = std::move(x), g_ = std::move(g), E_ = E, ++iteration_;
     unpackPattern(X_, pattern_);
     record(alpha, newton, false);
-    history_.back().snapLimited = snapLimited;
+    history_.back().snapLimited = snapLimited, history_.back().predictedMove = predictedMove;
     return true;
   }
   return false;

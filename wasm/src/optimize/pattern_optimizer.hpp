@@ -16,6 +16,7 @@
 #pragma once
 #include <Eigen/SparseCholesky>
 #include <cmath>
+#include <deque>
 #include <memory>
 #include <optional>
 #include <string>
@@ -62,6 +63,11 @@ struct OptimizeSearch {
   double sobolevLength = 4;
   double maxMoveEdges = 0.5;  // largest panel-vertex move of one step, in mean rest edge lengths
   int maxHalvings = 12;
+  // A line search's first trial whose equilibrium is predicted (first order) to move some vertex more than this
+  // many times as far as the largest prediction of the last three accepted steps is shortened to that (0:
+  // never). Full steps predicted to move the balloon far settle higher about half the time, after 20-30 Newton
+  // iterations (bench/README.md "The line search").
+  double shapeStepGrowth = 5;
   // Every trial projected onto equal seam lengths, so the panels never drift far from sewable (one large
   // projection at the end can fold triangles).
   bool projectEveryStep = true;
@@ -166,10 +172,11 @@ struct OptimizeRecord {
   double distanceRms = 0, distanceMax = 0;  // closest-point distance of outer vertices / bbox diagonal
   // The other way: of the target's vertices to the outer surface (targetCoverage), which sees what is left out.
   double targetDistanceRms = 0, targetDistanceMax = 0;
-  double seamMismatch = 0;  // max relative stitched-edge length difference
-  double gradient = 0;      // scaled ||dE/dX||_inf (see gradientTolerance); its part tangent to equal seam lengths
-                            // (the Lagrangian's) while every trial is projected onto them
-  double stepLength = 0;    // line-search alpha
+  double seamMismatch = 0;   // max relative stitched-edge length difference
+  double gradient = 0;       // scaled ||dE/dX||_inf (see gradientTolerance); its part tangent to equal seam lengths
+                             // (the Lagrangian's) while every trial is projected onto them
+  double stepLength = 0;     // line-search alpha
+  double predictedMove = 0;  // the accepted trial's largest vertex move, predicted to first order [m] (0: none)
   int equilibriumIterations = 0;  // Newton iterations of the accepted solve
   double ms = 0;                  // since the optimizer was made
   bool projected = false;         // the final seam-length projection (not an L-BFGS step)
@@ -362,6 +369,7 @@ class PatternOptimizer {
   Eigen::VectorXd X_, g_;
   Vertices x_;
   double E_ = 0;
+  std::deque<double> predictedMoves_;  // of the last three accepted steps (OptimizeSearch::shapeStepGrowth)
   // The iterate of least objective on this phase's mesh (a resettling may raise the objective): finish() goes
   // back to it.
   struct Best {
