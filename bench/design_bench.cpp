@@ -151,6 +151,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.search.projectEveryStep = v != 0;
   else if (name == "maxMoveEdges")
     o.search.maxMoveEdges = v;
+  else if (name == "shapeStepGrowth")
+    o.search.shapeStepGrowth = v;
   else if (name == "gaussSeidelSweeps")
     o.search.gaussSeidelSweeps = int(v);
   else if (name == "gaussSeidelThreshold")
