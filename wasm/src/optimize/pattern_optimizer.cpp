@@ -771,10 +771,15 @@ bool PatternOptimizer::iterate() {
   std::nth_element(recent.begin(), recent.begin() + recent.size() / 2, recent.end());
   const int trialNewton =
       std::max(kTrialNewtonFloor, recent.empty() ? 0 : kTrialNewtonFactor * recent[recent.size() / 2]);
-  for (int h = 0; h <= options_.search.maxHalvings; ++h, alpha = next, next = 0.5 * alpha) {
-    Eigen::VectorXd X = X_ + alpha * d;
+  // The trial at a step: projected onto equal seam lengths, the interior carried along its outlines.
+  const auto trialAt = [&](double step) {
+    Eigen::VectorXd X = X_ + step * d;
     if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12);
     followBoundary(X);
+    return X;
+  };
+  for (int h = 0; h <= options_.search.maxHalvings; ++h, alpha = next, next = 0.5 * alpha) {
+    Eigen::VectorXd X = trialAt(alpha);
     if (simple && !outlinesSimple(X)) {
       ++timings_.rejectedTrials;
       continue;
@@ -788,9 +793,7 @@ bool PatternOptimizer::iterate() {
         (predictedMoves_.empty() ? 0 : *std::max_element(predictedMoves_.begin(), predictedMoves_.end()));
     if (h == 0 && reach > 0 && predictedMove > reach) {
       alpha *= reach / predictedMove, next = 0.5 * alpha;
-      X = X_ + alpha * d;
-      if (projectTrials_) projectSeamLengths(objective_->edgePairs(), X, 10, 1e-12);
-      followBoundary(X);
+      X = trialAt(alpha);
       if (simple && !outlinesSimple(X)) {
         ++timings_.rejectedTrials;
         continue;
