@@ -23,12 +23,14 @@ TEST(OptimizedPattern, OptimizedPatternStartsWhereTheOptimizerStands) {
   while (opt.step(1) == OptimizeState::Running) {
   }
   ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
-  ASSERT_EQ(opt.timings().remeshings, 1);
+  ASSERT_EQ(opt.timings().remeshings, 2);  // on its schedule, and the cut panels at the end
   const Pattern p = optimizedPattern(opt);
   ASSERT_EQ(p.panels.size(), f.built.pattern.panels.size());
   ASSERT_EQ(p.inflated.size(), p.panels.size());
   EXPECT_EQ(p.stitches.size(), opt.pattern().stitches.size());
-  EXPECT_NE(p.panels[0].vertices.rows(), f.built.pattern.panels[0].vertices.rows()) << "the panels were meshed anew";
+  const PanelVertices& flat = f.built.pattern.panels[0].vertices;
+  EXPECT_TRUE(p.panels[0].vertices.rows() != flat.rows() || !p.panels[0].vertices.isApprox(flat, 1e-3))
+      << "the panels were meshed anew";
   for (size_t k = 0; k < p.panels.size(); ++k) {
     EXPECT_EQ(p.panels[k].vertices, opt.pattern().panels[k].vertices);
     EXPECT_EQ(p.inflated[k].rows(), p.panels[k].vertices.rows());

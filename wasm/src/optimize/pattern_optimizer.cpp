@@ -942,6 +942,19 @@ void PatternOptimizer::slideWindow() {
     windowX_ = x_, windowStart_ = iteration_;
 }
 
+bool PatternOptimizer::settleCutPanels(const StopReason& stop) {
+  if (sliding_ || coarsePhase_ || stop.state == OptimizeState::Failed || cutChecks_ >= options_.remeshing.cutChecks)
+    return false;
+  ++cutChecks_;
+  takeCutShape();  // the iterate finish would give: the best one, seam lengths exact
+  const double before = history_.back().bothWaysDistance();
+  remeshedAt_ = iteration_, stalled_ = 0;
+  if (!remesh(fineEdgeLength_, designTriangles_)) return false;
+  const double after = history_.back().bothWaysDistance();
+  return stop.state == OptimizeState::Converged && after > (1 + options_.remeshing.cutSnap) * before &&
+         iteration_ < options_.stopping.maxIterations;
+}
+
 OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
   if (state_ != OptimizeState::Running) return state_;
   const double t0 = nowMs();
@@ -986,6 +999,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
                                options_.remeshing.every > 0 && timings_.remeshings < options_.remeshing.maxRemeshings &&
                                remeshedAt_ != iteration_;
       if (!remeshFirst) {
+        if (settleCutPanels(*stop)) continue;
         finish(stop->state, stop->message);
         break;
       }
