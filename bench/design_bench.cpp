@@ -137,10 +137,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.remeshing.every = int(v);
   else if (name == "maxRemeshings")
     o.remeshing.maxRemeshings = int(v);
-  else if (name == "cutChecks")
-    o.remeshing.cutChecks = int(v);
-  else if (name == "cutSnap")
-    o.remeshing.cutSnap = v;
+  else if (name == "cutPanels")
+    o.remeshing.cutPanels = v != 0;
   else if (name == "coarseFactor")
     o.remeshing.coarseFactor = v;
   else if (name == "coarseIterations")

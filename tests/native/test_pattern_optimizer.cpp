@@ -116,7 +116,7 @@ TEST(PatternOptimizer, ProjectedTrialsEndWhereTheTangentialGradientIsSmall) {
   for (const bool tangent : {false, true}) {
     OptimizeOptions o;
     o.search.tangentSteps = tangent;
-    o.remeshing.cutChecks = 0;  // stationary on its own mesh; the cut panels' fresh mesh is not
+    o.remeshing.cutPanels = false;  // stationary on its own mesh; the cut panels' fresh mesh is not
     const OptimizeRun r = optimize(f, o, 80);
     ASSERT_GE(r.history.size(), 3u);
     EXPECT_LT(r.history.back().seamMismatch, 1e-4);
@@ -217,7 +217,7 @@ TEST(PatternOptimizer, UnstableEquilibriumIsResettledNotTheEnd) {
   OptimizeOptions oo;
   oo.stopping.maxIterations = 25;
   oo.inflate.seamStiffness = 0;
-  oo.remeshing.cutChecks = 0;  // the resettling on this mesh, not the cut panels
+  oo.remeshing.cutPanels = false;  // the resettling on this mesh, not the cut panels
   const OptimizeRun r = optimize(f, oo);
   const auto& h = r.history;
   const int resettled = int(std::count_if(h.begin(), h.end(), [](const OptimizeRecord& k) { return k.resettled; }));
@@ -248,7 +248,7 @@ TEST(PatternOptimizer, FrontBackStuffedToyAbandonsTrialsThatSnapAndKeepsItsOutli
   // trials snaps (13 refused, 3.1 s).
   OptimizeOptions o;
   o.search.shapeStepGrowth = 0;
-  o.remeshing.cutChecks = 0;  // the outlines on the run's own mesh
+  o.remeshing.cutPanels = false;  // the outlines on the run's own mesh
   const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 20, o);
   const PatternOptimizer& opt = *optimized;
   const OptimizeTimings& t = opt.timings();
@@ -276,7 +276,7 @@ TEST(PatternOptimizer, FrontBackStuffedToyGoesOnAlongItsOutlinesThinNotches) {
   const Fixture f = makeFixture("stuffedtoy-front-back.billow.json", 1500);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
-  o.remeshing.cutChecks = 0;  // the outlines on the run's own mesh
+  o.remeshing.cutPanels = false;  // the outlines on the run's own mesh
   const std::unique_ptr<PatternOptimizer> optimized = optimizedFor(f, 20, o);
   const PatternOptimizer& opt = *optimized;
   const auto& h = opt.history();
@@ -316,7 +316,7 @@ TEST(PatternOptimizer, CoarseFirstPhaseCarriesOverToTheDesignsMesh) {
         "fine phase from %.3f %% to %.3f %%, %.1f s\n",
         iterations, switched->iteration, h[k - 1].ms / 1000, 100 * h.front().distanceRms, 100 * h[k - 1].distanceRms,
         100 * switched->distanceRms, 100 * h.back().distanceRms, opt.timings().totalMs / 1000);
-    // The switch, and the cut panels at the end (OptimizeRemeshing::cutChecks).
+    // The switch, and the cut panels at the end (OptimizeRemeshing::cutPanels).
     EXPECT_EQ(std::count_if(h.begin(), h.end(), [](const OptimizeRecord& r) { return r.remeshed; }), 2);
     EXPECT_LE(switched->iteration, iterations / 2);
     EXPECT_LT(opt.shapes().front().rows(), 0.4 * opt.inflated().rows()) << "the first phase is not coarse";
@@ -390,21 +390,6 @@ TEST(PatternOptimizer, RunEndsOnTheCutPanels) {
   EXPECT_NEAR(cut.distanceRms, history.back().distanceRms, 0.1 * history.back().distanceRms);
 }
 
-// Where the cut panels settle farther (here: every time, cutSnap < 0), a converged run goes on from them, at most
-// cutChecks times.
-TEST(PatternOptimizer, CutPanelsThatSettleFartherAreOptimizedFurther) {
-  const Fixture f = makeFixture("../../bench/designs/penguin-front-back.billow.json", 1000);
-  ASSERT_TRUE(f.built.ok());
-  OptimizeOptions o;
-  o.stopping.gradientTolerance = 1e30;  // converged wherever it is asked
-  o.remeshing.cutSnap = -1;
-  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
-  while (opt.step(1) == OptimizeState::Running) {
-  }
-  EXPECT_EQ(opt.state(), OptimizeState::Converged);
-  EXPECT_EQ(opt.timings().remeshings, o.remeshing.cutChecks);
-}
-
 // Under the app's rule the coarse phase ends on its own window, shorter than the fine mesh's: at the first iteration
 // where its best objective fell by less than 1 % over the last coarseWindow iterations (fb-spot's coarse optimum
 // comes within a dozen, and its 20-iteration window ran on to the 26th: 1.4 s of wasm without change).
@@ -449,7 +434,7 @@ TEST(PatternOptimizer, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
   OptimizeOptions o;
   o.remeshing.every = 4;
   o.stopping.maxIterations = 30;
-  o.remeshing.cutChecks = 0;  // the schedule's remeshings only
+  o.remeshing.cutPanels = false;  // the schedule's remeshings only
   PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
   while (opt.step(1) == OptimizeState::Running) {
   }
@@ -478,7 +463,7 @@ TEST(PatternOptimizer, RemeshingOnItsSchedule) {
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
   o.stopping.maxIterations = 6, o.remeshing.maxRemeshings = 100, o.remeshing.every = 3;
-  o.remeshing.cutChecks = 0;  // the schedule's remeshings only
+  o.remeshing.cutPanels = false;  // the schedule's remeshings only
   PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
   while (opt.step(1) == OptimizeState::Running) {
   }
@@ -703,7 +688,7 @@ TEST(PatternOptimizer, APanelBoundedByOneLoopStaysSmoothWhereTheLoopStarts) {
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
   o.stopping.maxIterations = 60;
-  o.remeshing.cutChecks = 0;  // its corner by the flattened panel's vertex numbers
+  o.remeshing.cutPanels = false;  // its corner by the flattened panel's vertex numbers
   const OptimizeRun r = optimize(f, o, 60);
   for (size_t p = 0; p < r.pattern.panels.size(); ++p) {
     ASSERT_EQ(f.built.panels[p].pieces.size(), 1u);

@@ -942,17 +942,11 @@ void PatternOptimizer::slideWindow() {
     windowX_ = x_, windowStart_ = iteration_;
 }
 
-bool PatternOptimizer::settleCutPanels(const StopReason& stop) {
-  if (sliding_ || coarsePhase_ || stop.state == OptimizeState::Failed || cutChecks_ >= options_.remeshing.cutChecks)
-    return false;
-  ++cutChecks_;
-  takeCutShape();  // the iterate finish would give: the best one, seam lengths exact
-  const double before = history_.back().bothWaysDistance();
-  remeshedAt_ = iteration_, stalled_ = 0;
-  if (!remesh(fineEdgeLength_, designTriangles_)) return false;
-  const double after = history_.back().bothWaysDistance();
-  return stop.state == OptimizeState::Converged && after > (1 + options_.remeshing.cutSnap) * before &&
-         iteration_ < options_.stopping.maxIterations;
+void PatternOptimizer::settleCutPanels(OptimizeState s) {
+  if (sliding_ || coarsePhase_ || s == OptimizeState::Failed || !options_.remeshing.cutPanels) return;
+  takeCutShape();  // the iterate finish gives: the best one, seam lengths exact
+  remeshedAt_ = iteration_;
+  remesh(fineEdgeLength_, designTriangles_);  // else the run's own mesh, as before
 }
 
 OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
@@ -999,7 +993,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
                                options_.remeshing.every > 0 && timings_.remeshings < options_.remeshing.maxRemeshings &&
                                remeshedAt_ != iteration_;
       if (!remeshFirst) {
-        if (settleCutPanels(*stop)) continue;
+        settleCutPanels(stop->state);
         finish(stop->state, stop->message);
         break;
       }

@@ -112,12 +112,9 @@ struct OptimizeRemeshing {
   int coarseIterations = 30;
   int coarseWindow = 10;
   // Held seams: where the run stops, its outlines are meshed anew at the design's triangle count, as a maker's cut
-  // panels are, and settled there, so the shape the designer gets is the cut panels' (the optimizer's own mesh can
-  // hold an equilibrium the cut panels do not have: a penguin's flippers stood out once cut). When that settles
-  // more than cutSnap (relative, both-ways distance) farther and the run had converged, it goes on from there, at
-  // most cutChecks times.
-  int cutChecks = 2;
-  double cutSnap = 0.2;
+  // panels are, and settled there, so the shape and distance the designer gets are the cut panels' (the optimizer's
+  // own mesh can hold an equilibrium they do not have: a gusseted penguin's flippers stood out once cut).
+  bool cutPanels = true;
 };
 
 // Sliding seams (Sec. 6, "Seam Placement": a seam of small weight moves to where the shape fits best). When some
@@ -298,8 +295,8 @@ class PatternOptimizer {
   // Ends the coarse first phase (OptimizeRemeshing::coarseFactor): the outlines meshed at the design's triangle
   // count, else the flattened panels started again; false (the run failed) when neither settles.
   bool leaveCoarsePhase();
-  // OptimizeRemeshing::cutChecks at a stop (`stop`): the cut panels as the current iterate; true when the run goes on.
-  bool settleCutPanels(const StopReason& stop);
+  // OptimizeRemeshing::cutPanels at a stop in state s: the cut panels settled as the current iterate.
+  void settleCutPanels(OptimizeState s);
   // Per panel, the current inflated position x of each panel vertex (what remeshPattern carries over).
   std::vector<Vertices> panelInflated() const;
   // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
@@ -400,7 +397,6 @@ class PatternOptimizer {
   Vertices windowX_;                      // x at the start of the current window (options.stopping.windowIterations)
   int windowStart_ = -1;                  // its iteration
   int remeshedAt_ = -1;                   // the iteration of the last remeshing (or attempt)
-  int cutChecks_ = 0;                     // settleCutPanels so far
   std::shared_ptr<const SeamRods> rods_;  // the seam rods of this phase (setUp), their coefficient at its start
   // The phase's rods with their coefficient at panels X (seamRodCoefficientAt), and its derivative when given.
   std::shared_ptr<const SeamRods> rodsAt(const Eigen::VectorXd& X, Eigen::VectorXd* dcdX = nullptr) const;
