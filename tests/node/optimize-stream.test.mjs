@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
 import { readObjText } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
+import { cutPanelsNote } from '../../web/src/app/panels.js';
 
 const api = await loadApi();
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
@@ -103,6 +104,9 @@ test('a design of 1,500 triangles and more starts on a coarse mesh, and its swit
     assert.equal(it.distances.length, vertices);
   }
   assert.equal(iterates.at(-1).remeshings, 2, 'the switch to the design\'s mesh and the cut panels');
+  // The run's own mesh's last figures come with the end, for the designer to be told where the cut panels differ.
+  const { ownMesh } = step.value.status;
+  assert.ok(ownMesh && ownMesh.distanceRms > 0 && ownMesh.targetDistanceRms > 0, JSON.stringify(step.value.status));
   for (const it of iterates.slice(1, switched)) assert.equal(it.positions.length, first.positions.length, 'the coarse phase on its own mesh');
   assert.ok(iterates.at(-1).distanceRms < iterates[1].distanceRms, 'closer than the flattened panels');
   const optimized = JSON.parse(step.value.patternText);
@@ -155,4 +159,13 @@ test('the streamed distance is the shape\'s own: the target\'s side as the optim
     assert.deepEqual(streamed.uncovered.map((r) => r.message), fresh.uncovered.map((r) => r.message));
   }
   session.delete();
+});
+
+test('the designer is told when the cut panels inflate clearly farther than the optimizer\'s own mesh showed', () => {
+  const own = { distanceRms: 0.0073, targetDistanceRms: 0.015 };
+  const note = cutPanelsNote({ ownMesh: own, distanceRms: 0.027, targetDistanceRms: 0.022 });
+  assert.match(note, /1\.50 % → 2\.70 %/); // the worse way of each
+  assert.match(note, /another shape once cut/);
+  assert.equal(cutPanelsNote({ ownMesh: own, distanceRms: 0.0078, targetDistanceRms: 0.017 }), null, 'within 20 %: no note');
+  assert.equal(cutPanelsNote({ distanceRms: 0.027, targetDistanceRms: 0.022 }), null, 'a run that did not end on cut panels');
 });

@@ -33,7 +33,9 @@
 //                                                 distanceRms, distanceMax, targetDistanceRms,
 //                                                 targetDistanceMax (the target's to the shape),
 //                                                 flattenedDistanceRms (of the flattened panels' equilibrium),
-//                                                 seamMismatch, objective }
+//                                                 seamMismatch, objective, ownMesh ({ distanceRms,
+//                                                 targetDistanceRms } of the run's own mesh once it ended on its
+//                                                 cut panels: OptimizeRemeshing::cutPanels) }
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
 //   optimizedTrianglesPtr() #F*3 i32 / optimizedTriangles(), optimizedOuterPtr() #F i32: the optimizer's sewn mesh
@@ -49,7 +51,9 @@
 //     target triangles as vertex indices, U = uncoveredTriangles(): what the inflated pane draws as left out)
 #include <emscripten/bind.h>
 
+#include <algorithm>
 #include <cmath>
+#include <iterator>
 #include <memory>
 #include <nlohmann/json.hpp>
 
@@ -155,6 +159,12 @@ class TargetSession {
         out["seamMismatch"] = r.seamMismatch;
         out["objective"] = r.objective;
         out["flattenedDistanceRms"] = optimizer_->history().front().distanceRms;  // the flattened panels'
+        const auto& h = optimizer_->history();
+        const auto cut =
+            std::find_if(h.rbegin(), h.rend(), [](const billow::OptimizeRecord& q) { return q.cutPanels; });
+        if (cut != h.rend() && std::next(cut) != h.rend())  // the run's own mesh's last figures, before its cut panels
+          out["ownMesh"] = {{"distanceRms", std::next(cut)->distanceRms},
+                            {"targetDistanceRms", std::next(cut)->targetDistanceRms}};
       }
       return out.dump();
     });

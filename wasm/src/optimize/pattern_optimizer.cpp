@@ -946,7 +946,7 @@ void PatternOptimizer::settleCutPanels(OptimizeState s) {
   if (sliding_ || coarsePhase_ || s == OptimizeState::Failed || !options_.remeshing.cutPanels) return;
   takeCutShape();  // the iterate finish gives: the best one, seam lengths exact
   remeshedAt_ = iteration_;
-  remesh(fineEdgeLength_, designTriangles_);  // else the run's own mesh, as before
+  if (remesh(fineEdgeLength_, designTriangles_)) history_.back().cutPanels = true;  // else the run's own mesh
 }
 
 OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {

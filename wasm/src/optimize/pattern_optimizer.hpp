@@ -194,6 +194,9 @@ struct OptimizeRecord {
   // The optimizer went back to its best iterate of this mesh at the end (not an L-BFGS step): resettlings had
   // left it at a worse equilibrium.
   bool restored = false;
+  // The run's end: its outlines meshed anew as they are cut and settled (OptimizeRemeshing::cutPanels); the record
+  // before is the run's own mesh's last.
+  bool cutPanels = false;
   // The distance to the target both ways as one figure: the RMS of the two ways' RMS.
   double bothWaysDistance() const {
     return std::sqrt(0.5 * (distanceRms * distanceRms + targetDistanceRms * targetDistanceRms));

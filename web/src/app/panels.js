@@ -8,7 +8,7 @@ import { optimizeArgs } from './stored-result.js';
 import { upOf } from './up-axis.js';
 import { MAX_SHEET, patternStatRows, exportOptions, formatMillimeters, formatSize } from './fabrication.js';
 import { renderStats } from '../views/stats-list.js';
-import { formatDistance } from './units.js';
+import { formatDistance, worseDistance } from './units.js';
 
 const STORED_STATUS = 'Showing the stored result while it is refined live';
 
@@ -18,6 +18,19 @@ export function optimizerEnd({ state, iteration }) {
   const steps = `${iteration} step${iteration === 1 ? '' : 's'}`;
   if (state === 'converged') return `settled after ${steps}`;
   return `stopped at the optimizer's limit (${steps}) before settling; the panels may fit a little better than shown`;
+}
+
+// When the optimized outlines, cut and inflated, settle clearly farther from the target than the optimizer's own
+// mesh had (status.ownMesh, OptimizeRemeshing::cutPanels): part of the balloon takes another shape once cut, and
+// the panes show it as cut. Null otherwise.
+export function cutPanelsNote({ ownMesh, distanceRms, targetDistanceRms }) {
+  if (!ownMesh) return null;
+  const own = worseDistance({ rms: ownMesh.distanceRms, targetRms: ownMesh.targetDistanceRms });
+  const cut = worseDistance({ rms: distanceRms, targetRms: targetDistanceRms });
+  if (!(cut > 1.2 * own)) return null;
+  const percent = (f) => `${(100 * f).toFixed(2)} %`;
+  return `Cut from these outlines, the panels inflate farther from the target than the optimizer's own mesh showed ` +
+    `(${percent(own)} → ${percent(cut)}): part of the balloon takes another shape once cut. The panes show it as cut.`;
 }
 
 export class Panels {
@@ -82,6 +95,7 @@ export class Panels {
   // edit supersedes this one (commitDesign cancels it).
   async make() {
     this.markOutdated(false);
+    this.messages.resolve('distance.cut-panels');
     const revision = this.app.revision;
     this.client.supersede('inflation');
     const call = this.client.latest(
@@ -107,7 +121,11 @@ export class Panels {
       this.store.dropResult('stored'); // replaced by the live result
       this.messages.resolve('pattern', { prefix: true });
       const shown = await this.showVersion('optimized');
-      if (shown && revision === this.app.revision) this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
+      if (shown && revision === this.app.revision) {
+        this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
+        const note = cutPanelsNote(result.status);
+        if (note) this.messages.show('notice', note, [], { cause: 'distance.cut-panels' });
+      }
     } catch (error) {
       if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed || revision !== this.app.revision) return;
       this.showFailure(error);
@@ -124,6 +142,7 @@ export class Panels {
     for (const pane of [this.panes.inflated, this.panes.pattern]) pane.element.closest('.pane')?.toggleAttribute('data-stale', outdated && shown);
     if (!outdated || !shown) return;
     this.messages.resolve('distance.uncovered', { prefix: true });
+    this.messages.resolve('distance.cut-panels');
     this.app.setStatus('These seams make no panels yet (see the seam panel): the panels shown are from the seams before');
   }
 
