@@ -512,7 +512,10 @@ const Eigen::VectorXd* PatternOptimizer::targetDistances() const {
 
 void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   message_ = message;
-  if (s != OptimizeState::Failed) takeCutShape();
+  if (s != OptimizeState::Failed) {
+    settleCutPanels();
+    takeCutShape();
+  }
   state_ = s;
   timings_.totalMs = elapsedMs();
 }
@@ -942,10 +945,9 @@ void PatternOptimizer::slideWindow() {
     windowX_ = x_, windowStart_ = iteration_;
 }
 
-void PatternOptimizer::settleCutPanels(OptimizeState s) {
-  if (sliding_ || coarsePhase_ || s == OptimizeState::Failed || !options_.remeshing.cutPanels) return;
-  takeCutShape();  // the iterate finish gives: the best one, seam lengths exact
-  remeshedAt_ = iteration_;
+void PatternOptimizer::settleCutPanels() {
+  if (sliding_ || coarsePhase_ || !options_.remeshing.cutPanels) return;
+  takeCutShape();  // the iterate to cut: the best one, seam lengths exact
   if (remesh(fineEdgeLength_, designTriangles_)) history_.back().cutPanels = true;  // else the run's own mesh
 }
 
@@ -993,7 +995,6 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
                                options_.remeshing.every > 0 && timings_.remeshings < options_.remeshing.maxRemeshings &&
                                remeshedAt_ != iteration_;
       if (!remeshFirst) {
-        settleCutPanels(stop->state);
         finish(stop->state, stop->message);
         break;
       }

@@ -298,8 +298,8 @@ class PatternOptimizer {
   // Ends the coarse first phase (OptimizeRemeshing::coarseFactor): the outlines meshed at the design's triangle
   // count, else the flattened panels started again; false (the run failed) when neither settles.
   bool leaveCoarsePhase();
-  // OptimizeRemeshing::cutPanels at a stop in state s: the cut panels settled as the current iterate.
-  void settleCutPanels(OptimizeState s);
+  // OptimizeRemeshing::cutPanels at the run's end (finish): the cut panels settled as the current iterate.
+  void settleCutPanels();
   // Per panel, the current inflated position x of each panel vertex (what remeshPattern carries over).
   std::vector<Vertices> panelInflated() const;
   // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
