@@ -433,10 +433,12 @@ TEST(PatternOptimizer, RemeshingKeepsPanelsAndSeamsAndGoesOn) {
   const OptimizeRecord &before = *(at - 1), &after = *at, &last = h.back();
   std::printf(
       "[figures] remesh at iteration %d: rms %.3f%% -> %.3f%%, then %.3f%% after %d iterations; %d "
-      "remeshings (%.0f ms)\n",
+      "remeshings (%.0f ms), %d elements (the design %d)\n",
       after.iteration, 100 * before.distanceRms, 100 * after.distanceRms, 100 * last.distanceRms, last.iteration,
-      opt.timings().remeshings, opt.timings().remeshMs);
+      opt.timings().remeshings, opt.timings().remeshMs, opt.mesh().numTriangles(), int(f.built.figures.triangles));
   EXPECT_EQ(opt.pattern().panels.size(), f.built.pattern.panels.size());
+  // At the design's size: meshed by its edge length alone, sliding runs went on at 1.45 x its triangles.
+  EXPECT_NEAR(opt.mesh().numTriangles(), f.built.figures.triangles, 0.1 * f.built.figures.triangles);
   EXPECT_NEAR(after.distanceRms, before.distanceRms, 0.2 * before.distanceRms);
   EXPECT_LT(last.distanceRms, after.distanceRms);
   EXPECT_LT(last.seamMismatch, 1e-4);

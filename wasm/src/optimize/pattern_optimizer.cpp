@@ -90,7 +90,7 @@ double boundingDiagonal(const TriMesh& mesh) {
 }
 
 // remeshPattern at edge length h, and again at the edge length that gives about `triangles` (> 0) when h gave
-// more than 10 % off: the remesher's triangles at an edge length are 0.7-1.25 x the pattern builder's.
+// more than 10 % off: the remesher's triangles at an edge length are 0.7-1.45 x the pattern builder's.
 RemeshedPattern remeshNear(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h,
                            double triangles) {
   RemeshedPattern out = remeshPattern(built, inflated, h);
@@ -197,14 +197,14 @@ bool PatternOptimizer::projectStart() {
 
 std::vector<Vertices> PatternOptimizer::panelInflated() const { return panelPositions(mesh_, x_); }
 
-bool PatternOptimizer::remesh(double h, double triangles) {
+bool PatternOptimizer::remesh() {
   const double t0 = nowMs();
   BuiltPattern current = built_;
   current.pattern = pattern_;
   const std::vector<Vertices> inflated = panelInflated();
   RemeshedPattern remeshed;
   try {
-    remeshed = remeshNear(current, inflated, h, triangles);
+    remeshed = remeshNear(current, inflated, fineEdgeLength_, designTriangles_);
   } catch (const Error&) {
     return false;  // an outline that no longer bounds a simple polygon: go on with the old mesh
   }
@@ -249,7 +249,7 @@ void PatternOptimizer::setUpFlattened() {
 
 bool PatternOptimizer::leaveCoarsePhase() {
   remeshedAt_ = iteration_, stalled_ = 0;
-  if (remesh(fineEdgeLength_, flattened_.figures.triangles)) {
+  if (remesh()) {
     coarsePhase_ = false, flattened_ = {};
     return true;
   }
@@ -948,7 +948,7 @@ void PatternOptimizer::slideWindow() {
 void PatternOptimizer::settleCutPanels() {
   if (sliding_ || coarsePhase_ || !options_.remeshing.cutPanels) return;
   takeCutShape();  // the iterate to cut: the best one, seam lengths exact
-  if (remesh(fineEdgeLength_, designTriangles_)) history_.back().cutPanels = true;  // else the run's own mesh
+  if (remesh()) history_.back().cutPanels = true;  // else the run's own mesh
 }
 
 OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
@@ -999,7 +999,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
         break;
       }
       remeshedAt_ = iteration_, stalled_ = 0;
-      if (remesh(built_.figures.edgeLength)) continue;
+      if (remesh()) continue;
       finish(stop->state, stop->message);
       break;
     }
@@ -1007,7 +1007,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     if (options_.remeshing.every > 0 && timings_.remeshings < options_.remeshing.maxRemeshings &&
         iteration_ - std::max(remeshedAt_, 0) >= options_.remeshing.every) {
       remeshedAt_ = iteration_;
-      if (remesh(built_.figures.edgeLength)) continue;
+      if (remesh()) continue;
     }
     if (!iterate()) {
       if (S_.empty() && projectTrials_ && iteration_ == 0) {
