@@ -948,7 +948,8 @@ void PatternOptimizer::slideWindow() {
 void PatternOptimizer::settleCutPanels() {
   if (sliding_ || coarsePhase_ || !options_.remeshing.cutPanels) return;
   takeCutShape();  // the iterate to cut: the best one, seam lengths exact
-  if (remesh()) history_.back().cutPanels = true;  // else the run's own mesh
+  // Where the outlines do not mesh or settle anew, the run ends on its own mesh.
+  if (remesh()) history_.back().cutPanels = true;
 }
 
 OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
