@@ -303,11 +303,26 @@ std::vector<int> amalgamatedSupernodes(const std::vector<int>& etree, const std:
 void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& points, Ordering ordering) {
   n_ = int(H.cols() / 3);
   const Graph g = vertexGraph(H);
-  std::vector<int> etree;
-  postorderedElimination(g, fillReducingOrder(g, points, ordering), perm_, etree);
-  std::vector<int> pinv(n_);
-  for (int i = 0; i < n_; ++i) pinv[perm_[i]] = i;
-  first_ = amalgamatedSupernodes(etree, columnCounts(g, perm_, pinv, etree));
+  std::vector<int> etree, pinv(n_), count;
+  // An ordering's elimination: perm_, etree, pinv and the column counts; returns the sum of squared column
+  // lengths, proportional to the factorization's multiply-adds.
+  const auto eliminate = [&](Ordering o) {
+    postorderedElimination(g, fillReducingOrder(g, points, o), perm_, etree);
+    for (int i = 0; i < n_; ++i) pinv[perm_[i]] = i;
+    count = columnCounts(g, perm_, pinv, etree);
+    double work = 0;
+    for (int c : count) work += (c + 1.0) * (c + 1.0);
+    return work;
+  };
+  if (ordering == Ordering::FewerFlops) {
+    // Nested dissection by coordinate bisection suits round shapes, AMD flat sheets and limbs; each is once per
+    // mesh, so both are tried (bench/README.md "Linear solver").
+    const double byAmd = eliminate(Ordering::Amd);
+    if (points.rows() == n_ && eliminate(Ordering::NestedDissection) > byAmd) eliminate(Ordering::Amd);
+  } else {
+    eliminate(ordering);
+  }
+  first_ = amalgamatedSupernodes(etree, count);
   std::vector<int> superOf(n_);
   for (int s = 0; s + 1 < int(first_.size()); ++s)
     for (int j = first_[s]; j < first_[s + 1]; ++j) superOf[j] = s;

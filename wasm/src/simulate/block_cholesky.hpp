@@ -1,9 +1,9 @@
 // Sparse Cholesky factorization H = L L^T of a symmetric positive definite matrix made of 3x3 vertex blocks
 // (the inflation Hessian), by the multifrontal method on supernodes:
-//   analyze():  a fill-reducing ordering of the *vertices* (nested dissection by coordinate bisection, or
-//               AMD on the vertex graph), the elimination tree, its postorder, supernodes (chains of
-//               columns with nested structure, merged further when few zeros are added) and, for every
-//               nonzero of H, its slot in a frontal matrix. Once per mesh.
+//   analyze():  a fill-reducing ordering of the *vertices* (nested dissection by coordinate bisection, AMD on
+//               the vertex graph, or the one of the two with less work), the elimination tree, its postorder,
+//               supernodes (chains of columns with nested structure, merged further when few zeros are added)
+//               and, for every nonzero of H, its slot in a frontal matrix. Once per mesh.
 //   factorize(): per supernode, a dense frontal matrix = entries of H + the children's update matrices
 //               (extend-add), a dense partial Cholesky (blocked, with our own SIMD rank-update kernel, see
 //               block_cholesky.cpp) and the update matrix for the parent.
@@ -19,7 +19,8 @@ namespace billow {
 
 class BlockCholesky {
  public:
-  enum class Ordering { NestedDissection, Amd };
+  // FewerFlops: whichever of the two needs fewer (judged by the column counts of L).
+  enum class Ordering { NestedDissection, Amd, FewerFlops };
 
   // H: the lower triangle (row >= column) of a 3n x 3n symmetric matrix, compressed column storage. The
   // pattern must be closed under 3x3 vertex blocks' lower parts. points: n x 3 vertex positions for the

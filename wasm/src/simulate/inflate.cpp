@@ -104,7 +104,7 @@ InflationSolver::InflationSolver(SewnMesh mesh, const Material& material, double
   rods_->forEachHessianEntry([&](int r, int c, double) { rodSlot_.push_back(r >= c ? find(r, c) : -1); });
   choosePins();
   // Symbolic factorization, once per mesh.
-  s.chol.analyze(s.H, x_, BlockCholesky::Ordering::NestedDissection);
+  s.chol.analyze(s.H, x_, BlockCholesky::Ordering::FewerFlops);
   timings_.factorNonZeros = s.chol.factorNonZeros(), timings_.factorFlops = s.chol.factorFlops();
   forceScale_ = std::max(pressure_ * mesh_.meanEdgeLength * mesh_.meanEdgeLength, 1e-300);
   sizeScale_ = std::sqrt(mesh_.outerArea / (4 * M_PI));
