@@ -288,9 +288,8 @@ class PatternOptimizer {
   // rest triangle.
   bool projectStart();
   // Meshes the panels again from their current outlines at the design's size (its edge length, corrected to about
-  // its triangle count: at one edge length the remesher gives 0.7-1.45 x the pattern builder's triangles, and
-  // sliding runs meshed by the edge length alone went on at 1.45 x) and solves the new equilibrium; false (the
-  // old mesh kept) when that fails.
+  // its triangle count, since at one edge length the remesher gives 0.7-1.45 x the pattern builder's triangles)
+  // and solves the new equilibrium; false (the old mesh kept) when that fails.
   bool remesh();
   // The new mesh's equilibrium x (newton iterations, the remeshing started at t0 ms) as the current iterate, recorded
   // as a remeshing.
