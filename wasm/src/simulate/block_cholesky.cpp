@@ -303,31 +303,35 @@ std::vector<int> amalgamatedSupernodes(const std::vector<int>& etree, const std:
 void BlockCholesky::analyze(const Eigen::SparseMatrix<double>& H, const Eigen::MatrixXd& points, Ordering ordering) {
   n_ = int(H.cols() / 3);
   const Graph g = vertexGraph(H);
-  std::vector<int> etree, pinv(n_), count;
-  // An ordering's elimination: perm_, etree, pinv and the column counts; returns the sum of squared column
-  // lengths, proportional to the factorization's multiply-adds.
-  const auto eliminate = [&](Ordering o) {
-    postorderedElimination(g, fillReducingOrder(g, points, o), perm_, etree);
-    for (int i = 0; i < n_; ++i) pinv[perm_[i]] = i;
-    count = columnCounts(g, perm_, pinv, etree);
+  // An ordering's elimination: the postordered permutation, its elimination tree, the inverse permutation and
+  // the column counts of L, with the sum of squared column lengths (proportional to the multiply-adds).
+  struct Elimination {
+    std::vector<int> perm, etree, pinv, count;
     double work = 0;
-    for (int c : count) work += (c + 1.0) * (c + 1.0);
-    return work;
   };
-  if (ordering == Ordering::FewerFlops) {
-    // Nested dissection by coordinate bisection suits round shapes, AMD flat sheets and limbs; each is once per
-    // mesh, so both are tried (bench/README.md "Linear solver").
-    const double byAmd = eliminate(Ordering::Amd);
-    if (points.rows() == n_ && eliminate(Ordering::NestedDissection) > byAmd) eliminate(Ordering::Amd);
-  } else {
-    eliminate(ordering);
+  const auto eliminate = [&](Ordering o) {
+    Elimination e;
+    postorderedElimination(g, fillReducingOrder(g, points, o), e.perm, e.etree);
+    e.pinv.resize(n_);
+    for (int i = 0; i < n_; ++i) e.pinv[e.perm[i]] = i;
+    e.count = columnCounts(g, e.perm, e.pinv, e.etree);
+    for (int c : e.count) e.work += (c + 1.0) * (c + 1.0);
+    return e;
+  };
+  // FewerFlops: nested dissection by coordinate bisection suits round shapes, AMD flat sheets and limbs; each is
+  // once per mesh, so both are tried (bench/README.md "Linear solver").
+  Elimination chosen = eliminate(ordering == Ordering::FewerFlops ? Ordering::Amd : ordering);
+  if (ordering == Ordering::FewerFlops && points.rows() == n_) {
+    Elimination bisected = eliminate(Ordering::NestedDissection);
+    if (bisected.work <= chosen.work) chosen = std::move(bisected);
   }
-  first_ = amalgamatedSupernodes(etree, count);
+  perm_ = std::move(chosen.perm);
+  first_ = amalgamatedSupernodes(chosen.etree, chosen.count);
   std::vector<int> superOf(n_);
   for (int s = 0; s + 1 < int(first_.size()); ++s)
     for (int j = first_[s]; j < first_[s + 1]; ++j) superOf[j] = s;
-  buildRowStructure(g, pinv, etree, superOf);
-  buildScatterMap(H, pinv, superOf);
+  buildRowStructure(g, chosen.pinv, chosen.etree, superOf);
+  buildScatterMap(H, chosen.pinv, superOf);
 }
 
 void BlockCholesky::buildRowStructure(const std::vector<std::vector<int>>& g, const std::vector<int>& pinv,
