@@ -151,6 +151,13 @@ TEST(RestDerivative, JacobianProductMatchesFiniteDifferencesAndTranspose) {
   Eigen::VectorXd transposed = Eigen::VectorXd::Zero(X.size());
   addRestGradientProduct(mesh, pattern, X, x, lambda, mat, transposed);
   EXPECT_NEAR(lambda.dot(product), transposed.dot(dX), 1e-10 * std::abs(lambda.dot(product)));
+  // The kept element blocks give the same products, to the bit: the Gauss-Newton direction's CG relies on them.
+  const RestJacobian kept(mesh, pattern, X, x, mat);
+  Eigen::VectorXd keptProduct = Eigen::VectorXd::Zero(product.size()), keptTransposed = Eigen::VectorXd::Zero(X.size());
+  kept.addProduct(dX, keptProduct);
+  kept.addTransposedProduct(lambda, keptTransposed);
+  EXPECT_EQ(keptProduct, product);
+  EXPECT_EQ(keptTransposed, transposed);
 }
 
 // The pattern optimizer's seam rods follow the panels (seamRodCoefficientAt): their coefficient at X is the one the

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "flatten/flatten_boundary.hpp"
 #include "optimize/adjoint.hpp"
@@ -580,6 +581,7 @@ struct PatternOptimizer::ShapeModel {
   Eigen::LDLT<Matrix6d> rigidNormal;
   std::shared_ptr<const SeamRods> rods;
   Eigen::VectorXd dcdX;
+  std::optional<RestJacobian> restJacobian;
 };
 
 std::unique_ptr<PatternOptimizer::ShapeModel> PatternOptimizer::shapeModel() const {
@@ -602,6 +604,7 @@ std::unique_ptr<PatternOptimizer::ShapeModel> PatternOptimizer::shapeModel() con
   }
   model->rigidNormal.compute(normal);
   model->rods = rodsAt(X_, &model->dcdX);
+  model->restJacobian.emplace(mesh_, pattern_, X_, x_, material_);
   return model;
 }
 
@@ -614,7 +617,7 @@ Eigen::VectorXd PatternOptimizer::patternChange(const Eigen::VectorXd& v) const 
 Eigen::VectorXd PatternOptimizer::shapeProduct(const ShapeModel& model, const Eigen::VectorXd& v) const {
   const Eigen::VectorXd dX = patternChange(v);
   Eigen::VectorXd b = Eigen::VectorXd::Zero(3 * x_.rows()), dx, lambda, out = Eigen::VectorXd::Zero(v.size());
-  addRestJacobianProduct(mesh_, pattern_, X_, x_, dX, material_, b);
+  model.restJacobian->addProduct(dX, b);
   addRodJacobianProduct(*model.rods, x_, model.dcdX, dX, b);
   if (!stiffness_->solveAgain(b, dx)) return out;
   dx = -dx;
@@ -635,7 +638,7 @@ Eigen::VectorXd PatternOptimizer::shapeProduct(const ShapeModel& model, const Ei
       w.segment<3>(3 * rows[k].vertex[a]) += 2 * rows[k].weight * zk * rows[k].grad[a];
   }
   if (stiffness_->solveAgain(w, lambda)) {  // J^T w = -(dg/dX)^T K^-1 w
-    addRestGradientProduct(mesh_, pattern_, X_, x_, lambda, material_, out);
+    model.restJacobian->addTransposedProduct(lambda, out);
     addRodGradientProduct(*model.rods, x_, model.dcdX, lambda, out);
     out = -out;
   }

@@ -184,6 +184,38 @@ void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const 
   });
 }
 
+RestJacobian::RestJacobian(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
+                           const MembraneMaterial& material) {
+  elements_.reserve(size_t(mesh.numTriangles()));
+  forEachElement(mesh, pattern, X, [&](int t, const int* gid, const Eigen::Vector2d* R) {
+    Element e;
+    for (int c = 0; c < 3; ++c) e.vertex[c] = mesh.triangles(t, c), e.pattern[c] = gid[c];
+    membraneElementRestJacobian(R[0], R[1], R[2], x.row(e.vertex[0]), x.row(e.vertex[1]), x.row(e.vertex[2]), material,
+                                &e.J);
+    elements_.push_back(e);
+  });
+}
+
+void RestJacobian::addTransposedProduct(const Eigen::VectorXd& lambda, Eigen::VectorXd& out) const {
+  for (const Element& e : elements_) {
+    Vector9d l;
+    for (int c = 0; c < 3; ++c) l.segment<3>(3 * c) = lambda.segment<3>(3 * e.vertex[c]);
+    if (l.isZero(0)) continue;
+    const Eigen::Matrix<double, 6, 1> r = e.J.transpose() * l;
+    for (int c = 0; c < 3; ++c) out.segment<2>(2 * e.pattern[c]) += r.segment<2>(2 * c);
+  }
+}
+
+void RestJacobian::addProduct(const Eigen::VectorXd& dX, Eigen::VectorXd& out) const {
+  for (const Element& e : elements_) {
+    Eigen::Matrix<double, 6, 1> d;
+    for (int c = 0; c < 3; ++c) d.segment<2>(2 * c) = dX.segment<2>(2 * e.pattern[c]);
+    if (d.isZero(0)) continue;
+    const Vector9d r = e.J * d;
+    for (int c = 0; c < 3; ++c) out.segment<3>(3 * e.vertex[c]) += r.segment<3>(3 * c);
+  }
+}
+
 double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, double pressure,
                             double beta, Eigen::VectorXd* dcdX) {
   double area = 0, edges = 0;

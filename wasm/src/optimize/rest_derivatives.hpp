@@ -45,6 +45,26 @@ void addRestGradientProduct(const SewnMesh& mesh, const Pattern& pattern, const 
 void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
                             const Eigen::VectorXd& dX, const MembraneMaterial& material, Eigen::VectorXd& out);
 
+// dg/dX at one (X, x) with each element's 9 x 6 block kept, for many products there: the Gauss-Newton direction's
+// CG takes two per iteration, and the functions above evaluate every element's dual-number gradient anew each time.
+class RestJacobian {
+ public:
+  RestJacobian(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, const Vertices& x,
+               const MembraneMaterial& material);
+  // out += lambda^T dg/dX, as addRestGradientProduct.
+  void addTransposedProduct(const Eigen::VectorXd& lambda, Eigen::VectorXd& out) const;
+  // out += dg/dX dX, as addRestJacobianProduct.
+  void addProduct(const Eigen::VectorXd& dX, Eigen::VectorXd& out) const;
+
+ private:
+  struct Element {
+    int vertex[3];   // sewn vertices (3 DOFs each)
+    int pattern[3];  // panel vertices (2 DOFs each)
+    Matrix96d J;
+  };
+  std::vector<Element> elements_;
+};
+
 // The seam rods' coefficient of the panels X: seamRodCoefficient of the mesh sewn from them (its outer panels' rest
 // area, its mean rest edge length), and when given its derivative in X (2 per panel vertex). The pattern optimizer's
 // rods follow the panels so, as the cut panels' own rods do: the optimized panels must balance with the rods they
