@@ -68,6 +68,7 @@ OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector
   if (!hasSlidingSeams(options, seamWeights)) return o;
   o.search.tangentSteps = true;
   o.search.gaussNewton = true;
+  o.search.alignment = {10, true};
   if (o.sliding.iterationFactor > 1)
     o.stopping.maxIterations = int(std::lround(o.stopping.maxIterations * o.sliding.iterationFactor));
   o.stopping.windowDecrease = 0;
@@ -393,7 +394,7 @@ std::shared_ptr<const SeamRods> PatternOptimizer::rodsAt(const Eigen::VectorXd& 
 
 void PatternOptimizer::align(const Eigen::VectorXd& X, Vertices& x, double tolerance, double relativeDecrease) {
   const double t0 = nowMs();
-  alignRigid(*objective_, X, x, 300, tolerance, relativeDecrease);
+  alignRigid(*objective_, X, x, 300, tolerance, relativeDecrease, options_.search.alignment);
   timings_.alignMs += nowMs() - t0;
 }
 

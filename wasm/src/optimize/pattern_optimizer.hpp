@@ -25,6 +25,7 @@
 #include "optimize/adjoint.hpp"
 #include "optimize/harmonic_interior.hpp"
 #include "optimize/objectives.hpp"
+#include "optimize/rigid_align.hpp"
 #include "optimize/seam_projection.hpp"
 #include "simulate/inflate.hpp"
 
@@ -93,6 +94,8 @@ struct OptimizeSearch {
   bool gaussNewton = false;
   int gaussNewtonCg = 30;
   double gaussNewtonCgTolerance = 0.1;
+  // The rigid alignment's steps (rigid_align.hpp): plain Gauss-Newton, but for sliding seams (slidingOptions).
+  RigidAlignOptions alignment;
 };
 
 // Remeshing (Sec. 5.3, pattern/remesh_pattern.hpp): every `every` iterations (0: never) the panels are meshed

@@ -67,10 +67,34 @@ void applyRigid(Vertices& x, const Eigen::Vector3d& center, const Vector6d& step
     x.row(i) = (R * (x.row(i).transpose() - center) + center + step.tail<3>()).transpose();
 }
 
+// E's own Hessian in (omega, t) at x, halved as H is, by forward differences of g (six evaluations), in the scaled
+// variables of the step (S = diag(D, D, D, 1, 1, 1)). Clamped below at 1e-6 of its largest eigenvalue: along a free
+// direction (a lens sliding around a sphere) the damping alone would bound the step.
+Matrix6d scaledDifferencedHessian(const PatternObjective& obj, const Eigen::VectorXd& w, const Vertices& x,
+                                  const Eigen::Vector3d& center, const Vector6d& g, const Vector6d& S, double D) {
+  Matrix6d Hd;
+  for (int k = 0; k < 6; ++k) {
+    const double h = k < 3 ? 1e-6 : 1e-6 * D;  // radians, meters
+    Vector6d e = Vector6d::Zero();
+    e[k] = h;
+    Vertices moved = x;
+    applyRigid(moved, center, e);
+    Matrix6d Hk;
+    Vector6d gk;
+    evaluate(obj, w, moved, center, Hk, gk);
+    Hd.col(k) = (gk - g) / h;
+  }
+  const Matrix6d A = S.asDiagonal() * (0.5 * (Hd + Hd.transpose())) * S.asDiagonal();
+  const Eigen::SelfAdjointEigenSolver<Matrix6d> es(A);
+  const double largest = es.eigenvalues().maxCoeff();
+  if (es.info() != Eigen::Success || !(largest > 0)) return Matrix6d::Constant(NAN);
+  return es.eigenvectors() * es.eigenvalues().cwiseMax(1e-6 * largest).asDiagonal() * es.eigenvectors().transpose();
+}
+
 }  // namespace
 
 int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vertices& x, int maxIterations,
-               double tolerance, double relativeDecrease) {
+               double tolerance, double relativeDecrease, const RigidAlignOptions& options) {
   const double D = objective.modelSize();
   const Eigen::VectorXd w = objective.targetWeights(X);
   Eigen::Vector3d center = x.colwise().mean().transpose();
@@ -84,9 +108,14 @@ int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vert
     // Rotations are measured in radians, translations in meters: scale the rotation block by D.
     Vector6d s;
     s << Eigen::Vector3d::Constant(D), Eigen::Vector3d::Ones();
+    Matrix6d A0 = s.asDiagonal() * H * s.asDiagonal();
+    if (it >= options.gaussNewtonSteps) {
+      const Matrix6d Ad = scaledDifferencedHessian(objective, w, x, center, g, s, D);
+      if (Ad.allFinite()) A0 = Ad;
+    }
     bool accepted = false;
     for (int tries = 0; tries < 12 && !accepted; ++tries) {
-      Matrix6d A = s.asDiagonal() * H * s.asDiagonal();
+      Matrix6d A = A0;
       A.diagonal().array() += mu * (A.diagonal().maxCoeff() + 1e-300);
       const Vector6d step = -(s.asDiagonal() * A.ldlt().solve(s.asDiagonal() * g)).eval();
       Vertices trial = x;
@@ -95,6 +124,11 @@ int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vert
       Matrix6d Ht;
       Vector6d gt;
       const double Et = evaluate(objective, w, trial, trialCenter, Ht, gt);
+      const Vector6d scaledStep = step.cwiseQuotient(s);
+      const double modelChange = 2 * g.dot(step) + scaledStep.dot(A0 * scaledStep);
+      if (options.stopAtJump && std::isfinite(Et) && std::abs(modelChange) < 1e-9 * E &&
+          Et - E > 1e3 * std::abs(modelChange))
+        return it;
       if (std::isfinite(Et) && Et <= E) {
         const bool small =
             step.head<3>().norm() * D + step.tail<3>().norm() < tolerance * D || E - Et < relativeDecrease * E;
