@@ -109,8 +109,7 @@ int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vert
     // Rotations are measured in radians, translations in meters: scale the rotation block by D.
     Vector6d s;
     s << Eigen::Vector3d::Constant(D), Eigen::Vector3d::Ones();
-    // E's own Hessian is taken once a call: it changes little near the minimum, and each costs six evaluations
-    // (sphere3s-700: the alignment 0.68-0.78 -> 0.58-0.65 s, taken anew at every step).
+    // E's own Hessian once a call: it changes little near the minimum, and each costs six evaluations.
     if (it == options.gaussNewtonSteps) own = scaledDifferencedHessian(objective, w, x, center, g, s, D);
     const Matrix6d A0 = it >= options.gaussNewtonSteps && own.allFinite() ? own : s.asDiagonal() * H * s.asDiagonal();
     bool accepted = false;

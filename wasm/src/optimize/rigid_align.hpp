@@ -10,14 +10,9 @@
 
 namespace billow {
 
-// Moves x (the inflated shape of pattern X) in place; returns the Gauss-Newton iterations used. Stops when the
-// step is below tolerance x D, or lowered E by less than relativeDecrease x E (0: never). The adjoint gradient
-// needs the minimum itself: on a nearly rotation-invariant target (a sphere) 30 steps left the reduced gradient
-// 1-2 % off (tests/native/test_adjoint.cpp). A line-search trial needs only E: there the steps along the nearly
-// free rotation (5e-5 of the size, each lowering E by 1e-10 relative, a hundred of them) are not worth taking.
-// How it steps, per run. The defaults are plain Gauss-Newton, which held seams keep; a design with sliding seams, on
-// a nearly rotation-invariant target, needs the other two (PatternOptimizer's slidingOptions; bench/README.md "The
-// rigid alignment").
+// How the alignment steps, per run. The defaults are plain Gauss-Newton, which held seams keep; a design with sliding
+// seams, on a nearly rotation-invariant target, needs the other two (PatternOptimizer's slidingOptions; bench/README.md
+// "The rigid alignment").
 struct RigidAlignOptions {
   // After this many steps, E's own Hessian (by differences of its gradient) instead of J^T J: E_target and E_cover
   // pull against each other along a rotation, where J^T J overstates E's curvature up to hundreds of times and the
@@ -29,6 +24,11 @@ struct RigidAlignOptions {
   bool stopAtJump = false;
 };
 
+// Moves x (the inflated shape of pattern X) in place; returns the steps taken. Stops when the
+// step is below tolerance x D, or lowered E by less than relativeDecrease x E (0: never). The adjoint gradient
+// needs the minimum itself: on a nearly rotation-invariant target (a sphere) 30 steps left the reduced gradient
+// 1-2 % off (tests/native/test_adjoint.cpp). A line-search trial needs only E: there the steps along the nearly
+// free rotation (5e-5 of the size, each lowering E by 1e-10 relative, a hundred of them) are not worth taking.
 int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vertices& x, int maxIterations = 300,
                double tolerance = 1e-12, double relativeDecrease = 0, const RigidAlignOptions& options = {});
 
