@@ -42,6 +42,26 @@ void forEachElement(const SewnMesh& mesh, const Pattern& pattern, const Eigen::V
   }
 }
 
+// One element's share of the products with dg/dX, for sewn vertices v and panel vertices gid; J() gives its 9 x 6
+// block and is only asked for where the element's part of lambda (dX) is not zero.
+template <class Block>
+void addElementTransposedProduct(const int* v, const int* gid, const Eigen::VectorXd& lambda, Block&& J,
+                                 Eigen::VectorXd& out) {
+  Vector9d l;
+  for (int c = 0; c < 3; ++c) l.segment<3>(3 * c) = lambda.segment<3>(3 * v[c]);
+  if (l.isZero(0)) return;
+  const Eigen::Matrix<double, 6, 1> r = J().transpose() * l;
+  for (int c = 0; c < 3; ++c) out.segment<2>(2 * gid[c]) += r.segment<2>(2 * c);
+}
+template <class Block>
+void addElementProduct(const int* v, const int* gid, const Eigen::VectorXd& dX, Block&& J, Eigen::VectorXd& out) {
+  Vector6d d;
+  for (int c = 0; c < 3; ++c) d.segment<2>(2 * c) = dX.segment<2>(2 * gid[c]);
+  if (d.isZero(0)) return;
+  const Vector9d r = J() * d;
+  for (int c = 0; c < 3; ++c) out.segment<3>(3 * v[c]) += r.segment<3>(3 * c);
+}
+
 }  // namespace
 
 Vector9d membraneElementRestJacobian(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1, const Eigen::Vector2d& X2,
@@ -161,12 +181,13 @@ void addRestGradientProduct(const SewnMesh& mesh, const Pattern& pattern, const 
   Matrix96d J;
   forEachElement(mesh, pattern, X, [&](int t, const int* gid, const Eigen::Vector2d* R) {
     const int v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
-    Vector9d l;
-    for (int c = 0; c < 3; ++c) l.segment<3>(3 * c) = lambda.segment<3>(3 * v[c]);
-    if (l.isZero(0)) return;
-    membraneElementRestJacobian(R[0], R[1], R[2], x.row(v[0]), x.row(v[1]), x.row(v[2]), material, &J);
-    const Eigen::Matrix<double, 6, 1> r = J.transpose() * l;
-    for (int c = 0; c < 3; ++c) out.segment<2>(2 * gid[c]) += r.segment<2>(2 * c);
+    addElementTransposedProduct(
+        v, gid, lambda,
+        [&]() -> const Matrix96d& {
+          membraneElementRestJacobian(R[0], R[1], R[2], x.row(v[0]), x.row(v[1]), x.row(v[2]), material, &J);
+          return J;
+        },
+        out);
   });
 }
 
@@ -175,12 +196,13 @@ void addRestJacobianProduct(const SewnMesh& mesh, const Pattern& pattern, const 
   Matrix96d J;
   forEachElement(mesh, pattern, X, [&](int t, const int* gid, const Eigen::Vector2d* R) {
     const int v[3] = {mesh.triangles(t, 0), mesh.triangles(t, 1), mesh.triangles(t, 2)};
-    Eigen::Matrix<double, 6, 1> d;
-    for (int c = 0; c < 3; ++c) d.segment<2>(2 * c) = dX.segment<2>(2 * gid[c]);
-    if (d.isZero(0)) return;
-    membraneElementRestJacobian(R[0], R[1], R[2], x.row(v[0]), x.row(v[1]), x.row(v[2]), material, &J);
-    const Vector9d r = J * d;
-    for (int c = 0; c < 3; ++c) out.segment<3>(3 * v[c]) += r.segment<3>(3 * c);
+    addElementProduct(
+        v, gid, dX,
+        [&]() -> const Matrix96d& {
+          membraneElementRestJacobian(R[0], R[1], R[2], x.row(v[0]), x.row(v[1]), x.row(v[2]), material, &J);
+          return J;
+        },
+        out);
   });
 }
 
@@ -197,23 +219,15 @@ RestJacobian::RestJacobian(const SewnMesh& mesh, const Pattern& pattern, const E
 }
 
 void RestJacobian::addTransposedProduct(const Eigen::VectorXd& lambda, Eigen::VectorXd& out) const {
-  for (const Element& e : elements_) {
-    Vector9d l;
-    for (int c = 0; c < 3; ++c) l.segment<3>(3 * c) = lambda.segment<3>(3 * e.vertex[c]);
-    if (l.isZero(0)) continue;
-    const Eigen::Matrix<double, 6, 1> r = e.J.transpose() * l;
-    for (int c = 0; c < 3; ++c) out.segment<2>(2 * e.pattern[c]) += r.segment<2>(2 * c);
-  }
+  for (const Element& e : elements_)
+    addElementTransposedProduct(
+        e.vertex, e.pattern, lambda, [&]() -> const Matrix96d& { return e.J; }, out);
 }
 
 void RestJacobian::addProduct(const Eigen::VectorXd& dX, Eigen::VectorXd& out) const {
-  for (const Element& e : elements_) {
-    Eigen::Matrix<double, 6, 1> d;
-    for (int c = 0; c < 3; ++c) d.segment<2>(2 * c) = dX.segment<2>(2 * e.pattern[c]);
-    if (d.isZero(0)) continue;
-    const Vector9d r = e.J * d;
-    for (int c = 0; c < 3; ++c) out.segment<3>(3 * e.vertex[c]) += r.segment<3>(3 * c);
-  }
+  for (const Element& e : elements_)
+    addElementProduct(
+        e.vertex, e.pattern, dX, [&]() -> const Matrix96d& { return e.J; }, out);
 }
 
 double seamRodCoefficientAt(const SewnMesh& mesh, const Pattern& pattern, const Eigen::VectorXd& X, double pressure,

@@ -123,11 +123,11 @@ int alignRigid(const PatternObjective& objective, const Eigen::VectorXd& X, Vert
       Matrix6d Ht;
       Vector6d gt;
       const double Et = evaluate(objective, w, trial, trialCenter, Ht, gt);
-      const Vector6d scaledStep = step.cwiseQuotient(s);
-      const double modelChange = 2 * g.dot(step) + scaledStep.dot(A0 * scaledStep);
-      if (options.stopAtJump && std::isfinite(Et) && std::abs(modelChange) < 1e-9 * E &&
-          Et - E > 1e3 * std::abs(modelChange))
-        return it;
+      if (options.stopAtJump && std::isfinite(Et) && Et > E) {
+        const Vector6d scaledStep = step.cwiseQuotient(s);
+        const double modelChange = std::abs(2 * g.dot(step) + scaledStep.dot(A0 * scaledStep));
+        if (modelChange < 1e-9 * E && Et - E > 1e3 * modelChange) return it;
+      }
       if (std::isfinite(Et) && Et <= E) {
         const bool small =
             step.head<3>().norm() * D + step.tail<3>().norm() < tolerance * D || E - Et < relativeDecrease * E;
