@@ -212,10 +212,14 @@ bool PatternOptimizer::remesh() {
   }
   const Eigen::VectorXd oldX = X_;
   const Vertices oldx = x_;
+  const bool wasSimple = outlinesSimple(X_);
   setUp(remeshed.built);
   // The new panels must still sew. An outline that zig-zags below the edge length resamples into chords that
-  // differ across a seam; when projecting them back onto equal lengths fails, the old mesh is kept.
-  const bool sewable = !projectTrials_ || (projectStart() && objective_->maxEdgeMismatch(X_) < 1e-6);
+  // differ across a seam; when projecting them back onto equal lengths fails, the old mesh is kept. So it is
+  // where the projection makes an outline cross itself (a tight bend's chords pulled across each other), since
+  // such a panel cannot be cut.
+  const bool sewable = !projectTrials_ ||
+                       (projectStart() && objective_->maxEdgeMismatch(X_) < 1e-6 && (!wasSimple || outlinesSimple(X_)));
   Vertices x;
   int newton = 0;
   if (!sewable || !solveEquilibrium(X_, x_, x, &newton)) {  // back to the old mesh
@@ -561,6 +565,7 @@ std::optional<PatternOptimizer::CutShape> PatternOptimizer::cutShape(const Eigen
   c.X = X0;
   projectSeamLengths(objective_->edgePairs(), c.X, 10, 1e-12);
   followBoundary(c.X);
+  if (outlinesSimple(X0) && !outlinesSimple(c.X)) return std::nullopt;  // a panel that could not be cut
   if (!solveEquilibrium(c.X, x0, c.x, &c.newton, true)) return std::nullopt;
   c.E = settledEnergy(c.X, c.x);
   return c;
