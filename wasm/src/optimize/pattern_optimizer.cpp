@@ -40,6 +40,8 @@ constexpr int kTrialNewtonFactor = 5, kTrialNewtonFloor = 50;
 constexpr double kPredictionReach = 1000;
 // A Gauss-Newton step that lowered E by less than this (relative) is followed by an L-BFGS step.
 constexpr double kGaussNewtonStall = 1e-4;
+// OptimizeRemeshing::stallIterations: a mesh on which E fell by less than this (relative) over them is stalled.
+constexpr double kStallDecrease = 1e-3;
 }  // namespace
 
 const char* toString(OptimizeState s) {
@@ -69,6 +71,7 @@ OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector
   o.search.tangentSteps = true;
   o.search.gaussNewton = true;
   o.search.alignment = {10, true};
+  o.remeshing.stallIterations = o.sliding.stallIterations;
   if (o.sliding.iterationFactor > 1)
     o.stopping.maxIterations = int(std::lround(o.stopping.maxIterations * o.sliding.iterationFactor));
   o.stopping.windowDecrease = 0;
@@ -177,7 +180,7 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   x_ = startFromInflated(pattern_, mesh_);
   if (x_.rows() != mesh_.numVertices) x_ = sphericalStart(mesh_);
   S_.clear(), Y_.clear();
-  damping_ = 1, dampingScale_ = 0, gaussNewtonStalled_ = false;
+  dampingScale_ = 0, gaussNewtonStalled_ = false;
   stalled_ = 0;
   best_ = {};
 }
@@ -947,6 +950,14 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
   return std::nullopt;
 }
 
+bool PatternOptimizer::stalledOnThisMesh() const {
+  const int n = options_.remeshing.stallIterations;
+  if (n <= 0 || iteration_ - std::max(remeshedAt_, 0) < n) return false;
+  for (auto r = history_.rbegin(); r != history_.rend(); ++r)
+    if (r->iteration <= iteration_ - n) return r->objective - E_ < kStallDecrease * std::abs(E_);
+  return false;
+}
+
 void PatternOptimizer::slideWindow() {
   if (options_.stopping.windowIterations <= 0) return;
   if (windowStart_ < 0 || windowX_.rows() != x_.rows() ||
@@ -1015,7 +1026,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     }
     slideWindow();
     if (options_.remeshing.every > 0 && timings_.remeshings < options_.remeshing.maxRemeshings &&
-        iteration_ - std::max(remeshedAt_, 0) >= options_.remeshing.every) {
+        (iteration_ - std::max(remeshedAt_, 0) >= options_.remeshing.every || stalledOnThisMesh())) {
       remeshedAt_ = iteration_;
       if (remesh()) continue;
     }

@@ -104,6 +104,9 @@ struct OptimizeSearch {
 struct OptimizeRemeshing {
   int every = 0;
   int maxRemeshings = 10;
+  // Also meshed anew where the objective fell by less than a thousandth over the last stallIterations iterations on
+  // this mesh (0: never; sliding seams: OptimizeSliding::stallIterations).
+  int stallIterations = 0;
   // Held seams, at least coarseMinTriangles: a first phase on the panels meshed at coarseFactor x the design's
   // edge length (<= 1: none), until a stopping rule of that mesh ends it (the objective window over coarseWindow
   // iterations, not the fine mesh's 20) or coarseIterations (at most half the iterations) are spent; then the outlines
@@ -123,7 +126,7 @@ struct OptimizeRemeshing {
 // Sliding seams (Sec. 6, "Seam Placement": a seam of small weight moves to where the shape fits best). When some
 // seam's sigma x weights.seam is below seamWeight (<= 0: never), only E_smooth holds its outline and
 // slidingOptions changes the run: tangent steps, Gauss-Newton directions (they leave the symmetric first plateau
-// sooner); the panels meshed anew every remeshEvery iterations; the
+// sooner); the panels meshed anew every remeshEvery iterations, or where a mesh stalls; the
 // outline regularizers and the step held at a physical length (tuned at an edge length of regularizerEdgeLength
 // x the model size: at an edge length h that many times finer, sobolevLength and maxMoveEdges grow with 1/h and
 // E_smooth along sliding seams with 1/h^2, else the outlines zig-zag below the edge length); maxIterations x
@@ -135,6 +138,9 @@ struct OptimizeSliding {
   double iterationFactor = 2;
   int distanceWindow = 40;
   int remeshEvery = 20;
+  // A plateau that is this mesh's own (the gores' symmetric first layout) is left by a fresh mesh, not by waiting
+  // for the schedule's next one (OptimizeRemeshing::stallIterations).
+  int stallIterations = 5;
   double regularizerEdgeLength = 0.055;
 };
 
@@ -285,6 +291,9 @@ class PatternOptimizer {
   std::optional<StopReason> stopReason() const;
   // Starts the window (options.stopping.windowIterations) anew once full, or after a remeshing changed the mesh.
   void slideWindow();
+  // Whether the objective fell by less than kStallDecrease over the last options.remeshing.stallIterations
+  // iterations, all on this mesh.
+  bool stalledOnThisMesh() const;
   // The harmonic interior of the current panels (none when it cannot be built: every vertex is then a variable).
   void startInterior();
   // Projects the current panels onto equal stitched edge lengths; false (nothing changed) when that folds a
@@ -360,7 +369,9 @@ class PatternOptimizer {
   bool sobolevReady_ = false;
   Eigen::VectorXd precondition(const Eigen::VectorXd& v) const;  // (I + b K)^-1 v in the variables
   Eigen::SparseMatrix<double> sobolevMatrix_;                    // I + b K
-  // Gauss-Newton's damping mu = damping_ x dampingScale_ (its scale set at the phase's first direction).
+  // Gauss-Newton's damping mu = damping_ x dampingScale_ (its scale set at the phase's first direction). damping_
+  // carries over to a new mesh of the same panels: set back to 1 there, it held the next directions short, and the
+  // sliding gores' way off their first plateau began only 6-10 iterations after the remeshing that leads to it.
   double damping_ = 1, dampingScale_ = 0;
   bool gaussNewtonStalled_ = false;  // the last Gauss-Newton step barely lowered E: the next is L-BFGS
   struct ShapeModel;
