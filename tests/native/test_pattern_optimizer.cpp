@@ -659,14 +659,15 @@ TEST(PatternOptimizer, SlidingGoresLeaveTheirFirstPlateauOnAFreshMesh) {
       if (h.iteration > 4 && h.distanceRms < 0.015) return h.iteration;
     return 1000;
   };
-  const size_t k = firstRemeshing(stall);
+  const size_t k = firstRemeshing(stall), scheduled = firstRemeshing(wait);
+  ASSERT_GT(k, 0u);
   ASSERT_LT(k, stall.history.size());
+  ASSERT_LT(scheduled, wait.history.size());
   const OptimizeRecord& before = stall.history[k - 1];
   std::printf("[figures] sliding gores 700: remeshed at %d (schedule: %d), below 1.5 %% at iteration %d (%d)\n",
-              stall.history[k].iteration, wait.history[firstRemeshing(wait)].iteration, offThePlateau(stall),
-              offThePlateau(wait));
+              stall.history[k].iteration, wait.history[scheduled].iteration, offThePlateau(stall), offThePlateau(wait));
   EXPECT_LT(stall.history[k].iteration, o.sliding.remeshEvery);
-  EXPECT_EQ(wait.history[firstRemeshing(wait)].iteration, o.sliding.remeshEvery);
+  EXPECT_EQ(wait.history[scheduled].iteration, o.sliding.remeshEvery);
   // The rule: the last iterations on that mesh lowered the objective by less than a thousandth.
   const int n = OptimizeSliding{}.stallIterations;
   const auto start = std::find_if(stall.history.begin(), stall.history.end(),
