@@ -22,6 +22,8 @@ const std::vector<Command>& commands() {
       {"export", "write cut files (SVG, DXF), a printable tiled PDF and statistics for a pattern", exportCommand},
       {"segment", "cut a design's target along its seams into segments (areas, disks, problems)", segmentCommand},
       {"design", "make the sewn pattern of a design, inflate it and report the distance to the target", designCommand},
+      {"suggest", "suggest seam layouts for a target, each tried and ranked by its distance to the target",
+       suggestCommand},
   };
   return list;
 }

@@ -49,5 +49,6 @@ int exampleCommand(const std::vector<std::string>& args);
 int exportCommand(const std::vector<std::string>& args);
 int segmentCommand(const std::vector<std::string>& args);
 int designCommand(const std::vector<std::string>& args);
+int suggestCommand(const std::vector<std::string>& args);
 
 }  // namespace billow::cli

@@ -1,0 +1,201 @@
+// Plane sections (seams/plane_section.hpp) and suggested seam layouts (suggest/seam_layouts.hpp, `billow suggest`).
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <nlohmann/json.hpp>
+#include <set>
+
+#include "io/design_json.hpp"
+#include "pattern/design_scene.hpp"
+#include "seams/plane_section.hpp"
+#include "suggest/seam_layouts.hpp"
+#include "test_support.hpp"
+#include "util/error.hpp"
+
+namespace billow {
+namespace {
+
+using test::loadShared;
+
+double diagonal(const TriMesh& m) { return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm(); }
+Eigen::Vector3d boxMiddle(const TriMesh& m) { return 0.5 * (m.V.colwise().maxCoeff() + m.V.colwise().minCoeff()); }
+
+// A scene of a shared mesh, `height` meters tall, without seams yet.
+std::unique_ptr<DesignScene> sharedScene(const std::string& name, double height = 0.6) {
+  Design design;
+  design.target.kind = DesignTarget::Obj;
+  design.target.name = test::meshPath(name);
+  design.height = height;
+  return loadDesignTargetScene(design, "", {});
+}
+
+TEST(PlaneSection, TheSphereEquatorIsOneLoopOnThePlaneAndOnTheSurface) {
+  const TriMesh sphere = loadShared("sphere.obj");
+  const Eigen::Vector3d n = Eigen::Vector3d(1, 2, 0.5).normalized(), c = boxMiddle(sphere);
+  const std::vector<SectionLoop> loops = planeSection(sphere, n, n.dot(c));
+  ASSERT_EQ(loops.size(), 1u);
+  const double D = diagonal(sphere), r = 0.5 * (sphere.V.col(0).maxCoeff() - sphere.V.col(0).minCoeff());
+  for (const SectionPoint& p : loops[0]) {
+    EXPECT_NEAR(p.position.dot(n), n.dot(c), 1e-8 * D);
+    EXPECT_LT((position(sphere, p.at) - p.position).norm(), 1e-12 * D);
+  }
+  // A great circle of the polyhedral sphere, a little inside the round one.
+  EXPECT_NEAR(loopLength(loops[0]), 2 * test::kPi * r, 0.02 * 2 * test::kPi * r);
+  // The control points lie on the plane too, and the seam through them follows the section (12-160 of them).
+  const std::vector<SurfacePoint> controls = sectionSeamPoints(sphere, loops[0], 0.02 * D);
+  EXPECT_GE(controls.size(), 12u);
+  EXPECT_LE(controls.size(), 160u);
+  for (const SurfacePoint& p : controls) EXPECT_NEAR(position(sphere, p).dot(n), n.dot(c), 1e-8 * D);
+}
+
+TEST(PlaneSection, APlaneBesideTheShapeCutsNothingAndOneThroughFourLegsCutsFour) {
+  const TriMesh spot = loadShared("spot.obj");
+  const Eigen::Vector3d up = Eigen::Vector3d::UnitY();
+  EXPECT_TRUE(planeSection(spot, up, spot.V.col(1).maxCoeff() + 0.1).empty());
+  const double low = spot.V.col(1).minCoeff() + 0.05 * (spot.V.col(1).maxCoeff() - spot.V.col(1).minCoeff());
+  const std::vector<SectionLoop> legs = planeSection(spot, up, low);
+  EXPECT_EQ(legs.size(), 4u);
+  for (const SectionLoop& leg : legs)
+    for (const SurfacePoint& p : sectionPathPoints(spot, leg, 0.01 * diagonal(spot)))
+      EXPECT_NEAR(position(spot, p).y(), low, 1e-8 * diagonal(spot));
+}
+
+TEST(SeamLayouts, TheMirrorSymmetryOfTheCowIsFoundAndTheBunnyHasNone) {
+  const auto spot = sharedScene("spot.obj");
+  EXPECT_EQ(mirrorSymmetryAxis(spot->target, *spot->projector), 0);
+  const auto bunny = sharedScene("bunny.obj");
+  EXPECT_EQ(mirrorSymmetryAxis(bunny->target, *bunny->projector), -1);
+  Design symmetric, plain;
+  symmetric.extra["symmetry"] = {{"axis", "z"}};
+  EXPECT_EQ(designSymmetryAxis(symmetric), 2);
+  EXPECT_EQ(designSymmetryAxis(plain), -1);
+}
+
+TEST(SeamLayouts, ProposalsHaveThePanelsAskedForAndSymmetricOnesAreTheirOwnMirrorImage) {
+  const auto spot = sharedScene("spot.obj");
+  const TriMesh& target = spot->target;
+  for (int panels : {2, 6, 12, 24}) {
+    LayoutRequest request;
+    request.panels = panels, request.symmetryAxis = 0;
+    const std::vector<LayoutProposal> proposals = proposeLayouts(target, request);
+    ASSERT_FALSE(proposals.empty()) << panels;
+    std::set<std::string> names;
+    const double mid = boxMiddle(target).x(), D = diagonal(target);
+    for (const LayoutProposal& p : proposals) {
+      EXPECT_EQ(2 * p.gores * (p.bands + 1), panels) << p.name;
+      EXPECT_EQ(int(p.planes.size()), p.gores + p.bands) << p.name;
+      EXPECT_TRUE(names.insert(p.name).second) << "two proposals called " << p.name;
+      // Each plane {n . x = d} reflected across x = mid is one of the layout's planes.
+      for (const SectionPlane& plane : p.planes) {
+        const Eigen::Vector3d n(-plane.normal.x(), plane.normal.y(), plane.normal.z());
+        const double d = plane.offset - 2 * mid * plane.normal.x();
+        bool found = false;
+        for (const SectionPlane& q : p.planes)
+          for (double sign : {1.0, -1.0})
+            found |= (sign * q.normal - n).norm() < 1e-9 && std::abs(sign * q.offset - d) < 1e-9 * D;
+        EXPECT_TRUE(found) << p.name;
+      }
+    }
+  }
+}
+
+TEST(SeamLayouts, GoresOfTheSphereMeetAtItsPolesAndInflateClose) {
+  auto sphere = sharedScene("sphere.obj", 1.0);
+  LayoutRequest request;
+  request.panels = 6;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(sphere->target, request);
+  int gores = 0, bands = 0;
+  for (const LayoutProposal& p : proposals) {
+    if (p.axis != 1 || (p.gores == 3) == (p.bands == 2)) continue;
+    const std::vector<DesignSeam> seams = proposalSeams(sphere->target, p);
+    // Six meridians from pole to pole, or three bands and the loop that halves them.
+    EXPECT_EQ(seams.size(), p.gores == 3 ? 6u : 3u) << p.name;
+    EvaluateOptions options;
+    options.triangles = 600, options.maxIterations = 15;
+    const LayoutEvaluation e = evaluateLayout(*sphere, seams, options);
+    ASSERT_TRUE(e.ok) << p.name << ": " << e.problem;
+    EXPECT_EQ(e.panels, 6) << p.name;
+    for (const Segment& s : sphere->segmentation.segments) EXPECT_TRUE(s.isDisk) << p.name;
+    // Six gores of a 1 m sphere bulge about half a percent from it (bench/README.md), bands a little more.
+    EXPECT_LT(e.distance, 0.012) << p.name;
+    EXPECT_GT(e.distance, 0.0) << p.name;
+    EXPECT_EQ(e.pattern.panels.size(), 6u) << p.name;
+    (p.gores == 3 ? gores : bands)++;
+  }
+  EXPECT_GE(gores, 1);
+  EXPECT_GE(bands, 1);
+}
+
+TEST(SeamLayouts, AnAxisBesideTheShapeGivesItsGoresNoPoles) {
+  // A ring lying in the xz-plane: its vertical axis through the middle passes through the hole.
+  TriMesh ring;
+  const int nu = 32, nv = 12;
+  ring.V.resize(nu * nv, 3);
+  ring.F.resize(2 * nu * nv, 3);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * test::kPi * i / nu, v = 2 * test::kPi * j / nv, r = 1 + 0.3 * std::cos(v);
+      ring.V.row(i * nv + j) << r * std::cos(u), 0.3 * std::sin(v), r * std::sin(u);
+      const int a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
+                d = i * nv + (j + 1) % nv;
+      ring.F.row(2 * a) << a, d, c;
+      ring.F.row(2 * a + 1) << a, c, b;
+    }
+  LayoutProposal p;
+  p.axis = 1, p.gores = 2;
+  p.planes = {{Eigen::Vector3d::UnitX(), 0}, {Eigen::Vector3d::UnitZ(), 0}};
+  try {
+    proposalSeams(ring, p);
+    FAIL() << "gores around an axis that misses the shape";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "suggest.no-poles");
+  }
+}
+
+#ifndef __EMSCRIPTEN__
+TEST(SuggestCommand, WritesRankedLayoutsThatOpenAsDesigns) {
+  namespace fs = std::filesystem;
+  const fs::path dir = fs::temp_directory_path() / "billow-suggest-test";
+  fs::remove_all(dir);
+  std::string out;
+  ASSERT_EQ(test::runCapture(test::cliPath() + " suggest " + test::meshPath("sphere.obj") +
+                                 " --panels 4 --resolution 400 --max-iterations 8 --out-dir " + dir.string(),
+                             out),
+            0)
+      << out;
+  std::ifstream in(dir / "summary.json");
+  const nlohmann::json summary = nlohmann::json::parse(in);
+  EXPECT_EQ(summary["format"], "billow-suggest");
+  const nlohmann::json& layouts = summary["layouts"];
+  ASSERT_GE(layouts.size(), 2u) << out;
+  for (size_t k = 0; k < layouts.size(); ++k) {
+    const nlohmann::json& l = layouts[k];
+    EXPECT_EQ(l["rank"], int(k + 1));
+    if (k > 0) {
+      EXPECT_GE(l["distance"]["both_ways_rms"].get<double>(), layouts[k - 1]["distance"]["both_ways_rms"]);
+    }
+    EXPECT_LE(l["panels"].get<int>(), 4);
+    // The design opens again (its target named relative to the folder) and cuts into the same disk panels.
+    const auto scene = loadDesignScene((dir / l["design"].get<std::string>()).string(), {});
+    EXPECT_TRUE(scene->segmentation.problems.empty()) << l["name"];
+    EXPECT_EQ(int(scene->segmentation.segments.size()), l["panels"].get<int>()) << l["name"];
+    EXPECT_TRUE(fs::exists(dir / l["pattern"].get<std::string>()));
+  }
+  // A shape with no mirror symmetry cannot keep one; a panel count out of range is refused before any work.
+  EXPECT_EQ(test::runCapture(test::cliPath() + " suggest " + test::meshPath("bunny.obj") +
+                                 " --panels 4 --symmetry --out-dir " + dir.string(),
+                             out),
+            1);
+  EXPECT_NE(out.find("mirror image"), std::string::npos) << out;
+  EXPECT_EQ(
+      test::runCapture(
+          test::cliPath() + " suggest " + test::meshPath("sphere.obj") + " --panels 1 --out-dir " + dir.string(), out),
+      1);
+  EXPECT_NE(out.find("--panels needs a panel count from 2 to 40"), std::string::npos) << out;
+  fs::remove_all(dir);
+}
+#endif
+
+}  // namespace
+}  // namespace billow

@@ -1,0 +1,199 @@
+// billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--height M]
+//                [--resolution TRIANGLES] [--max-iterations N] [--quiet]: seam layouts for a target nobody has
+// patterned yet (suggest/seam_layouts.hpp), each tried at a coarse resolution and ranked by how close its optimized
+// panels inflate to the target. Writes DIR/layout-K.billow.json (the design, best first), DIR/layout-K.pattern.json
+// (its optimized coarse panels) and DIR/summary.json.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <nlohmann/json.hpp>
+
+#include "cli/commands.hpp"
+#include "io/mesh_file.hpp"
+#include "io/pattern_json.hpp"
+#include "suggest/seam_layouts.hpp"
+#include "util/error.hpp"
+
+namespace billow::cli {
+
+namespace {
+
+using nlohmann::json;
+namespace fs = std::filesystem;
+
+int usage(bool help) {
+  std::fprintf(help ? stdout : stderr,
+               "usage: billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams]\n"
+               "                      [--height METERS] [--resolution TRIANGLES] [--max-iterations N] [--quiet]\n\n"
+               "Suggests seam layouts for a target shape (a design file, or a mesh file made into a design of\n"
+               "--height meters, default 0.6): layouts of plane sections with at most N panels on a round shape\n"
+               "(2 to 40), each optimized at a coarse resolution (default 1000 triangles, at most 40 iterations)\n"
+               "and ranked by its distance to the target. --symmetry keeps the target's mirror symmetry (the\n"
+               "design's symmetry plane, else the one the shape has); --keep-seams adds to the design's own seams.\n"
+               "Writes DIR/layout-K.billow.json (best first), DIR/layout-K.pattern.json and DIR/summary.json.\n"
+               "Exit code 0 when some layout could be made into panels, 1 when none could.\n");
+  return help ? 0 : 2;
+}
+
+int intOption(const Args& args, const std::string& name, int fallback, int lo, int hi, const std::string& what) {
+  const double v = numberOption(args, name, fallback, what);
+  if (v != std::floor(v) || v < lo || v > hi)
+    throw Error("cli.usage", "the option " + name + " needs " + what + " from " + std::to_string(lo) + " to " +
+                                 std::to_string(hi) + ", not '" + args.get(name) + "'");
+  return int(v);
+}
+
+bool isDesignFile(const std::string& path) {
+  const std::string ext = fs::path(path).extension().string();
+  return ext == ".json";
+}
+
+// The design the layouts are laid on, and the path its relative target is read from.
+Design readInput(const std::string& path, const Args& args, std::string& designPath) {
+  if (isDesignFile(path)) {
+    designPath = path;
+    return readDesignJson(readFileBytes(path));
+  }
+  Design design;
+  design.target.kind = DesignTarget::Obj;
+  design.target.name = fs::absolute(path).lexically_normal().string();
+  design.height = numberOption(args, "--height", 0.6, "a height in meters");
+  if (!(design.height > 0)) throw Error("cli.usage", "the option --height needs a positive height in meters");
+  designPath = (fs::current_path() / "design.billow.json").string();
+  return design;
+}
+
+// The design as written into DIR: a mesh file named relative to DIR.
+Design forOutDir(Design design, const std::string& designPath, const std::string& dir) {
+  if (design.target.kind == DesignTarget::Obj || design.target.kind == DesignTarget::File) {
+    fs::path mesh = design.target.name;
+    if (mesh.is_relative()) mesh = fs::absolute(designPath).parent_path() / mesh;
+    design.target.name = fs::relative(mesh, fs::absolute(dir)).string();
+  }
+  return design;
+}
+
+}  // namespace
+
+int suggestCommand(const std::vector<std::string>& argv) {
+  const Args args = parseArgs(argv, {"--panels", "--out-dir", "--height", "--resolution", "--max-iterations"});
+  if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir") || !args.has("--panels"))
+    return usage(args.has("--help"));
+  const bool quiet = args.has("--quiet");
+  const std::string dir = args.get("--out-dir");
+  LayoutRequest request;
+  request.panels = intOption(args, "--panels", 6, 2, 40, "a panel count");
+  EvaluateOptions evaluate;
+  evaluate.triangles = intOption(args, "--resolution", evaluate.triangles, 200, 20000, "a triangle count");
+  evaluate.maxIterations = intOption(args, "--max-iterations", evaluate.maxIterations, 1, 300, "an iteration count");
+
+  std::string designPath;
+  const Design input = readInput(args.positional[0], args, designPath);
+  std::unique_ptr<DesignScene> scene = loadDesignTargetScene(input, designPath, exampleSearchPath(executableDir()));
+  request.up = input.target.up;
+  if (args.has("--symmetry")) {
+    request.symmetryAxis = designSymmetryAxis(input);
+    if (request.symmetryAxis < 0) request.symmetryAxis = mirrorSymmetryAxis(scene->target, *scene->projector);
+    if (request.symmetryAxis < 0)
+      throw Error("suggest.no-symmetry",
+                  "this shape is not its own mirror image across the middle of its box along x, y or z, so no layout "
+                  "can keep a symmetry it does not have: leave out --symmetry");
+  }
+  const std::vector<DesignSeam> kept = args.has("--keep-seams") ? input.seams : std::vector<DesignSeam>{};
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  if (!quiet)
+    std::fprintf(stderr, "%s: %zu layouts of at most %d panels to try%s\n", args.positional[0].c_str(),
+                 proposals.size(), request.panels,
+                 request.symmetryAxis >= 0
+                     ? (", mirror-symmetric across " + std::string(1, "xyz"[request.symmetryAxis])).c_str()
+                     : "");
+
+  struct Tried {
+    const LayoutProposal* proposal;
+    std::vector<DesignSeam> seams;
+    LayoutEvaluation result;
+  };
+  std::vector<Tried> tried;
+  for (size_t i = 0; i < proposals.size(); ++i) {
+    Tried t{&proposals[i], kept, {}};
+    try {
+      const std::vector<DesignSeam> laid = proposalSeams(scene->target, proposals[i]);
+      t.seams.insert(t.seams.end(), laid.begin(), laid.end());
+      t.result = evaluateLayout(*scene, t.seams, evaluate);
+    } catch (const Error& e) {
+      t.result.problem = e.what();
+    }
+    if (!quiet) {
+      if (t.result.ok)
+        std::fprintf(stderr, "  %2zu/%zu %-52s %2d panels, seams %.2f m, distance %.2f %% (%.1f s)\n", i + 1,
+                     proposals.size(), proposals[i].name.c_str(), t.result.panels, t.result.seamLength,
+                     100 * t.result.distance, t.result.ms / 1000);
+      else
+        std::fprintf(stderr, "  %2zu/%zu %-52s not used: %s\n", i + 1, proposals.size(), proposals[i].name.c_str(),
+                     t.result.problem.c_str());
+    }
+    tried.push_back(std::move(t));
+  }
+  // Best first: within the panels asked for, the closest; the seam length breaks ties.
+  std::vector<const Tried*> ranked;
+  for (const Tried& t : tried)
+    if (t.result.ok && t.result.panels <= request.panels) ranked.push_back(&t);
+  std::stable_sort(ranked.begin(), ranked.end(), [](const Tried* a, const Tried* b) {
+    return a->result.distance != b->result.distance ? a->result.distance < b->result.distance
+                                                    : a->result.seamLength < b->result.seamLength;
+  });
+
+  fs::create_directories(dir);
+  json layouts = json::array(), notUsed = json::array();
+  for (size_t r = 0; r < ranked.size(); ++r) {
+    const Tried& t = *ranked[r];
+    Design design = forOutDir(input, designPath, dir);
+    design.seams = t.seams;
+    if (request.symmetryAxis >= 0) design.extra["symmetry"] = {{"axis", std::string(1, "xyz"[request.symmetryAxis])}};
+    const std::string stem = "layout-" + std::to_string(r + 1);
+    writeTextFile(dir + "/" + stem + ".billow.json", writeDesignJson(design) + "\n");
+    writeTextFile(dir + "/" + stem + ".pattern.json", writePatternJson(t.result.pattern) + "\n");
+    layouts.push_back({{"rank", r + 1},
+                       {"name", t.proposal->name},
+                       {"design", stem + ".billow.json"},
+                       {"pattern", stem + ".pattern.json"},
+                       {"panels", t.result.panels},
+                       {"seam_length_m", t.result.seamLength},
+                       {"distance",
+                        {{"both_ways_rms", t.result.distance},
+                         {"inflated_to_target_rms", t.result.inflatedToTarget},
+                         {"target_to_inflated_rms", t.result.targetToInflated}}},
+                       {"iterations", t.result.iterations},
+                       {"ms", t.result.ms}});
+  }
+  for (const Tried& t : tried)
+    if (!t.result.ok || t.result.panels > request.panels)
+      notUsed.push_back({{"name", t.proposal->name},
+                         {"why", t.result.ok ? "it makes " + std::to_string(t.result.panels) + " panels on this shape"
+                                             : t.result.problem}});
+  const json summary = {
+      {"format", "billow-suggest"},
+      {"version", 1},
+      {"target", args.positional[0]},
+      {"panels", request.panels},
+      {"symmetry", request.symmetryAxis >= 0 ? json(std::string(1, "xyz"[request.symmetryAxis])) : json(nullptr)},
+      {"resolution", evaluate.triangles},
+      {"layouts", layouts},
+      {"not_used", notUsed}};
+  writeTextFile(dir + "/summary.json", summary.dump(2) + "\n");
+  std::printf("rank  panels  distance %%  seams m  layout\n");
+  for (const json& l : layouts)
+    std::printf("%4d  %6d  %10.2f  %7.2f  %s\n", l["rank"].get<int>(), l["panels"].get<int>(),
+                100 * l["distance"]["both_ways_rms"].get<double>(), l["seam_length_m"].get<double>(),
+                l["name"].get<std::string>().c_str());
+  if (ranked.empty()) {
+    std::fprintf(stderr,
+                 "billow suggest: none of the %zu layouts could be made into at most %d panels on this shape (why: "
+                 "%s/summary.json); try more panels\n",
+                 proposals.size(), request.panels, dir.c_str());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace billow::cli

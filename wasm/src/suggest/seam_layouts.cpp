@@ -1,0 +1,338 @@
+#include "suggest/seam_layouts.hpp"
+
+#include <algorithm>
+#include <array>
+#include <chrono>
+#include <cmath>
+#include <numeric>
+
+#include "optimize/optimized_pattern.hpp"
+#include "optimize/pattern_optimizer.hpp"
+#include "optimize/stopping_rule.hpp"
+#include "seams/plane_section.hpp"
+#include "util/error.hpp"
+
+namespace billow {
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+// Control points of a proposed seam, as the section tool spaces them (web/src/app/section.js SECTION_SPACING).
+constexpr double kSeamPointSpacing = 0.02;
+constexpr int kMostPlanesPerFamily = 12;
+
+// Which way a direction of the target's own coordinates points as the target stands: 0 side to side, 1 up, 2 front
+// to back (the up frame's axes).
+int viewAxis(const Eigen::Vector3d& direction, const UpAxis& up) {
+  Eigen::Index k = 0;
+  (upFrame(up) * direction).cwiseAbs().maxCoeff(&k);
+  return int(k);
+}
+
+std::string axisName(int axis, const UpAxis& up) {
+  static const char* names[] = {"side-to-side axis", "vertical axis", "front-to-back axis"};
+  return names[viewAxis(Eigen::Vector3d::Unit(axis), up)];
+}
+
+std::string halvesName(const Eigen::Vector3d& normal, const UpAxis& up) {
+  static const char* names[] = {"left and right halves", "top and bottom halves", "front and back halves"};
+  return names[viewAxis(normal, up)];
+}
+
+// Where a plane across `axis` leaves `share` of the target's area below it.
+struct AreaAlong {
+  std::vector<std::pair<double, double>> coordinateArea;  // face centroids' coordinate, face area; sorted
+  double total = 0;
+  double at(double share) const {
+    double walked = 0;
+    for (const auto& [x, a] : coordinateArea)
+      if ((walked += a) >= share * total) return x;
+    return coordinateArea.empty() ? 0 : coordinateArea.back().first;
+  }
+};
+
+AreaAlong areaAlong(const TriMesh& mesh, int axis) {
+  AreaAlong out;
+  for (int f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    const double area = 0.5 * (b - a).cross(c - a).norm();
+    out.coordinateArea.emplace_back((a[axis] + b[axis] + c[axis]) / 3, area);
+    out.total += area;
+  }
+  std::sort(out.coordinateArea.begin(), out.coordinateArea.end());
+  return out;
+}
+
+// A plane set's key, so a layout two families both make is tried once.
+std::vector<long long> planeKey(const std::vector<SectionPlane>& planes, double size) {
+  std::vector<long long> key;
+  for (const SectionPlane& p : planes) {
+    // n and -n with -offset are one plane: the first non-zero component positive.
+    Eigen::Vector3d n = p.normal;
+    double d = p.offset;
+    for (int k = 0; k < 3; ++k)
+      if (std::abs(n[k]) > 1e-6) {
+        if (n[k] < 0) n = -n, d = -d;
+        break;
+      }
+    key.push_back(std::llround(n.x() * 1e4) * 1'000'000'000'000LL + std::llround(n.y() * 1e4) * 100'000'000LL +
+                  std::llround(n.z() * 1e4) * 10'000LL + std::llround(d / size * 1e3));
+  }
+  std::sort(key.begin(), key.end());
+  return key;
+}
+
+}  // namespace
+
+int designSymmetryAxis(const Design& design) {
+  const auto it = design.extra.find("symmetry");
+  if (it == design.extra.end() || !it->is_object() || !it->contains("axis") || !(*it)["axis"].is_string()) return -1;
+  const std::string axis = (*it)["axis"].get<std::string>();
+  return axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
+}
+
+int mirrorSymmetryAxis(const TriMesh& target, const SurfaceProjector& projector, double tolerance) {
+  if (target.V.rows() == 0) return -1;
+  const Eigen::Vector3d lo = target.V.colwise().minCoeff(), hi = target.V.colwise().maxCoeff();
+  const double size = (hi - lo).norm();
+  int best = -1;
+  double bestRms = tolerance * size;
+  for (int axis = 0; axis < 3; ++axis) {
+    double sum = 0;
+    for (int v = 0; v < target.V.rows(); ++v) {
+      Eigen::Vector3d p = target.V.row(v);
+      p[axis] = lo[axis] + hi[axis] - p[axis];
+      double d = 0;
+      projector.project(p, &d);
+      sum += d * d;
+    }
+    const double rms = std::sqrt(sum / target.V.rows());
+    if (rms < bestRms) best = axis, bestRms = rms;
+  }
+  return best;
+}
+
+std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRequest& request) {
+  std::vector<LayoutProposal> out;
+  if (target.F.rows() == 0 || request.panels < 2) return out;
+  const Eigen::Vector3d lo = target.V.colwise().minCoeff(), hi = target.V.colwise().maxCoeff();
+  const double size = (hi - lo).norm();
+  // The axes go through the area centroid; across a symmetry plane, through the box's middle, where the app's
+  // symmetry plane lies (web/src/app/symmetry.js).
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  double area = 0;
+  for (int f = 0; f < target.F.rows(); ++f) {
+    const Eigen::Vector3d a = target.V.row(target.F(f, 0)), b = target.V.row(target.F(f, 1)),
+                          c = target.V.row(target.F(f, 2));
+    const double at = 0.5 * (b - a).cross(c - a).norm();
+    center += at * (a + b + c) / 3, area += at;
+  }
+  center /= std::max(area, 1e-300);
+  const int s = request.symmetryAxis;
+  if (s >= 0 && s < 3) center[s] = 0.5 * (lo[s] + hi[s]);
+  std::vector<std::vector<long long>> seen;
+  for (int axis = 0; axis < 3; ++axis) {
+    const AreaAlong along = areaAlong(target, axis);
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
+    // The gores' first plane holds u: the symmetry axis where there is one, so every gore plane is its own mirror
+    // image; a quarter turn gives the other set where m is odd.
+    const Eigen::Vector3d u = Eigen::Vector3d::Unit(s >= 0 && s != axis ? s : (axis + 1) % 3), w = e.cross(u);
+    for (int m = 1; m <= kMostPlanesPerFamily; ++m)
+      for (int k = 0; k <= kMostPlanesPerFamily; ++k) {
+        if (2 * m * (k + 1) != request.panels && 2 * m * (k + 1) != request.panels - 1) continue;
+        // Bands across the symmetry axis would be their own mirror image only at mirrored shares.
+        if (k > 0 && axis == s) continue;
+        for (int turn = 0; turn < 2; ++turn) {
+          LayoutProposal p;
+          p.axis = axis, p.gores = m, p.bands = k, p.center = center;
+          for (int i = 0; i < m; ++i) {
+            const double theta = kPi * i / m + (turn ? kPi / 2 : 0);
+            const Eigen::Vector3d normal = e.cross(std::cos(theta) * u + std::sin(theta) * w).normalized();
+            p.planes.push_back({normal, normal.dot(center)});
+          }
+          for (int j = 1; j <= k; ++j) p.planes.push_back({e, along.at(double(j) / (k + 1))});
+          std::vector<long long> key = planeKey(p.planes, size);
+          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+          seen.push_back(std::move(key));
+          const std::string across = axisName(axis, request.up);
+          if (k == 0)
+            p.name = m == 1 ? halvesName(p.planes[0].normal, request.up)
+                            : std::to_string(2 * m) + " gores around the " + across + (turn ? ", turned" : "");
+          else
+            p.name = std::to_string(k + 1) + " bands across the " + across +
+                     (m == 1 ? ", in " + halvesName(p.planes[0].normal, request.up)
+                             : ", each in " + std::to_string(2 * m) + " gores" + (turn ? " (turned)" : ""));
+          out.push_back(std::move(p));
+        }
+      }
+  }
+  return out;
+}
+
+namespace {
+
+struct Pole {
+  SectionPoint point;
+  bool found = false;
+};
+
+// Where the line through `center` along `direction` meets the surface first and last.
+std::array<Pole, 2> axisPoles(const TriMesh& mesh, const Eigen::Vector3d& center, const Eigen::Vector3d& direction) {
+  std::array<Pole, 2> poles;
+  double tMin = INFINITY, tMax = -INFINITY;
+  for (int f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    // Moller-Trumbore, for the whole line.
+    const Eigen::Vector3d e1 = b - a, e2 = c - a, q = direction.cross(e2);
+    const double det = e1.dot(q);
+    if (std::abs(det) < 1e-300) continue;
+    const Eigen::Vector3d s = center - a;
+    const double u = s.dot(q) / det;
+    if (u < 0 || u > 1) continue;
+    const Eigen::Vector3d r = s.cross(e1);
+    const double v = direction.dot(r) / det;
+    if (v < 0 || u + v > 1) continue;
+    const double t = e2.dot(r) / det;
+    for (int end = 0; end < 2; ++end) {
+      if (end == 0 ? t >= tMin : t <= tMax) continue;
+      (end == 0 ? tMin : tMax) = t;
+      Pole& pole = poles[end];
+      pole.found = true;
+      pole.point.at.face = f, pole.point.at.bary = Eigen::Vector3d(1 - u - v, u, v);
+      pole.point.position = center + t * direction;
+    }
+  }
+  return poles;
+}
+
+DesignSeam makeSeam(const std::string& name, bool closed, const std::vector<SurfacePoint>& controls) {
+  DesignSeam seam;
+  seam.name = name, seam.closed = closed;
+  for (const SurfacePoint& p : controls) {
+    DesignPoint point;
+    point.onSurface = true, point.surface = p;
+    seam.points.push_back(point);
+  }
+  return seam;
+}
+
+size_t nearestPoint(const SectionLoop& loop, const Eigen::Vector3d& p, double& distance) {
+  size_t best = 0;
+  distance = INFINITY;
+  for (size_t i = 0; i < loop.size(); ++i)
+    if (const double d = (loop[i].position - p).norm(); d < distance) distance = d, best = i;
+  return best;
+}
+
+}  // namespace
+
+std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal) {
+  const double size = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
+  const double spacing = kSeamPointSpacing * size;
+  const bool meridians = proposal.gores >= 2;
+  std::array<Pole, 2> poles;
+  if (meridians) {
+    poles = axisPoles(target, proposal.center, Eigen::Vector3d::Unit(proposal.axis));
+    if (!poles[0].found || !poles[1].found)
+      throw Error("suggest.no-poles", "its axis passes beside the shape, so its gores have no ends to meet at");
+  }
+  std::vector<DesignSeam> seams;
+  const auto name = [&] { return proposal.name + ", seam " + std::to_string(seams.size() + 1); };
+  for (size_t i = 0; i < proposal.planes.size(); ++i) {
+    const SectionPlane& plane = proposal.planes[i];
+    const std::vector<SectionLoop> loops = planeSection(target, plane.normal, plane.offset);
+    // A gore plane's loop through both poles: two seams from pole to pole.
+    size_t poleLoop = loops.size();
+    if (meridians && int(i) < proposal.gores) {
+      double best = INFINITY;
+      for (size_t l = 0; l < loops.size(); ++l) {
+        double d0 = 0, d1 = 0;
+        nearestPoint(loops[l], poles[0].point.position, d0), nearestPoint(loops[l], poles[1].point.position, d1);
+        if (std::max(d0, d1) < best) best = std::max(d0, d1), poleLoop = l;
+      }
+      if (best > 5 * spacing)
+        throw Error("suggest.no-poles", "its gores do not all pass through both ends of its axis on this shape");
+    }
+    for (size_t l = 0; l < loops.size(); ++l) {
+      const SectionLoop& loop = loops[l];
+      if (l != poleLoop) {
+        seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, loop, spacing)));
+        continue;
+      }
+      double d = 0;
+      const size_t a = nearestPoint(loop, poles[0].point.position, d),
+                   b = nearestPoint(loop, poles[1].point.position, d);
+      for (int half = 0; half < 2; ++half) {
+        // Pole to pole on either side of the loop, walked forward (a point keeps the face the walk crossed to reach
+        // it) and the second side's points turned round after; loop points within a quarter spacing of a pole left
+        // out, so no control point crowds it.
+        const Pole& from = poles[half];
+        const Pole& to = poles[1 - half];
+        const size_t n = loop.size(), start = half == 0 ? a : b, end = half == 0 ? b : a;
+        SectionLoop inner;
+        for (size_t j = 1; j < n; ++j) {
+          const size_t k = (start + j) % n;
+          if (k == end) break;
+          if ((loop[k].position - from.point.position).norm() >= 0.25 * spacing &&
+              (loop[k].position - to.point.position).norm() >= 0.25 * spacing)
+            inner.push_back(loop[k]);
+        }
+        std::vector<SurfacePoint> controls{from.point.at};
+        if (inner.size() >= 2)
+          for (const SurfacePoint& p : sectionPathPoints(target, inner, spacing)) controls.push_back(p);
+        controls.push_back(to.point.at);
+        if (half == 1) std::reverse(controls.begin(), controls.end());
+        seams.push_back(makeSeam(name(), false, controls));
+      }
+    }
+  }
+  return seams;
+}
+
+LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams,
+                                const EvaluateOptions& options) {
+  const auto t0 = std::chrono::steady_clock::now();
+  LayoutEvaluation out;
+  const auto done = [&] {
+    out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    return out;
+  };
+  scene.design.seams = seams;
+  try {
+    traceDesignSeams(scene);
+  } catch (const Error& e) {
+    out.problem = e.what();
+    return done();
+  }
+  segmentDesignScene(scene);
+  const Segmentation& segmentation = scene.segmentation;
+  if (!segmentation.problems.empty()) {
+    out.problem = segmentation.problems.front().message;
+    return done();
+  }
+  out.panels = int(segmentation.segments.size());
+  for (const SeamCurve& curve : scene.curves) out.seamLength += curve.length;
+  const BuiltPattern built = buildDesignPattern(scene, options.triangles);
+  if (!built.ok()) {
+    out.problem = built.problems.empty() ? "no panels" : built.problems.front().message;
+    return done();
+  }
+  OptimizeOptions oo = appStoppingRule();
+  oo.stopping.maxIterations = options.maxIterations;
+  PatternOptimizer optimizer(scene.target, built, designSeamWeights(scene.design), oo);
+  while (optimizer.step(5) == OptimizeState::Running) {
+  }
+  if (optimizer.state() == OptimizeState::Failed || optimizer.history().empty()) {
+    out.problem = optimizer.message();
+    return done();
+  }
+  const OptimizeRecord& last = optimizer.history().back();
+  out.distance = last.bothWaysDistance();
+  out.inflatedToTarget = last.distanceRms, out.targetToInflated = last.targetDistanceRms;
+  out.iterations = optimizer.iterations();
+  out.pattern = optimizedPattern(optimizer);
+  out.ok = true;
+  return done();
+}
+
+}  // namespace billow

@@ -1,0 +1,82 @@
+// Suggested seam layouts (issue 27): seams for a target the designer has not patterned yet, each layout tried
+// and scored by what matters to them: how close its optimized panels inflate to the target, at a coarse
+// resolution, and how much there is to sew.
+//
+// A layout is made of plane sections (seams/plane_section.hpp), as the project's hand-made layouts are: m planes
+// through one of the target's own axes (gores, as a beach ball's) and k planes across it at equal shares of the
+// surface (bands), 2 m (k + 1) panels on a round shape, more where a plane cuts a limb on its own. A layout that
+// keeps the target's mirror symmetry lays only planes that are their own mirror image across the symmetry plane.
+#pragma once
+#include <functional>
+#include <string>
+#include <vector>
+
+#include "io/design_json.hpp"
+#include "mesh/tri_mesh.hpp"
+#include "pattern/design_scene.hpp"
+#include "pattern/pattern.hpp"
+
+namespace billow {
+
+struct SectionPlane {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit
+  double offset = 0;                                  // the plane is {p . normal = offset}
+};
+
+struct LayoutProposal {
+  std::string name;                                  // the designer's words: "6 gores around the vertical axis"
+  int axis = 1;                                      // the target's own axis the planes go around and across
+  int gores = 1;                                     // m planes through the axis
+  int bands = 0;                                     // k planes across it
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();  // a point of the axis line
+  std::vector<SectionPlane> planes;                  // the gores' m planes first
+};
+
+struct LayoutRequest {
+  int panels = 6;         // at most this many on a round shape (2 m (k + 1) <= panels)
+  int symmetryAxis = -1;  // the target's own axis across whose mid-plane (of its box) the layout is its own mirror
+                          // image; -1: any layout
+  UpAxis up;              // which axis the names call vertical
+};
+
+// The design's mirror symmetry (its "symmetry": { "axis": "x" }, as the app keeps it: web/src/app/symmetry.js): the
+// target's own axis whose box mid-plane it names, or -1.
+int designSymmetryAxis(const Design& design);
+
+// The target's own axis across whose box mid-plane the target is its own mirror image (its vertices reflected lie
+// within `tolerance` x its diagonal of its surface, RMS), the closest of the three; -1 when none is.
+int mirrorSymmetryAxis(const TriMesh& target, const SurfaceProjector& projector, double tolerance = 0.01);
+
+// The layouts worth trying for `request` on `target` (its own coordinates), each plane set once.
+std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRequest& request);
+
+// The proposal's seams on `target`, of weight 1, control points about 2 % of the target's diagonal apart (the
+// section tool's spacing): with two gore planes or more, each plane's loop through the axis's poles (where the axis
+// line leaves the surface first and last) as two seams from pole to pole, meeting the other gores' there; every
+// other loop a closed seam. Throws billow::Error (suggest.no-poles) where the gores have no poles to meet at.
+std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal);
+
+struct LayoutEvaluation {
+  bool ok = false;
+  std::string problem;  // why it was not scored, in the designer's words
+  int panels = 0;
+  double seamLength = 0;  // [m], every seam once
+  // After the coarse optimization, relative to the target's diagonal: both ways (OptimizeRecord::bothWaysDistance),
+  // and each way.
+  double distance = 0, inflatedToTarget = 0, targetToInflated = 0;
+  int iterations = 0;
+  double ms = 0;
+  Pattern pattern;  // the optimized panels (coarse)
+};
+
+struct EvaluateOptions {
+  int triangles = 1000;    // the coarse resolution the layouts are compared at
+  int maxIterations = 40;  // of the app's stopping rule
+};
+
+// Traces and segments `seams` on the scene's target (scene.design's seams become them), and when every segment
+// is a disk without a problem, flattens, optimizes at the coarse resolution and measures.
+LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams,
+                                const EvaluateOptions& options = {});
+
+}  // namespace billow
