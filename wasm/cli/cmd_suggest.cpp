@@ -1,8 +1,9 @@
 // billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--height M]
-//                [--resolution TRIANGLES] [--max-iterations N] [--quiet]: seam layouts for a target nobody has
-// patterned yet (suggest/seam_layouts.hpp), each tried at a coarse resolution and ranked by how close its optimized
-// panels inflate to the target. Writes DIR/layout-K.billow.json (the design, best first), DIR/layout-K.pattern.json
-// (its optimized coarse panels) and DIR/summary.json.
+//                [--resolution TRIANGLES] [--max-iterations N] [--optimize K] [--quiet]: seam layouts for a target
+// nobody has patterned yet (suggest/seam_layouts.hpp), each given a first look (its flattened panels inflated), the
+// K closest optimized at a coarse resolution and ranked by how close their optimized panels inflate to the target.
+// Writes DIR/layout-K.billow.json (the design, best first), DIR/layout-K.pattern.json (its optimized coarse panels) and
+// DIR/summary.json.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -24,11 +25,14 @@ namespace fs = std::filesystem;
 int usage(bool help) {
   std::fprintf(help ? stdout : stderr,
                "usage: billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams]\n"
-               "                      [--height METERS] [--resolution TRIANGLES] [--max-iterations N] [--quiet]\n\n"
+               "                      [--height METERS] [--resolution TRIANGLES] [--max-iterations N] [--optimize K]\n"
+               "                      [--quiet]\n\n"
                "Suggests seam layouts for a target shape (a design file, or a mesh file made into a design of\n"
-               "--height meters, default 0.6): layouts of plane sections with at most N panels on a round shape\n"
-               "(2 to 40), each optimized at a coarse resolution (default 1000 triangles, at most 40 iterations)\n"
-               "and ranked by its distance to the target. --symmetry keeps the target's mirror symmetry (the\n"
+               "--height meters, default 0.6): layouts of plane sections with at most N panels (2 to 40), seams\n"
+               "added where a section leaves a part that is not a panel (a tube around a limb). Each is first\n"
+               "inflated flat; the K closest (default 6) are optimized at a coarse resolution (default 1000\n"
+               "triangles, at most 40 iterations) and ranked by their distance to the target.\n"
+               "--symmetry keeps the target's mirror symmetry (the\n"
                "design's symmetry plane, else the one the shape has); --keep-seams adds to the design's own seams.\n"
                "Writes DIR/layout-K.billow.json (best first), DIR/layout-K.pattern.json and DIR/summary.json.\n"
                "Exit code 0 when some layout could be made into panels, 1 when none could.\n");
@@ -86,6 +90,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   EvaluateOptions evaluate;
   evaluate.triangles = intOption(args, "--resolution", evaluate.triangles, 200, 20000, "a triangle count");
   evaluate.maxIterations = intOption(args, "--max-iterations", evaluate.maxIterations, 1, 300, "an iteration count");
+  const int optimized = intOption(args, "--optimize", 6, 1, 100, "a number of layouts");
 
   std::string designPath;
   const Design input = readInput(args.positional[0], args, designPath);
@@ -108,36 +113,57 @@ int suggestCommand(const std::vector<std::string>& argv) {
                      ? (", mirror-symmetric across " + std::string(1, "xyz"[request.symmetryAxis])).c_str()
                      : "");
 
+  // A first look at every layout (its segments opened into panels, the flattened panels inflated), then the closest
+  // few optimized.
   struct Tried {
-    const LayoutProposal* proposal;
-    std::vector<DesignSeam> seams;
-    LayoutEvaluation result;
+    const LayoutProposal* proposal = nullptr;
+    LayoutEvaluation first, result;
   };
   std::vector<Tried> tried;
+  EvaluateOptions look = evaluate;
+  look.maxIterations = 0;
   for (size_t i = 0; i < proposals.size(); ++i) {
-    Tried t{&proposals[i], kept, {}};
+    Tried t;
+    t.proposal = &proposals[i];
     try {
+      std::vector<DesignSeam> seams = kept;
       const std::vector<DesignSeam> laid = proposalSeams(scene->target, proposals[i]);
-      t.seams.insert(t.seams.end(), laid.begin(), laid.end());
-      t.result = evaluateLayout(*scene, t.seams, evaluate);
+      seams.insert(seams.end(), laid.begin(), laid.end());
+      t.first = evaluateLayout(*scene, seams, int(kept.size()), look);
+      if (t.first.ok && t.first.panels > request.panels)
+        t.first.ok = false, t.first.problem = "it makes " + std::to_string(t.first.panels) + " panels on this shape";
     } catch (const Error& e) {
-      t.result.problem = e.what();
+      t.first.problem = e.what();
     }
-    if (!quiet) {
-      if (t.result.ok)
-        std::fprintf(stderr, "  %2zu/%zu %-52s %2d panels, seams %.2f m, distance %.2f %% (%.1f s)\n", i + 1,
-                     proposals.size(), proposals[i].name.c_str(), t.result.panels, t.result.seamLength,
-                     100 * t.result.distance, t.result.ms / 1000);
-      else
-        std::fprintf(stderr, "  %2zu/%zu %-52s not used: %s\n", i + 1, proposals.size(), proposals[i].name.c_str(),
-                     t.result.problem.c_str());
-    }
+    if (!quiet)
+      std::fprintf(
+          stderr, "  look %2zu/%zu  %-58s %s\n", i + 1, proposals.size(), proposals[i].name.c_str(),
+          t.first.ok ? (std::to_string(t.first.panels) + " panels").c_str() : ("not used: " + t.first.problem).c_str());
     tried.push_back(std::move(t));
   }
-  // Best first: within the panels asked for, the closest; the seam length breaks ties.
+  std::vector<Tried*> looked;
+  for (Tried& t : tried)
+    if (t.first.ok) looked.push_back(&t);
+  std::stable_sort(looked.begin(), looked.end(),
+                   [](const Tried* a, const Tried* b) { return a->first.distance < b->first.distance; });
+  if (looked.size() > size_t(optimized)) looked.resize(optimized);
+  for (size_t i = 0; i < looked.size(); ++i) {
+    Tried& t = *looked[i];
+    t.result = evaluateLayout(*scene, t.first.seams, int(t.first.seams.size()), evaluate);
+    if (!quiet) {
+      if (t.result.ok)
+        std::fprintf(stderr, "  optimize %zu/%zu  %-54s %2d panels, seams %.2f m, distance %.2f %% (%.1f s)\n", i + 1,
+                     looked.size(), t.proposal->name.c_str(), t.result.panels, t.result.seamLength,
+                     100 * t.result.distance, t.result.ms / 1000);
+      else
+        std::fprintf(stderr, "  optimize %zu/%zu  %-54s not used: %s\n", i + 1, looked.size(), t.proposal->name.c_str(),
+                     t.result.problem.c_str());
+    }
+  }
+  // Best first: the closest; the seam length breaks ties.
   std::vector<const Tried*> ranked;
-  for (const Tried& t : tried)
-    if (t.result.ok && t.result.panels <= request.panels) ranked.push_back(&t);
+  for (const Tried* t : looked)
+    if (t->result.ok) ranked.push_back(t);
   std::stable_sort(ranked.begin(), ranked.end(), [](const Tried* a, const Tried* b) {
     return a->result.distance != b->result.distance ? a->result.distance < b->result.distance
                                                     : a->result.seamLength < b->result.seamLength;
@@ -148,7 +174,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   for (size_t r = 0; r < ranked.size(); ++r) {
     const Tried& t = *ranked[r];
     Design design = forOutDir(input, designPath, dir);
-    design.seams = t.seams;
+    design.seams = t.result.seams;
     if (request.symmetryAxis >= 0) design.extra["symmetry"] = {{"axis", std::string(1, "xyz"[request.symmetryAxis])}};
     const std::string stem = "layout-" + std::to_string(r + 1);
     writeTextFile(dir + "/" + stem + ".billow.json", writeDesignJson(design) + "\n");
@@ -167,10 +193,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
                        {"ms", t.result.ms}});
   }
   for (const Tried& t : tried)
-    if (!t.result.ok || t.result.panels > request.panels)
-      notUsed.push_back({{"name", t.proposal->name},
-                         {"why", t.result.ok ? "it makes " + std::to_string(t.result.panels) + " panels on this shape"
-                                             : t.result.problem}});
+    if (!t.first.ok) notUsed.push_back({{"name", t.proposal->name}, {"why", t.first.problem}});
   const json summary = {
       {"format", "billow-suggest"},
       {"version", 1},

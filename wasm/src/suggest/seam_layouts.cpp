@@ -1,5 +1,6 @@
 #include "suggest/seam_layouts.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <chrono>
@@ -20,6 +21,7 @@ constexpr double kPi = 3.14159265358979323846;
 // Control points of a proposed seam, as the section tool spaces them (web/src/app/section.js SECTION_SPACING).
 constexpr double kSeamPointSpacing = 0.02;
 constexpr int kMostPlanesPerFamily = 12;
+constexpr int kFewerPanels = 4;
 
 // Which way a direction of the target's own coordinates points as the target stands: 0 side to side, 1 up, 2 front
 // to back (the up frame's axes).
@@ -139,7 +141,9 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
     const Eigen::Vector3d u = Eigen::Vector3d::Unit(s >= 0 && s != axis ? s : (axis + 1) % 3), w = e.cross(u);
     for (int m = 1; m <= kMostPlanesPerFamily; ++m)
       for (int k = 0; k <= kMostPlanesPerFamily; ++k) {
-        if (2 * m * (k + 1) != request.panels && 2 * m * (k + 1) != request.panels - 1) continue;
+        // Up to four panels fewer than asked for: a limb cut on its own, or opened, adds panels on most shapes.
+        const int panels = 2 * m * (k + 1);
+        if (panels > request.panels || panels < request.panels - kFewerPanels) continue;
         // Bands across the symmetry axis would be their own mirror image only at mirrored shares.
         if (k > 0 && axis == s) continue;
         for (int turn = 0; turn < 2; ++turn) {
@@ -289,7 +293,110 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
   return seams;
 }
 
-LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams,
+namespace {
+
+// Seams that make a layout's segments panels, where plane sections alone leave a segment that is not one: a segment
+// between two loops or more (a plane across a limb leaves a tube, a limb's end cut off inside a band leaves a hole)
+// gets, from each of its loops but the longest, a seam to its nearest point of another loop (the cut that opens a
+// tube, as a designer would add it); a segment too big for its seam (a limb's end) gets the plane section across
+// its longest extent where that loop lies within it, else across the next (around its limbs); a tiny segment inside one
+// closed seam of the layout's own (a plane grazing a toe) loses that seam. The first `fixedSeams` seams are the
+// designer's and stay. Returns how many seams it added or removed.
+int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::vector<DesignSeam>& seams) {
+  const Segmentation& sg = scene.segmentation;
+  const TriMesh& cut = sg.mesh;
+  int added = 0;
+  // The segments each target face has a part in.
+  std::vector<std::vector<int>> faceSegments(scene.target.F.rows());
+  for (int f = 0; f < int(sg.faceOrigin.size()); ++f) {
+    std::vector<int>& in = faceSegments[sg.faceOrigin[f]];
+    if (std::find(in.begin(), in.end(), sg.faceSegment[f]) == in.end()) in.push_back(sg.faceSegment[f]);
+  }
+  // The grazing loops go first, on their own: the segment around one has it for a hole, which is then no more.
+  std::vector<int> removed;
+  for (const SegmentationProblem& problem : sg.problems) {
+    if (problem.segment < 0 || (problem.code != "segment.sliver" && problem.code != "segment.thin")) continue;
+    const Segment& segment = sg.segments[problem.segment];
+    if (segment.loops.size() != 1 || segment.loops[0].seams.empty()) continue;
+    const std::vector<int>& around = segment.loops[0].seams;
+    const int seam = around.front();
+    if (seam >= fixedSeams && seam < int(seams.size()) && seams[seam].closed &&
+        std::all_of(around.begin(), around.end(), [&](int s) { return s == seam; }) &&
+        std::find(removed.begin(), removed.end(), seam) == removed.end())
+      removed.push_back(seam);
+  }
+  if (!removed.empty()) {
+    std::sort(removed.rbegin(), removed.rend());
+    for (int seam : removed) seams.erase(seams.begin() + seam);
+    return int(removed.size());
+  }
+  for (const SegmentationProblem& problem : sg.problems) {
+    if (problem.segment < 0) continue;
+    const Segment& segment = sg.segments[problem.segment];
+    if (problem.code == "segment.not-disk" && segment.genus == 0 && segment.loops.size() >= 2) {
+      const auto length = [&](const BoundaryLoop& l) {
+        double total = 0;
+        for (size_t i = 0; i < l.vertices.size(); ++i)
+          total += (cut.V.row(l.vertices[(i + 1) % l.vertices.size()]) - cut.V.row(l.vertices[i])).norm();
+        return total;
+      };
+      size_t outer = 0;
+      for (size_t l = 1; l < segment.loops.size(); ++l)
+        if (length(segment.loops[l]) > length(segment.loops[outer])) outer = l;
+      for (size_t l = 0; l < segment.loops.size(); ++l) {
+        if (l == outer) continue;
+        int from = -1, to = -1;
+        double best = INFINITY;
+        for (size_t o = 0; o < segment.loops.size(); ++o) {
+          if (o == l) continue;
+          for (int a : segment.loops[l].vertices)
+            for (int b : segment.loops[o].vertices)
+              if (const double d = (cut.V.row(a) - cut.V.row(b)).squaredNorm(); d < best) best = d, from = a, to = b;
+        }
+        if (from < 0) continue;
+        seams.push_back(makeSeam("a cut that opens a tube", false, {sg.vertexOrigin[from], sg.vertexOrigin[to]}));
+        ++added;
+      }
+    } else if (problem.code == "segment.too-big-for-seam") {
+      Eigen::Vector3d center = Eigen::Vector3d::Zero();
+      Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+      double area = 0;
+      for (int t : segment.triangles) {
+        const Eigen::Vector3d a = cut.V.row(cut.F(t, 0)), b = cut.V.row(cut.F(t, 1)), c = cut.V.row(cut.F(t, 2));
+        const double at = 0.5 * (b - a).cross(c - a).norm();
+        const Eigen::Vector3d m = (a + b + c) / 3;
+        center += at * m, second += at * m * m.transpose(), area += at;
+      }
+      if (!(area > 0)) continue;
+      center /= area;
+      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(second / area - center * center.transpose());
+      // Across its longest extent first; a cap over two limbs has none there, and gets the planes across the others
+      // (around each limb).
+      for (int direction = 2; direction >= 0; --direction) {
+        const Eigen::Vector3d normal = eig.eigenvectors().col(direction);
+        int laid = 0;
+        for (const SectionLoop& loop : planeSection(scene.target, normal, normal.dot(center))) {
+          const bool inside = std::all_of(loop.begin(), loop.end(), [&](const SectionPoint& p) {
+            const std::vector<int>& in = faceSegments[p.at.face];
+            return std::find(in.begin(), in.end(), problem.segment) != in.end();
+          });
+          if (!inside) continue;
+          seams.push_back(makeSeam("a seam around a limb", true, sectionSeamPoints(scene.target, loop, spacing)));
+          ++laid;
+        }
+        if (laid > 0) {
+          added += laid;
+          break;
+        }
+      }
+    }
+  }
+  return added;
+}
+
+}  // namespace
+
+LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
                                 const EvaluateOptions& options) {
   const auto t0 = std::chrono::steady_clock::now();
   LayoutEvaluation out;
@@ -297,14 +404,22 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
     out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     return out;
   };
-  scene.design.seams = seams;
-  try {
-    traceDesignSeams(scene);
-  } catch (const Error& e) {
-    out.problem = e.what();
-    return done();
+  out.seams = seams;
+  const double spacing =
+      kSeamPointSpacing * (scene.target.V.colwise().maxCoeff() - scene.target.V.colwise().minCoeff()).norm();
+  for (int round = 0;; ++round) {
+    scene.design.seams = out.seams;
+    try {
+      traceDesignSeams(scene);
+    } catch (const Error& e) {
+      out.problem = e.what();
+      return done();
+    }
+    segmentDesignScene(scene);
+    if (scene.segmentation.problems.empty() || round == options.openingRounds ||
+        openSegments(scene, spacing, fixedSeams, out.seams) == 0)
+      break;
   }
-  segmentDesignScene(scene);
   const Segmentation& segmentation = scene.segmentation;
   if (!segmentation.problems.empty()) {
     out.problem = segmentation.problems.front().message;
@@ -319,6 +434,8 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
   }
   OptimizeOptions oo = appStoppingRule();
   oo.stopping.maxIterations = options.maxIterations;
+  // A first look (no iteration) measures the flattened panels' own inflation, not their cut.
+  oo.remeshing.cutPanels = options.maxIterations > 0;
   PatternOptimizer optimizer(scene.target, built, designSeamWeights(scene.design), oo);
   while (optimizer.step(5) == OptimizeState::Running) {
   }

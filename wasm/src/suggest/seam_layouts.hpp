@@ -33,7 +33,7 @@ struct LayoutProposal {
 };
 
 struct LayoutRequest {
-  int panels = 6;         // at most this many on a round shape (2 m (k + 1) <= panels)
+  int panels = 6;         // at most this many: layouts of 2 m (k + 1) = panels - 4 to panels on a round shape
   int symmetryAxis = -1;  // the target's own axis across whose mid-plane (of its box) the layout is its own mirror
                           // image; -1: any layout
   UpAxis up;              // which axis the names call vertical
@@ -59,6 +59,8 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
 struct LayoutEvaluation {
   bool ok = false;
   std::string problem;  // why it was not scored, in the designer's words
+  // The layout's seams, with those that opened its segments into panels (evaluateLayout).
+  std::vector<DesignSeam> seams;
   int panels = 0;
   double seamLength = 0;  // [m], every seam once
   // After the coarse optimization, relative to the target's diagonal: both ways (OptimizeRecord::bothWaysDistance),
@@ -71,12 +73,16 @@ struct LayoutEvaluation {
 
 struct EvaluateOptions {
   int triangles = 1000;    // the coarse resolution the layouts are compared at
-  int maxIterations = 40;  // of the app's stopping rule
+  int maxIterations = 40;  // of the app's stopping rule; 0: the flattened panels' inflation alone, a first look
+  // Rounds of seams added where plane sections leave a segment that is not a panel (a tube around a limb, a hole,
+  // a limb's end too big for its seam).
+  int openingRounds = 3;
 };
 
-// Traces and segments `seams` on the scene's target (scene.design's seams become them), and when every segment
-// is a disk without a problem, flattens, optimizes at the coarse resolution and measures.
-LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams,
+// Traces and segments `seams` on the scene's target (scene.design's seams become them), adds the seams that open
+// its segments into panels (never changing its first `fixedSeams`, the designer's own), and when every segment is a
+// disk without a problem, flattens, optimizes at the coarse resolution and measures.
+LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
                                 const EvaluateOptions& options = {});
 
 }  // namespace billow
