@@ -210,7 +210,7 @@ TEST(SuggestCommand, WritesRankedLayoutsThatOpenAsDesigns) {
     const nlohmann::json& l = layouts[k];
     EXPECT_EQ(l["rank"], int(k + 1));
     if (k > 0) {
-      EXPECT_GE(l["distance"]["both_ways_rms"].get<double>(), layouts[k - 1]["distance"]["both_ways_rms"]);
+      EXPECT_GE(l["distance"]["worse_way_rms"].get<double>(), layouts[k - 1]["distance"]["worse_way_rms"]);
     }
     EXPECT_LE(l["panels"].get<int>(), 4);
     // The design opens again (its target named relative to the folder) and cuts into the same disk panels.

@@ -49,6 +49,16 @@
 //     max, position (target units), radius, where, message, helps }] (uncoveredRegions, io/distance_json.hpp),
 //     uncoveredDistance (the threshold, over the diagonal) and uncoveredTrianglesPtr() #U x 3 i32 (the regions'
 //     target triangles as vertex indices, U = uncoveredTriangles(): what the inflated pane draws as left out)
+//   Suggested seam layouts (suggest/seam_layouts.hpp), a layout a call so the worker reports progress and can stop:
+//   t.mirrorSymmetry() -> { axis: "x" | "y" | "z" | null }: the target's own axis across whose box mid-plane it is
+//     its own mirror image (mirrorSymmetryAxis)
+//   t.suggestStart(keptSeamsJson, optionsJson)  kept: the designer's seams the layouts add to; options: buildPattern's
+//     and { panels (2-40), symmetry ("x" | "y" | "z" | null: layouts that are their own mirror image across it),
+//     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...] }
+//   t.suggestLayout(index, optimize) -> { ok, problem, name, panels, seamLength [m], distance (the worse way),
+//     inflatedToTarget, targetToInflated (over the target's diagonal), iterations, ms, seams (the kept ones first,
+//     then the layout's, as the design document writes them) }: optimize false, a first look (the flattened panels
+//     inflated); true, the layout looked at before optimized at the options' resolution
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -72,6 +82,7 @@
 #include "seams/surface_distance.hpp"
 #include "seams/surface_point.hpp"
 #include "segment/segmentation.hpp"
+#include "suggest/seam_layouts.hpp"
 #include "util/memory_budget.hpp"
 
 namespace {
@@ -89,6 +100,7 @@ class TargetSession {
       projector_.reset();
       scaledGeodesic_.reset();
       optimizer_.reset();
+      suggest_.reset();
       mesh_.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
       mesh_.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
       topology_ = billow::buildTopology(mesh_);
@@ -337,6 +349,83 @@ class TargetSession {
                    {"totalMs", f.totalMs}}}});
   }
 
+  std::string mirrorSymmetry() const {
+    return guarded([&] {
+      requireTarget();
+      const int axis = billow::mirrorSymmetryAxis(mesh_, *projector_);
+      return json({{"axis", axis < 0 ? json(nullptr) : json(std::string(1, "xyz"[axis]))}}).dump();
+    });
+  }
+
+  std::string suggestStart(const std::string& keptSeamsJson, const std::string& optionsJson) {
+    return guarded([&] {
+      suggest_.reset();
+      const PatternRequest request = readPatternRequest(keptSeamsJson, optionsJson);
+      const json o = parse(optionsJson);
+      auto s = std::make_unique<Suggestion>();
+      s->kept = request.design.seams;
+      billow::Design design = request.design;
+      design.scale = request.scale;
+      s->scene = billow::makeTargetScene(design, mesh_);
+      s->evaluate.triangles = request.triangles;
+      if (o.contains("maxIterations") && o["maxIterations"].is_number_integer())
+        s->evaluate.maxIterations = std::clamp(o["maxIterations"].get<int>(), 1, 300);
+      billow::LayoutRequest layout;
+      layout.up = request.design.target.up;
+      layout.panels = o.contains("panels") && o["panels"].is_number_integer() ? o["panels"].get<int>() : 0;
+      if (layout.panels < 2 || layout.panels > 40) throw billow::Error("suggest.bad-panels", "Ask for 2 to 40 panels.");
+      if (o.contains("symmetry") && o["symmetry"].is_string()) {
+        const std::string axis = o["symmetry"].get<std::string>();
+        layout.symmetryAxis = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
+      }
+      s->proposals = billow::proposeLayouts(s->scene->target, layout);
+      s->looked.resize(s->proposals.size());
+      json names = json::array();
+      for (const billow::LayoutProposal& p : s->proposals) names.push_back(p.name);
+      suggest_ = std::move(s);
+      return json({{"proposals", names}}).dump();
+    });
+  }
+
+  std::string suggestLayout(int index, bool optimize) {
+    return guarded([&] {
+      if (!suggest_ || index < 0 || index >= int(suggest_->proposals.size()))
+        throw billow::Error("suggest.not-started", "There are no layouts to try yet.");
+      Suggestion& s = *suggest_;
+      billow::LayoutEvaluation e;
+      if (!optimize) {
+        billow::EvaluateOptions look = s.evaluate;
+        look.maxIterations = 0;
+        std::vector<billow::DesignSeam> seams = s.kept;
+        try {
+          const std::vector<billow::DesignSeam> laid = billow::proposalSeams(s.scene->target, s.proposals[index]);
+          seams.insert(seams.end(), laid.begin(), laid.end());
+          e = billow::evaluateLayout(*s.scene, seams, int(s.kept.size()), look);
+        } catch (const billow::Error& error) {
+          e.problem = error.what();
+        }
+        s.looked[index] = e.ok ? e.seams : std::vector<billow::DesignSeam>{};
+      } else {
+        if (s.looked[index].empty()) throw billow::Error("suggest.not-looked", "That layout was not looked at yet.");
+        e = billow::evaluateLayout(*s.scene, s.looked[index], int(s.looked[index].size()), s.evaluate);
+      }
+      json seams = json::array();
+      for (const billow::DesignSeam& seam : e.seams) seams.push_back(billow::designSeamJson(seam));
+      return json({{"ok", e.ok},
+                   {"problem", e.problem},
+                   {"name", s.proposals[index].name},
+                   {"panels", e.panels},
+                   {"seamLength", e.seamLength},
+                   {"distance", e.distance},
+                   {"inflatedToTarget", e.inflatedToTarget},
+                   {"targetToInflated", e.targetToInflated},
+                   {"iterations", e.iterations},
+                   {"ms", e.ms},
+                   {"seams", e.ok ? seams : json::array()}})
+          .dump();
+    });
+  }
+
   int cutVertices() const { return static_cast<int>(cut_.V.rows()); }
   int cutTriangles() const { return static_cast<int>(cut_.F.rows()); }
   uintptr_t cutPositionsPtr() const { return reinterpret_cast<uintptr_t>(cut_.V.data()); }
@@ -425,6 +514,16 @@ class TargetSession {
     scale_ = scale;
   }
 
+  // A suggestion under way: the target scaled as asked, the designer's seams kept, the layouts and the seams each
+  // first look settled on (opened into panels; empty where it failed).
+  struct Suggestion {
+    std::unique_ptr<billow::DesignScene> scene;
+    std::vector<billow::DesignSeam> kept;
+    std::vector<billow::LayoutProposal> proposals;
+    std::vector<std::vector<billow::DesignSeam>> looked;
+    billow::EvaluateOptions evaluate;
+  };
+  std::unique_ptr<Suggestion> suggest_;
   billow::TriMesh mesh_, cut_, scaled_;
   billow::MeshTopology scaledTopology_;
   std::unique_ptr<billow::SurfaceProjector> scaledProjector_;
@@ -466,5 +565,8 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("optimizedDistance", &TargetSession::optimizedDistance)
       .function("distancesPtr", &TargetSession::distancesPtr)
       .function("uncoveredTrianglesPtr", &TargetSession::uncoveredTrianglesPtr)
-      .function("uncoveredTriangles", &TargetSession::uncoveredTriangles);
+      .function("uncoveredTriangles", &TargetSession::uncoveredTriangles)
+      .function("mirrorSymmetry", &TargetSession::mirrorSymmetry)
+      .function("suggestStart", &TargetSession::suggestStart)
+      .function("suggestLayout", &TargetSession::suggestLayout);
 }

@@ -31,7 +31,7 @@ int usage(bool help) {
                "--height meters, default 0.6): layouts of plane sections with at most N panels (2 to 40), seams\n"
                "added where a section leaves a part that is not a panel (a tube around a limb). Each is first\n"
                "inflated flat; the K closest (default 6) are optimized at a coarse resolution (default 1000\n"
-               "triangles, at most 40 iterations) and ranked by their distance to the target.\n"
+               "triangles, at most 40 iterations) and ranked by their distance to the target (the worse way).\n"
                "--symmetry keeps the target's mirror symmetry (the\n"
                "design's symmetry plane, else the one the shape has); --keep-seams adds to the design's own seams.\n"
                "Writes DIR/layout-K.billow.json (best first), DIR/layout-K.pattern.json and DIR/summary.json.\n"
@@ -174,6 +174,10 @@ int suggestCommand(const std::vector<std::string>& argv) {
   for (size_t r = 0; r < ranked.size(); ++r) {
     const Tried& t = *ranked[r];
     Design design = forOutDir(input, designPath, dir);
+    if (kept.empty()) {  // the design's own seams, their fields and the internal connections between them go
+      design.extra.erase("seams");
+      design.connections.clear();
+    }
     design.seams = t.result.seams;
     if (request.symmetryAxis >= 0) design.extra["symmetry"] = {{"axis", std::string(1, "xyz"[request.symmetryAxis])}};
     const std::string stem = "layout-" + std::to_string(r + 1);
@@ -186,7 +190,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
                        {"panels", t.result.panels},
                        {"seam_length_m", t.result.seamLength},
                        {"distance",
-                        {{"both_ways_rms", t.result.distance},
+                        {{"worse_way_rms", t.result.distance},
                          {"inflated_to_target_rms", t.result.inflatedToTarget},
                          {"target_to_inflated_rms", t.result.targetToInflated}}},
                        {"iterations", t.result.iterations},
@@ -207,7 +211,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   std::printf("rank  panels  distance %%  seams m  layout\n");
   for (const json& l : layouts)
     std::printf("%4d  %6d  %10.2f  %7.2f  %s\n", l["rank"].get<int>(), l["panels"].get<int>(),
-                100 * l["distance"]["both_ways_rms"].get<double>(), l["seam_length_m"].get<double>(),
+                100 * l["distance"]["worse_way_rms"].get<double>(), l["seam_length_m"].get<double>(),
                 l["name"].get<std::string>().c_str());
   if (ranked.empty()) {
     std::fprintf(stderr,

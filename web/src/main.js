@@ -19,6 +19,7 @@ import { Theme } from './app/theme.js';
 import { Help } from './app/help.js';
 import { Classroom, classroomRequested } from './app/classroom.js';
 import { LayoutCompare } from './app/compare.js';
+import { SeamSuggestions } from './app/suggest.js';
 import { statusTooltip } from './views/status-line.js';
 import { dockBoxes } from './views/boxes.js';
 import { testFacade } from './app/test-facade.js';
@@ -247,14 +248,17 @@ app.tabGuard = tabGuard;
 
 const gallery = new Gallery(app, $('gallery-button'));
 const compare = new LayoutCompare({ app, viewport, button: $('compare-button') });
+const suggestions = new SeamSuggestions({ app, button: $('suggest-button') });
 const classroom = new Classroom({ app, viewport, theme, exporter, seamTool });
 $('classroom-button').addEventListener('click', () => {
   compare.close();
+  suggestions.close();
   classroom.start();
 });
 window.addEventListener('hashchange', () => {
   if (location.hash === '#classroom' && document.body.dataset.ready) {
     compare.close();
+    suggestions.close();
     classroom.start();
   }
 });

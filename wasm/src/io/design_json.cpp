@@ -344,6 +344,19 @@ UpAxis readDesignUp(const json& value, const DesignReadOptions& options, std::ve
   return readUp(r, value);
 }
 
+json designSeamJson(const DesignSeam& s, const json& base) {
+  json js = base.is_object() ? base : json::object();
+  if (!s.name.empty()) js["name"] = s.name;
+  js["closed"] = s.closed, js["weight"] = s.weight, js["smooth"] = s.smooth;
+  json pts = json::array();
+  for (const DesignPoint& p : s.points)
+    pts.push_back(p.onSurface ? json{{"face", p.surface.face},
+                                     {"bary", {p.surface.bary[0], p.surface.bary[1], p.surface.bary[2]}}}
+                              : json{p.position[0], p.position[1], p.position[2]});
+  js["points"] = pts;
+  return js;
+}
+
 std::string writeDesignJson(const Design& d, int indent) {
   json doc = d.extra.is_object() ? d.extra : json::object();
   const auto base = [&](const char* key) {
@@ -378,16 +391,8 @@ std::string writeDesignJson(const Design& d, int indent) {
   const json* oldSeams = doc.contains("seams") && doc["seams"].is_array() ? &doc["seams"] : nullptr;
   for (size_t i = 0; i < d.seams.size(); ++i) {
     const DesignSeam& s = d.seams[i];
-    json js = oldSeams && i < oldSeams->size() && (*oldSeams)[i].is_object() ? (*oldSeams)[i] : json::object();
-    if (!s.name.empty()) js["name"] = s.name;
-    js["closed"] = s.closed, js["weight"] = s.weight, js["smooth"] = s.smooth;
-    json pts = json::array();
-    for (const DesignPoint& p : s.points)
-      pts.push_back(p.onSurface ? json{{"face", p.surface.face},
-                                       {"bary", {p.surface.bary[0], p.surface.bary[1], p.surface.bary[2]}}}
-                                : json{p.position[0], p.position[1], p.position[2]});
-    js["points"] = pts;
-    seams.push_back(js);
+    seams.push_back(
+        designSeamJson(s, oldSeams && i < oldSeams->size() && (*oldSeams)[i].is_object() ? (*oldSeams)[i] : json()));
   }
   doc["seams"] = seams;
   json conns = json::array();

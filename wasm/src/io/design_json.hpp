@@ -109,6 +109,8 @@ double readDesignPressure(const nlohmann::json& value, double fallback = 1000.0,
 UpAxis readDesignUp(const nlohmann::json& value, const DesignReadOptions& options = {},
                     std::vector<DesignWarning>* warnings = nullptr);
 std::string writeDesignJson(const Design& design, int indent = 2);
+// One seam as the design document writes it, over `base` (the fields it had when read, kept).
+nlohmann::json designSeamJson(const DesignSeam& seam, const nlohmann::json& base = nlohmann::json());
 
 // Folders searched for `{ "example": id }` targets (<dir>/<id>.obj): $BILLOW_EXAMPLES (':'-separated), then
 // <exeDir>/../../web/public/examples when exeDir is given.

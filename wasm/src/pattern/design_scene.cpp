@@ -7,6 +7,20 @@
 
 namespace billow {
 
+namespace {
+
+// The scene's target: scaled to meters by its design's size, with its topology, projector and geodesic solver.
+void fillTargetScene(DesignScene& scene, const TriMesh& own) {
+  scene.scale = designScale(scene.design, own);
+  scene.target = own;
+  scene.target.V *= scene.scale;
+  scene.topology = buildTopology(scene.target);
+  scene.projector = std::make_unique<SurfaceProjector>(scene.target);
+  scene.geodesic = std::make_unique<GeodesicSolver>(scene.target, scene.topology);
+}
+
+}  // namespace
+
 std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const std::string& designPath,
                                                    const std::vector<std::string>& exampleDirs) {
   auto scene = std::make_unique<DesignScene>();
@@ -23,13 +37,15 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
       if (i.severity == "error") why += (why.empty() ? "" : " ") + i.message;
     throw Error("design.bad-target", "The design's target cannot be used: " + why);
   }
-  scene->scale = designScale(design, own);
-  scene->target = own;
-  scene->target.V *= scene->scale;
-  scene->topology = buildTopology(scene->target);
-  scene->projector = std::make_unique<SurfaceProjector>(scene->target);
-  scene->geodesic = std::make_unique<GeodesicSolver>(scene->target, scene->topology);
+  fillTargetScene(*scene, own);
   scene->loadMs = msSince(t0);
+  return scene;
+}
+
+std::unique_ptr<DesignScene> makeTargetScene(const Design& design, const TriMesh& own) {
+  auto scene = std::make_unique<DesignScene>();
+  scene->design = design;
+  fillTargetScene(*scene, own);
   return scene;
 }
 

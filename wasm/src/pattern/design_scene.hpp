@@ -33,6 +33,9 @@ std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::st
 // solver (no curves, no segmentation yet).
 std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const std::string& designPath,
                                                    const std::vector<std::string>& exampleDirs);
+// The same for a target already loaded and checked, in its own units (the app's worker holds it): scaled by the
+// design's size.
+std::unique_ptr<DesignScene> makeTargetScene(const Design& design, const TriMesh& targetOwnUnits);
 // The seams placed on it (designSeamSpecs: triangles it has, 3D points near it) and traced.
 void traceDesignSeams(DesignScene& scene);
 // The target cut along them.

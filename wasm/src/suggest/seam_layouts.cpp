@@ -444,8 +444,8 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
     return done();
   }
   const OptimizeRecord& last = optimizer.history().back();
-  out.distance = last.bothWaysDistance();
   out.inflatedToTarget = last.distanceRms, out.targetToInflated = last.targetDistanceRms;
+  out.distance = std::max(out.inflatedToTarget, out.targetToInflated);
   out.iterations = optimizer.iterations();
   out.pattern = optimizedPattern(optimizer);
   out.ok = true;

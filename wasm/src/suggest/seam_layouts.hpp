@@ -63,8 +63,8 @@ struct LayoutEvaluation {
   std::vector<DesignSeam> seams;
   int panels = 0;
   double seamLength = 0;  // [m], every seam once
-  // After the coarse optimization, relative to the target's diagonal: both ways (OptimizeRecord::bothWaysDistance),
-  // and each way.
+  // After the coarse optimization, relative to the target's diagonal: each way's RMS, and the worse of the two, by
+  // which layouts are ranked (one way alone reads close for a shape that leaves a limb out; the app's figure).
   double distance = 0, inflatedToTarget = 0, targetToInflated = 0;
   int iterations = 0;
   double ms = 0;

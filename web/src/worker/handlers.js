@@ -146,6 +146,38 @@ export function createHandlers(api) {
       }
       return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status };
     },
+    *[Op.mirrorSymmetry]() {
+      return requireSession().mirrorSymmetry();
+    },
+    // Seam layouts for the target (suggest/seam_layouts.hpp): a first look at each, then the closest optimized,
+    // one layout a step, so progress shows and a cancel stops between layouts.
+    *[Op.suggestSeams]({ kept = [], optimize = 6, ...options }) {
+      const session = requireSession();
+      const { proposals } = session.suggestStart(kept, options);
+      const looked = [];
+      const notUsed = [];
+      for (const [i, name] of proposals.entries()) {
+        yield { stage: 'a first look at each layout', done: i, total: proposals.length, detail: name };
+        const r = session.suggestLayout(i, false);
+        if (r.ok && r.panels <= options.panels) looked.push({ index: i, ...r });
+        else notUsed.push({ name, why: r.ok ? `it makes ${r.panels} panels on this shape` : r.problem });
+      }
+      looked.sort((a, b) => a.distance - b.distance);
+      const chosen = looked.slice(0, optimize);
+      const layouts = [];
+      for (const [k, { index, name }] of chosen.entries()) {
+        yield { stage: 'optimizing the closest layouts', done: k, total: chosen.length, detail: name };
+        const r = session.suggestLayout(index, true);
+        if (!r.ok) {
+          notUsed.push({ name, why: r.problem });
+          continue;
+        }
+        layouts.push(r);
+        yield { stage: 'optimizing the closest layouts', done: k + 1, total: chosen.length, layout: r };
+      }
+      layouts.sort((a, b) => a.distance - b.distance || a.seamLength - b.seamLength);
+      return { layouts, notUsed, tried: proposals.length };
+    },
     *[Op.exportPattern]({ patternText, options }) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);

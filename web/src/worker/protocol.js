@@ -30,6 +30,13 @@ export const Op = Object.freeze({
   // { seams, scale, triangles, pressure, material, maxIterations } -> { flattenedText, patternText, status }: the panels
   // optimized so their inflated shape matches the target; progress streams each iterate's shape.
   optimizeDesign: 'optimizeDesign',
+  // {} -> { axis: 'x' | 'y' | 'z' | null }: the target's mirror symmetry plane, where it has one.
+  mirrorSymmetry: 'mirrorSymmetry',
+  // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, optimize } ->
+  // { layouts: [{ name, panels, seamLength, distance, inflatedToTarget, targetToInflated, seams }] (best first),
+  // notUsed: [{ name, why }] }: seam layouts for the target, each looked at, the closest `optimize` optimized at a
+  // coarse resolution; progress carries each optimized layout as it comes ({ layout }); cancellable.
+  suggestSeams: 'suggestSeams',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
   // { patternText, options } -> inflated result (Inflation.snapshot in solver-api.js); stepped, with
@@ -53,7 +60,7 @@ export const Op = Object.freeze({
 
 // Quick operations that only read the worker's state: they run at once, even between the steps of a
 // long operation, so drawing stays responsive while the panels inflate.
-export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.distanceToTarget, Op.materialPresets, Op.memoryStats]);
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.distanceToTarget, Op.materialPresets, Op.memoryStats, Op.mirrorSymmetry]);
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);

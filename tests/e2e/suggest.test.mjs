@@ -1,0 +1,55 @@
+// Suggest seams, as a designer uses it: open the panel, ask for two panels, watch the layouts come best first,
+// use the best one (the target is cut into its panels, and they are made), undo back to the seams before. A second
+// run is stopped by an edit.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openFreshPage, optimizedResultShown, screenshot, useBrowser } from './harness.mjs';
+
+const env = useBrowser({ before, after });
+
+test('suggested layouts come best first, and one is used as the design\'s seams, undoably', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  const before = await page.evaluate(() => JSON.stringify(window.billow.test.design.seams));
+  await page.click('#suggest-button');
+  await page.waitForSelector('dialog.suggest-dialog[open]');
+  await page.fill('.suggest-panels', '2');
+  await page.click('.suggest-go');
+  await page.waitForSelector('.suggest-progress:not([hidden])');
+  await page.waitForFunction(() => /layouts tried/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 240000 });
+  const cards = await page.$$eval('.suggest-card', (els) =>
+    els.map((el) => ({
+      name: el.querySelector('h3').textContent,
+      panels: Number(el.querySelector('[data-figure="panels"]').textContent),
+      distance: parseFloat(el.querySelector('[data-figure="distance"]').textContent),
+      seams: el.querySelector('[data-figure="seam-length"]').textContent,
+    })),
+  );
+  assert.ok(cards.length >= 1 && cards.length <= 3, JSON.stringify(cards));
+  for (const card of cards) {
+    assert.equal(card.panels, 2, card.name);
+    assert.ok(card.distance > 0 && card.distance < 20, `${card.name}: ${card.distance}`);
+    assert.match(card.seams, /\d/);
+  }
+  assert.match(cards[0].name, /^1\. /);
+  await screenshot(page, 'suggest-layouts');
+  await page.click('.suggest-card[data-rank="1"] .suggest-use');
+  // The layout's seams are the design's, the target is cut into its two panels, and the panels are made.
+  await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 2, null, { timeout: 60000 });
+  const used = await page.evaluate(() => window.billow.test.design.seams);
+  assert.ok(used.length >= 1);
+  assert.ok(used.every((s) => s.points.every((p) => Number.isInteger(p.face))));
+  await optimizedResultShown(page);
+  assert.ok(await page.$('.suggest-card.current'), 'the card used is marked');
+  await screenshot(page, 'suggest-used');
+  await page.click('#undo-button');
+  await page.waitForFunction((seams) => JSON.stringify(window.billow.test.design.seams) === seams, before);
+
+  // A second suggestion stops when the design changes under it.
+  await page.fill('.suggest-panels', '6');
+  await page.click('.suggest-go');
+  await page.waitForFunction(() => /first look/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 60000 });
+  await page.click('#redo-button');
+  await page.waitForFunction(() => /Stopped: the design changed/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 30000 });
+  assert.equal(await page.textContent('.suggest-go'), 'Suggest layouts');
+  assert.deepEqual(page.errors, []);
+});

@@ -1,0 +1,80 @@
+// Suggested seam layouts through the worker's handlers (the wasm module, as the app's worker runs them): layouts
+// come best first with seams the app can use as its own, progress names each layout, the designer's seams are kept
+// first, and the target's mirror symmetry is found.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { readFileSync } from 'node:fs';
+import { loadApi } from './load-module.mjs';
+import { readObjText, loadSharedMesh } from './obj.mjs';
+import { createHandlers } from '../../web/src/worker/handlers.js';
+
+const api = await loadApi();
+const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
+const session = (mesh) => {
+  const handlers = createHandlers(api);
+  const target = mesh.endsWith('.obj') && !mesh.includes('/') ? loadSharedMesh(mesh) : readObjText(read(mesh));
+  for (const _ of handlers.setTarget({ positions: target.positions, indices: target.indices }));
+  return handlers;
+};
+const drive = (generator, progress = []) => {
+  for (let step = generator.next(); ; step = generator.next()) {
+    if (step.done) return step.value;
+    progress.push(step.value);
+  }
+};
+
+test('layouts for four panels of the sphere come best first, each as seams of surface points the app can draw', () => {
+  const handlers = session('../../web/public/examples/sphere.obj');
+  const progress = [];
+  const result = drive(handlers.suggestSeams({ panels: 4, scale: 0.25, triangles: 400, maxIterations: 8, optimize: 3 }), progress);
+  assert.ok(result.tried >= 3, `${result.tried} layouts tried`);
+  assert.ok(result.layouts.length >= 2 && result.layouts.length <= 3, `${result.layouts.length} layouts`);
+  for (const [k, layout] of result.layouts.entries()) {
+    assert.ok(layout.panels >= 2 && layout.panels <= 4, `${layout.name}: ${layout.panels} panels`);
+    assert.ok(layout.distance > 0 && layout.distance < 0.03, `${layout.name}: ${layout.distance}`);
+    assert.ok(layout.seamLength > 0);
+    if (k > 0) assert.ok(layout.distance >= result.layouts[k - 1].distance, 'best first');
+    assert.ok(layout.seams.length >= 1);
+    for (const seam of layout.seams) {
+      assert.equal(typeof seam.closed, 'boolean');
+      for (const p of seam.points) {
+        assert.ok(Number.isInteger(p.face) && p.face >= 0);
+        assert.ok(Math.abs(p.bary[0] + p.bary[1] + p.bary[2] - 1) < 1e-9);
+      }
+    }
+    // The seams cut the sphere into the panels the layout says, with no problem.
+    const cut = drive(handlers.segment({ seams: layout.seams }));
+    assert.equal(cut.segments.length, layout.panels, layout.name);
+    assert.deepEqual(cut.problems, [], layout.name);
+  }
+  // Progress names the layout being looked at, and brings each optimized layout as it comes.
+  const looks = progress.filter((p) => p.stage === 'a first look at each layout');
+  assert.equal(looks.length, result.tried);
+  assert.ok(looks.every((p, i) => p.done === i && p.total === result.tried && p.detail));
+  assert.equal(progress.filter((p) => p.layout).length, result.layouts.length);
+});
+
+test('the designer\'s seams stay first, and the cow\'s mirror plane is found where the bunny has none', () => {
+  const cow = session('../../web/public/examples/spot.obj');
+  assert.deepEqual(drive(cow.mirrorSymmetry()), { axis: 'x' });
+  const bunny = session('bunny.obj');
+  assert.deepEqual(drive(bunny.mirrorSymmetry()), { axis: null });
+  // A seam of the designer's (a loop halving the sphere, from a first suggestion) stays first in every layout.
+  const sphere = session('../../web/public/examples/sphere.obj');
+  const halves = drive(sphere.suggestSeams({ panels: 2, scale: 0.25, triangles: 300, maxIterations: 2, optimize: 1 }));
+  const kept = [{ ...halves.layouts[0].seams[0], name: 'mine' }];
+  assert.equal(kept[0].closed, true);
+  const result = drive(sphere.suggestSeams({ kept, panels: 6, scale: 0.25, triangles: 400, maxIterations: 4, optimize: 2 }));
+  assert.ok(result.layouts.length >= 1, JSON.stringify(result.notUsed));
+  for (const layout of result.layouts) {
+    assert.equal(layout.seams[0].name, 'mine');
+    // The same points, as the design reader keeps them (weights normalized to a sum of 1).
+    assert.equal(layout.seams[0].points.length, kept[0].points.length);
+    layout.seams[0].points.forEach((p, i) => {
+      assert.equal(p.face, kept[0].points[i].face);
+      p.bary.forEach((w, k) => assert.ok(Math.abs(w - kept[0].points[i].bary[k]) < 1e-7, `${w} vs ${kept[0].points[i].bary[k]}`));
+    });
+    assert.ok(layout.seams.length > 1);
+  }
+  assert.throws(() => drive(sphere.suggestSeams({ panels: 1, scale: 0.25 })), /2 to 40 panels/);
+});

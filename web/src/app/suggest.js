@@ -1,0 +1,257 @@
+// Suggested seam layouts (wasm/src/suggest/seam_layouts.hpp): the designer says how many panels they will cut at
+// most, whether the layout keeps the target's mirror symmetry (offered where the target has one) and whether their own
+// seams stay; the worker lays plane sections through and across the target's axes, opens what they leave unflattenable
+// (a tube around a limb), looks at each layout, optimizes the closest few at a coarse resolution and brings them
+// best first. "Use" makes a layout's seams the design's, an ordinary edit (Undo returns). An edit to the seams while
+// it runs stops it: its layouts were made for the seams there were. Not modal: the target stays in view beside it.
+import './suggest.css';
+import { ErrorCode, Op } from '../worker/protocol.js';
+import { formatDistance, formatLength, formatPercent, worseDistance } from './units.js';
+import { optimizeArgs } from './stored-result.js';
+import { upOf } from './up-axis.js';
+import { dialogHeader } from '../views/dialog-header.js';
+
+const PANELS = { min: 2, max: 40, start: 6 };
+// What a suggestion is made at: coarse, so a dozen layouts are tried in seconds (the bench's comparison of layouts
+// holds at this resolution: bench/README.md "Suggested seam layouts").
+const TRIANGLES = 1000;
+const MAX_ITERATIONS = 40;
+const OPTIMIZED = 6;
+
+export class SeamSuggestions {
+  constructor({ app, button }) {
+    this.app = app;
+    this.call = null;
+    this.layouts = [];
+    this.symmetryOf = new Map(); // target key -> the axis the worker found, or null
+    this.build();
+    button?.addEventListener('click', () => (this.dialog.open ? this.close() : this.open()));
+  }
+
+  build() {
+    const dialog = (this.dialog = document.createElement('dialog'));
+    dialog.className = 'suggest-dialog';
+    const header = dialogHeader(dialog, {
+      id: 'suggest-title',
+      title: 'Suggest seams',
+      closeClass: 'suggest-close',
+      closeTitle: 'Close (a suggestion under way stops)',
+      onClose: () => this.close(),
+    });
+    const body = document.createElement('div');
+    body.className = 'suggest-body';
+    const intro = document.createElement('p');
+    intro.className = 'suggest-intro';
+    intro.textContent = 'Billow tries seam layouts on this shape, makes and inflates the panels of each, and shows the closest to the target first. "Use" makes one your seams, to edit as your own (Undo returns).';
+    const form = document.createElement('div');
+    form.className = 'suggest-form';
+    const panels = document.createElement('label');
+    this.panels = Object.assign(document.createElement('input'), { type: 'number', min: PANELS.min, max: PANELS.max, step: 1, value: PANELS.start, className: 'suggest-panels' });
+    this.panels.setAttribute('aria-label', 'Panels at most');
+    panels.append('Panels, at most ', this.panels);
+    const symmetry = document.createElement('label');
+    symmetry.className = 'suggest-symmetry';
+    this.symmetry = Object.assign(document.createElement('input'), { type: 'checkbox', checked: true });
+    this.symmetryText = document.createElement('span');
+    symmetry.append(this.symmetry, this.symmetryText);
+    this.symmetryLabel = symmetry;
+    const keep = document.createElement('label');
+    keep.className = 'suggest-keep';
+    this.keep = Object.assign(document.createElement('input'), { type: 'checkbox' });
+    keep.append(this.keep, ' Keep my seams and add to them');
+    this.keepLabel = keep;
+    this.go = Object.assign(document.createElement('button'), { type: 'button', className: 'suggest-go', textContent: 'Suggest layouts' });
+    this.go.addEventListener('click', () => (this.call ? this.stop() : this.start()));
+    form.append(panels, symmetry, keep, this.go);
+    this.progress = Object.assign(document.createElement('progress'), { className: 'suggest-progress', max: 1, value: 0, hidden: true });
+    this.status = Object.assign(document.createElement('p'), { className: 'suggest-status' });
+    this.status.setAttribute('role', 'status');
+    this.cards = Object.assign(document.createElement('div'), { className: 'suggest-cards' });
+    body.append(intro, form, this.progress, this.status, this.cards);
+    dialog.append(header, body);
+    document.body.append(dialog);
+  }
+
+  targetKey() {
+    const { app } = this;
+    return app.design.target.example ?? `${app.target?.fileName}:${app.target?.positions.length}`;
+  }
+
+  async open() {
+    // Over the inflated pane, as the layout comparison: the target pane, where the seams are, stays in view.
+    const pane = document.getElementById('pane-inflated')?.getBoundingClientRect();
+    if (pane) {
+      const top = Math.round(pane.top + 34);
+      this.dialog.style.top = `${top}px`;
+      this.dialog.style.maxHeight = `max(12rem, ${Math.round(pane.bottom - top - 6)}px)`;
+    }
+    if (!this.dialog.open) this.dialog.show();
+    this.keepLabel.hidden = !this.app.design.seams.length;
+    this.keep.checked = false;
+    this.render();
+    // Offered where the target has a mirror plane: the one the design's seams are mirrored across, else the one the
+    // worker finds.
+    const key = this.targetKey();
+    if (!this.app.design.symmetry && !this.symmetryOf.has(key)) {
+      this.symmetryLabel.hidden = true;
+      try {
+        const { axis } = await this.app.client.call(Op.mirrorSymmetry, {}).promise;
+        this.symmetryOf.set(key, axis);
+      } catch {
+        this.symmetryOf.set(key, null);
+      }
+    }
+    this.showSymmetry();
+  }
+
+  // The mirror plane a layout may keep, or null.
+  symmetryAxis() {
+    return this.app.design.symmetry?.axis ?? this.symmetryOf.get(this.targetKey()) ?? null;
+  }
+
+  showSymmetry() {
+    const axis = this.symmetryAxis();
+    this.symmetryLabel.hidden = !axis;
+    if (axis) this.symmetryText.textContent = ` Keep the mirror symmetry across ${axis.toUpperCase()}`;
+  }
+
+  close() {
+    this.stop();
+    if (this.dialog.open) this.dialog.close();
+  }
+
+  stop(note = 'Stopped.') {
+    if (!this.call) return;
+    this.call.cancel();
+    this.finish(note);
+  }
+
+  finish(note) {
+    this.call = null;
+    this.unsubscribe?.();
+    this.unsubscribe = null;
+    this.progress.hidden = true;
+    this.go.textContent = 'Suggest layouts';
+    if (note !== null) this.status.textContent = note;
+  }
+
+  async start() {
+    const { app } = this;
+    const panels = Math.round(Number(this.panels.value));
+    if (!(panels >= PANELS.min && panels <= PANELS.max)) {
+      this.status.textContent = `Ask for ${PANELS.min} to ${PANELS.max} panels.`;
+      return;
+    }
+    const design = app.design;
+    const keep = this.keep.checked && !this.keepLabel.hidden;
+    const axis = this.symmetry.checked ? this.symmetryAxis() : null;
+    const args = {
+      ...optimizeArgs(design, TRIANGLES),
+      kept: keep ? optimizeArgs(design, TRIANGLES).seams : [],
+      panels,
+      symmetry: axis,
+      scale: app.scaleFor(design),
+      up: upOf(design),
+      maxIterations: MAX_ITERATIONS,
+      optimize: OPTIMIZED,
+    };
+    delete args.seams;
+    delete args.connections;
+    this.layouts = [];
+    this.request = { revision: app.revision, kept: keep ? design.seams.length : 0, axis, panels };
+    this.render();
+    this.progress.hidden = false;
+    this.progress.removeAttribute('value'); // indeterminate until the first count
+    this.go.textContent = 'Stop';
+    this.status.textContent = 'Laying out seams…';
+    // An edit to the design (its seams, its size, its sheet) makes the layouts under way stale.
+    this.unsubscribe = app.store.subscribe((what) => {
+      if (what === 'design' && this.call && app.revision !== this.request.revision) this.stop('Stopped: the design changed while the layouts were tried.');
+    });
+    const call = (this.call = app.client.call(Op.suggestSeams, args, {
+      onProgress: (p) => {
+        if (call !== this.call) return;
+        if (p.total) {
+          this.progress.max = p.total;
+          this.progress.value = p.done;
+        }
+        this.status.textContent = p.layout ? `${p.stage}: ${p.done} of ${p.total}…` : `${p.stage}: ${p.done + 1} of ${p.total}${p.detail ? `, ${p.detail}` : ''}…`;
+        if (p.layout) {
+          this.layouts = [...this.layouts, p.layout].sort((a, b) => a.distance - b.distance);
+          this.render();
+        }
+      },
+    }));
+    try {
+      const result = await call.promise;
+      if (call !== this.call) return;
+      this.layouts = result.layouts;
+      this.finish(
+        result.layouts.length
+          ? `${result.tried} layouts tried; the ${result.layouts.length === 1 ? 'closest' : `${result.layouts.length} closest`} below, best first.`
+          : `None of the ${result.tried} layouts tried cuts this shape into at most ${panels} panels: ask for more panels.`,
+      );
+      this.render();
+    } catch (error) {
+      if (call !== this.call) return;
+      if (error.code === ErrorCode.cancelled) return this.finish(null);
+      this.finish(`The layouts could not be tried: ${error.message}`);
+    }
+  }
+
+  // Makes a layout's seams the design's: one step of the history. Kept seams stay as they are (with their mirror
+  // twins and bands); the layout's own follow them.
+  use(layout) {
+    const { app } = this;
+    // The panels of the layout chosen are made at once, not after the layouts still to try.
+    this.stop('You chose a layout: the ones tried so far stay here to compare.');
+    const kept = this.request?.kept ?? 0;
+    const design = app.design;
+    const seams = [...design.seams.slice(0, kept), ...layout.seams.slice(kept)];
+    const { symmetry, ...rest } = design;
+    const axis = this.request?.axis;
+    const next = { ...rest, seams, connections: kept ? design.connections : [], ...(axis ? { symmetry: { axis } } : symmetry ? { symmetry } : {}) };
+    app.seams.selection = null;
+    app.commitDesign(next);
+    app.seams.refresh();
+    this.usedName = layout.name;
+    this.render();
+  }
+
+  render() {
+    const cards = this.layouts.map((layout, k) => this.card(layout, k));
+    this.cards.replaceChildren(...cards);
+  }
+
+  card(layout, k) {
+    const card = document.createElement('article');
+    card.className = 'suggest-card';
+    card.dataset.rank = String(k + 1);
+    if (layout.name === this.usedName) card.classList.add('current');
+    const h = document.createElement('h3');
+    h.textContent = `${k + 1}. ${layout.name[0].toUpperCase()}${layout.name.slice(1)}`;
+    const use = Object.assign(document.createElement('button'), { type: 'button', className: 'suggest-use', textContent: 'Use' });
+    use.title = 'Make these seams the design\'s, to edit as your own (Ctrl+Z undoes it)';
+    use.addEventListener('click', () => this.use(layout));
+    // One line of figures: the panels, the distance (the worse way; both in its tooltip), the seams to sew.
+    const figures = document.createElement('p');
+    figures.className = 'suggest-figures';
+    const distance = { rms: layout.inflatedToTarget, targetRms: layout.targetToInflated };
+    const parts = [
+      [String(layout.panels), 'panels', layout.panels === 1 ? ' panel' : ' panels', ''],
+      [formatPercent(worseDistance(distance)), 'distance', ' from the target', `Distance between its inflated panels (optimized at a coarse resolution) and the target: ${formatDistance(distance)}`],
+      [formatLength(layout.seamLength), 'seam-length', ' of seams', 'The length of all its seams on the balloon'],
+    ];
+    parts.forEach(([value, name, after, title], i) => {
+      if (i) figures.append(' · ');
+      const b = Object.assign(document.createElement('b'), { textContent: value });
+      b.dataset.figure = name;
+      const span = document.createElement('span');
+      span.append(b, after);
+      if (title) span.title = title;
+      figures.append(span);
+    });
+    card.append(h, use, figures);
+    return card;
+  }
+}
