@@ -48,10 +48,15 @@ test('layouts for four panels of the sphere come best first, each as seams of su
     assert.deepEqual(cut.problems, [], layout.name);
   }
   // Progress names the layout being looked at, and brings each optimized layout as it comes.
-  const looks = progress.filter((p) => p.stage === 'a first look at each layout');
+  const looks = progress.filter((p) => p.stage === 'a first look at each layout' && !p.look);
   assert.equal(looks.length, result.tried);
   assert.ok(looks.every((p, i) => p.done === i && p.total === result.tried && p.detail));
   assert.equal(progress.filter((p) => p.layout).length, result.layouts.length);
+  // Each layout that makes panels comes as soon as it is looked at, with seams to use at once.
+  const looked = progress.filter((p) => p.look);
+  assert.ok(looked.length >= result.layouts.length);
+  assert.ok(looked.every((p) => p.look.ok && p.look.seams.length > 0 && p.look.iterations === 0));
+  assert.ok(progress.indexOf(looked[0]) < progress.findIndex((p) => p.layout), 'looked at before any is optimized');
 });
 
 test('the designer\'s seams stay first, and the cow\'s mirror plane is found where the bunny has none', () => {

@@ -18,6 +18,9 @@ const TRIANGLES = 1000;
 const MAX_ITERATIONS = 40;
 const OPTIMIZED = 6;
 
+// Optimized layouts first, closest first; then the ones only looked at.
+const byQuality = (a, b) => Boolean(a.firstLook) - Boolean(b.firstLook) || a.distance - b.distance;
+
 export class SeamSuggestions {
   constructor({ app, button }) {
     this.app = app;
@@ -175,9 +178,11 @@ export class SeamSuggestions {
           this.progress.max = p.total;
           this.progress.value = p.done;
         }
-        this.status.textContent = p.layout ? `${p.stage}: ${p.done} of ${p.total}…` : `${p.stage}: ${p.done + 1} of ${p.total}${p.detail ? `, ${p.detail}` : ''}…`;
-        if (p.layout) {
-          this.layouts = [...this.layouts, p.layout].sort((a, b) => a.distance - b.distance);
+        this.status.textContent = p.layout || p.look ? `${p.stage}: ${p.done} of ${p.total}…` : `${p.stage}: ${p.done + 1} of ${p.total}${p.detail ? `, ${p.detail}` : ''}…`;
+        // A layout looked at shows at once with its flattened panels' figures; optimized, it takes its own.
+        const arrived = p.layout ?? (p.look && { ...p.look, firstLook: true });
+        if (arrived) {
+          this.layouts = [...this.layouts.filter((l) => l.name !== arrived.name), arrived].sort(byQuality);
           this.render();
         }
       },
@@ -185,7 +190,7 @@ export class SeamSuggestions {
     try {
       const result = await call.promise;
       if (call !== this.call) return;
-      this.layouts = result.layouts;
+      this.layouts = result.layouts; // the optimized ones: the others were farther at first look
       this.finish(
         result.layouts.length
           ? `${result.tried} layouts tried; the ${result.layouts.length === 1 ? 'closest' : `${result.layouts.length} closest`} below, best first.`
@@ -228,6 +233,7 @@ export class SeamSuggestions {
     card.className = 'suggest-card';
     card.dataset.rank = String(k + 1);
     if (layout.name === this.usedName) card.classList.add('current');
+    if (layout.firstLook) card.classList.add('first-look');
     const h = document.createElement('h3');
     h.textContent = `${k + 1}. ${layout.name[0].toUpperCase()}${layout.name.slice(1)}`;
     const use = Object.assign(document.createElement('button'), { type: 'button', className: 'suggest-use', textContent: 'Use' });
@@ -239,7 +245,12 @@ export class SeamSuggestions {
     const distance = { rms: layout.inflatedToTarget, targetRms: layout.targetToInflated };
     const parts = [
       [String(layout.panels), 'panels', layout.panels === 1 ? ' panel' : ' panels', ''],
-      [formatPercent(worseDistance(distance)), 'distance', ' from the target', `Distance between its inflated panels (optimized at a coarse resolution) and the target: ${formatDistance(distance)}`],
+      [
+        formatPercent(worseDistance(distance)),
+        'distance',
+        layout.firstLook ? ' from the target, before optimizing' : ' from the target',
+        `Distance between its inflated panels (${layout.firstLook ? 'as flattened, not optimized yet' : 'optimized at a coarse resolution'}) and the target: ${formatDistance(distance)}`,
+      ],
       [formatLength(layout.seamLength), 'seam-length', ' of seams', 'The length of all its seams on the balloon'],
     ];
     parts.forEach(([value, name, after, title], i) => {

@@ -35,7 +35,8 @@ export const Op = Object.freeze({
   // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, optimize } ->
   // { layouts: [{ name, panels, seamLength, distance, inflatedToTarget, targetToInflated, seams }] (best first),
   // notUsed: [{ name, why }] }: seam layouts for the target, each looked at, the closest `optimize` optimized at a
-  // coarse resolution; progress carries each optimized layout as it comes ({ layout }); cancellable.
+  // coarse resolution; progress carries each layout as it is looked at ({ look }: its flattened panels' figures) and
+  // as it is optimized ({ layout }); cancellable.
   suggestSeams: 'suggestSeams',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',

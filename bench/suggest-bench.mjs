@@ -1,0 +1,57 @@
+// Suggested seam layouts over the shared meshes (issue 27's table): for each mesh of ../shared/meshes and each
+// panel count, `billow suggest` (native, mirror-symmetric where the mesh has a mirror plane) and the best layout's
+// panels, distance to the target (the worse way's RMS, % of the diagonal, optimized at 1,000 triangles), seam length
+// and the command's wall time; with how many layouts were tried and kept.
+//   node bench/suggest-bench.mjs [--panels 2,6,12,24] [--meshes bunny,spot] [--json-out FILE]
+import { execFileSync } from 'node:child_process';
+import { mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
+import { tmpdir } from 'node:os';
+import { join } from 'node:path';
+import { fileURLToPath } from 'node:url';
+
+const ROOT = fileURLToPath(new URL('..', import.meta.url));
+const MESHES = join(ROOT, '../shared/meshes');
+const CLI = join(ROOT, 'build/native/billow');
+const arg = (name, fallback) => {
+  const i = process.argv.indexOf(name);
+  return i > 0 ? process.argv[i + 1] : fallback;
+};
+const panelCounts = arg('--panels', '2,6,12,24').split(',').map(Number);
+const meshes = arg('--meshes', readdirSync(MESHES).filter((f) => f.endsWith('.obj')).map((f) => f.slice(0, -4)).join(',')).split(',');
+
+const rows = [];
+console.log('| mesh | panels asked | best layout | panels | distance % | seams m | s | layouts kept / tried |');
+console.log('|---|---|---|---|---|---|---|---|');
+for (const mesh of meshes) {
+  for (const panels of panelCounts) {
+    const dir = mkdtempSync(join(tmpdir(), `suggest-${mesh}-${panels}-`));
+    const args = ['suggest', join(MESHES, `${mesh}.obj`), '--panels', String(panels), '--out-dir', dir, '--quiet'];
+    const t0 = performance.now();
+    // With its mirror plane where it has one (the command refuses --symmetry where it has none).
+    let symmetric = true;
+    try {
+      execFileSync(CLI, [...args, '--symmetry'], { stdio: 'pipe' });
+    } catch (error) {
+      if (!/mirror image/.test(String(error.stderr))) {
+        if (error.status !== 1) throw error;
+      } else {
+        symmetric = false;
+        try {
+          execFileSync(CLI, args, { stdio: 'pipe' });
+        } catch (again) {
+          if (again.status !== 1) throw again;
+        }
+      }
+    }
+    const seconds = (performance.now() - t0) / 1000;
+    const summary = JSON.parse(readFileSync(join(dir, 'summary.json'), 'utf8'));
+    const best = summary.layouts[0];
+    const tried = summary.layouts.length + summary.not_used.length;
+    const row = { mesh, asked: panels, symmetric, best: best?.name ?? null, panels: best?.panels ?? null, distance: best ? 100 * best.distance.worse_way_rms : null, seamLength: best?.seam_length_m ?? null, seconds, kept: summary.layouts.length, tried };
+    rows.push(row);
+    const f = (x, d) => (x === null ? '—' : x.toFixed(d));
+    console.log(`| ${mesh}${symmetric ? ' (mirror)' : ''} | ${panels} | ${row.best ?? 'none'} | ${row.panels ?? '—'} | ${f(row.distance, 2)} | ${f(row.seamLength, 2)} | ${seconds.toFixed(1)} | ${row.kept} / ${tried} |`);
+  }
+}
+const out = arg('--json-out', null);
+if (out) writeFileSync(out, JSON.stringify(rows, null, 2));
