@@ -427,27 +427,34 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
   }
   out.panels = int(segmentation.segments.size());
   for (const SeamCurve& curve : scene.curves) out.seamLength += curve.length;
-  const BuiltPattern built = buildDesignPattern(scene, options.triangles);
-  if (!built.ok()) {
-    out.problem = built.problems.empty() ? "no panels" : built.problems.front().message;
+  // A layout whose panels cannot be made or settled is not used, and says why (the pattern's own message: panels
+  // sewn three to an edge where a cut meets a section, a fold).
+  try {
+    const BuiltPattern built = buildDesignPattern(scene, options.triangles);
+    if (!built.ok()) {
+      out.problem = built.problems.empty() ? "no panels" : built.problems.front().message;
+      return done();
+    }
+    OptimizeOptions oo = appStoppingRule();
+    oo.stopping.maxIterations = options.maxIterations;
+    // A first look (no iteration) measures the flattened panels' own inflation, not their cut.
+    oo.remeshing.cutPanels = options.maxIterations > 0;
+    PatternOptimizer optimizer(scene.target, built, designSeamWeights(scene.design), oo);
+    while (optimizer.step(5) == OptimizeState::Running) {
+    }
+    if (optimizer.state() == OptimizeState::Failed || optimizer.history().empty()) {
+      out.problem = optimizer.message();
+      return done();
+    }
+    const OptimizeRecord& last = optimizer.history().back();
+    out.inflatedToTarget = last.distanceRms, out.targetToInflated = last.targetDistanceRms;
+    out.distance = std::max(out.inflatedToTarget, out.targetToInflated);
+    out.iterations = optimizer.iterations();
+    out.pattern = optimizedPattern(optimizer);
+  } catch (const Error& e) {
+    out.problem = e.what();
     return done();
   }
-  OptimizeOptions oo = appStoppingRule();
-  oo.stopping.maxIterations = options.maxIterations;
-  // A first look (no iteration) measures the flattened panels' own inflation, not their cut.
-  oo.remeshing.cutPanels = options.maxIterations > 0;
-  PatternOptimizer optimizer(scene.target, built, designSeamWeights(scene.design), oo);
-  while (optimizer.step(5) == OptimizeState::Running) {
-  }
-  if (optimizer.state() == OptimizeState::Failed || optimizer.history().empty()) {
-    out.problem = optimizer.message();
-    return done();
-  }
-  const OptimizeRecord& last = optimizer.history().back();
-  out.inflatedToTarget = last.distanceRms, out.targetToInflated = last.targetDistanceRms;
-  out.distance = std::max(out.inflatedToTarget, out.targetToInflated);
-  out.iterations = optimizer.iterations();
-  out.pattern = optimizedPattern(optimizer);
   out.ok = true;
   return done();
 }
