@@ -20,4 +20,10 @@ log "pattern optimization, wasm (node)"
 node "$ROOT/bench/design-bench-wasm.mjs" "${designs[@]}" --json-out "$ROOT/build/bench/design-wasm.json"
 log "the paper's Table 1 beside Billow's runs"
 node "$ROOT/bench/table1.mjs" "$ROOT/build/bench/design-native.json" "$ROOT/build/bench/design-wasm.json"
+# Suggested seam layouts (bench/README.md "Suggested seam layouts"): three meshes at 12 panels; the whole table with
+# node bench/suggest-bench.mjs.
+log "suggested seam layouts, native"
+node "$ROOT/bench/suggest-bench.mjs" --panels 12 --meshes koala,spot,blub
+log "suggested seam layouts, wasm (node)"
+node --no-experimental-fetch "$ROOT/bench/suggest-bench-wasm.mjs" --panels 12 --meshes koala,spot,blub
 bash "$ROOT/scripts/build.sh" web >/dev/null && log "site (headless Chromium)" && node "$ROOT/bench/site-bench.mjs"
