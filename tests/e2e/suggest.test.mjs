@@ -1,5 +1,5 @@
 // Suggest seams, as a designer uses it: open the panel, ask for two panels, watch the layouts come best first,
-// use the best one (the target is cut into its panels, and they are made), undo back to the seams before. A second
+// show the best one on the target and hide it again, use it (the target is cut into its panels, and they are made), undo back to the seams before. A second
 // run is stopped by an edit.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
@@ -31,7 +31,16 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
     assert.match(card.seams, /\d/);
   }
   assert.match(cards[0].name, /^1\. /);
+  // Shown on the target without changing the design: its two panels coloured, its seams dashed; shown again, gone.
+  const labels = () => page.evaluate(() => window.billow.test.panes.target.segmentLabels.length);
+  const before2 = await labels();
+  await page.click('.suggest-card[data-rank="1"] .suggest-show');
+  await page.waitForFunction(() => window.billow.test.panes.target.segmentLabels.length === 2, null, { timeout: 30000 });
+  assert.equal(await page.getAttribute('.suggest-card[data-rank="1"] .suggest-show', 'aria-pressed'), 'true');
+  assert.equal(await page.evaluate(() => JSON.stringify(window.billow.test.design.seams)), before, 'the design is as it was');
   await screenshot(page, 'suggest-layouts');
+  await page.click('.suggest-card[data-rank="1"] .suggest-show');
+  await page.waitForFunction((n) => window.billow.test.panes.target.segmentLabels.length === n, before2, { timeout: 30000 });
   await page.click('.suggest-card[data-rank="1"] .suggest-use');
   // The layout's seams are the design's, the target is cut into its two panels, and the panels are made.
   await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 2, null, { timeout: 60000 });

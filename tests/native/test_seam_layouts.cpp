@@ -123,6 +123,9 @@ TEST(SeamLayouts, GoresOfTheSphereMeetAtItsPolesAndInflateClose) {
     EXPECT_LT(e.distance, 0.012) << p.name;
     EXPECT_GT(e.distance, 0.0) << p.name;
     EXPECT_EQ(e.pattern.panels.size(), 6u) << p.name;
+    // Six pieces of a 1 m sphere nest on a 1 m roll, leaving some of it between them.
+    EXPECT_GT(e.sheetUse, 0.2) << p.name;
+    EXPECT_LT(e.sheetUse, 1.0) << p.name;
     (p.gores == 3 ? gores : bands)++;
   }
   EXPECT_GE(gores, 1);
@@ -213,6 +216,8 @@ TEST(SuggestCommand, WritesRankedLayoutsThatOpenAsDesigns) {
       EXPECT_GE(l["distance"]["worse_way_rms"].get<double>(), layouts[k - 1]["distance"]["worse_way_rms"]);
     }
     EXPECT_LE(l["panels"].get<int>(), 4);
+    EXPECT_GT(l["sheet_use"].get<double>(), 0.0);
+    EXPECT_LE(l["sheet_use"].get<double>(), 1.0);
     // The design opens again (its target named relative to the folder) and cuts into the same disk panels.
     const auto scene = loadDesignScene((dir / l["design"].get<std::string>()).string(), {});
     EXPECT_TRUE(scene->segmentation.problems.empty()) << l["name"];

@@ -33,6 +33,7 @@ test('layouts for four panels of the sphere come best first, each as seams of su
     assert.ok(layout.panels >= 2 && layout.panels <= 4, `${layout.name}: ${layout.panels} panels`);
     assert.ok(layout.distance > 0 && layout.distance < 0.03, `${layout.name}: ${layout.distance}`);
     assert.ok(layout.seamLength > 0);
+    assert.ok(layout.sheetUse > 0 && layout.sheetUse <= 1, `${layout.name}: sheet use ${layout.sheetUse}`);
     if (k > 0) assert.ok(layout.distance >= result.layouts[k - 1].distance, 'best first');
     assert.ok(layout.seams.length >= 1);
     for (const seam of layout.seams) {

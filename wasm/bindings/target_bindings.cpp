@@ -55,7 +55,8 @@
 //   t.suggestStart(keptSeamsJson, optionsJson)  kept: the designer's seams the layouts add to; options: buildPattern's
 //     and { panels (2-40), symmetry ("x" | "y" | "z" | null: layouts that are their own mirror image across it),
 //     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...] }
-//   t.suggestLayout(index, optimize) -> { ok, problem, name, panels, seamLength [m], distance (the worse way),
+//   t.suggestLayout(index, optimize) -> { ok, problem, name, panels, seamLength [m], sheetUse (optimized only: the
+//     share of the sheet its nested cut pieces cover), distance (the worse way),
 //     inflatedToTarget, targetToInflated (over the target's diagonal), iterations, ms, seams (the kept ones first,
 //     then the layout's, as the design document writes them) }: optimize false, a first look (the flattened panels
 //     inflated); true, the layout looked at before optimized at the options' resolution
@@ -416,6 +417,7 @@ class TargetSession {
                    {"name", s.proposals[index].name},
                    {"panels", e.panels},
                    {"seamLength", e.seamLength},
+                   {"sheetUse", e.sheetUse},
                    {"distance", e.distance},
                    {"inflatedToTarget", e.inflatedToTarget},
                    {"targetToInflated", e.targetToInflated},

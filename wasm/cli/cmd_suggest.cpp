@@ -189,6 +189,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
                        {"pattern", stem + ".pattern.json"},
                        {"panels", t.result.panels},
                        {"seam_length_m", t.result.seamLength},
+                       {"sheet_use", t.result.sheetUse},
                        {"distance",
                         {{"worse_way_rms", t.result.distance},
                          {"inflated_to_target_rms", t.result.inflatedToTarget},

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <numeric>
 
+#include "export/layout.hpp"
 #include "optimize/optimized_pattern.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/stopping_rule.hpp"
@@ -394,6 +395,19 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
   return added;
 }
 
+// The share of the sheet the panels' cut pieces cover, nested as the cut file nests them (the default seam allowance
+// and roll width; a roll just wide enough where a piece is wider).
+double sheetUse(const Pattern& pattern) {
+  ExportOptions cut;
+  try {
+    return layoutSheet(pattern, cut).nest.utilisation;
+  } catch (const Error& e) {
+    if (e.code != "export.sheet-too-narrow" || !(e.sheetWidth > cut.sheetWidth)) throw;
+    cut.sheetWidth = e.sheetWidth;
+    return layoutSheet(pattern, cut).nest.utilisation;
+  }
+}
+
 }  // namespace
 
 LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
@@ -451,6 +465,7 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
     out.distance = std::max(out.inflatedToTarget, out.targetToInflated);
     out.iterations = optimizer.iterations();
     out.pattern = optimizedPattern(optimizer);
+    if (options.maxIterations > 0) out.sheetUse = sheetUse(out.pattern);
   } catch (const Error& e) {
     out.problem = e.what();
     return done();

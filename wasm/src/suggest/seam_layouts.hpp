@@ -66,6 +66,9 @@ struct LayoutEvaluation {
   // After the coarse optimization, relative to the target's diagonal: each way's RMS, and the worse of the two, by
   // which layouts are ranked (one way alone reads close for a shape that leaves a limb out; the app's figure).
   double distance = 0, inflatedToTarget = 0, targetToInflated = 0;
+  // The share of the sheet its cut pieces cover, nested at the default seam allowance and roll width (optimized
+  // layouts only): how much material it wastes.
+  double sheetUse = 0;
   int iterations = 0;
   double ms = 0;
   Pattern pattern;  // the optimized panels (coarse)

@@ -22,6 +22,7 @@ export class SeamEditor {
     this.draft = null; // the seam being drawn, as its preview was asked for: { points, closed }
     this.selection = null; // { seam, index | null }
     this.segmentation = null;
+    this.overlay = null; // curves (Float32Array each) shown dashed over the seams: a suggested layout (suggest.js)
   }
 
   get design() {
@@ -104,7 +105,7 @@ export class SeamEditor {
       selected: this.selection?.seam === i,
       selectedPoint: this.selection?.seam === i ? this.selection.index : null,
     }));
-    this.pane.seams.update(seams, this.preview, Boolean(this.preview && this.draftWarning));
+    this.pane.seams.update(seams, [this.preview, ...(this.overlay ?? [])], Boolean(this.preview && this.draftWarning));
     this.pane.setDraftWarning(this.preview ? this.draftWarning : null);
     this.pane.setConnections(this.design.connections.map((c) => c.seams.map((k) => traces[k]?.curve ?? null)));
     this.pane.setSymmetryPlane(this.plane);

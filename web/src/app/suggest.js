@@ -120,7 +120,45 @@ export class SeamSuggestions {
 
   close() {
     this.stop();
+    this.hide();
     if (this.dialog.open) this.dialog.close();
+  }
+
+  // Shows a layout on the target: its segments in their colours, its seams dashed over the design's, until it is
+  // shown again (a toggle), another is, the dialog closes or the design changes.
+  async show(layout) {
+    const { app } = this;
+    if (this.shownName === layout.name) return this.hide();
+    this.shownName = layout.name;
+    this.render();
+    this.unwatchShown ??= app.store.subscribe((what) => what === 'design' && this.hide());
+    const seams = layout.seams.map(({ points, closed, weight, smooth }) => ({ points, closed, weight, smooth: Boolean(smooth) }));
+    try {
+      const [traces, segmentation] = await Promise.all([
+        Promise.all(seams.map((s) => app.client.request(Op.traceSeam, s))),
+        app.client.call(Op.segment, { seams, up: upOf(app.design) }).promise,
+      ]);
+      if (this.shownName !== layout.name) return;
+      app.seams.overlay = traces.map((t) => t.curve);
+      app.seams.draw();
+      app.panes.target.setSegments(segmentation);
+    } catch (error) {
+      if (this.shownName === layout.name) this.hide();
+      if (error.code !== ErrorCode.cancelled && error.code !== ErrorCode.crashed) this.status.textContent = `That layout could not be shown: ${error.message}`;
+    }
+  }
+
+  // The design's own seams and segments on the target again.
+  hide() {
+    this.unwatchShown?.();
+    this.unwatchShown = null;
+    if (this.shownName === null || this.shownName === undefined) return;
+    this.shownName = null;
+    const { app } = this;
+    app.seams.overlay = null;
+    app.seams.draw();
+    app.panes.target.setSegments(app.seams.segmentation ?? { segments: [] });
+    this.render();
   }
 
   stop(note = 'Stopped.') {
@@ -210,6 +248,7 @@ export class SeamSuggestions {
     const { app } = this;
     // The panels of the layout chosen are made at once, not after the layouts still to try.
     this.stop('You chose a layout: the ones tried so far stay here to compare.');
+    this.hide();
     const kept = this.request?.kept ?? 0;
     const design = app.design;
     const seams = [...design.seams.slice(0, kept), ...layout.seams.slice(kept)];
@@ -233,9 +272,15 @@ export class SeamSuggestions {
     card.className = 'suggest-card';
     card.dataset.rank = String(k + 1);
     if (layout.name === this.usedName) card.classList.add('current');
+    if (layout.name === this.shownName) card.classList.add('shown');
     if (layout.firstLook) card.classList.add('first-look');
     const h = document.createElement('h3');
     h.textContent = `${k + 1}. ${layout.name[0].toUpperCase()}${layout.name.slice(1)}`;
+    const shown = layout.name === this.shownName;
+    const show = Object.assign(document.createElement('button'), { type: 'button', className: 'suggest-show', textContent: shown ? 'Hide' : 'Show' });
+    show.setAttribute('aria-pressed', String(shown));
+    show.title = shown ? 'Show the design\'s own seams on the target again' : 'Show this layout\'s seams and panels on the target, without changing the design';
+    show.addEventListener('click', () => this.show(layout));
     const use = Object.assign(document.createElement('button'), { type: 'button', className: 'suggest-use', textContent: 'Use' });
     use.title = 'Make these seams the design\'s, to edit as your own (Ctrl+Z undoes it)';
     use.addEventListener('click', () => this.use(layout));
@@ -252,6 +297,7 @@ export class SeamSuggestions {
         `Distance between its inflated panels (${layout.firstLook ? 'as flattened, not optimized yet' : 'optimized at a coarse resolution'}) and the target: ${formatDistance(distance)}`,
       ],
       [formatLength(layout.seamLength), 'seam-length', ' of seams', 'The length of all its seams on the balloon'],
+      ...(layout.firstLook ? [] : [[`${Math.round(100 * layout.sheetUse)} %`, 'sheet-use', ' of the sheet used', 'How much of a 1 m roll its cut pieces cover, nested as the cut file nests them (10 mm allowance): the rest is waste']]),
     ];
     parts.forEach(([value, name, after, title], i) => {
       if (i) figures.append(' · ');
@@ -262,7 +308,9 @@ export class SeamSuggestions {
       if (title) span.title = title;
       figures.append(span);
     });
-    card.append(h, use, figures);
+    const buttons = Object.assign(document.createElement('span'), { className: 'suggest-buttons' });
+    buttons.append(show, use);
+    card.append(h, buttons, figures);
     return card;
   }
 }
