@@ -7,7 +7,7 @@
 // the app's store (edits, undo, panels started, made and inflated); it does nothing while the app is idle.
 import './compare.css';
 import { formatDistance, formatPercent } from './units.js';
-import { dialogHeader } from '../views/dialog-header.js';
+import { showOverInflatedPane, sidePanel } from '../views/dialog-header.js';
 
 const LETTERS = ['A', 'B'];
 // The store's changes the cards follow (Store.subscribe).
@@ -33,19 +33,12 @@ export class LayoutCompare {
   }
 
   build() {
-    const dialog = (this.dialog = document.createElement('dialog'));
-    dialog.className = 'compare-dialog';
-    const header = dialogHeader(dialog, {
-      id: 'compare-title',
+    const { dialog, body } = sidePanel('compare', {
       title: 'Compare seam layouts',
-      closeClass: 'compare-close',
       closeTitle: 'Close the comparison (kept layouts stay until the page is closed)',
       onClose: () => this.close(),
     });
-    // The header stays put and the body scrolls (a sticky header made Chromium leave a strip of the canvas
-    // below unpainted, in the pattern pane).
-    const body = document.createElement('div');
-    body.className = 'compare-body';
+    this.dialog = dialog;
     this.intro = document.createElement('p');
     this.intro.className = 'compare-intro';
     this.cards = document.createElement('div');
@@ -62,22 +55,12 @@ export class LayoutCompare {
       return b;
     });
     body.append(this.intro, this.cards, foot);
-    dialog.append(header, body);
     dialog.addEventListener('close', () => this.stopWatching());
-    document.body.append(dialog);
   }
 
   open() {
-    // Over the inflated pane, whose shape the current layout's card shows anyway; not modal, so the seams
-    // stay editable beside it.
-    const pane = document.getElementById('pane-inflated')?.getBoundingClientRect();
-    if (pane) {
-      // Its bottom stays in the inflated pane, off the pattern pane's figures below (its body scrolls).
-      const top = Math.round(pane.top + 34);
-      this.dialog.style.top = `${top}px`;
-      this.dialog.style.maxHeight = `max(12rem, ${Math.round(pane.bottom - top - 6)}px)`;
-    }
-    if (!this.dialog.open) this.dialog.show();
+    // Over the inflated pane, whose shape the current layout's card shows anyway.
+    showOverInflatedPane(this.dialog);
     this.shownKey = null;
     this.render();
     // What the cards show: the design, its results, the work under way and the panes' result; not the seams'

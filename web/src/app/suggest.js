@@ -9,7 +9,7 @@ import { ErrorCode, Op } from '../worker/protocol.js';
 import { formatDistance, formatLength, formatPercent, worseDistance } from './units.js';
 import { optimizeArgs } from './stored-result.js';
 import { upOf } from './up-axis.js';
-import { dialogHeader } from '../views/dialog-header.js';
+import { showOverInflatedPane, sidePanel } from '../views/dialog-header.js';
 
 const PANELS = { min: 2, max: 40, start: 6 };
 // What a suggestion is made at: coarse, so a dozen layouts are tried in seconds (the bench's comparison of layouts
@@ -32,17 +32,8 @@ export class SeamSuggestions {
   }
 
   build() {
-    const dialog = (this.dialog = document.createElement('dialog'));
-    dialog.className = 'suggest-dialog';
-    const header = dialogHeader(dialog, {
-      id: 'suggest-title',
-      title: 'Suggest seams',
-      closeClass: 'suggest-close',
-      closeTitle: 'Close (a suggestion under way stops)',
-      onClose: () => this.close(),
-    });
-    const body = document.createElement('div');
-    body.className = 'suggest-body';
+    const { dialog, body } = sidePanel('suggest', { title: 'Suggest seams', closeTitle: 'Close (a suggestion under way stops)', onClose: () => this.close() });
+    this.dialog = dialog;
     const intro = document.createElement('p');
     intro.className = 'suggest-intro';
     intro.textContent = 'Billow tries seam layouts on this shape, makes and inflates the panels of each, and shows the closest to the target first. "Use" makes one your seams, to edit as your own (Undo returns).';
@@ -71,8 +62,6 @@ export class SeamSuggestions {
     this.status.setAttribute('role', 'status');
     this.cards = Object.assign(document.createElement('div'), { className: 'suggest-cards' });
     body.append(intro, form, this.progress, this.status, this.cards);
-    dialog.append(header, body);
-    document.body.append(dialog);
   }
 
   targetKey() {
@@ -82,13 +71,7 @@ export class SeamSuggestions {
 
   async open() {
     // Over the inflated pane, as the layout comparison: the target pane, where the seams are, stays in view.
-    const pane = document.getElementById('pane-inflated')?.getBoundingClientRect();
-    if (pane) {
-      const top = Math.round(pane.top + 34);
-      this.dialog.style.top = `${top}px`;
-      this.dialog.style.maxHeight = `max(12rem, ${Math.round(pane.bottom - top - 6)}px)`;
-    }
-    if (!this.dialog.open) this.dialog.show();
+    showOverInflatedPane(this.dialog);
     this.keepLabel.hidden = !this.app.design.seams.length;
     this.keep.checked = false;
     this.render();

@@ -163,23 +163,6 @@ export class Inflation {
     };
   }
 
-  // { axis: 'x' | 'y' | 'z' | null }: the plane of the target's box across which it is its own mirror image.
-  mirrorSymmetry() {
-    return SolverApi.unwrap(this.session.mirrorSymmetry());
-  }
-
-  // Suggested seam layouts: kept (the designer's seams the layouts add to), options: buildPattern's and { panels,
-  // symmetry ('x' | 'y' | 'z' | null), maxIterations } -> { proposals: [name] }; then suggestLayout(i, false), a
-  // first look at layout i, and suggestLayout(i, true), it optimized: { ok, problem, name, panels, seamLength,
-  // distance, inflatedToTarget, targetToInflated, iterations, ms, seams }.
-  suggestStart(kept, options) {
-    return SolverApi.unwrap(this.session.suggestStart(JSON.stringify(kept), JSON.stringify(options)));
-  }
-
-  suggestLayout(index, optimize) {
-    return SolverApi.unwrap(this.session.suggestLayout(index, optimize));
-  }
-
   delete() {
     this.session.delete();
   }
@@ -301,7 +284,7 @@ export class TargetSession {
   // Suggested seam layouts: kept (the designer's seams the layouts add to), options: buildPattern's and { panels,
   // symmetry ('x' | 'y' | 'z' | null), maxIterations } -> { proposals: [name] }; then suggestLayout(i, false), a
   // first look at layout i, and suggestLayout(i, true), it optimized: { ok, problem, name, panels, seamLength,
-  // distance, inflatedToTarget, targetToInflated, iterations, ms, seams }.
+  // sheetUse, distance, inflatedToTarget, targetToInflated, iterations, ms, seams }.
   suggestStart(kept, options) {
     return SolverApi.unwrap(this.session.suggestStart(JSON.stringify(kept), JSON.stringify(options)));
   }
