@@ -75,7 +75,7 @@ TEST(SeamLayouts, TheMirrorSymmetryOfTheCowIsFoundAndTheBunnyHasNone) {
 TEST(SeamLayouts, ProposalsHaveThePanelsAskedForAndSymmetricOnesAreTheirOwnMirrorImage) {
   const auto spot = sharedScene("spot.obj");
   const TriMesh& target = spot->target;
-  for (int panels : {2, 6, 12, 24}) {
+  for (int panels : {2, 3, 6, 12, 24}) {
     LayoutRequest request;
     request.panels = panels, request.symmetryAxis = 0;
     const std::vector<LayoutProposal> proposals = proposeLayouts(target, request);
@@ -84,9 +84,18 @@ TEST(SeamLayouts, ProposalsHaveThePanelsAskedForAndSymmetricOnesAreTheirOwnMirro
     const double mid = boxMiddle(target).x(), D = diagonal(target);
     for (const LayoutProposal& p : proposals) {
       // Up to four panels fewer, room for the limbs a shape adds (at most the panels asked for).
-      EXPECT_LE(2 * p.gores * (p.bands + 1), panels) << p.name;
-      EXPECT_GE(2 * p.gores * (p.bands + 1), panels - 4) << p.name;
-      EXPECT_EQ(int(p.planes.size()), p.gores + p.bands) << p.name;
+      EXPECT_LE(p.gores * (p.bands + 1), panels) << p.name;
+      EXPECT_GE(p.gores * (p.bands + 1), panels - 4) << p.name;
+      EXPECT_EQ(int(p.planes.size()), (p.gores == 2 ? 1 : 0) + p.bands) << p.name;
+      EXPECT_EQ(int(p.meridians.size()), p.gores == 2 ? 0 : p.gores) << p.name;
+      // Each meridian reflected across x = mid is one of them (the axis through the middle is its own image).
+      for (const Eigen::Vector3d& d : p.meridians) {
+        const Eigen::Vector3d mirrored(-d.x(), d.y(), d.z());
+        bool found = false;
+        for (const Eigen::Vector3d& q : p.meridians) found |= (q - mirrored).norm() < 1e-9;
+        EXPECT_TRUE(found) << p.name;
+      }
+      EXPECT_NEAR(p.center.x(), mid, 1e-12 * D) << p.name;
       EXPECT_TRUE(names.insert(p.name).second) << "two proposals called " << p.name;
       // Each plane {n . x = d} reflected across x = mid is one of the layout's planes.
       for (const SectionPlane& plane : p.planes) {
@@ -109,10 +118,10 @@ TEST(SeamLayouts, GoresOfTheSphereMeetAtItsPolesAndInflateClose) {
   const std::vector<LayoutProposal> proposals = proposeLayouts(sphere->target, request);
   int gores = 0, bands = 0;
   for (const LayoutProposal& p : proposals) {
-    if (p.axis != 1 || (p.gores == 3) == (p.bands == 2)) continue;
+    if (p.axis != 1 || !((p.gores == 6 && p.bands == 0) || (p.gores == 2 && p.bands == 2))) continue;
     const std::vector<DesignSeam> seams = proposalSeams(sphere->target, p);
     // Six meridians from pole to pole, or three bands and the loop that halves them.
-    EXPECT_EQ(seams.size(), p.gores == 3 ? 6u : 3u) << p.name;
+    EXPECT_EQ(seams.size(), p.gores == 6 ? 6u : 3u) << p.name;
     EvaluateOptions options;
     options.triangles = 600, options.maxIterations = 15;
     const LayoutEvaluation e = evaluateLayout(*sphere, seams, 0, options);
@@ -126,7 +135,7 @@ TEST(SeamLayouts, GoresOfTheSphereMeetAtItsPolesAndInflateClose) {
     // Six pieces of a 1 m sphere nest on a 1 m roll, leaving some of it between them.
     EXPECT_GT(e.sheetUse, 0.2) << p.name;
     EXPECT_LT(e.sheetUse, 1.0) << p.name;
-    (p.gores == 3 ? gores : bands)++;
+    (p.gores == 6 ? gores : bands)++;
   }
   EXPECT_GE(gores, 1);
   EXPECT_GE(bands, 1);
@@ -139,7 +148,7 @@ TEST(SeamLayouts, TubesAPlaneCutAroundLimbsAreOpenedIntoPanels) {
   const TriMesh& target = spot->target;
   const double bottom = target.V.col(1).minCoeff(), height = target.V.col(1).maxCoeff() - bottom;
   LayoutProposal p;
-  p.axis = 1, p.gores = 1, p.bands = 2;
+  p.axis = 1, p.gores = 2, p.bands = 2;
   p.planes = {{Eigen::Vector3d::UnitX(), boxMiddle(target).x()},
               {Eigen::Vector3d::UnitY(), bottom + 0.05 * height},
               {Eigen::Vector3d::UnitY(), bottom + 0.15 * height}};
@@ -183,8 +192,9 @@ TEST(SeamLayouts, AnAxisBesideTheShapeGivesItsGoresNoPoles) {
       ring.F.row(2 * a + 1) << a, c, b;
     }
   LayoutProposal p;
-  p.axis = 1, p.gores = 2;
-  p.planes = {{Eigen::Vector3d::UnitX(), 0}, {Eigen::Vector3d::UnitZ(), 0}};
+  p.axis = 1, p.gores = 4;
+  p.meridians = {Eigen::Vector3d::UnitX(), Eigen::Vector3d::UnitZ(), -Eigen::Vector3d::UnitX(),
+                 -Eigen::Vector3d::UnitZ()};
   try {
     proposalSeams(ring, p);
     FAIL() << "gores around an axis that misses the shape";

@@ -21,7 +21,7 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 // Control points of a proposed seam, as the section tool spaces them (web/src/app/section.js SECTION_SPACING).
 constexpr double kSeamPointSpacing = 0.02;
-constexpr int kMostPlanesPerFamily = 12;
+constexpr int kMostGores = 24, kMostBands = 12;
 constexpr int kFewerPanels = 4;
 
 // Which way a direction of the target's own coordinates points as the target stands: 0 side to side, 1 up, 2 front
@@ -66,9 +66,14 @@ AreaAlong areaAlong(const TriMesh& mesh, int axis) {
   return out;
 }
 
-// A plane set's key, so a layout two families both make is tried once.
-std::vector<long long> planeKey(const std::vector<SectionPlane>& planes, double size) {
+// A layout's key, so one two families both make is tried once: its planes and meridians, rounded.
+std::vector<long long> proposalKey(const std::vector<SectionPlane>& planes,
+                                   const std::vector<Eigen::Vector3d>& meridians, double size) {
   std::vector<long long> key;
+  const auto direction = [](const Eigen::Vector3d& n) {
+    return std::llround(n.x() * 1e4) * 1'000'000'000'000LL + std::llround(n.y() * 1e4) * 100'000'000LL +
+           std::llround(n.z() * 1e4) * 10'000LL;
+  };
   for (const SectionPlane& p : planes) {
     // n and -n with -offset are one plane: the first non-zero component positive.
     Eigen::Vector3d n = p.normal;
@@ -78,9 +83,9 @@ std::vector<long long> planeKey(const std::vector<SectionPlane>& planes, double 
         if (n[k] < 0) n = -n, d = -d;
         break;
       }
-    key.push_back(std::llround(n.x() * 1e4) * 1'000'000'000'000LL + std::llround(n.y() * 1e4) * 100'000'000LL +
-                  std::llround(n.z() * 1e4) * 10'000LL + std::llround(d / size * 1e3));
+    key.push_back(direction(n) + std::llround(d / size * 1e3));
   }
+  for (const Eigen::Vector3d& m : meridians) key.push_back(direction(m) + 5'000);  // apart from any plane's
   std::sort(key.begin(), key.end());
   return key;
 }
@@ -137,36 +142,41 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
   for (int axis = 0; axis < 3; ++axis) {
     const AreaAlong along = areaAlong(target, axis);
     const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
-    // The gores' first plane holds u: the symmetry axis where there is one, so every gore plane is its own mirror
-    // image; a quarter turn gives the other set where m is odd.
+    // Directions across the axis from u: the symmetry axis where there is one, so that the meridians at pi / 2 +
+    // 2 pi i / g (or those turned by pi / g) are each other's mirror images, and the halving planes through u or w
+    // their own.
     const Eigen::Vector3d u = Eigen::Vector3d::Unit(s >= 0 && s != axis ? s : (axis + 1) % 3), w = e.cross(u);
-    for (int m = 1; m <= kMostPlanesPerFamily; ++m)
-      for (int k = 0; k <= kMostPlanesPerFamily; ++k) {
+    for (int g = 2; g <= kMostGores; ++g)
+      for (int k = 0; k <= kMostBands; ++k) {
         // Up to four panels fewer than asked for: a limb cut on its own, or opened, adds panels on most shapes.
-        const int panels = 2 * m * (k + 1);
+        const int panels = g * (k + 1);
         if (panels > request.panels || panels < request.panels - kFewerPanels) continue;
         // Bands across the symmetry axis would be their own mirror image only at mirrored shares.
         if (k > 0 && axis == s) continue;
         for (int turn = 0; turn < 2; ++turn) {
           LayoutProposal p;
-          p.axis = axis, p.gores = m, p.bands = k, p.center = center;
-          for (int i = 0; i < m; ++i) {
-            const double theta = kPi * i / m + (turn ? kPi / 2 : 0);
-            const Eigen::Vector3d normal = e.cross(std::cos(theta) * u + std::sin(theta) * w).normalized();
+          p.axis = axis, p.gores = g, p.bands = k, p.center = center;
+          if (g == 2) {
+            const Eigen::Vector3d normal = e.cross(turn ? w : u);
             p.planes.push_back({normal, normal.dot(center)});
+          } else {
+            for (int i = 0; i < g; ++i) {
+              const double theta = kPi / 2 + 2 * kPi * i / g - (turn ? kPi / g : 0);
+              p.meridians.push_back(std::cos(theta) * u + std::sin(theta) * w);
+            }
           }
           for (int j = 1; j <= k; ++j) p.planes.push_back({e, along.at(double(j) / (k + 1))});
-          std::vector<long long> key = planeKey(p.planes, size);
+          std::vector<long long> key = proposalKey(p.planes, p.meridians, size);
           if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
           seen.push_back(std::move(key));
           const std::string across = axisName(axis, request.up);
           if (k == 0)
-            p.name = m == 1 ? halvesName(p.planes[0].normal, request.up)
-                            : std::to_string(2 * m) + " gores around the " + across + (turn ? ", turned" : "");
+            p.name = g == 2 ? halvesName(p.planes[0].normal, request.up)
+                            : std::to_string(g) + " gores around the " + across + (turn ? ", turned" : "");
           else
             p.name = std::to_string(k + 1) + " bands across the " + across +
-                     (m == 1 ? ", in " + halvesName(p.planes[0].normal, request.up)
-                             : ", each in " + std::to_string(2 * m) + " gores" + (turn ? " (turned)" : ""));
+                     (g == 2 ? ", in " + halvesName(p.planes[0].normal, request.up)
+                             : ", each in " + std::to_string(g) + " gores" + (turn ? " (turned)" : ""));
           out.push_back(std::move(p));
         }
       }
@@ -234,34 +244,38 @@ size_t nearestPoint(const SectionLoop& loop, const Eigen::Vector3d& p, double& d
 std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal) {
   const double size = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
   const double spacing = kSeamPointSpacing * size;
-  const bool meridians = proposal.gores >= 2;
+  const Eigen::Vector3d e = Eigen::Vector3d::Unit(proposal.axis);
   std::array<Pole, 2> poles;
-  if (meridians) {
-    poles = axisPoles(target, proposal.center, Eigen::Vector3d::Unit(proposal.axis));
+  if (!proposal.meridians.empty()) {
+    poles = axisPoles(target, proposal.center, e);
     if (!poles[0].found || !poles[1].found)
       throw Error("suggest.no-poles", "its axis passes beside the shape, so its gores have no ends to meet at");
   }
   std::vector<DesignSeam> seams;
   const auto name = [&] { return proposal.name + ", seam " + std::to_string(seams.size() + 1); };
-  for (size_t i = 0; i < proposal.planes.size(); ++i) {
-    const SectionPlane& plane = proposal.planes[i];
-    const std::vector<SectionLoop> loops = planeSection(target, plane.normal, plane.offset);
-    // A gore plane's loop through both poles: two seams from pole to pole.
+  for (const Eigen::Vector3d& direction : proposal.meridians) {
+    const Eigen::Vector3d normal = e.cross(direction).normalized();
+    const std::vector<SectionLoop> loops = planeSection(target, normal, normal.dot(proposal.center));
+    // Which side of the axis a loop (or a piece of one) lies on: its points' mean along the direction.
+    const auto onThisSide = [&](const SectionLoop& points) {
+      double along = 0;
+      for (const SectionPoint& p : points) along += (p.position - proposal.center).dot(direction);
+      return along > 0;
+    };
+    // The loop through both poles: of its two pieces from pole to pole, the one on this side is the meridian.
     size_t poleLoop = loops.size();
-    if (meridians && int(i) < proposal.gores) {
-      double best = INFINITY;
-      for (size_t l = 0; l < loops.size(); ++l) {
-        double d0 = 0, d1 = 0;
-        nearestPoint(loops[l], poles[0].point.position, d0), nearestPoint(loops[l], poles[1].point.position, d1);
-        if (std::max(d0, d1) < best) best = std::max(d0, d1), poleLoop = l;
-      }
-      if (best > 5 * spacing)
-        throw Error("suggest.no-poles", "its gores do not all pass through both ends of its axis on this shape");
+    double best = INFINITY;
+    for (size_t l = 0; l < loops.size(); ++l) {
+      double d0 = 0, d1 = 0;
+      nearestPoint(loops[l], poles[0].point.position, d0), nearestPoint(loops[l], poles[1].point.position, d1);
+      if (std::max(d0, d1) < best) best = std::max(d0, d1), poleLoop = l;
     }
+    if (best > 5 * spacing)
+      throw Error("suggest.no-poles", "its gores do not all pass through both ends of its axis on this shape");
     for (size_t l = 0; l < loops.size(); ++l) {
       const SectionLoop& loop = loops[l];
-      if (l != poleLoop) {
-        seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, loop, spacing)));
+      if (l != poleLoop) {  // a limb the plane cuts on its own, on this side
+        if (onThisSide(loop)) seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, loop, spacing)));
         continue;
       }
       double d = 0;
@@ -274,23 +288,28 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
         const Pole& from = poles[half];
         const Pole& to = poles[1 - half];
         const size_t n = loop.size(), start = half == 0 ? a : b, end = half == 0 ? b : a;
-        SectionLoop inner;
+        SectionLoop piece, side;
         for (size_t j = 1; j < n; ++j) {
           const size_t k = (start + j) % n;
           if (k == end) break;
+          side.push_back(loop[k]);
           if ((loop[k].position - from.point.position).norm() >= 0.25 * spacing &&
               (loop[k].position - to.point.position).norm() >= 0.25 * spacing)
-            inner.push_back(loop[k]);
+            piece.push_back(loop[k]);
         }
+        if (!onThisSide(side)) continue;
         std::vector<SurfacePoint> controls{from.point.at};
-        if (inner.size() >= 2)
-          for (const SurfacePoint& p : sectionPathPoints(target, inner, spacing)) controls.push_back(p);
+        if (piece.size() >= 2)
+          for (const SurfacePoint& p : sectionPathPoints(target, piece, spacing)) controls.push_back(p);
         controls.push_back(to.point.at);
         if (half == 1) std::reverse(controls.begin(), controls.end());
         seams.push_back(makeSeam(name(), false, controls));
       }
     }
   }
+  for (const SectionPlane& plane : proposal.planes)
+    for (const SectionLoop& loop : planeSection(target, plane.normal, plane.offset))
+      seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, loop, spacing)));
   return seams;
 }
 

@@ -2,10 +2,11 @@
 // and scored by what matters to them: how close its optimized panels inflate to the target, at a coarse
 // resolution, and how much there is to sew.
 //
-// A layout is made of plane sections (seams/plane_section.hpp), as the project's hand-made layouts are: m planes
-// through one of the target's own axes (gores, as a beach ball's) and k planes across it at equal shares of the
-// surface (bands), 2 m (k + 1) panels on a round shape, more where a plane cuts a limb on its own. A layout that
-// keeps the target's mirror symmetry lays only planes that are their own mirror image across the symmetry plane.
+// A layout is made of plane sections (seams/plane_section.hpp), as the project's hand-made layouts are: g gores
+// around one of the target's own axes (meridians from pole to pole, each a half of a plane through the axis, as a
+// beach ball's; two gores: the plane's whole loop, halves) and k planes across it at equal shares of the surface
+// (bands), g (k + 1) panels on a round shape, more where a plane cuts a limb on its own. A layout that keeps the
+// target's mirror symmetry lays only what is its own mirror image across the symmetry plane.
 #pragma once
 #include <functional>
 #include <string>
@@ -25,15 +26,18 @@ struct SectionPlane {
 
 struct LayoutProposal {
   std::string name;                                  // the designer's words: "6 gores around the vertical axis"
-  int axis = 1;                                      // the target's own axis the planes go around and across
-  int gores = 1;                                     // m planes through the axis
+  int axis = 1;                                      // the target's own axis the gores go around and the bands across
+  int gores = 2;                                     // g panels around the axis
   int bands = 0;                                     // k planes across it
   Eigen::Vector3d center = Eigen::Vector3d::Zero();  // a point of the axis line
-  std::vector<SectionPlane> planes;                  // the gores' m planes first
+  // Three gores or more: each meridian's direction from the axis (unit, across it); its seam is the half of the
+  // section by the plane through the axis and that direction on that side, from pole to pole.
+  std::vector<Eigen::Vector3d> meridians;
+  std::vector<SectionPlane> planes;  // two gores: the halving plane first; then the bands' planes
 };
 
 struct LayoutRequest {
-  int panels = 6;         // at most this many: layouts of 2 m (k + 1) = panels - 4 to panels on a round shape
+  int panels = 6;         // at most this many: layouts of g (k + 1) = panels - 4 to panels on a round shape
   int symmetryAxis = -1;  // the target's own axis across whose mid-plane (of its box) the layout is its own mirror
                           // image; -1: any layout
   UpAxis up;              // which axis the names call vertical
@@ -51,9 +55,9 @@ int mirrorSymmetryAxis(const TriMesh& target, const SurfaceProjector& projector,
 std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRequest& request);
 
 // The proposal's seams on `target`, of weight 1, control points about 2 % of the target's diagonal apart (the
-// section tool's spacing): with two gore planes or more, each plane's loop through the axis's poles (where the axis
-// line leaves the surface first and last) as two seams from pole to pole, meeting the other gores' there; every
-// other loop a closed seam. Throws billow::Error (suggest.no-poles) where the gores have no poles to meet at.
+// section tool's spacing): each meridian a seam from pole to pole (where the axis line leaves the surface first and
+// last), meeting the others there, and the loops its plane cuts on its side around a limb; every loop of the other
+// planes a closed seam. Throws billow::Error (suggest.no-poles) where the meridians have no poles to meet at.
 std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal);
 
 struct LayoutEvaluation {
