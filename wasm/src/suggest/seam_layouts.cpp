@@ -5,7 +5,6 @@
 #include <array>
 #include <chrono>
 #include <cmath>
-#include <numeric>
 
 #include "export/layout.hpp"
 #include "optimize/optimized_pattern.hpp"
@@ -67,13 +66,11 @@ AreaAlong areaAlong(const TriMesh& mesh, int axis) {
 }
 
 // A layout's key, so one two families both make is tried once: its planes and meridians, rounded.
-std::vector<long long> proposalKey(const std::vector<SectionPlane>& planes,
-                                   const std::vector<Eigen::Vector3d>& meridians, double size) {
-  std::vector<long long> key;
-  const auto direction = [](const Eigen::Vector3d& n) {
-    return std::llround(n.x() * 1e4) * 1'000'000'000'000LL + std::llround(n.y() * 1e4) * 100'000'000LL +
-           std::llround(n.z() * 1e4) * 10'000LL;
-  };
+using ProposalKey = std::vector<std::array<long long, 5>>;
+ProposalKey proposalKey(const std::vector<SectionPlane>& planes, const std::vector<Eigen::Vector3d>& meridians,
+                        double size) {
+  ProposalKey key;
+  const auto rounded = [](double x) { return std::llround(x * 1e4); };
   for (const SectionPlane& p : planes) {
     // n and -n with -offset are one plane: the first non-zero component positive.
     Eigen::Vector3d n = p.normal;
@@ -83,9 +80,9 @@ std::vector<long long> proposalKey(const std::vector<SectionPlane>& planes,
         if (n[k] < 0) n = -n, d = -d;
         break;
       }
-    key.push_back(direction(n) + std::llround(d / size * 1e3));
+    key.push_back({0, rounded(n.x()), rounded(n.y()), rounded(n.z()), rounded(d / size)});
   }
-  for (const Eigen::Vector3d& m : meridians) key.push_back(direction(m) + 5'000);  // apart from any plane's
+  for (const Eigen::Vector3d& m : meridians) key.push_back({1, rounded(m.x()), rounded(m.y()), rounded(m.z()), 0});
   std::sort(key.begin(), key.end());
   return key;
 }
@@ -138,7 +135,7 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
   center /= std::max(area, 1e-300);
   const int s = request.symmetryAxis;
   if (s >= 0 && s < 3) center[s] = 0.5 * (lo[s] + hi[s]);
-  std::vector<std::vector<long long>> seen;
+  std::vector<ProposalKey> seen;
   for (int axis = 0; axis < 3; ++axis) {
     const AreaAlong along = areaAlong(target, axis);
     const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
@@ -166,7 +163,7 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
             }
           }
           for (int j = 1; j <= k; ++j) p.planes.push_back({e, along.at(double(j) / (k + 1))});
-          std::vector<long long> key = proposalKey(p.planes, p.meridians, size);
+          ProposalKey key = proposalKey(p.planes, p.meridians, size);
           if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
           seen.push_back(std::move(key));
           const std::string across = axisName(axis, request.up);
