@@ -154,7 +154,7 @@ TEST(SeamLayouts, TubesAPlaneCutAroundLimbsAreOpenedIntoPanels) {
               {Eigen::Vector3d::UnitY(), bottom + 0.15 * height}};
   const std::vector<DesignSeam> seams = proposalSeams(target, p);
   EvaluateOptions look;
-  look.triangles = 600, look.maxIterations = 0, look.openingRounds = 0;
+  look.triangles = 800, look.maxIterations = 0, look.openingRounds = 0;
   const LayoutEvaluation plain = evaluateLayout(*spot, seams, 0, look);
   EXPECT_FALSE(plain.ok);
   EXPECT_TRUE(plain.problem.find("holes") != std::string::npos ||
