@@ -80,7 +80,8 @@ Design forOutDir(Design design, const std::string& designPath, const std::string
 }  // namespace
 
 int suggestCommand(const std::vector<std::string>& argv) {
-  const Args args = parseArgs(argv, {"--panels", "--out-dir", "--height", "--resolution", "--max-iterations"});
+  const Args args =
+      parseArgs(argv, {"--panels", "--out-dir", "--height", "--resolution", "--max-iterations", "--optimize"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir") || !args.has("--panels"))
     return usage(args.has("--help"));
   const bool quiet = args.has("--quiet");

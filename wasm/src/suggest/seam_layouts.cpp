@@ -460,8 +460,7 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
   // A layout whose panels cannot be made or settled is not used, and says why (the pattern's own message: panels
   // sewn three to an edge where a cut meets a section, a fold).
   try {
-    const BuiltPattern built =
-        buildDesignPattern(scene, options.maxIterations > 0 ? options.triangles : std::max(200, options.triangles / 2));
+    const BuiltPattern built = buildDesignPattern(scene, options.triangles);
     if (!built.ok()) {
       out.problem = built.problems.empty() ? "no panels" : built.problems.front().message;
       return done();

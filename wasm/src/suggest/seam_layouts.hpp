@@ -79,9 +79,7 @@ struct LayoutEvaluation {
 };
 
 struct EvaluateOptions {
-  // The coarse resolution the layouts are compared at; a first look's is half of it (at least 200), which ranked
-  // the shared meshes' layouts at 12 panels alike and took a quarter less time (bench/README.md).
-  int triangles = 1000;
+  int triangles = 1000;    // the coarse resolution the layouts are looked at and compared at
   int maxIterations = 40;  // of the app's stopping rule; 0: the flattened panels' inflation alone, a first look
   // Rounds of seams added where plane sections leave a segment that is not a panel (a tube around a limb, a hole,
   // a limb's end too big for its seam).
