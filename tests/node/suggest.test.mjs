@@ -7,6 +7,7 @@ import { readFileSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
 import { readObjText, loadSharedMesh } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
+import { linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
 
 const api = await loadApi();
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
@@ -83,4 +84,33 @@ test('the designer\'s seams stay first, and the cow\'s mirror plane is found whe
     assert.ok(layout.seams.length > 1);
   }
   assert.throws(() => drive(sphere.suggestSeams({ panels: 1, scale: 0.25 })), /2 to 40 panels/);
+});
+
+test('a mirror-symmetric layout\'s seams are linked as twins when used, each the exact mirror image of the other', () => {
+  const target = readObjText(read('../../web/public/examples/spot.obj'));
+  const handlers = createHandlers(api);
+  drive(handlers.setTarget({ positions: target.positions, indices: target.indices }));
+  const result = drive(handlers.suggestSeams({ panels: 4, symmetry: 'x', scale: 0.6, triangles: 300, maxIterations: 1, optimize: 20 }));
+  const gores = result.layouts.find((l) => /gores around the vertical axis/.test(l.name));
+  assert.ok(gores, result.layouts.map((l) => l.name).join('; '));
+  const design = { seams: gores.seams, connections: [], symmetry: { axis: 'x' } };
+  const plane = symmetryPlane(design, target);
+  const linked = linkMirrorTwins(design, target, plane);
+  const pairs = linked.seams.map((s, i) => [i, s.mirror]).filter(([, j]) => j !== undefined);
+  assert.ok(pairs.length >= 2, `${pairs.length} seams linked`);
+  const tolerance = 1e-3 * bounds(target).diagonal;
+  for (const [i, j] of pairs) {
+    assert.equal(linked.seams[j].mirror, i, 'linked both ways');
+    const [a, b] = [linked.seams[i], linked.seams[j]];
+    assert.equal(a.points.length, b.points.length);
+    // One of the two was laid again as the other's mirror image, point for point.
+    const mirrored = (x, y) => x.points.every((p, k) => {
+      const m = reflect(positionOf(target, p), plane);
+      const q = positionOf(target, y.points[k]);
+      return Math.hypot(m[0] - q[0], m[1] - q[1], m[2] - q[2]) < tolerance;
+    });
+    assert.ok(mirrored(a, b) || mirrored(b, a), `seams ${i} and ${j}`);
+  }
+  // The meridians in the mirror plane are their own image and stay unlinked.
+  assert.ok(linked.seams.some((s) => s.mirror === undefined));
 });

@@ -9,6 +9,7 @@ import { ErrorCode, Op } from '../worker/protocol.js';
 import { formatDistance, formatLength, formatPercent, worseDistance } from './units.js';
 import { optimizeArgs } from './stored-result.js';
 import { upOf } from './up-axis.js';
+import { linkMirrorTwins, symmetryPlane } from './symmetry.js';
 import { showOverInflatedPane, sidePanel } from '../views/dialog-header.js';
 
 const PANELS = { min: 2, max: 40, start: 6 };
@@ -226,7 +227,7 @@ export class SeamSuggestions {
   }
 
   // Makes a layout's seams the design's: one step of the history. Kept seams stay as they are (with their mirror
-  // twins and bands); the layout's own follow them.
+  // twins and bands); the layout's own follow them, mirror images linked as twins where the symmetry was kept.
   use(layout) {
     const { app } = this;
     // The panels of the layout chosen are made at once, not after the layouts still to try.
@@ -237,7 +238,9 @@ export class SeamSuggestions {
     const seams = [...design.seams.slice(0, kept), ...layout.seams.slice(kept)];
     const { symmetry, ...rest } = design;
     const axis = this.request?.axis;
-    const next = { ...rest, seams, connections: kept ? design.connections : [], ...(axis ? { symmetry: { axis } } : symmetry ? { symmetry } : {}) };
+    let next = { ...rest, seams, connections: kept ? design.connections : [], ...(axis ? { symmetry: { axis } } : symmetry ? { symmetry } : {}) };
+    // The layout's mirror images become twins, so that editing one side edits the other.
+    if (axis) next = linkMirrorTwins(next, app.target, symmetryPlane(next, app.target), kept);
     app.seams.selection = null;
     app.commitDesign(next);
     app.seams.refresh();

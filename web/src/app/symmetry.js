@@ -174,3 +174,34 @@ export function addMirroredTwin(design, target, plane, i) {
   const seams = design.seams.map((s, k) => (k === i ? { ...s, mirror: design.seams.length } : s));
   return { ...design, seams: [...seams, twin] };
 }
+
+// Seams laid together as their own mirror images (a suggested layout, suggest.js), linked as twins: from seam `from`
+// on, each seam that is not its own mirror image takes as twin the seam whose middle lies nearest its mirrored
+// middle (within 2 % of the diagonal), which becomes its exact mirror image point for point, so that editing one side
+// edits the other as for seams drawn with symmetry on.
+export function linkMirrorTwins(design, target, plane, from = 0) {
+  if (!plane) return design;
+  const seams = design.seams.slice();
+  const middle = (seam) => {
+    const out = [0, 0, 0];
+    for (const p of seam.points) positionOf(target, p).forEach((x, k) => (out[k] += x / seam.points.length));
+    return out;
+  };
+  const tolerance = 0.02 * bounds(target).diagonal;
+  for (let i = from; i < seams.length; i++) {
+    if (seams[i].mirror !== undefined || isSelfSymmetric(seams[i], target, plane)) continue;
+    const image = reflect(middle(seams[i]), plane);
+    let twin = -1;
+    let nearest = tolerance;
+    for (let j = from; j < seams.length; j++) {
+      if (j === i || seams[j].mirror !== undefined || seams[j].closed !== seams[i].closed) continue;
+      const m = middle(seams[j]);
+      const d = Math.hypot(m[0] - image[0], m[1] - image[1], m[2] - image[2]);
+      if (d < nearest) (nearest = d), (twin = j);
+    }
+    if (twin < 0) continue;
+    seams[i] = { ...seams[i], mirror: twin };
+    seams[twin] = { ...seams[twin], points: seams[i].points.map((p) => mirrorPoint(design, target, plane, p)), mirror: i };
+  }
+  return { ...design, seams };
+}
