@@ -55,8 +55,9 @@
 //   t.suggestStart(keptSeamsJson, optionsJson)  kept: the designer's seams the layouts add to; options: buildPattern's
 //     and { panels (2-40), symmetry ("x" | "y" | "z" | null: layouts that are their own mirror image across it),
 //     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...] }
-//   t.suggestLayout(index, optimize) -> { ok, problem, name, panels, seamLength [m], sheetUse (optimized only: the
-//     share of the sheet its nested cut pieces cover), distance (the worse way),
+//   t.suggestLayout(index, optimize) -> { ok, problem (also where it makes more panels than asked for), name,
+//     panels, seamLength [m], sheetUse (optimized only: the share of the sheet its nested cut pieces cover),
+//     distance (the worse way),
 //     inflatedToTarget, targetToInflated (over the target's diagonal), iterations, ms, seams (the kept ones first,
 //     then the layout's, as the design document writes them) }: optimize false, a first look (the flattened panels
 //     inflated); true, the layout looked at before optimized at the options' resolution
@@ -379,6 +380,7 @@ class TargetSession {
         const std::string axis = o["symmetry"].get<std::string>();
         layout.symmetryAxis = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
       }
+      s->panels = layout.panels;
       s->proposals = billow::proposeLayouts(s->scene->target, layout);
       s->looked.resize(s->proposals.size());
       json names = json::array();
@@ -395,16 +397,7 @@ class TargetSession {
       Suggestion& s = *suggest_;
       billow::LayoutEvaluation e;
       if (!optimize) {
-        billow::EvaluateOptions look = s.evaluate;
-        look.maxIterations = 0;
-        std::vector<billow::DesignSeam> seams = s.kept;
-        try {
-          const std::vector<billow::DesignSeam> laid = billow::proposalSeams(s.scene->target, s.proposals[index]);
-          seams.insert(seams.end(), laid.begin(), laid.end());
-          e = billow::evaluateLayout(*s.scene, seams, int(s.kept.size()), look);
-        } catch (const billow::Error& error) {
-          e.problem = error.what();
-        }
+        e = billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, s.evaluate);
         s.looked[index] = e.ok ? e.seams : std::vector<billow::DesignSeam>{};
       } else {
         if (s.looked[index].empty()) throw billow::Error("suggest.not-looked", "That layout was not looked at yet.");
@@ -524,6 +517,7 @@ class TargetSession {
     std::vector<billow::LayoutProposal> proposals;
     std::vector<std::vector<billow::DesignSeam>> looked;
     billow::EvaluateOptions evaluate;
+    int panels = 0;  // at most, as asked
   };
   std::unique_ptr<Suggestion> suggest_;
   billow::TriMesh mesh_, cut_, scaled_;

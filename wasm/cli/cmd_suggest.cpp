@@ -121,21 +121,10 @@ int suggestCommand(const std::vector<std::string>& argv) {
     LayoutEvaluation first, result;
   };
   std::vector<Tried> tried;
-  EvaluateOptions look = evaluate;
-  look.maxIterations = 0;
   for (size_t i = 0; i < proposals.size(); ++i) {
     Tried t;
     t.proposal = &proposals[i];
-    try {
-      std::vector<DesignSeam> seams = kept;
-      const std::vector<DesignSeam> laid = proposalSeams(scene->target, proposals[i]);
-      seams.insert(seams.end(), laid.begin(), laid.end());
-      t.first = evaluateLayout(*scene, seams, int(kept.size()), look);
-      if (t.first.ok && t.first.panels > request.panels)
-        t.first.ok = false, t.first.problem = "it makes " + std::to_string(t.first.panels) + " panels on this shape";
-    } catch (const Error& e) {
-      t.first.problem = e.what();
-    }
+    t.first = lookAtLayout(*scene, proposals[i], kept, request.panels, evaluate);
     if (!quiet)
       std::fprintf(
           stderr, "  look %2zu/%zu  %-58s %s\n", i + 1, proposals.size(), proposals[i].name.c_str(),

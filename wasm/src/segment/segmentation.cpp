@@ -13,14 +13,14 @@
 
 namespace billow {
 
-namespace {
-
 double loopLength(const TriMesh& m, const BoundaryLoop& loop) {
   double sum = 0;
   for (size_t i = 0; i < loop.vertices.size(); ++i)
     sum += (m.V.row(loop.vertices[(i + 1) % loop.vertices.size()]) - m.V.row(loop.vertices[i])).norm();
   return sum;
 }
+
+namespace {
 
 // A segment's mean width: twice its area over its boundary's length (a strip of width w and length L has
 // area wL and boundary about 2L; a disk of radius r gives r).

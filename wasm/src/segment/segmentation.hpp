@@ -68,6 +68,9 @@ struct Segmentation {
   UpAxis up;
 };
 
+// The length of a segment's boundary loop on the cut mesh `m` (Segmentation::mesh).
+double loopLength(const TriMesh& m, const BoundaryLoop& loop);
+
 Segmentation segmentTarget(const TriMesh& target, const MeshTopology& topo, const std::vector<SeamCurve>& seams,
                            const SegmentationOptions& options = {});
 

@@ -53,16 +53,33 @@ struct AreaAlong {
   }
 };
 
-AreaAlong areaAlong(const TriMesh& mesh, int axis) {
-  AreaAlong out;
+// The target's faces: their centroids and areas.
+struct Faces {
+  Eigen::MatrixX3d centroid;
+  Eigen::VectorXd area;
+};
+
+Faces facesOf(const TriMesh& mesh) {
+  Faces out{Eigen::MatrixX3d(mesh.F.rows(), 3), Eigen::VectorXd(mesh.F.rows())};
   for (int f = 0; f < mesh.F.rows(); ++f) {
     const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    const double area = 0.5 * (b - a).cross(c - a).norm();
-    out.coordinateArea.emplace_back((a[axis] + b[axis] + c[axis]) / 3, area);
-    out.total += area;
+    out.centroid.row(f) = (a + b + c) / 3, out.area[f] = 0.5 * (b - a).cross(c - a).norm();
   }
+  return out;
+}
+
+AreaAlong areaAlong(const Faces& faces, int axis) {
+  AreaAlong out;
+  for (Eigen::Index f = 0; f < faces.area.size(); ++f)
+    out.coordinateArea.emplace_back(faces.centroid(f, axis), faces.area[f]);
+  out.total = faces.area.sum();
   std::sort(out.coordinateArea.begin(), out.coordinateArea.end());
   return out;
+}
+
+// Control points of a proposed seam on `target` lie this far apart [its units].
+double seamPointSpacing(const TriMesh& target) {
+  return kSeamPointSpacing * (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
 }
 
 // A layout's key, so one two families both make is tried once: its planes and meridians, rounded.
@@ -124,20 +141,13 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
   const double size = (hi - lo).norm();
   // The axes go through the area centroid; across a symmetry plane, through the box's middle, where the app's
   // symmetry plane lies (web/src/app/symmetry.js).
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  double area = 0;
-  for (int f = 0; f < target.F.rows(); ++f) {
-    const Eigen::Vector3d a = target.V.row(target.F(f, 0)), b = target.V.row(target.F(f, 1)),
-                          c = target.V.row(target.F(f, 2));
-    const double at = 0.5 * (b - a).cross(c - a).norm();
-    center += at * (a + b + c) / 3, area += at;
-  }
-  center /= std::max(area, 1e-300);
+  const Faces faces = facesOf(target);
+  Eigen::Vector3d center = (faces.centroid.transpose() * faces.area) / std::max(faces.area.sum(), 1e-300);
   const int s = request.symmetryAxis;
   if (s >= 0 && s < 3) center[s] = 0.5 * (lo[s] + hi[s]);
   std::vector<ProposalKey> seen;
   for (int axis = 0; axis < 3; ++axis) {
-    const AreaAlong along = areaAlong(target, axis);
+    const AreaAlong along = areaAlong(faces, axis);
     const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
     // Directions across the axis from u: the symmetry axis where there is one, so that the meridians at pi / 2 +
     // 2 pi i / g (or those turned by pi / g) are each other's mirror images, and the halving planes through u or w
@@ -239,8 +249,7 @@ size_t nearestPoint(const SectionLoop& loop, const Eigen::Vector3d& p, double& d
 }  // namespace
 
 std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal) {
-  const double size = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
-  const double spacing = kSeamPointSpacing * size;
+  const double spacing = seamPointSpacing(target);
   const Eigen::Vector3d e = Eigen::Vector3d::Unit(proposal.axis);
   std::array<Pole, 2> poles;
   if (!proposal.meridians.empty()) {
@@ -351,15 +360,9 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
     if (problem.segment < 0) continue;
     const Segment& segment = sg.segments[problem.segment];
     if (problem.code == "segment.not-disk" && segment.genus == 0 && segment.loops.size() >= 2) {
-      const auto length = [&](const BoundaryLoop& l) {
-        double total = 0;
-        for (size_t i = 0; i < l.vertices.size(); ++i)
-          total += (cut.V.row(l.vertices[(i + 1) % l.vertices.size()]) - cut.V.row(l.vertices[i])).norm();
-        return total;
-      };
       size_t outer = 0;
       for (size_t l = 1; l < segment.loops.size(); ++l)
-        if (length(segment.loops[l]) > length(segment.loops[outer])) outer = l;
+        if (loopLength(cut, segment.loops[l]) > loopLength(cut, segment.loops[outer])) outer = l;
       for (size_t l = 0; l < segment.loops.size(); ++l) {
         if (l == outer) continue;
         int from = -1, to = -1;
@@ -435,8 +438,7 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
     return out;
   };
   out.seams = seams;
-  const double spacing =
-      kSeamPointSpacing * (scene.target.V.colwise().maxCoeff() - scene.target.V.colwise().minCoeff()).norm();
+  const double spacing = seamPointSpacing(scene.target);
   for (int round = 0;; ++round) {
     scene.design.seams = out.seams;
     try {
@@ -488,6 +490,23 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
   }
   out.ok = true;
   return done();
+}
+
+LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal, const std::vector<DesignSeam>& kept,
+                              int panelsAtMost, EvaluateOptions options) {
+  options.maxIterations = 0;
+  LayoutEvaluation look;
+  try {
+    std::vector<DesignSeam> seams = kept;
+    const std::vector<DesignSeam> laid = proposalSeams(scene.target, proposal);
+    seams.insert(seams.end(), laid.begin(), laid.end());
+    look = evaluateLayout(scene, seams, int(kept.size()), options);
+  } catch (const Error& e) {
+    look.problem = e.what();
+  }
+  if (look.ok && look.panels > panelsAtMost)
+    look.ok = false, look.problem = "it makes " + std::to_string(look.panels) + " panels on this shape";
+  return look;
 }
 
 }  // namespace billow

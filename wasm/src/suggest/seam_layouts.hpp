@@ -92,4 +92,10 @@ struct EvaluateOptions {
 LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
                                 const EvaluateOptions& options = {});
 
+// A first look at a proposal (evaluateLayout without an iteration): its seams laid after the designer's `kept`. Not
+// ok, and why, where it cannot be laid (suggest.no-poles) or makes more than `panelsAtMost` panels. The layouts to
+// optimize are the closest looked at, each with the seams its look opened (evaluateLayout with all of them fixed).
+LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal, const std::vector<DesignSeam>& kept,
+                              int panelsAtMost, EvaluateOptions options = {});
+
 }  // namespace billow

@@ -170,9 +170,11 @@ export class SeamSuggestions {
     const design = app.design;
     const keep = this.keep.checked && !this.keepLabel.hidden;
     const axis = this.symmetry.checked ? this.symmetryAxis() : null;
+    // The sheet, pressure and resolution as the panels are made; the design's seams only when kept.
+    const { seams, connections, ...physics } = optimizeArgs(design, TRIANGLES);
     const args = {
-      ...optimizeArgs(design, TRIANGLES),
-      kept: keep ? optimizeArgs(design, TRIANGLES).seams : [],
+      ...physics,
+      kept: keep ? seams : [],
       panels,
       symmetry: axis,
       scale: app.scaleFor(design),
@@ -180,8 +182,6 @@ export class SeamSuggestions {
       maxIterations: MAX_ITERATIONS,
       optimize: OPTIMIZED,
     };
-    delete args.seams;
-    delete args.connections;
     this.layouts = [];
     this.request = { revision: app.revision, kept: keep ? design.seams.length : 0, axis, panels };
     this.render();

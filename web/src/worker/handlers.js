@@ -159,11 +159,11 @@ export function createHandlers(api) {
       for (const [i, name] of proposals.entries()) {
         yield { stage: 'a first look at each layout', done: i, total: proposals.length, detail: name };
         const r = session.suggestLayout(i, false);
-        if (r.ok && r.panels <= options.panels) {
+        if (r.ok) {
           looked.push({ index: i, ...r });
           // Usable at once: its flattened panels' figures until it is optimized.
           yield { stage: 'a first look at each layout', done: i + 1, total: proposals.length, look: r };
-        } else notUsed.push({ name, why: r.ok ? `it makes ${r.panels} panels on this shape` : r.problem });
+        } else notUsed.push({ name, why: r.problem });
       }
       looked.sort((a, b) => a.distance - b.distance);
       const chosen = looked.slice(0, optimize);
