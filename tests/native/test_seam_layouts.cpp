@@ -3,6 +3,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <set>
 
@@ -20,6 +21,32 @@ using test::loadShared;
 
 double diagonal(const TriMesh& m) { return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm(); }
 Eigen::Vector3d boxMiddle(const TriMesh& m) { return 0.5 * (m.V.colwise().maxCoeff() + m.V.colwise().minCoeff()); }
+
+// A layout's balloon (LayoutBalloon) is its shape as evaluated: a closed outer surface of its panels, its distances
+// those its figure is the RMS of.
+void expectBalloon(const LayoutEvaluation& e) {
+  const LayoutBalloon& b = e.balloon;
+  const Eigen::Index vertices = b.positions.rows();
+  ASSERT_GT(b.triangles.rows(), 0);
+  ASSERT_EQ(b.distance.size(), vertices);
+  ASSERT_EQ(b.panel.size(), size_t(b.triangles.rows()));
+  EXPECT_GE(b.triangles.minCoeff(), 0);
+  EXPECT_LT(b.triangles.maxCoeff(), vertices);
+  EXPECT_TRUE(b.positions.allFinite() && b.distance.allFinite());
+  EXPECT_EQ(std::set<int>(b.panel.begin(), b.panel.end()).size(), size_t(e.panels));
+  // Every vertex is a corner (its own vertices only), and every edge has two triangles (closed).
+  std::vector<int> corners(size_t(vertices), 0);
+  std::map<std::pair<int, int>, int> edges;
+  for (Eigen::Index f = 0; f < b.triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int u = b.triangles(f, k), v = b.triangles(f, (k + 1) % 3);
+      ++corners[size_t(u)], ++edges[{std::min(u, v), std::max(u, v)}];
+    }
+  EXPECT_EQ(std::count(corners.begin(), corners.end(), 0), 0);
+  for (const auto& [edge, count] : edges) EXPECT_EQ(count, 2);
+  const double rms = std::sqrt(b.distance.squaredNorm() / double(vertices));
+  EXPECT_NEAR(rms, e.inflatedToTarget, 0.02 * e.inflatedToTarget + 1e-6);
+}
 
 // A scene of a shared mesh, `height` meters tall, without seams yet.
 std::unique_ptr<DesignScene> sharedScene(const std::string& name, double height = 0.6) {
@@ -132,6 +159,7 @@ TEST(SeamLayouts, GoresOfTheSphereMeetAtItsPolesAndInflateClose) {
     EXPECT_LT(e.distance, 0.012) << p.name;
     EXPECT_GT(e.distance, 0.0) << p.name;
     EXPECT_EQ(e.pattern.panels.size(), 6u) << p.name;
+    expectBalloon(e);
     // Six pieces of a 1 m sphere nest on a 1 m roll, leaving some of it between them.
     EXPECT_GT(e.sheetUse, 0.2) << p.name;
     EXPECT_LT(e.sheetUse, 1.0) << p.name;
@@ -170,6 +198,7 @@ TEST(SeamLayouts, TubesAPlaneCutAroundLimbsAreOpenedIntoPanels) {
   EXPECT_EQ(cuts, 8);
   for (const Segment& s : spot->segmentation.segments) EXPECT_TRUE(s.isDisk);
   EXPECT_TRUE(spot->segmentation.problems.empty());
+  expectBalloon(opened);  // a first look's: the flattened panels inflated
   // The designer's own seams stay as they are, only added to.
   const LayoutEvaluation fixed = evaluateLayout(*spot, seams, int(seams.size()), look);
   ASSERT_GE(fixed.seams.size(), seams.size());

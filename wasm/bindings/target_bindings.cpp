@@ -59,8 +59,11 @@
 //     panels, seamLength [m], sheetUse (optimized only: the share of the sheet its nested cut pieces cover),
 //     distance (the worse way),
 //     inflatedToTarget, targetToInflated (over the target's diagonal), iterations, ms, seams (the kept ones first,
-//     then the layout's, as the design document writes them) }: optimize false, a first look (the flattened panels
-//     inflated); true, the layout looked at before optimized at the options' resolution
+//     then the layout's, as the design document writes them), balloon (its inflated outer surface for the card's
+//     picture, LayoutBalloon, null when not ok: { positions #V*3 [m] (about 5 significant digits; the frame the
+//     inflated pane draws in), triangles #F*3 (outward), distance #V (signed, over the target's diagonal, positive
+//     outside), panel #F }) }: optimize false, a first look (the flattened panels inflated); true, the layout looked
+//     at before optimized at the options' resolution
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -91,6 +94,29 @@ namespace {
 
 using billow::bindings::guarded;
 using nlohmann::json;
+
+// x to `decimals` decimal places (negative: to tens, hundreds, ...), divided back by the power of ten so that it
+// prints as the short decimal it is.
+double roundedTo(double x, int decimals) {
+  decimals = std::clamp(decimals, -20, 20);
+  const double p = std::pow(10.0, std::abs(decimals));
+  return decimals >= 0 ? std::round(x * p) / p : std::round(x / p) * p;
+}
+
+// A layout's balloon for its card (billow::LayoutBalloon) as flat arrays: positions to about five significant digits
+// of its size and distances to 1e-5 of the target's diagonal, all a thumbnail shows, so that a layout's message stays
+// small.
+json balloonJson(const billow::LayoutBalloon& b) {
+  const Eigen::Vector3d extent =
+      b.positions.rows() ? Eigen::Vector3d(b.positions.colwise().maxCoeff() - b.positions.colwise().minCoeff())
+                         : Eigen::Vector3d::Zero();
+  const int decimals = extent.norm() > 0 ? 4 - int(std::floor(std::log10(extent.norm()))) : 5;
+  json positions = json::array(), triangles = json::array(), distance = json::array();
+  for (Eigen::Index i = 0; i < b.positions.size(); ++i) positions.push_back(roundedTo(b.positions.data()[i], decimals));
+  for (Eigen::Index i = 0; i < b.triangles.size(); ++i) triangles.push_back(b.triangles.data()[i]);
+  for (Eigen::Index i = 0; i < b.distance.size(); ++i) distance.push_back(roundedTo(b.distance[i], 5));
+  return {{"positions", positions}, {"triangles", triangles}, {"distance", distance}, {"panel", b.panel}};
+}
 
 class TargetSession {
  public:
@@ -416,7 +442,8 @@ class TargetSession {
                    {"targetToInflated", e.targetToInflated},
                    {"iterations", e.iterations},
                    {"ms", e.ms},
-                   {"seams", e.ok ? seams : json::array()}})
+                   {"seams", e.ok ? seams : json::array()},
+                   {"balloon", e.ok ? balloonJson(e.balloon) : json(nullptr)}})
           .dump();
     });
   }

@@ -11,6 +11,7 @@
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/stopping_rule.hpp"
 #include "seams/plane_section.hpp"
+#include "seams/surface_distance.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -427,6 +428,33 @@ double sheetUse(const Pattern& pattern) {
   }
 }
 
+// The optimizer's current shape as a card draws it: its outer triangles on their own vertices, each vertex's distance
+// as the inflated pane colors it (signedDistances, as measureDistance gives the app) over the diagonal the
+// optimizer's own figures are over.
+LayoutBalloon balloonOf(const PatternOptimizer& optimizer, const DesignScene& scene) {
+  const SewnMesh& mesh = optimizer.mesh();
+  const Vertices& x = optimizer.inflated();
+  LayoutBalloon b;
+  std::vector<int> vertexOf(size_t(x.rows()), -1);
+  b.triangles.resize(std::count(mesh.outer.begin(), mesh.outer.end(), 1), 3);
+  int vertices = 0;
+  for (int f = 0, row = 0; f < mesh.numTriangles(); ++f) {
+    if (!mesh.outer[size_t(f)]) continue;
+    for (int k = 0; k < 3; ++k) {
+      int& v = vertexOf[size_t(mesh.triangles(f, k))];
+      if (v < 0) v = vertices++;
+      b.triangles(row, k) = v;
+    }
+    b.panel.push_back(mesh.trianglePanel[size_t(f)]);
+    ++row;
+  }
+  b.positions.resize(vertices, 3);
+  for (int i = 0; i < x.rows(); ++i)
+    if (vertexOf[size_t(i)] >= 0) b.positions.row(vertexOf[size_t(i)]) = x.row(i);
+  b.distance = signedDistances(scene.target, *scene.projector, b.positions) / optimizer.objective().modelSize();
+  return b;
+}
+
 }  // namespace
 
 LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
@@ -483,6 +511,7 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
     out.distance = std::max(out.inflatedToTarget, out.targetToInflated);
     out.iterations = optimizer.iterations();
     out.pattern = optimizedPattern(optimizer);
+    out.balloon = balloonOf(optimizer, scene);
     if (options.maxIterations > 0) out.sheetUse = sheetUse(out.pattern);
   } catch (const Error& e) {
     out.problem = e.what();

@@ -60,6 +60,15 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
 // planes a closed seam. Throws billow::Error (suggest.no-poles) where the meridians have no poles to meet at.
 std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal);
 
+// A layout's balloon as the designer sees it on its card: the outer surface of its evaluated shape (the optimizer's
+// mesh and inflated positions, internal panels left out since they are not seen).
+struct LayoutBalloon {
+  Vertices positions;        // #V by 3 [m], in the target's own axes, placed on it as the optimizer placed the shape
+  Triangles triangles;       // #F by 3, outward
+  Eigen::VectorXd distance;  // #V signed distance to the target over its diagonal, positive outside (the app's colors)
+  std::vector<int> panel;    // #F the panel each triangle belongs to
+};
+
 struct LayoutEvaluation {
   bool ok = false;
   std::string problem;  // why it was not scored, in the designer's words
@@ -76,6 +85,8 @@ struct LayoutEvaluation {
   int iterations = 0;
   double ms = 0;
   Pattern pattern;  // the optimized panels (coarse)
+  // Those panels inflated (a first look: the flattened panels'), for the app's picture of the layout.
+  LayoutBalloon balloon;
 };
 
 struct EvaluateOptions {
