@@ -31,6 +31,48 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
     assert.match(card.seams, /\d/);
   }
   assert.match(cards[0].name, /^1\. /);
+  // Each card pictures its balloon inflated in the distance colors with its seams: pixels of many colors (lit, and
+  // blue or orange where it is off the target), dark grey lines between its two panels, the background around it.
+  const pictures = await page.$$eval('.suggest-card', (els) =>
+    els.map((el) => {
+      const canvas = el.querySelector('canvas.suggest-picture');
+      if (!canvas) return null;
+      const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
+      const colors = new Set();
+      let painted = 0;
+      let seam = 0;
+      for (let i = 0; i < data.length; i += 4) {
+        if (data[i + 3] < 250) continue;
+        painted++;
+        colors.add(((data[i] >> 3) << 10) | ((data[i + 1] >> 3) << 5) | (data[i + 2] >> 3));
+        const [r, g, b] = [data[i], data[i + 1], data[i + 2]];
+        if (r + g + b < 250 && Math.max(r, g, b) - Math.min(r, g, b) < 30) seam++;
+      }
+      const box = canvas.getBoundingClientRect();
+      return { painted: painted / (data.length / 4), colors: colors.size, seam, label: canvas.getAttribute('aria-label'), sharp: canvas.width === Math.round(box.width * devicePixelRatio) && box.width > 100 };
+    }),
+  );
+  for (const [k, picture] of pictures.entries()) {
+    assert.ok(picture, `${cards[k].name}: no picture`);
+    assert.ok(picture.painted > 0.1 && picture.painted < 0.9, `${cards[k].name}: ${picture.painted} of the picture painted`);
+    assert.ok(picture.colors > 20, `${cards[k].name}: ${picture.colors} colors`);
+    assert.ok(picture.seam > 20, `${cards[k].name}: ${picture.seam} pixels of seam`);
+    assert.match(picture.label, /inflated, colored by distance from the target/);
+    assert.ok(picture.sharp, `${cards[k].name}: the canvas at the device's pixels`);
+  }
+  // A window 1024 pixels wide: the cards side by side, whole inside the panel.
+  await page.setViewportSize({ width: 1024, height: 768 });
+  const placed = await page.$$eval('.suggest-card', (els) => {
+    const panel = document.querySelector('.suggest-body').getBoundingClientRect();
+    return els.map((el) => {
+      const r = el.getBoundingClientRect();
+      return { top: r.top, left: r.left, right: r.right, inside: r.left >= panel.left && r.right <= panel.right, overflows: el.scrollWidth > el.clientWidth };
+    });
+  });
+  assert.ok(placed.every((c) => c.inside && !c.overflows), JSON.stringify(placed));
+  if (placed.length > 1) assert.ok(placed[1].top === placed[0].top && placed[1].left > placed[0].right, 'side by side');
+  await screenshot(page, 'suggest-cards-1024');
+  await page.setViewportSize({ width: 1400, height: 900 });
   // Shown on the target without changing the design: its two panels coloured, its seams dashed; shown again, gone.
   const labels = () => page.evaluate(() => window.billow.test.panes.target.segmentLabels.length);
   const before2 = await labels();

@@ -17,6 +17,41 @@ const session = (mesh) => {
   for (const _ of handlers.setTarget({ positions: target.positions, indices: target.indices }));
   return handlers;
 };
+// A layout's balloon (the card's picture, LayoutBalloon): a closed outer surface of its panels on its own vertices, its
+// distances those its figure is the RMS of, and for the sphere (radius 1 at the origin, here 0.25 m) each vertex's
+// own from it: the positions stand where the target does, in meters (the inflated pane's frame), and the distances
+// are signed, positive outside (the inflated pane's colors: blue inside, orange outside).
+const assertBalloon = (layout, radius) => {
+  const { positions, triangles, distance, panel } = layout.balloon;
+  const vertices = positions.length / 3;
+  assert.ok(Number.isInteger(vertices) && vertices >= 4, `${layout.name}: ${positions.length} coordinates`);
+  assert.ok(triangles.length > 0 && triangles.length % 3 === 0, `${layout.name}: ${triangles.length} corners`);
+  assert.equal(distance.length, vertices, layout.name);
+  assert.equal(panel.length, triangles.length / 3, layout.name);
+  assert.ok(positions.every(Number.isFinite), layout.name);
+  assert.ok(triangles.every((v) => Number.isInteger(v) && v >= 0 && v < vertices), `${layout.name}: an index out of range`);
+  assert.equal(new Set(triangles).size, vertices, `${layout.name}: every vertex a corner`);
+  const edges = new Map();
+  for (let f = 0; f < panel.length; f++)
+    for (let k = 0; k < 3; k++) {
+      const [a, b] = [triangles[3 * f + k], triangles[3 * f + ((k + 1) % 3)]];
+      const key = `${Math.min(a, b)} ${Math.max(a, b)}`;
+      edges.set(key, (edges.get(key) ?? 0) + 1);
+    }
+  assert.ok([...edges.values()].every((n) => n === 2), `${layout.name}: the surface is closed`);
+  assert.ok(panel.every((p) => Number.isInteger(p) && p >= 0 && p < layout.panels), layout.name);
+  assert.equal(new Set(panel).size, layout.panels, `${layout.name}: a panel index for each panel`);
+  assert.ok(distance.every((d) => Number.isFinite(d) && Math.abs(d) < 0.2), layout.name);
+  const rms = Math.sqrt(distance.reduce((sum, d) => sum + d * d, 0) / vertices);
+  assert.ok(Math.abs(rms - layout.inflatedToTarget) <= 0.03 * layout.inflatedToTarget + 1e-4, `${layout.name}: RMS ${rms} vs ${layout.inflatedToTarget}`);
+  const diagonal = 2 * Math.sqrt(3) * radius; // of the sphere's box
+  let worst = 0;
+  for (let v = 0; v < vertices; v++) {
+    const own = (Math.hypot(positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]) - radius) / diagonal;
+    worst = Math.max(worst, Math.abs(own - distance[v]));
+  }
+  assert.ok(worst < 0.002, `${layout.name}: a distance ${worst} of the diagonal off its distance from the sphere`);
+};
 const drive = (generator, progress = []) => {
   for (let step = generator.next(); ; step = generator.next()) {
     if (step.done) return step.value;
@@ -36,6 +71,7 @@ test('layouts for four panels of the sphere come best first, each as seams of su
     assert.ok(layout.seamLength > 0);
     assert.ok(layout.sheetUse > 0 && layout.sheetUse <= 1, `${layout.name}: sheet use ${layout.sheetUse}`);
     if (k > 0) assert.ok(layout.distance >= result.layouts[k - 1].distance, 'best first');
+    assertBalloon(layout, 0.25);
     assert.ok(layout.seams.length >= 1);
     for (const seam of layout.seams) {
       assert.equal(typeof seam.closed, 'boolean');
@@ -58,6 +94,11 @@ test('layouts for four panels of the sphere come best first, each as seams of su
   const looked = progress.filter((p) => p.look);
   assert.ok(looked.length >= result.layouts.length);
   assert.ok(looked.every((p) => p.look.ok && p.look.seams.length > 0 && p.look.iterations === 0));
+  // Each with its picture: the flattened panels inflated, replaced by the optimized ones' when they come.
+  for (const { look } of looked) assertBalloon(look, 0.25);
+  const best = result.layouts[0];
+  const firstLook = looked.find((p) => p.look.name === best.name).look;
+  assert.notDeepEqual(firstLook.balloon.positions, best.balloon.positions, 'optimized, the balloon is another');
   assert.ok(progress.indexOf(looked[0]) < progress.findIndex((p) => p.layout), 'looked at before any is optimized');
 });
 

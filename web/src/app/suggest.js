@@ -11,6 +11,7 @@ import { optimizeArgs } from './stored-result.js';
 import { upOf } from './up-axis.js';
 import { linkMirrorTwins, symmetryPlane } from './symmetry.js';
 import { showOverInflatedPane, sidePanel } from '../views/dialog-header.js';
+import { drawBalloon, viewOf } from '../views/balloon-thumbnail.js';
 
 const PANELS = { min: 2, max: 40, start: 6 };
 // What a suggestion is made at: coarse, so a dozen layouts are tried in seconds (the bench's comparison of layouts
@@ -28,6 +29,7 @@ export class SeamSuggestions {
     this.call = null;
     this.layouts = [];
     this.symmetryOf = new Map(); // target key -> the axis the worker found, or null
+    this.pictures = new WeakMap(); // a layout's balloon -> its drawn canvas and the view it was drawn from
     this.build();
     button?.addEventListener('click', () => (this.dialog.open ? this.close() : this.open()));
   }
@@ -73,6 +75,7 @@ export class SeamSuggestions {
   async open() {
     // Over the inflated pane, as the layout comparison: the target pane, where the seams are, stays in view.
     showOverInflatedPane(this.dialog);
+    this.watchView();
     this.keepLabel.hidden = !this.app.design.seams.length;
     this.keep.checked = false;
     this.render();
@@ -105,6 +108,8 @@ export class SeamSuggestions {
   close() {
     this.stop();
     this.hide();
+    this.unwatchView?.();
+    this.unwatchView = null;
     if (this.dialog.open) this.dialog.close();
   }
 
@@ -253,6 +258,46 @@ export class SeamSuggestions {
     this.cards.replaceChildren(...cards);
   }
 
+  // The pictures are seen as the target is: turning it turns them (once a frame at most).
+  watchView() {
+    const controls = this.app.panes?.target?.controls;
+    if (this.unwatchView || !controls) return;
+    let frame = 0;
+    const turned = () => {
+      frame ||= requestAnimationFrame(() => {
+        frame = 0;
+        for (const layout of this.layouts) if (layout.balloon) this.picture(layout);
+      });
+    };
+    controls.addEventListener('change', turned);
+    this.unwatchView = () => {
+      controls.removeEventListener('change', turned);
+      cancelAnimationFrame(frame);
+    };
+  }
+
+  // The layout's balloon drawn from the target pane's view (once per view: the cards are made anew at each layout
+  // that arrives).
+  picture(layout) {
+    const view = viewOf(this.app.panes?.target);
+    const key = view.elements.map((x) => x.toFixed(4)).join(' ');
+    let picture = this.pictures.get(layout.balloon);
+    if (!picture) {
+      const canvas = Object.assign(document.createElement('canvas'), { className: 'suggest-picture' });
+      canvas.setAttribute('role', 'img');
+      const label = `Its panels inflated${layout.firstLook ? ' as first flattened (not optimized yet)' : ''}, colored by distance from the target: blue inside it, orange outside, the seams dark lines`;
+      canvas.setAttribute('aria-label', label);
+      canvas.title = label;
+      picture = { canvas, key: null };
+      this.pictures.set(layout.balloon, picture);
+    }
+    if (picture.key !== key) {
+      drawBalloon(picture.canvas, layout.balloon, view);
+      picture.key = key;
+    }
+    return picture.canvas;
+  }
+
   card(layout, k) {
     const card = document.createElement('article');
     card.className = 'suggest-card';
@@ -296,7 +341,8 @@ export class SeamSuggestions {
     });
     const buttons = Object.assign(document.createElement('span'), { className: 'suggest-buttons' });
     buttons.append(show, use);
-    card.append(h, buttons, figures);
+    if (layout.balloon) card.append(this.picture(layout));
+    card.append(h, figures, buttons);
     return card;
   }
 }

@@ -29,6 +29,12 @@ export function stressColor(share, out = new Color()) {
   return t < 0.5 ? out.lerpColors(UNSTRESSED, WRINKLED, t * 2) : out.lerpColors(WRINKLED, STRONG, (t - 0.5) * 2);
 }
 
+// The signed distance shown at full color for a target of this diagonal, in the distances' units (1: distances
+// over the diagonal, as a suggested layout's picture has them).
+export function distanceScaleOf(diagonal = 1) {
+  return DISTANCE_SCALE * diagonal;
+}
+
 // t: signed distance over its full-color value, -1 (inside) .. 1 (outside).
 export function distanceColor(t, out = new Color()) {
   const u = Math.min(1, Math.max(-1, t));
@@ -190,7 +196,7 @@ export class InflatedPane extends Pane3D {
     }
     const maxStress = mode === 'stress' ? fields.peakStress : 0;
     const stressScale = this.strength ?? (maxStress || 1);
-    const distanceScale = DISTANCE_SCALE * (fields.distance?.diagonal ?? 1);
+    const distanceScale = distanceScaleOf(fields.distance?.diagonal ?? 1);
     const color = this.outerMesh.geometry.getAttribute('color');
     const c = new Color();
     for (let v = 0; v < n; v++) {

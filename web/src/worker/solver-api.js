@@ -284,7 +284,10 @@ export class TargetSession {
   // Suggested seam layouts: kept (the designer's seams the layouts add to), options: buildPattern's and { panels,
   // symmetry ('x' | 'y' | 'z' | null), maxIterations } -> { proposals: [name] }; then suggestLayout(i, false), a
   // first look at layout i, and suggestLayout(i, true), it optimized: { ok, problem, name, panels, seamLength,
-  // sheetUse, distance, inflatedToTarget, targetToInflated, iterations, ms, seams }.
+  // sheetUse, distance, inflatedToTarget, targetToInflated, iterations, ms, seams, balloon }, balloon its inflated
+  // outer surface for the card's picture: { positions #V*3 [m], triangles #F*3, distance #V (signed, over the
+  // target's diagonal), panel #F } as plain arrays (typed ones would be transferred away with the progress message
+  // that brings a layout before the reply brings it again).
   suggestStart(kept, options) {
     return SolverApi.unwrap(this.session.suggestStart(JSON.stringify(kept), JSON.stringify(options)));
   }
