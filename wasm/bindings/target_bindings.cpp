@@ -423,7 +423,10 @@ class TargetSession {
       Suggestion& s = *suggest_;
       billow::LayoutEvaluation e;
       if (!optimize) {
-        e = billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, s.evaluate);
+        std::vector<std::vector<billow::DesignSeam>> looked;
+        for (size_t j = 0; j < s.looked.size(); ++j)
+          if (int(j) != index && !s.looked[j].empty()) looked.push_back(s.looked[j]);
+        e = billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, looked, s.evaluate);
         s.looked[index] = e.ok ? e.seams : std::vector<billow::DesignSeam>{};
       } else {
         if (s.looked[index].empty()) throw billow::Error("suggest.not-looked", "That layout was not looked at yet.");

@@ -121,10 +121,12 @@ int suggestCommand(const std::vector<std::string>& argv) {
     LayoutEvaluation first, result;
   };
   std::vector<Tried> tried;
+  std::vector<std::vector<DesignSeam>> lookedSeams;
   for (size_t i = 0; i < proposals.size(); ++i) {
     Tried t;
     t.proposal = &proposals[i];
-    t.first = lookAtLayout(*scene, proposals[i], kept, request.panels, evaluate);
+    t.first = lookAtLayout(*scene, proposals[i], kept, request.panels, lookedSeams, evaluate);
+    if (t.first.ok) lookedSeams.push_back(t.first.seams);
     if (!quiet)
       std::fprintf(
           stderr, "  look %2zu/%zu  %-58s %s\n", i + 1, proposals.size(), proposals[i].name.c_str(),

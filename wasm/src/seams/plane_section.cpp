@@ -34,6 +34,10 @@ std::vector<SectionLoop> planeSection(const TriMesh& mesh, const Eigen::Vector3d
   const double hair = 1e-9 * (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm();
   for (Eigen::Index v = 0; v < h.size(); ++v)
     if (std::abs(h[v]) < hair) h[v] = hair;
+  return zeroLoops(mesh, h);
+}
+
+std::vector<SectionLoop> zeroLoops(const TriMesh& mesh, const Eigen::VectorXd& h) {
   const auto below = [&](int v) { return h[v] < 0; };
   struct Step {
     uint64_t edge;
@@ -119,13 +123,49 @@ std::vector<SurfacePoint> pointsAt(const TriMesh& mesh, const SectionLoop& loop,
   return out;
 }
 
+// Inserts into `arcs` (ascending arc lengths from the loop's first point, the first 0) the arc of the loop point
+// farthest from the chord between two neighbouring arcs, while one strays from it by more than `stray`: the seam
+// runs along shortest paths between its points, and one that skipped a sharp turn (a star's tip, a letter's
+// corner) would cut it off and give it to the other side.
+void keepTurns(const SectionLoop& loop, std::vector<double>& arcs, double stray) {
+  constexpr size_t kMostPoints = 400;
+  const size_t n = loop.size();
+  std::vector<double> arcOf(n + 1, 0.0);
+  for (size_t i = 1; i <= n; ++i) arcOf[i] = arcOf[i - 1] + (loop[i % n].position - loop[i - 1].position).norm();
+  const double total = arcOf[n];
+  // The last loop point at or before an arc length in [0, total].
+  const auto after = [&](double arc) {
+    return size_t(std::upper_bound(arcOf.begin(), arcOf.begin() + n, arc) - arcOf.begin()) - 1;
+  };
+  const auto at = [&](double arc) -> Eigen::Vector3d {
+    const size_t k = after(arc);
+    const double s = std::clamp((arc - arcOf[k]) / std::max(arcOf[k + 1] - arcOf[k], 1e-300), 0.0, 1.0);
+    return loop[k].position + s * (loop[(k + 1) % n].position - loop[k].position);
+  };
+  for (size_t k = 0; k < arcs.size() && arcs.size() < kMostPoints; ++k) {
+    const double a = arcs[k], b = k + 1 < arcs.size() ? arcs[k + 1] : total;
+    const Eigen::Vector3d p = at(a), d = at(b) - p;
+    const double dd = d.squaredNorm();
+    double corner = -1, gap = stray;
+    for (size_t i = after(a) + 1; i < n && arcOf[i] < b; ++i) {
+      const Eigen::Vector3d& x = loop[i].position;
+      const double t = dd > 0 ? std::clamp((x - p).dot(d) / dd, 0.0, 1.0) : 0.0;
+      const double off = (x - (p + t * d)).norm();
+      if (off > gap) gap = off, corner = arcOf[i];
+    }
+    if (corner > a) arcs.insert(arcs.begin() + long(k) + 1, corner), --k;
+  }
+}
+
 }  // namespace
 
-std::vector<SurfacePoint> sectionSeamPoints(const TriMesh& mesh, const SectionLoop& loop, double spacing) {
+std::vector<SurfacePoint> sectionSeamPoints(const TriMesh& mesh, const SectionLoop& loop, double spacing,
+                                            bool corners) {
   const double total = loopLength(loop);
   const int n = int(std::lround(std::clamp(total / std::max(spacing, 1e-300), 12.0, 160.0)));
   std::vector<double> arcs;
   for (int k = 0; k < n; ++k) arcs.push_back(k * total / n);
+  if (corners) keepTurns(loop, arcs, 0.1 * total / n);
   return pointsAt(mesh, loop, true, arcs);
 }
 

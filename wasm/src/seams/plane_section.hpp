@@ -24,9 +24,16 @@ std::vector<SectionLoop> planeSection(const TriMesh& mesh, const Eigen::Vector3d
 
 double loopLength(const SectionLoop& loop);
 
+// The loops where a field given at the mesh's vertices (linear over each triangle, zero at no vertex) is zero, as
+// planeSection's.
+std::vector<SectionLoop> zeroLoops(const TriMesh& mesh, const Eigen::VectorXd& values);
+
 // The control points of the seam a loop makes: at equal arc length about `spacing` apart [mesh units], 12 to 160
-// of them (the section tool's counts: the shortest paths between them follow the section).
-std::vector<SurfacePoint> sectionSeamPoints(const TriMesh& mesh, const SectionLoop& loop, double spacing);
+// of them (the section tool's counts: the shortest paths between them follow the section); with `corners`, also
+// where the loop strays from the chord between two of them by more than a tenth of their spacing (an outline's
+// sharp turns, as the app's Outline tool keeps them).
+std::vector<SurfacePoint> sectionSeamPoints(const TriMesh& mesh, const SectionLoop& loop, double spacing,
+                                            bool corners = false);
 
 // The control points of an open piece of a loop (its points in order, first to last): both ends and points at
 // equal arc length between them, about `spacing` apart.

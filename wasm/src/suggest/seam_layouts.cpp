@@ -10,6 +10,7 @@
 #include "optimize/optimized_pattern.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/stopping_rule.hpp"
+#include "seams/outline.hpp"
 #include "seams/plane_section.hpp"
 #include "seams/surface_distance.hpp"
 #include "util/error.hpp"
@@ -22,7 +23,9 @@ constexpr double kPi = 3.14159265358979323846;
 // Control points of a proposed seam, as the section tool spaces them (web/src/app/section.js SECTION_SPACING).
 constexpr double kSeamPointSpacing = 0.02;
 constexpr int kMostGores = 24, kMostBands = 12;
-constexpr int kFewerPanels = 4;
+// A layout is laid for up to this many panels fewer than asked for (a quarter at larger counts): a limb cut on its
+// own, or opened, adds panels on most shapes.
+int fewestPanels(int asked) { return asked - std::max(4, asked / 4); }
 
 // Which way a direction of the target's own coordinates points as the target stands: 0 side to side, 1 up, 2 front
 // to back (the up frame's axes).
@@ -85,9 +88,11 @@ double seamPointSpacing(const TriMesh& target) {
 
 // A layout's key, so one two families both make is tried once: its planes and meridians, rounded.
 using ProposalKey = std::vector<std::array<long long, 5>>;
-ProposalKey proposalKey(const std::vector<SectionPlane>& planes, const std::vector<Eigen::Vector3d>& meridians,
-                        double size) {
+ProposalKey proposalKey(const LayoutProposal& proposal, double size) {
+  const std::vector<SectionPlane>& planes = proposal.planes;
+  const std::vector<Eigen::Vector3d>& meridians = proposal.meridians;
   ProposalKey key;
+  if (proposal.outlineView >= 0) key.push_back({2, proposal.outlineView, 0, 0, 0});
   const auto rounded = [](double x) { return std::llround(x * 1e4); };
   for (const SectionPlane& p : planes) {
     // n and -n with -offset are one plane: the first non-zero component positive.
@@ -156,9 +161,8 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
     const Eigen::Vector3d u = Eigen::Vector3d::Unit(s >= 0 && s != axis ? s : (axis + 1) % 3), w = e.cross(u);
     for (int g = 2; g <= kMostGores; ++g)
       for (int k = 0; k <= kMostBands; ++k) {
-        // Up to four panels fewer than asked for: a limb cut on its own, or opened, adds panels on most shapes.
         const int panels = g * (k + 1);
-        if (panels > request.panels || panels < request.panels - kFewerPanels) continue;
+        if (panels > request.panels || panels < fewestPanels(request.panels)) continue;
         // Bands across the symmetry axis would be their own mirror image only at mirrored shares.
         if (k > 0 && axis == s) continue;
         for (int turn = 0; turn < 2; ++turn) {
@@ -174,7 +178,7 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
             }
           }
           for (int j = 1; j <= k; ++j) p.planes.push_back({e, along.at(double(j) / (k + 1))});
-          ProposalKey key = proposalKey(p.planes, p.meridians, size);
+          ProposalKey key = proposalKey(p, size);
           if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
           seen.push_back(std::move(key));
           const std::string across = axisName(axis, request.up);
@@ -188,6 +192,34 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
           out.push_back(std::move(p));
         }
       }
+  }
+  // A front and a back along the outline seen along `view`, and k bands across another axis, each in two pieces.
+  // Seen across the symmetry plane the outline is not its own mirror image (its sides are cleaned one at a time).
+  // The two pieces alone at any count: where limbs leave every plane a tube to open (an octopus's coiled arms), the
+  // outline may be the one layout that makes panels.
+  for (int view = 0; view < 3; ++view) {
+    if (view == s) continue;
+    static const char* from[] = {"from the side", "from above", "from the front"};
+    const std::string outline =
+        std::string("along the outline seen ") + from[viewAxis(Eigen::Vector3d::Unit(view), request.up)];
+    for (int axis = 0; axis < 3; ++axis) {
+      if (axis == view || axis == s) continue;
+      const AreaAlong along = areaAlong(faces, axis);
+      for (int k = 0; k <= kMostBands; ++k) {
+        const int panels = 2 * (k + 1);
+        if (panels > request.panels || (k > 0 && panels < fewestPanels(request.panels))) continue;
+        LayoutProposal p;
+        p.axis = axis, p.gores = 2, p.bands = k, p.center = center, p.outlineView = view;
+        for (int j = 1; j <= k; ++j) p.planes.push_back({Eigen::Vector3d::Unit(axis), along.at(double(j) / (k + 1))});
+        ProposalKey key = proposalKey(p, size);
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+        seen.push_back(std::move(key));
+        p.name = k == 0 ? "front and back, sealed " + outline
+                        : std::to_string(k + 1) + " bands across the " + axisName(axis, request.up) +
+                              ", each in two pieces " + outline;
+        out.push_back(std::move(p));
+      }
+    }
   }
   return out;
 }
@@ -260,6 +292,21 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
   }
   std::vector<DesignSeam> seams;
   const auto name = [&] { return proposal.name + ", seam " + std::to_string(seams.size() + 1); };
+  if (proposal.outlineView >= 0) {
+    const Eigen::Vector3d towards = Eigen::Vector3d::Unit(proposal.outlineView);
+    const std::optional<Outline> outline = outlineSeenFrom(target, towards);
+    if (!outline) throw Error("suggest.no-outline", "the shape shows no outline from there");
+    // Corners kept, as the Outline tool keeps them: a seam that skipped a sharp turn would cut a tip off.
+    seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, outline->loop, spacing, true)));
+    // Seen through a handle, the front and back are rings: each hole's rim, and two sections across each ring.
+    const std::vector<SectionLoop> across = acrossHandles(target, outline->loop, outline->holes, towards);
+    if (across.size() != 2 * outline->holes.size())
+      throw Error("suggest.no-outline", "its outline makes rings on this shape that no section cuts open");
+    for (const SectionLoop& hole : outline->holes)
+      seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, hole, spacing, true)));
+    for (const SectionLoop& loop : across)
+      seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, loop, spacing)));
+  }
   for (const Eigen::Vector3d& direction : proposal.meridians) {
     const Eigen::Vector3d normal = e.cross(direction).normalized();
     const std::vector<SectionLoop> loops = planeSection(target, normal, normal.dot(proposal.center));
@@ -326,9 +373,9 @@ namespace {
 // between two loops or more (a plane across a limb leaves a tube, a limb's end cut off inside a band leaves a hole)
 // gets, from each of its loops but the longest, a seam to its nearest point of another loop (the cut that opens a
 // tube, as a designer would add it); a segment too big for its seam (a limb's end) gets the plane section across
-// its longest extent where that loop lies within it, else across the next (around its limbs); a tiny segment inside one
-// closed seam of the layout's own (a plane grazing a toe) loses that seam. The first `fixedSeams` seams are the
-// designer's and stay. Returns how many seams it added or removed.
+// its longest extent where that loop lies within it, else across the next (around its limbs); a tiny or thin segment
+// loses the shortest closed seam of the layout's own around it (a plane grazing a toe). The first `fixedSeams` seams
+// are the designer's and stay. Returns how many seams it added or removed.
 int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::vector<DesignSeam>& seams) {
   const Segmentation& sg = scene.segmentation;
   const TriMesh& cut = sg.mesh;
@@ -339,18 +386,20 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
     std::vector<int>& in = faceSegments[sg.faceOrigin[f]];
     if (std::find(in.begin(), in.end(), sg.faceSegment[f]) == in.end()) in.push_back(sg.faceSegment[f]);
   }
-  // The grazing loops go first, on their own: the segment around one has it for a hole, which is then no more.
+  // The grazing loops go first, on their own: of the layout's closed seams around a tiny or thin segment (a plane
+  // grazing a toe, loops of several planes crossing on a flipper), the shortest goes, and the segment joins its
+  // neighbour across it.
   std::vector<int> removed;
   for (const SegmentationProblem& problem : sg.problems) {
     if (problem.segment < 0 || (problem.code != "segment.sliver" && problem.code != "segment.thin")) continue;
-    const Segment& segment = sg.segments[problem.segment];
-    if (segment.loops.size() != 1 || segment.loops[0].seams.empty()) continue;
-    const std::vector<int>& around = segment.loops[0].seams;
-    const int seam = around.front();
-    if (seam >= fixedSeams && seam < int(seams.size()) && seams[seam].closed &&
-        std::all_of(around.begin(), around.end(), [&](int s) { return s == seam; }) &&
-        std::find(removed.begin(), removed.end(), seam) == removed.end())
-      removed.push_back(seam);
+    int shortest = -1;
+    for (const BoundaryLoop& loop : sg.segments[problem.segment].loops)
+      for (int seam : loop.seams)
+        if (seam >= fixedSeams && seam < int(seams.size()) && seams[seam].closed &&
+            (shortest < 0 || scene.curves[seam].length < scene.curves[shortest].length))
+          shortest = seam;
+    if (shortest >= 0 && std::find(removed.begin(), removed.end(), shortest) == removed.end())
+      removed.push_back(shortest);
   }
   if (!removed.empty()) {
     std::sort(removed.rbegin(), removed.rend());
@@ -521,8 +570,26 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
   return done();
 }
 
+namespace {
+
+// The same lines on the surface, their names aside.
+bool sameSeams(const std::vector<DesignSeam>& a, const std::vector<DesignSeam>& b) {
+  const auto same = [](const DesignSeam& s, const DesignSeam& t) {
+    return s.closed == t.closed && s.points.size() == t.points.size() &&
+           std::equal(s.points.begin(), s.points.end(), t.points.begin(),
+                      [](const DesignPoint& p, const DesignPoint& q) {
+                        return p.onSurface == q.onSurface && p.surface.face == q.surface.face &&
+                               p.surface.bary == q.surface.bary && p.position == q.position;
+                      });
+  };
+  return a.size() == b.size() && std::equal(a.begin(), a.end(), b.begin(), same);
+}
+
+}  // namespace
+
 LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal, const std::vector<DesignSeam>& kept,
-                              int panelsAtMost, EvaluateOptions options) {
+                              int panelsAtMost, const std::vector<std::vector<DesignSeam>>& looked,
+                              EvaluateOptions options) {
   options.maxIterations = 0;
   LayoutEvaluation look;
   try {
@@ -535,6 +602,9 @@ LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal
   }
   if (look.ok && look.panels > panelsAtMost)
     look.ok = false, look.problem = "it makes " + std::to_string(look.panels) + " panels on this shape";
+  if (look.ok && std::any_of(looked.begin(), looked.end(),
+                             [&](const std::vector<DesignSeam>& seams) { return sameSeams(seams, look.seams); }))
+    look.ok = false, look.problem = "it ends with the same seams as a layout before it";
   return look;
 }
 

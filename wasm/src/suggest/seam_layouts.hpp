@@ -5,8 +5,10 @@
 // A layout is made of plane sections (seams/plane_section.hpp), as the project's hand-made layouts are: g gores
 // around one of the target's own axes (meridians from pole to pole, each a half of a plane through the axis, as a
 // beach ball's; two gores: the plane's whole loop, halves) and k planes across it at equal shares of the surface
-// (bands), g (k + 1) panels on a round shape, more where a plane cuts a limb on its own. A layout that keeps the
-// target's mirror symmetry lays only what is its own mirror image across the symmetry plane.
+// (bands), g (k + 1) panels on a round shape, more where a plane cuts a limb on its own. Or of a front and a back
+// sealed along the outline seen along one axis (seams/outline.hpp), as a foil balloon is made, with k bands across
+// another: 2 (k + 1) panels. A layout that keeps the target's mirror symmetry lays only what is its own mirror
+// image across the symmetry plane.
 #pragma once
 #include <functional>
 #include <string>
@@ -34,10 +36,13 @@ struct LayoutProposal {
   // section by the plane through the axis and that direction on that side, from pole to pole.
   std::vector<Eigen::Vector3d> meridians;
   std::vector<SectionPlane> planes;  // two gores: the halving plane first; then the bands' planes
+  // A front and a back sealed along the outline seen along this axis of the target's own (a foil balloon's two
+  // pieces, seams/outline.hpp), in place of gores; -1: none.
+  int outlineView = -1;
 };
 
 struct LayoutRequest {
-  int panels = 6;         // at most this many: layouts of g (k + 1) = panels - 4 to panels on a round shape
+  int panels = 6;  // at most this many: layouts of g (k + 1) = panels - max(4, panels / 4) to panels on a round shape
   int symmetryAxis = -1;  // the target's own axis across whose mid-plane (of its box) the layout is its own mirror
                           // image; -1: any layout
   UpAxis up;              // which axis the names call vertical
@@ -104,9 +109,12 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
                                 const EvaluateOptions& options = {});
 
 // A first look at a proposal (evaluateLayout without an iteration): its seams laid after the designer's `kept`. Not
-// ok, and why, where it cannot be laid (suggest.no-poles) or makes more than `panelsAtMost` panels. The layouts to
-// optimize are the closest looked at, each with the seams its look opened (evaluateLayout with all of them fixed).
+// ok, and why, where it cannot be laid (suggest.no-poles), makes more than `panelsAtMost` panels, or ends with the
+// same seams as a layout `looked` at before (two proposals can, once the loops that only grazed the shape are gone).
+// The layouts to optimize are the closest looked at, each with the seams its look opened (evaluateLayout with all of
+// them fixed).
 LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal, const std::vector<DesignSeam>& kept,
-                              int panelsAtMost, EvaluateOptions options = {});
+                              int panelsAtMost, const std::vector<std::vector<DesignSeam>>& looked,
+                              EvaluateOptions options = {});
 
 }  // namespace billow

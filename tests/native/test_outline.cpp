@@ -1,0 +1,128 @@
+// The outline seen from a direction (seams/outline.hpp), its corners kept (sectionSeamPoints), and the suggested
+// layouts made along it (suggest/seam_layouts.hpp).
+#include <gtest/gtest.h>
+
+#include "cube_fixture.hpp"
+#include "pattern/design_scene.hpp"
+#include "seams/outline.hpp"
+#include "suggest/seam_layouts.hpp"
+#include "test_support.hpp"
+
+namespace billow {
+namespace {
+
+// A torus around the z axis (radii R and r), n x m quads split in two, outward.
+TriMesh torus(double R, double r, int n, int m) {
+  TriMesh t;
+  t.V.resize(n * m, 3), t.F.resize(2 * n * m, 3);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const double u = 2 * test::kPi * i / n, v = 2 * test::kPi * j / m;
+      t.V.row(i * m + j) << (R + r * std::cos(v)) * std::cos(u), (R + r * std::cos(v)) * std::sin(u), r * std::sin(v);
+    }
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < m; ++j) {
+      const int a = i * m + j, b = ((i + 1) % n) * m + j, c = ((i + 1) % n) * m + (j + 1) % m, d = i * m + (j + 1) % m;
+      t.F.row(2 * (i * m + j)) << a, b, c;
+      t.F.row(2 * (i * m + j) + 1) << a, c, d;
+    }
+  return t;
+}
+
+TEST(Outline, TheSphereSeenFromAboveHasItsEquatorForOutline) {
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  const Eigen::Vector3d middle = 0.5 * (sphere.V.colwise().maxCoeff() + sphere.V.colwise().minCoeff());
+  const double r = 0.5 * (sphere.V.col(0).maxCoeff() - sphere.V.col(0).minCoeff());
+  const std::optional<Outline> outline = outlineSeenFrom(sphere, Eigen::Vector3d::UnitZ());
+  ASSERT_TRUE(outline.has_value());
+  EXPECT_TRUE(outline->holes.empty());
+  // Where the normal turns away from the viewer: the equator, within a triangle's height of it.
+  for (const SectionPoint& p : outline->loop) EXPECT_LT(std::abs(p.position.z() - middle.z()), 0.06 * r);
+  EXPECT_NEAR(loopLength(outline->loop), 2 * test::kPi * r, 0.03 * 2 * test::kPi * r);
+}
+
+TEST(Outline, ARingSeenThroughItsHoleHasTwoLoopsAndTwoCutsAcrossIt) {
+  const TriMesh ring = torus(1.0, 0.3, 48, 16);
+  const Eigen::Vector3d towards = Eigen::Vector3d::UnitZ();
+  const std::optional<Outline> outline = outlineSeenFrom(ring, towards);
+  ASSERT_TRUE(outline.has_value());
+  ASSERT_EQ(outline->holes.size(), 1u);
+  // The rim goes round the outside (radius R + r), the hole's round the inside (R - r).
+  for (const SectionPoint& p : outline->loop) EXPECT_NEAR(p.position.head<2>().norm(), 1.3, 0.02);
+  for (const SectionPoint& p : outline->holes[0]) EXPECT_NEAR(p.position.head<2>().norm(), 0.7, 0.02);
+  // Two cuts across the ring, each a section along the view around the ring's tube (about 2 pi r).
+  const std::vector<SectionLoop> across = acrossHandles(ring, outline->loop, outline->holes, towards);
+  ASSERT_EQ(across.size(), 2u);
+  for (const SectionLoop& cut : across) EXPECT_NEAR(loopLength(cut), 2 * test::kPi * 0.3, 0.1);
+}
+
+TEST(Outline, ASeamAlongASquareLoopKeepsItsCorners) {
+  const TriMesh cube = test::unitCube();
+  const std::vector<SectionLoop> loops = planeSection(cube, Eigen::Vector3d::UnitZ(), 0.5);
+  ASSERT_EQ(loops.size(), 1u);
+  const auto hits = [&](const std::vector<SurfacePoint>& controls) {
+    int corners = 0;
+    for (double x : {0.0, 1.0})
+      for (double y : {0.0, 1.0}) {
+        bool hit = false;
+        for (const SurfacePoint& p : controls) hit |= (position(cube, p) - Eigen::Vector3d(x, y, 0.5)).norm() < 1e-9;
+        corners += hit;
+      }
+    return corners;
+  };
+  // 13 points on a perimeter of 4: only the loop's first point can fall on a corner by arc length alone.
+  const double spacing = 4.0 / 13;
+  EXPECT_LT(hits(sectionSeamPoints(cube, loops[0], spacing)), 4);
+  EXPECT_EQ(hits(sectionSeamPoints(cube, loops[0], spacing, true)), 4);
+}
+
+// The octopus's coiled arms leave a tube under every plane; the outline seen from the front still makes two panels
+// that inflate.
+TEST(Outline, TheOctopusGetsAFrontAndBackLayoutWherePlanesLeaveTubes) {
+  Design design;
+  design.target.kind = DesignTarget::Obj;
+  design.target.name = test::meshPath("octopus.obj");
+  design.height = 0.6;
+  const auto scene = loadDesignTargetScene(design, "", {});
+  LayoutRequest request;
+  request.panels = 6;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  int outlines = 0, usable = 0;
+  for (const LayoutProposal& p : proposals) {
+    if (p.outlineView < 0 || p.bands > 0) continue;
+    ++outlines;
+    const LayoutEvaluation look = lookAtLayout(*scene, p, {}, request.panels, {});
+    if (!look.ok) continue;
+    ++usable;
+    EXPECT_EQ(look.panels, 2) << p.name;
+    EXPECT_TRUE(scene->segmentation.problems.empty()) << p.name;
+    EXPECT_LT(look.distance, 0.15) << p.name;  // relative to the diagonal: a first look, not optimized
+  }
+  EXPECT_EQ(outlines, 3);
+  EXPECT_GE(usable, 2);
+}
+
+// Two proposals that end with the same seams are one layout to the designer: the second is not shown.
+TEST(SeamLayouts, ALayoutEndingWithTheSeamsOfOneBeforeItIsNotShownAgain) {
+  Design design;
+  design.target.kind = DesignTarget::Obj;
+  design.target.name = test::meshPath("sphere.obj");
+  const auto scene = loadDesignTargetScene(design, "", {});
+  LayoutRequest request;
+  request.panels = 2;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  ASSERT_FALSE(proposals.empty());
+  const LayoutEvaluation first = lookAtLayout(*scene, proposals[0], {}, 2, {});
+  ASSERT_TRUE(first.ok) << first.problem;
+  LayoutProposal again = proposals[0];
+  again.name = "the same, named otherwise";
+  const LayoutEvaluation second = lookAtLayout(*scene, again, {}, 2, {first.seams});
+  EXPECT_FALSE(second.ok);
+  EXPECT_NE(second.problem.find("same seams"), std::string::npos) << second.problem;
+  // Another layout is still shown beside it.
+  const LayoutEvaluation other = lookAtLayout(*scene, proposals[1], {}, 2, {first.seams});
+  EXPECT_TRUE(other.ok) << other.problem;
+}
+
+}  // namespace
+}  // namespace billow

@@ -1,0 +1,180 @@
+#include "seams/outline.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace billow {
+
+namespace {
+
+constexpr double kAwayFromZero = 1e-6;
+
+// Per vertex, n . towards over the area-weighted vertex normal, kept away from zero so the sides read the same here
+// as where the contour is drawn.
+Eigen::VectorXd facingField(const TriMesh& mesh, const Eigen::Vector3d& towards) {
+  Vertices normal = Vertices::Zero(mesh.V.rows(), 3);
+  for (int f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    const Eigen::RowVector3d twiceArea = (b - a).cross(c - a).transpose();
+    for (int k = 0; k < 3; ++k) normal.row(mesh.F(f, k)) += twiceArea;
+  }
+  Eigen::VectorXd facing(mesh.V.rows());
+  for (Eigen::Index v = 0; v < facing.size(); ++v) {
+    const double length = normal.row(v).norm();
+    facing[v] = length > 0 ? normal.row(v).dot(towards.transpose()) / length : 0;
+    if (std::abs(facing[v]) < kAwayFromZero) facing[v] = facing[v] > 0 ? kAwayFromZero : -kAwayFromZero;
+  }
+  return facing;
+}
+
+Eigen::VectorXd vertexAreas(const TriMesh& mesh) {
+  Eigen::VectorXd area = Eigen::VectorXd::Zero(mesh.V.rows());
+  for (int f = 0; f < mesh.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) area[mesh.F(f, k)] += triangleArea(mesh, f) / 3;
+  return area;
+}
+
+std::vector<std::vector<int>> vertexNeighbours(const TriMesh& mesh) {
+  std::vector<std::vector<int>> around(mesh.V.rows());
+  for (int f = 0; f < mesh.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+      around[a].push_back(b), around[b].push_back(a);
+    }
+  return around;
+}
+
+// Changes the sign of `values` where needed so that its positive and its negative side are each one edge-connected
+// piece and no vertex pinches a side: its zero set is then one loop on a shape without handles. Parts of a side that
+// are not its largest change sides, the positive side's first. False when a side is empty.
+bool splitInTwo(const TriMesh& mesh, Eigen::VectorXd& values, Outline& out) {
+  const Eigen::Index nv = values.size();
+  const Eigen::VectorXd area = vertexAreas(mesh);
+  const std::vector<std::vector<int>> around = vertexNeighbours(mesh);
+  // Keeps the largest edge-connected part of a side; the others change sides. How many changed, or -1 when the side
+  // is empty.
+  const auto keepLargest = [&](bool positive) {
+    std::vector<int> part(nv, -1);
+    std::vector<double> sizes;
+    std::vector<int> stack;
+    for (Eigen::Index s = 0; s < nv; ++s) {
+      if (part[s] >= 0 || (values[s] > 0) != positive) continue;
+      const int id = int(sizes.size());
+      double size = 0;
+      part[s] = id, stack.assign(1, int(s));
+      while (!stack.empty()) {
+        const int v = stack.back();
+        stack.pop_back();
+        size += area[v];
+        for (int w : around[v])
+          if (part[w] < 0 && (values[w] > 0) == positive) part[w] = id, stack.push_back(w);
+      }
+      sizes.push_back(size);
+    }
+    if (sizes.empty()) return -1;
+    const int largest = int(std::max_element(sizes.begin(), sizes.end()) - sizes.begin());
+    for (Eigen::Index v = 0; v < nv; ++v)
+      if (part[v] >= 0 && part[v] != largest)
+        values[v] = positive ? -std::max(values[v], kAwayFromZero) : std::max(-values[v], kAwayFromZero);
+    return int(sizes.size()) - 1;
+  };
+  // A vertex whose ring of neighbours changes side more than twice pinches its side: the zero set would pass it
+  // twice, as two loops touching. It goes to the other side, which joins across it.
+  const auto pinches = [&] {
+    std::vector<int> changes(nv, 0);
+    for (int f = 0; f < mesh.F.rows(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        const int a = mesh.F(f, (k + 1) % 3), b = mesh.F(f, (k + 2) % 3);
+        if ((values[a] > 0) != (values[b] > 0)) ++changes[mesh.F(f, k)];
+      }
+    int flipped = 0;
+    for (Eigen::Index v = 0; v < nv; ++v)
+      if (changes[v] > 2) values[v] = values[v] > 0 ? -kAwayFromZero : kAwayFromZero, ++flipped;
+    return flipped;
+  };
+  for (int round = 0; round < 20; ++round) {
+    const int positive = keepLargest(true), negative = keepLargest(false);
+    if (positive < 0 || negative < 0) return false;
+    out.movedToBack += positive, out.movedToFront += negative;
+    if (pinches() == 0) break;
+  }
+  return true;
+}
+
+}  // namespace
+
+std::optional<Outline> outlineSeenFrom(const TriMesh& mesh, const Eigen::Vector3d& towards) {
+  Eigen::VectorXd facing = facingField(mesh, towards);
+  Outline out;
+  if (!splitInTwo(mesh, facing, out)) return std::nullopt;
+  std::vector<SectionLoop> loops = zeroLoops(mesh, facing);
+  if (loops.empty()) return std::nullopt;
+  const auto longest = std::max_element(loops.begin(), loops.end(), [](const SectionLoop& a, const SectionLoop& b) {
+    return loopLength(a) < loopLength(b);
+  });
+  out.loop = std::move(*longest);
+  for (auto it = loops.begin(); it != loops.end(); ++it)
+    if (it != longest) out.holes.push_back(std::move(*it));
+  return out;
+}
+
+std::optional<SectionLoop> sectionThrough(const TriMesh& mesh, const Eigen::Vector3d& position, int face,
+                                          const Eigen::Vector3d& normal) {
+  std::vector<SectionLoop> loops = planeSection(mesh, normal, position.dot(normal));
+  if (loops.empty()) return std::nullopt;
+  for (SectionLoop& loop : loops)
+    if (std::any_of(loop.begin(), loop.end(), [&](const SectionPoint& p) { return p.at.face == face; }))
+      return std::move(loop);
+  const auto gap = [&](const SectionLoop& loop) {
+    double d = std::numeric_limits<double>::infinity();
+    for (const SectionPoint& p : loop) d = std::min(d, (p.position - position).norm());
+    return d;
+  };
+  return std::move(*std::min_element(loops.begin(), loops.end(),
+                                     [&](const SectionLoop& a, const SectionLoop& b) { return gap(a) < gap(b); }));
+}
+
+std::vector<SectionLoop> acrossHandles(const TriMesh& mesh, const SectionLoop& rim,
+                                       const std::vector<SectionLoop>& holes, const Eigen::Vector3d& towards) {
+  // Every few points of a long loop: the cut's place need not be exact.
+  const auto every = [](const SectionLoop& loop, size_t most) {
+    const size_t stride = std::max<size_t>(1, (loop.size() + most - 1) / most);
+    SectionLoop some;
+    for (size_t i = 0; i < loop.size(); i += stride) some.push_back(loop[i]);
+    return some;
+  };
+  const auto nearestOn = [](const SectionLoop& loop, const Eigen::Vector3d& p) {
+    return *std::min_element(loop.begin(), loop.end(), [&](const SectionPoint& a, const SectionPoint& b) {
+      return (a.position - p).squaredNorm() < (b.position - p).squaredNorm();
+    });
+  };
+  const auto cut = [&](const SectionPoint& p, const SectionPoint& q) -> std::optional<SectionLoop> {
+    const Eigen::Vector3d normal = towards.cross(q.position - p.position);
+    if (normal.norm() <= 1e-12) return std::nullopt;
+    return sectionThrough(mesh, p.position, p.at.face, normal.normalized());
+  };
+  const SectionLoop rimPoints = every(rim, 400);
+  std::vector<SectionLoop> out;
+  for (const SectionLoop& hole : holes) {
+    double nearest = std::numeric_limits<double>::infinity();
+    SectionPoint nearHole, nearRim;
+    for (const SectionPoint& p : every(hole, 200)) {
+      const SectionPoint q = nearestOn(rimPoints, p.position);
+      if ((p.position - q.position).norm() < nearest)
+        nearest = (p.position - q.position).norm(), nearHole = p, nearRim = q;
+    }
+    if (!std::isfinite(nearest)) return {};
+    const SectionPoint far =
+        *std::max_element(hole.begin(), hole.end(), [&](const SectionPoint& a, const SectionPoint& b) {
+          return (a.position - nearHole.position).norm() < (b.position - nearHole.position).norm();
+        });
+    for (const auto& section : {cut(nearHole, nearRim), cut(far, nearestOn(rimPoints, far.position))}) {
+      if (!section) return {};
+      out.push_back(*section);
+    }
+  }
+  return out;
+}
+
+}  // namespace billow
