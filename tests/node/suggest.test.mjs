@@ -7,6 +7,9 @@ import { readFileSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
 import { readObjText, loadSharedMesh } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
+import { Op } from '../../web/src/worker/protocol.js';
+import { suggestLayouts } from '../../web/src/app/suggest-run.js';
+import { inThreadClient, threadedClient } from './solver-clients.mjs';
 import { linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
 
 const api = await loadApi();
@@ -52,6 +55,15 @@ const assertBalloon = (layout, radius) => {
   }
   assert.ok(worst < 0.002, `${layout.name}: a distance ${worst} of the diagonal off its distance from the sphere`);
 };
+// A suggestion as the app runs it (suggest-run.js), over `clients` with the target set (one in this thread unless
+// given).
+const targetOf = (mesh) => (mesh.endsWith('.obj') && !mesh.includes('/') ? loadSharedMesh(mesh) : readObjText(read(mesh)));
+const clientsFor = async (mesh, clients = [inThreadClient(api)]) => {
+  const { positions, indices } = targetOf(mesh);
+  await Promise.all(clients.map((client) => client.request(Op.setTarget, { positions, indices })));
+  return clients;
+};
+const suggest = (clients, args, progress = []) => suggestLayouts(clients, args, { onProgress: (p) => progress.push(p) }).promise;
 const drive = (generator, progress = []) => {
   for (let step = generator.next(); ; step = generator.next()) {
     if (step.done) return step.value;
@@ -59,10 +71,10 @@ const drive = (generator, progress = []) => {
   }
 };
 
-test('layouts for four panels of the sphere come best first, each as seams of surface points the app can draw', () => {
+test('layouts for four panels of the sphere come best first, each as seams of surface points the app can draw', async () => {
   const handlers = session('../../web/public/examples/sphere.obj');
   const progress = [];
-  const result = drive(handlers.suggestSeams({ panels: 4, scale: 0.25, triangles: 400, maxIterations: 8, optimize: 3 }), progress);
+  const result = await suggest(await clientsFor('../../web/public/examples/sphere.obj'), { panels: 4, scale: 0.25, triangles: 400, maxIterations: 8, optimize: 3 }, progress);
   assert.ok(result.tried >= 3, `${result.tried} layouts tried`);
   assert.ok(result.layouts.length >= 2 && result.layouts.length <= 3, `${result.layouts.length} layouts`);
   for (const [k, layout] of result.layouts.entries()) {
@@ -102,17 +114,17 @@ test('layouts for four panels of the sphere come best first, each as seams of su
   assert.ok(progress.indexOf(looked[0]) < progress.findIndex((p) => p.layout), 'looked at before any is optimized');
 });
 
-test('the designer\'s seams stay first, and the cow\'s mirror plane is found where the bunny has none', () => {
+test('the designer\'s seams stay first, and the cow\'s mirror plane is found where the bunny has none', async () => {
   const cow = session('../../web/public/examples/spot.obj');
   assert.deepEqual(drive(cow.mirrorSymmetry()), { axis: 'x' });
   const bunny = session('bunny.obj');
   assert.deepEqual(drive(bunny.mirrorSymmetry()), { axis: null });
   // A seam of the designer's (a loop halving the sphere, from a first suggestion) stays first in every layout.
-  const sphere = session('../../web/public/examples/sphere.obj');
-  const halves = drive(sphere.suggestSeams({ panels: 2, scale: 0.25, triangles: 300, maxIterations: 2, optimize: 1 }));
+  const sphere = await clientsFor('../../web/public/examples/sphere.obj');
+  const halves = await suggest(sphere, { panels: 2, scale: 0.25, triangles: 300, maxIterations: 2, optimize: 1 });
   const kept = [{ ...halves.layouts[0].seams[0], name: 'mine' }];
   assert.equal(kept[0].closed, true);
-  const result = drive(sphere.suggestSeams({ kept, panels: 6, scale: 0.25, triangles: 400, maxIterations: 4, optimize: 2 }));
+  const result = await suggest(sphere, { kept, panels: 6, scale: 0.25, triangles: 400, maxIterations: 4, optimize: 2 });
   assert.ok(result.layouts.length >= 1, JSON.stringify(result.notUsed));
   for (const layout of result.layouts) {
     assert.equal(layout.seams[0].name, 'mine');
@@ -124,14 +136,13 @@ test('the designer\'s seams stay first, and the cow\'s mirror plane is found whe
     });
     assert.ok(layout.seams.length > 1);
   }
-  assert.throws(() => drive(sphere.suggestSeams({ panels: 1, scale: 0.25 })), /2 to 40 panels/);
+  await assert.rejects(suggest(sphere, { panels: 1, scale: 0.25 }), /2 to 40 panels/);
 });
 
-test('a mirror-symmetric layout\'s seams are linked as twins when used, each the exact mirror image of the other', () => {
+test('a mirror-symmetric layout\'s seams are linked as twins when used, each the exact mirror image of the other', async () => {
   const target = readObjText(read('../../web/public/examples/spot.obj'));
-  const handlers = createHandlers(api);
-  drive(handlers.setTarget({ positions: target.positions, indices: target.indices }));
-  const result = drive(handlers.suggestSeams({ panels: 4, symmetry: 'x', scale: 0.6, triangles: 300, maxIterations: 1, optimize: 20 }));
+  const cow = await clientsFor('../../web/public/examples/spot.obj');
+  const result = await suggest(cow, { panels: 4, symmetry: 'x', scale: 0.6, triangles: 300, maxIterations: 1, optimize: 20 });
   const gores = result.layouts.find((l) => /gores around the vertical axis/.test(l.name));
   assert.ok(gores, result.layouts.map((l) => l.name).join('; '));
   const design = { seams: gores.seams, connections: [], symmetry: { axis: 'x' } };
@@ -154,4 +165,27 @@ test('a mirror-symmetric layout\'s seams are linked as twins when used, each the
   }
   // The meridians in the mirror plane are their own image and stay unlinked.
   assert.ok(linked.seams.some((s) => s.mirror === undefined));
+});
+
+test('two workers side by side find the layouts one finds, each looking at its share, the closest optimized by whichever is free', async () => {
+  const args = { panels: 6, symmetry: 'x', scale: 0.6, triangles: 300, maxIterations: 2, optimize: 4 };
+  const one = await suggest(await clientsFor('../../web/public/examples/spot.obj'), args);
+  const threads = [threadedClient(), threadedClient()];
+  try {
+    const progress = [];
+    const two = await suggest(await clientsFor('../../web/public/examples/spot.obj', threads), args, progress);
+    assert.equal(two.tried, one.tried);
+    assert.ok(one.layouts.length >= 2, JSON.stringify(one.notUsed));
+    // The same layouts, to the same figures: each is made and optimized alike on whichever worker.
+    const figures = ({ layouts }) => layouts.map(({ name, panels, distance, seamLength }) => ({ name, panels, distance, seamLength }));
+    assert.deepEqual(figures(two), figures(one));
+    assert.deepEqual(new Set(two.notUsed.map((n) => n.name)), new Set(one.notUsed.map((n) => n.name)));
+    // Both shares were looked at: progress counts all the layouts, and each layout looked at once.
+    const looks = progress.filter((p) => p.look).map((p) => p.look.name);
+    assert.equal(new Set(looks).size, looks.length);
+    assert.equal(looks.length + two.notUsed.length, two.tried);
+    assert.ok(progress.some((p) => p.total === two.tried));
+  } finally {
+    for (const client of threads) client.terminate();
+  }
 });

@@ -55,15 +55,17 @@
 //   t.suggestStart(keptSeamsJson, optionsJson)  kept: the designer's seams the layouts add to; options: buildPattern's
 //     and { panels (2-40), symmetry ("x" | "y" | "z" | null: layouts that are their own mirror image across it),
 //     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...] }
-//   t.suggestLayout(index, optimize) -> { ok, problem (also where it makes more panels than asked for), name,
+//   t.suggestLook(index) -> { ok, problem (also where it makes more panels than asked for, or ends with an earlier
+//     look's seams), name,
 //     panels, seamLength [m], sheetUse (optimized only: the share of the sheet its nested cut pieces cover),
 //     distance (the worse way),
 //     inflatedToTarget, targetToInflated (over the target's diagonal), iterations, ms, seams (the kept ones first,
 //     then the layout's, as the design document writes them), balloon (its inflated outer surface for the card's
 //     picture, LayoutBalloon, null when not ok: { positions #V*3 [m] (about 5 significant digits; the frame the
 //     inflated pane draws in), triangles #F*3 (outward), distance #V (signed, over the target's diagonal, positive
-//     outside), panel #F }) }: optimize false, a first look (the flattened panels inflated); true, the layout looked
-//     at before optimized at the options' resolution
+//     outside), panel #F }) }: a first look (the flattened panels inflated)
+//   t.suggestOptimize(index, seamsJson) -> the same for the layout with the seams its look ended with (from any
+//     session: several workers share a suggestion), optimized at the options' resolution
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -416,38 +418,28 @@ class TargetSession {
     });
   }
 
-  std::string suggestLayout(int index, bool optimize) {
+  // A first look at layout `index` of the suggestion started last.
+  std::string suggestLook(int index) {
     return guarded([&] {
-      if (!suggest_ || index < 0 || index >= int(suggest_->proposals.size()))
-        throw billow::Error("suggest.not-started", "There are no layouts to try yet.");
-      Suggestion& s = *suggest_;
-      billow::LayoutEvaluation e;
-      if (!optimize) {
-        std::vector<std::vector<billow::DesignSeam>> looked;
-        for (size_t j = 0; j < s.looked.size(); ++j)
-          if (int(j) != index && !s.looked[j].empty()) looked.push_back(s.looked[j]);
-        e = billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, looked, s.evaluate);
-        s.looked[index] = e.ok ? e.seams : std::vector<billow::DesignSeam>{};
-      } else {
-        if (s.looked[index].empty()) throw billow::Error("suggest.not-looked", "That layout was not looked at yet.");
-        e = billow::evaluateLayout(*s.scene, s.looked[index], int(s.looked[index].size()), s.evaluate);
-      }
-      json seams = json::array();
-      for (const billow::DesignSeam& seam : e.seams) seams.push_back(billow::designSeamJson(seam));
-      return json({{"ok", e.ok},
-                   {"problem", e.problem},
-                   {"name", s.proposals[index].name},
-                   {"panels", e.panels},
-                   {"seamLength", e.seamLength},
-                   {"sheetUse", e.sheetUse},
-                   {"distance", e.distance},
-                   {"inflatedToTarget", e.inflatedToTarget},
-                   {"targetToInflated", e.targetToInflated},
-                   {"iterations", e.iterations},
-                   {"ms", e.ms},
-                   {"seams", e.ok ? seams : json::array()},
-                   {"balloon", e.ok ? balloonJson(e.balloon) : json(nullptr)}})
-          .dump();
+      Suggestion& s = startedSuggestion(index);
+      std::vector<std::vector<billow::DesignSeam>> looked;
+      for (size_t j = 0; j < s.looked.size(); ++j)
+        if (int(j) != index && !s.looked[j].empty()) looked.push_back(s.looked[j]);
+      const billow::LayoutEvaluation e =
+          billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, looked, s.evaluate);
+      s.looked[index] = e.ok ? e.seams : std::vector<billow::DesignSeam>{};
+      return layoutJson(e, s.proposals[index].name).dump();
+    });
+  }
+
+  // Layout `index` optimized, from the seams its look ended with (any worker's: several share a suggestion).
+  std::string suggestOptimize(int index, const std::string& seamsJson) {
+    return guarded([&] {
+      Suggestion& s = startedSuggestion(index);
+      const std::vector<billow::DesignSeam> seams = billow::readDesignSeams(parse(seamsJson));
+      if (seams.empty()) throw billow::Error("suggest.no-seams", "That layout has no seams to optimize.");
+      const billow::LayoutEvaluation e = billow::evaluateLayout(*s.scene, seams, int(seams.size()), s.evaluate);
+      return layoutJson(e, s.proposals[index].name).dump();
     });
   }
 
@@ -541,6 +533,24 @@ class TargetSession {
 
   // A suggestion under way: the target scaled as asked, the designer's seams kept, the layouts and the seams each
   // first look settled on (opened into panels; empty where it failed).
+  static json layoutJson(const billow::LayoutEvaluation& e, const std::string& name) {
+    json seams = json::array();
+    for (const billow::DesignSeam& seam : e.seams) seams.push_back(billow::designSeamJson(seam));
+    return json({{"ok", e.ok},
+                 {"problem", e.problem},
+                 {"name", name},
+                 {"panels", e.panels},
+                 {"seamLength", e.seamLength},
+                 {"sheetUse", e.sheetUse},
+                 {"distance", e.distance},
+                 {"inflatedToTarget", e.inflatedToTarget},
+                 {"targetToInflated", e.targetToInflated},
+                 {"iterations", e.iterations},
+                 {"ms", e.ms},
+                 {"seams", e.ok ? seams : json::array()},
+                 {"balloon", e.ok ? balloonJson(e.balloon) : json(nullptr)}});
+  }
+
   struct Suggestion {
     std::unique_ptr<billow::DesignScene> scene;
     std::vector<billow::DesignSeam> kept;
@@ -550,6 +560,11 @@ class TargetSession {
     int panels = 0;  // at most, as asked
   };
   std::unique_ptr<Suggestion> suggest_;
+  Suggestion& startedSuggestion(int index) {
+    if (!suggest_ || index < 0 || index >= int(suggest_->proposals.size()))
+      throw billow::Error("suggest.not-started", "There are no layouts to try yet.");
+    return *suggest_;
+  }
   billow::TriMesh mesh_, cut_, scaled_;
   billow::MeshTopology scaledTopology_;
   std::unique_ptr<billow::SurfaceProjector> scaledProjector_;
@@ -594,5 +609,6 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("uncoveredTriangles", &TargetSession::uncoveredTriangles)
       .function("mirrorSymmetry", &TargetSession::mirrorSymmetry)
       .function("suggestStart", &TargetSession::suggestStart)
-      .function("suggestLayout", &TargetSession::suggestLayout);
+      .function("suggestLook", &TargetSession::suggestLook)
+      .function("suggestOptimize", &TargetSession::suggestOptimize);
 }

@@ -52,8 +52,9 @@ $('large-type').addEventListener('change', (e) => theme.setLargeType(e.target.ch
 const help = new Help($('help-dialog'));
 $('help-button').addEventListener('click', () => help.open());
 
+const createWorker = () => new Worker(new URL('./worker/solver.worker.js', import.meta.url), { type: 'module' });
 const client = new SolverClient(
-  () => new Worker(new URL('./worker/solver.worker.js', import.meta.url), { type: 'module' }),
+  createWorker,
   {
     onCrash: ({ broken }) => {
       if (broken) messages.show('error', 'The solver keeps stopping, so Billow stopped restarting it. Your design is safe: reload the page.');
@@ -248,7 +249,7 @@ app.tabGuard = tabGuard;
 
 const gallery = new Gallery(app, $('gallery-button'));
 const compare = new LayoutCompare({ app, viewport, button: $('compare-button') });
-const suggestions = new SeamSuggestions({ app, button: $('suggest-button') });
+const suggestions = new SeamSuggestions({ app, button: $('suggest-button'), createWorker });
 const classroom = new Classroom({ app, viewport, theme, exporter, seamTool });
 $('classroom-button').addEventListener('click', () => {
   compare.close();

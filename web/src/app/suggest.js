@@ -11,6 +11,8 @@ import { optimizeArgs } from './stored-result.js';
 import { upOf } from './up-axis.js';
 import { linkMirrorTwins, symmetryPlane } from './symmetry.js';
 import { showOverInflatedPane, sidePanel } from '../views/dialog-header.js';
+import { SolverClient } from '../worker/client.js';
+import { suggestLayouts } from './suggest-run.js';
 import { drawBalloon, viewOf } from '../views/balloon-thumbnail.js';
 
 const PANELS = { min: 2, max: 40, start: 6 };
@@ -19,13 +21,19 @@ const PANELS = { min: 2, max: 40, start: 6 };
 const TRIANGLES = 1000;
 const MAX_ITERATIONS = 40;
 const OPTIMIZED = 6;
+// Workers of its own, one per core up to this many: the layouts are tried side by side, and the design's own worker
+// stays free for the designer's edits meanwhile.
+const MOST_HELPERS = 4;
 
 // Optimized layouts first, closest first; then the ones only looked at.
 const byQuality = (a, b) => Boolean(a.firstLook) - Boolean(b.firstLook) || a.distance - b.distance;
 
 export class SeamSuggestions {
-  constructor({ app, button }) {
+  // createWorker: () => Worker, as the app's own (main.js).
+  constructor({ app, button, createWorker }) {
     this.app = app;
+    this.createWorker = createWorker;
+    this.helpers = null; // { target, clients }: workers with the target set, while the panel is open
     this.call = null;
     this.layouts = [];
     this.symmetryOf = new Map(); // target key -> the axis the worker found, or null
@@ -108,6 +116,7 @@ export class SeamSuggestions {
   close() {
     this.stop();
     this.hide();
+    this.releaseHelpers();
     this.unwatchView?.();
     this.unwatchView = null;
     if (this.dialog.open) this.dialog.close();
@@ -148,6 +157,24 @@ export class SeamSuggestions {
     app.seams.draw();
     app.panes.target.setSegments(app.seams.segmentation ?? { segments: [] });
     this.render();
+  }
+
+  // The helper workers, started with the target on first use and kept while the panel is open.
+  async helperClients() {
+    const { target } = this.app;
+    if (this.helpers?.target === target) return this.helpers.clients;
+    this.releaseHelpers();
+    const count = Math.max(1, Math.min(MOST_HELPERS, globalThis.navigator?.hardwareConcurrency || 1));
+    const clients = Array.from({ length: count }, () => new SolverClient(this.createWorker));
+    this.helpers = { target, clients };
+    // setTarget is replayed into a helper that crashed and was restarted.
+    await Promise.all(clients.map((client) => client.request(Op.setTarget, { positions: target.positions, indices: target.indices })));
+    return clients;
+  }
+
+  releaseHelpers() {
+    for (const client of this.helpers?.clients ?? []) client.terminate();
+    this.helpers = null;
   }
 
   stop(note = 'Stopped.') {
@@ -198,7 +225,17 @@ export class SeamSuggestions {
     this.unsubscribe = app.store.subscribe((what) => {
       if (what === 'design' && this.call && app.revision !== this.request.revision) this.stop('Stopped: the design changed while the layouts were tried.');
     });
-    const call = (this.call = app.client.call(Op.suggestSeams, args, {
+    // Stop works while the helpers start, before there is a call to cancel.
+    const starting = (this.call = { cancel: () => {} });
+    let clients;
+    try {
+      clients = await this.helperClients();
+    } catch (error) {
+      if (this.call === starting) this.finish(`The layouts could not be tried: ${error.message}`);
+      return;
+    }
+    if (this.call !== starting) return; // stopped meanwhile
+    const call = (this.call = suggestLayouts(clients, args, {
       onProgress: (p) => {
         if (call !== this.call) return;
         if (p.total) {

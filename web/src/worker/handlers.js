@@ -149,37 +149,29 @@ export function createHandlers(api) {
     *[Op.mirrorSymmetry]() {
       return requireSession().mirrorSymmetry();
     },
-    // Seam layouts for the target (suggest/seam_layouts.hpp): a first look at each, then the closest optimized,
-    // one layout a step, so progress shows and a cancel stops between layouts.
-    *[Op.suggestSeams]({ kept = [], optimize = 6, ...options }) {
+    // Seam layouts for the target (suggest/seam_layouts.hpp), the first look at each of a share of them: the layouts
+    // whose index is `part` modulo `parts`, so that several workers share one suggestion (web/src/app/suggest-run.js).
+    // One layout a step, so progress shows and a cancel stops between layouts. The worker keeps the layouts looked at
+    // for the later looks' (a look that ends with an earlier one's seams is not used).
+    *[Op.suggestLook]({ kept = [], part = 0, parts = 1, ...options }) {
       const session = requireSession();
       const { proposals } = session.suggestStart(kept, options);
-      const looked = [];
+      const mine = [...proposals.keys()].filter((i) => i % parts === part);
       const notUsed = [];
-      for (const [i, name] of proposals.entries()) {
-        yield { stage: 'a first look at each layout', done: i, total: proposals.length, detail: name };
-        const r = session.suggestLayout(i, false);
-        if (r.ok) {
-          looked.push({ index: i, ...r });
-          // Usable at once: its flattened panels' figures until it is optimized.
-          yield { stage: 'a first look at each layout', done: i + 1, total: proposals.length, look: r };
-        } else notUsed.push({ name, why: r.problem });
+      for (const [k, index] of mine.entries()) {
+        yield { stage: 'a first look at each layout', done: k, total: mine.length, detail: proposals[index] };
+        const r = session.suggestLook(index);
+        // Usable at once: its flattened panels' figures until it is optimized.
+        if (r.ok) yield { stage: 'a first look at each layout', done: k + 1, total: mine.length, look: { index, ...r } };
+        else notUsed.push({ index, name: proposals[index], why: r.problem });
       }
-      looked.sort((a, b) => a.distance - b.distance);
-      const chosen = looked.slice(0, optimize);
-      const layouts = [];
-      for (const [k, { index, name }] of chosen.entries()) {
-        yield { stage: 'optimizing the closest layouts', done: k, total: chosen.length, detail: name };
-        const r = session.suggestLayout(index, true);
-        if (!r.ok) {
-          notUsed.push({ name, why: r.problem });
-          continue;
-        }
-        layouts.push(r);
-        yield { stage: 'optimizing the closest layouts', done: k + 1, total: chosen.length, layout: r };
-      }
-      layouts.sort((a, b) => a.distance - b.distance || a.seamLength - b.seamLength);
-      return { layouts, notUsed, tried: proposals.length };
+      return { tried: proposals.length, notUsed };
+    },
+    // A layout of the suggestion started last, optimized at its coarse resolution from the seams its look (on this
+    // worker or another) ended with.
+    *[Op.suggestOptimize]({ index, seams }) {
+      yield { stage: 'optimizing the layout' };
+      return { index, ...requireSession().suggestOptimize(index, seams) };
     },
     *[Op.exportPattern]({ patternText, options }) {
       yield { stage: 'laying out the panels' };

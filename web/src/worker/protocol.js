@@ -32,12 +32,15 @@ export const Op = Object.freeze({
   optimizeDesign: 'optimizeDesign',
   // {} -> { axis: 'x' | 'y' | 'z' | null }: the target's mirror symmetry plane, where it has one.
   mirrorSymmetry: 'mirrorSymmetry',
-  // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, optimize } ->
-  // { layouts: [{ name, panels, seamLength, distance, inflatedToTarget, targetToInflated, seams }] (best first),
-  // notUsed: [{ name, why }] }: seam layouts for the target, each looked at, the closest `optimize` optimized at a
-  // coarse resolution; progress carries each layout as it is looked at ({ look }: its flattened panels' figures) and
-  // as it is optimized ({ layout }); cancellable.
-  suggestSeams: 'suggestSeams',
+  // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, part, parts } ->
+  // { tried, notUsed: [{ index, name, why }] }: the seam layouts for the target, of which this worker looks at those
+  // whose index is `part` modulo `parts`; progress carries each as it is looked at ({ look: { index, name, panels,
+  // seamLength, distance, inflatedToTarget, targetToInflated, seams, balloon } }, its flattened panels' figures);
+  // cancellable. Several workers share one suggestion (web/src/app/suggest-run.js).
+  suggestLook: 'suggestLook',
+  // { index, seams } -> layout `index` of the suggestion started last (by suggestLook), optimized at a coarse
+  // resolution from the seams its look ended with, on whichever worker looked at it (the look's fields, and sheetUse).
+  suggestOptimize: 'suggestOptimize',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
   // { patternText, options } -> inflated result (Inflation.snapshot in solver-api.js); stepped, with

@@ -282,8 +282,9 @@ export class TargetSession {
   }
 
   // Suggested seam layouts: kept (the designer's seams the layouts add to), options: buildPattern's and { panels,
-  // symmetry ('x' | 'y' | 'z' | null), maxIterations } -> { proposals: [name] }; then suggestLayout(i, false), a
-  // first look at layout i, and suggestLayout(i, true), it optimized: { ok, problem, name, panels, seamLength,
+  // symmetry ('x' | 'y' | 'z' | null), maxIterations } -> { proposals: [name] }; then suggestLook(i), a first look at
+  // layout i, and suggestOptimize(i, seams), it optimized from the seams its look ended with (a look of any worker's):
+  // { ok, problem, name, panels, seamLength,
   // sheetUse, distance, inflatedToTarget, targetToInflated, iterations, ms, seams, balloon }, balloon its inflated
   // outer surface for the card's picture: { positions #V*3 [m], triangles #F*3, distance #V (signed, over the
   // target's diagonal), panel #F } as plain arrays (typed ones would be transferred away with the progress message
@@ -292,8 +293,12 @@ export class TargetSession {
     return SolverApi.unwrap(this.session.suggestStart(JSON.stringify(kept), JSON.stringify(options)));
   }
 
-  suggestLayout(index, optimize) {
-    return SolverApi.unwrap(this.session.suggestLayout(index, optimize));
+  suggestLook(index) {
+    return SolverApi.unwrap(this.session.suggestLook(index));
+  }
+
+  suggestOptimize(index, seams) {
+    return SolverApi.unwrap(this.session.suggestOptimize(index, JSON.stringify(seams)));
   }
 
   delete() {

@@ -1,0 +1,79 @@
+// One seam suggestion shared by several workers (issue 27): the layouts are independent, so each worker looks at its
+// share of them (suggestLook: those whose index is its part modulo the parts), and the closest are optimized
+// (suggestOptimize, from the seams each look ended with) closest first by whichever worker is free. No DOM: the app
+// runs it over its helper workers (suggest.js), the tests and the bench over workers in Node.
+import { Op } from '../worker/protocol.js';
+
+// The same seams, their names aside: two proposals can end alike once the loops that only grazed the shape are gone
+// (within one worker the solver sees to it; across workers, this).
+const seamsKey = (seams) => JSON.stringify(seams.map(({ closed, points }) => [closed, points]));
+
+// Closest first; the seam length (sewing time) breaks ties, then the order they were proposed in.
+const closer = (a, b) => a.distance - b.distance || a.seamLength - b.seamLength || a.index - b.index;
+
+// clients: [{ call(op, args, { onProgress }) -> { promise, cancel } }] (SolverClient's), each with the target set.
+// args: suggestLook's (kept, panels, symmetry, scale, triangles, pressure, material, up, maxIterations) and
+// `optimize`, how many of the closest to optimize. onProgress gets { stage, done, total, detail } as the work goes,
+// with { look } when a layout has been looked at and { layout } when one has been optimized.
+// Returns { promise -> { layouts (optimized, best first), notUsed: [{ name, why }], tried }, cancel }.
+export function suggestLayouts(clients, { optimize = 6, ...args }, { onProgress = () => {} } = {}) {
+  const running = new Set();
+  const call = (client, op, callArgs, options) => {
+    const c = client.call(op, callArgs, options);
+    running.add(c);
+    const forget = () => running.delete(c);
+    c.promise.then(forget, forget);
+    return c.promise;
+  };
+  const cancel = () => {
+    for (const c of [...running]) c.cancel();
+  };
+  const work = async () => {
+    const parts = clients.length;
+    const looked = [];
+    const notUsed = [];
+    const seen = new Set();
+    const done = new Array(parts).fill(0);
+    const total = new Array(parts).fill(0);
+    const sum = (counts) => counts.reduce((s, n) => s + n, 0);
+    const looks = await Promise.all(
+      clients.map((client, part) =>
+        call(client, Op.suggestLook, { ...args, part, parts }, {
+          onProgress: ({ stage, done: d, total: t, detail, look }) => {
+            [done[part], total[part]] = [d, t];
+            const progress = { stage, done: sum(done), total: sum(total), detail };
+            if (!look) return onProgress(progress);
+            const key = seamsKey(look.seams);
+            if (seen.has(key)) return notUsed.push({ name: look.name, why: 'it ends with the same seams as a layout before it' });
+            seen.add(key);
+            looked.push(look);
+            onProgress({ ...progress, detail: undefined, look });
+          },
+        }),
+      ),
+    );
+    for (const look of looks) notUsed.push(...look.notUsed.map(({ name, why }) => ({ name, why })));
+    const chosen = looked.sort(closer).slice(0, optimize);
+    const queue = [...chosen];
+    const layouts = [];
+    let optimized = 0;
+    onProgress({ stage: 'optimizing the closest layouts', done: 0, total: chosen.length });
+    // Each worker takes the closest layout left when it is free: their times differ by several times.
+    await Promise.all(
+      clients.map(async (client) => {
+        for (let next = queue.shift(); next; next = queue.shift()) {
+          const layout = await call(client, Op.suggestOptimize, { index: next.index, seams: next.seams });
+          optimized++;
+          if (!layout.ok) notUsed.push({ name: next.name, why: layout.problem });
+          else layouts.push(layout);
+          onProgress({ stage: 'optimizing the closest layouts', done: optimized, total: chosen.length, ...(layout.ok ? { layout } : {}) });
+        }
+      }),
+    );
+    return { layouts: layouts.sort(closer), notUsed, tried: looks[0]?.tried ?? 0 };
+  };
+  const promise = work();
+  // One worker's failure (a crash, a cancel) stops the others.
+  promise.catch(cancel);
+  return { promise, cancel };
+}
