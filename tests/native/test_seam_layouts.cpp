@@ -202,6 +202,10 @@ TEST(SeamLayouts, TubesAPlaneCutAroundLimbsAreOpenedIntoPanels) {
   // A cut along each leg's tube between the planes, and one from each leg's loop to the halving seam: the body's
   // halves had two holes each.
   EXPECT_EQ(cuts, 8);
+  // The layout's description says so.
+  EXPECT_EQ(opened.opened.tubeCuts, 8);
+  EXPECT_EQ(opened.opened.description().rfind("8 cuts that open tubes", 0), 0u) << opened.opened.description();
+  EXPECT_EQ(plain.opened.description(), "");
   for (const Segment& s : spot->segmentation.segments) EXPECT_TRUE(s.isDisk);
   EXPECT_TRUE(spot->segmentation.problems.empty());
   expectBalloon(opened);  // a first look's: the flattened panels inflated

@@ -7,7 +7,7 @@ import { readFileSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
 import { readObjText, loadSharedMesh } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
-import { Op } from '../../web/src/worker/protocol.js';
+import { ErrorCode, Op, SolverError } from '../../web/src/worker/protocol.js';
 import { suggestLayouts } from '../../web/src/app/suggest-run.js';
 import { inThreadClient, threadedClient } from './solver-clients.mjs';
 import { linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
@@ -82,6 +82,8 @@ test('layouts for four panels of the sphere come best first, each as seams of su
     assert.ok(layout.distance > 0 && layout.distance < 0.03, `${layout.name}: ${layout.distance}`);
     assert.ok(layout.seamLength > 0);
     assert.ok(layout.sheetUse > 0 && layout.sheetUse <= 1, `${layout.name}: sheet use ${layout.sheetUse}`);
+    // Its look's description: the sphere's gores need no seam added or left out.
+    assert.equal(layout.description, '', layout.name);
     if (k > 0) assert.ok(layout.distance >= result.layouts[k - 1].distance, 'best first');
     assertBalloon(layout, 0.25);
     assert.ok(layout.seams.length >= 1);
@@ -188,4 +190,28 @@ test('two workers side by side find the layouts one finds, each looking at its s
   } finally {
     for (const client of threads) client.terminate();
   }
+});
+
+test('a worker that stops during a suggestion stops the others, and the designer is told in their words', async () => {
+  const [steady, failing] = await clientsFor('../../web/public/examples/sphere.obj', [inThreadClient(api), inThreadClient(api)]);
+  const cancelled = [];
+  // The first worker's calls are watched for a cancel; the second crashes (as SolverClient reports it) when asked to
+  // optimize.
+  const watched = {
+    call: (op, args, options) => {
+      const call = steady.call(op, args, options);
+      return { promise: call.promise, cancel: () => (cancelled.push(op), call.cancel()) };
+    },
+  };
+  const crashing = {
+    call: (op, args, options) =>
+      op === Op.suggestOptimize
+        ? { promise: Promise.reject(new SolverError(ErrorCode.crashed, 'The solver stopped unexpectedly and was restarted. Your design is safe; try the last step again.')), cancel: () => {} }
+        : failing.call(op, args, options),
+  };
+  await assert.rejects(
+    suggest([watched, crashing], { panels: 4, scale: 0.25, triangles: 300, maxIterations: 30, optimize: 4 }),
+    (error) => error.code === ErrorCode.crashed && /Your design is safe/.test(error.message),
+  );
+  assert.ok(cancelled.includes(Op.suggestOptimize), `cancelled: ${cancelled.join(', ')}`);
 });

@@ -56,7 +56,7 @@
 //     and { panels (2-40), symmetry ("x" | "y" | "z" | null: layouts that are their own mirror image across it),
 //     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...] }
 //   t.suggestLook(index) -> { ok, problem (also where it makes more panels than asked for, or ends with an earlier
-//     look's seams), name,
+//     look's seams), name, description (the seams added or left out to make every part a panel, or ""),
 //     panels, seamLength [m], sheetUse (optimized only: the share of the sheet its nested cut pieces cover),
 //     distance (the worse way),
 //     inflatedToTarget, targetToInflated (over the target's diagonal), iterations, ms, seams (the kept ones first,
@@ -539,6 +539,7 @@ class TargetSession {
     return json({{"ok", e.ok},
                  {"problem", e.problem},
                  {"name", name},
+                 {"description", e.opened.description()},
                  {"panels", e.panels},
                  {"seamLength", e.seamLength},
                  {"sheetUse", e.sheetUse},

@@ -177,6 +177,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
     writeTextFile(dir + "/" + stem + ".pattern.json", writePatternJson(t.result.pattern) + "\n");
     layouts.push_back({{"rank", r + 1},
                        {"name", t.proposal->name},
+                       {"description", t.first.opened.description()},
                        {"design", stem + ".billow.json"},
                        {"pattern", stem + ".pattern.json"},
                        {"panels", t.result.panels},

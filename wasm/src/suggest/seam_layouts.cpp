@@ -112,6 +112,18 @@ ProposalKey proposalKey(const LayoutProposal& proposal, double size) {
 
 }  // namespace
 
+std::string LayoutOpenings::description() const {
+  std::string out;
+  const auto add = [&](int n, const char* one, const char* many) {
+    if (n == 0) return;
+    out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + (n == 1 ? one : many);
+  };
+  add(tubeCuts, "cut that opens a tube", "cuts that open tubes");
+  add(limbSeams, "seam around a limb", "seams around limbs");
+  add(grazingLoops, "loop left out where it only grazed the shape", "loops left out where they only grazed the shape");
+  return out;
+}
+
 int designSymmetryAxis(const Design& design) {
   const auto it = design.extra.find("symmetry");
   if (it == design.extra.end() || !it->is_object() || !it->contains("axis") || !(*it)["axis"].is_string()) return -1;
@@ -375,8 +387,9 @@ namespace {
 // tube, as a designer would add it); a segment too big for its seam (a limb's end) gets the plane section across
 // its longest extent where that loop lies within it, else across the next (around its limbs); a tiny or thin segment
 // loses the shortest closed seam of the layout's own around it (a plane grazing a toe). The first `fixedSeams` seams
-// are the designer's and stay. Returns how many seams it added or removed.
-int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::vector<DesignSeam>& seams) {
+// are the designer's and stay. Counts what it did in `opened`; returns how many seams it added or removed.
+int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::vector<DesignSeam>& seams,
+                 LayoutOpenings& opened) {
   const Segmentation& sg = scene.segmentation;
   const TriMesh& cut = sg.mesh;
   int added = 0;
@@ -404,6 +417,7 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
   if (!removed.empty()) {
     std::sort(removed.rbegin(), removed.rend());
     for (int seam : removed) seams.erase(seams.begin() + seam);
+    opened.grazingLoops += int(removed.size());
     return int(removed.size());
   }
   for (const SegmentationProblem& problem : sg.problems) {
@@ -425,7 +439,7 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
         }
         if (from < 0) continue;
         seams.push_back(makeSeam("a cut that opens a tube", false, {sg.vertexOrigin[from], sg.vertexOrigin[to]}));
-        ++added;
+        ++added, ++opened.tubeCuts;
       }
     } else if (problem.code == "segment.too-big-for-seam") {
       Eigen::Vector3d center = Eigen::Vector3d::Zero();
@@ -455,7 +469,7 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
           ++laid;
         }
         if (laid > 0) {
-          added += laid;
+          added += laid, opened.limbSeams += laid;
           break;
         }
       }
@@ -526,7 +540,7 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
     }
     segmentDesignScene(scene);
     if (scene.segmentation.problems.empty() || round == options.openingRounds ||
-        openSegments(scene, spacing, fixedSeams, out.seams) == 0)
+        openSegments(scene, spacing, fixedSeams, out.seams, out.opened) == 0)
       break;
   }
   const Segmentation& segmentation = scene.segmentation;

@@ -74,11 +74,21 @@ struct LayoutBalloon {
   std::vector<int> panel;    // #F the panel each triangle belongs to
 };
 
+// What was done to a layout's sections so that every segment is a panel (evaluateLayout), for its description.
+struct LayoutOpenings {
+  int tubeCuts = 0;      // cuts that open a tube or a holed part
+  int limbSeams = 0;     // sections across a part too big for its seam, around a limb
+  int grazingLoops = 0;  // loops of its own left out, that only grazed the shape (a tiny or thin part)
+  // In the designer's words ("2 cuts that open tubes, 1 seam around a limb"), empty when nothing was done.
+  std::string description() const;
+};
+
 struct LayoutEvaluation {
   bool ok = false;
   std::string problem;  // why it was not scored, in the designer's words
   // The layout's seams, with those that opened its segments into panels (evaluateLayout).
   std::vector<DesignSeam> seams;
+  LayoutOpenings opened;
   int panels = 0;
   double seamLength = 0;  // [m], every seam once
   // After the coarse optimization, relative to the target's diagonal: each way's RMS, and the worse of the two, by

@@ -65,7 +65,7 @@ export function suggestLayouts(clients, { optimize = 6, ...args }, { onProgress 
           const layout = await call(client, Op.suggestOptimize, { index: next.index, seams: next.seams });
           optimized++;
           if (!layout.ok) notUsed.push({ name: next.name, why: layout.problem });
-          else layouts.push(layout);
+          else layouts.push({ ...layout, description: next.description }); // what its look did to its sections
           onProgress({ stage: 'optimizing the closest layouts', done: optimized, total: chosen.length, ...(layout.ok ? { layout } : {}) });
         }
       }),

@@ -82,7 +82,7 @@ export class SeamSuggestions {
 
   async open() {
     // Over the inflated pane, as the layout comparison: the target pane, where the seams are, stays in view.
-    showOverInflatedPane(this.dialog);
+    showOverInflatedPane(this.dialog, { down: true });
     this.watchView();
     this.keepLabel.hidden = !this.app.design.seams.length;
     this.keep.checked = false;
@@ -379,7 +379,10 @@ export class SeamSuggestions {
     const buttons = Object.assign(document.createElement('span'), { className: 'suggest-buttons' });
     buttons.append(show, use);
     if (layout.balloon) card.append(this.picture(layout));
-    card.append(h, figures, buttons);
+    card.append(h);
+    // What was added to its sections, or left out, so that every part is a panel.
+    if (layout.description) card.append(Object.assign(document.createElement('p'), { className: 'suggest-description', textContent: `With ${layout.description}.` }));
+    card.append(figures, buttons);
     return card;
   }
 }

@@ -31,13 +31,16 @@ export function sidePanel(name, { title, closeTitle, onClose }) {
 }
 
 // Shows a side panel over the inflated pane, not modal, so the target and its seams stay in view and editable
-// beside it; its bottom stays in the inflated pane, off the pattern pane's figures below (its body scrolls).
-export function showOverInflatedPane(dialog) {
+// beside it; its bottom stays in the inflated pane, off the pattern pane's figures below (its body scrolls), or with
+// `down`, reaches the window's foot (suggested layouts: their pictures need the room, and no panels are made while
+// they are tried).
+export function showOverInflatedPane(dialog, { down = false } = {}) {
   const pane = document.getElementById('pane-inflated')?.getBoundingClientRect();
   if (pane) {
     const top = Math.round(pane.top + 34);
+    const bottom = down ? window.innerHeight - 8 : pane.bottom - 6;
     dialog.style.top = `${top}px`;
-    dialog.style.maxHeight = `max(12rem, ${Math.round(pane.bottom - top - 6)}px)`;
+    dialog.style.maxHeight = `max(12rem, ${Math.round(bottom - top)}px)`;
   }
   if (!dialog.open) dialog.show();
 }
