@@ -25,7 +25,7 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
     })),
   );
   // At most the six optimized; at two panels, halves along three planes and a front and back along the outline
-  // seen from above and from the front (from the side it is not its own mirror image).
+  // seen along each axis.
   assert.ok(cards.length >= 2 && cards.length <= 6, JSON.stringify(cards));
   assert.ok(cards.some((card) => /outline seen from/.test(card.name)), JSON.stringify(cards));
   for (const card of cards) {
@@ -57,7 +57,8 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
   );
   for (const [k, picture] of pictures.entries()) {
     assert.ok(picture, `${cards[k].name}: no picture`);
-    assert.ok(picture.painted > 0.1 && picture.painted < 0.9, `${cards[k].name}: ${picture.painted} of the picture painted`);
+    // (The cow's pillow seen end on, from behind as the pane first shows it, covers a tenth of a landscape picture.)
+    assert.ok(picture.painted > 0.05 && picture.painted < 0.9, `${cards[k].name}: ${picture.painted} of the picture painted`);
     assert.ok(picture.colors > 20, `${cards[k].name}: ${picture.colors} colors`);
     assert.ok(picture.seam > 20, `${cards[k].name}: ${picture.seam} pixels of seam`);
     assert.match(picture.label, /inflated, colored by distance from the target/);

@@ -206,11 +206,11 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
       }
   }
   // A front and a back along the outline seen along `view`, and k bands across another axis, each in two pieces.
-  // Seen across the symmetry plane the outline is not its own mirror image (its sides are cleaned one at a time).
-  // The two pieces alone at any count: where limbs leave every plane a tube to open (an octopus's coiled arms), the
-  // outline may be the one layout that makes panels.
+  // Seen along any axis the outline is its own mirror image across the symmetry plane: seen across it (an animal from
+  // its side, as a foil balloon is cut), the front and the back are each other's. The two pieces alone at any count:
+  // where limbs leave every plane a tube to open (an octopus's coiled arms), the outline may be the one layout that
+  // makes panels.
   for (int view = 0; view < 3; ++view) {
-    if (view == s) continue;
     static const char* from[] = {"from the side", "from above", "from the front"};
     const std::string outline =
         std::string("along the outline seen ") + from[viewAxis(Eigen::Vector3d::Unit(view), request.up)];

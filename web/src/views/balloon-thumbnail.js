@@ -39,24 +39,14 @@ export function drawBalloon(canvas, balloon, view = DEFAULT_VIEW) {
   // The vertices in the viewer's axes (orthographic: a thumbnail needs no perspective).
   const e = view.elements; // column-major
   const p = new Float64Array(3 * n);
-  const low = [Infinity, Infinity];
-  const high = [-Infinity, -Infinity];
   for (let v = 0; v < n; v++) {
     const [x, y, z] = [positions[3 * v], positions[3 * v + 1], positions[3 * v + 2]];
     for (let k = 0; k < 3; k++) p[3 * v + k] = e[k] * x + e[4 + k] * y + e[8 + k] * z;
-    for (let k = 0; k < 2; k++) {
-      low[k] = Math.min(low[k], p[3 * v + k]);
-      high[k] = Math.max(high[k], p[3 * v + k]);
-    }
   }
-  const scale = Math.min((width - 2 * MARGIN) / (high[0] - low[0] || 1), (height - 2 * MARGIN) / (high[1] - low[1] || 1));
-  const sx = (v) => width / 2 + (p[3 * v] - (low[0] + high[0]) / 2) * scale;
-  const sy = (v) => height / 2 - (p[3 * v + 1] - (low[1] + high[1]) / 2) * scale;
   // Each triangle's normal (area-weighted) and each vertex's, whose light the triangles share, so the surface reads
   // smooth as the inflated pane draws it rather than as facets.
   const faceCount = triangles.length / 3;
   const normals = new Float64Array(3 * faceCount);
-  const vertexNormals = new Float64Array(3 * n);
   const u = new Vector3();
   const w = new Vector3();
   for (let f = 0; f < faceCount; f++) {
@@ -64,8 +54,21 @@ export function drawBalloon(canvas, balloon, view = DEFAULT_VIEW) {
     u.set(p[3 * b] - p[3 * a], p[3 * b + 1] - p[3 * a + 1], p[3 * b + 2] - p[3 * a + 2]);
     w.set(p[3 * c] - p[3 * a], p[3 * c + 1] - p[3 * a + 1], p[3 * c + 2] - p[3 * a + 2]);
     u.cross(w).toArray(normals, 3 * f);
-    for (const v of [a, b, c]) for (let k = 0; k < 3; k++) vertexNormals[3 * v + k] += normals[3 * f + k];
   }
+  turnToBroadSide(p, normals);
+  const vertexNormals = new Float64Array(3 * n);
+  for (let f = 0; f < faceCount; f++)
+    for (let k = 0; k < 3; k++) for (let c = 0; c < 3; c++) vertexNormals[3 * triangles[3 * f + k] + c] += normals[3 * f + c];
+  const low = [Infinity, Infinity];
+  const high = [-Infinity, -Infinity];
+  for (let v = 0; v < n; v++)
+    for (let k = 0; k < 2; k++) {
+      low[k] = Math.min(low[k], p[3 * v + k]);
+      high[k] = Math.max(high[k], p[3 * v + k]);
+    }
+  const scale = Math.min((width - 2 * MARGIN) / (high[0] - low[0] || 1), (height - 2 * MARGIN) / (high[1] - low[1] || 1));
+  const sx = (v) => width / 2 + (p[3 * v] - (low[0] + high[0]) / 2) * scale;
+  const sy = (v) => height / 2 - (p[3 * v + 1] - (low[1] + high[1]) / 2) * scale;
   const light = new Float64Array(n);
   const normal = new Vector3();
   for (let v = 0; v < n; v++) light[v] = AMBIENT + (1 - AMBIENT) * Math.max(0, normal.fromArray(vertexNormals, 3 * v).normalize().dot(LIGHT));
@@ -125,4 +128,30 @@ export function drawBalloon(canvas, balloon, view = DEFAULT_VIEW) {
       context.stroke();
     }
   }
+}
+
+// A flat balloon (two pieces sealed along an outline) seen edge on is a sliver: where the view shows less than
+// BROAD_SIDE of the most it could, the picture turns about the viewer's vertical to the turn that shows the most
+// (its up stays up). Turns positions and normals (x right, y up, z towards the viewer) in place.
+const BROAD_SIDE = 0.6;
+const TURNS = 12;
+export function turnToBroadSide(p, normals) {
+  // The area seen turned by theta: the normals' z after the turn, where positive.
+  const seen = (theta) => {
+    const [c, s] = [Math.cos(theta), Math.sin(theta)];
+    let area = 0;
+    for (let f = 0; f < normals.length; f += 3) area += Math.max(0, c * normals[f + 2] - s * normals[f]);
+    return area;
+  };
+  let best = 0;
+  let most = seen(0);
+  const asSeen = most;
+  for (let k = 1; k < TURNS; k++) {
+    const area = seen((Math.PI * k) / TURNS);
+    if (area > most) (most = area), (best = (Math.PI * k) / TURNS);
+  }
+  if (asSeen >= BROAD_SIDE * most) return;
+  const [c, s] = [Math.cos(best), Math.sin(best)];
+  for (const a of [p, normals])
+    for (let i = 0; i < a.length; i += 3) [a[i], a[i + 2]] = [c * a[i] + s * a[i + 2], -s * a[i] + c * a[i + 2]];
 }
