@@ -215,3 +215,18 @@ test('a worker that stops during a suggestion stops the others, and the designer
   );
   assert.ok(cancelled.includes(Op.suggestOptimize), `cancelled: ${cancelled.join(', ')}`);
 });
+
+test('a worker that has not looked (one restarted after a crash) optimizes a layout another looked at, alike', async () => {
+  const args = { panels: 4, scale: 0.25, triangles: 300, maxIterations: 3 };
+  const [looker, fresh] = await clientsFor('../../web/public/examples/sphere.obj', [inThreadClient(api), inThreadClient(api)]);
+  const looks = [];
+  await looker.call(Op.suggestLook, args, { onProgress: (p) => p.look && looks.push(p.look) }).promise;
+  assert.ok(looks.length >= 2);
+  const { index, seams } = looks[0];
+  const there = await looker.request(Op.suggestOptimize, { ...args, index, seams });
+  const here = await fresh.request(Op.suggestOptimize, { ...args, index, seams });
+  assert.ok(here.ok, here.problem);
+  assert.equal(here.name, there.name);
+  assert.equal(here.distance, there.distance);
+  assert.deepEqual(here.seams, there.seams);
+});

@@ -62,7 +62,7 @@ export function suggestLayouts(clients, { optimize = 6, ...args }, { onProgress 
     await Promise.all(
       clients.map(async (client) => {
         for (let next = queue.shift(); next; next = queue.shift()) {
-          const layout = await call(client, Op.suggestOptimize, { index: next.index, seams: next.seams });
+          const layout = await call(client, Op.suggestOptimize, { ...args, index: next.index, seams: next.seams });
           optimized++;
           if (!layout.ok) notUsed.push({ name: next.name, why: layout.problem });
           else layouts.push({ ...layout, description: next.description }); // what its look did to its sections

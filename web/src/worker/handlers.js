@@ -28,6 +28,14 @@ export function createHandlers(api) {
     return { report, positions: positions.slice(), indices: fixed.slice() };
   }
 
+  // The suggestion these seams and options make, started unless it is the one this worker started last (or `fresh`:
+  // a new run, whose looks are compared with its own only).
+  function startSuggestion(kept, options, { fresh = false } = {}) {
+    const key = JSON.stringify([kept, options]);
+    if (fresh || state.suggestion?.key !== key) state.suggestion = { key, ...requireSession().suggestStart(kept, options) };
+    return state.suggestion;
+  }
+
   function requireSession() {
     if (!state.session || !state.target) throw new SolverError('seams.no-target', 'Load a target before drawing seams.');
     return state.session;
@@ -155,7 +163,7 @@ export function createHandlers(api) {
     // for the later looks' (a look that ends with an earlier one's seams is not used).
     *[Op.suggestLook]({ kept = [], part = 0, parts = 1, ...options }) {
       const session = requireSession();
-      const { proposals } = session.suggestStart(kept, options);
+      const { proposals } = startSuggestion(kept, options, { fresh: true });
       const mine = [...proposals.keys()].filter((i) => i % parts === part);
       const notUsed = [];
       for (const [k, index] of mine.entries()) {
@@ -167,9 +175,10 @@ export function createHandlers(api) {
       }
       return { tried: proposals.length, notUsed };
     },
-    // A layout of the suggestion started last, optimized at its coarse resolution from the seams its look (on this
-    // worker or another) ended with.
-    *[Op.suggestOptimize]({ index, seams }) {
+    // A layout of the suggestion, optimized at its coarse resolution from the seams its look (on this worker or
+    // another) ended with; the suggestion is started here too where this worker has not (restarted after a crash).
+    *[Op.suggestOptimize]({ index, seams, kept = [], ...options }) {
+      startSuggestion(kept, options);
       yield { stage: 'optimizing the layout' };
       return { index, ...requireSession().suggestOptimize(index, seams) };
     },

@@ -38,8 +38,9 @@ export const Op = Object.freeze({
   // seamLength, distance, inflatedToTarget, targetToInflated, seams, balloon } }, its flattened panels' figures);
   // cancellable. Several workers share one suggestion (web/src/app/suggest-run.js).
   suggestLook: 'suggestLook',
-  // { index, seams } -> layout `index` of the suggestion started last (by suggestLook), optimized at a coarse
-  // resolution from the seams its look ended with, on whichever worker looked at it (the look's fields, and sheetUse).
+  // { index, seams, ...suggestLook's args } -> layout `index` of that suggestion, optimized at a coarse resolution from
+  // the seams its look ended with, on any worker (the suggestion started there if it was not: a worker restarted
+  // after a crash) -> the look's fields, and sheetUse.
   suggestOptimize: 'suggestOptimize',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
