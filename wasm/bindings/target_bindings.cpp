@@ -55,8 +55,8 @@
 //   t.suggestStart(keptSeamsJson, optionsJson)  kept: the designer's seams the layouts add to; options: buildPattern's
 //     and { panels (2-40), symmetry ("x" | "y" | "z" | null: layouts that are their own mirror image across it),
 //     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...] }
-//   t.suggestLook(index) -> { ok, problem (also where it makes more panels than asked for, or ends with an earlier
-//     look's seams), name, description (the seams added or left out to make every part a panel, or ""),
+//   t.suggestLook(index) -> { ok, problem (also where it makes more panels than asked for), name,
+//     description (the seams added or left out to make every part a panel, or ""),
 //     panels, seamLength [m], sheetUse (optimized only: the share of the sheet its nested cut pieces cover),
 //     distance (the worse way),
 //     inflatedToTarget, targetToInflated (over the target's diagonal), iterations, ms, seams (the kept ones first,
@@ -410,7 +410,6 @@ class TargetSession {
       }
       s->panels = layout.panels;
       s->proposals = billow::proposeLayouts(s->scene->target, layout);
-      s->looked.resize(s->proposals.size());
       json names = json::array();
       for (const billow::LayoutProposal& p : s->proposals) names.push_back(p.name);
       suggest_ = std::move(s);
@@ -418,16 +417,13 @@ class TargetSession {
     });
   }
 
-  // A first look at layout `index` of the suggestion started last.
+  // A first look at layout `index` of the suggestion started last. Looks that end alike are told apart by the page,
+  // which sees every worker's (web/src/app/suggest-run.js).
   std::string suggestLook(int index) {
     return guarded([&] {
       Suggestion& s = startedSuggestion(index);
-      std::vector<std::vector<billow::DesignSeam>> looked;
-      for (size_t j = 0; j < s.looked.size(); ++j)
-        if (int(j) != index && !s.looked[j].empty()) looked.push_back(s.looked[j]);
       const billow::LayoutEvaluation e =
-          billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, looked, s.evaluate);
-      s.looked[index] = e.ok ? e.seams : std::vector<billow::DesignSeam>{};
+          billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, {}, s.evaluate);
       return layoutJson(e, s.proposals[index].name).dump();
     });
   }
@@ -556,7 +552,6 @@ class TargetSession {
     std::unique_ptr<billow::DesignScene> scene;
     std::vector<billow::DesignSeam> kept;
     std::vector<billow::LayoutProposal> proposals;
-    std::vector<std::vector<billow::DesignSeam>> looked;
     billow::EvaluateOptions evaluate;
     int panels = 0;  // at most, as asked
   };

@@ -5,7 +5,7 @@
 import { Op } from '../worker/protocol.js';
 
 // The same seams, their names aside: two proposals can end alike once the loops that only grazed the shape are gone
-// (within one worker the solver sees to it; across workers, this).
+// (as lookAtLayout's `looked` tells them apart for the command line; here across all the workers' looks).
 const seamsKey = (seams) => JSON.stringify(seams.map(({ closed, points }) => [closed, points]));
 
 // Closest first; the seam length (sewing time) breaks ties, then the order they were proposed in.

@@ -23,16 +23,16 @@ export function createHandlers(api) {
       throw new SolverError('target.invalid', errors.map((i) => i.message).join('\n'), { report });
     }
     state.target = { positions, indices: fixed };
+    state.suggestion = null; // the session forgets it with its target
     state.session ??= api.targetSession();
     state.session.setTarget(positions, fixed);
     return { report, positions: positions.slice(), indices: fixed.slice() };
   }
 
-  // The suggestion these seams and options make, started unless it is the one this worker started last (or `fresh`:
-  // a new run, whose looks are compared with its own only).
-  function startSuggestion(kept, options, { fresh = false } = {}) {
+  // The suggestion these seams and options make, started unless it is the one this worker started last on its target.
+  function startSuggestion(kept, options) {
     const key = JSON.stringify([kept, options]);
-    if (fresh || state.suggestion?.key !== key) state.suggestion = { key, ...requireSession().suggestStart(kept, options) };
+    if (state.suggestion?.key !== key) state.suggestion = { key, ...requireSession().suggestStart(kept, options) };
     return state.suggestion;
   }
 
@@ -159,11 +159,10 @@ export function createHandlers(api) {
     },
     // Seam layouts for the target (suggest/seam_layouts.hpp), the first look at each of a share of them: the layouts
     // whose index is `part` modulo `parts`, so that several workers share one suggestion (web/src/app/suggest-run.js).
-    // One layout a step, so progress shows and a cancel stops between layouts. The worker keeps the layouts looked at
-    // for the later looks' (a look that ends with an earlier one's seams is not used).
+    // One layout a step, so progress shows and a cancel stops between layouts.
     *[Op.suggestLook]({ kept = [], part = 0, parts = 1, ...options }) {
       const session = requireSession();
-      const { proposals } = startSuggestion(kept, options, { fresh: true });
+      const { proposals } = startSuggestion(kept, options);
       const mine = [...proposals.keys()].filter((i) => i % parts === part);
       const notUsed = [];
       for (const [k, index] of mine.entries()) {
