@@ -1,6 +1,6 @@
 // Suggested seam layouts in wasm, as the app runs them (web/src/app/suggest-run.js over worker threads running the
 // worker's handlers, in Node): per mesh of ../shared/meshes, 0.6 m tall, mirror-symmetric where it has a mirror plane,
-// the app's settings (1,000 triangles, at most 40 iterations, the six closest optimized), with one worker and with as
+// the app's settings (1,000 triangles, at most 40 iterations, the eight most promising optimized), with one worker and with as
 // many as the app starts here (one per core, at most 4): the time until the first layout shows (its first look), until
 // the first optimized one, until the end, and the best layout's distance (the worse way, % of the diagonal).
 //   node --no-experimental-fetch bench/suggest-bench-wasm.mjs [--panels 12] [--meshes koala,spot,blub] [--workers 1,2]
@@ -34,7 +34,7 @@ for (const name of meshes) {
       const t0 = performance.now();
       let firstLook = null;
       let firstOptimized = null;
-      const args = { panels, symmetry: axis, scale: HEIGHT / (hi - lo), up: '+y', triangles: 1000, maxIterations: 40, optimize: 6 };
+      const args = { panels, symmetry: axis, scale: HEIGHT / (hi - lo), up: '+y', triangles: 1000, maxIterations: 40 };
       const result = await suggestLayouts(clients, args, {
         onProgress: (p) => {
           if (p.look && firstLook === null) firstLook = performance.now() - t0;

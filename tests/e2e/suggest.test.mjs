@@ -24,7 +24,7 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
       seams: el.querySelector('[data-figure="seam-length"]').textContent,
     })),
   );
-  // At most the six optimized; at two panels, halves along three planes and a front and back along the outline
+  // At two panels, six layouts, all optimized: halves along three planes and a front and back along the outline
   // seen along each axis.
   assert.ok(cards.length >= 2 && cards.length <= 6, JSON.stringify(cards));
   assert.ok(cards.some((card) => /outline seen from/.test(card.name)), JSON.stringify(cards));

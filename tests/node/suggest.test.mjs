@@ -8,7 +8,7 @@ import { loadApi } from './load-module.mjs';
 import { readObjText, loadSharedMesh } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
 import { ErrorCode, Op, SolverError } from '../../web/src/worker/protocol.js';
-import { suggestLayouts } from '../../web/src/app/suggest-run.js';
+import { looksToOptimize, suggestLayouts } from '../../web/src/app/suggest-run.js';
 import { inThreadClient, threadedClient } from './solver-clients.mjs';
 import { linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
 
@@ -114,6 +114,24 @@ test('layouts for four panels of the sphere come best first, each as seams of su
   const firstLook = looked.find((p) => p.look.name === best.name).look;
   assert.notDeepEqual(firstLook.balloon.positions, best.balloon.positions, 'optimized, the balloon is another');
   assert.ok(progress.indexOf(looked[0]) < progress.findIndex((p) => p.layout), 'looked at before any is optimized');
+  // The looks optimized are those that promised most: the least of the target left away from the balloon (the
+  // target's side), which the optimizer cannot pull in as it does the balloon's own bulges.
+  for (const { look } of looked) assert.equal(look.promise, look.targetToInflated, look.name);
+  const chosen = new Set(looksToOptimize(looked.map((p) => p.look), 3, 3).map((l) => l.name));
+  assert.ok(result.layouts.every((l) => chosen.has(l.name)), 'the optimized are the chosen');
+  assert.equal(progress.findLast((p) => p.stage === 'optimizing the most promising layouts').total, chosen.size);
+});
+
+test('the looks optimized are the most promising, at most three of a family, as the command line chooses them', () => {
+  // The looks of the native test (SeamLayouts.TheMostPromisingLooksAreOptimizedAtMostThreeOfAFamily), lowest promise
+  // last; the one not ok never reaches the choice (suggest-run.js keeps only the looks that made panels).
+  const promise = [0.011, 0.012, 0.013, 0.014, 0.015, 0.016, 0.017, 0.018, 0.019, 0.02, 0.021, 0.022];
+  const family = ['g', 'g', 'g', 'g', 'b', 'g', 'o', 'b', 'x', 'b', 'b', 'y'];
+  const looks = promise.map((p, i) => ({ index: 11 - i, promise: p, family: family[i], seamLength: 1 })).filter((l) => l.index !== 8);
+  const chosen = (count, ofOneFamily) => looksToOptimize(looks, count, ofOneFamily).map((l) => l.index);
+  assert.deepEqual(chosen(8, 3), [11, 10, 9, 7, 5, 4, 3, 2]);
+  assert.deepEqual(chosen(3, 3), [11, 10, 9]);
+  assert.deepEqual(chosen(20, 1), [11, 7, 5, 3, 0]);
 });
 
 test('the designer\'s seams stay first, and the cow\'s mirror plane is found where the bunny has none', async () => {
@@ -220,8 +238,13 @@ test('a worker that has not looked (one restarted after a crash) optimizes a lay
   const args = { panels: 4, scale: 0.25, triangles: 300, maxIterations: 3 };
   const [looker, fresh] = await clientsFor('../../web/public/examples/sphere.obj', [inThreadClient(api), inThreadClient(api)]);
   const looks = [];
-  await looker.call(Op.suggestLook, args, { onProgress: (p) => p.look && looks.push(p.look) }).promise;
+  const looked = await looker.call(Op.suggestLook, args, { onProgress: (p) => p.look && looks.push(p.look) }).promise;
   assert.ok(looks.length >= 2);
+  // How many to optimize is the solver's (kOptimizedLayouts), what a suggestion asking none optimizes.
+  assert.equal(looked.optimize, 8);
+  const progress = [];
+  await suggest([looker], args, progress);
+  assert.equal(progress.findLast((p) => p.stage === 'optimizing the most promising layouts').total, Math.min(8, looks.length));
   const { index, seams } = looks[0];
   const there = await looker.request(Op.suggestOptimize, { ...args, index, seams });
   const here = await fresh.request(Op.suggestOptimize, { ...args, index, seams });

@@ -54,12 +54,14 @@
 //     its own mirror image (mirrorSymmetryAxis)
 //   t.suggestStart(keptSeamsJson, optionsJson)  kept: the designer's seams the layouts add to; options: buildPattern's
 //     and { panels (2-40), symmetry ("x" | "y" | "z" | null: layouts that are their own mirror image across it),
-//     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...] }
+//     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...], optimize, ofOneFamily (how many
+//     of the looks to optimize, at most how many of one family: looksToOptimize's rule) }
 //   t.suggestLook(index) -> { ok, problem (also where it makes more panels than asked for), name,
 //     description (the seams added or left out to make every part a panel, or ""),
 //     panels, seamLength [m], sheetUse (optimized only: the share of the sheet its nested cut pieces cover),
 //     distance (the worse way),
-//     inflatedToTarget, targetToInflated (over the target's diagonal), iterations, ms, seams (the kept ones first,
+//     inflatedToTarget, targetToInflated (over the target's diagonal), promise (lookPromise: the looks worth
+//     optimizing are the lowest), family (layoutFamily; looks only), iterations, ms, seams (the kept ones first,
 //     then the layout's, as the design document writes them), balloon (its inflated outer surface for the card's
 //     picture, LayoutBalloon, null when not ok: { positions #V*3 [m] (about 5 significant digits; the frame the
 //     inflated pane draws in), triangles #F*3 (outward), distance #V (signed, over the target's diagonal, positive
@@ -413,7 +415,10 @@ class TargetSession {
       json names = json::array();
       for (const billow::LayoutProposal& p : s->proposals) names.push_back(p.name);
       suggest_ = std::move(s);
-      return json({{"proposals", names}}).dump();
+      return json({{"proposals", names},
+                   {"optimize", billow::kOptimizedLayouts},
+                   {"ofOneFamily", billow::kOptimizedOfOneFamily}})
+          .dump();
     });
   }
 
@@ -424,7 +429,9 @@ class TargetSession {
       Suggestion& s = startedSuggestion(index);
       const billow::LayoutEvaluation e =
           billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, {}, s.evaluate);
-      return layoutJson(e, s.proposals[index].name).dump();
+      json look = layoutJson(e, s.proposals[index].name);
+      look["family"] = billow::layoutFamily(s.proposals[index]);
+      return look.dump();
     });
   }
 
@@ -542,6 +549,7 @@ class TargetSession {
                  {"distance", e.distance},
                  {"inflatedToTarget", e.inflatedToTarget},
                  {"targetToInflated", e.targetToInflated},
+                 {"promise", billow::lookPromise(e)},
                  {"iterations", e.iterations},
                  {"ms", e.ms},
                  {"seams", e.ok ? seams : json::array()},

@@ -1,7 +1,8 @@
 // billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--height M]
 //                [--resolution TRIANGLES] [--max-iterations N] [--optimize K] [--quiet]: seam layouts for a target
 // nobody has patterned yet (suggest/seam_layouts.hpp), each given a first look (its flattened panels inflated), the
-// K closest optimized at a coarse resolution and ranked by how close their optimized panels inflate to the target.
+// K most promising (lookPromise) optimized at a coarse resolution and ranked by how close their optimized panels
+// inflate to the target.
 // Writes DIR/layout-K.billow.json (the design, best first), DIR/layout-K.pattern.json (its optimized coarse panels) and
 // DIR/summary.json.
 #include <cmath>
@@ -30,8 +31,9 @@ int usage(bool help) {
                "Suggests seam layouts for a target shape (a design file, or a mesh file made into a design of\n"
                "--height meters, default 0.6): layouts of plane sections with at most N panels (2 to 40), seams\n"
                "added where a section leaves a part that is not a panel (a tube around a limb). Each is first\n"
-               "inflated flat; the K closest (default 6) are optimized at a coarse resolution (default 1000\n"
-               "triangles, at most 40 iterations) and ranked by their distance to the target (the worse way).\n"
+               "inflated flat; the K that leave least of the target's surface away from the balloon (default 8)\n"
+               "are optimized at a coarse resolution (default 1000 triangles, at most 40 iterations) and ranked by\n"
+               "their distance to the target (the worse way).\n"
                "--symmetry keeps the target's mirror symmetry (the\n"
                "design's symmetry plane, else the one the shape has); --keep-seams adds to the design's own seams.\n"
                "Writes DIR/layout-K.billow.json (best first), DIR/layout-K.pattern.json and DIR/summary.json.\n"
@@ -91,7 +93,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   EvaluateOptions evaluate;
   evaluate.triangles = intOption(args, "--resolution", evaluate.triangles, 200, 20000, "a triangle count");
   evaluate.maxIterations = intOption(args, "--max-iterations", evaluate.maxIterations, 1, 300, "an iteration count");
-  const int optimized = intOption(args, "--optimize", 6, 1, 100, "a number of layouts");
+  const int optimized = intOption(args, "--optimize", kOptimizedLayouts, 1, 100, "a number of layouts");
 
   std::string designPath;
   const Design input = readInput(args.positional[0], args, designPath);
@@ -114,8 +116,8 @@ int suggestCommand(const std::vector<std::string>& argv) {
                      ? (", mirror-symmetric across " + std::string(1, "xyz"[request.symmetryAxis])).c_str()
                      : "");
 
-  // A first look at every layout (its segments opened into panels, the flattened panels inflated), then the closest
-  // few optimized.
+  // A first look at every layout (its segments opened into panels, the flattened panels inflated), then the most
+  // promising few optimized.
   struct Tried {
     const LayoutProposal* proposal = nullptr;
     LayoutEvaluation first, result;
@@ -133,12 +135,11 @@ int suggestCommand(const std::vector<std::string>& argv) {
           t.first.ok ? (std::to_string(t.first.panels) + " panels").c_str() : ("not used: " + t.first.problem).c_str());
     tried.push_back(std::move(t));
   }
+  std::vector<const LayoutEvaluation*> looks;
+  std::vector<std::string> families;
+  for (const Tried& t : tried) looks.push_back(&t.first), families.push_back(layoutFamily(*t.proposal));
   std::vector<Tried*> looked;
-  for (Tried& t : tried)
-    if (t.first.ok) looked.push_back(&t);
-  std::stable_sort(looked.begin(), looked.end(),
-                   [](const Tried* a, const Tried* b) { return a->first.distance < b->first.distance; });
-  if (looked.size() > size_t(optimized)) looked.resize(optimized);
+  for (int i : looksToOptimize(looks, families, optimized)) looked.push_back(&tried[i]);
   for (size_t i = 0; i < looked.size(); ++i) {
     Tried& t = *looked[i];
     t.result = evaluateLayout(*scene, t.first.seams, int(t.first.seams.size()), evaluate);

@@ -5,6 +5,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <map>
 
 #include "export/layout.hpp"
 #include "optimize/optimized_pattern.hpp"
@@ -23,9 +24,10 @@ constexpr double kPi = 3.14159265358979323846;
 // Control points of a proposed seam, as the section tool spaces them (web/src/app/section.js SECTION_SPACING).
 constexpr double kSeamPointSpacing = 0.02;
 constexpr int kMostGores = 24, kMostBands = 12;
-// A layout is laid for up to this many panels fewer than asked for (a quarter at larger counts): a limb cut on its
-// own, or opened, adds panels on most shapes.
-int fewestPanels(int asked) { return asked - std::max(4, asked / 4); }
+// A layout is laid for as few as half the panels asked for (four fewer at small counts): a limb cut on its own, or
+// opened, adds panels on most shapes (the penguin's 4 bands in two pieces along its outline make 12, not 8). A look
+// that makes more than asked for is refused before it is built (lookAtLayout).
+int fewestPanels(int asked) { return asked - std::max(4, asked / 2); }
 
 // Which way a direction of the target's own coordinates points as the target stands: 0 side to side, 1 up, 2 front
 // to back (the up frame's axes).
@@ -520,14 +522,16 @@ LayoutBalloon balloonOf(const PatternOptimizer& optimizer, const DesignScene& sc
 
 }  // namespace
 
-LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
-                                const EvaluateOptions& options) {
-  const auto t0 = std::chrono::steady_clock::now();
+namespace {
+
+using Clock = std::chrono::steady_clock;
+double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
+
+// evaluateLayout's first part: the seams traced and segmented, with those that open its segments into panels; ok
+// when every segment is a panel. The scene keeps the segmentation for measureLayout.
+LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
+                           const EvaluateOptions& options) {
   LayoutEvaluation out;
-  const auto done = [&] {
-    out.ms = std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    return out;
-  };
   out.seams = seams;
   const double spacing = seamPointSpacing(scene.target);
   for (int round = 0;; ++round) {
@@ -536,7 +540,7 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
       traceDesignSeams(scene);
     } catch (const Error& e) {
       out.problem = e.what();
-      return done();
+      return out;
     }
     segmentDesignScene(scene);
     if (scene.segmentation.problems.empty() || round == options.openingRounds ||
@@ -546,17 +550,24 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
   const Segmentation& segmentation = scene.segmentation;
   if (!segmentation.problems.empty()) {
     out.problem = segmentation.problems.front().message;
-    return done();
+    return out;
   }
   out.panels = int(segmentation.segments.size());
   for (const SeamCurve& curve : scene.curves) out.seamLength += curve.length;
+  out.ok = true;
+  return out;
+}
+
+// evaluateLayout's second part, on the scene layLayout left: the panels built, optimized and measured.
+void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOptions& options) {
+  out.ok = false;
   // A layout whose panels cannot be made or settled is not used, and says why (the pattern's own message: panels
   // sewn three to an edge where a cut meets a section, a fold).
   try {
     const BuiltPattern built = buildDesignPattern(scene, options.triangles);
     if (!built.ok()) {
       out.problem = built.problems.empty() ? "no panels" : built.problems.front().message;
-      return done();
+      return;
     }
     OptimizeOptions oo = appStoppingRule();
     oo.stopping.maxIterations = options.maxIterations;
@@ -567,7 +578,7 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
     }
     if (optimizer.state() == OptimizeState::Failed || optimizer.history().empty()) {
       out.problem = optimizer.message();
-      return done();
+      return;
     }
     const OptimizeRecord& last = optimizer.history().back();
     out.inflatedToTarget = last.distanceRms, out.targetToInflated = last.targetDistanceRms;
@@ -578,10 +589,20 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
     if (options.maxIterations > 0) out.sheetUse = sheetUse(out.pattern);
   } catch (const Error& e) {
     out.problem = e.what();
-    return done();
+    return;
   }
   out.ok = true;
-  return done();
+}
+
+}  // namespace
+
+LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
+                                const EvaluateOptions& options) {
+  const Clock::time_point t0 = Clock::now();
+  LayoutEvaluation out = layLayout(scene, seams, fixedSeams, options);
+  if (out.ok) measureLayout(scene, out, options);
+  out.ms = msSince(t0);
+  return out;
 }
 
 namespace {
@@ -601,24 +622,55 @@ bool sameSeams(const std::vector<DesignSeam>& a, const std::vector<DesignSeam>& 
 
 }  // namespace
 
+double lookPromise(const LayoutEvaluation& look) { return look.targetToInflated; }
+
+std::string layoutFamily(const LayoutProposal& p) {
+  // Two gores are halves, whose plane names them; more are gores around the axis, turned or not.
+  Eigen::Index halving = -1;
+  if (p.outlineView < 0 && p.gores == 2 && !p.planes.empty()) p.planes[0].normal.cwiseAbs().maxCoeff(&halving);
+  return std::to_string(p.outlineView) + " " + std::to_string(p.axis) + " " + std::to_string(p.bands > 0) + " " +
+         std::to_string(p.gores > 2) + " " + std::to_string(halving);
+}
+
+std::vector<int> looksToOptimize(const std::vector<const LayoutEvaluation*>& looks,
+                                 const std::vector<std::string>& families, int count, int ofOneFamily) {
+  std::vector<int> order;
+  for (int i = 0; i < int(looks.size()); ++i)
+    if (looks[i]->ok) order.push_back(i);
+  // The seam length (sewing time) breaks ties, then the order they were proposed in, as in the app.
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
+    return lookPromise(*looks[a]) != lookPromise(*looks[b]) ? lookPromise(*looks[a]) < lookPromise(*looks[b])
+                                                            : looks[a]->seamLength < looks[b]->seamLength;
+  });
+  std::vector<int> chosen;
+  std::map<std::string, int> taken;
+  for (int i : order)
+    if (int(chosen.size()) < count && ++taken[families[i]] <= ofOneFamily) chosen.push_back(i);
+  return chosen;
+}
+
 LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal, const std::vector<DesignSeam>& kept,
                               int panelsAtMost, const std::vector<std::vector<DesignSeam>>& looked,
                               EvaluateOptions options) {
   options.maxIterations = 0;
+  const Clock::time_point t0 = Clock::now();
   LayoutEvaluation look;
   try {
     std::vector<DesignSeam> seams = kept;
     const std::vector<DesignSeam> laid = proposalSeams(scene.target, proposal);
     seams.insert(seams.end(), laid.begin(), laid.end());
-    look = evaluateLayout(scene, seams, int(kept.size()), options);
+    look = layLayout(scene, seams, int(kept.size()), options);
   } catch (const Error& e) {
     look.problem = e.what();
   }
+  // Refused before its panels are built and inflated: half the looks at 24 panels make too many.
   if (look.ok && look.panels > panelsAtMost)
     look.ok = false, look.problem = "it makes " + std::to_string(look.panels) + " panels on this shape";
   if (look.ok && std::any_of(looked.begin(), looked.end(),
                              [&](const std::vector<DesignSeam>& seams) { return sameSeams(seams, look.seams); }))
     look.ok = false, look.problem = "it ends with the same seams as a layout before it";
+  if (look.ok) measureLayout(scene, look, options);
+  look.ms = msSince(t0);
   return look;
 }
 

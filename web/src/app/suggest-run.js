@@ -1,6 +1,6 @@
 // One seam suggestion shared by several workers (issue 27): the layouts are independent, so each worker looks at its
-// share of them (suggestLook: those whose index is its part modulo the parts), and the closest are optimized
-// (suggestOptimize, from the seams each look ended with) closest first by whichever worker is free. No DOM: the app
+// share of them (suggestLook: those whose index is its part modulo the parts), and the most promising looks are
+// optimized (suggestOptimize, from the seams each look ended with), each by whichever worker is free. No DOM: the app
 // runs it over its helper workers (suggest.js), the tests and the bench over workers in Node.
 import { Op } from '../worker/protocol.js';
 
@@ -8,15 +8,29 @@ import { Op } from '../worker/protocol.js';
 // (as lookAtLayout's `looked` tells them apart for the command line; here across all the workers' looks).
 const seamsKey = (seams) => JSON.stringify(seams.map(({ closed, points }) => [closed, points]));
 
-// Closest first; the seam length (sewing time) breaks ties, then the order they were proposed in.
-const closer = (a, b) => a.distance - b.distance || a.seamLength - b.seamLength || a.index - b.index;
+// Closest first; the seam length (sewing time) breaks ties, then the order they were proposed in. Looks are optimized
+// most promising first (their `promise`, lookPromise in suggest/seam_layouts.hpp).
+const tieBreak = (a, b) => a.seamLength - b.seamLength || a.index - b.index;
+const closer = (a, b) => a.distance - b.distance || tieBreak(a, b);
+const morePromising = (a, b) => a.promise - b.promise || tieBreak(a, b);
+
+// The looks to optimize, as looksToOptimize (suggest/seam_layouts.hpp) chooses for the command line: the most
+// promising first, at most `ofOneFamily` of one family, `count` in all.
+export function looksToOptimize(looks, count, ofOneFamily) {
+  const taken = new Map();
+  return [...looks].sort(morePromising).filter((look) => {
+    const n = (taken.get(look.family) ?? 0) + 1;
+    taken.set(look.family, n);
+    return n <= ofOneFamily;
+  }).slice(0, count);
+}
 
 // clients: [{ call(op, args, { onProgress }) -> { promise, cancel } }] (SolverClient's), each with the target set.
 // args: suggestLook's (kept, panels, symmetry, scale, triangles, pressure, material, up, maxIterations) and
-// `optimize`, how many of the closest to optimize. onProgress gets { stage, done, total, detail } as the work goes,
+// `optimize`, how many of the most promising to optimize (by default the solver's kOptimizedLayouts). onProgress gets { stage, done, total, detail } as the work goes,
 // with { look } when a layout has been looked at and { layout } when one has been optimized.
 // Returns { promise -> { layouts (optimized, best first), notUsed: [{ name, why }], tried }, cancel }.
-export function suggestLayouts(clients, { optimize = 6, ...args }, { onProgress = () => {} } = {}) {
+export function suggestLayouts(clients, { optimize, ...args }, { onProgress = () => {} } = {}) {
   const running = new Set();
   const call = (client, op, callArgs, options) => {
     const c = client.call(op, callArgs, options);
@@ -53,12 +67,12 @@ export function suggestLayouts(clients, { optimize = 6, ...args }, { onProgress 
       ),
     );
     for (const look of looks) notUsed.push(...look.notUsed.map(({ name, why }) => ({ name, why })));
-    const chosen = looked.sort(closer).slice(0, optimize);
+    const chosen = looksToOptimize(looked, optimize ?? looks[0].optimize, looks[0].ofOneFamily);
     const queue = [...chosen];
     const layouts = [];
     let optimized = 0;
-    onProgress({ stage: 'optimizing the closest layouts', done: 0, total: chosen.length });
-    // Each worker takes the closest layout left when it is free: their times differ by several times.
+    onProgress({ stage: 'optimizing the most promising layouts', done: 0, total: chosen.length });
+    // Each worker takes the most promising layout left when it is free: their times differ by several times.
     await Promise.all(
       clients.map(async (client) => {
         for (let next = queue.shift(); next; next = queue.shift()) {
@@ -66,7 +80,7 @@ export function suggestLayouts(clients, { optimize = 6, ...args }, { onProgress 
           optimized++;
           if (!layout.ok) notUsed.push({ name: next.name, why: layout.problem });
           else layouts.push({ ...layout, description: next.description }); // what its look did to its sections
-          onProgress({ stage: 'optimizing the closest layouts', done: optimized, total: chosen.length, ...(layout.ok ? { layout } : {}) });
+          onProgress({ stage: 'optimizing the most promising layouts', done: optimized, total: chosen.length, ...(layout.ok ? { layout } : {}) });
         }
       }),
     );

@@ -1,7 +1,7 @@
 // Suggested seam layouts (wasm/src/suggest/seam_layouts.hpp): the designer says how many panels they will cut at
 // most, whether the layout keeps the target's mirror symmetry (offered where the target has one) and whether their own
 // seams stay; the worker lays plane sections through and across the target's axes, opens what they leave unflattenable
-// (a tube around a limb), looks at each layout, optimizes the closest few at a coarse resolution and brings them
+// (a tube around a limb), looks at each layout, optimizes the most promising few at a coarse resolution and brings them
 // best first. "Use" makes a layout's seams the design's, an ordinary edit (Undo returns). An edit to the seams while
 // it runs stops it: its layouts were made for the seams there were. Not modal: the target stays in view beside it.
 import './suggest.css';
@@ -20,7 +20,6 @@ const PANELS = { min: 2, max: 40, start: 6 };
 // holds at this resolution: bench/README.md "Suggested seam layouts").
 const TRIANGLES = 1000;
 const MAX_ITERATIONS = 40;
-const OPTIMIZED = 6;
 // Workers of its own, one per core up to this many: the layouts are tried side by side, and the design's own worker
 // stays free for the designer's edits meanwhile.
 const MOST_HELPERS = 4;
@@ -212,7 +211,6 @@ export class SeamSuggestions {
       scale: app.scaleFor(design),
       up: upOf(design),
       maxIterations: MAX_ITERATIONS,
-      optimize: OPTIMIZED,
     };
     this.layouts = [];
     this.request = { revision: app.revision, kept: keep ? design.seams.length : 0, axis, panels };

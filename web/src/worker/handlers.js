@@ -162,7 +162,7 @@ export function createHandlers(api) {
     // One layout a step, so progress shows and a cancel stops between layouts.
     *[Op.suggestLook]({ kept = [], part = 0, parts = 1, ...options }) {
       const session = requireSession();
-      const { proposals } = startSuggestion(kept, options);
+      const { proposals, optimize, ofOneFamily } = startSuggestion(kept, options);
       const mine = [...proposals.keys()].filter((i) => i % parts === part);
       const notUsed = [];
       for (const [k, index] of mine.entries()) {
@@ -172,7 +172,7 @@ export function createHandlers(api) {
         if (r.ok) yield { stage: 'a first look at each layout', done: k + 1, total: mine.length, look: { index, ...r } };
         else notUsed.push({ index, name: proposals[index], why: r.problem });
       }
-      return { tried: proposals.length, notUsed };
+      return { tried: proposals.length, notUsed, optimize, ofOneFamily };
     },
     // A layout of the suggestion, optimized at its coarse resolution from the seams its look (on this worker or
     // another) ended with; the suggestion is started here too where this worker has not (restarted after a crash).
