@@ -2,8 +2,6 @@
 // layouts made along it (suggest/seam_layouts.hpp).
 #include <gtest/gtest.h>
 
-#include <algorithm>
-
 #include "cube_fixture.hpp"
 #include "pattern/design_scene.hpp"
 #include "seams/outline.hpp"
@@ -127,53 +125,6 @@ TEST(SeamLayouts, ALayoutEndingWithTheSeamsOfOneBeforeItIsNotShownAgain) {
   // Told apart before its panels are built and inflated.
   EXPECT_TRUE(second.pattern.panels.empty());
   EXPECT_EQ(second.balloon.positions.rows(), 0);
-}
-
-// The looks optimized: the most promising first, at most three of one family (many narrow gores around one axis
-// look close at first and gain little), eight in all; a look not ok is never one. The app's suggest-run.js chooses
-// alike (tests/node/suggest.test.mjs, the same looks).
-TEST(SeamLayouts, TheMostPromisingLooksAreOptimizedAtMostThreeOfAFamily) {
-  const double promise[] = {0.011, 0.012, 0.013, 0.014, 0.015, 0.016, 0.017, 0.018, 0.019, 0.020, 0.021, 0.022};
-  const char* family[] = {"g", "g", "g", "g", "b", "g", "o", "b", "x", "b", "b", "y"};
-  std::vector<LayoutEvaluation> looks(12);
-  std::vector<const LayoutEvaluation*> pointers;
-  std::vector<std::string> families;
-  for (int i = 0; i < 12; ++i) {
-    looks[i].ok = i != 8, looks[i].targetToInflated = promise[11 - i], looks[i].seamLength = 1;
-    pointers.push_back(&looks[i]), families.push_back(family[11 - i]);
-  }
-  // By promise: 11 10 9 (g), 8 (not ok), 7 (b), 6 (a fourth g: left), 5 (o), 4 (b), 3 (x), 2 (b), 1 (a fourth b), 0.
-  EXPECT_EQ(looksToOptimize(pointers, families), (std::vector<int>{11, 10, 9, 7, 5, 4, 3, 2}));
-  EXPECT_EQ(looksToOptimize(pointers, families, 3), (std::vector<int>{11, 10, 9}));
-  EXPECT_EQ(looksToOptimize(pointers, families, 20, 1), (std::vector<int>{11, 7, 5, 3, 0}));
-}
-
-// A layout that makes more panels than asked for is refused with its count, before its panels are built and
-// inflated (half the looks at 24 panels are).
-TEST(SeamLayouts, ALayoutWithMorePanelsThanAskedForIsRefusedBeforeItIsBuilt) {
-  Design design;
-  design.target.kind = DesignTarget::Obj;
-  design.target.name = test::meshPath("sphere.obj");
-  const auto scene = loadDesignTargetScene(design, "", {});
-  LayoutRequest request;
-  request.panels = 6;
-  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
-  const auto six = std::find_if(proposals.begin(), proposals.end(),
-                                [](const LayoutProposal& p) { return p.gores == 6 && p.bands == 0; });
-  ASSERT_NE(six, proposals.end());
-  const LayoutEvaluation refused = lookAtLayout(*scene, *six, {}, 4, {});
-  EXPECT_FALSE(refused.ok);
-  EXPECT_EQ(refused.problem, "it makes 6 panels on this shape");
-  EXPECT_EQ(refused.panels, 6);
-  EXPECT_TRUE(refused.pattern.panels.empty());
-  EXPECT_EQ(refused.balloon.positions.rows(), 0);
-  // Asked for six, it is looked at: built and inflated.
-  const LayoutEvaluation look = lookAtLayout(*scene, *six, {}, 6, {});
-  ASSERT_TRUE(look.ok) << look.problem;
-  EXPECT_EQ(int(look.pattern.panels.size()), 6);
-  EXPECT_GT(look.balloon.positions.rows(), 0);
-  EXPECT_GT(look.targetToInflated, 0);
-  EXPECT_EQ(lookPromise(look), look.targetToInflated);
 }
 
 }  // namespace
