@@ -27,8 +27,9 @@ export function looksToOptimize(looks, count, ofOneFamily) {
 
 // clients: [{ call(op, args, { onProgress }) -> { promise, cancel } }] (SolverClient's), each with the target set.
 // args: suggestLook's (kept, panels, symmetry, scale, triangles, pressure, material, up, maxIterations) and
-// `optimize`, how many of the most promising to optimize (by default the solver's kOptimizedLayouts). onProgress gets { stage, done, total, detail } as the work goes,
-// with { look } when a layout has been looked at and { layout } when one has been optimized.
+// `optimize`, how many of the most promising to optimize (by default the solver's kOptimizedLayouts). onProgress gets
+// { stage, done, total, detail } as the work goes, with { look } when a layout has been looked at and { layout } when
+// one has been optimized.
 // Returns { promise -> { layouts (optimized, best first), notUsed: [{ name, why }], tried }, cancel }.
 export function suggestLayouts(clients, { optimize, ...args }, { onProgress = () => {} } = {}) {
   const running = new Set();
