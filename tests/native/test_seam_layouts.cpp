@@ -300,10 +300,18 @@ TEST(SuggestCommand, WritesRankedLayoutsThatOpenAsDesigns) {
   const nlohmann::json summary = nlohmann::json::parse(in);
   EXPECT_EQ(summary["format"], "billow-suggest");
   const nlohmann::json& layouts = summary["layouts"];
-  ASSERT_EQ(layouts.size(), 2u) << out;  // the two closest at first look, optimized
+  ASSERT_EQ(layouts.size(), 2u) << out;  // the two most promising at first look, optimized
+  EXPECT_EQ(summary["optimized"]["layouts"], 2);
+  EXPECT_EQ(summary["optimized"]["by_default"], kOptimizedLayouts);
+  EXPECT_EQ(summary["optimized"]["of_one_family"], kOptimizedOfOneFamily);
   for (size_t k = 0; k < layouts.size(); ++k) {
     const nlohmann::json& l = layouts[k];
     EXPECT_EQ(l["rank"], int(k + 1));
+    // What chose it: its first look, the flattened panels', farther than the optimized panels come.
+    const nlohmann::json& look = l["first_look"];
+    EXPECT_EQ(look["promise"], look["target_to_inflated_rms"]);
+    EXPECT_GE(look["worse_way_rms"].get<double>(), look["target_to_inflated_rms"].get<double>());
+    EXPECT_FALSE(look["family"].get<std::string>().empty());
     if (k > 0) {
       EXPECT_GE(l["distance"]["worse_way_rms"].get<double>(), layouts[k - 1]["distance"]["worse_way_rms"]);
     }

@@ -188,6 +188,12 @@ int suggestCommand(const std::vector<std::string>& argv) {
                         {{"worse_way_rms", t.result.distance},
                          {"inflated_to_target_rms", t.result.inflatedToTarget},
                          {"target_to_inflated_rms", t.result.targetToInflated}}},
+                       // What chose it for optimizing (looksToOptimize), so a bench can replay the choice.
+                       {"first_look",
+                        {{"worse_way_rms", t.first.distance},
+                         {"target_to_inflated_rms", t.first.targetToInflated},
+                         {"promise", lookPromise(t.first)},
+                         {"family", layoutFamily(*t.proposal)}}},
                        {"iterations", t.result.iterations},
                        {"ms", t.result.ms}});
   }
@@ -200,6 +206,8 @@ int suggestCommand(const std::vector<std::string>& argv) {
       {"panels", request.panels},
       {"symmetry", request.symmetryAxis >= 0 ? json(std::string(1, "xyz"[request.symmetryAxis])) : json(nullptr)},
       {"resolution", evaluate.triangles},
+      {"optimized",
+       {{"layouts", optimized}, {"by_default", kOptimizedLayouts}, {"of_one_family", kOptimizedOfOneFamily}}},
       {"layouts", layouts},
       {"not_used", notUsed}};
   writeTextFile(dir + "/summary.json", summary.dump(2) + "\n");
