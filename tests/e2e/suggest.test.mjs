@@ -3,7 +3,8 @@
 // run is stopped by an edit.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openFreshPage, optimizedResultShown, screenshot, useBrowser } from './harness.mjs';
+import { readFileSync } from 'node:fs';
+import { ROOT, openFreshPage, optimizedResultShown, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -106,5 +107,39 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
   await page.click('#redo-button');
   await page.waitForFunction(() => /Stopped: the design changed/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 30000 });
   assert.equal(await page.textContent('.suggest-go'), 'Suggest layouts');
+  assert.deepEqual(page.errors, []);
+});
+
+test('a flat shape gets a layout held together inside, and using it makes its internal connections the design\'s', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  // A lens: the sphere example squashed to a third of its width, as a designer would bring a flat cushion.
+  const lens = readFileSync(`${ROOT}/web/public/examples/sphere.obj`, 'utf8')
+    .split('\n')
+    .map((line) => (line.startsWith('v ') ? line.replace(/^v (\S+) (\S+) (\S+)/, (_, x, y, z) => `v ${x} ${y} ${Number(z) / 3}`) : line))
+    .join('\n');
+  await page.setInputFiles('#file-input', { name: 'lens.obj', mimeType: 'text/plain', buffer: Buffer.from(lens) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'lens.obj', null, { timeout: 60000 });
+  await page.click('#suggest-button');
+  await page.waitForSelector('dialog.suggest-dialog[open]');
+  await page.fill('.suggest-panels', '5');
+  await page.click('.suggest-go');
+  await page.waitForFunction(() => /layouts tried/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 240000 });
+  const cards = await page.$$eval('.suggest-card', (els) =>
+    els.map((el) => ({ rank: el.dataset.rank, name: el.querySelector('h3').textContent, text: el.textContent, distance: parseFloat(el.querySelector('[data-figure="distance"]').textContent) })),
+  );
+  const held = cards.find((card) => /held together inside/.test(card.name));
+  assert.ok(held, JSON.stringify(cards));
+  // Its card says what holds it: the connections are panels too.
+  assert.match(held.text, /internal connection/);
+  // The closest pillow along the rim, its bands' loops closed, lies farther from the lens.
+  const pillows = cards.filter((card) => /outline seen from the front/.test(card.name) && !/held together/.test(card.name));
+  if (pillows.length) assert.ok(held.distance < Math.min(...pillows.map((c) => c.distance)), JSON.stringify(cards));
+  await page.click(`.suggest-card[data-rank="${held.rank}"] .suggest-use`);
+  await page.waitForFunction(() => window.billow.test.design.connections.length > 0, null, { timeout: 60000 });
+  const design = await page.evaluate(() => window.billow.test.design);
+  for (const { seams: [a, b] } of design.connections)
+    assert.ok(design.seams[a] && design.seams[b] && !design.seams[a].closed && !design.seams[b].closed, JSON.stringify([a, b]));
+  await optimizedResultShown(page);
+  await screenshot(page, 'suggest-held-together');
   assert.deepEqual(page.errors, []);
 });

@@ -102,6 +102,64 @@ TEST(Outline, TheOctopusGetsAFrontAndBackLayoutWherePlanesLeaveTubes) {
   EXPECT_GE(usable, 2);
 }
 
+// A pillow bulges where a flat shape is thin: the hand along its outline from the front, its bands' loops held together
+// inside by internal connections, comes far closer than without them (bench/README.md "Suggested seam layouts").
+TEST(SeamLayouts, AFlatShapeHeldTogetherInsideComesCloserThanItsPillow) {
+  Design design;
+  design.target.kind = DesignTarget::Obj;
+  design.target.name = test::meshPath("hand.obj");
+  design.height = 0.6;
+  const auto scene = loadDesignTargetScene(design, "", {});
+  LayoutRequest request;
+  request.panels = 12;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  // Three bands across the side-to-side axis along the outline seen from the front, with and without.
+  const auto find = [&](bool connected) {
+    const auto p = std::find_if(proposals.begin(), proposals.end(), [&](const LayoutProposal& q) {
+      return q.outlineView == 2 && q.axis == 0 && q.bands == 2 && q.connected == connected;
+    });
+    EXPECT_NE(p, proposals.end());
+    return *p;
+  };
+  const LayoutProposal pillow = find(false), held = find(true);
+  EXPECT_NE(held.name.find("held together inside"), std::string::npos) << held.name;
+  const LayoutEvaluation plain = lookAtLayout(*scene, pillow, {}, request.panels, {});
+  const LayoutEvaluation look = lookAtLayout(*scene, held, {}, request.panels, {});
+  ASSERT_TRUE(plain.ok) << plain.problem;
+  ASSERT_TRUE(look.ok) << look.problem;
+  // One per loop of a band's plane that crosses the rim twice: the palm, and a finger one plane cuts on its own.
+  ASSERT_GE(look.connections.size(), 2u);
+  EXPECT_NE(look.opened.description().find(std::to_string(look.connections.size()) + " internal connections"),
+            std::string::npos)
+      << look.opened.description();
+  EXPECT_TRUE(plain.connections.empty());
+  // Each band's loop is two seams from crossing to crossing of the rim, which passes through both: they meet it there
+  // exactly, as a seam drawn to another's point is snapped to it.
+  const auto same = [](const DesignPoint& a, const DesignPoint& b) {
+    return a.surface.face == b.surface.face && a.surface.bary == b.surface.bary;
+  };
+  const DesignSeam& rim = look.seams[0];
+  ASSERT_TRUE(rim.closed);
+  for (const DesignConnection& c : look.connections) {
+    ASSERT_EQ(c.seams.size(), 2u);
+    const DesignSeam& front = look.seams[size_t(c.seams[0])];
+    const DesignSeam& back = look.seams[size_t(c.seams[1])];
+    ASSERT_FALSE(front.closed || back.closed);
+    EXPECT_TRUE(same(front.points.front(), back.points.back()) && same(front.points.back(), back.points.front()));
+    for (const DesignPoint& end : {front.points.front(), front.points.back()})
+      EXPECT_TRUE(
+          std::any_of(rim.points.begin(), rim.points.end(), [&](const DesignPoint& p) { return same(p, end); }));
+  }
+  // The connections are panels to cut, inside.
+  const auto connections = long(look.connections.size());
+  EXPECT_EQ(look.panels, long(scene->segmentation.segments.size()) + connections);
+  EXPECT_EQ(
+      std::count_if(look.pattern.panels.begin(), look.pattern.panels.end(), [](const Panel& p) { return p.internal; }),
+      connections);
+  // The first looks, both ways: the connections hold front and back at the hand's thickness.
+  EXPECT_LT(look.distance, 0.8 * plain.distance) << look.distance << " against " << plain.distance;
+}
+
 // Two proposals that end with the same seams are one layout to the designer: the second is not shown.
 TEST(SeamLayouts, ALayoutEndingWithTheSeamsOfOneBeforeItIsNotShownAgain) {
   Design design;

@@ -112,11 +112,13 @@ TEST(SeamLayouts, ProposalsHaveThePanelsAskedForAndSymmetricOnesAreTheirOwnMirro
     const double mid = boxMiddle(target).x(), D = diagonal(target);
     for (const LayoutProposal& p : proposals) {
       // Down to half the panels asked for (four fewer at small counts), room for the limbs a shape adds (at most the
-      // panels asked for); a front and a back along an outline at any count.
-      EXPECT_LE(p.gores * (p.bands + 1), panels) << p.name;
+      // panels asked for); a front and a back along an outline at any count. An internal connection is a panel too.
+      const int planned = p.gores * (p.bands + 1) + (p.connected ? p.bands : 0);
+      EXPECT_LE(planned, panels) << p.name;
       if (p.outlineView < 0 || p.bands > 0) {
-        EXPECT_GE(p.gores * (p.bands + 1), panels - std::max(4, panels / 2)) << p.name;
+        EXPECT_GE(planned, panels - std::max(4, panels / 2)) << p.name;
       }
+      EXPECT_TRUE(!p.connected || (p.outlineView >= 0 && p.bands > 0)) << p.name;
       EXPECT_EQ(int(p.planes.size()), (p.gores == 2 && p.outlineView < 0 ? 1 : 0) + p.bands) << p.name;
       EXPECT_EQ(int(p.meridians.size()), p.gores == 2 ? 0 : p.gores) << p.name;
       // Each meridian reflected across x = mid is one of them (the axis through the middle is its own image).

@@ -253,3 +253,34 @@ test('a worker that has not looked (one restarted after a crash) optimizes a lay
   assert.equal(here.distance, there.distance);
   assert.deepEqual(here.seams, there.seams);
 });
+
+test('a flat shape\'s outline layouts are also offered held together inside, their connections used as the design\'s', async () => {
+  // A lens: the sphere squashed to a third of its width, thinner than a pillow sewn around its rim puffs up.
+  const { positions, indices } = readObjText(read('../../web/public/examples/sphere.obj'));
+  const lens = Float64Array.from(positions, (x, i) => (i % 3 === 2 ? x / 3 : x));
+  const client = inThreadClient(api);
+  await client.request(Op.setTarget, { positions: lens, indices });
+  const args = { panels: 5, scale: 0.25, triangles: 400, maxIterations: 8 };
+  const looks = [];
+  await client.call(Op.suggestLook, args, { onProgress: (p) => p.look && looks.push(p.look) }).promise;
+  const held = looks.filter((look) => /held together inside/.test(look.name));
+  assert.ok(held.length >= 1, looks.map((l) => l.name).join('; '));
+  for (const look of held) {
+    assert.ok(look.connections.length >= 1, look.name);
+    assert.match(look.description, /internal connection/);
+    // Each joins two open seams of the layout's, as the design document writes a connection.
+    for (const [a, b] of look.connections) assert.ok(a !== b && !look.seams[a].closed && !look.seams[b].closed, look.name);
+    // Optimized from its seams and connections, on any worker: its internal panels are panels to cut.
+    const layout = await client.request(Op.suggestOptimize, { ...args, index: look.index, seams: look.seams, connections: look.connections });
+    assert.ok(layout.ok, layout.problem);
+    assert.deepEqual(layout.connections, look.connections);
+    assert.equal(layout.panels, look.panels);
+    // Its pillow twin (the same seams along the outline, its band loops closed) has none.
+    const pillow = looks.find((l) => l.name === look.name.replace(', held together inside', ''));
+    assert.ok(pillow, `no pillow twin for ${look.name}`);
+    assert.equal(pillow.connections.length, 0);
+    // Seen from the front, across the lens, the pillow puffs up where the lens is thin; held together, far less.
+    if (/seen from the front/.test(look.name)) assert.ok(look.distance < 0.8 * pillow.distance, `${look.name}: ${look.distance} against ${pillow.distance}`);
+  }
+  assert.ok(held.some((look) => /seen from the front/.test(look.name)));
+});

@@ -62,12 +62,14 @@
 //     distance (the worse way),
 //     inflatedToTarget, targetToInflated (over the target's diagonal), promise (lookPromise: the looks worth
 //     optimizing are the lowest), family (layoutFamily; looks only), iterations, ms, seams (the kept ones first,
-//     then the layout's, as the design document writes them), balloon (its inflated outer surface for the card's
+//     then the layout's, as the design document writes them), connections (its internal connections: [i, j] pairs
+//     of indices into seams, as the app writes them), balloon (its inflated outer surface for the card's
 //     picture, LayoutBalloon, null when not ok: { positions #V*3 [m] (about 5 significant digits; the frame the
 //     inflated pane draws in), triangles #F*3 (outward), distance #V (signed, over the target's diagonal, positive
 //     outside), panel #F }) }: a first look (the flattened panels inflated)
-//   t.suggestOptimize(index, seamsJson) -> the same for the layout with the seams its look ended with (from any
-//     session: several workers share a suggestion), optimized at the options' resolution
+//   t.suggestOptimize(index, seamsJson, connectionsJson) -> the same for the layout with the seams and connections
+//     its look ended with (from any session: several workers share a suggestion), optimized at the options'
+//     resolution
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -436,12 +438,15 @@ class TargetSession {
   }
 
   // Layout `index` optimized, from the seams its look ended with (any worker's: several share a suggestion).
-  std::string suggestOptimize(int index, const std::string& seamsJson) {
+  std::string suggestOptimize(int index, const std::string& seamsJson, const std::string& connectionsJson) {
     return guarded([&] {
       Suggestion& s = startedSuggestion(index);
       const std::vector<billow::DesignSeam> seams = billow::readDesignSeams(parse(seamsJson));
       if (seams.empty()) throw billow::Error("suggest.no-seams", "That layout has no seams to optimize.");
-      const billow::LayoutEvaluation e = billow::evaluateLayout(*s.scene, seams, int(seams.size()), s.evaluate);
+      const std::vector<billow::DesignConnection> connections =
+          billow::readDesignConnections(parse(connectionsJson), seams.size());
+      const billow::LayoutEvaluation e =
+          billow::evaluateLayout(*s.scene, seams, int(seams.size()), s.evaluate, connections);
       return layoutJson(e, s.proposals[index].name).dump();
     });
   }
@@ -539,6 +544,8 @@ class TargetSession {
   static json layoutJson(const billow::LayoutEvaluation& e, const std::string& name) {
     json seams = json::array();
     for (const billow::DesignSeam& seam : e.seams) seams.push_back(billow::designSeamJson(seam));
+    json connections = json::array();
+    for (const billow::DesignConnection& c : e.connections) connections.push_back(c.seams);
     return json({{"ok", e.ok},
                  {"problem", e.problem},
                  {"name", name},
@@ -553,6 +560,7 @@ class TargetSession {
                  {"iterations", e.iterations},
                  {"ms", e.ms},
                  {"seams", e.ok ? seams : json::array()},
+                 {"connections", e.ok ? connections : json::array()},
                  {"balloon", e.ok ? balloonJson(e.balloon) : json(nullptr)}});
   }
 

@@ -142,7 +142,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   for (int i : looksToOptimize(looks, families, optimized)) looked.push_back(&tried[i]);
   for (size_t i = 0; i < looked.size(); ++i) {
     Tried& t = *looked[i];
-    t.result = evaluateLayout(*scene, t.first.seams, int(t.first.seams.size()), evaluate);
+    t.result = evaluateLayout(*scene, t.first.seams, int(t.first.seams.size()), evaluate, t.first.connections);
     if (!quiet) {
       if (t.result.ok)
         std::fprintf(stderr, "  optimize %zu/%zu  %-54s %2d panels, seams %.2f m, distance %.2f %% (%.1f s)\n", i + 1,
@@ -172,6 +172,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
       design.connections.clear();
     }
     design.seams = t.result.seams;
+    design.connections.insert(design.connections.end(), t.result.connections.begin(), t.result.connections.end());
     if (request.symmetryAxis >= 0) design.extra["symmetry"] = {{"axis", std::string(1, "xyz"[request.symmetryAxis])}};
     const std::string stem = "layout-" + std::to_string(r + 1);
     writeTextFile(dir + "/" + stem + ".billow.json", writeDesignJson(design) + "\n");

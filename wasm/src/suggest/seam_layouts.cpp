@@ -94,7 +94,7 @@ ProposalKey proposalKey(const LayoutProposal& proposal, double size) {
   const std::vector<SectionPlane>& planes = proposal.planes;
   const std::vector<Eigen::Vector3d>& meridians = proposal.meridians;
   ProposalKey key;
-  if (proposal.outlineView >= 0) key.push_back({2, proposal.outlineView, 0, 0, 0});
+  if (proposal.outlineView >= 0) key.push_back({2, proposal.outlineView, proposal.connected, 0, 0});
   const auto rounded = [](double x) { return std::llround(x * 1e4); };
   for (const SectionPlane& p : planes) {
     // n and -n with -offset are one plane: the first non-zero component positive.
@@ -123,6 +123,8 @@ std::string LayoutOpenings::description() const {
   add(tubeCuts, "cut that opens a tube", "cuts that open tubes");
   add(limbSeams, "seam around a limb", "seams around limbs");
   add(grazingLoops, "loop left out where it only grazed the shape", "loops left out where they only grazed the shape");
+  add(connections, "internal connection joining a band seam's front and back pieces inside",
+      "internal connections joining the band seams' front and back pieces inside");
   return out;
 }
 
@@ -219,20 +221,23 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
     for (int axis = 0; axis < 3; ++axis) {
       if (axis == view || axis == s) continue;
       const AreaAlong along = areaAlong(faces, axis);
-      for (int k = 0; k <= kMostBands; ++k) {
-        const int panels = 2 * (k + 1);
-        if (panels > request.panels || (k > 0 && panels < fewestPanels(request.panels))) continue;
-        LayoutProposal p;
-        p.axis = axis, p.gores = 2, p.bands = k, p.center = center, p.outlineView = view;
-        for (int j = 1; j <= k; ++j) p.planes.push_back({Eigen::Vector3d::Unit(axis), along.at(double(j) / (k + 1))});
-        ProposalKey key = proposalKey(p, size);
-        if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-        seen.push_back(std::move(key));
-        p.name = k == 0 ? "front and back, sealed " + outline
-                        : std::to_string(k + 1) + " bands across the " + axisName(axis, request.up) +
-                              ", each in two pieces " + outline;
-        out.push_back(std::move(p));
-      }
+      for (int k = 0; k <= kMostBands; ++k)
+        for (int connected = 0; connected < (k > 0 ? 2 : 1); ++connected) {
+          // Each band seam's connection is an internal panel to cut too.
+          const int panels = 2 * (k + 1) + connected * k;
+          if (panels > request.panels || (k > 0 && panels < fewestPanels(request.panels))) continue;
+          LayoutProposal p;
+          p.axis = axis, p.gores = 2, p.bands = k, p.center = center, p.outlineView = view, p.connected = connected;
+          for (int j = 1; j <= k; ++j) p.planes.push_back({Eigen::Vector3d::Unit(axis), along.at(double(j) / (k + 1))});
+          ProposalKey key = proposalKey(p, size);
+          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+          seen.push_back(std::move(key));
+          p.name = k == 0 ? "front and back, sealed " + outline
+                          : std::to_string(k + 1) + " bands across the " + axisName(axis, request.up) +
+                                ", each in two pieces " + outline;
+          if (connected) p.name += ", held together inside";
+          out.push_back(std::move(p));
+        }
     }
   }
   return out;
@@ -293,9 +298,53 @@ size_t nearestPoint(const SectionLoop& loop, const Eigen::Vector3d& p, double& d
   return best;
 }
 
+// Where a loop crosses a plane: on the straight piece between two of its points (in the face the later one names),
+// with the index of the earlier.
+struct LoopCrossing {
+  SectionPoint point;
+  size_t after = 0;
+};
+
+std::vector<LoopCrossing> planeCrossings(const TriMesh& mesh, const SectionLoop& loop, const SectionPlane& plane) {
+  std::vector<LoopCrossing> out;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const SectionPoint& a = loop[i];
+    const SectionPoint& b = loop[(i + 1) % loop.size()];
+    const double sa = a.position.dot(plane.normal) - plane.offset, sb = b.position.dot(plane.normal) - plane.offset;
+    if ((sa < 0) == (sb < 0)) continue;
+    LoopCrossing c;
+    c.after = i;
+    c.point.position = a.position + sa / (sa - sb) * (b.position - a.position);
+    const int f = b.at.face;
+    c.point.at.face = f;
+    c.point.at.bary = closestPointBarycentric(c.point.position, mesh.V.row(mesh.F(f, 0)), mesh.V.row(mesh.F(f, 1)),
+                                              mesh.V.row(mesh.F(f, 2)));
+    out.push_back(c);
+  }
+  return out;
+}
+
+// Makes `point` one of a closed seam's control points: in place of one within `near`, else between the two it
+// lies between (the least detour), so that seams meeting it there meet it exactly.
+void passThrough(const TriMesh& mesh, std::vector<SurfacePoint>& controls, const SectionPoint& point, double near) {
+  size_t best = 0;
+  double detour = INFINITY;
+  for (size_t j = 0; j < controls.size(); ++j) {
+    const Eigen::Vector3d a = position(mesh, controls[j]), b = position(mesh, controls[(j + 1) % controls.size()]);
+    if ((a - point.position).norm() < near) {
+      controls[j] = point.at;
+      return;
+    }
+    if (const double d = (a - point.position).norm() + (point.position - b).norm() - (a - b).norm(); d < detour)
+      detour = d, best = j;
+  }
+  controls.insert(controls.begin() + long(best) + 1, point.at);
+}
+
 }  // namespace
 
-std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal) {
+std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal,
+                                      std::vector<DesignConnection>* connections) {
   const double spacing = seamPointSpacing(target);
   const Eigen::Vector3d e = Eigen::Vector3d::Unit(proposal.axis);
   std::array<Pole, 2> poles;
@@ -304,24 +353,84 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
     if (!poles[0].found || !poles[1].found)
       throw Error("suggest.no-poles", "its axis passes beside the shape, so its gores have no ends to meet at");
   }
+  // Seams are named by what they are in the layout, short enough for the seam list and an internal panel's label.
   std::vector<DesignSeam> seams;
-  const auto name = [&] { return proposal.name + ", seam " + std::to_string(seams.size() + 1); };
+  // The planes' names: a halving plane's, then the bands' in order.
+  const bool halving = proposal.outlineView < 0 && proposal.gores == 2;
+  const auto planeName = [&](size_t j) {
+    return halving && j == 0 ? std::string("halving seam") : "band " + std::to_string(j + (halving ? 0 : 1));
+  };
+  std::vector<std::pair<size_t, size_t>> split;  // the band loops laid as two seams: their plane's and their index
   if (proposal.outlineView >= 0) {
     const Eigen::Vector3d towards = Eigen::Vector3d::Unit(proposal.outlineView);
     const std::optional<Outline> outline = outlineSeenFrom(target, towards);
     if (!outline) throw Error("suggest.no-outline", "the shape shows no outline from there");
     // Corners kept, as the Outline tool keeps them: a seam that skipped a sharp turn would cut a tip off.
-    seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, outline->loop, spacing, true)));
+    std::vector<SurfacePoint> rim = sectionSeamPoints(target, outline->loop, spacing, true);
+    seams.push_back({});
+    // A connected proposal's band loops that cross the rim twice: a front and a back piece from crossing to crossing,
+    // the rim passing through both.
+    if (proposal.connected && outline->holes.empty())
+      for (size_t j = 0; j < proposal.planes.size(); ++j) {
+        const std::vector<SectionLoop> loops =
+            planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset);
+        const std::vector<LoopCrossing> crossings = planeCrossings(target, outline->loop, proposal.planes[j]);
+        for (size_t l = 0; l < loops.size(); ++l) {
+          const SectionLoop& loop = loops[l];
+          // The crossings on this loop, each with the piece of the loop it lies on.
+          std::vector<LoopCrossing> on;
+          for (const LoopCrossing& c : crossings)
+            for (size_t i = 0; i < loop.size(); ++i) {
+              const Eigen::Vector3d a = loop[i].position, ab = loop[(i + 1) % loop.size()].position - a;
+              const double t =
+                  std::clamp((c.point.position - a).dot(ab) / std::max(ab.squaredNorm(), 1e-300), 0.0, 1.0);
+              if ((a + t * ab - c.point.position).norm() < 1e-6 * spacing) {
+                on.push_back({c.point, i});
+                break;
+              }
+            }
+          if (on.size() != 2 || (on[0].point.position - on[1].point.position).norm() < spacing) continue;
+          const size_t first = seams.size();
+          for (int piece = 0; piece < 2; ++piece) {
+            const LoopCrossing& from = on[piece];
+            const LoopCrossing& to = on[1 - piece];
+            SectionLoop path;
+            for (size_t i = (from.after + 1) % loop.size();; i = (i + 1) % loop.size()) {
+              if ((loop[i].position - from.point.position).norm() >= 0.25 * spacing &&
+                  (loop[i].position - to.point.position).norm() >= 0.25 * spacing)
+                path.push_back(loop[i]);
+              if (i == to.after) break;
+            }
+            std::vector<SurfacePoint> controls{from.point.at};
+            if (path.size() >= 2)
+              for (const SurfacePoint& p : sectionPathPoints(target, path, spacing)) controls.push_back(p);
+            controls.push_back(to.point.at);
+            // Which side it lies on: the surface there faces the viewer, or away.
+            double facing = 0;
+            for (const SectionPoint& p : path) {
+              const Eigen::Vector3d a = target.V.row(target.F(p.at.face, 0)), b = target.V.row(target.F(p.at.face, 1)),
+                                    c = target.V.row(target.F(p.at.face, 2));
+              facing += (b - a).cross(c - a).normalized().dot(towards);
+            }
+            seams.push_back(makeSeam(planeName(j) + (facing >= 0 ? ", front" : ", back"), false, controls));
+          }
+          for (const LoopCrossing& c : on) passThrough(target, rim, c.point, 0.25 * spacing);
+          if (connections) connections->push_back({{int(first), int(first) + 1}});
+          split.emplace_back(j, l);
+        }
+      }
+    seams[0] = makeSeam("outline", true, rim);
     // Seen through a handle, the front and back are rings: each hole's rim, and two sections across each ring.
     const std::vector<SectionLoop> across = acrossHandles(target, outline->loop, outline->holes, towards);
     if (across.size() != 2 * outline->holes.size())
       throw Error("suggest.no-outline", "its outline makes rings on this shape that no section cuts open");
     for (const SectionLoop& hole : outline->holes)
-      seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, hole, spacing, true)));
+      seams.push_back(makeSeam("hole in the outline", true, sectionSeamPoints(target, hole, spacing, true)));
     for (const SectionLoop& loop : across)
-      seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, loop, spacing)));
+      seams.push_back(makeSeam("across a ring", true, sectionSeamPoints(target, loop, spacing)));
   }
-  for (const Eigen::Vector3d& direction : proposal.meridians) {
+  for (size_t m = 0; m < proposal.meridians.size(); ++m) {
+    const Eigen::Vector3d& direction = proposal.meridians[m];
     const Eigen::Vector3d normal = e.cross(direction).normalized();
     const std::vector<SectionLoop> loops = planeSection(target, normal, normal.dot(proposal.center));
     // Which side of the axis a loop (or a piece of one) lies on: its points' mean along the direction.
@@ -343,7 +452,8 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
     for (size_t l = 0; l < loops.size(); ++l) {
       const SectionLoop& loop = loops[l];
       if (l != poleLoop) {  // a limb the plane cuts on its own, on this side
-        if (onThisSide(loop)) seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, loop, spacing)));
+        if (onThisSide(loop))
+          seams.push_back(makeSeam("around a limb", true, sectionSeamPoints(target, loop, spacing)));
         continue;
       }
       double d = 0;
@@ -371,13 +481,16 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
           for (const SurfacePoint& p : sectionPathPoints(target, piece, spacing)) controls.push_back(p);
         controls.push_back(to.point.at);
         if (half == 1) std::reverse(controls.begin(), controls.end());
-        seams.push_back(makeSeam(name(), false, controls));
+        seams.push_back(makeSeam("meridian " + std::to_string(m + 1), false, controls));
       }
     }
   }
-  for (const SectionPlane& plane : proposal.planes)
-    for (const SectionLoop& loop : planeSection(target, plane.normal, plane.offset))
-      seams.push_back(makeSeam(name(), true, sectionSeamPoints(target, loop, spacing)));
+  for (size_t j = 0; j < proposal.planes.size(); ++j) {
+    const std::vector<SectionLoop> loops = planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset);
+    for (size_t l = 0; l < loops.size(); ++l)
+      if (std::find(split.begin(), split.end(), std::make_pair(j, l)) == split.end())
+        seams.push_back(makeSeam(planeName(j), true, sectionSeamPoints(target, loops[l], spacing)));
+  }
   return seams;
 }
 
@@ -391,7 +504,7 @@ namespace {
 // loses the shortest closed seam of the layout's own around it (a plane grazing a toe). The first `fixedSeams` seams
 // are the designer's and stay. Counts what it did in `opened`; returns how many seams it added or removed.
 int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::vector<DesignSeam>& seams,
-                 LayoutOpenings& opened) {
+                 std::vector<DesignConnection>& connections, LayoutOpenings& opened) {
   const Segmentation& sg = scene.segmentation;
   const TriMesh& cut = sg.mesh;
   int added = 0;
@@ -418,7 +531,11 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
   }
   if (!removed.empty()) {
     std::sort(removed.rbegin(), removed.rend());
-    for (int seam : removed) seams.erase(seams.begin() + seam);
+    for (int seam : removed) {
+      seams.erase(seams.begin() + seam);
+      for (DesignConnection& c : connections)
+        for (int& i : c.seams) i -= i > seam;
+    }
     opened.grazingLoops += int(removed.size());
     return int(removed.size());
   }
@@ -530,12 +647,12 @@ double msSince(Clock::time_point t0) { return std::chrono::duration<double, std:
 // evaluateLayout's first part: the seams traced and segmented, with those that open its segments into panels; ok
 // when every segment is a panel. The scene keeps the segmentation for measureLayout.
 LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
-                           const EvaluateOptions& options) {
+                           const EvaluateOptions& options, const std::vector<DesignConnection>& connections) {
   LayoutEvaluation out;
-  out.seams = seams;
+  out.seams = seams, out.connections = connections;
   const double spacing = seamPointSpacing(scene.target);
   for (int round = 0;; ++round) {
-    scene.design.seams = out.seams;
+    scene.design.seams = out.seams, scene.design.connections = out.connections;
     try {
       traceDesignSeams(scene);
     } catch (const Error& e) {
@@ -544,7 +661,7 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
     }
     segmentDesignScene(scene);
     if (scene.segmentation.problems.empty() || round == options.openingRounds ||
-        openSegments(scene, spacing, fixedSeams, out.seams, out.opened) == 0)
+        openSegments(scene, spacing, fixedSeams, out.seams, out.connections, out.opened) == 0)
       break;
   }
   const Segmentation& segmentation = scene.segmentation;
@@ -552,7 +669,8 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
     out.problem = segmentation.problems.front().message;
     return out;
   }
-  out.panels = int(segmentation.segments.size());
+  out.panels = int(segmentation.segments.size() + out.connections.size());
+  out.opened.connections = int(out.connections.size());
   for (const SeamCurve& curve : scene.curves) out.seamLength += curve.length;
   out.ok = true;
   return out;
@@ -597,9 +715,9 @@ void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOpti
 }  // namespace
 
 LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
-                                const EvaluateOptions& options) {
+                                const EvaluateOptions& options, const std::vector<DesignConnection>& connections) {
   const Clock::time_point t0 = Clock::now();
-  LayoutEvaluation out = layLayout(scene, seams, fixedSeams, options);
+  LayoutEvaluation out = layLayout(scene, seams, fixedSeams, options, connections);
   if (out.ok) measureLayout(scene, out, options);
   out.ms = msSince(t0);
   return out;
@@ -629,7 +747,7 @@ std::string layoutFamily(const LayoutProposal& p) {
   Eigen::Index halving = -1;
   if (p.outlineView < 0 && p.gores == 2 && !p.planes.empty()) p.planes[0].normal.cwiseAbs().maxCoeff(&halving);
   return std::to_string(p.outlineView) + " " + std::to_string(p.axis) + " " + std::to_string(p.bands > 0) + " " +
-         std::to_string(p.gores > 2) + " " + std::to_string(halving);
+         std::to_string(p.gores > 2) + " " + std::to_string(halving) + (p.connected ? " connected" : "");
 }
 
 std::vector<int> looksToOptimize(const std::vector<const LayoutEvaluation*>& looks,
@@ -657,9 +775,12 @@ LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal
   LayoutEvaluation look;
   try {
     std::vector<DesignSeam> seams = kept;
-    const std::vector<DesignSeam> laid = proposalSeams(scene.target, proposal);
+    std::vector<DesignConnection> connections;
+    const std::vector<DesignSeam> laid = proposalSeams(scene.target, proposal, &connections);
     seams.insert(seams.end(), laid.begin(), laid.end());
-    look = layLayout(scene, seams, int(kept.size()), options);
+    for (DesignConnection& c : connections)
+      for (int& i : c.seams) i += int(kept.size());
+    look = layLayout(scene, seams, int(kept.size()), options, connections);
   } catch (const Error& e) {
     look.problem = e.what();
   }

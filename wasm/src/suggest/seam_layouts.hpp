@@ -7,8 +7,9 @@
 // beach ball's; two gores: the plane's whole loop, halves) and k planes across it at equal shares of the surface
 // (bands), g (k + 1) panels on a round shape, more where a plane cuts a limb on its own. Or of a front and a back
 // sealed along the outline seen along one axis (seams/outline.hpp), as a foil balloon is made, with k bands across
-// another: 2 (k + 1) panels. A layout that keeps the target's mirror symmetry lays only what is its own mirror
-// image across the symmetry plane.
+// another: 2 (k + 1) panels, and k more where each band's loop is a front and a back seam joined inside by an internal
+// connection (a flat shape's pillow held to its thickness). A layout that keeps the target's mirror symmetry lays only
+// what is its own mirror image across the symmetry plane.
 #pragma once
 #include <functional>
 #include <string>
@@ -39,6 +40,10 @@ struct LayoutProposal {
   // A front and a back sealed along the outline seen along this axis of the target's own (a foil balloon's two
   // pieces, seams/outline.hpp), in place of gores; -1: none.
   int outlineView = -1;
+  // Along an outline: each band's loop laid as two seams, its front and its back piece, joined inside by an internal
+  // connection (paper Sec. 3.2), which holds the two pieces as far apart as the target is thick there, where a pillow
+  // would bulge (a flat shape, a hand, a fish seen from its side).
+  bool connected = false;
 };
 
 struct LayoutRequest {
@@ -62,8 +67,11 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
 // The proposal's seams on `target`, of weight 1, control points about 2 % of the target's diagonal apart (the
 // section tool's spacing): each meridian a seam from pole to pole (where the axis line leaves the surface first and
 // last), meeting the others there, and the loops its plane cuts on its side around a limb; every loop of the other
-// planes a closed seam. Throws billow::Error (suggest.no-poles) where the meridians have no poles to meet at.
-std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal);
+// planes a closed seam, but that a connected proposal's band loop crossing its outline twice is two seams from
+// crossing to crossing, whose internal connections go to `connections` (indices into the seams returned). Throws
+// billow::Error (suggest.no-poles) where the meridians have no poles to meet at.
+std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal,
+                                      std::vector<DesignConnection>* connections = nullptr);
 
 // A layout's balloon as the designer sees it on its card: the outer surface of its evaluated shape (the optimizer's
 // mesh and inflated positions, internal panels left out since they are not seen).
@@ -79,6 +87,7 @@ struct LayoutOpenings {
   int tubeCuts = 0;      // cuts that open a tube or a holed part
   int limbSeams = 0;     // sections across a part too big for its seam, around a limb
   int grazingLoops = 0;  // loops of its own left out, that only grazed the shape (a tiny or thin part)
+  int connections = 0;   // band loops laid as a front and a back seam joined inside by an internal connection
   // In the designer's words ("2 cuts that open tubes, 1 seam around a limb"), empty when nothing was done.
   std::string description() const;
 };
@@ -86,10 +95,12 @@ struct LayoutOpenings {
 struct LayoutEvaluation {
   bool ok = false;
   std::string problem;  // why it was not scored, in the designer's words
-  // The layout's seams, with those that opened its segments into panels (evaluateLayout).
+  // The layout's seams, with those that opened its segments into panels (evaluateLayout), and its internal
+  // connections between them.
   std::vector<DesignSeam> seams;
+  std::vector<DesignConnection> connections;
   LayoutOpenings opened;
-  int panels = 0;
+  int panels = 0;         // internal panels included: they are cut too
   double seamLength = 0;  // [m], every seam once
   // After the coarse optimization, relative to the target's diagonal: each way's RMS, and the worse of the two, by
   // which layouts are ranked (one way alone reads close for a shape that leaves a limb out; the app's figure).
@@ -112,11 +123,12 @@ struct EvaluateOptions {
   int openingRounds = 3;
 };
 
-// Traces and segments `seams` on the scene's target (scene.design's seams become them), adds the seams that open
-// its segments into panels (never changing its first `fixedSeams`, the designer's own), and when every segment is a
-// disk without a problem, flattens, optimizes at the coarse resolution and measures.
+// Traces and segments `seams` on the scene's target (scene.design's seams and connections become them), adds the
+// seams that open its segments into panels (never changing its first `fixedSeams`, the designer's own), and when
+// every segment is a disk without a problem, flattens, optimizes at the coarse resolution and measures.
 LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
-                                const EvaluateOptions& options = {});
+                                const EvaluateOptions& options = {},
+                                const std::vector<DesignConnection>& connections = {});
 
 // A first look at a proposal (evaluateLayout without an iteration): its seams laid after the designer's `kept`. Not
 // ok, and why, where it cannot be laid (suggest.no-poles), makes more than `panelsAtMost` panels, or ends with the

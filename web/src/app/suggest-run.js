@@ -77,7 +77,8 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
     await Promise.all(
       clients.map(async (client) => {
         for (let next = queue.shift(); next; next = queue.shift()) {
-          const layout = await call(client, Op.suggestOptimize, { ...args, index: next.index, seams: next.seams });
+          const { index, seams, connections } = next;
+          const layout = await call(client, Op.suggestOptimize, { ...args, index, seams, connections });
           optimized++;
           if (!layout.ok) notUsed.push({ name: next.name, why: layout.problem });
           else layouts.push({ ...layout, description: next.description }); // what its look did to its sections

@@ -278,7 +278,10 @@ export class SeamSuggestions {
     const seams = [...design.seams.slice(0, kept), ...layout.seams.slice(kept)];
     const { symmetry, ...rest } = design;
     const axis = this.request?.axis;
-    let next = { ...rest, seams, connections: kept ? design.connections : [], ...(axis ? { symmetry: { axis } } : symmetry ? { symmetry } : {}) };
+    // The layout's internal connections ([a, b] pairs, as the design document writes them) after the kept ones; both
+    // name seams by their index in `seams`.
+    const connections = [...(kept ? design.connections : []), ...(layout.connections ?? []).map((pair) => ({ seams: pair }))];
+    let next = { ...rest, seams, connections, ...(axis ? { symmetry: { axis } } : symmetry ? { symmetry } : {}) };
     // The layout's mirror images become twins, so that editing one side edits the other.
     if (axis) next = linkMirrorTwins(next, app.target, symmetryPlane(next, app.target), kept);
     app.seams.selection = null;

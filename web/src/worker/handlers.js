@@ -174,12 +174,13 @@ export function createHandlers(api) {
       }
       return { tried: proposals.length, notUsed, optimize, ofOneFamily };
     },
-    // A layout of the suggestion, optimized at its coarse resolution from the seams its look (on this worker or
-    // another) ended with; the suggestion is started here too where this worker has not (restarted after a crash).
-    *[Op.suggestOptimize]({ index, seams, kept = [], ...options }) {
+    // A layout of the suggestion, optimized at its coarse resolution from the seams and internal connections its look
+    // (on this worker or another) ended with; the suggestion is started here too where this worker has not (restarted
+    // after a crash).
+    *[Op.suggestOptimize]({ index, seams, connections = [], kept = [], ...options }) {
       startSuggestion(kept, options);
       yield { stage: 'optimizing the layout' };
-      return { index, ...requireSession().suggestOptimize(index, seams) };
+      return { index, ...requireSession().suggestOptimize(index, seams, connections) };
     },
     *[Op.exportPattern]({ patternText, options }) {
       yield { stage: 'laying out the panels' };

@@ -35,12 +35,13 @@ export const Op = Object.freeze({
   // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, part, parts } ->
   // { tried, notUsed: [{ index, name, why }] }: the seam layouts for the target, of which this worker looks at those
   // whose index is `part` modulo `parts`; progress carries each as it is looked at ({ look: { index, name, panels,
-  // seamLength, distance, inflatedToTarget, targetToInflated, seams, balloon } }, its flattened panels' figures);
+  // seamLength, distance, inflatedToTarget, targetToInflated, seams, connections, balloon } }, its flattened panels'
+  // figures);
   // cancellable. Several workers share one suggestion (web/src/app/suggest-run.js).
   suggestLook: 'suggestLook',
-  // { index, seams, ...suggestLook's args } -> layout `index` of that suggestion, optimized at a coarse resolution from
-  // the seams its look ended with, on any worker (the suggestion started there if it was not: a worker restarted
-  // after a crash) -> the look's fields, and sheetUse.
+  // { index, seams, connections, ...suggestLook's args } -> layout `index` of that suggestion, optimized at a coarse
+  // resolution from the seams and internal connections its look ended with, on any worker (the suggestion started
+  // there if it was not: a worker restarted after a crash) -> the look's fields, and sheetUse.
   suggestOptimize: 'suggestOptimize',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',

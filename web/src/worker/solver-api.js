@@ -283,9 +283,9 @@ export class TargetSession {
 
   // Suggested seam layouts: kept (the designer's seams the layouts add to), options: buildPattern's and { panels,
   // symmetry ('x' | 'y' | 'z' | null), maxIterations } -> { proposals: [name] }; then suggestLook(i), a first look at
-  // layout i, and suggestOptimize(i, seams), it optimized from the seams its look ended with (a look of any worker's):
-  // { ok, problem, name, panels, seamLength,
-  // sheetUse, distance, inflatedToTarget, targetToInflated, iterations, ms, seams, balloon }, balloon its inflated
+  // layout i, and suggestOptimize(i, seams, connections), it optimized from the seams and internal connections its look
+  // ended with (a look of any worker's): { ok, problem, name, panels, seamLength,
+  // sheetUse, distance, inflatedToTarget, targetToInflated, iterations, ms, seams, connections, balloon }, balloon its inflated
   // outer surface for the card's picture: { positions #V*3 [m], triangles #F*3, distance #V (signed, over the
   // target's diagonal), panel #F } as plain arrays (typed ones would be transferred away with the progress message
   // that brings a layout before the reply brings it again).
@@ -297,8 +297,8 @@ export class TargetSession {
     return SolverApi.unwrap(this.session.suggestLook(index));
   }
 
-  suggestOptimize(index, seams) {
-    return SolverApi.unwrap(this.session.suggestOptimize(index, JSON.stringify(seams)));
+  suggestOptimize(index, seams, connections = []) {
+    return SolverApi.unwrap(this.session.suggestOptimize(index, JSON.stringify(seams), JSON.stringify(connections)));
   }
 
   delete() {
