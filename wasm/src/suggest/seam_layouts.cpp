@@ -24,6 +24,10 @@ constexpr double kPi = 3.14159265358979323846;
 // Control points of a proposed seam, as the section tool spaces them (web/src/app/section.js SECTION_SPACING).
 constexpr double kSeamPointSpacing = 0.02;
 constexpr int kMostGores = 24, kMostBands = 12;
+// Two pieces sewn around an outline puff up to about this share of its width (the Mylar balloon: 1.2 x its rim's
+// radius, bench/README.md "The Mylar balloon against Paulsen"), and an internal connection can only pull them
+// together: layouts held together inside are laid only along a view the target is thinner than that along.
+constexpr double kPillowThickness = 0.6;
 // A layout is laid for as few as half the panels asked for (four fewer at small counts): a limb cut on its own, or
 // opened, adds panels on most shapes (the penguin's 4 bands in two pieces along its outline make 12, not 8). A look
 // that makes more than asked for is refused before it is built (lookAtLayout).
@@ -214,15 +218,17 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
   // its side, as a foil balloon is cut), the front and the back are each other's. The two pieces alone at any count:
   // where limbs leave every plane a tube to open (an octopus's coiled arms), the outline may be the one layout that
   // makes panels.
+  const Eigen::Vector3d extent = hi - lo;
   for (int view = 0; view < 3; ++view) {
     static const char* from[] = {"from the side", "from above", "from the front"};
+    const bool thin = extent[view] < kPillowThickness * std::min(extent[(view + 1) % 3], extent[(view + 2) % 3]);
     const std::string outline =
         std::string("along the outline seen ") + from[viewAxis(Eigen::Vector3d::Unit(view), request.up)];
     for (int axis = 0; axis < 3; ++axis) {
       if (axis == view || axis == s) continue;
       const AreaAlong along = areaAlong(faces, axis);
       for (int k = 0; k <= kMostBands; ++k)
-        for (int connected = 0; connected < (k > 0 ? 2 : 1); ++connected) {
+        for (int connected = 0; connected < (k > 0 && thin ? 2 : 1); ++connected) {
           // Each band seam's connection is an internal panel to cut too.
           const int panels = 2 * (k + 1) + connected * k;
           if (panels > request.panels || (k > 0 && panels < fewestPanels(request.panels))) continue;

@@ -42,7 +42,7 @@ struct LayoutProposal {
   int outlineView = -1;
   // Along an outline: each band's loop laid as two seams, its front and its back piece, joined inside by an internal
   // connection (paper Sec. 3.2), which holds the two pieces as far apart as the target is thick there, where a pillow
-  // would bulge (a flat shape, a hand, a fish seen from its side).
+  // would bulge. Only along a view the target is thin along (a hand, a cushion seen from the front).
   bool connected = false;
 };
 
