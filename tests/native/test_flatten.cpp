@@ -197,6 +197,59 @@ TEST(FlattenEnergy, PolygonAnglesOfACcwSquare) {
   EXPECT_FALSE(isSimpleCcwPolygon(bowtie));
 }
 
+// The grid that spares isSimpleCcwPolygon the pairs of edges far apart changes no answer: against every pair checked,
+// on star-shaped polygons (simple) with some vertices pushed across the middle (mostly not), touching ones included.
+TEST(FlattenEnergy, SimplePolygonsAreToldAsEveryPairOfEdgesTellsThem) {
+  const auto meet = [](const Eigen::Vector2d& p0, const Eigen::Vector2d& p1, const Eigen::Vector2d& q0,
+                       const Eigen::Vector2d& q1) {
+    const auto cross = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b) { return a.x() * b.y() - a.y() * b.x(); };
+    const double d1 = cross(p1 - p0, q0 - p0), d2 = cross(p1 - p0, q1 - p0), d3 = cross(q1 - q0, p0 - q0),
+                 d4 = cross(q1 - q0, p1 - q0);
+    if (d1 * d2 < 0 && d3 * d4 < 0) return true;
+    const auto on = [](const Eigen::Vector2d& a, const Eigen::Vector2d& b, const Eigen::Vector2d& p) {
+      return p.x() >= std::min(a.x(), b.x()) && p.x() <= std::max(a.x(), b.x()) && p.y() >= std::min(a.y(), b.y()) &&
+             p.y() <= std::max(a.y(), b.y());
+    };
+    return (d1 == 0 && on(p0, p1, q0)) || (d2 == 0 && on(p0, p1, q1)) || (d3 == 0 && on(q0, q1, p0)) ||
+           (d4 == 0 && on(q0, q1, p1));
+  };
+  const auto everyPair = [&](const Points2& Q) {
+    const int n = int(Q.rows());
+    if (signedArea(Q) <= 0) return false;
+    for (int i = 0; i < n; ++i) {
+      const Eigen::Vector2d a = Q.row((i + 1) % n) - Q.row(i), b = Q.row((i + 2) % n) - Q.row((i + 1) % n);
+      if (a.x() * b.y() - a.y() * b.x() == 0 && a.dot(b) < 0) return false;
+      for (int k = i + 2; k < n; ++k)
+        if (!(i == 0 && k == n - 1) && meet(Q.row(i), Q.row((i + 1) % n), Q.row(k), Q.row((k + 1) % n))) return false;
+    }
+    return true;
+  };
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(0, 1);
+  int simple = 0, crossed = 0;
+  for (int trial = 0; trial < 400; ++trial) {
+    const int n = 3 + trial % 200;
+    Points2 Q(n, 2);
+    for (int j = 0; j < n; ++j) {
+      const double angle = 2 * M_PI * j / n, radius = 1 + 2 * u(rng);
+      Q.row(j) << radius * std::cos(angle), radius * std::sin(angle);
+    }
+    // Some vertices pushed across the middle, some onto a neighbour's edge (a touch).
+    for (int moved = 0; moved < trial % 4; ++moved) {
+      const int j = int(u(rng) * n) % n;
+      if (moved % 2 == 0)
+        Q.row(j) *= -0.5;
+      else
+        Q.row(j) = 0.5 * (Q.row((j + 2) % n) + Q.row((j + 3) % n));
+    }
+    const bool expected = everyPair(Q);
+    EXPECT_EQ(isSimpleCcwPolygon(Q), expected) << "trial " << trial << ", " << n << " vertices";
+    (expected ? simple : crossed)++;
+  }
+  EXPECT_GT(simple, 50);
+  EXPECT_GT(crossed, 50);
+}
+
 TEST(Flatten, CylinderPatchUnrollsExactly) {
   const TriMesh m = cylinderPatch(30, 12);
   const FlattenResult r = flattenSegment(m);

@@ -8,6 +8,7 @@
 #include <Eigen/Cholesky>
 #include <Eigen/SparseCholesky>
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numeric>
 #include <vector>
@@ -67,15 +68,53 @@ bool isSimpleCcwPolygon(const Points2& Q) {
     // Adjacent edges only meet at their shared vertex, unless the polygon folds back on itself there.
     const Vec2 a = P(i + 1) - P(i), b = P(i + 2) - P(i + 1);
     if (cross2(a, b) == 0 && a.dot(b) < 0) return false;
-    for (int k = i + 2; k < n; ++k) {
-      if (i == 0 && k == n - 1) continue;
-      const Vec2 p0 = P(i), p1 = P(i + 1), q0 = P(k), q1 = P(k + 1);
-      if (std::max(p0.x(), p1.x()) < std::min(q0.x(), q1.x()) || std::max(q0.x(), q1.x()) < std::min(p0.x(), p1.x()) ||
-          std::max(p0.y(), p1.y()) < std::min(q0.y(), q1.y()) || std::max(q0.y(), q1.y()) < std::min(p0.y(), p1.y()))
-        continue;
-      if (segmentsMeet(p0, p1, q0, q1)) return false;
+  }
+  // Two edges can meet only where their boxes overlap, and then they share a cell of a grid each edge is binned into
+  // the cells its box covers: about n cells, so a panel's outline of a thousand edges is not checked pair by pair.
+  const Vec2 lo = Q.colwise().minCoeff().transpose(), size = Q.colwise().maxCoeff().transpose() - lo;
+  const double cell = std::max(std::sqrt(size.x() * size.y() / n), 1e-300);
+  const int nx = std::clamp(int(size.x() / cell) + 1, 1, n), ny = std::clamp(int(size.y() / cell) + 1, 1, n);
+  const auto cellOf = [&](double x, double lower, int count) {
+    return std::clamp(int((x - lower) / cell), 0, count - 1);
+  };
+  const auto box = [&](int i) {
+    const Vec2 p = P(i), q = P(i + 1);
+    return std::array<int, 4>{cellOf(std::min(p.x(), q.x()), lo.x(), nx), cellOf(std::max(p.x(), q.x()), lo.x(), nx),
+                              cellOf(std::min(p.y(), q.y()), lo.y(), ny), cellOf(std::max(p.y(), q.y()), lo.y(), ny)};
+  };
+  std::vector<int> start(size_t(nx) * ny + 1, 0), edges;
+  for (int pass = 0; pass < 2; ++pass) {
+    for (int i = 0; i < n; ++i) {
+      const std::array<int, 4> b = box(i);
+      for (int x = b[0]; x <= b[1]; ++x)
+        for (int y = b[2]; y <= b[3]; ++y) {
+          const size_t c = size_t(x) * ny + y;
+          if (pass == 0)
+            ++start[c + 1];
+          else
+            edges[size_t(start[c]++)] = i;
+        }
+    }
+    if (pass == 0) {
+      std::partial_sum(start.begin(), start.end(), start.begin());
+      edges.resize(size_t(start.back()));
+    } else {  // each cell's start moved to the next's: back by one cell
+      std::rotate(start.rbegin(), start.rbegin() + 1, start.rend());
+      start[0] = 0;
     }
   }
+  for (size_t c = 0; c + 1 < start.size(); ++c)
+    for (int u = start[c]; u < start[c + 1]; ++u)
+      for (int v = u + 1; v < start[c + 1]; ++v) {
+        const int i = std::min(edges[size_t(u)], edges[size_t(v)]), k = std::max(edges[size_t(u)], edges[size_t(v)]);
+        if (k == i + 1 || (i == 0 && k == n - 1)) continue;  // neighbours meet at their shared vertex
+        const Vec2 p0 = P(i), p1 = P(i + 1), q0 = P(k), q1 = P(k + 1);
+        if (std::max(p0.x(), p1.x()) < std::min(q0.x(), q1.x()) ||
+            std::max(q0.x(), q1.x()) < std::min(p0.x(), p1.x()) ||
+            std::max(p0.y(), p1.y()) < std::min(q0.y(), q1.y()) || std::max(q0.y(), q1.y()) < std::min(p0.y(), p1.y()))
+          continue;
+        if (segmentsMeet(p0, p1, q0, q1)) return false;
+      }
   return true;
 }
 
