@@ -17,9 +17,10 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
   await page.click('.suggest-go');
   await page.waitForSelector('.suggest-progress:not([hidden])');
   await page.waitForFunction(() => /layouts tried/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 240000 });
+  // A card's name: its title, and the rest of the layout's name below it.
   const cards = await page.$$eval('.suggest-card', (els) =>
     els.map((el) => ({
-      name: el.querySelector('h3').textContent,
+      name: [el.querySelector('h3'), el.querySelector('.suggest-kind')].filter(Boolean).map((e) => e.textContent).join(', '),
       panels: Number(el.querySelector('[data-figure="panels"]').textContent),
       distance: parseFloat(el.querySelector('[data-figure="distance"]').textContent),
       seams: el.querySelector('[data-figure="seam-length"]').textContent,
@@ -125,7 +126,7 @@ test('a flat shape gets a layout held together inside, and using it makes its in
   await page.click('.suggest-go');
   await page.waitForFunction(() => /layouts tried/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 240000 });
   const cards = await page.$$eval('.suggest-card', (els) =>
-    els.map((el) => ({ rank: el.dataset.rank, name: el.querySelector('h3').textContent, text: el.textContent, distance: parseFloat(el.querySelector('[data-figure="distance"]').textContent) })),
+    els.map((el) => ({ rank: el.dataset.rank, name: el.querySelector('h3').title, text: el.textContent, distance: parseFloat(el.querySelector('[data-figure="distance"]').textContent) })),
   );
   const held = cards.find((card) => /held together inside/.test(card.name));
   assert.ok(held, JSON.stringify(cards));

@@ -343,8 +343,13 @@ export class SeamSuggestions {
     if (layout.name === this.usedName) card.classList.add('current');
     if (layout.name === this.shownName) card.classList.add('shown');
     if (layout.firstLook) card.classList.add('first-look');
+    // Its name's first clause as the card's title ("3 bands across the vertical axis"), the rest of it below ("each in
+    // two pieces along the outline seen from the front"): the whole name in bold ran to five lines.
+    const [title, ...rest] = layout.name.split(', ');
     const h = document.createElement('h3');
-    h.textContent = `${k + 1}. ${layout.name[0].toUpperCase()}${layout.name.slice(1)}`;
+    h.textContent = `${k + 1}. ${title[0].toUpperCase()}${title.slice(1)}`;
+    h.title = layout.name;
+    const kind = rest.length ? Object.assign(document.createElement('p'), { className: 'suggest-kind', textContent: rest.join(', ') }) : null;
     const shown = layout.name === this.shownName;
     const show = Object.assign(document.createElement('button'), { type: 'button', className: 'suggest-show', textContent: shown ? 'Hide' : 'Show' });
     show.setAttribute('aria-pressed', String(shown));
@@ -381,6 +386,7 @@ export class SeamSuggestions {
     buttons.append(show, use);
     if (layout.balloon) card.append(this.picture(layout));
     card.append(h);
+    if (kind) card.append(kind);
     // What was added to its sections, or left out, so that every part is a panel.
     if (layout.description) card.append(Object.assign(document.createElement('p'), { className: 'suggest-description', textContent: `With ${layout.description}.` }));
     card.append(figures, buttons);
