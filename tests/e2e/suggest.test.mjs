@@ -120,6 +120,10 @@ test('a flat shape gets a layout held together inside, and using it makes its in
     .join('\n');
   await page.setInputFiles('#file-input', { name: 'lens.obj', mimeType: 'text/plain', buffer: Buffer.from(lens) });
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'lens.obj', null, { timeout: 60000 });
+  // A roll half as wide as the lens (0.6 m across): some pieces do not fit it.
+  await page.fill('#sheet-input', '300');
+  await page.press('#sheet-input', 'Enter');
+  await page.waitForFunction(() => window.billow.test.design.fabrication.sheet_width === 300);
   await page.click('#suggest-button');
   await page.waitForSelector('dialog.suggest-dialog[open]');
   await page.fill('.suggest-panels', '5');
@@ -130,11 +134,16 @@ test('a flat shape gets a layout held together inside, and using it makes its in
   );
   const held = cards.find((card) => /held together inside/.test(card.name));
   assert.ok(held, JSON.stringify(cards));
+  // A layout with a piece wider than the roll says so, and comes after every one that fits.
+  const tooWide = cards.map((card) => /a piece is wider than yours/.test(card.text));
+  assert.ok(tooWide.some(Boolean), JSON.stringify(cards));
+  assert.ok(tooWide.every((wide, i) => wide || !tooWide.slice(0, i).some(Boolean)), JSON.stringify(cards));
   // Its card says what holds it: the connections are panels too.
   assert.match(held.text, /internal connection/);
   // The closest pillow along the rim, its bands' loops closed, lies farther from the lens.
   const pillows = cards.filter((card) => /outline seen from the front/.test(card.name) && !/held together/.test(card.name));
   if (pillows.length) assert.ok(held.distance < Math.min(...pillows.map((c) => c.distance)), JSON.stringify(cards));
+  await screenshot(page, 'suggest-sheet');
   await page.click(`.suggest-card[data-rank="${held.rank}"] .suggest-use`);
   await page.waitForFunction(() => window.billow.test.design.connections.length > 0, null, { timeout: 60000 });
   const design = await page.evaluate(() => window.billow.test.design);

@@ -169,10 +169,42 @@ TEST(SeamLayouts, GoresOfTheSphereMeetAtItsPolesAndInflateClose) {
     // Six pieces of a 1 m sphere nest on a 1 m roll, leaving some of it between them.
     EXPECT_GT(e.sheetUse, 0.2) << p.name;
     EXPECT_LT(e.sheetUse, 1.0) << p.name;
+    EXPECT_EQ(e.sheetNeeded, 0) << p.name;
     (p.gores == 6 ? gores : bands)++;
   }
   EXPECT_GE(gores, 1);
   EXPECT_GE(bands, 1);
+}
+
+// A 3 m sphere's six gores are each about 1.6 m wide: on the design's 1 m roll they do not fit, and the layout says
+// how wide a roll they need; on that roll they fit. Layouts that fit come first, then the closest.
+TEST(SeamLayouts, ALayoutWhosePiecesAreWiderThanTheSheetSaysWhatRollItNeedsAndComesAfterThoseThatFit) {
+  auto sphere = sharedScene("sphere.obj", 3.0);
+  LayoutRequest request;
+  request.panels = 6;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(sphere->target, request);
+  const auto six = std::find_if(proposals.begin(), proposals.end(),
+                                [](const LayoutProposal& p) { return p.gores == 6 && p.bands == 0; });
+  ASSERT_NE(six, proposals.end());
+  const std::vector<DesignSeam> seams = proposalSeams(sphere->target, *six);
+  EvaluateOptions options;
+  options.triangles = 400, options.maxIterations = 3;
+  const LayoutEvaluation narrow = evaluateLayout(*sphere, seams, 0, options);
+  ASSERT_TRUE(narrow.ok) << narrow.problem;
+  // A gore of a 3 m sphere: a sixth of its 9.4 m girth, and the allowance either side.
+  EXPECT_GT(narrow.sheetNeeded, 1400);
+  EXPECT_LT(narrow.sheetNeeded, 2000);
+  options.cut.sheetWidth = narrow.sheetNeeded + 1;
+  const LayoutEvaluation wide = evaluateLayout(*sphere, seams, 0, options);
+  ASSERT_TRUE(wide.ok) << wide.problem;
+  EXPECT_EQ(wide.sheetNeeded, 0);
+  EXPECT_GT(wide.sheetUse, 0.2);
+
+  LayoutEvaluation closer, fits, fitsFarther, failed;
+  closer.ok = fits.ok = fitsFarther.ok = true;
+  closer.distance = 0.01, closer.sheetNeeded = 1800;
+  fits.distance = 0.02, fitsFarther.distance = 0.03;
+  EXPECT_EQ(layoutsRanked({&closer, &failed, &fitsFarther, &fits}), (std::vector<int>{3, 2, 0}));
 }
 
 TEST(SeamLayouts, TubesAPlaneCutAroundLimbsAreOpenedIntoPanels) {
@@ -320,6 +352,7 @@ TEST(SuggestCommand, WritesRankedLayoutsThatOpenAsDesigns) {
     EXPECT_LE(l["panels"].get<int>(), 4);
     EXPECT_GT(l["sheet_use"].get<double>(), 0.0);
     EXPECT_LE(l["sheet_use"].get<double>(), 1.0);
+    EXPECT_EQ(l["sheet_needed_mm"].get<double>(), 0.0);  // pieces of a 0.6 m shape fit the 1 m roll
     // The design opens again (its target named relative to the folder) and cuts into the same disk panels.
     const auto scene = loadDesignScene((dir / l["design"].get<std::string>()).string(), {});
     EXPECT_TRUE(scene->segmentation.problems.empty()) << l["name"];

@@ -8,7 +8,7 @@ import { loadApi } from './load-module.mjs';
 import { readObjText, loadSharedMesh } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
 import { ErrorCode, Op, SolverError } from '../../web/src/worker/protocol.js';
-import { looksToOptimize, suggestLayouts } from '../../web/src/app/suggest-run.js';
+import { better, looksToOptimize, suggestLayouts } from '../../web/src/app/suggest-run.js';
 import { inThreadClient, threadedClient } from './solver-clients.mjs';
 import { linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
 
@@ -283,4 +283,29 @@ test('a flat shape\'s outline layouts are also offered held together inside, the
     if (/seen from the front/.test(look.name)) assert.ok(look.distance < 0.8 * pillow.distance, `${look.name}: ${look.distance} against ${pillow.distance}`);
   }
   assert.ok(held.some((look) => /seen from the front/.test(look.name)));
+});
+
+test('layouts whose pieces fit the design\'s sheet come before closer ones that need a wider roll', async () => {
+  // Fit first, then the closest, then the shorter seams.
+  const a = { distance: 0.01, seamLength: 1, index: 0, sheetNeeded: 1800 };
+  const b = { distance: 0.02, seamLength: 1, index: 1, sheetNeeded: 0 };
+  assert.deepEqual([a, b].sort(better), [b, a]);
+  assert.deepEqual([b, { ...a, sheetNeeded: 0 }].sort(better).map((l) => l.index), [0, 1]);
+  // A sphere 3 m across at six panels: on a narrow roll no layout fits, each needing its own width.
+  const [client] = await clientsFor('../../web/public/examples/sphere.obj');
+  const args = { panels: 6, scale: 1.5, triangles: 400, maxIterations: 4, optimize: 8 };
+  const narrow = (await suggest([client], { ...args, fabrication: { sheet_width: 500 } })).layouts;
+  assert.ok(narrow.length >= 3 && narrow.every((l) => l.sheetNeeded > 500), JSON.stringify(narrow.map((l) => l.sheetNeeded)));
+  // A roll between two of them, where the closer one needs the wider: the one that fits comes first.
+  const pair = narrow.flatMap((closer) => narrow.filter((other) => other.distance > closer.distance && other.sheetNeeded < closer.sheetNeeded - 2).map((other) => [closer, other]))[0];
+  assert.ok(pair, 'no closer layout that needs a wider roll');
+  const width = (pair[0].sheetNeeded + pair[1].sheetNeeded) / 2;
+  const ranked = (await suggest([client], { ...args, fabrication: { sheet_width: width } })).layouts;
+  const rank = (layout) => ranked.findIndex((l) => l.name === layout.name);
+  assert.ok(rank(pair[1]) >= 0 && rank(pair[1]) < rank(pair[0]), `${pair[1].name} (fits ${width} mm) before ${pair[0].name}`);
+  assert.equal(ranked[rank(pair[1])].sheetNeeded, 0);
+  assert.ok(ranked[rank(pair[0])].sheetNeeded > width);
+  // None that fits after one that does not.
+  const fits = ranked.map((l) => l.sheetNeeded === 0);
+  assert.ok(fits.every((f, i) => !f || fits.slice(0, i).every(Boolean)), JSON.stringify(ranked.map((l) => [l.name, l.sheetNeeded])));
 });

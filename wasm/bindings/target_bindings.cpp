@@ -58,7 +58,9 @@
 //     of the looks to optimize, at most how many of one family: looksToOptimize's rule) }
 //   t.suggestLook(index) -> { ok, problem (also where it makes more panels than asked for), name,
 //     description (the seams added or left out to make every part a panel, or ""),
-//     panels, seamLength [m], sheetUse (optimized only: the share of the sheet its nested cut pieces cover),
+//     panels, seamLength [m], sheetUse (optimized only: the share of the sheet its nested cut pieces cover, nested as
+//     the options' fabrication settings give: the design's "fabrication"), sheetNeeded (optimized only: the sheet
+//     width [mm] its widest piece needs where it is wider than that sheet, else 0),
 //     distance (the worse way),
 //     inflatedToTarget, targetToInflated (over the target's diagonal), promise (lookPromise: the looks worth
 //     optimizing are the lowest), family (layoutFamily; looks only), iterations, ms, seams (the kept ones first,
@@ -81,6 +83,7 @@
 #include "guarded.hpp"
 #include "io/design_json.hpp"
 #include "io/distance_json.hpp"
+#include "io/export_options_json.hpp"
 #include "io/pattern_json.hpp"
 #include "optimize/optimized_pattern.hpp"
 #include "optimize/pattern_optimizer.hpp"
@@ -402,6 +405,8 @@ class TargetSession {
       design.scale = request.scale;
       s->scene = billow::makeTargetScene(design, mesh_);
       s->evaluate.triangles = request.triangles;
+      if (o.contains("fabrication") && o["fabrication"].is_object())
+        s->evaluate.cut = billow::readExportOptionsJson(o["fabrication"]);
       if (o.contains("maxIterations") && o["maxIterations"].is_number_integer())
         s->evaluate.maxIterations = std::clamp(o["maxIterations"].get<int>(), 1, 300);
       billow::LayoutRequest layout;
@@ -553,6 +558,7 @@ class TargetSession {
                  {"panels", e.panels},
                  {"seamLength", e.seamLength},
                  {"sheetUse", e.sheetUse},
+                 {"sheetNeeded", e.sheetNeeded},
                  {"distance", e.distance},
                  {"inflatedToTarget", e.inflatedToTarget},
                  {"targetToInflated", e.targetToInflated},

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
+#include "io/export_options_json.hpp"
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
 #include "suggest/seam_layouts.hpp"
@@ -98,6 +99,13 @@ int suggestCommand(const std::vector<std::string>& argv) {
   std::string designPath;
   const Design input = readInput(args.positional[0], args, designPath);
   std::unique_ptr<DesignScene> scene = loadDesignTargetScene(input, designPath, exampleSearchPath(executableDir()));
+  if (input.extra.contains("fabrication")) {  // the sheet and allowance its pieces are nested with
+    try {
+      evaluate.cut = readExportOptionsJson(input.extra["fabrication"]);
+    } catch (const Error& e) {
+      throw Error(e.code, std::string("the design's fabrication settings: ") + e.what());
+    }
+  }
   request.up = input.target.up;
   if (args.has("--symmetry")) {
     request.symmetryAxis = designSymmetryAxis(input);
@@ -153,14 +161,11 @@ int suggestCommand(const std::vector<std::string>& argv) {
                      t.result.problem.c_str());
     }
   }
-  // Best first: the closest; the seam length breaks ties.
+  // Best first: those that fit the sheet, then the closest.
+  std::vector<const LayoutEvaluation*> results;
+  for (const Tried* t : looked) results.push_back(&t->result);
   std::vector<const Tried*> ranked;
-  for (const Tried* t : looked)
-    if (t->result.ok) ranked.push_back(t);
-  std::stable_sort(ranked.begin(), ranked.end(), [](const Tried* a, const Tried* b) {
-    return a->result.distance != b->result.distance ? a->result.distance < b->result.distance
-                                                    : a->result.seamLength < b->result.seamLength;
-  });
+  for (int i : layoutsRanked(results)) ranked.push_back(looked[size_t(i)]);
 
   fs::create_directories(dir);
   json layouts = json::array(), notUsed = json::array();
@@ -185,6 +190,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
                        {"panels", t.result.panels},
                        {"seam_length_m", t.result.seamLength},
                        {"sheet_use", t.result.sheetUse},
+                       {"sheet_needed_mm", t.result.sheetNeeded},
                        {"distance",
                         {{"worse_way_rms", t.result.distance},
                          {"inflated_to_target_rms", t.result.inflatedToTarget},

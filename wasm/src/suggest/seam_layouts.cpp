@@ -603,15 +603,17 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
   return added;
 }
 
-// The share of the sheet the panels' cut pieces cover, nested as the cut file nests them (the default seam allowance
-// and roll width; a roll just wide enough where a piece is wider).
-double sheetUse(const Pattern& pattern) {
-  ExportOptions cut;
+// The share of the sheet the panels' cut pieces cover, nested as the cut file nests them; on a roll just wide enough
+// where a piece is wider, whose width goes to `needed`.
+double sheetUse(const Pattern& pattern, ExportOptions cut, double& needed) {
+  // Per-seam allowances and fill valves name the design's own seams, not the layout's.
+  cut.seamAllowance.clear(), cut.valves.clear();
+  needed = 0;
   try {
     return layoutSheet(pattern, cut).nest.utilisation;
   } catch (const Error& e) {
     if (e.code != "export.sheet-too-narrow" || !(e.sheetWidth > cut.sheetWidth)) throw;
-    cut.sheetWidth = e.sheetWidth;
+    cut.sheetWidth = needed = e.sheetWidth;
     return layoutSheet(pattern, cut).nest.utilisation;
   }
 }
@@ -710,7 +712,7 @@ void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOpti
     out.iterations = optimizer.iterations();
     out.pattern = optimizedPattern(optimizer);
     out.balloon = balloonOf(optimizer, scene);
-    if (options.maxIterations > 0) out.sheetUse = sheetUse(out.pattern);
+    if (options.maxIterations > 0) out.sheetUse = sheetUse(out.pattern, options.cut, out.sheetNeeded);
   } catch (const Error& e) {
     out.problem = e.what();
     return;
@@ -747,6 +749,18 @@ bool sameSeams(const std::vector<DesignSeam>& a, const std::vector<DesignSeam>& 
 }  // namespace
 
 double lookPromise(const LayoutEvaluation& look) { return look.targetToInflated; }
+
+std::vector<int> layoutsRanked(const std::vector<const LayoutEvaluation*>& layouts) {
+  std::vector<int> order;
+  for (int i = 0; i < int(layouts.size()); ++i)
+    if (layouts[i]->ok) order.push_back(i);
+  std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
+    const LayoutEvaluation &a = *layouts[i], &b = *layouts[j];
+    if ((a.sheetNeeded > 0) != (b.sheetNeeded > 0)) return b.sheetNeeded > 0;
+    return a.distance != b.distance ? a.distance < b.distance : a.seamLength < b.seamLength;
+  });
+  return order;
+}
 
 std::string layoutFamily(const LayoutProposal& p) {
   // Two gores are halves, whose plane names them; more are gores around the axis, turned or not.

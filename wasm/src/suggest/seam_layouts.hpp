@@ -15,6 +15,7 @@
 #include <string>
 #include <vector>
 
+#include "export/export_options.hpp"
 #include "io/design_json.hpp"
 #include "mesh/tri_mesh.hpp"
 #include "pattern/design_scene.hpp"
@@ -105,9 +106,10 @@ struct LayoutEvaluation {
   // After the coarse optimization, relative to the target's diagonal: each way's RMS, and the worse of the two, by
   // which layouts are ranked (one way alone reads close for a shape that leaves a limb out; the app's figure).
   double distance = 0, inflatedToTarget = 0, targetToInflated = 0;
-  // The share of the sheet its cut pieces cover, nested at the default seam allowance and roll width (optimized
-  // layouts only): how much material it wastes.
-  double sheetUse = 0;
+  // The share of the sheet its cut pieces cover, nested as the design's cut file nests them (EvaluateOptions::cut;
+  // optimized layouts only): how much material it wastes. Where a piece is wider than the sheet, on a sheet just wide
+  // enough, whose width [mm] sheetNeeded gives (0 when every piece fits the design's sheet).
+  double sheetUse = 0, sheetNeeded = 0;
   int iterations = 0;
   double ms = 0;
   Pattern pattern;  // the optimized panels (coarse)
@@ -116,7 +118,10 @@ struct LayoutEvaluation {
 };
 
 struct EvaluateOptions {
-  int triangles = 1000;    // the coarse resolution the layouts are looked at and compared at
+  int triangles = 1000;  // the coarse resolution the layouts are looked at and compared at
+  // The design's fabrication settings (its "fabrication", io/export_options_json.hpp): the sheet and seam allowance its
+  // pieces are nested with. Layouts whose pieces fit the sheet come first (layoutsRanked).
+  ExportOptions cut;
   int maxIterations = 40;  // of the app's stopping rule; 0: the flattened panels' inflation alone, a first look
   // Rounds of seams added where plane sections leave a segment that is not a panel (a tube around a limb, a hole,
   // a limb's end too big for its seam).
@@ -138,6 +143,10 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
 LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal, const std::vector<DesignSeam>& kept,
                               int panelsAtMost, const std::vector<std::vector<DesignSeam>>& looked,
                               EvaluateOptions options = {});
+
+// The optimized layouts best first: those whose pieces fit the design's sheet, then the closest (the worse way), the
+// seam length (sewing time) breaking ties, then the order given (as the app ranks them, web/src/app/suggest-run.js).
+std::vector<int> layoutsRanked(const std::vector<const LayoutEvaluation*>& layouts);
 
 // What a first look promises, lower first: its target's side (targetToInflated). The optimizer pulls in where the
 // balloon bulges past the target (the balloon's side) but cannot reach what the layout leaves out (the target's side),

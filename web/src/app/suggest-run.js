@@ -11,7 +11,9 @@ const seamsKey = (seams) => JSON.stringify(seams.map(({ closed, points }) => [cl
 // Closest first; the seam length (sewing time) breaks ties, then the order they were proposed in. Looks are optimized
 // most promising first (their `promise`, lookPromise in suggest/seam_layouts.hpp).
 const tieBreak = (a, b) => a.seamLength - b.seamLength || a.index - b.index;
-const closer = (a, b) => a.distance - b.distance || tieBreak(a, b);
+// Optimized layouts best first, as layoutsRanked (suggest/seam_layouts.hpp) ranks them for the command line: those whose
+// pieces fit the design's sheet (`sheetNeeded` 0), then the closest.
+export const better = (a, b) => (a.sheetNeeded > 0) - (b.sheetNeeded > 0) || a.distance - b.distance || tieBreak(a, b);
 const morePromising = (a, b) => a.promise - b.promise || tieBreak(a, b);
 
 // The looks to optimize, as looksToOptimize (suggest/seam_layouts.hpp) chooses for the command line: the most
@@ -86,7 +88,7 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
         }
       }),
     );
-    return { layouts: layouts.sort(closer), notUsed, tried: looks[0]?.tried ?? 0 };
+    return { layouts: layouts.sort(better), notUsed, tried: looks[0]?.tried ?? 0 };
   };
   const promise = work();
   // One worker's failure (a crash, a cancel) stops the others.

@@ -8,11 +8,12 @@ import './suggest.css';
 import { ErrorCode, Op } from '../worker/protocol.js';
 import { formatDistance, formatLength, formatPercent, worseDistance } from './units.js';
 import { optimizeArgs } from './stored-result.js';
+import { exportOptions, formatMillimeters } from './fabrication.js';
 import { upOf } from './up-axis.js';
 import { linkMirrorTwins, symmetryPlane } from './symmetry.js';
 import { showOverInflatedPane, sidePanel } from '../views/dialog-header.js';
 import { SolverClient } from '../worker/client.js';
-import { suggestLayouts } from './suggest-run.js';
+import { better, suggestLayouts } from './suggest-run.js';
 import { drawBalloon, viewOf } from '../views/balloon-thumbnail.js';
 
 const PANELS = { min: 2, max: 40, start: 6 };
@@ -24,8 +25,21 @@ const MAX_ITERATIONS = 40;
 // stays free for the designer's edits meanwhile.
 const MOST_HELPERS = 4;
 
-// Optimized layouts first, closest first; then the ones only looked at.
-const byQuality = (a, b) => Boolean(a.firstLook) - Boolean(b.firstLook) || a.distance - b.distance;
+// Optimized layouts first, those that fit the sheet and then the closest first; then the ones only looked at, closest
+// first.
+const byQuality = (a, b) => Boolean(a.firstLook) - Boolean(b.firstLook) || better(a, b);
+
+// The share of the sheet its pieces cover, nested as the cut file nests them; where its widest piece is wider than the
+// design's sheet, on the sheet it needs, said plainly.
+function sheetFigure({ sheetUse, sheetNeeded }, { sheet_width: width, units }) {
+  const share = `${Math.round(100 * sheetUse)} %`;
+  const sheet = formatMillimeters(width, units);
+  if (sheetNeeded > 0) {
+    const needed = formatMillimeters(sheetNeeded, units);
+    return [share, 'sheet-use', ` of a ${needed} sheet: a piece is wider than yours`, `Its widest piece does not fit your ${sheet} sheet: cut it on a roll ${needed} wide, or choose a layout with more panels`];
+  }
+  return [share, 'sheet-use', ' of the sheet used', `How much of your ${sheet} sheet its cut pieces cover, nested as the cut file nests them: the rest is waste`];
+}
 
 export class SeamSuggestions {
   // createWorker: () => Worker, as the app's own (main.js).
@@ -201,10 +215,12 @@ export class SeamSuggestions {
     const design = app.design;
     const keep = this.keep.checked && !this.keepLabel.hidden;
     const axis = this.symmetry.checked ? this.symmetryAxis() : null;
-    // The sheet, pressure and resolution as the panels are made; the design's seams only when kept.
+    // The sheet, pressure and resolution as the panels are made; the design's seams only when kept; its fabrication
+    // settings (the roll's width, the seam allowance) as its pieces are nested.
     const { seams, connections, ...physics } = optimizeArgs(design, TRIANGLES);
     const args = {
       ...physics,
+      fabrication: exportOptions(design.fabrication),
       kept: keep ? seams : [],
       panels,
       symmetry: axis,
@@ -371,7 +387,7 @@ export class SeamSuggestions {
         `Distance between its inflated panels (${layout.firstLook ? 'as flattened, not optimized yet' : 'optimized at a coarse resolution'}) and the target: ${formatDistance(distance)}`,
       ],
       [formatLength(layout.seamLength), 'seam-length', ' of seams', 'The length of all its seams on the balloon'],
-      ...(layout.firstLook ? [] : [[`${Math.round(100 * layout.sheetUse)} %`, 'sheet-use', ' of the sheet used', 'How much of a 1 m roll its cut pieces cover, nested as the cut file nests them (10 mm allowance): the rest is waste']]),
+      ...(layout.firstLook ? [] : [sheetFigure(layout, this.app.design.fabrication)]),
     ];
     parts.forEach(([value, name, after, title], i) => {
       if (i) figures.append(' · ');
