@@ -78,12 +78,17 @@ TEST(Outline, ASeamAlongASquareLoopKeepsItsCorners) {
 
 // The octopus's coiled arms leave a tube under every plane; the outline seen from the front still makes two panels
 // that inflate.
-TEST(Outline, TheOctopusGetsAFrontAndBackLayoutWherePlanesLeaveTubes) {
+// A scene of a shared mesh 0.6 m tall, without seams yet.
+std::unique_ptr<DesignScene> sharedScene(const std::string& name) {
   Design design;
   design.target.kind = DesignTarget::Obj;
-  design.target.name = test::meshPath("octopus.obj");
+  design.target.name = test::meshPath(name);
   design.height = 0.6;
-  const auto scene = loadDesignTargetScene(design, "", {});
+  return loadDesignTargetScene(design, "", {});
+}
+
+TEST(Outline, TheOctopusGetsAFrontAndBackLayoutWherePlanesLeaveTubes) {
+  const auto scene = sharedScene("octopus.obj");
   LayoutRequest request;
   request.panels = 6;
   const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
@@ -105,11 +110,7 @@ TEST(Outline, TheOctopusGetsAFrontAndBackLayoutWherePlanesLeaveTubes) {
 // A pillow bulges where a flat shape is thin: the hand along its outline from the front, its bands' loops held together
 // inside by internal connections, comes far closer than without them (bench/README.md "Suggested seam layouts").
 TEST(SeamLayouts, AFlatShapeHeldTogetherInsideComesCloserThanItsPillow) {
-  Design design;
-  design.target.kind = DesignTarget::Obj;
-  design.target.name = test::meshPath("hand.obj");
-  design.height = 0.6;
-  const auto scene = loadDesignTargetScene(design, "", {});
+  const auto scene = sharedScene("hand.obj");
   LayoutRequest request;
   request.panels = 12;
   const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
@@ -162,10 +163,7 @@ TEST(SeamLayouts, AFlatShapeHeldTogetherInsideComesCloserThanItsPillow) {
 
 // Two proposals that end with the same seams are one layout to the designer: the second is not shown.
 TEST(SeamLayouts, ALayoutEndingWithTheSeamsOfOneBeforeItIsNotShownAgain) {
-  Design design;
-  design.target.kind = DesignTarget::Obj;
-  design.target.name = test::meshPath("sphere.obj");
-  const auto scene = loadDesignTargetScene(design, "", {});
+  const auto scene = sharedScene("sphere.obj");
   LayoutRequest request;
   request.panels = 2;
   const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
