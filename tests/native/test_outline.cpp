@@ -130,9 +130,9 @@ TEST(SeamLayouts, AFlatShapeHeldTogetherInsideComesCloserThanItsPillow) {
   ASSERT_TRUE(look.ok) << look.problem;
   // One per loop of a band's plane that crosses the rim twice: the palm, and a finger one plane cuts on its own.
   ASSERT_GE(look.connections.size(), 2u);
-  EXPECT_NE(look.opened.description().find(std::to_string(look.connections.size()) + " internal connections"),
+  EXPECT_NE(look.description().find(std::to_string(look.connections.size()) + " internal connections"),
             std::string::npos)
-      << look.opened.description();
+      << look.description();
   EXPECT_TRUE(plain.connections.empty());
   // Each band's loop is two seams from crossing to crossing of the rim, which passes through both: they meet it there
   // exactly, as a seam drawn to another's point is snapped to it.

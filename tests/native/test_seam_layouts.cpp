@@ -236,8 +236,8 @@ TEST(SeamLayouts, TubesAPlaneCutAroundLimbsAreOpenedIntoPanels) {
   EXPECT_EQ(cuts, 8);
   // The layout's description says so.
   EXPECT_EQ(opened.opened.tubeCuts, 8);
-  EXPECT_EQ(opened.opened.description().rfind("8 cuts that open tubes", 0), 0u) << opened.opened.description();
-  EXPECT_EQ(plain.opened.description(), "");
+  EXPECT_EQ(opened.description().rfind("8 cuts that open tubes", 0), 0u) << opened.description();
+  EXPECT_EQ(plain.description(), "");
   for (const Segment& s : spot->segmentation.segments) EXPECT_TRUE(s.isDisk);
   EXPECT_TRUE(spot->segmentation.problems.empty());
   expectBalloon(opened);  // a first look's: the flattened panels inflated

@@ -554,7 +554,7 @@ class TargetSession {
     return json({{"ok", e.ok},
                  {"problem", e.problem},
                  {"name", name},
-                 {"description", e.opened.description()},
+                 {"description", e.description()},
                  {"panels", e.panels},
                  {"seamLength", e.seamLength},
                  {"sheetUse", e.sheetUse},

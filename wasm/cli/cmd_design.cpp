@@ -13,7 +13,6 @@
 #include "cli/commands.hpp"
 #include "export/export.hpp"
 #include "io/distance_json.hpp"
-#include "io/export_options_json.hpp"
 #include "io/obj_writer.hpp"
 #include "io/pattern_json.hpp"
 #include "optimize/optimized_pattern.hpp"
@@ -99,14 +98,7 @@ ReadDesign readPhase(const DesignJob& job) {
                 std::string(job.optimize ? "Optimizing" : "Inflating") + " panels of " + std::to_string(job.triangles) +
                     " triangles",
                 "Choose a coarser --resolution.");
-  const Design& design = read.scene->design;
-  if (design.extra.contains("fabrication")) {
-    try {
-      read.cutOptions = readExportOptionsJson(design.extra["fabrication"]);
-    } catch (const Error& e) {
-      throw Error(e.code, std::string("the design's fabrication settings: ") + e.what());
-    }
-  }
+  read.cutOptions = designFabrication(read.scene->design);
   read.cutOptions.title = std::filesystem::path(job.designPath).stem().string();
   return read;
 }

@@ -11,7 +11,6 @@
 #include <nlohmann/json.hpp>
 
 #include "cli/commands.hpp"
-#include "io/export_options_json.hpp"
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
 #include "suggest/seam_layouts.hpp"
@@ -99,13 +98,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   std::string designPath;
   const Design input = readInput(args.positional[0], args, designPath);
   std::unique_ptr<DesignScene> scene = loadDesignTargetScene(input, designPath, exampleSearchPath(executableDir()));
-  if (input.extra.contains("fabrication")) {  // the sheet and allowance its pieces are nested with
-    try {
-      evaluate.cut = readExportOptionsJson(input.extra["fabrication"]);
-    } catch (const Error& e) {
-      throw Error(e.code, std::string("the design's fabrication settings: ") + e.what());
-    }
-  }
+  evaluate.cut = designFabrication(input);  // the sheet and allowance its pieces are nested with
   request.up = input.target.up;
   if (args.has("--symmetry")) {
     request.symmetryAxis = designSymmetryAxis(input);
@@ -184,7 +177,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
     writeTextFile(dir + "/" + stem + ".pattern.json", writePatternJson(t.result.pattern) + "\n");
     layouts.push_back({{"rank", r + 1},
                        {"name", t.proposal->name},
-                       {"description", t.first.opened.description()},
+                       {"description", t.first.description()},
                        {"design", stem + ".billow.json"},
                        {"pattern", stem + ".pattern.json"},
                        {"panels", t.result.panels},

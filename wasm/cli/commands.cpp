@@ -8,6 +8,7 @@
 #include <cstdio>
 #include <fstream>
 
+#include "io/export_options_json.hpp"
 #include "simulate/materials.hpp"
 #include "util/error.hpp"
 #include "util/memory_budget.hpp"
@@ -88,6 +89,15 @@ std::unique_ptr<DesignScene> openDesignScene(const std::string& path, bool quiet
                  path.c_str(), scene->target.numTriangles(), scene->scale, scene->curves.size(),
                  scene->segmentation.segments.size(), scene->loadMs + scene->seamsMs + scene->segmentMs);
   return scene;
+}
+
+ExportOptions designFabrication(const Design& design) {
+  if (!design.extra.contains("fabrication")) return {};
+  try {
+    return readExportOptionsJson(design.extra["fabrication"]);
+  } catch (const Error& e) {
+    throw Error(e.code, std::string("the design's fabrication settings: ") + e.what());
+  }
 }
 
 void writeTextFile(const std::string& path, const std::string& text) {

@@ -2,6 +2,7 @@
 #include <string>
 #include <vector>
 
+#include "export/export_options.hpp"
 #include "pattern/design_scene.hpp"
 #include "pattern/pattern.hpp"
 
@@ -39,6 +40,9 @@ std::string executableDir();
 // A design file made into its scene (pattern/design_scene.hpp loadDesignScene, examples beside the build), with
 // a line on stderr unless quiet.
 std::unique_ptr<DesignScene> openDesignScene(const std::string& path, bool quiet);
+// The design's "fabrication" settings (io/export_options_json.hpp), the defaults where it has none; an error names
+// them.
+ExportOptions designFabrication(const Design& design);
 void writeTextFile(const std::string& path, const std::string& text);
 // Segmentation and pattern problems on stderr, one a line ("  error: ...").
 void printProblems(const std::vector<SegmentationProblem>& problems);

@@ -118,16 +118,17 @@ ProposalKey proposalKey(const LayoutProposal& proposal, double size) {
 
 }  // namespace
 
-std::string LayoutOpenings::description() const {
+std::string LayoutEvaluation::description() const {
   std::string out;
   const auto add = [&](int n, const char* one, const char* many) {
     if (n == 0) return;
     out += (out.empty() ? "" : ", ") + std::to_string(n) + " " + (n == 1 ? one : many);
   };
-  add(tubeCuts, "cut that opens a tube", "cuts that open tubes");
-  add(limbSeams, "seam around a limb", "seams around limbs");
-  add(grazingLoops, "loop left out where it only grazed the shape", "loops left out where they only grazed the shape");
-  add(connections, "internal connection joining a band seam's front and back pieces inside",
+  add(opened.tubeCuts, "cut that opens a tube", "cuts that open tubes");
+  add(opened.limbSeams, "seam around a limb", "seams around limbs");
+  add(opened.grazingLoops, "loop left out where it only grazed the shape",
+      "loops left out where they only grazed the shape");
+  add(int(connections.size()), "internal connection joining a band seam's front and back pieces inside",
       "internal connections joining the band seams' front and back pieces inside");
   return out;
 }
@@ -366,7 +367,12 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
   const auto planeName = [&](size_t j) {
     return halving && j == 0 ? std::string("halving seam") : "band " + std::to_string(j + (halving ? 0 : 1));
   };
-  std::vector<std::pair<size_t, size_t>> split;  // the band loops laid as two seams: their plane's and their index
+  // Each plane's loops, and which of them are laid as two seams (a connected proposal's).
+  std::vector<std::vector<SectionLoop>> planeLoops;
+  for (const SectionPlane& plane : proposal.planes)
+    planeLoops.push_back(planeSection(target, plane.normal, plane.offset));
+  std::vector<std::vector<bool>> split;
+  for (const std::vector<SectionLoop>& loops : planeLoops) split.emplace_back(loops.size(), false);
   if (proposal.outlineView >= 0) {
     const Eigen::Vector3d towards = Eigen::Vector3d::Unit(proposal.outlineView);
     const std::optional<Outline> outline = outlineSeenFrom(target, towards);
@@ -378,8 +384,7 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
     // the rim passing through both.
     if (proposal.connected && outline->holes.empty())
       for (size_t j = 0; j < proposal.planes.size(); ++j) {
-        const std::vector<SectionLoop> loops =
-            planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset);
+        const std::vector<SectionLoop>& loops = planeLoops[j];
         const std::vector<LoopCrossing> crossings = planeCrossings(target, outline->loop, proposal.planes[j]);
         for (size_t l = 0; l < loops.size(); ++l) {
           const SectionLoop& loop = loops[l];
@@ -422,7 +427,7 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
           }
           for (const LoopCrossing& c : on) passThrough(target, rim, c.point, 0.25 * spacing);
           if (connections) connections->push_back({{int(first), int(first) + 1}});
-          split.emplace_back(j, l);
+          split[j][l] = true;
         }
       }
     seams[0] = makeSeam("outline", true, rim);
@@ -491,12 +496,10 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
       }
     }
   }
-  for (size_t j = 0; j < proposal.planes.size(); ++j) {
-    const std::vector<SectionLoop> loops = planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset);
-    for (size_t l = 0; l < loops.size(); ++l)
-      if (std::find(split.begin(), split.end(), std::make_pair(j, l)) == split.end())
-        seams.push_back(makeSeam(planeName(j), true, sectionSeamPoints(target, loops[l], spacing)));
-  }
+  for (size_t j = 0; j < planeLoops.size(); ++j)
+    for (size_t l = 0; l < planeLoops[j].size(); ++l)
+      if (!split[j][l])
+        seams.push_back(makeSeam(planeName(j), true, sectionSeamPoints(target, planeLoops[j][l], spacing)));
   return seams;
 }
 
@@ -678,7 +681,6 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
     return out;
   }
   out.panels = int(segmentation.segments.size() + out.connections.size());
-  out.opened.connections = int(out.connections.size());
   for (const SeamCurve& curve : scene.curves) out.seamLength += curve.length;
   out.ok = true;
   return out;

@@ -88,9 +88,6 @@ struct LayoutOpenings {
   int tubeCuts = 0;      // cuts that open a tube or a holed part
   int limbSeams = 0;     // sections across a part too big for its seam, around a limb
   int grazingLoops = 0;  // loops of its own left out, that only grazed the shape (a tiny or thin part)
-  int connections = 0;   // band loops laid as a front and a back seam joined inside by an internal connection
-  // In the designer's words ("2 cuts that open tubes, 1 seam around a limb"), empty when nothing was done.
-  std::string description() const;
 };
 
 struct LayoutEvaluation {
@@ -110,6 +107,9 @@ struct LayoutEvaluation {
   // optimized layouts only): how much material it wastes. Where a piece is wider than the sheet, on a sheet just wide
   // enough, whose width [mm] sheetNeeded gives (0 when every piece fits the design's sheet).
   double sheetUse = 0, sheetNeeded = 0;
+  // What was done to its sections so that every segment is a panel (`opened`), and its internal connections, in the
+  // designer's words ("2 cuts that open tubes, 1 seam around a limb"), empty when nothing was done.
+  std::string description() const;
   int iterations = 0;
   double ms = 0;
   Pattern pattern;  // the optimized panels (coarse)
