@@ -92,6 +92,45 @@ test('opening a file and dropping a file both replace the target', async () => {
   await page.close();
 });
 
+// billow suggest and billow design write a mesh's path or the mesh itself (docs/formats.md); seams name that mesh's
+// faces, so they must never land on whatever target is open.
+test('a design from the command line opens on its own mesh; one with no target it can find changes nothing', async () => {
+  const page = await fresh();
+  const file = JSON.parse(readFileSync(new URL('../data/sphere-gores.billow.json', import.meta.url), 'utf8'));
+  const open = (name, value) => page.setInputFiles('#file-input', { name, mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(value)) });
+  const seamCount = () => page.evaluate(() => window.billow.test.design.seams.length);
+  // By path: the designer is asked for that mesh, and the cow stays as it was.
+  assert.match(file.target.obj, /\/sphere\.obj$/);
+  await open('sphere-gores.billow.json', file);
+  await page.locator('.message.warning', { hasText: '"sphere.obj": open that mesh first' }).waitFor();
+  assert.equal(await stat(page, 'triangles'), '5,856');
+  assert.equal(await seamCount(), 0);
+  await page.setInputFiles('#file-input', { name: 'sphere.obj', mimeType: 'text/plain', buffer: readFileSync(`${MESHES}/sphere.obj`) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'sphere.obj');
+  await open('sphere-gores.billow.json', file);
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 3);
+
+  // The mesh inline: it opens with the design, named after the file.
+  await page.selectOption('#example-select', 'spot');
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'spot.obj');
+  const lines = readFileSync(`${MESHES}/sphere.obj`, 'utf8').split('\n');
+  const numbers = (prefix, shift) => lines.filter((l) => l.startsWith(prefix)).map((l) => l.trim().split(/\s+/).slice(1).map((x) => Number(x) - shift));
+  await open('gores-inline.billow.json', { ...file, target: { vertices: numbers('v ', 0), triangles: numbers('f ', 1) } });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'gores-inline.obj');
+  assert.equal(await stat(page, 'triangles'), '1,280');
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 3);
+  await page.locator('.segment-label >> nth=2').waitFor({ state: 'attached' });
+
+  // A target that is none of these: refused, the design on screen unchanged.
+  await open('lost.billow.json', { ...file, target: { obj: 7 } });
+  const refused = await page.locator('.message.error', { hasText: 'lost.billow.json' }).textContent();
+  assert.match(refused, /names no target Billow can open.*Your current design is unchanged/);
+  assert.equal(await stat(page, 'file'), 'gores-inline.obj');
+  assert.equal(await seamCount(), 3);
+  assertNoErrors(page);
+  await page.close();
+});
+
 test('examples menu, real size, and autosave across a reload', async () => {
   const page = await fresh();
   await page.selectOption('#example-select', 'sphere');

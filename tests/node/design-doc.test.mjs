@@ -18,6 +18,35 @@ test('parseDesign keeps good fields and unknown ones, defaults bad ones with a w
   assert.equal(bad.design.size.height, 0.6);
   assert.deepEqual(bad.design.seams, []);
   assert.equal(bad.warnings.length, 2);
+  assert.equal(bad.targetKnown, false);
+});
+
+// The command line writes a mesh's path ({ obj }) or the mesh itself (docs/formats.md); the app must not put those
+// seams on its default example, whose faces are another mesh's.
+test('parseDesign reads the command line\'s targets as files, and drops seams that have no target to lie on', () => {
+  const seams = [{ name: 'outline', closed: true, points: [{ face: 0, bary: [1, 0, 0] }] }];
+  const byPath = parseDesign({ ...newDesign(), target: { obj: '../../meshes/octopus.obj', up: '+z' }, seams });
+  assert.deepEqual(byPath.design.target, { file: 'octopus.obj', up: '+z' });
+  assert.equal(byPath.targetKnown, true);
+  assert.deepEqual(byPath.design.seams, seams);
+  assert.equal(parseDesign({ ...newDesign(), target: { obj: 'C:\\shapes\\star.obj' } }).design.target.file, 'star.obj');
+
+  const tetrahedron = { vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], triangles: [[0, 2, 1], [0, 1, 3], [0, 3, 2], [1, 2, 3]] };
+  const inline = parseDesign({ ...newDesign(), target: tetrahedron, seams }, { inlineName: 'layout-1.obj' });
+  assert.deepEqual(inline.design.target, { file: 'layout-1.obj' });
+  assert.equal(inline.targetObj.split('\n').length, 8);
+  assert.match(inline.targetObj, /^v 0 0 0\n/);
+  assert.match(inline.targetObj, /\nf 2 3 4$/, 'faces 1-based, as OBJ numbers them');
+  assert.deepEqual(inline.design.seams, seams);
+
+  for (const target of [{ obj: 7 }, { vertices: [[0, 0, 0]], triangles: [[0, 0, 0]] }, { ...tetrahedron, triangles: [[0, 1, 9], ...tetrahedron.triangles.slice(1)] }, undefined]) {
+    const { design, warnings, targetKnown } = parseDesign({ ...newDesign(), target, seams, connections: [[0, 0]] });
+    assert.equal(targetKnown, false, JSON.stringify(target));
+    assert.equal(design.target.example, 'spot');
+    assert.deepEqual(design.seams, [], 'seams of a mesh that is not there are not put on the example');
+    assert.deepEqual(design.connections, []);
+    assert.match(warnings[0], /no target Billow knows/);
+  }
 });
 
 // Internal connections in either form the design reader takes (docs/formats.md): the app keeps { seams: [i, j] }.

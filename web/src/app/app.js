@@ -188,9 +188,17 @@ export class App {
     if (format !== 'billow-design')
       return this.messages.show('error', `"${file.name}" is neither a Billow design nor a Billow pattern.`);
     try {
-      const { design, warnings } = parseDesign(JSON.parse(text));
+      const inlineName = `${file.name.replace(/(\.billow)?\.json$/i, '')}.obj`;
+      const { design, warnings, targetKnown, targetObj } = parseDesign(JSON.parse(text), { inlineName });
+      if (!targetKnown)
+        return this.messages.show('error', `"${file.name}" names no target Billow can open (an example, or a mesh file by its name), so its seams have nothing to lie on. Your current design is unchanged.`);
       for (const w of warnings) this.messages.show('warning', w);
       if (design.target.example) return this.loadExample(design.target.example, design);
+      if (targetObj) {
+        // The mesh comes with the design (the command line's inline target): it is opened as the designer's own file.
+        this.fields.example = '';
+        return this.loadTargetBytes(design.target.file, new TextEncoder().encode(targetObj).buffer, design, { quiet: true });
+      }
       if (this.target && design.target.file === this.target.fileName) {
         this.commitDesign(design, { reset: true });
         return this.seams.refresh();

@@ -58,8 +58,27 @@ function parseMaterial(value, warnings) {
 
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
-// Returns { design, warnings }. Throws Error with a designer-facing message when it is no design at all.
-export function parseDesign(value) {
+// The last part of a path, as a file picker names the file ("meshes/octopus.obj" -> "octopus.obj").
+const baseName = (path) => path.split(/[\\/]/).pop();
+
+// An inline target's mesh ({ vertices: [[x, y, z]...], triangles: [[i, j, k]...] }, 0-based, as the CLI writes
+// it: docs/formats.md) as the text of an OBJ file, which the worker reads and checks as any opened mesh; null when
+// the arrays are not a mesh's.
+function inlineTargetObj(target) {
+  const { vertices, triangles } = target;
+  const triple = (row, ok) => Array.isArray(row) && row.length === 3 && row.every(ok);
+  if (!Array.isArray(vertices) || !Array.isArray(triangles) || vertices.length < 4 || triangles.length < 4) return null;
+  if (!vertices.every((v) => triple(v, Number.isFinite))) return null;
+  if (!triangles.every((t) => triple(t, (i) => Number.isInteger(i) && i >= 0 && i < vertices.length))) return null;
+  return [...vertices.map((v) => `v ${v.join(' ')}`), ...triangles.map((t) => `f ${t[0] + 1} ${t[1] + 1} ${t[2] + 1}`)].join('\n');
+}
+
+// Returns { design, warnings, targetKnown, targetObj }. Throws Error with a designer-facing message when it is no
+// design at all. The target is one of the app's examples or a mesh file the designer opens by its name ({ file });
+// the command line's forms (docs/formats.md) are read as the app's: a path ({ obj }) names the file, an inline mesh
+// comes as targetObj (the text of an OBJ file, named by target.file). A design whose target is none of these opens
+// on the default example without its seams, which lie on faces of a mesh that is not there (targetKnown false).
+export function parseDesign(value, { inlineName = 'target.obj' } = {}) {
   if (!isObject(value) || value.format !== DESIGN_FORMAT)
     throw new Error('This is not a Billow design (its "format" is not "billow-design").');
   if (!Number.isInteger(value.version) || value.version < 1)
@@ -71,12 +90,20 @@ export function parseDesign(value) {
   const warnings = [];
   const design = { ...value };
   const target = value.target;
+  let targetKnown = true, targetObj = null;
   if (isObject(target) && typeof target.example === 'string' && findExample(target.example)) {
     design.target = { ...target };
   } else if (isObject(target) && typeof target.file === 'string' && target.file.length <= 255) {
     design.target = { ...target };
+  } else if (isObject(target) && typeof target.obj === 'string' && baseName(target.obj) && baseName(target.obj).length <= 255) {
+    const { obj, ...rest } = target;
+    design.target = { ...rest, file: baseName(obj) };
+  } else if (isObject(target) && (targetObj = inlineTargetObj(target))) {
+    const { vertices, triangles, ...rest } = target;
+    design.target = { ...rest, file: inlineName };
   } else {
-    warnings.push('The design names no target Billow knows; the default example is used instead.');
+    targetKnown = false;
+    warnings.push('The design names no target Billow knows, so its seams cannot be placed: the default example is opened without them.');
     design.target = { example: DEFAULT_EXAMPLE };
   }
   design.target = parseUp(design.target, warnings);
@@ -87,9 +114,9 @@ export function parseDesign(value) {
     if (value.size !== undefined) warnings.push(`The design's height is not between ${MIN_HEIGHT} and ${MAX_HEIGHT} m; using 0.6 m.`);
     design.size = { height: 0.6 };
   }
-  design.seams = Array.isArray(value.seams) ? value.seams : [];
+  design.seams = targetKnown && Array.isArray(value.seams) ? value.seams : [];
   // The pair form [i, j] of an internal connection, which the CLI reads too, as the form the app writes.
-  design.connections = Array.isArray(value.connections) ? value.connections.map((c) => (Array.isArray(c) ? { seams: c } : c)) : [];
+  design.connections = targetKnown && Array.isArray(value.connections) ? value.connections.map((c) => (Array.isArray(c) ? { seams: c } : c)) : [];
   design.material = parseMaterial(value.material, warnings);
   if (inRange(value.pressure, MIN_PRESSURE, MAX_PRESSURE)) design.pressure = value.pressure;
   else {
@@ -118,7 +145,7 @@ export function parseDesign(value) {
     const { mirror, ...rest } = seam;
     return rest;
   });
-  return { design, warnings };
+  return { design, warnings, targetKnown, targetObj };
 }
 
 export function clampHeight(h) {
