@@ -4,9 +4,27 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { ROOT, openFreshPage, optimizedResultShown, screenshot, useBrowser } from './harness.mjs';
+import { ROOT, MESHES, openFreshPage, optimizedResultShown, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
+
+// Asks for layouts of at most `panels` panels in the Suggest seams panel, and reads their cards once all are tried.
+async function layoutsFor(page, panels) {
+  await page.click('#suggest-button');
+  await page.waitForSelector('dialog.suggest-dialog[open]');
+  await page.fill('.suggest-panels', String(panels));
+  await page.click('.suggest-go');
+  await page.waitForFunction(() => /layouts tried/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 300000 });
+  return page.$$eval('.suggest-card', (els) =>
+    els.map((el) => ({
+      rank: el.dataset.rank,
+      name: el.querySelector('h3').title,
+      text: el.textContent,
+      panels: Number(el.querySelector('[data-figure="panels"]').textContent),
+      distance: parseFloat(el.querySelector('[data-figure="distance"]').textContent),
+    })),
+  );
+}
 
 test('suggested layouts come best first, and one is used as the design\'s seams, undoably', async () => {
   const page = await openFreshPage(env.context, env.server.url);
@@ -124,14 +142,7 @@ test('a flat shape gets a layout held together inside, and using it makes its in
   await page.fill('#sheet-input', '300');
   await page.press('#sheet-input', 'Enter');
   await page.waitForFunction(() => window.billow.test.design.fabrication.sheet_width === 300);
-  await page.click('#suggest-button');
-  await page.waitForSelector('dialog.suggest-dialog[open]');
-  await page.fill('.suggest-panels', '5');
-  await page.click('.suggest-go');
-  await page.waitForFunction(() => /layouts tried/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 240000 });
-  const cards = await page.$$eval('.suggest-card', (els) =>
-    els.map((el) => ({ rank: el.dataset.rank, name: el.querySelector('h3').title, text: el.textContent, distance: parseFloat(el.querySelector('[data-figure="distance"]').textContent) })),
-  );
+  const cards = await layoutsFor(page, 5);
   const held = cards.find((card) => /held together inside/.test(card.name));
   assert.ok(held, JSON.stringify(cards));
   // A layout with a piece wider than the roll says so, and comes after every one that fits.
@@ -151,5 +162,30 @@ test('a flat shape gets a layout held together inside, and using it makes its in
     assert.ok(design.seams[a] && design.seams[b] && !design.seams[a].closed && !design.seams[b].closed, JSON.stringify([a, b]));
   await optimizedResultShown(page);
   await screenshot(page, 'suggest-held-together');
+  assert.deepEqual(page.errors, []);
+});
+
+// A shape with limbs gets a plush toy's layout: a seam around each arm where it joins the body, the arm halved along
+// its length. The octopus's coiled arms leave tubes under every plane, and its front and back miss most of its arms.
+test('the octopus gets seams around and along its arms, and the layout used inflates with its arms', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.setInputFiles('#file-input', { name: 'octopus.obj', mimeType: 'text/plain', buffer: readFileSync(`${MESHES}/octopus.obj`) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'octopus.obj', null, { timeout: 60000 });
+  const cards = await layoutsFor(page, 12);
+  const limbs = cards.find((card) => /^seams around \d+ limbs, each halved along its length/.test(card.name));
+  assert.ok(limbs, JSON.stringify(cards));
+  assert.match(cards[0].name, /seams around \d+ limbs/, 'it leads');
+  assert.ok(limbs.panels >= 10 && limbs.panels <= 12, JSON.stringify(limbs));
+  // Its two pieces along the outline seen from the front leave most arms out (7.3 % natively, the limbs 4.8 %).
+  const twoPieces = cards.filter((card) => card.panels === 2);
+  if (twoPieces.length) assert.ok(limbs.distance < 0.8 * Math.min(...twoPieces.map((c) => c.distance)), JSON.stringify(cards));
+  await screenshot(page, 'suggest-octopus');
+  await page.click(`.suggest-card[data-rank="${limbs.rank}"] .suggest-use`);
+  await page.waitForFunction(() => window.billow.test.design.seams.some((s) => /^around limb /.test(s.name)), null, { timeout: 60000 });
+  const names = await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name));
+  assert.ok(names.filter((n) => /^around limb /.test(n)).length >= 4, JSON.stringify(names));
+  assert.ok(names.some((n) => /^along limb /.test(n)), JSON.stringify(names));
+  await optimizedResultShown(page);
+  await screenshot(page, 'suggest-octopus-used');
   assert.deepEqual(page.errors, []);
 });

@@ -15,7 +15,7 @@ using namespace billow;
 namespace {
 
 // Four triangles over four points, on coordinates that nine digits print exactly.
-TriMesh tetrahedron() {
+TriMesh printableTetrahedron() {
   TriMesh m;
   m.V.resize(4, 3);
   m.V << 0, 0, 0, 1.5, 0, 0, 0, -2.25, 0, 0.125, 0.5, 1e-3;
@@ -27,7 +27,7 @@ TriMesh tetrahedron() {
 }  // namespace
 
 TEST(ObjWriter, AMeshRoundTripsThroughTheReader) {
-  const TriMesh m = tetrahedron();
+  const TriMesh m = printableTetrahedron();
   const TriMesh back = readObj(writeObj(m.V, m.F));
   ASSERT_EQ(back.numVertices(), 4);
   ASSERT_EQ(back.numTriangles(), 4);
@@ -36,7 +36,7 @@ TEST(ObjWriter, AMeshRoundTripsThroughTheReader) {
 }
 
 TEST(ObjWriter, FacesAreOneBasedVAndFLines) {
-  const TriMesh m = tetrahedron();
+  const TriMesh m = printableTetrahedron();
   const std::string text = writeObj(m.V, m.F);
   EXPECT_EQ(text.rfind("v 0 0 0\nv 1.5 0 0\nv 0 -2.25 0\nv 0.125 0.5 0.001\n", 0), 0u) << text;
   EXPECT_NE(text.find("\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"), std::string::npos) << text;
@@ -44,7 +44,7 @@ TEST(ObjWriter, FacesAreOneBasedVAndFLines) {
 }
 
 TEST(ObjWriter, ACommentBecomesTheFirstLineAndIsIgnoredWhenRead) {
-  const TriMesh m = tetrahedron();
+  const TriMesh m = printableTetrahedron();
   const std::string text = writeObj(m.V, m.F, "billow inflated shape (outer surface)");
   EXPECT_EQ(text.rfind("# billow inflated shape (outer surface)\nv ", 0), 0u) << text;
   const TriMesh back = readObj(text);
@@ -75,7 +75,7 @@ TEST(ObjWriter, CoordinatesKeepNineSignificantDigits) {
 
 TEST(ObjWriter, AMeshWithoutTrianglesWritesOnlyVerticesWhichTheReaderRefuses) {
   // The reader needs a surface: a vertex cloud written out does not read back silently as an empty mesh.
-  const TriMesh m = tetrahedron();
+  const TriMesh m = printableTetrahedron();
   const std::string text = writeObj(m.V, Triangles(0, 3));
   EXPECT_EQ(text.find("f "), std::string::npos);
   try {

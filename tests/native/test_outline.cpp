@@ -76,17 +76,10 @@ TEST(Outline, ASeamAlongASquareLoopKeepsItsCorners) {
   EXPECT_EQ(hits(sectionSeamPoints(cube, loops[0], spacing, true)), 4);
 }
 
+using test::sharedScene;
+
 // The octopus's coiled arms leave a tube under every plane; the outline seen from the front still makes two panels
 // that inflate.
-// A scene of a shared mesh 0.6 m tall, without seams yet.
-std::unique_ptr<DesignScene> sharedScene(const std::string& name) {
-  Design design;
-  design.target.kind = DesignTarget::Obj;
-  design.target.name = test::meshPath(name);
-  design.height = 0.6;
-  return loadDesignTargetScene(design, "", {});
-}
-
 TEST(Outline, TheOctopusGetsAFrontAndBackLayoutWherePlanesLeaveTubes) {
   const auto scene = sharedScene("octopus.obj");
   LayoutRequest request;

@@ -49,14 +49,7 @@ void expectBalloon(const LayoutEvaluation& e) {
   EXPECT_NEAR(rms, e.inflatedToTarget, 0.02 * e.inflatedToTarget + 1e-6);
 }
 
-// A scene of a shared mesh, `height` meters tall, without seams yet.
-std::unique_ptr<DesignScene> sharedScene(const std::string& name, double height = 0.6) {
-  Design design;
-  design.target.kind = DesignTarget::Obj;
-  design.target.name = test::meshPath(name);
-  design.height = height;
-  return loadDesignTargetScene(design, "", {});
-}
+using test::sharedScene;
 
 TEST(PlaneSection, TheSphereEquatorIsOneLoopOnThePlaneAndOnTheSurface) {
   const TriMesh sphere = loadShared("sphere.obj");

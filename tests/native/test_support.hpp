@@ -6,10 +6,13 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <memory>
 #include <string>
 
+#include "io/design_json.hpp"
 #include "io/mesh_file.hpp"
 #include "mesh/tri_mesh.hpp"
+#include "pattern/design_scene.hpp"
 #include "simulate/example_patterns.hpp"
 #include "simulate/inflate.hpp"
 
@@ -20,6 +23,15 @@ inline constexpr double kPi = 3.14159265358979323846;
 inline std::string meshPath(const std::string& name) { return std::string(BILLOW_MESH_DIR) + "/" + name; }
 
 inline TriMesh loadShared(const std::string& name) { return readMeshBytes(readFileBytes(meshPath(name)), name); }
+
+// A scene of a shared mesh, `height` meters tall, without seams yet.
+inline std::unique_ptr<DesignScene> sharedScene(const std::string& name, double height = 0.6) {
+  Design design;
+  design.target.kind = DesignTarget::Obj;
+  design.target.name = meshPath(name);
+  design.height = height;
+  return loadDesignTargetScene(design, "", {});
+}
 
 // A file of tests/data, and the app's example meshes (web/public/examples) that designs name.
 inline std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }

@@ -10,6 +10,11 @@
 
 namespace billow {
 
+struct SectionPlane {
+  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit
+  double offset = 0;                                  // the plane is {p . normal = offset}
+};
+
 // A loop point: on a mesh edge, kept in the face the walk crossed to reach it (so two neighbouring points share
 // that face, which the next point names).
 struct SectionPoint {

@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <optional>
 
 #include "export/layout.hpp"
 #include "optimize/optimized_pattern.hpp"
@@ -32,6 +33,11 @@ constexpr double kPillowThickness = 0.6;
 // opened, adds panels on most shapes (the penguin's 4 bands in two pieces along its outline make 12, not 8). A look
 // that makes more than asked for is refused before it is built (lookAtLayout).
 int fewestPanels(int asked) { return asked - std::max(4, asked / 2); }
+
+// A limb a flat panel inside its root seam would cover less than this share of (P^2 / (4 pi A), as the segmentation's
+// too-big-for-its-seam warning measures it at half this) is halved along its length.
+constexpr double kLimbFlatShare = 0.5;
+bool limbHalved(const Limb& limb) { return limb.girth * limb.girth / (4 * kPi * limb.area) < kLimbFlatShare; }
 
 // Which way a direction of the target's own coordinates points as the target stands: 0 side to side, 1 up, 2 front
 // to back (the up frame's axes).
@@ -99,6 +105,7 @@ ProposalKey proposalKey(const LayoutProposal& proposal, double size) {
   const std::vector<Eigen::Vector3d>& meridians = proposal.meridians;
   ProposalKey key;
   if (proposal.outlineView >= 0) key.push_back({2, proposal.outlineView, proposal.connected, 0, 0});
+  if (!proposal.limbs.empty()) key.push_back({3, (long long)proposal.limbs.size(), 0, 0, 0});
   const auto rounded = [](double x) { return std::llround(x * 1e4); };
   for (const SectionPlane& p : planes) {
     // n and -n with -offset are one plane: the first non-zero component positive.
@@ -247,6 +254,77 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
         }
     }
   }
+  // Seams around limbs where they join the body, as a plush toy is patterned: each limb halved along its length where
+  // a flat panel inside its root seam would not cover it well, the body in two halves by a plane through its middle.
+  // The most elongated limbs that fit the count. Where the symmetry is kept, limbs in mirror pairs (or on the plane, on
+  // their own), and the body halved by planes that are their own mirror images.
+  {
+    std::vector<std::vector<Limb>> groups;
+    if (s >= 0)
+      groups = mirrorSymmetricLimbs(target, findLimbs(target), s, center[s]);
+    else
+      for (Limb& limb : findLimbs(target)) groups.push_back({std::move(limb)});
+    std::vector<char> body(size_t(target.F.rows()), 1);
+    for (const std::vector<Limb>& group : groups)
+      for (const Limb& limb : group)
+        for (int f = 0; f < target.F.rows(); ++f)
+          if (limb.faces[size_t(f)] == 1) body[size_t(f)] = 0;
+    Eigen::Vector3d bodyCenter = Eigen::Vector3d::Zero();
+    double bodyArea = 0;
+    for (int f = 0; f < target.F.rows(); ++f)
+      if (body[size_t(f)]) bodyCenter += faces.area[f] * faces.centroid.row(f).transpose(), bodyArea += faces.area[f];
+    if (bodyArea > 0) bodyCenter /= bodyArea;
+    if (s >= 0) bodyCenter[s] = center[s];
+    Faces bodyFaces;
+    {
+      std::vector<int> kept;
+      for (int f = 0; f < target.F.rows(); ++f)
+        if (body[size_t(f)]) kept.push_back(f);
+      bodyFaces.centroid.resize(Eigen::Index(kept.size()), 3), bodyFaces.area.resize(Eigen::Index(kept.size()));
+      for (size_t i = 0; i < kept.size(); ++i)
+        bodyFaces.centroid.row(Eigen::Index(i)) = faces.centroid.row(kept[i]),
+        bodyFaces.area[Eigen::Index(i)] = faces.area[kept[i]];
+    }
+    for (size_t count = groups.size(); count >= 1; --count) {
+      std::vector<Limb> limbs;
+      for (size_t g = 0; g < count; ++g) limbs.insert(limbs.end(), groups[g].begin(), groups[g].end());
+      int limbPanels = 0;
+      for (const Limb& limb : limbs) limbPanels += limbHalved(limb) ? 2 : 1;
+      if (limbPanels + 2 > request.panels) continue;
+      const int halved = int(std::count_if(limbs.begin(), limbs.end(), limbHalved));
+      const std::string around =
+          "seams around " + std::to_string(limbs.size()) + (limbs.size() == 1 ? " limb" : " limbs") +
+          (halved == 0                        ? ""
+           : halved == 1 && limbs.size() == 1 ? ", halved along its length"
+           : halved == int(limbs.size())      ? ", each halved along its length"
+                                              : ", " + std::to_string(halved) + " halved along their length");
+      // The body in halves, and in as many bands across another axis as the count leaves room for, each in two.
+      for (int axis = 0; axis < 3; ++axis)
+        for (int across = -1; across < 3; ++across) {
+          if (across == axis || (across >= 0 && across == s)) continue;
+          const int bands = across < 0 ? 0 : (request.panels - limbPanels) / 2 - 1;
+          if ((across >= 0 && bands < 1) || limbPanels + 2 * (bands + 1) < fewestPanels(request.panels)) continue;
+          LayoutProposal p;
+          p.axis = across < 0 ? axis : across, p.gores = 2, p.bands = bands, p.center = bodyCenter, p.limbs = limbs;
+          p.planes.push_back({Eigen::Vector3d::Unit(axis), bodyCenter[axis]});
+          if (bands > 0) {
+            const AreaAlong along = areaAlong(bodyFaces, across);
+            for (int j = 1; j <= bands; ++j)
+              p.planes.push_back({Eigen::Vector3d::Unit(across), along.at(double(j) / (bands + 1))});
+          }
+          p.name =
+              around + ", the body in " +
+              (bands > 0 ? std::to_string(bands + 1) + " bands across the " + axisName(across, request.up) + ", in "
+                         : "") +
+              halvesName(p.planes[0].normal, request.up);
+          ProposalKey key = proposalKey(p, size);
+          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+          seen.push_back(std::move(key));
+          out.push_back(std::move(p));
+        }
+      break;  // the most limbs that fit: fewer would leave long limbs to the body's halves
+    }
+  }
   return out;
 }
 
@@ -348,11 +426,175 @@ void passThrough(const TriMesh& mesh, std::vector<SurfacePoint>& controls, const
   controls.insert(controls.begin() + long(best) + 1, point.at);
 }
 
+// A limbs proposal's seams: around each limb's root, the body's halving plane on the body, each halved limb's plane
+// along it on that limb; a plane's piece on a part ends where it crosses the root seam, which passes through there.
+std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& proposal, double spacing) {
+  const std::vector<Limb>& limbs = proposal.limbs;
+  std::vector<std::vector<SurfacePoint>> rims;
+  for (const Limb& limb : limbs) rims.push_back(sectionSeamPoints(target, limb.rootLoop, spacing));
+  // Where pieces meet each rim: each a control point of it, none moved by a later one that lies close.
+  std::vector<std::vector<Eigen::Vector3d>> meetings(limbs.size());
+  const auto meet = [&](size_t limb, const SectionPoint& x) {
+    std::vector<SurfacePoint>& rim = rims[limb];
+    size_t best = 0;
+    double detour = INFINITY;
+    for (size_t j = 0; j < rim.size(); ++j) {
+      const Eigen::Vector3d a = position(target, rim[j]), b = position(target, rim[(j + 1) % rim.size()]);
+      const bool met = std::any_of(meetings[limb].begin(), meetings[limb].end(),
+                                   [&](const Eigen::Vector3d& m) { return (m - a).norm() < 1e-12 * spacing; });
+      if (!met && (a - x.position).norm() < 0.25 * spacing) {
+        rim[j] = x.at, meetings[limb].push_back(x.position);
+        return;
+      }
+      if (const double d = (a - x.position).norm() + (x.position - b).norm() - (a - b).norm(); d < detour)
+        detour = d, best = j;
+    }
+    rim.insert(rim.begin() + long(best) + 1, x.at), meetings[limb].push_back(x.position);
+  };
+  // The limb a loop point lies on, -1 on the body.
+  const auto partOf = [&](const SectionPoint& p) {
+    for (size_t i = 0; i < limbs.size(); ++i)
+      if (onLimb(target, limbs[i], p.at.face, p.position)) return int(i);
+    return -1;
+  };
+  std::vector<DesignSeam> pieces;
+  // The pieces of `loop` on `part`: each from where it crosses into the part to where it crosses out. On a limb,
+  // whether one ran round its tip.
+  const auto layPieces = [&](const SectionLoop& loop, int part, const std::string& name) {
+    const size_t n = loop.size();
+    std::vector<int> on(n);
+    for (size_t k = 0; k < n; ++k) on[k] = partOf(loop[k]);
+    const size_t inside = size_t(std::count(on.begin(), on.end(), part));
+    if (inside == 0) return false;
+    if (inside == n) {
+      // The body's own loop; on a limb, one along it round its tip, where the limb leaves the plane before its root (a
+      // tentacle rising from the body; a cut from it to the root seam opens what lies between: openSegments), not one
+      // across it.
+      const auto nearTip = [&](const SectionPoint& p) {
+        return (p.position - target.V.row(limbs[size_t(part)].tip).transpose()).norm() < limbs[size_t(part)].girth / 4;
+      };
+      const bool laid = part < 0 || std::any_of(loop.begin(), loop.end(), nearTip);
+      if (laid) pieces.push_back(makeSeam(name, true, sectionSeamPoints(target, loop, spacing)));
+      return laid;
+    }
+    // Where the loop crosses the root seam between points k and k + 1: where the level of the limb on either side is
+    // zero, on the straight piece between them in the face the later one names (the level is linear there).
+    const auto crossing = [&](size_t k, int limb) {
+      const SectionPoint& a = loop[k];
+      const SectionPoint& b = loop[(k + 1) % n];
+      const int f = b.at.face;
+      const double sa = limbLevel(target, limbs[size_t(limb)], f, a.position),
+                   sb = limbLevel(target, limbs[size_t(limb)], f, b.position);
+      SectionPoint x;
+      x.position =
+          (sa < 0) == (sb < 0) ? b.position : Eigen::Vector3d(a.position + sa / (sa - sb) * (b.position - a.position));
+      x.at.face = f;
+      x.at.bary = closestPointBarycentric(x.position, target.V.row(target.F(f, 0)), target.V.row(target.F(f, 1)),
+                                          target.V.row(target.F(f, 2)));
+      return x;
+    };
+    size_t start = 0;
+    while (!(on[start] != part && on[(start + 1) % n] == part)) ++start;  // a step into the part
+    // On a limb, the one piece that runs round its tip: others only nick its root.
+    double nearestTip = INFINITY;
+    struct Piece {
+      std::vector<SurfacePoint> controls;
+      SectionPoint from, to;
+      int entered = -1, left = -1;
+    };
+    std::optional<Piece> roundTip;
+    for (size_t step = 0; step < n; ++step) {
+      const size_t k = (start + step) % n;
+      if (!(on[k] != part && on[(k + 1) % n] == part)) continue;
+      const int entered = part >= 0 ? part : on[k];
+      SectionLoop path;
+      size_t j = (k + 1) % n;
+      for (; on[j] == part; j = (j + 1) % n) path.push_back(loop[j]);
+      const size_t last = (j + n - 1) % n;
+      const int left = part >= 0 ? part : on[j];
+      const SectionPoint from = crossing(k, entered), to = crossing(last, left);
+      if (loopLength(path) + (path.front().position - from.position).norm() < 2 * spacing) continue;  // a nick
+      // Without its points at either end that lie within half a spacing of a root seam: where the piece meets one at a
+      // glancing angle, the shortest paths between points closer than that would wander across it and cut a sliver off.
+      // (Only at the ends: the points left must follow each other along the loop, each in the face of the one before.)
+      const auto clear = [&](const SectionPoint& p) {
+        return std::all_of(limbs.begin(), limbs.end(), [&](const Limb& limb) {
+          return std::abs(limbLevel(target, limb, p.at.face, p.position)) >= 0.5 * spacing;
+        });
+      };
+      size_t first = 0, end = path.size();
+      while (first < end && !clear(path[first])) ++first;
+      while (end > first && !clear(path[end - 1])) --end;
+      const SectionLoop inner(path.begin() + long(first), path.begin() + long(end));
+      std::vector<SurfacePoint> controls{from.at};
+      if (inner.size() >= 2)
+        for (const SurfacePoint& p : sectionPathPoints(target, inner, spacing)) controls.push_back(p);
+      controls.push_back(to.at);
+      if (part < 0) {
+        pieces.push_back(makeSeam(name, false, controls));
+        meet(size_t(entered), from), meet(size_t(left), to);
+        continue;
+      }
+      const Eigen::Vector3d tip = target.V.row(limbs[size_t(part)].tip);
+      for (const SectionPoint& p : path)
+        if (const double d = (p.position - tip).norm(); d < nearestTip) {
+          nearestTip = d;
+          roundTip = Piece{controls, from, to, entered, left};
+        }
+    }
+    if (roundTip && nearestTip < limbs[size_t(part)].girth / 4) {
+      pieces.push_back(makeSeam(name, false, roundTip->controls));
+      meet(size_t(roundTip->entered), roundTip->from), meet(size_t(roundTip->left), roundTip->to);
+      return true;
+    }
+    return part < 0;
+  };
+  for (const SectionPlane& plane : proposal.planes)
+    for (const SectionLoop& loop : planeSection(target, plane.normal, plane.offset))
+      layPieces(loop, -1, "halving seam");
+  // A limb is halved along its outline seen across its flattest direction (where the surface turns edge-on to that
+  // view), which follows a tentacle's curl to its root where a plane would leave it.
+  Eigen::MatrixX3d normals = Eigen::MatrixX3d::Zero(target.V.rows(), 3);
+  for (int f = 0; f < target.F.rows(); ++f) {
+    const Eigen::Vector3d a = target.V.row(target.F(f, 0)), b = target.V.row(target.F(f, 1)),
+                          c = target.V.row(target.F(f, 2));
+    const Eigen::RowVector3d area = (b - a).cross(c - a).transpose();
+    for (int k = 0; k < 3; ++k) normals.row(target.F(f, k)) += area;
+  }
+  normals.rowwise().normalize();
+  // Where that outline does not run round the tip (a limb twisted along its length), the outline seen across, then the
+  // sections by planes through its middle along either.
+  for (size_t i = 0; i < limbs.size(); ++i) {
+    if (!limbHalved(limbs[i])) continue;
+    const Limb& limb = limbs[i];
+    bool laid = false;
+    for (int kind = 0; kind < 4 && !laid; ++kind) {
+      const Eigen::Vector3d n = kind % 2 == 0 ? limb.along.normal : limb.across;
+      std::vector<SectionLoop> loops;
+      if (kind < 2) {
+        Eigen::VectorXd facing = normals * n;
+        for (Eigen::Index v = 0; v < facing.size(); ++v)
+          if (facing[v] == 0) facing[v] = 1e-12;
+        loops = zeroLoops(target, facing);
+      } else {
+        loops = planeSection(target, n, n.dot(limb.center));
+      }
+      for (const SectionLoop& loop : loops) laid |= layPieces(loop, int(i), "along limb " + std::to_string(i + 1));
+    }
+  }
+  std::vector<DesignSeam> seams;
+  for (size_t i = 0; i < limbs.size(); ++i)
+    seams.push_back(makeSeam("around limb " + std::to_string(i + 1), true, rims[i]));
+  seams.insert(seams.end(), pieces.begin(), pieces.end());
+  return seams;
+}
+
 }  // namespace
 
 std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal,
                                       std::vector<DesignConnection>* connections) {
   const double spacing = seamPointSpacing(target);
+  if (!proposal.limbs.empty()) return limbSeams(target, proposal, spacing);
   const Eigen::Vector3d e = Eigen::Vector3d::Unit(proposal.axis);
   std::array<Pole, 2> poles;
   if (!proposal.meridians.empty()) {
@@ -524,17 +766,32 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
     if (std::find(in.begin(), in.end(), sg.faceSegment[f]) == in.end()) in.push_back(sg.faceSegment[f]);
   }
   // The grazing loops go first, on their own: of the layout's closed seams around a tiny or thin segment (a plane
-  // grazing a toe, loops of several planes crossing on a flipper), the shortest goes, and the segment joins its
-  // neighbour across it.
+  // grazing a toe, loops of several planes crossing on a flipper), the shortest that no other seam ends on goes, and
+  // the segment joins its neighbour across it; where every such loop has seams ending on it (a limb's root), the
+  // shortest of the layout's open seams along the segment (a piece that only nicks the root).
+  const double tiny = 1e-9 * (cut.V.colwise().maxCoeff() - cut.V.colwise().minCoeff()).norm();
+  const auto endedOn = [&](int seam) {
+    for (size_t other = 0; other < scene.curves.size(); ++other) {
+      const SeamCurve& c = scene.curves[other];
+      if (int(other) == seam || c.closed || c.points.empty()) continue;
+      for (const Eigen::Vector3d& end : {c.points.front().position, c.points.back().position})
+        for (const PathPoint& p : scene.curves[size_t(seam)].points)
+          if ((p.position - end).norm() < tiny) return true;
+    }
+    return false;
+  };
   std::vector<int> removed;
   for (const SegmentationProblem& problem : sg.problems) {
     if (problem.segment < 0 || (problem.code != "segment.sliver" && problem.code != "segment.thin")) continue;
     int shortest = -1;
-    for (const BoundaryLoop& loop : sg.segments[problem.segment].loops)
-      for (int seam : loop.seams)
-        if (seam >= fixedSeams && seam < int(seams.size()) && seams[seam].closed &&
-            (shortest < 0 || scene.curves[seam].length < scene.curves[shortest].length))
-          shortest = seam;
+    for (bool closed : {true, false}) {
+      for (const BoundaryLoop& loop : sg.segments[problem.segment].loops)
+        for (int seam : loop.seams)
+          if (seam >= fixedSeams && seam < int(seams.size()) && seams[seam].closed == closed &&
+              (shortest < 0 || scene.curves[seam].length < scene.curves[shortest].length) && !(closed && endedOn(seam)))
+            shortest = seam;
+      if (shortest >= 0) break;
+    }
     if (shortest >= 0 && std::find(removed.begin(), removed.end(), shortest) == removed.end())
       removed.push_back(shortest);
   }
@@ -769,7 +1026,8 @@ std::string layoutFamily(const LayoutProposal& p) {
   Eigen::Index halving = -1;
   if (p.outlineView < 0 && p.gores == 2 && !p.planes.empty()) p.planes[0].normal.cwiseAbs().maxCoeff(&halving);
   return std::to_string(p.outlineView) + " " + std::to_string(p.axis) + " " + std::to_string(p.bands > 0) + " " +
-         std::to_string(p.gores > 2) + " " + std::to_string(halving) + (p.connected ? " connected" : "");
+         std::to_string(p.gores > 2) + " " + std::to_string(halving) + (p.connected ? " connected" : "") +
+         (p.limbs.empty() ? "" : " limbs");
 }
 
 std::vector<int> looksToOptimize(const std::vector<const LayoutEvaluation*>& looks,

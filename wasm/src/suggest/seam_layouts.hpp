@@ -8,8 +8,9 @@
 // (bands), g (k + 1) panels on a round shape, more where a plane cuts a limb on its own. Or of a front and a back
 // sealed along the outline seen along one axis (seams/outline.hpp), as a foil balloon is made, with k bands across
 // another: 2 (k + 1) panels, and k more where each band's loop is a front and a back seam joined inside by an internal
-// connection (a flat shape's pillow held to its thickness). A layout that keeps the target's mirror symmetry lays only
-// what is its own mirror image across the symmetry plane.
+// connection (a flat shape's pillow held to its thickness). Or, on a shape with limbs, as a plush toy is patterned: a
+// seam around each limb where it joins the body, the limb halved along its length and the body in halves or bands. A
+// layout that keeps the target's mirror symmetry lays only what is its own mirror image across the symmetry plane.
 #pragma once
 #include <functional>
 #include <string>
@@ -20,13 +21,10 @@
 #include "mesh/tri_mesh.hpp"
 #include "pattern/design_scene.hpp"
 #include "pattern/pattern.hpp"
+#include "seams/plane_section.hpp"
+#include "suggest/limbs.hpp"
 
 namespace billow {
-
-struct SectionPlane {
-  Eigen::Vector3d normal = Eigen::Vector3d::UnitX();  // unit
-  double offset = 0;                                  // the plane is {p . normal = offset}
-};
 
 struct LayoutProposal {
   std::string name;                                  // the designer's words: "6 gores around the vertical axis"
@@ -45,6 +43,10 @@ struct LayoutProposal {
   // connection (paper Sec. 3.2), which holds the two pieces as far apart as the target is thick there, where a pillow
   // would bulge. Only along a view the target is thin along (a hand, a cushion seen from the front).
   bool connected = false;
+  // A seam around each of these limbs where it joins the body (suggest/limbs.hpp), each limb that a flat panel inside
+  // that seam would not cover well halved along its length, and the body halved by planes[0] and in bands by the others
+  // (`bands` of them, across `axis`), each plane laid on the body only; in place of gores.
+  std::vector<Limb> limbs;
 };
 
 struct LayoutRequest {

@@ -1,0 +1,175 @@
+// A target's limbs (suggest/limbs.hpp) and the layouts that seam around and along them (suggest/seam_layouts.hpp).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <set>
+
+#include "io/design_json.hpp"
+#include "pattern/design_scene.hpp"
+#include "suggest/limbs.hpp"
+#include "suggest/seam_layouts.hpp"
+#include "test_support.hpp"
+
+namespace billow {
+namespace {
+
+double meshDiagonal(const TriMesh& m) { return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm(); }
+
+double meshArea(const TriMesh& m) {
+  double area = 0;
+  for (int f = 0; f < m.F.rows(); ++f) {
+    const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area;
+}
+
+// Each limb is closed off by its root loop: a loop where its level is zero, every path from the limb's faces to the
+// body's crossing the faces the loop passes through; the tip on the limb, the limb a small part of the surface.
+void expectLimbsClosedOff(const TriMesh& mesh, const std::vector<Limb>& limbs) {
+  const double D = meshDiagonal(mesh), total = meshArea(mesh);
+  std::vector<std::set<int>> vertexFaces(size_t(mesh.V.rows()));
+  for (int f = 0; f < mesh.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) vertexFaces[size_t(mesh.F(f, k))].insert(f);
+  for (const Limb& limb : limbs) {
+    ASSERT_EQ(limb.faces.size(), size_t(mesh.F.rows()));
+    EXPECT_GE(limb.elongation, kLimbElongation);
+    EXPECT_LT(limb.area, 0.3 * total);
+    EXPECT_GT(limb.area, 0);
+    EXPECT_GE(limb.rootLoop.size(), 3u);
+    for (const SectionPoint& p : limb.rootLoop) {
+      EXPECT_NEAR(limbLevel(mesh, limb, p.at.face, p.position), 0, 1e-9 * D);
+      EXPECT_EQ(limb.faces[size_t(p.at.face)], 2);
+    }
+    EXPECT_NEAR(limb.girth, loopLength(limb.rootLoop), 1e-12 * D);
+    bool tipOn = false;
+    for (int f : vertexFaces[size_t(limb.tip)]) tipOn |= limb.faces[size_t(f)] == 1;
+    EXPECT_TRUE(tipOn);
+    EXPECT_LT(limb.level[limb.tip], 0);
+    // No vertex is shared by a face of the limb and a face of the body: the root loop's faces lie between.
+    for (const std::set<int>& faces : vertexFaces) {
+      bool limbFace = false, bodyFace = false;
+      for (int f : faces) limbFace |= limb.faces[size_t(f)] == 1, bodyFace |= limb.faces[size_t(f)] == 0;
+      EXPECT_FALSE(limbFace && bodyFace);
+    }
+  }
+  // No two overlap.
+  for (size_t i = 0; i < limbs.size(); ++i)
+    for (size_t j = i + 1; j < limbs.size(); ++j)
+      for (int f = 0; f < mesh.F.rows(); ++f) EXPECT_FALSE(limbs[i].faces[size_t(f)] && limbs[j].faces[size_t(f)]);
+}
+
+TEST(Limbs, TheOctopusHasEightArmsTheBunnyItsEarsAndTheSphereNone) {
+  const TriMesh octopus = test::loadShared("octopus.obj");
+  const std::vector<Limb> arms = findLimbs(octopus);
+  EXPECT_EQ(arms.size(), 8u);
+  expectLimbsClosedOff(octopus, arms);
+  for (const Limb& arm : arms) EXPECT_GT(arm.elongation, 4);  // long thin tentacles
+
+  const TriMesh bunny = test::loadShared("bunny.obj");
+  const std::vector<Limb> ears = findLimbs(bunny);
+  ASSERT_EQ(ears.size(), 2u);
+  expectLimbsClosedOff(bunny, ears);
+  // Both tips in the top fifth of the bunny (it stands Y up).
+  const double top = bunny.V.col(1).maxCoeff(), height = top - bunny.V.col(1).minCoeff();
+  for (const Limb& ear : ears) EXPECT_GT(bunny.V(ear.tip, 1), top - 0.2 * height);
+
+  EXPECT_TRUE(findLimbs(test::loadShared("sphere.obj")).empty());
+}
+
+// A plush toy's pattern for the octopus: a seam around each arm where it joins the body, each arm halved along its
+// curl, the body in two. Plane sections leave its coiled arms tubes the openings cannot make panels of within 24
+// (bench/README.md "Suggested seam layouts"), and its front and back along the outline miss most of the arms.
+TEST(SeamLayouts, TheOctopusIsPatternedAroundAndAlongEachArmAndComesFarCloserThanItsTwoPieces) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
+  const auto scene = test::sharedScene("octopus.obj");
+  LayoutRequest request;
+  request.panels = 24;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  std::vector<const LayoutProposal*> limbLayouts;
+  const LayoutProposal* outline = nullptr;
+  for (const LayoutProposal& p : proposals) {
+    if (!p.limbs.empty() && p.bands == 0) limbLayouts.push_back(&p);
+    if (p.outlineView == 2 && p.bands == 0) outline = &p;
+  }
+  ASSERT_EQ(limbLayouts.size(), 3u);  // the body halved across each axis (and in bands: not tried here)
+  ASSERT_NE(outline, nullptr);
+  EvaluateOptions options;
+  LayoutEvaluation best;
+  best.distance = INFINITY;
+  for (const LayoutProposal* p : limbLayouts) {
+    EXPECT_EQ(p->limbs.size(), 8u);
+    EXPECT_EQ(p->name.rfind("seams around 8 limbs, each halved along its length, the body in ", 0), 0u) << p->name;
+    const std::vector<DesignSeam> seams = proposalSeams(scene->target, *p);
+    int around = 0, along = 0;
+    for (const DesignSeam& s : seams) {
+      around += s.name.rfind("around limb ", 0) == 0 && s.closed;
+      along += s.name.rfind("along limb ", 0) == 0;
+    }
+    EXPECT_EQ(around, 8) << p->name;
+    EXPECT_GE(along, 8) << p->name;
+    const LayoutEvaluation e = evaluateLayout(*scene, seams, 0, options);
+    if (!e.ok) continue;
+    EXPECT_TRUE(scene->segmentation.problems.empty());
+    EXPECT_LE(e.panels, 24);
+    EXPECT_GE(e.panels, 17);  // each arm in two, the body in two or more
+    if (e.distance < best.distance) best = e;
+  }
+  ASSERT_TRUE(best.ok);
+  const LayoutEvaluation twoPieces = evaluateLayout(*scene, proposalSeams(scene->target, *outline), 0, options);
+  ASSERT_TRUE(twoPieces.ok) << twoPieces.problem;
+  EXPECT_LT(best.distance, 0.6 * twoPieces.distance) << best.distance << " against " << twoPieces.distance;
+  EXPECT_LT(best.targetToInflated, 0.6 * twoPieces.targetToInflated);
+}
+
+// Where the symmetry is kept, a layout's limbs come in mirror pairs (the same planes reflected) or stand on the mirror
+// plane on their own, halved along it, and the body's halving plane is its own mirror image.
+TEST(SeamLayouts, LimbLayoutsThatKeepTheMirrorSymmetryAreTheirOwnMirrorImage) {
+  for (const char* name : {"koala.obj", "elephant.obj"}) {
+    const TriMesh target = test::loadShared(name);
+    const double mid = 0.5 * (target.V.col(0).maxCoeff() + target.V.col(0).minCoeff()), D = meshDiagonal(target);
+    const auto reflected = [&](const SectionPlane& p) {
+      SectionPlane q{p.normal, p.offset - 2 * mid * p.normal.x()};
+      q.normal.x() = -q.normal.x();
+      return q;
+    };
+    const auto same = [&](const SectionPlane& a, const SectionPlane& b) {
+      return (a.normal - b.normal).norm() < 1e-9 && std::abs(a.offset - b.offset) < 1e-9 * D;
+    };
+    LayoutRequest request;
+    request.panels = 24, request.symmetryAxis = 0;
+    int layouts = 0;
+    for (const LayoutProposal& p : proposeLayouts(target, request)) {
+      if (p.limbs.empty()) continue;
+      ++layouts;
+      ASSERT_EQ(p.planes.size(), size_t(1 + p.bands));
+      for (const SectionPlane& plane : p.planes)
+        EXPECT_TRUE(same(reflected(plane), plane) || same(reflected(plane), {-plane.normal, -plane.offset}))
+            << name << ": " << p.name;
+      const auto mean = [](const SectionLoop& loop) {
+        Eigen::Vector3d m = Eigen::Vector3d::Zero();
+        for (const SectionPoint& q : loop) m += q.position;
+        return Eigen::Vector3d(m / double(loop.size()));
+      };
+      for (const Limb& limb : p.limbs) {
+        const Eigen::Vector3d m = mean(limb.rootLoop);
+        if (std::abs(m.x() - mid) < 0.01 * D) {  // on the mirror plane: halved along it
+          EXPECT_TRUE(same(limb.along, {Eigen::Vector3d::UnitX(), mid})) << name;
+          continue;
+        }
+        // Its twin's root loop is its mirror image (to within the mesh's own asymmetry), its plane along it reflected.
+        int twins = 0;
+        for (const Limb& other : p.limbs) {
+          Eigen::Vector3d image = mean(other.rootLoop);
+          image.x() = 2 * mid - image.x();
+          twins += (image - m).norm() < 0.02 * D && same(reflected(limb.along), other.along);
+        }
+        EXPECT_EQ(twins, 1) << name << ": " << p.name;
+      }
+    }
+    EXPECT_GT(layouts, 0) << name;
+  }
+}
+
+}  // namespace
+}  // namespace billow

@@ -1,0 +1,300 @@
+#include "suggest/limbs.hpp"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <optional>
+#include <queue>
+
+#include "seams/surface_point.hpp"
+
+namespace billow {
+
+namespace {
+
+constexpr int kTipCandidates = 24;  // farthest points tried as tips
+constexpr int kRadii = 96;          // geodesic radii sampled from each tip
+// A limb is less than this share of the surface (a body's half seen from its end is not a limb).
+constexpr double kLimbAreaShare = 0.3;
+// Its root is the last radius where the cap's elongation stands within this share of its highest.
+constexpr double kRootPlateau = 0.9;
+
+struct EdgeGraph {
+  std::vector<std::vector<std::pair<int, double>>> next;  // per vertex: neighbour, edge length
+};
+
+EdgeGraph edgeGraph(const TriMesh& mesh) {
+  EdgeGraph g;
+  g.next.resize(size_t(mesh.V.rows()));
+  for (int f = 0; f < mesh.F.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+      // Each edge is met from both its faces: kept once, from the face where a < b runs forward.
+      if (a > b) continue;
+      const double l = (mesh.V.row(a) - mesh.V.row(b)).norm();
+      g.next[size_t(a)].push_back({b, l}), g.next[size_t(b)].push_back({a, l});
+    }
+  return g;
+}
+
+// Shortest distances along edges from `source`.
+Eigen::VectorXd edgeDistances(const EdgeGraph& g, int source) {
+  Eigen::VectorXd d = Eigen::VectorXd::Constant(Eigen::Index(g.next.size()), INFINITY);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  d[source] = 0, queue.push({0, source});
+  while (!queue.empty()) {
+    const auto [dv, v] = queue.top();
+    queue.pop();
+    if (dv > d[v]) continue;
+    for (const auto& [w, l] : g.next[size_t(v)])
+      if (dv + l < d[w]) d[w] = dv + l, queue.push({d[w], w});
+  }
+  return d;
+}
+
+// The length of the level set {d = r} within triangle a, b, c (d linear over it).
+double levelLength(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double da, double db,
+                   double dc, double r) {
+  Eigen::Vector3d ends[2];
+  int n = 0;
+  const Eigen::Vector3d* p[3] = {&a, &b, &c};
+  const double d[3] = {da, db, dc};
+  for (int k = 0; k < 3 && n < 2; ++k) {
+    const double s = d[k] - r, t = d[(k + 1) % 3] - r;
+    if ((s < 0) == (t < 0)) continue;
+    ends[n++] = *p[k] + s / (s - t) * (*p[(k + 1) % 3] - *p[k]);
+  }
+  return n == 2 ? (ends[0] - ends[1]).norm() : 0;
+}
+
+// Area-weighted centroid and covariance of the faces marked in `on` (value 1).
+void faceMoments(const TriMesh& mesh, const std::vector<char>& on, Eigen::Vector3d& center, Eigen::Matrix3d& covariance,
+                 double& area) {
+  center.setZero(), covariance.setZero(), area = 0;
+  for (int f = 0; f < mesh.F.rows(); ++f) {
+    if (on[size_t(f)] != 1) continue;
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    const double at = 0.5 * (b - a).cross(c - a).norm();
+    const Eigen::Vector3d m = (a + b + c) / 3;
+    center += at * m, covariance += at * m * m.transpose(), area += at;
+  }
+  if (area > 0) center /= area, covariance = covariance / area - center * center.transpose();
+}
+
+// The target's faces: their areas and the faces across their edges.
+struct MeshFaces {
+  Eigen::VectorXd area;
+  std::vector<std::vector<int>> neighbours;
+};
+
+MeshFaces meshFaces(const TriMesh& mesh) {
+  const int nf = int(mesh.F.rows());
+  MeshFaces out{Eigen::VectorXd(nf), std::vector<std::vector<int>>(static_cast<size_t>(nf))};
+  std::vector<std::pair<std::pair<int, int>, int>> edges;
+  for (int f = 0; f < nf; ++f) {
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    out.area[f] = 0.5 * (b - a).cross(c - a).norm();
+    for (int k = 0; k < 3; ++k) {
+      const int u = mesh.F(f, k), v = mesh.F(f, (k + 1) % 3);
+      edges.push_back({{std::min(u, v), std::max(u, v)}, f});
+    }
+  }
+  std::sort(edges.begin(), edges.end());
+  for (size_t i = 0; i + 1 < edges.size(); ++i)
+    if (edges[i].first == edges[i + 1].first) {
+      out.neighbours[size_t(edges[i].second)].push_back(edges[i + 1].second);
+      out.neighbours[size_t(edges[i + 1].second)].push_back(edges[i].second);
+    }
+  return out;
+}
+
+// The limb's faces beyond its root loop (from its tip's, not across the loop's), its area, girth and the plane along
+// it; false where the loop does not close it off.
+bool closeOff(const TriMesh& mesh, const MeshFaces& faces, Limb& limb) {
+  limb.faces.assign(size_t(mesh.F.rows()), 0);
+  for (const SectionPoint& p : limb.rootLoop) limb.faces[size_t(p.at.face)] = 2;
+  int start = -1;
+  for (int f = 0; f < mesh.F.rows() && start < 0; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (mesh.F(f, k) == limb.tip && limb.faces[size_t(f)] == 0) start = f;
+  if (start < 0) return false;
+  std::vector<int> stack{start};
+  limb.faces[size_t(start)] = 1;
+  double area = 0;
+  while (!stack.empty()) {
+    const int f = stack.back();
+    stack.pop_back();
+    area += faces.area[f];
+    for (int g : faces.neighbours[size_t(f)])
+      if (limb.faces[size_t(g)] == 0) limb.faces[size_t(g)] = 1, stack.push_back(g);
+  }
+  if (area > 2 * kLimbAreaShare * faces.area.sum()) return false;
+  Eigen::Vector3d center;
+  Eigen::Matrix3d covariance;
+  faceMoments(mesh, limb.faces, center, covariance, limb.area);
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(covariance);
+  limb.along = {eig.eigenvectors().col(0), eig.eigenvectors().col(0).dot(center)};
+  limb.across = eig.eigenvectors().col(1), limb.center = center;
+  limb.girth = loopLength(limb.rootLoop);
+  return true;
+}
+
+// The limb from `tip` whose distances along the surface are `d`, if its cap grows as a tube: its root, its faces.
+bool limbFrom(const TriMesh& mesh, const MeshFaces& faces, int tip, const Eigen::VectorXd& d, Limb& out) {
+  const Eigen::VectorXd& faceArea = faces.area;
+  const double total = faceArea.sum();
+  // The radius within which the cap holds kLimbAreaShare of the surface.
+  std::vector<std::pair<double, double>> entry;  // a face's farthest corner, its area
+  for (int f = 0; f < mesh.F.rows(); ++f)
+    entry.push_back({std::max({d[mesh.F(f, 0)], d[mesh.F(f, 1)], d[mesh.F(f, 2)]}), faceArea[f]});
+  std::sort(entry.begin(), entry.end());
+  double rMax = 0, walked = 0;
+  for (const auto& [r, a] : entry) {
+    if ((walked += a) > kLimbAreaShare * total) break;
+    rMax = r;
+  }
+  if (!(rMax > 0)) return false;
+  std::vector<double> ratio(kRadii + 1, 0.0);
+  for (int j = 1; j <= kRadii; ++j) {
+    const double r = rMax * j / kRadii;
+    double girth = 0;
+    for (int f = 0; f < mesh.F.rows(); ++f) {
+      const int a = mesh.F(f, 0), b = mesh.F(f, 1), c = mesh.F(f, 2);
+      if (std::min({d[a], d[b], d[c]}) >= r || std::max({d[a], d[b], d[c]}) < r) continue;
+      girth += levelLength(mesh.V.row(a), mesh.V.row(b), mesh.V.row(c), d[a], d[b], d[c], r);
+    }
+    if (girth > 0) ratio[size_t(j)] = M_PI * r / girth;
+  }
+  // Past the tip's own rounding (the first eighth), where the cap is longest for its width; then on along the plateau.
+  size_t best = kRadii / 8;
+  for (size_t j = best; j <= kRadii; ++j)
+    if (ratio[j] > ratio[best]) best = j;
+  if (ratio[best] < kLimbElongation) return false;
+  size_t root = best;
+  while (root < kRadii && ratio[root + 1] >= kRootPlateau * ratio[best]) ++root;
+  // Where the rim is one loop round the limb (not yet wrapped round something).
+  for (; root >= best; --root) {
+    out.level = d.array() - rMax * double(root) / kRadii;
+    for (Eigen::Index v = 0; v < out.level.size(); ++v)
+      if (out.level[v] == 0) out.level[v] = 1e-12 * rMax;
+    std::vector<SectionLoop> rims = zeroLoops(mesh, out.level);
+    if (rims.size() == 1) {
+      out.rootLoop = std::move(rims.front());
+      break;
+    }
+    if (root == best) return false;
+  }
+  out.tip = tip, out.elongation = ratio[best];
+  return closeOff(mesh, faces, out);
+}
+
+bool overlap(const Limb& a, const Limb& b) {
+  for (size_t f = 0; f < a.faces.size(); ++f)
+    if (a.faces[f] && b.faces[f]) return true;
+  return false;
+}
+
+}  // namespace
+
+double limbLevel(const TriMesh& target, const Limb& limb, int face, const Eigen::Vector3d& p) {
+  const Eigen::Vector3d w = closestPointBarycentric(p, target.V.row(target.F(face, 0)), target.V.row(target.F(face, 1)),
+                                                    target.V.row(target.F(face, 2)));
+  return w[0] * limb.level[target.F(face, 0)] + w[1] * limb.level[target.F(face, 1)] +
+         w[2] * limb.level[target.F(face, 2)];
+}
+
+bool onLimb(const TriMesh& target, const Limb& limb, int face, const Eigen::Vector3d& p) {
+  const char on = limb.faces[size_t(face)];
+  return on == 1 || (on == 2 && limbLevel(target, limb, face, p) < 0);
+}
+
+std::vector<Limb> findLimbs(const TriMesh& target) {
+  std::vector<Limb> out;
+  const int nv = int(target.V.rows()), nf = int(target.F.rows());
+  if (nv < 4 || nf < 4) return out;
+  const EdgeGraph graph = edgeGraph(target);
+  const MeshFaces faces = meshFaces(target);
+  // Tips: the farthest points, each the farthest from those before (a limb's end is far from everything).
+  Eigen::VectorXd nearestTip = edgeDistances(graph, 0);  // the first tip: the farthest from any vertex
+  std::vector<Limb> candidates;
+  for (int i = 0; i < kTipCandidates; ++i) {
+    Eigen::Index tip = 0;
+    nearestTip.maxCoeff(&tip);
+    if (!std::isfinite(nearestTip[tip]) || (i > 0 && nearestTip[tip] <= 0)) break;
+    const Eigen::VectorXd d = edgeDistances(graph, int(tip));
+    nearestTip = i == 0 ? d : nearestTip.cwiseMin(d);
+    Limb limb;
+    if (limbFrom(target, faces, int(tip), d, limb)) candidates.push_back(std::move(limb));
+  }
+  std::sort(candidates.begin(), candidates.end(),
+            [](const Limb& a, const Limb& b) { return a.elongation > b.elongation; });
+  for (Limb& limb : candidates)
+    if (std::none_of(out.begin(), out.end(), [&](const Limb& other) { return overlap(limb, other); }))
+      out.push_back(std::move(limb));
+  return out;
+}
+
+std::vector<std::vector<Limb>> mirrorSymmetricLimbs(const TriMesh& target, const std::vector<Limb>& limbs, int axis,
+                                                    double mid) {
+  std::vector<std::vector<Limb>> out;
+  const MeshFaces faces = meshFaces(target);
+  const SurfaceProjector projector(target);
+  const double extent = target.V.col(axis).maxCoeff() - target.V.col(axis).minCoeff();
+  const auto reflect = [&](Eigen::Vector3d p) { return p[axis] = 2 * mid - p[axis], p; };
+  // Each vertex's mirror image on the surface, once.
+  std::vector<SurfacePoint> image;
+  for (Eigen::Index v = 0; v < target.V.rows(); ++v) image.push_back(projector.project(reflect(target.V.row(v))));
+  const auto reflected = [&](const Eigen::VectorXd& level) {
+    Eigen::VectorXd mirrored(level.size());
+    for (Eigen::Index v = 0; v < level.size(); ++v) {
+      const SurfacePoint& p = image[size_t(v)];
+      mirrored[v] = p.bary[0] * level[target.F(p.face, 0)] + p.bary[1] * level[target.F(p.face, 1)] +
+                    p.bary[2] * level[target.F(p.face, 2)];
+      if (mirrored[v] == 0) mirrored[v] = 1e-12 * extent;
+    }
+    return mirrored;
+  };
+  // The limb with this level, if it is one loop that closes a limb off.
+  const auto withLevel = [&](Limb limb, const Eigen::VectorXd& level, int tip) -> std::optional<Limb> {
+    limb.level = level, limb.tip = tip;
+    std::vector<SectionLoop> rims = zeroLoops(target, level);
+    if (rims.size() != 1 || level[tip] >= 0) return std::nullopt;
+    limb.rootLoop = std::move(rims.front());
+    if (!closeOff(target, faces, limb)) return std::nullopt;
+    return limb;
+  };
+  for (const Limb& limb : limbs) {
+    const double side = target.V(limb.tip, axis) - mid;
+    std::vector<Limb> group;
+    if (std::abs(side) < 0.05 * extent) {
+      // On the plane (a tail, a trunk): its level made its own mirror image, halved along the plane.
+      std::optional<Limb> own = withLevel(limb, 0.5 * (limb.level + reflected(limb.level)), limb.tip);
+      if (!own) continue;
+      own->along = {Eigen::Vector3d::Unit(axis), mid};
+      own->across = Eigen::Vector3d::Unit(axis);  // no other halving is its own mirror image
+      group.push_back(std::move(*own));
+    } else {
+      // With its mirror image on the other side.
+      Eigen::Index tip = 0;
+      (target.V.rowwise() - reflect(target.V.row(limb.tip)).transpose()).rowwise().squaredNorm().minCoeff(&tip);
+      std::optional<Limb> twin = withLevel(limb, reflected(limb.level), int(tip));
+      if (!twin || overlap(limb, *twin)) continue;
+      Eigen::Vector3d a = limb.along.normal;
+      a[axis] = -a[axis];
+      twin->along = {a, a.dot(reflect(limb.along.normal * limb.along.offset))};
+      twin->across = limb.across, twin->across[axis] = -limb.across[axis], twin->center = reflect(limb.center);
+      group.push_back(limb), group.push_back(std::move(*twin));
+    }
+    const bool overlaps = std::any_of(out.begin(), out.end(), [&](const std::vector<Limb>& other) {
+      for (const Limb& a : group)
+        for (const Limb& b : other)
+          if (overlap(a, b)) return true;
+      return false;
+    });
+    if (!group.empty() && !overlaps) out.push_back(std::move(group));
+  }
+  return out;
+}
+
+}  // namespace billow
