@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
+#include <map>
 #include <set>
 
 #include "io/design_json.hpp"
@@ -75,6 +77,51 @@ TEST(Limbs, TheOctopusHasEightArmsTheBunnyItsEarsAndTheSphereNone) {
   for (const Limb& ear : ears) EXPECT_GT(bunny.V(ear.tip, 1), top - 0.2 * height);
 
   EXPECT_TRUE(findLimbs(test::loadShared("sphere.obj")).empty());
+}
+
+// A starfish made for the purpose (the unit sphere subdivided, five arms pulled out of its equator, flattened): its
+// arms meet in its middle, so each arm's cap overlaps its neighbours' before it stops growing as a tube; each root
+// moves back towards its tip until the five are apart.
+TEST(Limbs, AStarfishsFiveArmsAreFoundThoughTheyMeetInItsMiddle) {
+  TriMesh mesh = test::loadShared("sphere.obj");
+  for (int level = 0; level < 2; ++level) {  // each triangle in four, the new points pushed out onto the sphere
+    std::map<std::pair<int, int>, int> middle;
+    std::vector<Eigen::Vector3d> points;
+    for (int v = 0; v < mesh.V.rows(); ++v) points.push_back(mesh.V.row(v).normalized());
+    const auto mid = [&](int a, int b) {
+      const auto [it, added] = middle.insert({{std::min(a, b), std::max(a, b)}, int(points.size())});
+      if (added) points.push_back((points[size_t(a)] + points[size_t(b)]).normalized());
+      return it->second;
+    };
+    std::vector<Eigen::Vector3i> faces;
+    for (int f = 0; f < mesh.F.rows(); ++f) {
+      const int a = mesh.F(f, 0), b = mesh.F(f, 1), c = mesh.F(f, 2), ab = mid(a, b), bc = mid(b, c), ca = mid(c, a);
+      faces.insert(faces.end(), {{a, ab, ca}, {b, bc, ab}, {c, ca, bc}, {ab, bc, ca}});
+    }
+    mesh.V.resize(Eigen::Index(points.size()), 3), mesh.F.resize(Eigen::Index(faces.size()), 3);
+    for (size_t i = 0; i < points.size(); ++i) mesh.V.row(Eigen::Index(i)) = points[i];
+    for (size_t i = 0; i < faces.size(); ++i) mesh.F.row(Eigen::Index(i)) = faces[i];
+  }
+  std::vector<Eigen::Vector3d> arms;
+  for (int k = 0; k < 5; ++k) arms.push_back({std::cos(2 * test::kPi * k / 5), 0, std::sin(2 * test::kPi * k / 5)});
+  for (int v = 0; v < mesh.V.rows(); ++v) {
+    const Eigen::Vector3d u = mesh.V.row(v);
+    double r = 1;
+    for (const Eigen::Vector3d& d : arms)
+      r = std::max(r, 1 + 1.8 * std::exp(-std::pow(std::acos(std::clamp(u.dot(d), -1.0, 1.0)) / 0.28, 2)));
+    mesh.V.row(v) = (r * u).cwiseProduct(Eigen::Vector3d(1, 0.45, 1));
+  }
+  const std::vector<Limb> limbs = findLimbs(mesh);
+  ASSERT_EQ(limbs.size(), 5u);
+  expectLimbsClosedOff(mesh, limbs);
+  std::set<int> found;
+  for (const Limb& limb : limbs) {
+    const Eigen::Vector3d tip = mesh.V.row(limb.tip);
+    for (int k = 0; k < 5; ++k)
+      if (Eigen::Vector3d(tip.x(), 0, tip.z()).normalized().dot(arms[size_t(k)]) > std::cos(10 * test::kPi / 180))
+        found.insert(k);
+  }
+  EXPECT_EQ(found.size(), 5u) << "a tip at the end of each arm";
 }
 
 // A plush toy's pattern for the octopus: a seam around each arm where it joins the body, each arm halved along its

@@ -140,8 +140,16 @@ bool closeOff(const TriMesh& mesh, const MeshFaces& faces, Limb& limb) {
   return true;
 }
 
-// The limb from `tip` whose distances along the surface are `d`, if its cap grows as a tube: its root, its faces.
-bool limbFrom(const TriMesh& mesh, const MeshFaces& faces, int tip, const Eigen::VectorXd& d, Limb& out) {
+// A tip whose cap grows as a tube: the radii its root may lie at, the farthest first (rootRadii, from where the cap's
+// elongation last stands near its highest back to its highest).
+struct TipProfile {
+  int tip = -1;
+  Eigen::VectorXd d;  // distances from the tip along the surface
+  double elongation = 0;
+  std::vector<double> rootRadii;
+};
+
+std::optional<TipProfile> tipProfile(const TriMesh& mesh, const MeshFaces& faces, int tip, Eigen::VectorXd d) {
   const Eigen::VectorXd& faceArea = faces.area;
   const double total = faceArea.sum();
   // The radius within which the cap holds kLimbAreaShare of the surface.
@@ -154,7 +162,7 @@ bool limbFrom(const TriMesh& mesh, const MeshFaces& faces, int tip, const Eigen:
     if ((walked += a) > kLimbAreaShare * total) break;
     rMax = r;
   }
-  if (!(rMax > 0)) return false;
+  if (!(rMax > 0)) return std::nullopt;
   std::vector<double> ratio(kRadii + 1, 0.0);
   for (int j = 1; j <= kRadii; ++j) {
     const double r = rMax * j / kRadii;
@@ -170,23 +178,27 @@ bool limbFrom(const TriMesh& mesh, const MeshFaces& faces, int tip, const Eigen:
   size_t best = kRadii / 8;
   for (size_t j = best; j <= kRadii; ++j)
     if (ratio[j] > ratio[best]) best = j;
-  if (ratio[best] < kLimbElongation) return false;
+  if (ratio[best] < kLimbElongation) return std::nullopt;
   size_t root = best;
   while (root < kRadii && ratio[root + 1] >= kRootPlateau * ratio[best]) ++root;
-  // Where the rim is one loop round the limb (not yet wrapped round something).
-  for (; root >= best; --root) {
-    out.level = d.array() - rMax * double(root) / kRadii;
-    for (Eigen::Index v = 0; v < out.level.size(); ++v)
-      if (out.level[v] == 0) out.level[v] = 1e-12 * rMax;
-    std::vector<SectionLoop> rims = zeroLoops(mesh, out.level);
-    if (rims.size() == 1) {
-      out.rootLoop = std::move(rims.front());
-      break;
-    }
-    if (root == best) return false;
-  }
-  out.tip = tip, out.elongation = ratio[best];
-  return closeOff(mesh, faces, out);
+  TipProfile out{tip, std::move(d), ratio[best], {}};
+  for (size_t j = root + 1; j-- > best;) out.rootRadii.push_back(rMax * double(j) / kRadii);
+  return out;
+}
+
+// The limb of `profile` whose root lies at radius r: its rim there, if one loop round the limb (not wrapped round
+// something), that closes it off.
+std::optional<Limb> limbAt(const TriMesh& mesh, const MeshFaces& faces, const TipProfile& profile, double r) {
+  Limb limb;
+  limb.tip = profile.tip, limb.elongation = profile.elongation;
+  limb.level = profile.d.array() - r;
+  for (Eigen::Index v = 0; v < limb.level.size(); ++v)
+    if (limb.level[v] == 0) limb.level[v] = 1e-12 * r;
+  std::vector<SectionLoop> rims = zeroLoops(mesh, limb.level);
+  if (rims.size() != 1) return std::nullopt;
+  limb.rootLoop = std::move(rims.front());
+  if (!closeOff(mesh, faces, limb)) return std::nullopt;
+  return limb;
 }
 
 bool overlap(const Limb& a, const Limb& b) {
@@ -217,21 +229,28 @@ std::vector<Limb> findLimbs(const TriMesh& target) {
   const MeshFaces faces = meshFaces(target);
   // Tips: the farthest points, each the farthest from those before (a limb's end is far from everything).
   Eigen::VectorXd nearestTip = edgeDistances(graph, 0);  // the first tip: the farthest from any vertex
-  std::vector<Limb> candidates;
+  std::vector<TipProfile> candidates;
   for (int i = 0; i < kTipCandidates; ++i) {
     Eigen::Index tip = 0;
     nearestTip.maxCoeff(&tip);
     if (!std::isfinite(nearestTip[tip]) || (i > 0 && nearestTip[tip] <= 0)) break;
-    const Eigen::VectorXd d = edgeDistances(graph, int(tip));
+    Eigen::VectorXd d = edgeDistances(graph, int(tip));
     nearestTip = i == 0 ? d : nearestTip.cwiseMin(d);
-    Limb limb;
-    if (limbFrom(target, faces, int(tip), d, limb)) candidates.push_back(std::move(limb));
+    if (std::optional<TipProfile> profile = tipProfile(target, faces, int(tip), std::move(d)))
+      candidates.push_back(std::move(*profile));
   }
   std::sort(candidates.begin(), candidates.end(),
-            [](const Limb& a, const Limb& b) { return a.elongation > b.elongation; });
-  for (Limb& limb : candidates)
-    if (std::none_of(out.begin(), out.end(), [&](const Limb& other) { return overlap(limb, other); }))
-      out.push_back(std::move(limb));
+            [](const TipProfile& a, const TipProfile& b) { return a.elongation > b.elongation; });
+  // Each at its farthest root that leaves the limbs before it whole (arms that meet at a starfish's middle each end
+  // short of it).
+  for (const TipProfile& profile : candidates)
+    for (double r : profile.rootRadii) {
+      std::optional<Limb> limb = limbAt(target, faces, profile, r);
+      if (!limb) continue;
+      if (std::any_of(out.begin(), out.end(), [&](const Limb& other) { return overlap(*limb, other); })) continue;
+      out.push_back(std::move(*limb));
+      break;
+    }
   return out;
 }
 
