@@ -4,8 +4,8 @@
 // Seen from a limb's tip, the surface within a geodesic distance r is a cap that grows along the limb as a tube:
 // its rim keeps about the limb's girth P while r grows, so pi r / P, the cap's length over its width, climbs. Past
 // the root the rim spreads over the body and the ratio falls. A tip whose ratio climbs past kLimbElongation is a
-// limb's, and its root is where the ratio last stands near its highest: the rim there, a loop around the limb where it
-// joins the body.
+// limb's, and its root is where the ratio last stands near its highest (or nearer the tip, where that would overlap a
+// more elongated limb): the rim there, a loop around the limb where it joins the body.
 #pragma once
 #include <Eigen/Core>
 #include <vector>
@@ -32,7 +32,7 @@ struct Limb {
   SectionPlane along;
   Eigen::Vector3d across = Eigen::Vector3d::UnitY();  // unit, across `along`'s normal
   Eigen::Vector3d center = Eigen::Vector3d::Zero();   // of its area
-  double elongation = 0;                              // its length over its width at the root (pi r / P)
+  double elongation = 0;                              // its cap's greatest length over width (pi r / P)
   double area = 0;                                    // [target units^2]
   double girth = 0;                                   // the root loop's length
 };
