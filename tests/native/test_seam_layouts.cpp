@@ -6,6 +6,7 @@
 #include <fstream>
 #include <map>
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <set>
 
 #include "io/design_json.hpp"
@@ -50,6 +51,15 @@ void expectBalloon(const LayoutEvaluation& e) {
 }
 
 using test::sharedScene;
+
+// The proposal of six gores (no bands) among those for six panels.
+std::optional<LayoutProposal> sixGores(const TriMesh& target) {
+  LayoutRequest request;
+  request.panels = 6;
+  for (LayoutProposal& p : proposeLayouts(target, request))
+    if (p.gores == 6 && p.bands == 0) return std::move(p);
+  return std::nullopt;
+}
 
 TEST(PlaneSection, TheSphereEquatorIsOneLoopOnThePlaneAndOnTheSurface) {
   const TriMesh sphere = loadShared("sphere.obj");
@@ -173,12 +183,8 @@ TEST(SeamLayouts, GoresOfTheSphereMeetAtItsPolesAndInflateClose) {
 // how wide a roll they need; on that roll they fit. Layouts that fit come first, then the closest.
 TEST(SeamLayouts, ALayoutWhosePiecesAreWiderThanTheSheetSaysWhatRollItNeedsAndComesAfterThoseThatFit) {
   auto sphere = sharedScene("sphere.obj", 3.0);
-  LayoutRequest request;
-  request.panels = 6;
-  const std::vector<LayoutProposal> proposals = proposeLayouts(sphere->target, request);
-  const auto six = std::find_if(proposals.begin(), proposals.end(),
-                                [](const LayoutProposal& p) { return p.gores == 6 && p.bands == 0; });
-  ASSERT_NE(six, proposals.end());
+  const std::optional<LayoutProposal> six = sixGores(sphere->target);
+  ASSERT_TRUE(six);
   const std::vector<DesignSeam> seams = proposalSeams(sphere->target, *six);
   EvaluateOptions options;
   options.triangles = 400, options.maxIterations = 3;
@@ -290,12 +296,8 @@ TEST(SeamLayouts, TheMostPromisingLooksAreOptimizedAtMostThreeOfAFamily) {
 // inflated (half the looks at 24 panels are).
 TEST(SeamLayouts, ALayoutWithMorePanelsThanAskedForIsRefusedBeforeItIsBuilt) {
   const auto scene = sharedScene("sphere.obj");
-  LayoutRequest request;
-  request.panels = 6;
-  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
-  const auto six = std::find_if(proposals.begin(), proposals.end(),
-                                [](const LayoutProposal& p) { return p.gores == 6 && p.bands == 0; });
-  ASSERT_NE(six, proposals.end());
+  const std::optional<LayoutProposal> six = sixGores(scene->target);
+  ASSERT_TRUE(six);
   const LayoutEvaluation refused = lookAtLayout(*scene, *six, {}, 4, {});
   EXPECT_FALSE(refused.ok);
   EXPECT_EQ(refused.problem, "it makes 6 panels on this shape");

@@ -6,6 +6,7 @@
 #include <optional>
 #include <queue>
 
+#include "seams/mesh_topology.hpp"
 #include "seams/surface_point.hpp"
 
 namespace billow {
@@ -18,40 +19,6 @@ constexpr int kRadii = 96;          // geodesic radii sampled from each tip
 constexpr double kLimbAreaShare = 0.3;
 // Its root is the last radius where the cap's elongation stands within this share of its highest.
 constexpr double kRootPlateau = 0.9;
-
-struct EdgeGraph {
-  std::vector<std::vector<std::pair<int, double>>> next;  // per vertex: neighbour, edge length
-};
-
-EdgeGraph edgeGraph(const TriMesh& mesh) {
-  EdgeGraph g;
-  g.next.resize(size_t(mesh.V.rows()));
-  for (int f = 0; f < mesh.F.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
-      // Each edge is met from both its faces: kept once, from the face where a < b runs forward.
-      if (a > b) continue;
-      const double l = (mesh.V.row(a) - mesh.V.row(b)).norm();
-      g.next[size_t(a)].push_back({b, l}), g.next[size_t(b)].push_back({a, l});
-    }
-  return g;
-}
-
-// Shortest distances along edges from `source`.
-Eigen::VectorXd edgeDistances(const EdgeGraph& g, int source) {
-  Eigen::VectorXd d = Eigen::VectorXd::Constant(Eigen::Index(g.next.size()), INFINITY);
-  using Item = std::pair<double, int>;
-  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-  d[source] = 0, queue.push({0, source});
-  while (!queue.empty()) {
-    const auto [dv, v] = queue.top();
-    queue.pop();
-    if (dv > d[v]) continue;
-    for (const auto& [w, l] : g.next[size_t(v)])
-      if (dv + l < d[w]) d[w] = dv + l, queue.push({d[w], w});
-  }
-  return d;
-}
 
 // The length of the level set {d = r} within triangle a, b, c (d linear over it).
 double levelLength(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c, double da, double db,
@@ -82,36 +49,43 @@ void faceMoments(const TriMesh& mesh, const std::vector<char>& on, Eigen::Vector
   if (area > 0) center /= area, covariance = covariance / area - center * center.transpose();
 }
 
-// The target's faces: their areas and the faces across their edges.
-struct MeshFaces {
-  Eigen::VectorXd area;
-  std::vector<std::vector<int>> neighbours;
+// The target's edges (MeshTopology) with their lengths, and its faces' areas.
+struct MeshGraph {
+  MeshTopology topology;
+  Eigen::VectorXd edgeLength, area;
 };
 
-MeshFaces meshFaces(const TriMesh& mesh) {
-  const int nf = int(mesh.F.rows());
-  MeshFaces out{Eigen::VectorXd(nf), std::vector<std::vector<int>>(static_cast<size_t>(nf))};
-  std::vector<std::pair<std::pair<int, int>, int>> edges;
-  for (int f = 0; f < nf; ++f) {
+MeshGraph meshGraph(const TriMesh& mesh) {
+  MeshGraph out{buildTopology(mesh), {}, Eigen::VectorXd(mesh.F.rows())};
+  out.edgeLength.resize(out.topology.numEdges());
+  for (int e = 0; e < out.topology.numEdges(); ++e)
+    out.edgeLength[e] = (mesh.V.row(out.topology.E(e, 0)) - mesh.V.row(out.topology.E(e, 1))).norm();
+  for (int f = 0; f < mesh.F.rows(); ++f) {
     const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
     out.area[f] = 0.5 * (b - a).cross(c - a).norm();
-    for (int k = 0; k < 3; ++k) {
-      const int u = mesh.F(f, k), v = mesh.F(f, (k + 1) % 3);
-      edges.push_back({{std::min(u, v), std::max(u, v)}, f});
-    }
   }
-  std::sort(edges.begin(), edges.end());
-  for (size_t i = 0; i + 1 < edges.size(); ++i)
-    if (edges[i].first == edges[i + 1].first) {
-      out.neighbours[size_t(edges[i].second)].push_back(edges[i + 1].second);
-      out.neighbours[size_t(edges[i + 1].second)].push_back(edges[i].second);
-    }
   return out;
+}
+
+// Shortest distances along edges from `source`.
+Eigen::VectorXd edgeDistances(const MeshGraph& graph, int source) {
+  Eigen::VectorXd d = Eigen::VectorXd::Constant(Eigen::Index(graph.topology.neighbors.size()), INFINITY);
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  d[source] = 0, queue.push({0, source});
+  while (!queue.empty()) {
+    const auto [dv, v] = queue.top();
+    queue.pop();
+    if (dv > d[v]) continue;
+    for (const auto& [w, e] : graph.topology.neighbors[size_t(v)])
+      if (dv + graph.edgeLength[e] < d[w]) d[w] = dv + graph.edgeLength[e], queue.push({d[w], w});
+  }
+  return d;
 }
 
 // The limb's faces beyond its root loop (from its tip's, not across the loop's), its area, girth and the plane along
 // it; false where the loop does not close it off.
-bool closeOff(const TriMesh& mesh, const MeshFaces& faces, Limb& limb) {
+bool closeOff(const TriMesh& mesh, const MeshGraph& graph, Limb& limb) {
   limb.faces.assign(size_t(mesh.F.rows()), 0);
   for (const SectionPoint& p : limb.rootLoop) limb.faces[size_t(p.at.face)] = 2;
   int start = -1;
@@ -125,11 +99,15 @@ bool closeOff(const TriMesh& mesh, const MeshFaces& faces, Limb& limb) {
   while (!stack.empty()) {
     const int f = stack.back();
     stack.pop_back();
-    area += faces.area[f];
-    for (int g : faces.neighbours[size_t(f)])
+    area += graph.area[f];
+    for (int k = 0; k < 3; ++k) {
+      const int e = graph.topology.faceEdges(f, k), g = graph.topology.edgeFaces(e, 0) == f
+                                                            ? graph.topology.edgeFaces(e, 1)
+                                                            : graph.topology.edgeFaces(e, 0);
       if (limb.faces[size_t(g)] == 0) limb.faces[size_t(g)] = 1, stack.push_back(g);
+    }
   }
-  if (area > 2 * kLimbAreaShare * faces.area.sum()) return false;
+  if (area > 2 * kLimbAreaShare * graph.area.sum()) return false;
   Eigen::Vector3d center;
   Eigen::Matrix3d covariance;
   faceMoments(mesh, limb.faces, center, covariance, limb.area);
@@ -149,8 +127,8 @@ struct TipProfile {
   std::vector<double> rootRadii;
 };
 
-std::optional<TipProfile> tipProfile(const TriMesh& mesh, const MeshFaces& faces, int tip, Eigen::VectorXd d) {
-  const Eigen::VectorXd& faceArea = faces.area;
+std::optional<TipProfile> tipProfile(const TriMesh& mesh, const MeshGraph& graph, int tip, Eigen::VectorXd d) {
+  const Eigen::VectorXd& faceArea = graph.area;
   const double total = faceArea.sum();
   // The radius within which the cap holds kLimbAreaShare of the surface.
   std::vector<std::pair<double, double>> entry;  // a face's farthest corner, its area
@@ -186,19 +164,25 @@ std::optional<TipProfile> tipProfile(const TriMesh& mesh, const MeshFaces& faces
   return out;
 }
 
-// The limb of `profile` whose root lies at radius r: its rim there, if one loop round the limb (not wrapped round
-// something), that closes it off.
-std::optional<Limb> limbAt(const TriMesh& mesh, const MeshFaces& faces, const TipProfile& profile, double r) {
+// The limb whose tip and level are `limb`'s: its root the level's zero set, if that is one loop round the limb (not
+// wrapped round something) that closes it off.
+std::optional<Limb> limbWithLevel(const TriMesh& mesh, const MeshGraph& graph, Limb limb) {
+  if (!(limb.level[limb.tip] < 0)) return std::nullopt;
+  std::vector<SectionLoop> rims = zeroLoops(mesh, limb.level);
+  if (rims.size() != 1) return std::nullopt;
+  limb.rootLoop = std::move(rims.front());
+  if (!closeOff(mesh, graph, limb)) return std::nullopt;
+  return limb;
+}
+
+// The limb of `profile` whose root lies at radius r.
+std::optional<Limb> limbAt(const TriMesh& mesh, const MeshGraph& graph, const TipProfile& profile, double r) {
   Limb limb;
   limb.tip = profile.tip, limb.elongation = profile.elongation;
   limb.level = profile.d.array() - r;
   for (Eigen::Index v = 0; v < limb.level.size(); ++v)
     if (limb.level[v] == 0) limb.level[v] = 1e-12 * r;
-  std::vector<SectionLoop> rims = zeroLoops(mesh, limb.level);
-  if (rims.size() != 1) return std::nullopt;
-  limb.rootLoop = std::move(rims.front());
-  if (!closeOff(mesh, faces, limb)) return std::nullopt;
-  return limb;
+  return limbWithLevel(mesh, graph, std::move(limb));
 }
 
 bool overlap(const Limb& a, const Limb& b) {
@@ -225,8 +209,7 @@ std::vector<Limb> findLimbs(const TriMesh& target) {
   std::vector<Limb> out;
   const int nv = int(target.V.rows()), nf = int(target.F.rows());
   if (nv < 4 || nf < 4) return out;
-  const EdgeGraph graph = edgeGraph(target);
-  const MeshFaces faces = meshFaces(target);
+  const MeshGraph graph = meshGraph(target);
   // Tips: the farthest points, each the farthest from those before (a limb's end is far from everything).
   Eigen::VectorXd nearestTip = edgeDistances(graph, 0);  // the first tip: the farthest from any vertex
   std::vector<TipProfile> candidates;
@@ -236,7 +219,7 @@ std::vector<Limb> findLimbs(const TriMesh& target) {
     if (!std::isfinite(nearestTip[tip]) || (i > 0 && nearestTip[tip] <= 0)) break;
     Eigen::VectorXd d = edgeDistances(graph, int(tip));
     nearestTip = i == 0 ? d : nearestTip.cwiseMin(d);
-    if (std::optional<TipProfile> profile = tipProfile(target, faces, int(tip), std::move(d)))
+    if (std::optional<TipProfile> profile = tipProfile(target, graph, int(tip), std::move(d)))
       candidates.push_back(std::move(*profile));
   }
   std::sort(candidates.begin(), candidates.end(),
@@ -245,7 +228,7 @@ std::vector<Limb> findLimbs(const TriMesh& target) {
   // short of it).
   for (const TipProfile& profile : candidates)
     for (double r : profile.rootRadii) {
-      std::optional<Limb> limb = limbAt(target, faces, profile, r);
+      std::optional<Limb> limb = limbAt(target, graph, profile, r);
       if (!limb) continue;
       if (std::any_of(out.begin(), out.end(), [&](const Limb& other) { return overlap(*limb, other); })) continue;
       out.push_back(std::move(*limb));
@@ -257,7 +240,7 @@ std::vector<Limb> findLimbs(const TriMesh& target) {
 std::vector<std::vector<Limb>> mirrorSymmetricLimbs(const TriMesh& target, const std::vector<Limb>& limbs, int axis,
                                                     double mid) {
   std::vector<std::vector<Limb>> out;
-  const MeshFaces faces = meshFaces(target);
+  const MeshGraph graph = meshGraph(target);
   const SurfaceProjector projector(target);
   const double extent = target.V.col(axis).maxCoeff() - target.V.col(axis).minCoeff();
   const auto reflect = [&](Eigen::Vector3d p) { return p[axis] = 2 * mid - p[axis], p; };
@@ -274,14 +257,9 @@ std::vector<std::vector<Limb>> mirrorSymmetricLimbs(const TriMesh& target, const
     }
     return mirrored;
   };
-  // The limb with this level, if it is one loop that closes a limb off.
-  const auto withLevel = [&](Limb limb, const Eigen::VectorXd& level, int tip) -> std::optional<Limb> {
+  const auto withLevel = [&](Limb limb, const Eigen::VectorXd& level, int tip) {
     limb.level = level, limb.tip = tip;
-    std::vector<SectionLoop> rims = zeroLoops(target, level);
-    if (rims.size() != 1 || level[tip] >= 0) return std::nullopt;
-    limb.rootLoop = std::move(rims.front());
-    if (!closeOff(target, faces, limb)) return std::nullopt;
-    return limb;
+    return limbWithLevel(target, graph, std::move(limb));
   };
   for (const Limb& limb : limbs) {
     const double side = target.V(limb.tip, axis) - mid;

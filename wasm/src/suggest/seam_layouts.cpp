@@ -410,20 +410,26 @@ std::vector<LoopCrossing> planeCrossings(const TriMesh& mesh, const SectionLoop&
 }
 
 // Makes `point` one of a closed seam's control points: in place of one within `near`, else between the two it
-// lies between (the least detour), so that seams meeting it there meet it exactly.
-void passThrough(const TriMesh& mesh, std::vector<SurfacePoint>& controls, const SectionPoint& point, double near) {
+// lies between (the least detour), so that seams meeting it there meet it exactly. With `met`, the points earlier
+// calls made control points, which are never replaced; this one is added to them.
+void passThrough(const TriMesh& mesh, std::vector<SurfacePoint>& controls, const SectionPoint& point, double near,
+                 std::vector<Eigen::Vector3d>* met = nullptr) {
   size_t best = 0;
   double detour = INFINITY;
   for (size_t j = 0; j < controls.size(); ++j) {
     const Eigen::Vector3d a = position(mesh, controls[j]), b = position(mesh, controls[(j + 1) % controls.size()]);
-    if ((a - point.position).norm() < near) {
+    const bool kept = met && std::any_of(met->begin(), met->end(),
+                                         [&](const Eigen::Vector3d& m) { return (m - a).norm() < 1e-9 * near; });
+    if (!kept && (a - point.position).norm() < near) {
       controls[j] = point.at;
+      if (met) met->push_back(point.position);
       return;
     }
     if (const double d = (a - point.position).norm() + (point.position - b).norm() - (a - b).norm(); d < detour)
       detour = d, best = j;
   }
   controls.insert(controls.begin() + long(best) + 1, point.at);
+  if (met) met->push_back(point.position);
 }
 
 // A limbs proposal's seams: around each limb's root, the body's halving plane on the body, each halved limb's plane
@@ -435,21 +441,7 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
   // Where pieces meet each rim: each a control point of it, none moved by a later one that lies close.
   std::vector<std::vector<Eigen::Vector3d>> meetings(limbs.size());
   const auto meet = [&](size_t limb, const SectionPoint& x) {
-    std::vector<SurfacePoint>& rim = rims[limb];
-    size_t best = 0;
-    double detour = INFINITY;
-    for (size_t j = 0; j < rim.size(); ++j) {
-      const Eigen::Vector3d a = position(target, rim[j]), b = position(target, rim[(j + 1) % rim.size()]);
-      const bool met = std::any_of(meetings[limb].begin(), meetings[limb].end(),
-                                   [&](const Eigen::Vector3d& m) { return (m - a).norm() < 1e-12 * spacing; });
-      if (!met && (a - x.position).norm() < 0.25 * spacing) {
-        rim[j] = x.at, meetings[limb].push_back(x.position);
-        return;
-      }
-      if (const double d = (a - x.position).norm() + (x.position - b).norm() - (a - b).norm(); d < detour)
-        detour = d, best = j;
-    }
-    rim.insert(rim.begin() + long(best) + 1, x.at), meetings[limb].push_back(x.position);
+    passThrough(target, rims[limb], x, 0.25 * spacing, &meetings[limb]);
   };
   // The limb a loop point lies on, -1 on the body.
   const auto partOf = [&](const SectionPoint& p) {
