@@ -189,3 +189,72 @@ test('the octopus gets seams around and along its arms, and the layout used infl
   await screenshot(page, 'suggest-octopus-used');
   assert.deepEqual(page.errors, []);
 });
+
+// A star cushion as a designer would model it: a five-pointed star extruded, its faces flat and its rims sharp (OBJ
+// text; the outline's points counterclockwise, each face in rings about the middle).
+function starCushionObj(r = 0.3, depth = 0.1) {
+  const outline = [];
+  for (let k = 0; k < 10; k++) {
+    const radius = k % 2 === 0 ? r : 0.45 * r;
+    const angle = Math.PI / 2 + (Math.PI * k) / 5;
+    const next = ((k + 1) % 2 === 0 ? r : 0.45 * r);
+    const a = [radius * Math.cos(angle), radius * Math.sin(angle)];
+    const b = [next * Math.cos(angle + Math.PI / 5), next * Math.sin(angle + Math.PI / 5)];
+    for (let i = 0; i < 8; i++) outline.push([a[0] + ((b[0] - a[0]) * i) / 8, a[1] + ((b[1] - a[1]) * i) / 8]);
+  }
+  const n = outline.length;
+  const rings = 10;
+  const V = [];
+  const F = [];
+  const face = (z, up) => {
+    const center = V.push([0, 0, z]) - 1;
+    const ring = [];
+    for (let k = 1; k <= rings; k++) ring.push(outline.map(([x, y]) => V.push([(x * k) / rings, (y * k) / rings, z]) - 1));
+    const tri = (a, b, c) => F.push(up ? [a, b, c] : [a, c, b]);
+    for (let i = 0; i < n; i++) tri(center, ring[0][i], ring[0][(i + 1) % n]);
+    for (let k = 0; k + 1 < rings; k++)
+      for (let i = 0; i < n; i++) {
+        const [a, b, c, d] = [ring[k][i], ring[k][(i + 1) % n], ring[k + 1][i], ring[k + 1][(i + 1) % n]];
+        tri(a, c, d);
+        tri(a, d, b);
+      }
+    return ring[rings - 1];
+  };
+  const top = face(depth / 2, true);
+  const bottom = face(-depth / 2, false);
+  const side = [bottom];
+  for (let l = 1; l < 3; l++) side.push(outline.map(([x, y]) => V.push([x, y, -depth / 2 + (depth * l) / 3]) - 1));
+  side.push(top);
+  for (let l = 0; l + 1 < side.length; l++)
+    for (let i = 0; i < n; i++) {
+      const [a, b, c, d] = [side[l][i], side[l][(i + 1) % n], side[l + 1][i], side[l + 1][(i + 1) % n]];
+      F.push([a, b, d], [a, d, c]);
+    }
+  return V.map((v) => `v ${v.join(' ')}`).concat(F.map((f) => `f ${f.map((i) => i + 1).join(' ')}`)).join('\n') + '\n';
+}
+
+// A shape with sharp creases gets seams along them, as a gusseted foil star is made: its front, its back and a strip
+// round its side. Two flat pieces cannot make its flat sides and sharp rims.
+test('a star cushion gets seams along its creases: front, back and a strip round its side', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.setInputFiles('#file-input', { name: 'star.obj', mimeType: 'text/plain', buffer: Buffer.from(starCushionObj()) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'star.obj', null, { timeout: 60000 });
+  const cards = await layoutsFor(page, 3);
+  const creases = cards.find((card) => /^along 3 of its 30 creases/.test(card.name));
+  assert.ok(creases, JSON.stringify(cards));
+  assert.equal(creases.rank, cards[0].rank, `it leads: ${JSON.stringify(cards)}`);
+  assert.equal(creases.panels, 3);
+  // Its two pieces (halves, or sealed along the outline) lie farther: 2.5-2.9 % natively, the creases 1.6 %.
+  const twoPieces = cards.filter((card) => card.panels === 2);
+  assert.ok(twoPieces.length > 0, JSON.stringify(cards));
+  assert.ok(creases.distance < 0.8 * Math.min(...twoPieces.map((c) => c.distance)), JSON.stringify(cards));
+  await screenshot(page, 'suggest-star-creases');
+  await page.click(`.suggest-card[data-rank="${creases.rank}"] .suggest-use`);
+  await page.waitForFunction(() => window.billow.test.design.seams.some((s) => /^crease /.test(s.name)), null, { timeout: 60000 });
+  const seams = await page.evaluate(() => window.billow.test.design.seams.map((s) => ({ name: s.name, closed: s.closed })));
+  assert.deepEqual(seams.map((s) => s.name), ['crease 1', 'crease 2', 'crease 3']);
+  assert.deepEqual(seams.map((s) => s.closed), [true, true, false]);
+  await optimizedResultShown(page);
+  await screenshot(page, 'suggest-star-creases-used');
+  assert.deepEqual(page.errors, []);
+});

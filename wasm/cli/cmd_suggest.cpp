@@ -23,14 +23,21 @@ namespace {
 using nlohmann::json;
 namespace fs = std::filesystem;
 
+std::string percent(double share) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2f %%", 100 * share);
+  return text;
+}
+
 int usage(bool help) {
   std::fprintf(help ? stdout : stderr,
                "usage: billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams]\n"
                "                      [--height METERS] [--resolution TRIANGLES] [--max-iterations N] [--optimize K]\n"
                "                      [--quiet]\n\n"
                "Suggests seam layouts for a target shape (a design file, or a mesh file made into a design of\n"
-               "--height meters, default 0.6): layouts of plane sections with at most N panels (2 to 40), seams\n"
-               "added where a section leaves a part that is not a panel (a tube around a limb). Each is first\n"
+               "--height meters, default 0.6): layouts of plane sections, outlines, seams around limbs and along\n"
+               "creases with at most N panels (2 to 40), seams added where a section leaves a part that is not a\n"
+               "panel (a tube around a limb). Each is first\n"
                "inflated flat; the K that leave least of the target's surface away from the balloon (default 8)\n"
                "are optimized at a coarse resolution (default 1000 triangles, at most 40 iterations) and ranked by\n"
                "their distance to the target (the worse way).\n"
@@ -133,7 +140,8 @@ int suggestCommand(const std::vector<std::string>& argv) {
     if (!quiet)
       std::fprintf(
           stderr, "  look %2zu/%zu  %-58s %s\n", i + 1, proposals.size(), proposals[i].name.c_str(),
-          t.first.ok ? (std::to_string(t.first.panels) + " panels").c_str() : ("not used: " + t.first.problem).c_str());
+          t.first.ok ? (std::to_string(t.first.panels) + " panels, first look " + percent(lookPromise(t.first))).c_str()
+                     : ("not used: " + t.first.problem).c_str());
     tried.push_back(std::move(t));
   }
   std::vector<const LayoutEvaluation*> looks;

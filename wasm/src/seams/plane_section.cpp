@@ -169,13 +169,17 @@ std::vector<SurfacePoint> sectionSeamPoints(const TriMesh& mesh, const SectionLo
   return pointsAt(mesh, loop, true, arcs);
 }
 
-std::vector<SurfacePoint> sectionPathPoints(const TriMesh& mesh, const SectionLoop& path, double spacing) {
+std::vector<SurfacePoint> sectionPathPoints(const TriMesh& mesh, const SectionLoop& path, double spacing,
+                                            bool corners) {
   if (path.size() < 2) return {};
   double total = 0;
   for (size_t i = 0; i + 1 < path.size(); ++i) total += (path[i + 1].position - path[i].position).norm();
   const int n = std::max(1, int(std::lround(total / std::max(spacing, 1e-300))));
   std::vector<double> arcs;
-  for (int k = 1; k < n; ++k) arcs.push_back(k * total / n);
+  for (int k = 0; k <= n; ++k) arcs.push_back(k * total / n);
+  // Taken as a loop, the path's closing piece holds no point of its own, so no turn is kept there.
+  if (corners) keepTurns(path, arcs, 0.1 * total / n);
+  arcs = std::vector<double>(arcs.begin() + 1, arcs.end() - 1);
   std::vector<SurfacePoint> out{path.front().at};
   for (const SurfacePoint& p : pointsAt(mesh, path, false, arcs)) out.push_back(p);
   out.push_back(path.back().at);

@@ -41,7 +41,9 @@ std::vector<SurfacePoint> sectionSeamPoints(const TriMesh& mesh, const SectionLo
                                             bool corners = false);
 
 // The control points of an open piece of a loop (its points in order, first to last): both ends and points at
-// equal arc length between them, about `spacing` apart.
-std::vector<SurfacePoint> sectionPathPoints(const TriMesh& mesh, const SectionLoop& path, double spacing);
+// equal arc length between them, about `spacing` apart; with `corners`, also its turns, as sectionSeamPoints keeps
+// them.
+std::vector<SurfacePoint> sectionPathPoints(const TriMesh& mesh, const SectionLoop& path, double spacing,
+                                            bool corners = false);
 
 }  // namespace billow

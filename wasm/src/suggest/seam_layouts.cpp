@@ -12,6 +12,7 @@
 #include "optimize/optimized_pattern.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/stopping_rule.hpp"
+#include "seams/mesh_topology.hpp"
 #include "seams/outline.hpp"
 #include "seams/plane_section.hpp"
 #include "seams/surface_distance.hpp"
@@ -106,6 +107,7 @@ ProposalKey proposalKey(const LayoutProposal& proposal, double size) {
   ProposalKey key;
   if (proposal.outlineView >= 0) key.push_back({2, proposal.outlineView, proposal.connected, 0, 0});
   if (!proposal.limbs.empty()) key.push_back({3, (long long)proposal.limbs.size(), 0, 0, 0});
+  if (!proposal.creases.empty()) key.push_back({4, (long long)proposal.creases.size(), 0, 0, 0});
   const auto rounded = [](double x) { return std::llround(x * 1e4); };
   for (const SectionPlane& p : planes) {
     // n and -n with -offset are one plane: the first non-zero component positive.
@@ -323,6 +325,34 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
           out.push_back(std::move(p));
         }
       break;  // the most limbs that fit: fewer would leave long limbs to the body's halves
+    }
+  }
+  // Seams along the creases, as a cushion or a gusseted letter is patterned: the most that fit the count (where the
+  // symmetry is kept, that are their own mirror image), alone and with each part halved by a plane through the middle
+  // where the count leaves room for that.
+  {
+    const std::vector<Creases> sets = findCreases(target);
+    for (const Creases& set : sets) {
+      if (set.panels > request.panels ||
+          (s >= 0 && !mirrorSymmetric(target, set.creases, s, center[s], seamPointSpacing(target))))
+        continue;
+      const std::string along =
+          set.creases.size() == sets.front().creases.size()
+              ? "along its " + std::to_string(set.creases.size()) + (set.creases.size() == 1 ? " crease" : " creases")
+              : "along " + std::to_string(set.creases.size()) + " of its " +
+                    std::to_string(sets.front().creases.size()) + " creases";
+      for (int axis = -1; axis < 3; ++axis) {
+        if (axis >= 0 && 2 * set.panels > request.panels) break;
+        LayoutProposal p;
+        p.axis = std::max(axis, 0), p.gores = 2, p.center = center, p.creases = set.creases;
+        if (axis >= 0) p.planes.push_back({Eigen::Vector3d::Unit(axis), center[axis]});
+        p.name = along + (axis >= 0 ? ", each part in " + halvesName(p.planes[0].normal, request.up) : "");
+        ProposalKey key = proposalKey(p, size);
+        if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+        seen.push_back(std::move(key));
+        out.push_back(std::move(p));
+      }
+      break;
     }
   }
   return out;
@@ -581,12 +611,47 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
   return seams;
 }
 
+// A creases proposal's seams: each crease, a loop closed or a chain from junction to junction (its ends there the very
+// same surface points as the other chains'), then the loops of its planes.
+std::vector<DesignSeam> creaseSeams(const TriMesh& target, const LayoutProposal& proposal, double spacing) {
+  std::vector<DesignSeam> seams;
+  const MeshTopology topo = buildTopology(target);
+  const auto atVertex = [&](int v) {
+    SurfacePoint p;
+    p.face = topo.vertexFace[size_t(v)];
+    p.bary = Eigen::Vector3d::Unit(topo.cornerOf(target, p.face, v));
+    return p;
+  };
+  for (size_t i = 0; i < proposal.creases.size(); ++i) {
+    const Crease& crease = proposal.creases[i];
+    const SectionLoop path = creasePath(target, crease);
+    const std::string name = "crease " + std::to_string(i + 1);
+    // A chain from a junction round to the same junction (a star prism's outline where one crease crosses its side) is
+    // a loop through that point: its first control point.
+    const bool round = !crease.closed && crease.vertices.front() == crease.vertices.back();
+    if (crease.closed || round) {
+      std::vector<SurfacePoint> controls = sectionSeamPoints(target, path, spacing, true);
+      if (round) controls.front() = atVertex(crease.vertices.front());
+      seams.push_back(makeSeam(name, true, controls));
+      continue;
+    }
+    std::vector<SurfacePoint> controls = sectionPathPoints(target, path, spacing, true);
+    controls.front() = atVertex(crease.vertices.front()), controls.back() = atVertex(crease.vertices.back());
+    seams.push_back(makeSeam(name, false, controls));
+  }
+  for (const SectionPlane& plane : proposal.planes)
+    for (const SectionLoop& loop : planeSection(target, plane.normal, plane.offset))
+      seams.push_back(makeSeam("halving seam", true, sectionSeamPoints(target, loop, spacing)));
+  return seams;
+}
+
 }  // namespace
 
 std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposal& proposal,
                                       std::vector<DesignConnection>* connections) {
   const double spacing = seamPointSpacing(target);
   if (!proposal.limbs.empty()) return limbSeams(target, proposal, spacing);
+  if (!proposal.creases.empty()) return creaseSeams(target, proposal, spacing);
   const Eigen::Vector3d e = Eigen::Vector3d::Unit(proposal.axis);
   std::array<Pole, 2> poles;
   if (!proposal.meridians.empty()) {
@@ -1019,7 +1084,7 @@ std::string layoutFamily(const LayoutProposal& p) {
   if (p.outlineView < 0 && p.gores == 2 && !p.planes.empty()) p.planes[0].normal.cwiseAbs().maxCoeff(&halving);
   return std::to_string(p.outlineView) + " " + std::to_string(p.axis) + " " + std::to_string(p.bands > 0) + " " +
          std::to_string(p.gores > 2) + " " + std::to_string(halving) + (p.connected ? " connected" : "") +
-         (p.limbs.empty() ? "" : " limbs");
+         (p.limbs.empty() ? "" : " limbs") + (p.creases.empty() ? "" : " creases");
 }
 
 std::vector<int> looksToOptimize(const std::vector<const LayoutEvaluation*>& looks,

@@ -9,8 +9,9 @@
 // sealed along the outline seen along one axis (seams/outline.hpp), as a foil balloon is made, with k bands across
 // another: 2 (k + 1) panels, and k more where each band's loop is a front and a back seam joined inside by an internal
 // connection (a flat shape's pillow held to its thickness). Or, on a shape with limbs, as a plush toy is patterned: a
-// seam around each limb where it joins the body, the limb halved along its length and the body in halves or bands. A
-// layout that keeps the target's mirror symmetry lays only what is its own mirror image across the symmetry plane.
+// seam around each limb where it joins the body, the limb halved along its length and the body in halves or bands. Or,
+// on a shape with creases, along them (a box cushion's six sides, a letter's front, back and gusset strip). A layout
+// that keeps the target's mirror symmetry lays only what is its own mirror image across the symmetry plane.
 #pragma once
 #include <functional>
 #include <string>
@@ -22,6 +23,7 @@
 #include "pattern/design_scene.hpp"
 #include "pattern/pattern.hpp"
 #include "seams/plane_section.hpp"
+#include "suggest/creases.hpp"
 #include "suggest/limbs.hpp"
 
 namespace billow {
@@ -47,6 +49,9 @@ struct LayoutProposal {
   // that seam would not cover well halved along its length, and the body halved by planes[0] and in bands by the others
   // (`bands` of them, across `axis`), each plane laid on the body only; in place of gores.
   std::vector<Limb> limbs;
+  // Seams along these creases of the target (suggest/creases.hpp), as a cushion or a gusseted letter is patterned: a
+  // flat panel bulges everywhere but along its seams. With `planes`, those too (the halving plane); in place of gores.
+  std::vector<Crease> creases;
 };
 
 struct LayoutRequest {

@@ -1,0 +1,167 @@
+// A target's creases (suggest/creases.hpp) and the layouts that seam along them (suggest/seam_layouts.hpp).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "crease_shapes.hpp"
+#include "io/design_json.hpp"
+#include "pattern/design_scene.hpp"
+#include "suggest/creases.hpp"
+#include "suggest/seam_layouts.hpp"
+#include "test_support.hpp"
+
+namespace billow {
+namespace {
+
+size_t countClosed(const Creases& set) {
+  return size_t(std::count_if(set.creases.begin(), set.creases.end(), [](const Crease& c) { return c.closed; }));
+}
+
+// Every crease runs along edges that turn sharply, an open one from junction to junction.
+void expectAlongSharpEdges(const TriMesh& mesh, const Creases& set) {
+  for (const Crease& c : set.creases) {
+    ASSERT_GE(c.vertices.size(), 2u);
+    const SectionLoop path = creasePath(mesh, c);
+    // A chain from a junction round to itself is a loop through it.
+    const bool round = !c.closed && c.vertices.front() == c.vertices.back();
+    const bool loop = c.closed || round;
+    ASSERT_EQ(path.size(), c.vertices.size() - round);
+    for (size_t k = 0; k < path.size(); ++k) {
+      EXPECT_LT((position(mesh, path[k].at) - mesh.V.row(c.vertices[k]).transpose()).norm(), 1e-12);
+      // The point's face holds the edge from the point before (the first point of a path: to the one after).
+      const int other = k == 0 ? (loop ? c.vertices[path.size() - 1] : c.vertices[1]) : c.vertices[k - 1];
+      const auto has = [&](int v) { return (mesh.F.row(path[k].at.face).array() == v).any(); };
+      EXPECT_TRUE(has(other) && has(c.vertices[k]));
+    }
+  }
+}
+
+TEST(Creases, ABoxHasTwelveADrumItsTwoRimsAndRoundShapesNone) {
+  const TriMesh box = test::boxShape(0.6, 0.4, 0.2);
+  const std::vector<Creases> boxSets = findCreases(box);
+  ASSERT_FALSE(boxSets.empty());
+  EXPECT_EQ(boxSets[0].creases.size(), 12u);
+  EXPECT_EQ(boxSets[0].panels, 6);
+  EXPECT_EQ(countClosed(boxSets[0]), 0u);
+  for (const Crease& c : boxSets[0].creases) {
+    const double l = c.length;
+    EXPECT_TRUE(std::abs(l - 0.6) < 1e-9 || std::abs(l - 0.4) < 1e-9 || std::abs(l - 0.2) < 1e-9) << l;
+  }
+  expectAlongSharpEdges(box, boxSets[0]);
+  // Fewer creases, fewer panels each time, the longest kept: down to one loop round the box (2 panels).
+  for (size_t i = 1; i < boxSets.size(); ++i) EXPECT_LT(boxSets[i].panels, boxSets[i - 1].panels);
+  EXPECT_EQ(boxSets.back().panels, 2);
+  EXPECT_EQ(countClosed(boxSets.back()), 1u);
+
+  const std::vector<Creases> drumSets = findCreases(test::drumShape(0.25, 0.3));
+  ASSERT_FALSE(drumSets.empty());
+  EXPECT_EQ(drumSets[0].creases.size(), 2u);
+  EXPECT_EQ(countClosed(drumSets[0]), 2u);
+  EXPECT_EQ(drumSets[0].panels, 3);  // the top, the bottom and the side (a tube the layout opens)
+  EXPECT_NEAR(drumSets[0].creases[0].length, 64 * 2 * 0.25 * std::sin(M_PI / 64), 1e-9);
+
+  // A star cushion: its front and back outlines, and a crease across its side at each tip and notch; with one of those
+  // kept, front, back and one gusset strip.
+  const TriMesh star = test::starShape(0.3, 0.1);
+  const std::vector<Creases> starSets = findCreases(star);
+  ASSERT_FALSE(starSets.empty());
+  EXPECT_EQ(starSets[0].creases.size(), 30u);
+  EXPECT_EQ(starSets[0].panels, 12);
+  const auto three = std::find_if(starSets.begin(), starSets.end(), [](const Creases& s) { return s.panels == 3; });
+  ASSERT_NE(three, starSets.end());
+  EXPECT_EQ(three->creases.size(), 3u);
+  expectAlongSharpEdges(star, *three);
+
+  // Round and organic shapes: no crease (their sharpest edges turn as much as those beside them), but the hand's wrist,
+  // where its mesh is cut off flat.
+  for (const char* name : {"sphere.obj", "bunny.obj", "spot.obj", "octopus.obj", "koala.obj", "blub.obj"})
+    EXPECT_TRUE(findCreases(test::loadShared(name)).empty()) << name;
+  const std::vector<Creases> hand = findCreases(test::loadShared("hand.obj"));
+  ASSERT_EQ(hand.size(), 1u);
+  EXPECT_EQ(hand[0].creases.size(), 1u);
+  EXPECT_TRUE(hand[0].creases[0].closed);
+}
+
+std::unique_ptr<DesignScene> sceneOf(const TriMesh& mesh) {
+  Design design;
+  design.target.kind = DesignTarget::Inline;
+  design.height = 0.6;
+  return makeTargetScene(design, mesh);
+}
+
+// A star cushion sewn along its creases (front, back and a gusset strip round its side) comes far closer than its two
+// pieces, halves or sealed along its outline: two flat pieces cannot make its flat sides and sharp rims.
+TEST(SeamLayouts, AStarCushionIsSewnAlongItsCreasesAndComesCloserThanItsTwoPieces) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
+  const auto scene = sceneOf(test::starShape(0.3, 0.1));
+  LayoutRequest request;
+  request.panels = 3;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  const LayoutProposal *creases = nullptr, *outline = nullptr, *halves = nullptr;
+  for (const LayoutProposal& p : proposals) {
+    if (!p.creases.empty()) creases = &p;
+    if (p.outlineView == 2 && p.bands == 0) outline = &p;
+    if (p.creases.empty() && p.outlineView < 0 && p.gores == 2 && p.bands == 0 && p.planes[0].normal.z() == 1)
+      halves = &p;
+  }
+  ASSERT_NE(creases, nullptr);
+  ASSERT_NE(outline, nullptr);
+  ASSERT_NE(halves, nullptr);
+  EXPECT_EQ(creases->name, "along 3 of its 30 creases");
+  const std::vector<DesignSeam> seams = proposalSeams(scene->target, *creases);
+  ASSERT_EQ(seams.size(), 3u);
+  // The outlines are loops through where the crease across the side meets them, exactly.
+  const DesignSeam& across = seams[2];
+  EXPECT_FALSE(across.closed);
+  for (int k = 0; k < 2; ++k) {
+    EXPECT_TRUE(seams[size_t(k)].closed);
+    EXPECT_EQ(seams[size_t(k)].name, "crease " + std::to_string(k + 1));
+    const Eigen::Vector3d start = position(scene->target, seams[size_t(k)].points.front().surface);
+    const double toEnd = std::min((start - position(scene->target, across.points.front().surface)).norm(),
+                                  (start - position(scene->target, across.points.back().surface)).norm());
+    EXPECT_LT(toEnd, 1e-12);
+  }
+  for (const DesignSeam& seam : seams)
+    for (const DesignPoint& p : seam.points) {
+      EXPECT_GE(p.surface.bary.minCoeff(), 0) << seam.name;
+      EXPECT_NEAR(p.surface.bary.sum(), 1, 1e-12) << seam.name;
+    }
+  const EvaluateOptions options;
+  const LayoutEvaluation e = evaluateLayout(*scene, seams, 0, options);
+  ASSERT_TRUE(e.ok) << e.problem;
+  EXPECT_TRUE(scene->segmentation.problems.empty());
+  EXPECT_EQ(e.panels, 3);
+  for (const LayoutProposal* other : {outline, halves}) {
+    const LayoutEvaluation o = evaluateLayout(*scene, proposalSeams(scene->target, *other), 0, options);
+    ASSERT_TRUE(o.ok) << o.problem;
+    EXPECT_LT(e.distance, 0.8 * o.distance) << other->name << ": " << o.distance << " against " << e.distance;
+  }
+}
+
+// Where the symmetry is kept, only crease sets that are their own mirror image are laid: the box without one of its
+// four short creases is not.
+TEST(SeamLayouts, CreaseLayoutsThatKeepTheMirrorSymmetryAreTheirOwnMirrorImage) {
+  const TriMesh box = test::boxShape(0.6, 0.4, 0.2);
+  const std::vector<Creases> sets = findCreases(box);
+  ASSERT_GE(sets.size(), 2u);
+  EXPECT_TRUE(mirrorSymmetric(box, sets[0].creases, 0, 0.0, 0.01));
+  EXPECT_FALSE(mirrorSymmetric(box, sets[1].creases, 0, 0.0, 0.01));  // one short crease left out
+  LayoutRequest request;
+  request.panels = 5, request.symmetryAxis = 0;
+  int laid = 0;
+  for (const LayoutProposal& p : proposeLayouts(box, request)) {
+    if (p.creases.empty()) continue;
+    ++laid;
+    EXPECT_TRUE(mirrorSymmetric(box, p.creases, 0, 0.0, 0.01)) << p.name;
+  }
+  EXPECT_GE(laid, 1);
+  request.symmetryAxis = -1;
+  bool asymmetric = false;
+  for (const LayoutProposal& p : proposeLayouts(box, request))
+    asymmetric = asymmetric || (!p.creases.empty() && !mirrorSymmetric(box, p.creases, 0, 0.0, 0.01));
+  EXPECT_TRUE(asymmetric);  // without the symmetry, the five-panel set is laid
+}
+
+}  // namespace
+}  // namespace billow
