@@ -74,6 +74,22 @@ TEST(Outline, ASeamAlongASquareLoopKeepsItsCorners) {
   const double spacing = 4.0 / 13;
   EXPECT_LT(hits(sectionSeamPoints(cube, loops[0], spacing)), 4);
   EXPECT_EQ(hits(sectionSeamPoints(cube, loops[0], spacing, true)), 4);
+  // An open piece of it from the middle of a side, past two corners (a crease from junction to junction round a
+  // letter's turns): those corners kept too, its ends as they are.
+  const SectionLoop& loop = loops[0];
+  size_t start = 0;
+  for (size_t i = 0; i < loop.size(); ++i)
+    if ((loop[i].position - Eigen::Vector3d(0.5, 0, 0.5)).norm() <
+        (loop[start].position - Eigen::Vector3d(0.5, 0, 0.5)).norm())
+      start = i;
+  SectionLoop path;
+  for (size_t k = 0; path.empty() || loopLength(path) < 2.9; ++k) path.push_back(loop[(start + k) % loop.size()]);
+  const std::vector<SurfacePoint> plain = sectionPathPoints(cube, path, 3.0 / 7),
+                                  kept = sectionPathPoints(cube, path, 3.0 / 7, true);
+  EXPECT_LT(hits(plain), 2);
+  EXPECT_EQ(hits(kept), 2);
+  EXPECT_LT((position(cube, kept.front()) - path.front().position).norm(), 1e-12);
+  EXPECT_LT((position(cube, kept.back()) - path.back().position).norm(), 1e-12);
 }
 
 using test::sharedScene;
