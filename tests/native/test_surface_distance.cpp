@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "crease_shapes.hpp"
 #include "io/distance_json.hpp"
 #include "seams/surface_distance.hpp"
 #include "test_support.hpp"
@@ -224,6 +225,20 @@ TEST(UncoveredRegions, WhatHelpsIsJudgedFromTheShape) {
   EXPECT_NE(hollow.find("bulges over a hollow"), std::string::npos) << hollow;
   EXPECT_NE(hollow.find("An internal connection"), std::string::npos) << hollow;
   EXPECT_EQ(hollow.find("A gusset"), std::string::npos) << hollow;
+  // Past a flat side: a box, the shape its front side bulged out by a third of its depth (a box cushion sewn along its
+  // creases). The same help, named for what it is.
+  const TriMesh box = test::boxShape(0.6, 0.4, 0.2);
+  const SurfaceProjector boxProjector(box);
+  Vertices bulged = box.V;
+  for (int v = 0; v < box.numVertices(); ++v)
+    if (box.V(v, 2) > 0.099)
+      bulged(v, 2) += 0.07 * std::cos(test::kPi * box.V(v, 0) / 0.6) * std::cos(test::kPi * box.V(v, 1) / 0.4);
+  std::string past;
+  for (const UncoveredRegion& r : measureDistance(box, boxProjector, bulged, box.F, UpAxis{}).uncovered)
+    past += uncoveredMessage(r) + "\n";
+  EXPECT_NE(past.find("bulges past a flat side of the target"), std::string::npos) << past;
+  EXPECT_NE(past.find("An internal connection"), std::string::npos) << past;
+  EXPECT_EQ(past.find("hollow"), std::string::npos) << past;
   // A thin fin (the target flattened across y) sticking out of the flat sides of a flat shape (flattened along
   // z): both of the fin's sides are left out, so a seam around it helps, not a gusset.
   TriMesh fin = sphere;

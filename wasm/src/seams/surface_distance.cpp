@@ -188,8 +188,9 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
   };
   const Remedy remedy = remedyOf(r);
   if (remedy == Remedy::InternalConnection)
-    return "The inflated shape bulges over a hollow of the target " + r.where + ": " + percent(r.areaFraction) +
-           " of its surface, up to " + percent(r.maxDistance) +
+    return (r.flatTarget ? "The inflated shape bulges past a flat side of the target "
+                         : "The inflated shape bulges over a hollow of the target ") +
+           r.where + ": " + percent(r.areaFraction) + " of its surface, up to " + percent(r.maxDistance) +
            " of its size inside the balloon. An internal connection there (a strip inside sewn to both sides) "
            "pulls the surface in.";
   if (remedy == Remedy::Gusset)
@@ -211,6 +212,20 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
 }
 
 namespace {
+
+// How much the region's triangles face one way: the length of their area-weighted mean normal over their area (1: all
+// one way, a flat patch; 0 when empty).
+double facingShare(const TriMesh& target, const UncoveredRegion& r) {
+  Eigen::Vector3d facing = Eigen::Vector3d::Zero();
+  double area = 0;
+  for (int f : r.triangles) {
+    const Eigen::Vector3d a = target.V.row(target.F(f, 0)), b = target.V.row(target.F(f, 1)),
+                          c = target.V.row(target.F(f, 2));
+    facing += 0.5 * (b - a).cross(c - a);
+    area += 0.5 * (b - a).cross(c - a).norm();
+  }
+  return area > 0 ? facing.norm() / area : 0;
+}
 
 // The share of a region's vertices (at most 64, spread over it) inside the shape: negative signed distance to
 // it (signedDistances, as the inflated shape's own is read against the target).
@@ -247,16 +262,12 @@ bool offFlatSide(const TriMesh& target, const UncoveredRegion& r, const TriMesh&
   const Eigen::Vector3d thin = axes.eigenvectors().col(0);
   const Eigen::Vector3d away = r.farthest - position(shape, projector.project(r.farthest));
   if (!(std::abs(away.dot(thin)) > std::sqrt(0.5) * away.norm())) return false;
-  Eigen::Vector3d facing = Eigen::Vector3d::Zero();
-  double area = 0;
-  for (int f : r.triangles) {
-    const Eigen::Vector3d a = target.V.row(target.F(f, 0)), b = target.V.row(target.F(f, 1)),
-                          c = target.V.row(target.F(f, 2));
-    facing += 0.5 * (b - a).cross(c - a);
-    area += 0.5 * (b - a).cross(c - a).norm();
-  }
-  return facing.norm() >= 0.3 * area;
+  return facingShare(target, r) >= 0.3;
 }
+
+// Whether the region's triangles all face one way (their area-weighted mean normal 0.98 of their area or more, as a
+// spherical cap's within 16 degrees of its middle): a flat side of the target, not a hollow.
+bool flatTarget(const TriMesh& target, const UncoveredRegion& r) { return facingShare(target, r) >= 0.98; }
 
 }  // namespace
 
@@ -282,6 +293,7 @@ TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& pr
   for (UncoveredRegion& r : d.uncovered) {
     r.insideFraction = insideFraction(target, r, shape, *shapeProjector);
     r.offFlatSide = offFlatSide(target, r, shape, *shapeProjector);
+    r.flatTarget = flatTarget(target, r);
   }
   return d;
 }

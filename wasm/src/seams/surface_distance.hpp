@@ -50,6 +50,9 @@ struct UncoveredRegion {
   // The shape is flat (a two-piece balloon) and this is a broad part of the target off its flat side: the
   // balloon is too thin there (measureDistance).
   bool offFlatSide = false;
+  // The target is flat there (its triangles all face one way: a box's side): with insideFraction, the balloon bulges
+  // past a flat side rather than over a hollow (measureDistance).
+  bool flatTarget = false;
   std::vector<int> triangles;  // rows of the target's F: what is left out, to draw
 };
 
