@@ -20,9 +20,10 @@ size_t countClosed(const Creases& set) {
 
 // Every crease runs along edges that turn sharply, an open one from junction to junction.
 void expectAlongSharpEdges(const TriMesh& mesh, const Creases& set) {
+  const MeshTopology topology = buildTopology(mesh);
   for (const Crease& c : set.creases) {
     ASSERT_GE(c.vertices.size(), 2u);
-    const SectionLoop path = creasePath(mesh, c);
+    const SectionLoop path = creasePath(mesh, topology, c);
     // A chain from a junction round to itself is a loop through it.
     const bool round = !c.closed && c.vertices.front() == c.vertices.back();
     const bool loop = c.closed || round;

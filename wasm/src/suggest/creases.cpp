@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "seams/mesh_topology.hpp"
 #include "util/union_find.hpp"
 
 namespace billow {
@@ -19,17 +18,6 @@ constexpr double kShortestCrease = 0.02;
 // (the generated box, drum and star cushions: under 0.08; the shared meshes' edges that turn 40 degrees or more: a
 // median of 0.11-0.43 of theirs, bench/README.md "Suggested seam layouts").
 constexpr double kSmoothBeside = 0.15;
-
-SurfacePoint atVertex(const TriMesh& mesh, const MeshTopology& topo, int f, int v) {
-  SurfacePoint p;
-  p.face = f;
-  p.bary = Eigen::Vector3d::Unit(topo.cornerOf(mesh, f, v));
-  return p;
-}
-
-}  // namespace
-
-namespace {
 
 // The creases along the `sharp` edges: peeled from their loose ends (a crease that fades out), walked from junction to
 // junction and round the loops left; a chain shorter than kShortestCrease left out and the rest walked again (a
@@ -177,8 +165,7 @@ bool mirrorSymmetric(const TriMesh& target, const std::vector<Crease>& creases, 
   return true;
 }
 
-SectionLoop creasePath(const TriMesh& target, const Crease& crease) {
-  const MeshTopology topo = buildTopology(target);
+SectionLoop creasePath(const TriMesh& target, const MeshTopology& topo, const Crease& crease) {
   std::vector<int> v = crease.vertices;
   // A chain from a junction round to itself is walked as a loop through it.
   const bool loop = crease.closed || (v.size() > 2 && v.front() == v.back());
@@ -190,7 +177,7 @@ SectionLoop creasePath(const TriMesh& target, const Crease& crease) {
     const int a = k == 0 && !loop ? v[1] : v[(k + n - 1) % n];
     const int f = topo.edgeFaces(topo.edgeBetween(a, v[k]), 0);
     SectionPoint p;
-    p.at = atVertex(target, topo, f, v[k]);
+    p.at.face = f, p.at.bary = Eigen::Vector3d::Unit(topo.cornerOf(target, f, v[k]));
     p.position = target.V.row(v[k]).transpose();
     path.push_back(p);
   }

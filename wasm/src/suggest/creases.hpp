@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "mesh/tri_mesh.hpp"
+#include "seams/mesh_topology.hpp"
 #include "seams/plane_section.hpp"
 
 namespace billow {
@@ -42,6 +43,6 @@ bool mirrorSymmetric(const TriMesh& target, const std::vector<Crease>& creases, 
 // The crease as a loop (closed, or open from a junction round to itself, without its last point) or a path (open) of
 // section points, each in a face that holds the edge to the point before it, as plane sections walk
 // (seams/plane_section.hpp).
-SectionLoop creasePath(const TriMesh& target, const Crease& crease);
+SectionLoop creasePath(const TriMesh& target, const MeshTopology& topology, const Crease& crease);
 
 }  // namespace billow

@@ -616,27 +616,22 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
 std::vector<DesignSeam> creaseSeams(const TriMesh& target, const LayoutProposal& proposal, double spacing) {
   std::vector<DesignSeam> seams;
   const MeshTopology topo = buildTopology(target);
-  const auto atVertex = [&](int v) {
-    SurfacePoint p;
-    p.face = topo.vertexFace[size_t(v)];
-    p.bary = Eigen::Vector3d::Unit(topo.cornerOf(target, p.face, v));
-    return p;
-  };
   for (size_t i = 0; i < proposal.creases.size(); ++i) {
     const Crease& crease = proposal.creases[i];
-    const SectionLoop path = creasePath(target, crease);
+    const SectionLoop path = creasePath(target, topo, crease);
     const std::string name = "crease " + std::to_string(i + 1);
     // A chain from a junction round to the same junction (a star prism's outline where one crease crosses its side) is
     // a loop through that point: its first control point.
     const bool round = !crease.closed && crease.vertices.front() == crease.vertices.back();
     if (crease.closed || round) {
       std::vector<SurfacePoint> controls = sectionSeamPoints(target, path, spacing, true);
-      if (round) controls.front() = atVertex(crease.vertices.front());
+      if (round) controls.front() = vertexPoint(target, topo, crease.vertices.front());
       seams.push_back(makeSeam(name, true, controls));
       continue;
     }
     std::vector<SurfacePoint> controls = sectionPathPoints(target, path, spacing, true);
-    controls.front() = atVertex(crease.vertices.front()), controls.back() = atVertex(crease.vertices.back());
+    controls.front() = vertexPoint(target, topo, crease.vertices.front());
+    controls.back() = vertexPoint(target, topo, crease.vertices.back());
     seams.push_back(makeSeam(name, false, controls));
   }
   for (const SectionPlane& plane : proposal.planes)
