@@ -164,5 +164,57 @@ TEST(SeamLayouts, CreaseLayoutsThatKeepTheMirrorSymmetryAreTheirOwnMirrorImage) 
   EXPECT_TRUE(asymmetric);  // without the symmetry, the five-panel set is laid
 }
 
+// A box cushion held together inside: its front, its back and the strip round it, the front and the back each cut by a
+// band whose two pieces an internal panel joins (a mattress's baffle). Its flat sides bulge least so: closer than the
+// same creases without the baffle and than its pillow along the outline held together inside.
+TEST(SeamLayouts, ABoxCushionAlongItsCreasesIsHeldTogetherInsideByABaffle) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
+  const auto scene = sceneOf(test::boxShape(0.6, 0.4, 0.2));
+  LayoutRequest request;
+  request.panels = 6;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  const LayoutProposal *baffled = nullptr, *pillow = nullptr;
+  for (const LayoutProposal& p : proposals) {
+    if (!p.creases.empty() && p.connected && p.bands == 1 && p.axis == 1) baffled = &p;
+    if (p.outlineView == 2 && p.connected && p.bands == 1 && p.axis == 1) pillow = &p;
+  }
+  ASSERT_NE(baffled, nullptr);
+  ASSERT_NE(pillow, nullptr);
+  EXPECT_EQ(baffled->name, "along 3 of its 12 creases, held together inside along 1 band across the vertical axis");
+  std::vector<DesignConnection> connections;
+  const std::vector<DesignSeam> seams = proposalSeams(scene->target, *baffled, &connections);
+  ASSERT_EQ(seams.size(), 5u);  // three creases, the band's front and back pieces
+  ASSERT_EQ(connections.size(), 1u);
+  EXPECT_EQ(connections[0].seams, (std::vector<int>{3, 4}));
+  EXPECT_EQ(seams[3].name, "band 1, front");
+  EXPECT_EQ(seams[4].name, "band 1, back");
+  // Each piece runs from crease to crease, its ends control points of the creases there: the seams meet exactly.
+  for (const DesignSeam& piece : {seams[3], seams[4]}) {
+    EXPECT_FALSE(piece.closed);
+    for (const DesignPoint* end : {&piece.points.front(), &piece.points.back()}) {
+      const Eigen::Vector3d p = position(scene->target, end->surface);
+      double nearest = INFINITY;
+      for (size_t c = 0; c < 3; ++c)
+        for (const DesignPoint& q : seams[c].points)
+          nearest = std::min(nearest, (position(scene->target, q.surface) - p).norm());
+      EXPECT_LT(nearest, 1e-12) << piece.name;
+    }
+  }
+  const EvaluateOptions options;
+  const LayoutEvaluation e = evaluateLayout(*scene, seams, 0, options, connections);
+  ASSERT_TRUE(e.ok) << e.problem;
+  EXPECT_TRUE(scene->segmentation.problems.empty());
+  EXPECT_EQ(e.panels, 6);  // the front and the back in two each, the strip, the baffle
+  const LayoutEvaluation plain =
+      evaluateLayout(*scene, std::vector<DesignSeam>(seams.begin(), seams.begin() + 3), 0, options);
+  std::vector<DesignConnection> pillowConnections;
+  const std::vector<DesignSeam> pillowSeams = proposalSeams(scene->target, *pillow, &pillowConnections);
+  const LayoutEvaluation outlined = evaluateLayout(*scene, pillowSeams, 0, options, pillowConnections);
+  ASSERT_TRUE(outlined.ok) << outlined.problem;
+  EXPECT_LT(e.distance, 0.8 * outlined.distance) << e.distance << " against " << outlined.distance;
+  ASSERT_TRUE(plain.ok) << plain.problem;
+  EXPECT_LT(e.distance, plain.distance) << e.distance << " against " << plain.distance;
+}
+
 }  // namespace
 }  // namespace billow

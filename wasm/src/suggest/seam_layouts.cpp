@@ -107,7 +107,7 @@ ProposalKey proposalKey(const LayoutProposal& proposal, double size) {
   ProposalKey key;
   if (proposal.outlineView >= 0) key.push_back({2, proposal.outlineView, proposal.connected, 0, 0});
   if (!proposal.limbs.empty()) key.push_back({3, (long long)proposal.limbs.size(), 0, 0, 0});
-  if (!proposal.creases.empty()) key.push_back({4, (long long)proposal.creases.size(), 0, 0, 0});
+  if (!proposal.creases.empty()) key.push_back({4, (long long)proposal.creases.size(), proposal.connected, 0, 0});
   const auto rounded = [](double x) { return std::llround(x * 1e4); };
   for (const SectionPlane& p : planes) {
     // n and -n with -offset are one plane: the first non-zero component positive.
@@ -354,6 +354,34 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
       }
       break;
     }
+    // On a thin shape (a cushion, a letter), held together inside: its front, its back and the strip between them (the
+    // fewest creases that still make three panels or more) and k bands across another axis, each loop's piece on the
+    // front side and its piece on the back joined by an internal connection (two more panels and a connection a band).
+    Eigen::Index view = 0;
+    extent.minCoeff(&view);
+    const auto held = std::find_if(sets.rbegin(), sets.rend(), [&](const Creases& set) {
+      return set.panels >= 3 && (s < 0 || mirrorSymmetric(target, set.creases, s, center[s], seamPointSpacing(target)));
+    });
+    if (held != sets.rend() &&
+        extent[view] < kPillowThickness * std::min(extent[(view + 1) % 3], extent[(view + 2) % 3]))
+      for (int axis = 0; axis < 3; ++axis) {
+        if (axis == view || axis == s) continue;
+        const AreaAlong bandsAlong = areaAlong(faces, axis);
+        for (int k = 1; k <= kMostBands && held->panels + 3 * k <= request.panels; ++k) {
+          if (held->panels + 3 * k < fewestPanels(request.panels)) continue;
+          LayoutProposal p;
+          p.axis = axis, p.gores = 2, p.bands = k, p.center = center, p.creases = held->creases, p.connected = true;
+          for (int j = 1; j <= k; ++j)
+            p.planes.push_back({Eigen::Vector3d::Unit(axis), bandsAlong.at(double(j) / (k + 1))});
+          p.name = "along " + std::to_string(held->creases.size()) + " of its " +
+                   std::to_string(sets.front().creases.size()) + " creases, held together inside along " +
+                   std::to_string(k) + (k == 1 ? " band" : " bands") + " across the " + axisName(axis, request.up);
+          ProposalKey key = proposalKey(p, size);
+          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
+          seen.push_back(std::move(key));
+          out.push_back(std::move(p));
+        }
+      }
   }
   return out;
 }
@@ -439,18 +467,18 @@ std::vector<LoopCrossing> planeCrossings(const TriMesh& mesh, const SectionLoop&
   return out;
 }
 
-// Makes `point` one of a closed seam's control points: in place of one within `near`, else between the two it
-// lies between (the least detour), so that seams meeting it there meet it exactly. With `met`, the points earlier
-// calls made control points, which are never replaced; this one is added to them.
+// Makes `point` one of a seam's control points: in place of one within `near`, else between the two it lies between
+// (the least detour), so that seams meeting it there meet it exactly. With `met`, the points earlier calls made control
+// points, which are never replaced; this one is added to them. An open seam's ends stay its ends.
 void passThrough(const TriMesh& mesh, std::vector<SurfacePoint>& controls, const SectionPoint& point, double near,
-                 std::vector<Eigen::Vector3d>* met = nullptr) {
+                 std::vector<Eigen::Vector3d>* met = nullptr, bool closed = true) {
   size_t best = 0;
   double detour = INFINITY;
-  for (size_t j = 0; j < controls.size(); ++j) {
+  for (size_t j = 0; j + (closed ? 0 : 1) < controls.size(); ++j) {
     const Eigen::Vector3d a = position(mesh, controls[j]), b = position(mesh, controls[(j + 1) % controls.size()]);
     const bool kept = met && std::any_of(met->begin(), met->end(),
                                          [&](const Eigen::Vector3d& m) { return (m - a).norm() < 1e-9 * near; });
-    if (!kept && (a - point.position).norm() < near) {
+    if (!kept && (closed || j > 0) && (a - point.position).norm() < near) {
       controls[j] = point.at;
       if (met) met->push_back(point.position);
       return;
@@ -612,31 +640,105 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
 }
 
 // A creases proposal's seams: each crease, a loop closed or a chain from junction to junction (its ends there the very
-// same surface points as the other chains'), then the loops of its planes.
-std::vector<DesignSeam> creaseSeams(const TriMesh& target, const LayoutProposal& proposal, double spacing) {
-  std::vector<DesignSeam> seams;
+// same surface points as the other chains'), then the loops of its planes; or, held together inside (a thin shape: a
+// cushion, a letter), each plane loop's piece on the front side and its piece on the back, each from crease to crease,
+// joined by an internal connection (to `connections`), the creases passing through where they meet.
+std::vector<DesignSeam> creaseSeams(const TriMesh& target, const LayoutProposal& proposal, double spacing,
+                                    std::vector<DesignConnection>* connections) {
   const MeshTopology topo = buildTopology(target);
-  for (size_t i = 0; i < proposal.creases.size(); ++i) {
-    const Crease& crease = proposal.creases[i];
+  const std::vector<Crease>& creases = proposal.creases;
+  std::vector<std::vector<SurfacePoint>> along(creases.size());
+  std::vector<bool> closed(creases.size());
+  for (size_t i = 0; i < creases.size(); ++i) {
+    const Crease& crease = creases[i];
     const SectionLoop path = creasePath(target, topo, crease);
-    const std::string name = "crease " + std::to_string(i + 1);
     // A chain from a junction round to the same junction (a star prism's outline where one crease crosses its side) is
     // a loop through that point: its first control point.
     const bool round = !crease.closed && crease.vertices.front() == crease.vertices.back();
-    if (crease.closed || round) {
-      std::vector<SurfacePoint> controls = sectionSeamPoints(target, path, spacing, true);
-      if (round) controls.front() = vertexPoint(target, topo, crease.vertices.front());
-      seams.push_back(makeSeam(name, true, controls));
-      continue;
+    closed[i] = crease.closed || round;
+    if (closed[i]) {
+      along[i] = sectionSeamPoints(target, path, spacing, true);
+      if (round) along[i].front() = vertexPoint(target, topo, crease.vertices.front());
+    } else {
+      along[i] = sectionPathPoints(target, path, spacing, true);
+      along[i].front() = vertexPoint(target, topo, crease.vertices.front());
+      along[i].back() = vertexPoint(target, topo, crease.vertices.back());
     }
-    std::vector<SurfacePoint> controls = sectionPathPoints(target, path, spacing, true);
-    controls.front() = vertexPoint(target, topo, crease.vertices.front());
-    controls.back() = vertexPoint(target, topo, crease.vertices.back());
-    seams.push_back(makeSeam(name, false, controls));
   }
-  for (const SectionPlane& plane : proposal.planes)
-    for (const SectionLoop& loop : planeSection(target, plane.normal, plane.offset))
-      seams.push_back(makeSeam("halving seam", true, sectionSeamPoints(target, loop, spacing)));
+  std::vector<DesignSeam> pieces;
+  std::vector<DesignConnection> joined;  // between pieces
+  if (!proposal.connected) {
+    for (const SectionPlane& plane : proposal.planes)
+      for (const SectionLoop& loop : planeSection(target, plane.normal, plane.offset))
+        pieces.push_back(makeSeam("halving seam", true, sectionSeamPoints(target, loop, spacing)));
+  } else {
+    Eigen::Index view = 0;
+    (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).minCoeff(&view);
+    std::vector<int> creaseOf(size_t(topo.numEdges()), -1);
+    for (size_t i = 0; i < creases.size(); ++i) {
+      const std::vector<int>& v = creases[i].vertices;
+      for (size_t k = 0; k + 1 < v.size() + (creases[i].closed ? 1 : 0); ++k)
+        creaseOf[size_t(topo.edgeBetween(v[k], v[(k + 1) % v.size()]))] = int(i);
+    }
+    std::vector<std::vector<Eigen::Vector3d>> met(creases.size());
+    for (size_t j = 0; j < proposal.planes.size(); ++j)
+      for (const SectionLoop& loop : planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset)) {
+        const size_t n = loop.size();
+        // Where the loop crosses a crease: its points on a crease's edges.
+        std::vector<size_t> at;
+        std::vector<int> crease;
+        for (size_t k = 0; k < n; ++k) {
+          const SurfaceLocation l = locate(target, topo, loop[k].at);
+          if (l.kind == SurfaceLocation::Edge && creaseOf[size_t(l.edge)] >= 0)
+            at.push_back(k), crease.push_back(creaseOf[size_t(l.edge)]);
+        }
+        if (at.size() < 2) continue;
+        // The pieces between them on the front side (facing along the view) and on the back.
+        struct Piece {
+          size_t from, to;  // indices into `at`
+          SectionLoop inner;
+        };
+        std::vector<Piece> front, back;
+        for (size_t c = 0; c < at.size(); ++c) {
+          Piece piece{c, (c + 1) % at.size(), {}};
+          double facing = 0;
+          int count = 0;
+          for (size_t k = (at[c] + 1) % n; k != at[piece.to]; k = (k + 1) % n, ++count) {
+            const int f = loop[k].at.face;
+            const Eigen::Vector3d a = target.V.row(target.F(f, 0)), b = target.V.row(target.F(f, 1)),
+                                  e = target.V.row(target.F(f, 2));
+            facing += (b - a).cross(e - a).normalized()[view];
+            const double toEnds = std::min((loop[k].position - loop[at[c]].position).norm(),
+                                           (loop[k].position - loop[at[piece.to]].position).norm());
+            if (toEnds >= 0.25 * spacing) piece.inner.push_back(loop[k]);
+          }
+          if (count == 0) continue;
+          if (facing > 0.7 * count) front.push_back(piece);
+          if (facing < -0.7 * count) back.push_back(piece);
+        }
+        if (front.size() != 1 || back.size() != 1) continue;
+        joined.push_back({{int(pieces.size()), int(pieces.size()) + 1}});
+        for (const Piece* piece : {&front[0], &back[0]}) {
+          std::vector<SurfacePoint> controls{loop[at[piece->from]].at};
+          if (piece->inner.size() >= 2)
+            for (const SurfacePoint& p : sectionPathPoints(target, piece->inner, spacing)) controls.push_back(p);
+          controls.push_back(loop[at[piece->to]].at);
+          pieces.push_back(
+              makeSeam("band " + std::to_string(j + 1) + (piece == &front[0] ? ", front" : ", back"), false, controls));
+          for (size_t end : {piece->from, piece->to}) {
+            const size_t i = size_t(crease[end]);
+            passThrough(target, along[i], loop[at[end]], 0.25 * spacing, &met[i], closed[i]);
+          }
+        }
+      }
+  }
+  std::vector<DesignSeam> seams;
+  for (size_t i = 0; i < creases.size(); ++i)
+    seams.push_back(makeSeam("crease " + std::to_string(i + 1), closed[i], along[i]));
+  seams.insert(seams.end(), pieces.begin(), pieces.end());
+  if (connections)
+    for (const DesignConnection& c : joined)
+      connections->push_back({{c.seams[0] + int(creases.size()), c.seams[1] + int(creases.size())}});
   return seams;
 }
 
@@ -646,7 +748,7 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
                                       std::vector<DesignConnection>* connections) {
   const double spacing = seamPointSpacing(target);
   if (!proposal.limbs.empty()) return limbSeams(target, proposal, spacing);
-  if (!proposal.creases.empty()) return creaseSeams(target, proposal, spacing);
+  if (!proposal.creases.empty()) return creaseSeams(target, proposal, spacing, connections);
   const Eigen::Vector3d e = Eigen::Vector3d::Unit(proposal.axis);
   std::array<Pole, 2> poles;
   if (!proposal.meridians.empty()) {

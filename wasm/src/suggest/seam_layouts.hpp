@@ -10,7 +10,8 @@
 // another: 2 (k + 1) panels, and k more where each band's loop is a front and a back seam joined inside by an internal
 // connection (a flat shape's pillow held to its thickness). Or, on a shape with limbs, as a plush toy is patterned: a
 // seam around each limb where it joins the body, the limb halved along its length and the body in halves or bands. Or,
-// on a shape with creases, along them (a box cushion's six sides, a letter's front, back and gusset strip). A layout
+// on a shape with creases, along them (a box cushion's six sides, a letter's front, back and gusset strip; on a thin
+// one, also held together inside by bands joined across it). A layout
 // that keeps the target's mirror symmetry lays only what is its own mirror image across the symmetry plane.
 #pragma once
 #include <functional>
@@ -50,7 +51,10 @@ struct LayoutProposal {
   // (`bands` of them, across `axis`), each plane laid on the body only; in place of gores.
   std::vector<Limb> limbs;
   // Seams along these creases of the target (suggest/creases.hpp), as a cushion or a gusseted letter is patterned: a
-  // flat panel bulges everywhere but along its seams. With `planes`, those too (the halving plane); in place of gores.
+  // flat panel bulges everywhere but along its seams. With `planes`, those too (the halving plane); connected, on a
+  // thin shape, each band plane's loop laid only as its piece on the front side and its piece on the back (across the
+  // target's thinnest extent), from crease to crease, joined by an internal connection (a box cushion's baffle); in
+  // place of gores.
   std::vector<Crease> creases;
 };
 
