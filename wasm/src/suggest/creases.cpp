@@ -113,7 +113,7 @@ Creases creasesAlong(const TriMesh& target, const MeshTopology& topo, std::vecto
 
 }  // namespace
 
-std::vector<Creases> findCreases(const TriMesh& target) {
+std::vector<Creases> findCreases(const TriMesh& target, int axis, double mid) {
   std::vector<Creases> out;
   if (target.F.rows() == 0) return out;
   const MeshTopology topo = buildTopology(target);
@@ -142,9 +142,20 @@ std::vector<Creases> findCreases(const TriMesh& target) {
   // All of them, then fewer: the shortest left out, one at a time.
   for (Creases c = creasesAlong(target, topo, sharp); !c.creases.empty();) {
     if (out.empty() || c.panels < out.back().panels) out.push_back(c);
-    const std::vector<int>& shortest = c.creases.back().vertices;
-    for (size_t k = 0; k + 1 < shortest.size() + (c.creases.back().closed ? 1 : 0); ++k)
-      sharp[size_t(topo.edgeBetween(shortest[k], shortest[(k + 1) % shortest.size()]))] = 0;
+    size_t drop = c.creases.size() - 1;
+    if (axis >= 0 && axis < 3) {
+      double farthest = -1;
+      for (size_t i = 0; i < c.creases.size(); ++i) {
+        if (c.creases[i].length > c.creases.back().length * (1 + 1e-6)) continue;
+        double at = 0;
+        for (int v : c.creases[i].vertices) at += target.V(v, axis);
+        if (const double d = std::abs(at / double(c.creases[i].vertices.size()) - mid); d > farthest)
+          farthest = d, drop = i;
+      }
+    }
+    const Crease& left = c.creases[drop];
+    for (size_t k = 0; k + 1 < left.vertices.size() + (left.closed ? 1 : 0); ++k)
+      sharp[size_t(topo.edgeBetween(left.vertices[k], left.vertices[(k + 1) % left.vertices.size()]))] = 0;
     c = creasesAlong(target, topo, sharp);
   }
   return out;

@@ -33,8 +33,10 @@ struct Creases {
   int panels = 1;
 };
 // The target's creases, then fewer of them (the shortest left out one at a time, as a designer would leave out a star
-// prism's short creases across its side for one gusset strip), panels fewer with each; empty where it has none.
-std::vector<Creases> findCreases(const TriMesh& target);
+// prism's short creases across its side for one gusset strip), panels fewer with each; empty where it has none. With a
+// mirror plane {p[axis] = mid}, of creases as short the one farthest from it is left out first (its twin next), so the
+// sets after each pair are their own mirror image and those the plane runs through stay longest.
+std::vector<Creases> findCreases(const TriMesh& target, int axis = -1, double mid = 0);
 
 // Whether the creases are their own mirror image across the plane {p[axis] = mid}: each of their vertices reflected
 // lies within `tolerance` [target units] of one of them.

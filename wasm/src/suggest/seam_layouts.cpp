@@ -331,7 +331,7 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
   // symmetry is kept, that are their own mirror image), alone and with each part halved by a plane through the middle
   // where the count leaves room for that.
   {
-    const std::vector<Creases> sets = findCreases(target);
+    const std::vector<Creases> sets = s >= 0 ? findCreases(target, s, center[s]) : findCreases(target);
     for (const Creases& set : sets) {
       if (set.panels > request.panels ||
           (s >= 0 && !mirrorSymmetric(target, set.creases, s, center[s], seamPointSpacing(target))))
