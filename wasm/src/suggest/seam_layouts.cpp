@@ -94,6 +94,13 @@ AreaAlong areaAlong(const Faces& faces, int axis) {
   return out;
 }
 
+// The target's own axis it is thinnest along (a cushion's or a letter's depth).
+Eigen::Index thinnestAxis(const TriMesh& target) {
+  Eigen::Index axis = 0;
+  (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).minCoeff(&axis);
+  return axis;
+}
+
 // Control points of a proposed seam on `target` lie this far apart [its units].
 double seamPointSpacing(const TriMesh& target) {
   return kSeamPointSpacing * (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
@@ -357,8 +364,7 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
     // On a thin shape (a cushion, a letter), held together inside: its front, its back and the strip between them (the
     // fewest creases that still make three panels or more) and k bands across another axis, each loop's piece on the
     // front side and its piece on the back joined by an internal connection (two more panels and a connection a band).
-    Eigen::Index view = 0;
-    extent.minCoeff(&view);
+    const Eigen::Index view = thinnestAxis(target);
     const auto held = std::find_if(sets.rbegin(), sets.rend(), [&](const Creases& set) {
       return set.panels >= 3 && (s < 0 || mirrorSymmetric(target, set.creases, s, center[s], seamPointSpacing(target)));
     });
@@ -672,15 +678,17 @@ std::vector<DesignSeam> creaseSeams(const TriMesh& target, const LayoutProposal&
       for (const SectionLoop& loop : planeSection(target, plane.normal, plane.offset))
         pieces.push_back(makeSeam("halving seam", true, sectionSeamPoints(target, loop, spacing)));
   } else {
-    Eigen::Index view = 0;
-    (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).minCoeff(&view);
+    const Eigen::Index view = thinnestAxis(target);
     std::vector<int> creaseOf(size_t(topo.numEdges()), -1);
     for (size_t i = 0; i < creases.size(); ++i) {
       const std::vector<int>& v = creases[i].vertices;
       for (size_t k = 0; k + 1 < v.size() + (creases[i].closed ? 1 : 0); ++k)
         creaseOf[size_t(topo.edgeBetween(v[k], v[(k + 1) % v.size()]))] = int(i);
     }
+    // A loop through its junction keeps that point (the other creases end there); an open crease keeps its ends anyway.
     std::vector<std::vector<Eigen::Vector3d>> met(creases.size());
+    for (size_t i = 0; i < creases.size(); ++i)
+      if (closed[i] && !creases[i].closed) met[i].push_back(target.V.row(creases[i].vertices.front()).transpose());
     for (size_t j = 0; j < proposal.planes.size(); ++j)
       for (const SectionLoop& loop : planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset)) {
         const size_t n = loop.size();
