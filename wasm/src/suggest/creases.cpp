@@ -153,12 +153,18 @@ std::vector<Creases> findCreases(const TriMesh& target, int axis, double mid) {
           farthest = d, drop = i;
       }
     }
-    const Crease& left = c.creases[drop];
-    for (size_t k = 0; k + 1 < left.vertices.size() + (left.closed ? 1 : 0); ++k)
-      sharp[size_t(topo.edgeBetween(left.vertices[k], left.vertices[(k + 1) % left.vertices.size()]))] = 0;
+    for (int e : creaseEdges(topo, c.creases[drop])) sharp[size_t(e)] = 0;
     c = creasesAlong(target, topo, sharp);
   }
   return out;
+}
+
+std::vector<int> creaseEdges(const MeshTopology& topology, const Crease& crease) {
+  const std::vector<int>& v = crease.vertices;
+  std::vector<int> edges;
+  for (size_t k = 0; k + 1 < v.size() + (crease.closed ? 1 : 0); ++k)
+    edges.push_back(topology.edgeBetween(v[k], v[(k + 1) % v.size()]));
+  return edges;
 }
 
 bool mirrorSymmetric(const TriMesh& target, const std::vector<Crease>& creases, int axis, double mid,

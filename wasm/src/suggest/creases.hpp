@@ -42,6 +42,9 @@ std::vector<Creases> findCreases(const TriMesh& target, int axis = -1, double mi
 // lies within `tolerance` [target units] of one of them.
 bool mirrorSymmetric(const TriMesh& target, const std::vector<Crease>& creases, int axis, double mid, double tolerance);
 
+// The mesh edges along the crease, in order (a closed one's last from its last vertex back to its first).
+std::vector<int> creaseEdges(const MeshTopology& topology, const Crease& crease);
+
 // The crease as a loop (closed, or open from a junction round to itself, without its last point) or a path (open) of
 // section points, each in a face that holds the edge to the point before it, as plane sections walk
 // (seams/plane_section.hpp).

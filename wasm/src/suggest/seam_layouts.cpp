@@ -189,6 +189,13 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
   const int s = request.symmetryAxis;
   if (s >= 0 && s < 3) center[s] = 0.5 * (lo[s] + hi[s]);
   std::vector<ProposalKey> seen;
+  // A proposal is kept unless one before it lays the same planes (two families can make one layout).
+  const auto offer = [&](LayoutProposal p) {
+    ProposalKey key = proposalKey(p, size);
+    if (std::find(seen.begin(), seen.end(), key) != seen.end()) return;
+    seen.push_back(std::move(key));
+    out.push_back(std::move(p));
+  };
   for (int axis = 0; axis < 3; ++axis) {
     const AreaAlong along = areaAlong(faces, axis);
     const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
@@ -215,9 +222,6 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
             }
           }
           for (int j = 1; j <= k; ++j) p.planes.push_back({e, along.at(double(j) / (k + 1))});
-          ProposalKey key = proposalKey(p, size);
-          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-          seen.push_back(std::move(key));
           const std::string across = axisName(axis, request.up);
           if (k == 0)
             p.name = g == 2 ? halvesName(p.planes[0].normal, request.up)
@@ -226,7 +230,7 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
             p.name = std::to_string(k + 1) + " bands across the " + across +
                      (g == 2 ? ", in " + halvesName(p.planes[0].normal, request.up)
                              : ", each in " + std::to_string(g) + " gores" + (turn ? " (turned)" : ""));
-          out.push_back(std::move(p));
+          offer(std::move(p));
         }
       }
   }
@@ -236,9 +240,13 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
   // where limbs leave every plane a tube to open (an octopus's coiled arms), the outline may be the one layout that
   // makes panels.
   const Eigen::Vector3d extent = hi - lo;
+  // Thin along a view: a pillow sewn round it would puff up past the target (kPillowThickness).
+  const auto thinAlong = [&](Eigen::Index view) {
+    return extent[view] < kPillowThickness * std::min(extent[(view + 1) % 3], extent[(view + 2) % 3]);
+  };
   for (int view = 0; view < 3; ++view) {
     static const char* from[] = {"from the side", "from above", "from the front"};
-    const bool thin = extent[view] < kPillowThickness * std::min(extent[(view + 1) % 3], extent[(view + 2) % 3]);
+    const bool thin = thinAlong(view);
     const std::string outline =
         std::string("along the outline seen ") + from[viewAxis(Eigen::Vector3d::Unit(view), request.up)];
     for (int axis = 0; axis < 3; ++axis) {
@@ -252,14 +260,11 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
           LayoutProposal p;
           p.axis = axis, p.gores = 2, p.bands = k, p.center = center, p.outlineView = view, p.connected = connected;
           for (int j = 1; j <= k; ++j) p.planes.push_back({Eigen::Vector3d::Unit(axis), along.at(double(j) / (k + 1))});
-          ProposalKey key = proposalKey(p, size);
-          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-          seen.push_back(std::move(key));
           p.name = k == 0 ? "front and back, sealed " + outline
                           : std::to_string(k + 1) + " bands across the " + axisName(axis, request.up) +
                                 ", each in two pieces " + outline;
           if (connected) p.name += ", held together inside";
-          out.push_back(std::move(p));
+          offer(std::move(p));
         }
     }
   }
@@ -326,10 +331,7 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
               (bands > 0 ? std::to_string(bands + 1) + " bands across the " + axisName(across, request.up) + ", in "
                          : "") +
               halvesName(p.planes[0].normal, request.up);
-          ProposalKey key = proposalKey(p, size);
-          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-          seen.push_back(std::move(key));
-          out.push_back(std::move(p));
+          offer(std::move(p));
         }
       break;  // the most limbs that fit: fewer would leave long limbs to the body's halves
     }
@@ -339,25 +341,27 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
   // where the count leaves room for that.
   {
     const std::vector<Creases> sets = s >= 0 ? findCreases(target, s, center[s]) : findCreases(target);
-    for (const Creases& set : sets) {
-      if (set.panels > request.panels ||
-          (s >= 0 && !mirrorSymmetric(target, set.creases, s, center[s], seamPointSpacing(target))))
-        continue;
-      const std::string along =
-          set.creases.size() == sets.front().creases.size()
-              ? "along its " + std::to_string(set.creases.size()) + (set.creases.size() == 1 ? " crease" : " creases")
-              : "along " + std::to_string(set.creases.size()) + " of its " +
-                    std::to_string(sets.front().creases.size()) + " creases";
+    // The sets a layout may use: where the symmetry is kept, those that are their own mirror image.
+    std::vector<char> usable(sets.size(), 1);
+    if (s >= 0)
+      for (size_t i = 0; i < sets.size(); ++i)
+        usable[i] = mirrorSymmetric(target, sets[i].creases, s, center[s], seamPointSpacing(target));
+    const auto alongName = [&](const Creases& set) {
+      const size_t n = set.creases.size(), all = sets.front().creases.size();
+      return n == all ? "along its " + std::to_string(n) + (n == 1 ? " crease" : " creases")
+                      : "along " + std::to_string(n) + " of its " + std::to_string(all) + " creases";
+    };
+    for (size_t i = 0; i < sets.size(); ++i) {
+      const Creases& set = sets[i];
+      if (set.panels > request.panels || !usable[i]) continue;
+      const std::string along = alongName(set);
       for (int axis = -1; axis < 3; ++axis) {
         if (axis >= 0 && 2 * set.panels > request.panels) break;
         LayoutProposal p;
         p.axis = std::max(axis, 0), p.gores = 2, p.center = center, p.creases = set.creases;
         if (axis >= 0) p.planes.push_back({Eigen::Vector3d::Unit(axis), center[axis]});
         p.name = along + (axis >= 0 ? ", each part in " + halvesName(p.planes[0].normal, request.up) : "");
-        ProposalKey key = proposalKey(p, size);
-        if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-        seen.push_back(std::move(key));
-        out.push_back(std::move(p));
+        offer(std::move(p));
       }
       break;
     }
@@ -365,27 +369,23 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
     // fewest creases that still make three panels or more) and k bands across another axis, each loop's piece on the
     // front side and its piece on the back joined by an internal connection (two more panels and a connection a band).
     const Eigen::Index view = thinnestAxis(target);
-    const auto held = std::find_if(sets.rbegin(), sets.rend(), [&](const Creases& set) {
-      return set.panels >= 3 && (s < 0 || mirrorSymmetric(target, set.creases, s, center[s], seamPointSpacing(target)));
-    });
-    if (held != sets.rend() &&
-        extent[view] < kPillowThickness * std::min(extent[(view + 1) % 3], extent[(view + 2) % 3]))
+    size_t held = sets.size();
+    for (size_t i = sets.size(); i-- > 0 && held == sets.size();)
+      if (sets[i].panels >= 3 && usable[i]) held = i;
+    if (held < sets.size() && thinAlong(view))
       for (int axis = 0; axis < 3; ++axis) {
         if (axis == view || axis == s) continue;
         const AreaAlong bandsAlong = areaAlong(faces, axis);
-        for (int k = 1; k <= kMostBands && held->panels + 3 * k <= request.panels; ++k) {
-          if (held->panels + 3 * k < fewestPanels(request.panels)) continue;
+        for (int k = 1; k <= kMostBands && sets[held].panels + 3 * k <= request.panels; ++k) {
+          if (sets[held].panels + 3 * k < fewestPanels(request.panels)) continue;
           LayoutProposal p;
-          p.axis = axis, p.gores = 2, p.bands = k, p.center = center, p.creases = held->creases, p.connected = true;
+          p.axis = axis, p.gores = 2, p.bands = k, p.center = center, p.creases = sets[held].creases,
+          p.connected = true;
           for (int j = 1; j <= k; ++j)
             p.planes.push_back({Eigen::Vector3d::Unit(axis), bandsAlong.at(double(j) / (k + 1))});
-          p.name = "along " + std::to_string(held->creases.size()) + " of its " +
-                   std::to_string(sets.front().creases.size()) + " creases, held together inside along " +
-                   std::to_string(k) + (k == 1 ? " band" : " bands") + " across the " + axisName(axis, request.up);
-          ProposalKey key = proposalKey(p, size);
-          if (std::find(seen.begin(), seen.end(), key) != seen.end()) continue;
-          seen.push_back(std::move(key));
-          out.push_back(std::move(p));
+          p.name = alongName(sets[held]) + ", held together inside along " + std::to_string(k) +
+                   (k == 1 ? " band" : " bands") + " across the " + axisName(axis, request.up);
+          offer(std::move(p));
         }
       }
   }
@@ -680,11 +680,8 @@ std::vector<DesignSeam> creaseSeams(const TriMesh& target, const LayoutProposal&
   } else {
     const Eigen::Index view = thinnestAxis(target);
     std::vector<int> creaseOf(size_t(topo.numEdges()), -1);
-    for (size_t i = 0; i < creases.size(); ++i) {
-      const std::vector<int>& v = creases[i].vertices;
-      for (size_t k = 0; k + 1 < v.size() + (creases[i].closed ? 1 : 0); ++k)
-        creaseOf[size_t(topo.edgeBetween(v[k], v[(k + 1) % v.size()]))] = int(i);
-    }
+    for (size_t i = 0; i < creases.size(); ++i)
+      for (int e : creaseEdges(topo, creases[i])) creaseOf[size_t(e)] = int(i);
     // A loop through its junction keeps that point (the other creases end there); an open crease keeps its ends anyway.
     std::vector<std::vector<Eigen::Vector3d>> met(creases.size());
     for (size_t i = 0; i < creases.size(); ++i)
