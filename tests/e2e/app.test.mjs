@@ -24,6 +24,18 @@ test('the app opens on an example target, renders it and shows its statistics', 
   await page.waitForTimeout(200);
   const painted = await paintedFraction(page, '#pane-target .pane-body');
   assert.ok(painted > 0.05, `the target is drawn (${(painted * 100).toFixed(1)} % of the pane)`);
+  // The cow is seen from the front, its head (the horns, its highest point) nearer the viewer than its middle.
+  const facing = await page.evaluate(() => {
+    const pane = window.billow.test.panes.target;
+    const positions = pane.mesh.geometry.attributes.position;
+    const Vector3 = pane.camera.position.constructor;
+    let top = new Vector3(0, -Infinity, 0);
+    for (let i = 0; i < positions.count; i++) if (positions.getY(i) > top.y) top = new Vector3().fromBufferAttribute(positions, i);
+    const center = pane.mesh.geometry.boundingBox.getCenter(new Vector3());
+    pane.mesh.localToWorld(top), pane.mesh.localToWorld(center);
+    return top.sub(center).normalize().dot(pane.viewDirection());
+  });
+  assert.ok(facing > 0.3, `the cow faces the viewer (${facing.toFixed(2)})`);
   await screenshot(page, 'app-start');
   // Headless Chromium renders on SwiftShader: no multisampling there (viewport.js).
   const gl = await page.evaluate(() => {

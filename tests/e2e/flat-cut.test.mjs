@@ -45,6 +45,7 @@ const newSegmentation = (page) => page.waitForFunction(() => {
 test('a section seam is laid in one click, across the model or the view, and undone like any seam', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await page.waitForFunction(() => window.billow.test.panes.target.mesh);
+  await lookFrom(page, [0.32, 0.27, 0.91]); // the cow from behind: the middle of the view on its body
   assert.equal(await page.isVisible('.section-axis'), false, 'the plane is chosen only for sections');
   await page.keyboard.press('s');
   assert.equal(await page.getAttribute('#seam-panel button[data-tool="section"]', 'aria-pressed'), 'true');

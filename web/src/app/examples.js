@@ -1,6 +1,7 @@
-// Built-in example targets (files in web/public/examples, credits in web/public/examples/CREDITS.md).
+// Built-in example targets (files in web/public/examples, credits in web/public/examples/CREDITS.md). front: the way
+// the model faces in its file, where that is not +Z (the default view looks at it from there).
 export const EXAMPLES = [
-  { id: 'spot', name: 'Spot the cow', file: 'spot.obj', height: 0.6, credit: 'Keenan Crane, public domain (CC0)' },
+  { id: 'spot', name: 'Spot the cow', file: 'spot.obj', height: 0.6, front: [0, 0, -1], credit: 'Keenan Crane, public domain (CC0)' },
   { id: 'blub', name: 'Blub the fish', file: 'blub.obj', height: 0.5, credit: 'Keenan Crane, public domain' },
   { id: 'sphere', name: 'Sphere', file: 'sphere.obj', height: 0.5, credit: 'Oded Stein, CC BY 4.0' },
   { id: 'penguin', name: 'Penguin', file: 'penguin.obj', height: 0.9, credit: 'Oded Stein, CC BY 4.0' },

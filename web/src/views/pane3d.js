@@ -28,6 +28,7 @@ export class Pane3D {
     this.controls.addEventListener('change', () => viewport.requestRender());
     this.square = null; // where the view is framed: { left, top, side } in client pixels (fitView)
     this.fitKey = '';
+    this.front = null; // the way the shown object faces, in its own coordinates (defaultView)
     viewport.add(this);
     watchOverlays(element.parentElement, () => viewport.requestRender()); // a box opened, closed or shown
   }
@@ -64,13 +65,21 @@ export class Pane3D {
     return d.lengthSq() > 0 ? d.normalize() : DEFAULT_VIEW.clone();
   }
 
+  // The three-quarter front view of the object, its front +Z unless this.front (in the object's own coordinates, as
+  // the model faces in its file) says otherwise: turned about the vertical to face it.
+  defaultView(object) {
+    const front = this.front?.clone().applyQuaternion(object.quaternion);
+    if (!front || front.x * front.x + front.z * front.z < 1e-12) return DEFAULT_VIEW.clone();
+    return DEFAULT_VIEW.clone().applyAxisAngle(new Vector3(0, 1, 0), Math.atan2(front.x, front.z));
+  }
+
   // Frames the object: camera distance from its bounding sphere and the field of view, whole in the free part
   // of the pane (fitView), seen from where the camera already looks (a new shape does not undo the designer's
   // turning of the view), or with reset from the default three-quarter front view.
   frame(object, { reset = false } = {}) {
     const sphere = new Box3().setFromObject(object).getBoundingSphere(new Sphere());
     if (!Number.isFinite(sphere.radius) || sphere.radius <= 0) return;
-    const direction = reset ? DEFAULT_VIEW.clone() : this.viewDirection();
+    const direction = reset ? this.defaultView(object) : this.viewDirection();
     this.fitView();
     const half = (this.camera.fov * Math.PI) / 360;
     // The framed square spans the field of view; a whole pane narrower than tall spans less of it across.

@@ -99,8 +99,9 @@ export class TargetPane extends Pane3D {
     this.viewport.requestRender();
   }
 
-  // positions in file units, scale to meters; centered on the bounding box's bottom center.
-  setTarget({ positions, indices }, scale) {
+  // positions in file units, scale to meters; centered on the bounding box's bottom center. front: the way the model
+  // faces in its own coordinates ([x, y, z]), if known and not +Z.
+  setTarget({ positions, indices }, scale, front = null) {
     if (this.mesh) {
       this.group.remove(this.mesh);
       this.mesh.geometry.dispose();
@@ -122,6 +123,7 @@ export class TargetPane extends Pane3D {
     this.mesh.add(this.seams);
     this.mesh.scale.setScalar(0); // forces setScale to place and frame it
     this.group.add(this.mesh);
+    this.front = front ? new Vector3(...front) : null;
     this.newTarget = true; // a new target is seen from the default view
     this.setScale(scale);
   }
