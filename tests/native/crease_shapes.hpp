@@ -9,12 +9,30 @@
 
 namespace billow::test {
 
+// The outline's points moved inward by `inset` along their mitred normals (the polygon offset of its sides).
+inline std::vector<Eigen::Vector2d> insetOutline(const std::vector<Eigen::Vector2d>& outline, double inset) {
+  const size_t n = outline.size();
+  std::vector<Eigen::Vector2d> out;
+  for (size_t i = 0; i < n; ++i) {
+    const Eigen::Vector2d a = (outline[i] - outline[(i + n - 1) % n]).normalized(),
+                          b = (outline[(i + 1) % n] - outline[i]).normalized();
+    const Eigen::Vector2d na(a.y(), -a.x()), nb(b.y(), -b.x());  // outward, the outline counterclockwise
+    const Eigen::Vector2d miter = (na + nb).normalized();
+    out.push_back(outline[i] - inset / miter.dot(nb) * miter);
+  }
+  return out;
+}
+
 // The outline (counterclockwise in x, y, star-shaped about the origin) extruded from z = -depth / 2 to depth / 2, with
-// `rings` rings on each face and `layers` layers of quads on the side.
-inline TriMesh extrudedOutline(const std::vector<Eigen::Vector2d>& outline, double depth, int rings, int layers) {
+// `rings` rings on each face and `layers` layers of quads on the side. With a bevel, the rim between each face and the
+// side is rounded to a quarter circle of that radius in `bevelSegments` strips of quads, as a modeller's bevel makes
+// it.
+inline TriMesh extrudedOutline(const std::vector<Eigen::Vector2d>& outline, double depth, int rings, int layers,
+                               double bevel = 0, int bevelSegments = 0) {
   const int n = int(outline.size());
   std::vector<Eigen::Vector3d> V;
   std::vector<Eigen::Vector3i> F;
+  const std::vector<Eigen::Vector2d> faceOutline = bevel > 0 ? insetOutline(outline, bevel) : outline;
   // ring[k][i]: the vertex of ring k (1..rings, scaled k / rings) at outline point i, on a face at height z.
   const auto face = [&](double z, bool up) {
     const int center = int(V.size());
@@ -23,7 +41,7 @@ inline TriMesh extrudedOutline(const std::vector<Eigen::Vector2d>& outline, doub
     for (int k = 1; k <= rings; ++k)
       for (int i = 0; i < n; ++i) {
         ring[size_t(k)].push_back(int(V.size()));
-        V.emplace_back(outline[size_t(i)].x() * k / rings, outline[size_t(i)].y() * k / rings, z);
+        V.emplace_back(faceOutline[size_t(i)].x() * k / rings, faceOutline[size_t(i)].y() * k / rings, z);
       }
     const auto tri = [&](int a, int b, int c) {
       F.push_back(up ? Eigen::Vector3i(a, b, c) : Eigen::Vector3i(a, c, b));
@@ -38,14 +56,27 @@ inline TriMesh extrudedOutline(const std::vector<Eigen::Vector2d>& outline, doub
     return ring[size_t(rings)];
   };
   const std::vector<int> top = face(depth / 2, true), bottom = face(-depth / 2, false);
-  std::vector<std::vector<int>> side{bottom};
-  for (int l = 1; l < layers; ++l) {
+  const auto ringAt = [&](const std::vector<Eigen::Vector2d>& points, double z) {
     std::vector<int> r;
     for (int i = 0; i < n; ++i) {
       r.push_back(int(V.size()));
-      V.emplace_back(outline[size_t(i)].x(), outline[size_t(i)].y(), -depth / 2 + depth * l / layers);
+      V.emplace_back(points[size_t(i)].x(), points[size_t(i)].y(), z);
     }
-    side.push_back(r);
+    return r;
+  };
+  // The side's rings from the bottom face's rim to the top face's, through the bevels' quarter circles.
+  const int segments = bevel > 0 ? bevelSegments : 0;
+  const double wall = depth / 2 - (segments > 0 ? bevel : 0);
+  std::vector<std::vector<int>> side{bottom};
+  for (int j = segments - 1; j >= 0; --j) {
+    const double t = M_PI / 2 * j / segments;
+    side.push_back(ringAt(insetOutline(outline, bevel * (1 - std::cos(t))), -wall - bevel * std::sin(t)));
+  }
+  for (int l = segments > 0 ? 0 : 1; l < layers + (segments > 0 ? 1 : 0); ++l)
+    if (segments == 0 || l > 0) side.push_back(ringAt(outline, -wall + 2 * wall * l / layers));
+  for (int j = 1; j < segments; ++j) {
+    const double t = M_PI / 2 * j / segments;
+    side.push_back(ringAt(insetOutline(outline, bevel * (1 - std::cos(t))), wall + bevel * std::sin(t)));
   }
   side.push_back(top);
   for (size_t l = 0; l + 1 < side.size(); ++l)

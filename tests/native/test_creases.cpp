@@ -76,12 +76,63 @@ TEST(Creases, ABoxHasTwelveADrumItsTwoRimsAndRoundShapesNone) {
 
   // Round and organic shapes: no crease (their sharpest edges turn as much as those beside them), but the hand's wrist,
   // where its mesh is cut off flat.
-  for (const char* name : {"sphere.obj", "bunny.obj", "spot.obj", "octopus.obj", "koala.obj", "blub.obj"})
+  for (const char* name :
+       {"sphere.obj", "bunny.obj", "spot.obj", "octopus.obj", "koala.obj", "blub.obj", "penguin.obj", "stuffedtoy.obj"})
     EXPECT_TRUE(findCreases(test::loadShared(name)).empty()) << name;
   const std::vector<Creases> hand = findCreases(test::loadShared("hand.obj"));
   ASSERT_EQ(hand.size(), 1u);
   EXPECT_EQ(hand[0].creases.size(), 1u);
   EXPECT_TRUE(hand[0].creases[0].closed);
+}
+
+// A modeller's bevel spreads a crease over a few rows of edges, each turning too little to be one: the crease runs
+// along the bevel's middle row, so a box whose rims are rounded (in 2 to 6 rows, as a bevel tool makes them) has the
+// same 12 creases as a sharp one, and a rounded drum its two rims. A chamfer (one row) stays a strip between two
+// creases.
+TEST(Creases, ABevelledEdgeIsOneCreaseAlongItsMiddle) {
+  const double r = 0.02, wall = 0.08;  // the box 0.6 x 0.4 x 0.2, its rims rounded to radius r
+  for (int rows = 2; rows <= 6; ++rows) {
+    const TriMesh box = test::extrudedOutline(
+        test::polygonOutline({{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.2}, {-0.3, 0.2}}, 12), 0.2, 8, 6, r, rows);
+    const std::vector<Creases> sets = findCreases(box);
+    ASSERT_FALSE(sets.empty()) << rows;
+    EXPECT_EQ(sets[0].creases.size(), 12u) << rows;
+    EXPECT_EQ(sets[0].panels, 6) << rows;
+    EXPECT_EQ(sets.back().panels, 2) << rows;
+    expectAlongSharpEdges(box, sets[0]);
+    // Each crease point on a vertical corner (up its mitre through the bevel), or on a rim between a third and two
+    // thirds round its quarter circle.
+    for (const Crease& c : sets[0].creases)
+      for (int v : c.vertices) {
+        const Eigen::Vector3d p = box.V.row(v);
+        const bool corner = std::abs((0.3 - std::abs(p.x())) - (0.2 - std::abs(p.y()))) < 1e-9;
+        const double z = std::abs(p.z()) - wall;
+        EXPECT_TRUE(corner || (z > r * std::sin(M_PI / 6) - 1e-9 && z < r * std::sin(M_PI / 3) + 1e-9))
+            << rows << " rows: " << p.transpose();
+      }
+  }
+  std::vector<Eigen::Vector2d> circle;
+  for (int i = 0; i < 64; ++i)
+    circle.emplace_back(0.3 * std::cos(2 * M_PI * i / 64), 0.3 * std::sin(2 * M_PI * i / 64));
+  const std::vector<Creases> drum = findCreases(test::extrudedOutline(circle, 0.15, 10, 8, r, 3));
+  ASSERT_FALSE(drum.empty());
+  EXPECT_EQ(drum[0].creases.size(), 2u);
+  EXPECT_EQ(countClosed(drum[0]), 2u);
+  EXPECT_EQ(drum[0].panels, 3);
+  // A bevelled star cushion keeps a set of front, back and one gusset strip.
+  std::vector<Eigen::Vector2d> star;
+  for (int k = 0; k < 10; ++k) {
+    const double radius = k % 2 == 0 ? 0.3 : 0.135, angle = M_PI / 2 + M_PI * k / 5;
+    star.emplace_back(radius * std::cos(angle), radius * std::sin(angle));
+  }
+  const std::vector<Creases> stars =
+      findCreases(test::extrudedOutline(test::polygonOutline(star, 8), 0.1, 10, 3, 0.01, 3));
+  EXPECT_TRUE(std::any_of(stars.begin(), stars.end(), [](const Creases& s) { return s.panels == 3; }));
+  // A chamfer: two creases, the strip between them a panel of its own.
+  const std::vector<Creases> chamfered = findCreases(test::extrudedOutline(
+      test::polygonOutline({{-0.3, -0.2}, {0.3, -0.2}, {0.3, 0.2}, {-0.3, 0.2}}, 12), 0.2, 8, 6, r, 1));
+  ASSERT_FALSE(chamfered.empty());
+  EXPECT_EQ(chamfered[0].panels, 14);
 }
 
 std::unique_ptr<DesignScene> sceneOf(const TriMesh& mesh) {

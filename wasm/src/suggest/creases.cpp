@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <queue>
 
 #include "util/union_find.hpp"
 
@@ -111,6 +112,171 @@ Creases creasesAlong(const TriMesh& target, const MeshTopology& topo, std::vecto
   return out;
 }
 
+// A crease spread over a bevel (a modeller's rounded edge: a foil letter's or a cushion's rim, a CAD part's fillet):
+// rows of edges along it, each turning a little, that turn kCreaseTurn or more together within kWidestBevel of the
+// diagonal. Convex bevels only: a concave fillet is as rare on a designer's shape as a smooth valley is common.
+constexpr double kLeastRowTurn = 0.035;  // a row turns 2 degrees or more
+constexpr double kWidestBevel = 0.06;    // of the diagonal (a 2 cm radius at 0.6 m: 4 %)
+// A band that turns more is round a tube or a thin fin's rim, not along a fold (a star's tip turns 144 degrees).
+constexpr double kMostBandTurn = 2.62;  // 150 degrees
+// A bevel's crease runs on: its rows that join up shorter than this share of the diagonal are an organic mesh's chance
+// (a coarse fish's fin), left out; so are their loose ends' gaps.
+constexpr double kLongChain = 0.1;
+
+struct EdgeFrame {
+  Eigen::Vector3d middle, along;  // unit along
+  bool convex = true;
+};
+
+// Edge e's band: the plane through its middle across it meets the other rows (edges along e turning the same way by
+// kLeastRowTurn or more); those next to each other (no gap wider than two of the local edge lengths) make the band.
+// e carries its crease if it is the band's middle row: where the turn, summed from the band's negative end, passes half
+// of it (of two middle rows, the one on the negative side; offsets count positive along the first of z, y, x the band
+// runs across, so that every edge of a bevel picks the same, where a fixed direction would flip round a rim). Also the
+// band is narrower than kWidestBevel, turns at most kMostBandTurn, and the surface just beyond it turns by less than
+// kSmoothBeside of the band's turn. Returns the band's turn [rad] and width (0 where e is not a bevel's middle row).
+struct Band {
+  double turn = 0, width = 0;
+};
+
+Band bevelBand(const TriMesh& target, const MeshTopology& topo, const std::vector<double>& bend,
+               const std::vector<EdgeFrame>& frame, int e, double diagonal) {
+  const EdgeFrame& edge = frame[size_t(e)];
+  const Eigen::Vector3d m = edge.middle, t = edge.along;
+  if (!edge.convex) return {};
+  Eigen::Vector3d side = Eigen::Vector3d::Zero();  // across e, towards face 0
+  for (int k = 0; k < 3; ++k) side += target.V.row(target.F(topo.edgeFaces(e, 0), k)).transpose();
+  side = side / 3 - m, side -= side.dot(t) * t;
+  const Eigen::Vector3d across = side.normalized();
+  const int axis = std::abs(across.z()) > 0.1 ? 2 : std::abs(across.y()) > 0.1 ? 1 : 0;
+  if (across[axis] < 0) side = -side;
+  double spacing = 0;
+  for (int s = 0; s < 2; ++s)
+    for (int k = 0; k < 3; ++k) {
+      const int g = topo.faceEdges(topo.edgeFaces(e, s), k);
+      spacing = std::max(spacing, (target.V.row(topo.E(g, 0)) - target.V.row(topo.E(g, 1))).norm());
+    }
+  const double reach = kWidestBevel * diagonal + 2 * spacing;
+  // The plane's crossings of edges along e, walked from e's faces across the edges it crosses: (offset, the turn of a
+  // row, or minus the turn of another edge).
+  std::vector<std::pair<double, double>> crossings;
+  std::vector<int> faces{topo.edgeFaces(e, 0), topo.edgeFaces(e, 1)};
+  std::vector<char> seenFace(size_t(target.F.rows()), 0), seenEdge(size_t(topo.numEdges()), 0);
+  seenFace[size_t(faces[0])] = seenFace[size_t(faces[1])] = 1, seenEdge[size_t(e)] = 1;
+  for (size_t i = 0; i < faces.size(); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const int g = topo.faceEdges(faces[i], k);
+      const Eigen::Vector3d a = target.V.row(topo.E(g, 0)), b = target.V.row(topo.E(g, 1));
+      const double da = (a - m).dot(t), db = (b - m).dot(t);
+      if ((da > 0) == (db > 0) && da != 0 && db != 0) continue;
+      const Eigen::Vector3d q = a + da / (da - db) * (b - a);
+      if ((q - m).norm() > reach) continue;
+      if (!seenEdge[size_t(g)] && std::abs(frame[size_t(g)].along.dot(t)) > 0.9) {
+        const double offset = (q - m).dot(side) > 0 ? (q - m).norm() : -(q - m).norm();
+        const bool row = bend[size_t(g)] >= kLeastRowTurn && frame[size_t(g)].convex;
+        crossings.push_back({offset, row ? bend[size_t(g)] : -bend[size_t(g)]});
+      }
+      seenEdge[size_t(g)] = 1;
+      for (int s = 0; s < 2; ++s)
+        if (const int h = topo.edgeFaces(g, s); !seenFace[size_t(h)]) seenFace[size_t(h)] = 1, faces.push_back(h);
+    }
+  std::sort(crossings.begin(), crossings.end());
+  double turn = bend[size_t(e)], below = 0, lo = 0, hi = 0, beyond = 0;
+  for (int dir = -1; dir <= 1; dir += 2) {
+    double last = 0;
+    bool open = true;
+    for (size_t i = 0; i < crossings.size(); ++i) {
+      const auto& [offset, r] = crossings[dir > 0 ? i : crossings.size() - 1 - i];
+      if (dir * offset <= 0) continue;
+      if (open && std::abs(offset - last) > 2 * spacing) open = false;
+      if (open && r > 0) {
+        turn += r, last = offset;
+        if (dir < 0)
+          below += r, lo = offset;
+        else
+          hi = offset;
+      } else if (!open && std::abs(offset - last) <= 1.5 * spacing) {
+        beyond = std::max(beyond, std::abs(r));
+      }
+    }
+  }
+  if (turn < kCreaseTurn || turn > kMostBandTurn || hi - lo > kWidestBevel * diagonal || beyond >= kSmoothBeside * turn)
+    return {};
+  if (!(below < 0.49 * turn && below + bend[size_t(e)] >= 0.49 * turn)) return {};
+  return {turn, hi - lo};
+}
+
+// Where a bevel's crease reaches a corner, its middle row ends short of the other creases there (a rounded corner is a
+// patch of its own, a mitred one has its own edges). Each loose end of a crease that runs kLongChain of the diagonal up
+// to it is joined to the nearest vertex of another crease within the bevel's width and two edges (either crease's
+// bevel: a sharp crease meets only a bevel's so), by the shortest path along the edges.
+void bridgeLooseEnds(const TriMesh& target, const MeshTopology& topo, std::vector<char>& sharp,
+                     const std::vector<double>& bevelWidth) {
+  const int nv = int(target.V.rows());
+  const double diagonal = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
+  std::vector<int> degree(size_t(nv), 0);
+  for (int e = 0; e < topo.numEdges(); ++e)
+    if (sharp[size_t(e)]) ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
+  const auto length = [&](int e) { return (target.V.row(topo.E(e, 0)) - target.V.row(topo.E(e, 1))).norm(); };
+  const auto bevelAt = [&](int v) {
+    double w = 0;
+    for (const auto& [u, e] : topo.neighbors[size_t(v)])
+      if (sharp[size_t(e)]) w = std::max(w, bevelWidth[size_t(e)]);
+    return w;
+  };
+  std::vector<double> d(size_t(nv), INFINITY), own(size_t(nv), INFINITY);
+  std::vector<int> via(size_t(nv), -1), touched;
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (int end = 0; end < nv; ++end) {
+    if (degree[size_t(end)] != 1) continue;
+    double chain = 0;
+    for (int v = end, from = -1, next = -1; chain < kLongChain * diagonal; from = v, v = next) {
+      next = -1;
+      for (const auto& [u, e] : topo.neighbors[size_t(v)])
+        if (sharp[size_t(e)] && u != from) next = u, chain += length(e);
+      if (next < 0 || degree[size_t(next)] != 2) break;
+    }
+    if (chain < kLongChain * diagonal) continue;
+    double spacing = 0;
+    for (const auto& [u, e] : topo.neighbors[size_t(end)]) spacing = std::max(spacing, 2 * length(e));
+    const double ownWidth = bevelAt(end), reach = kWidestBevel * diagonal + spacing;
+    // Its own crease near it, not to be joined to.
+    own[size_t(end)] = 0, touched.push_back(end), queue.push({0, end});
+    while (!queue.empty()) {
+      const auto [dv, v] = queue.top();
+      queue.pop();
+      if (dv > own[size_t(v)]) continue;
+      for (const auto& [u, e] : topo.neighbors[size_t(v)])
+        if (sharp[size_t(e)] && dv + length(e) < own[size_t(u)] && dv + length(e) <= 2 * reach)
+          own[size_t(u)] = dv + length(e), touched.push_back(u), queue.push({own[size_t(u)], u});
+    }
+    int found = -1;
+    d[size_t(end)] = 0, queue.push({0, end});
+    while (!queue.empty()) {
+      const auto [dv, v] = queue.top();
+      queue.pop();
+      if (dv > d[size_t(v)]) continue;
+      const double width = std::max(ownWidth, bevelAt(v));
+      if (v != end && degree[size_t(v)] > 0 && !std::isfinite(own[size_t(v)]) && width > 0 && dv <= width + spacing) {
+        found = v;
+        break;
+      }
+      for (const auto& [u, e] : topo.neighbors[size_t(v)])
+        if (dv + length(e) < d[size_t(u)] && dv + length(e) <= reach)
+          d[size_t(u)] = dv + length(e), via[size_t(u)] = e, touched.push_back(u), queue.push({d[size_t(u)], u});
+    }
+    queue = {};
+    for (int v = found; v >= 0 && v != end;) {
+      const int e = via[size_t(v)];
+      if (!sharp[size_t(e)]) sharp[size_t(e)] = 1, ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
+      v = topo.E(e, 0) == v ? topo.E(e, 1) : topo.E(e, 0);
+    }
+    for (int v : touched) d[size_t(v)] = own[size_t(v)] = INFINITY, via[size_t(v)] = -1;
+    touched.clear();
+  }
+}
+
 }  // namespace
 
 std::vector<Creases> findCreases(const TriMesh& target, int axis, double mid) {
@@ -128,17 +294,44 @@ std::vector<Creases> findCreases(const TriMesh& target, int axis, double mid) {
   for (int e = 0; e < ne; ++e)
     bend[size_t(e)] =
         std::acos(std::clamp(normal.row(topo.edgeFaces(e, 0)).dot(normal.row(topo.edgeFaces(e, 1))), -1.0, 1.0));
-  std::vector<char> sharp(size_t(ne), 0);
+  const double diagonal = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
+  std::vector<EdgeFrame> frame(static_cast<size_t>(ne));
   for (int e = 0; e < ne; ++e) {
-    if (!(bend[size_t(e)] >= kCreaseTurn)) continue;
-    bool smooth = true;
+    const Eigen::Vector3d a = target.V.row(topo.E(e, 0)), b = target.V.row(topo.E(e, 1));
+    frame[size_t(e)].middle = (a + b) / 2, frame[size_t(e)].along = (b - a).normalized();
+    // Convex where face 1's far corner lies behind face 0's plane.
+    Eigen::Vector3d far = Eigen::Vector3d::Zero();
+    for (int k = 0; k < 3; ++k) far += target.V.row(target.F(topo.edgeFaces(e, 1), k)).transpose();
+    frame[size_t(e)].convex = (far / 3 - a).dot(normal.row(topo.edgeFaces(e, 0)).transpose()) < 0;
+  }
+  // Sharp edges (1), and bevels' middle rows (2) with their bevels' widths.
+  std::vector<char> sharp(size_t(ne), 0);
+  std::vector<double> bevelWidth(size_t(ne), 0);
+  for (int e = 0; e < ne; ++e) {
+    if (!(bend[size_t(e)] >= kLeastRowTurn)) continue;
+    bool smooth = bend[size_t(e)] >= kCreaseTurn;
     for (int side = 0; side < 2; ++side)
       for (int k = 0; k < 3; ++k) {
         const double t = bend[size_t(topo.faceEdges(topo.edgeFaces(e, side), k))];
         smooth = smooth && (t >= kCreaseTurn || t < kSmoothBeside * bend[size_t(e)]);
       }
-    sharp[size_t(e)] = smooth;
+    const Band band = bevelBand(target, topo, bend, frame, e, diagonal);
+    bevelWidth[size_t(e)] = band.width;  // 0 for a sharp edge alone
+    sharp[size_t(e)] = smooth ? 1 : band.turn > 0 ? 2 : 0;
   }
+  UnionFind rows(int(target.V.rows()));
+  for (int e = 0; e < ne; ++e)
+    if (bevelWidth[size_t(e)] > 0) rows.unite(topo.E(e, 0), topo.E(e, 1));
+  std::vector<double> run(size_t(target.V.rows()), 0);
+  for (int e = 0; e < ne; ++e)
+    if (bevelWidth[size_t(e)] > 0)
+      run[size_t(rows.find(topo.E(e, 0)))] += (target.V.row(topo.E(e, 0)) - target.V.row(topo.E(e, 1))).norm();
+  for (int e = 0; e < ne; ++e)
+    if (bevelWidth[size_t(e)] > 0 && run[size_t(rows.find(topo.E(e, 0)))] < kLongChain * diagonal) {
+      bevelWidth[size_t(e)] = 0;
+      if (sharp[size_t(e)] == 2) sharp[size_t(e)] = 0;
+    }
+  bridgeLooseEnds(target, topo, sharp, bevelWidth);
   // All of them, then fewer: the shortest left out, one at a time.
   for (Creases c = creasesAlong(target, topo, sharp); !c.creases.empty();) {
     if (out.empty() || c.panels < out.back().panels) out.push_back(c);
