@@ -161,6 +161,10 @@ test('a flat shape gets a layout held together inside, and using it makes its in
   for (const { seams: [a, b] } of design.connections)
     assert.ok(design.seams[a] && design.seams[b] && !design.seams[a].closed && !design.seams[b].closed, JSON.stringify([a, b]));
   await optimizedResultShown(page);
+  // Each connection's panel is labelled as inside in the pattern pane, its full name (the seams it joins) its tooltip.
+  const inside = await page.$$eval('.panel-label', (labels) => labels.filter((l) => /^\d+ inside/.test(l.textContent)).map((l) => l.title));
+  assert.equal(inside.length, design.connections.length, JSON.stringify(inside));
+  assert.ok(inside.every((title) => /^internal \d+ \(seams /.test(title)), JSON.stringify(inside));
   await screenshot(page, 'suggest-held-together');
   assert.deepEqual(page.errors, []);
 });

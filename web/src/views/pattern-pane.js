@@ -152,8 +152,10 @@ export class PatternPane {
       const label = document.createElement('div');
       label.className = 'panel-label';
       // "Panel 3" carries its segment's number (the target pane shows it on the model); other names get their place.
+      // An internal panel's name says which seams it joins: that is its tooltip, the label says "inside".
       const number = /^Panel (\d+)$/.exec(panel.name ?? '')?.[1];
-      label.textContent = number ? panel.name : `${i + 1} ${panel.name ?? ''}`.trim();
+      label.textContent = number ? panel.name : panel.internal ? `${i + 1} inside` : `${i + 1} ${panel.name ?? ''}`.trim();
+      if (panel.internal) label.title = panel.name;
       const size = this.pieceSize(i);
       if (size) {
         const line = document.createElement('span');
@@ -164,7 +166,10 @@ export class PatternPane {
       this.labels.append(label);
       label.dataset.full = label.firstChild.textContent;
       label.dataset.short = number ?? String(i + 1);
-      this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0), area: panelArea(panel) });
+      // The piece's width as drawn [m]: a name wider than the piece on screen gives way to its number.
+      const xs = panel.vertices.map(([x, y]) => place(x, y)[0]);
+      const span = Math.max(...xs) - Math.min(...xs);
+      this.labelAnchors.push({ label, at: new Vector3(...place(...this.layout[i].center), 0), area: panelArea(panel), span });
     });
     // Larger panels keep their full labels first (labelOrder).
     this.panelLabels = this.labelAnchors.filter((a) => a.area !== undefined).sort((a, b) => b.area - a.area);
@@ -638,7 +643,7 @@ export class PatternPane {
     return [
       ...this.labelAnchors.filter((a) => a.area === undefined).map(({ label }) => ({ label, always: true })),
       ...seams.filter(selected).map(({ label }) => ({ label, always: true })),
-      ...this.panelLabels,
+      ...this.panelLabels.map(({ label, span }) => ({ label, room: span / this.metersPerPixel() })),
       ...seams.filter((s) => !selected(s)).sort((a, b) => b.length - a.length),
     ];
   }
