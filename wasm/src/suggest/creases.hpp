@@ -3,8 +3,9 @@
 // along its seams, so a sharp fold of the target is followed only by a seam in it.
 //
 // A crease is a chain of mesh edges across which the surface turns by kCreaseTurn or more while it is smooth on either
-// side, or the middle row of a bevel that turns as much over a few rows of edges (a modeller's rounded edge). Only the chains that close on themselves or end on other creases are kept (a crease that fades into a smooth
-// surface would be a slit in a panel), and of those only the ones long enough to be a designer's fold.
+// side, or the middle row of a bevel that turns as much over a few rows of edges (a modeller's rounded edge). Only the
+// chains that close on themselves or end on other creases are kept (a crease that fades into a smooth surface would be
+// a slit in a panel), and of those only the ones long enough to be a designer's fold.
 #pragma once
 #include <vector>
 
