@@ -61,6 +61,9 @@ test('a mesh with a hole, opened with the file picker, gets a clear message and 
   assert.match(text, /must be closed/);
   assert.match(text, /largest hole is near/);
   assert.equal(await stat(page, 'triangles'), '5,856', 'the previous target stays');
+  // So do the example's name in the menu and a status that is not left saying the file is being opened.
+  assert.equal(await page.inputValue('#example-select'), 'spot');
+  assert.doesNotMatch(await page.textContent('#status'), /Opening/);
   await screenshot(page, 'app-open-error');
   // Garbage with a mesh extension, and an unsupported extension.
   await page.setInputFiles('#file-input', { name: 'noise.stl', mimeType: 'model/stl', buffer: Buffer.from([1, 2, 3, 4, 5]) });

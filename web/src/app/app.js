@@ -243,7 +243,9 @@ export class App {
         ? `"${fileName}" cannot be used as a target. Your current design is unchanged.`
         : `${error.message}${this.target ? ' Your current design is unchanged.' : ''}`;
       this.messages.show('error', text, items);
-      if (!this.target) this.setStatus('');
+      // The design on screen stays, and so do its example's name and the status (no "Opening…" left behind).
+      this.fields.example = this.design.target.example ?? '';
+      this.setStatus(this.target ? 'Ready' : '');
       if (interrupted) this.panels.remake(); // the design stays: so do its panels
     }
   }
