@@ -10,7 +10,8 @@ import { createHandlers } from '../../web/src/worker/handlers.js';
 import { ErrorCode, Op, SolverError } from '../../web/src/worker/protocol.js';
 import { better, looksToOptimize, suggestLayouts } from '../../web/src/app/suggest-run.js';
 import { inThreadClient, threadedClient } from './solver-clients.mjs';
-import { linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
+import { attachSeamEnds, closestSurfacePoint, linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
+import { reattachSeamEnds } from '../../web/src/app/commands.js';
 
 const api = await loadApi();
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
@@ -185,6 +186,54 @@ test('a mirror-symmetric layout\'s seams are linked as twins when used, each the
   }
   // The meridians in the mirror plane are their own image and stay unlinked.
   assert.ok(linked.seams.some((s) => s.mirror === undefined));
+});
+
+// A suggested layout's seams that end on other seams (a cut from a limb's loop to a meridian) still end on them once
+// twins are laid as each other's mirror image on a target that is not quite its own mirror image (Homer): each end is
+// attached to the seam it lies on, and a twin's ends to those seams' twins, then follow them as the app traces them.
+test('seam ends on other seams stay on them, and on their twins, when a layout\'s twins are laid as mirror images', async () => {
+  // The sphere example, its x > 0 half stretched 3 % along y: mirror images land beside the twin seams.
+  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
+  const positions = Float64Array.from(sphere.positions, (v, i) => (i % 3 === 1 && sphere.positions[i - 1] > 0 ? 1.03 * v : v));
+  const target = { positions, indices: sphere.indices };
+  const handlers = createHandlers(api);
+  for (const _ of handlers.setTarget({ positions, indices: target.indices }));
+  const R = bounds(target).diagonal / (2 * Math.sqrt(3));
+  const at = (x, y, z) => closestSurfacePoint(target, [x, y, z]);
+  const ring = (x, n, shift = 0) => {
+    const r = Math.sqrt(R * R - x * x);
+    return Array.from({ length: n }, (_, k) => {
+      const t = (2 * Math.PI * (k + shift)) / n;
+      return at(x, r * Math.cos(t), r * Math.sin(t));
+    });
+  };
+  const meridian = { name: 'meridian', closed: true, smooth: false, weight: 1, points: Array.from({ length: 48 }, (_, k) => at(0, R * Math.cos((2 * Math.PI * k) / 48), R * Math.sin((2 * Math.PI * k) / 48))) };
+  const right = { name: 'right', closed: true, smooth: false, weight: 1, points: ring(0.5 * R, 40) };
+  const left = { name: 'left', closed: true, smooth: false, weight: 1, points: ring(-0.5 * R, 36, 0.5) };
+  // Cuts from each loop's top point (a control point of it, so on its line) to the meridian's.
+  const cut = (loop, x) => ({ name: 'cut', closed: false, smooth: false, weight: 1, points: [loop.points[0], at(x / 2, R * 0.97, 0.1 * R), meridian.points[0]] });
+  let design = { seams: [meridian, right, left, cut(right, 0.5 * R), cut(left, -0.5 * R)], connections: [], symmetry: { axis: 'x' } };
+  design = attachSeamEnds(design, target);
+  assert.deepEqual(design.seams[3].points.map((p) => p.on), [1, undefined, 0], 'the cut is attached to the loop and the meridian');
+  assert.deepEqual(design.seams[4].points.map((p) => p.on), [2, undefined, 0]);
+  const linked = linkMirrorTwins(design, target, symmetryPlane(design, target));
+  assert.equal(linked.seams[1].mirror, 2);
+  assert.equal(linked.seams[3].mirror, 4);
+  // The second cut, laid again as the first's image, ends on the left loop (the right one's twin) and the meridian.
+  assert.deepEqual(linked.seams[4].points.map((p) => p.on), [2, undefined, 0]);
+  // As the app does: trace, attach the ends to the traced seams, segment. Four segments: each side of the meridian
+  // less its cap, and the two caps, every one a disk (the cuts open the rings between loop and meridian).
+  const segmentation = (d) => {
+    const traces = d.seams.map((seam) => drive(handlers[Op.traceSeam]({ points: seam.points, closed: seam.closed, smooth: false })));
+    const attached = reattachSeamEnds(d, traces, (p) => positionOf(target, p));
+    return drive(handlers[Op.checkSeams]({ seams: attached.seams, up: '+y' }));
+  };
+  const good = segmentation(linked);
+  assert.deepEqual(good.problems.map((p) => p.message), []);
+  assert.equal(good.segments.length, 4);
+  // Without the attachment the mirrored cut ends beside the left loop: a slit, and a ring left uncut.
+  const bare = linkMirrorTwins({ ...design, seams: design.seams.map((seam) => ({ ...seam, points: seam.points.map(({ on, ...p }) => p) })) }, target, symmetryPlane(design, target));
+  assert.ok(segmentation(bare).problems.length > 0, 'the unattached twin leaves a slit');
 });
 
 test('two workers side by side find the layouts one finds, each looking at its share, the closest optimized by whichever is free', async () => {

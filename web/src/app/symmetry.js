@@ -6,6 +6,9 @@
 
 export const SYMMETRY_AXES = ['x', 'y', 'z'];
 const SELF_SYMMETRIC_TOLERANCE = 0.01; // of the bounding-box diagonal
+// A seam's end lies on another seam's line within this share of the diagonal: the line is drawn through the host's
+// control points, and its traced path bows a little from it between them (a limb's loop of 12 points: 2 mm at 0.6 m).
+const ATTACH_TOLERANCE = 0.005;
 
 // The plane { axis: 0 | 1 | 2, offset } in target units, or null when the design has no symmetry.
 export function symmetryPlane(design, target) {
@@ -175,6 +178,50 @@ export function addMirroredTwin(design, target, plane, i) {
   return { ...design, seams: [...seams, twin] };
 }
 
+// The ends of the open seams from seam `from` on that lie on another seam's line (a cut ending on a limb's loop, a
+// meridian at the pole where the others meet: a suggested layout's junctions), marked as attached to it (`on`), so
+// that they follow it exactly once it is traced (commands.js reattachSeamEnds), and a mirrored twin's end follows the
+// host's twin (mirrorPoint) instead of lying beside it where the target is not quite its own mirror image.
+export function attachSeamEnds(design, target, from = 0) {
+  const tolerance = ATTACH_TOLERANCE * bounds(target).diagonal;
+  const lines = design.seams.map((seam) => seam.points.map((p) => positionOf(target, p)));
+  let changed = false;
+  const seams = design.seams.map((seam, i) => {
+    if (i < from || seam.closed || seam.points.length < 2) return seam;
+    const last = seam.points.length - 1;
+    const points = seam.points.map((p, k) => {
+      if ((k !== 0 && k !== last) || p.on !== undefined) return p;
+      let host = -1;
+      let nearest = tolerance;
+      lines.forEach((line, j) => {
+        if (j === i) return;
+        const d = distanceToLine(lines[i][k], line, design.seams[j].closed);
+        if (d < nearest) (nearest = d), (host = j);
+      });
+      if (host < 0) return p;
+      changed = true;
+      return { ...p, on: host };
+    });
+    return { ...seam, points };
+  });
+  return changed ? { ...design, seams } : design;
+}
+
+// The distance from p to the polyline through `line`'s points (closed: back to the first).
+function distanceToLine(p, line, closed) {
+  let best = Infinity;
+  const n = line.length;
+  for (let k = 0; k + 1 < n + (closed ? 1 : 0); k++) {
+    const a = line[k], b = line[(k + 1) % n];
+    const ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+    const length2 = ab[0] ** 2 + ab[1] ** 2 + ab[2] ** 2;
+    const t = length2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * ab[0] + (p[1] - a[1]) * ab[1] + (p[2] - a[2]) * ab[2]) / length2)) : 0;
+    best = Math.min(best, Math.hypot(a[0] + t * ab[0] - p[0], a[1] + t * ab[1] - p[1], a[2] + t * ab[2] - p[2]));
+  }
+  if (n === 1) best = Math.hypot(line[0][0] - p[0], line[0][1] - p[1], line[0][2] - p[2]);
+  return best;
+}
+
 // Seams laid together as their own mirror images (a suggested layout, suggest.js), linked as twins: from seam `from`
 // on, each seam that is not its own mirror image takes as twin the seam whose middle lies nearest its mirrored
 // middle (within 2 % of the diagonal), which becomes its exact mirror image point for point, so that editing one side
@@ -201,7 +248,14 @@ export function linkMirrorTwins(design, target, plane, from = 0) {
     }
     if (twin < 0) continue;
     seams[i] = { ...seams[i], mirror: twin };
-    seams[twin] = { ...seams[twin], points: seams[i].points.map((p) => mirrorPoint(design, target, plane, p)), mirror: i };
+    seams[twin] = { ...seams[twin], mirror: i, mirrored: true };
   }
-  return { ...design, seams };
+  // Then each twin laid again as the other's image, its ends attached to the twins of the seams the other's are on.
+  const linked = { ...design, seams };
+  return {
+    ...design,
+    seams: seams.map(({ mirrored, ...seam }) =>
+      mirrored ? { ...seam, points: seams[seam.mirror].points.map((p) => mirrorPoint(linked, target, plane, p)) } : seam,
+    ),
+  };
 }
