@@ -139,8 +139,14 @@ struct Band {
   double turn = 0, width = 0;
 };
 
+// What bevelBand marks as walked, cleared where it walked after each edge (every edge's walk is a few faces).
+struct BandScratch {
+  std::vector<char> seenFace, seenEdge;
+  std::vector<int> faces, edges;
+};
+
 Band bevelBand(const TriMesh& target, const MeshTopology& topo, const std::vector<double>& bend,
-               const std::vector<EdgeFrame>& frame, int e, double diagonal) {
+               const std::vector<EdgeFrame>& frame, int e, double diagonal, BandScratch& scratch) {
   const EdgeFrame& edge = frame[size_t(e)];
   const Eigen::Vector3d m = edge.middle, t = edge.along;
   if (!edge.convex) return {};
@@ -160,8 +166,10 @@ Band bevelBand(const TriMesh& target, const MeshTopology& topo, const std::vecto
   // The plane's crossings of edges along e, walked from e's faces across the edges it crosses: (offset, the turn of a
   // row, or minus the turn of another edge).
   std::vector<std::pair<double, double>> crossings;
-  std::vector<int> faces{topo.edgeFaces(e, 0), topo.edgeFaces(e, 1)};
-  std::vector<char> seenFace(size_t(target.F.rows()), 0), seenEdge(size_t(topo.numEdges()), 0);
+  std::vector<char>&seenFace = scratch.seenFace, &seenEdge = scratch.seenEdge;
+  std::vector<int>&faces = scratch.faces, &edges = scratch.edges;
+  seenFace.resize(size_t(target.F.rows()), 0), seenEdge.resize(size_t(topo.numEdges()), 0);
+  faces = {topo.edgeFaces(e, 0), topo.edgeFaces(e, 1)}, edges = {e};
   seenFace[size_t(faces[0])] = seenFace[size_t(faces[1])] = 1, seenEdge[size_t(e)] = 1;
   for (size_t i = 0; i < faces.size(); ++i)
     for (int k = 0; k < 3; ++k) {
@@ -176,10 +184,12 @@ Band bevelBand(const TriMesh& target, const MeshTopology& topo, const std::vecto
         const bool row = bend[size_t(g)] >= kLeastRowTurn && frame[size_t(g)].convex;
         crossings.push_back({offset, row ? bend[size_t(g)] : -bend[size_t(g)]});
       }
-      seenEdge[size_t(g)] = 1;
+      if (!seenEdge[size_t(g)]) seenEdge[size_t(g)] = 1, edges.push_back(g);
       for (int s = 0; s < 2; ++s)
         if (const int h = topo.edgeFaces(g, s); !seenFace[size_t(h)]) seenFace[size_t(h)] = 1, faces.push_back(h);
     }
+  for (int f : faces) seenFace[size_t(f)] = 0;
+  for (int g : edges) seenEdge[size_t(g)] = 0;
   std::sort(crossings.begin(), crossings.end());
   double turn = bend[size_t(e)], below = 0, lo = 0, hi = 0, beyond = 0;
   for (int dir = -1; dir <= 1; dir += 2) {
@@ -211,9 +221,8 @@ Band bevelBand(const TriMesh& target, const MeshTopology& topo, const std::vecto
 // to it is joined to the nearest vertex of another crease within the bevel's width and two edges (either crease's
 // bevel: a sharp crease meets only a bevel's so), by the shortest path along the edges.
 void bridgeLooseEnds(const TriMesh& target, const MeshTopology& topo, std::vector<char>& sharp,
-                     const std::vector<double>& bevelWidth) {
+                     const std::vector<double>& bevelWidth, double diagonal) {
   const int nv = int(target.V.rows());
-  const double diagonal = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
   std::vector<int> degree(size_t(nv), 0);
   for (int e = 0; e < topo.numEdges(); ++e)
     if (sharp[size_t(e)]) ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
@@ -307,6 +316,7 @@ std::vector<Creases> findCreases(const TriMesh& target, int axis, double mid) {
   // Sharp edges (1), and bevels' middle rows (2) with their bevels' widths.
   std::vector<char> sharp(size_t(ne), 0);
   std::vector<double> bevelWidth(size_t(ne), 0);
+  BandScratch scratch;
   for (int e = 0; e < ne; ++e) {
     if (!(bend[size_t(e)] >= kLeastRowTurn)) continue;
     bool smooth = bend[size_t(e)] >= kCreaseTurn;
@@ -315,7 +325,7 @@ std::vector<Creases> findCreases(const TriMesh& target, int axis, double mid) {
         const double t = bend[size_t(topo.faceEdges(topo.edgeFaces(e, side), k))];
         smooth = smooth && (t >= kCreaseTurn || t < kSmoothBeside * bend[size_t(e)]);
       }
-    const Band band = bevelBand(target, topo, bend, frame, e, diagonal);
+    const Band band = bevelBand(target, topo, bend, frame, e, diagonal, scratch);
     bevelWidth[size_t(e)] = band.width;  // 0 for a sharp edge alone
     sharp[size_t(e)] = smooth ? 1 : band.turn > 0 ? 2 : 0;
   }
@@ -331,7 +341,7 @@ std::vector<Creases> findCreases(const TriMesh& target, int axis, double mid) {
       bevelWidth[size_t(e)] = 0;
       if (sharp[size_t(e)] == 2) sharp[size_t(e)] = 0;
     }
-  bridgeLooseEnds(target, topo, sharp, bevelWidth);
+  bridgeLooseEnds(target, topo, sharp, bevelWidth, diagonal);
   // All of them, then fewer: the shortest left out, one at a time.
   for (Creases c = creasesAlong(target, topo, sharp); !c.creases.empty();) {
     if (out.empty() || c.panels < out.back().panels) out.push_back(c);

@@ -4,7 +4,7 @@
 // minus half the width of the signed surface distance to the outline, front and back. The design remembers a
 // band on its seams (seam.band, parseBand) so it can be laid again at another width.
 import { outlineLoop, sectionThrough, sectionSeamPoints, splitInTwo, zeroLoops, loopLength, distance } from './section.js';
-import { positionOf } from './symmetry.js';
+import { positionOf, segmentDistance } from './symmetry.js';
 
 export const BAND_PARTS = ['side 1', 'side 2', 'across'];
 const BAND_KINDS = ['section', 'outline'];
@@ -175,13 +175,6 @@ function unfolded(A, dA, B, dB, C) {
   const gy = Math.sqrt(1 - gx * gx);
   const foot = cx - (gx * cy) / gy; // where the line back from C along the gradient meets AB
   return foot >= 0 && foot <= L ? dA + gx * cx + gy * cy : Infinity;
-}
-
-function segmentDistance(q, a, b) {
-  const ab = b.map((x, k) => x - a[k]);
-  const length2 = ab[0] ** 2 + ab[1] ** 2 + ab[2] ** 2;
-  const s = length2 > 0 ? Math.min(1, Math.max(0, ab.reduce((sum, x, k) => sum + x * (q[k] - a[k]), 0) / length2)) : 0;
-  return distance(q, a.map((x, k) => x + s * ab[k]));
 }
 
 class MinHeap {

@@ -209,17 +209,19 @@ export function attachSeamEnds(design, target, from = 0) {
 
 // The distance from p to the polyline through `line`'s points (closed: back to the first).
 function distanceToLine(p, line, closed) {
-  let best = Infinity;
   const n = line.length;
-  for (let k = 0; k + 1 < n + (closed ? 1 : 0); k++) {
-    const a = line[k], b = line[(k + 1) % n];
-    const ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-    const length2 = ab[0] ** 2 + ab[1] ** 2 + ab[2] ** 2;
-    const t = length2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * ab[0] + (p[1] - a[1]) * ab[1] + (p[2] - a[2]) * ab[2]) / length2)) : 0;
-    best = Math.min(best, Math.hypot(a[0] + t * ab[0] - p[0], a[1] + t * ab[1] - p[1], a[2] + t * ab[2] - p[2]));
-  }
-  if (n === 1) best = Math.hypot(line[0][0] - p[0], line[0][1] - p[1], line[0][2] - p[2]);
+  if (n === 1) return segmentDistance(p, line[0], line[0]);
+  let best = Infinity;
+  for (let k = 0; k + 1 < n + (closed ? 1 : 0); k++) best = Math.min(best, segmentDistance(p, line[k], line[(k + 1) % n]));
   return best;
+}
+
+// The distance from q to the segment from a to b (3D points).
+export function segmentDistance(q, a, b) {
+  const ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+  const length2 = ab[0] ** 2 + ab[1] ** 2 + ab[2] ** 2;
+  const s = length2 > 0 ? Math.min(1, Math.max(0, (ab[0] * (q[0] - a[0]) + ab[1] * (q[1] - a[1]) + ab[2] * (q[2] - a[2])) / length2)) : 0;
+  return Math.hypot(a[0] + s * ab[0] - q[0], a[1] + s * ab[1] - q[1], a[2] + s * ab[2] - q[2]);
 }
 
 // Seams laid together as their own mirror images (a suggested layout, suggest.js), linked as twins: from seam `from`
