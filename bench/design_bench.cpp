@@ -149,8 +149,6 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.remeshing.coarseMinTriangles = int(v);
   else if (name == "tolerance")
     o.inflate.tolerance = v;
-  else if (name == "iterateTolerance")
-    o.search.iterateTolerance = v;
   else if (name == "projectEveryStep")
     o.search.projectEveryStep = v != 0;
   else if (name == "maxMoveEdges")

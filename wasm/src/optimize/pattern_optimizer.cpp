@@ -290,7 +290,6 @@ CutPanelsCheck PatternOptimizer::checkCutPanels(double h) const {
     OptimizeOptions settle = options_;
     settle.stopping.maxIterations = 0, settle.stopping.maxMillis = 0, settle.keepShapes = false;
     settle.remeshing.coarseFactor = 1, settle.remeshing.every = 0;
-    settle.search.iterateTolerance = 0;
     const std::unique_ptr<PatternOptimizer> cut(new PatternOptimizer(imls_, remeshed.built, seamWeights_, settle, {}));
     while (cut->step(1) == OptimizeState::Running) {
     }
@@ -348,8 +347,6 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (!rebuildRest(X, mesh)) return false;
   const double t0 = nowMs();
   InflateOptions io = options_.inflate;
-  if (!(asCut || limits.exact || finishing_) && options_.search.iterateTolerance > 0)
-    io.tolerance = std::max(io.tolerance, options_.search.iterateTolerance);
   io.seamRods = asCut ? nullptr : rodsAt(X);
   if (limits.maxNewton > 0) io.maxIterations = std::min(io.maxIterations, limits.maxNewton);
   if (asCut) {
@@ -372,8 +369,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   if (asCut)
     own = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
   else if (solver_)
-    solver_->setSeamRodCoefficient(io.seamRods->coefficient), solver_->setTolerance(io.tolerance),
-        solver_->restartWithRest(mesh.rest, from);
+    solver_->setSeamRodCoefficient(io.seamRods->coefficient), solver_->restartWithRest(mesh.rest, from);
   else
     solver_ = std::make_unique<InflationSolver>(std::move(mesh), pattern_.material, pattern_.pressure, io, from);
   InflationSolver& solver = own ? *own : *solver_;
@@ -482,9 +478,7 @@ void PatternOptimizer::followBoundary(Eigen::VectorXd& X) const {
 
 bool PatternOptimizer::evaluate(const Eigen::VectorXd& X, double* E, Eigen::VectorXd* grad, Vertices* x) {
   Vertices xs;
-  EquilibriumLimits exact;
-  exact.exact = true;
-  if (!solveEquilibrium(X, x_, xs, nullptr, false, exact)) return false;
+  if (!solveEquilibrium(X, x_, xs, nullptr)) return false;
   if (E) *E = energy(X, xs, nullptr);
   if (grad) reducedGradient(X, xs, *grad);
   if (x) *x = xs;
@@ -527,7 +521,6 @@ const Eigen::VectorXd* PatternOptimizer::targetDistances() const {
 
 void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   message_ = message;
-  finishing_ = true;  // what the designer gets settles to options.inflate's tolerance
   if (s != OptimizeState::Failed) {
     settleCutPanels();
     takeCutShape();

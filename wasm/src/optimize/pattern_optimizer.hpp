@@ -79,11 +79,6 @@ struct OptimizeSearch {
   // Each trial's equilibrium solve starts from the first-order prediction x + dx, dx = -K^-1 dg/dX dX, with the
   // adjoint's factorization of K (one more back-substitution), instead of from x.
   bool predictEquilibrium = true;
-  // The iterates' solves end at this relative force (InflateOptions::tolerance), what the designer gets (the cut
-  // panels, the last projection) at options.inflate's (<= 0: every solve there): below it Newton crawls where a
-  // slack sheet's vertices drift in the soft-max band, which moves E by less than the steps do (bench/README.md
-  // "The iterates' equilibria").
-  double iterateTolerance = 3e-2;
   // Before each solve, nonlinear Gauss-Seidel sweeps (gauss_seidel.hpp) down to a relative vertex force of
   // gaussSeidelThreshold: a step of the panels leaves parts of the sheet slack, which the pressure pushes out
   // vertex by vertex for less than Newton iterations cost (0 sweeps: off).
@@ -233,8 +228,7 @@ struct EquilibriumLimits {
   // > 0: a solve whose Newton iterate moves further than that from its start is abandoned (false, *snapped set,
   // x where it was)
   double snapLimit = 0;
-  int maxNewton = 0;   // > 0: fewer Newton iterations than options.inflate's
-  bool exact = false;  // to options.inflate's tolerance, not OptimizeSearch::iterateTolerance
+  int maxNewton = 0;  // > 0: fewer Newton iterations than options.inflate's
 };
 
 class PatternOptimizer {
@@ -433,7 +427,6 @@ class PatternOptimizer {
   double fineEdgeLength_ = 0;   // the design's edge length [m]
   int designTriangles_ = 0;     // and its triangle count (the flattened pattern's)
   bool coarsePhase_ = false;    // in the coarse first phase (OptimizeRemeshing::coarseFactor)
-  bool finishing_ = false;      // stopped: the last solves settle exactly (OptimizeSearch::iterateTolerance)
   BuiltPattern flattened_;      // the flattened panels at the design's edge length (and count), in the coarse phase
   bool projectTrials_ = false;  // options.search.projectEveryStep, unless projecting the flattened panels folds them
   double start_ = 0;            // steady-clock ms at construction

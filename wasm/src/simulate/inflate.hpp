@@ -123,8 +123,6 @@ class InflationSolver {
   // The same rods with another coefficient (the pattern optimizer's rods follow its panels: seamRodCoefficientAt),
   // for the next restart.
   void setSeamRodCoefficient(double coefficient);
-  // Where the next solves end (InflateOptions::tolerance).
-  void setTolerance(double tolerance) { options_.tolerance = tolerance; }
 
   InflateState state() const { return state_; }
   const std::string& message() const { return message_; }
