@@ -2,7 +2,7 @@
 // per design of bench/designs/manifest.json, through the worker's handlers (web/src/worker/handlers.js),
 // so every iterate's shape and its distance to the target are computed as the app streams them.
 //   node bench/design-bench-wasm.mjs [--json] [--designs sphere3,teddy] [--max-seconds S] [--triangles N] [--trace]
-//                                    [--json-out FILE]
+//                                    [--json-out FILE] [--perturb SEED]
 // --triangles overrides every design's element count (quick runs), as in the native bench; --json-out FILE writes the
 // rows --json prints besides the table (bench/table1.mjs reads them).
 // Needs build/wasm/billow_node.{cjs,wasm}; BILLOW_WASM_DIR overrides.
@@ -21,6 +21,9 @@ const trace = args.includes('--trace');  // each iterate's status on stderr
 const only = option('--designs', '').split(',').filter(Boolean);
 const maxSeconds = Number(option('--max-seconds', 600));
 const triangles = Number(option('--triangles', 0));
+// > 0: every seam control point inside its face moves by 1e-9 of its barycentric coordinates (a seeded draw), so the
+// run takes another path of the same design, as the native bench's --perturb does (one wasm run is one path).
+const perturb = Number(option('--perturb', 0));
 const manifestPath = resolve(option('--manifest', join(HERE, 'designs/manifest.json')));
 const manifest = JSON.parse(readFileSync(manifestPath, 'utf8'));
 
@@ -98,6 +101,24 @@ function fartherThan(a, { b, tb, tol, cell, cells }) {
 
 const api = await loadApi();
 
+// A seeded uniform draw in [-1, 1) (mulberry32).
+let seed = perturb >>> 0;
+function draw() {
+  seed = (seed + 0x6d2b79f5) >>> 0;
+  let t = seed;
+  t = Math.imul(t ^ (t >>> 15), t | 1);
+  t ^= t + Math.imul(t ^ (t >>> 7), t | 61);
+  return (((t ^ (t >>> 14)) >>> 0) / 4294967296) * 2 - 1;
+}
+
+// A seam point's barycentric coordinates nudged within its face (a point on an edge or a vertex stays there).
+function nudged(point) {
+  if (!point.bary || point.bary.some((b) => b < 1e-5)) return point;
+  const bary = point.bary.map((b) => b * (1 + 1e-9 * draw()));
+  const sum = bary[0] + bary[1] + bary[2];
+  return { ...point, bary: bary.map((b) => b / sum) };
+}
+
 function targetOf(design, designPath) {
   const t = design.target;
   const file = t.example ? join(HERE, '../web/public/examples', `${t.example}.obj`) : resolve(dirname(designPath), t.obj);
@@ -114,7 +135,7 @@ function run(entry) {
   const handlers = createHandlers(api);
   const t0 = performance.now();
   for (const _ of handlers.setTarget(target)); // eslint-disable-line no-unused-vars
-  const seams = design.seams.map(({ points, closed, weight, name }) => ({ points, closed, weight: weight ?? 1, name }));
+  const seams = design.seams.map(({ points, closed, weight, name }) => ({ points: perturb > 0 ? points.map(nudged) : points, closed, weight: weight ?? 1, name }));
   const job = handlers.optimizeDesign({
     seams, scale, triangles: triangles > 0 ? triangles : entry.triangles, maxIterations: 300, pressure: design.pressure, material: design.material,
     connections: design.connections ?? [],
