@@ -85,6 +85,29 @@ TEST(Creases, ABoxHasTwelveADrumItsTwoRimsAndRoundShapesNone) {
   EXPECT_TRUE(hand[0].creases[0].closed);
 }
 
+// A remeshed part's fold is not sharp all along: where a face beside it is skewed, an edge beside turns too (the wing
+// nut of odedstein/meshes had its sharp edges in 30 chains with loose ends, peeled away). A drum with faces so
+// disturbed at a few places along both rims still has its two rims, each closed, along the edges that turn.
+TEST(Creases, AFoldBrokenWhereAFaceBesideItIsSkewedIsOneCrease) {
+  TriMesh drum = test::drumShape(0.25, 0.3);
+  const auto faceRing = [](bool top, int ring, int i) { return (top ? 0 : 1 + 10 * 64) + 1 + (ring - 1) * 64 + i; };
+  // A face beside the rim tilted: the vertex a ring in from the rim lifted off the face.
+  drum.V(faceRing(true, 9, 5), 2) += 0.012;
+  drum.V(faceRing(false, 9, 40), 2) -= 0.012;
+  // A rim vertex moved 6 mm in across the corner: the rim edge beside it still turns 86 degrees, a face beside it too.
+  for (const auto& [top, i] : {std::pair{true, 30}, std::pair{false, 12}}) {
+    const int v = faceRing(top, 10, i);
+    drum.V.row(v).head<2>() *= (0.25 - 0.006) / 0.25, drum.V(v, 2) += top ? -0.006 : 0.006;
+  }
+  const std::vector<Creases> sets = findCreases(drum);
+  ASSERT_FALSE(sets.empty());
+  EXPECT_EQ(sets[0].creases.size(), 2u);
+  EXPECT_EQ(countClosed(sets[0]), 2u);
+  EXPECT_EQ(sets[0].panels, 3);
+  expectAlongSharpEdges(drum, sets[0]);
+  for (const Crease& c : sets[0].creases) EXPECT_NEAR(c.length, 2 * M_PI * 0.25, 0.03) << c.length;
+}
+
 // A modeller's bevel spreads a crease over a few rows of edges, each turning too little to be one: the crease runs
 // along the bevel's middle row, so a box whose rims are rounded (in 2 to 6 rows, as a bevel tool makes them) has the
 // same 12 creases as a sharp one, and a rounded drum its two rims. A chamfer (one row) stays a strip between two
