@@ -29,6 +29,8 @@ int checkMesh(const std::string& path, bool asJson) {
     const Eigen::Vector3d size = st.bboxMax - st.bboxMin;
     std::printf("\n  size %.4g x %.4g x %.4g (file units), area %.4g, volume %.4g\n", size.x(), size.y(), size.z(),
                 st.area, st.volume);
+    if (report.ok && st.standing.up.axis == 2)
+      std::printf("  it stands on its Z bottom and would tip over on its Y bottom: made Z up, as CAD files are\n");
     for (const auto& issue : report.issues)
       std::fprintf(issue.severity == "error" ? stderr : stdout, "  %s: %s\n", issue.severity.c_str(),
                    issue.message.c_str());

@@ -1,4 +1,4 @@
-// billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--height M]
+// billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--height M] [--up AXIS]
 //                [--resolution TRIANGLES] [--max-iterations N] [--optimize K] [--quiet]: seam layouts for a target
 // nobody has patterned yet (suggest/seam_layouts.hpp), each given a first look (its flattened panels inflated), the
 // K most promising (lookPromise) optimized at a coarse resolution and ranked by how close their optimized panels
@@ -13,6 +13,7 @@
 #include "cli/commands.hpp"
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
+#include "mesh/validate.hpp"
 #include "suggest/seam_layouts.hpp"
 #include "util/error.hpp"
 
@@ -32,10 +33,12 @@ std::string percent(double share) {
 int usage(bool help) {
   std::fprintf(help ? stdout : stderr,
                "usage: billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams]\n"
-               "                      [--height METERS] [--resolution TRIANGLES] [--max-iterations N] [--optimize K]\n"
-               "                      [--quiet]\n\n"
+               "                      [--height METERS] [--up AXIS] [--resolution TRIANGLES] [--max-iterations N]\n"
+               "                      [--optimize K] [--quiet]\n\n"
                "Suggests seam layouts for a target shape (a design file, or a mesh file made into a design of\n"
-               "--height meters, default 0.6): layouts of plane sections, outlines, seams around limbs and along\n"
+               "--height meters, default 0.6, along --up: +y, +z, ...; a mesh that stands only on its Z bottom, as\n"
+               "CAD and 3D-printing files are made, is taken Z up, as the app does): layouts of plane sections, "
+               "outlines, seams around limbs and along\n"
                "creases with at most N panels (2 to 40), seams added where a section leaves a part that is not a\n"
                "panel (a tube around a limb). Each is first\n"
                "inflated flat; the K that leave least of the target's surface away from the balloon (default 8)\n"
@@ -72,6 +75,18 @@ Design readInput(const std::string& path, const Args& args, std::string& designP
   design.target.name = fs::absolute(path).lexically_normal().string();
   design.height = numberOption(args, "--height", 0.6, "a height in meters");
   if (!(design.height > 0)) throw Error("cli.usage", "the option --height needs a positive height in meters");
+  if (args.has("--up")) {
+    if (!parseUpAxis(args.get("--up"), design.target.up))
+      throw Error("cli.usage", "the option --up needs +y, -y, +z, -z, +x or -x, not '" + args.get("--up") + "'");
+  } else {
+    TriMesh mesh = readMeshBytes(readFileBytes(path), path);
+    design.target.up = validateTarget(mesh).stats.standing.up;
+    if (design.target.up.axis == 2 && !args.has("--quiet"))
+      std::fprintf(stderr,
+                   "%s looks made Z up, as files from CAD and 3D printing often are: it stands on its Z bottom and "
+                   "would tip over on its Y bottom, so its height is measured along Z (--up +y keeps Y up)\n",
+                   path.c_str());
+  }
   designPath = (fs::current_path() / "design.billow.json").string();
   return design;
 }
@@ -90,7 +105,7 @@ Design forOutDir(Design design, const std::string& designPath, const std::string
 
 int suggestCommand(const std::vector<std::string>& argv) {
   const Args args =
-      parseArgs(argv, {"--panels", "--out-dir", "--height", "--resolution", "--max-iterations", "--optimize"});
+      parseArgs(argv, {"--panels", "--out-dir", "--height", "--up", "--resolution", "--max-iterations", "--optimize"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir") || !args.has("--panels"))
     return usage(args.has("--help"));
   const bool quiet = args.has("--quiet");

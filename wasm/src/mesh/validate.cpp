@@ -99,6 +99,7 @@ class Validator {
       return std::find(order.begin(), order.end(), a.severity) < std::find(order.begin(), order.end(), b.severity);
     });
     r_.ok = std::none_of(r_.issues.begin(), r_.issues.end(), [](const MeshIssue& i) { return i.severity == "error"; });
+    if (r_.ok) r_.stats.standing = guessUp(m_);
     return r_;
   }
 
@@ -450,7 +451,10 @@ std::string toJson(const ValidationReport& report) {
               {"bbox_min", vec(st.bboxMin)},
               {"bbox_max", vec(st.bboxMax)},
               {"area", st.area},
-              {"volume", st.volume}}},
+              {"volume", st.volume},
+              {"up", toString(st.standing.up)},
+              {"stands_y", st.standing.standsY},
+              {"stands_z", st.standing.standsZ}}},
             {"issues", issues}};
   return j.dump();
 }

@@ -6,13 +6,14 @@
 #include <vector>
 
 #include "mesh/tri_mesh.hpp"
+#include "mesh/up_axis.hpp"
 
 namespace billow {
 
 struct ValidationOptions {
-  int maxTriangles = 500000;          // beyond the interactive budget of the solver: refused with a message
+  int maxTriangles = 500000;           // beyond the interactive budget of the solver: refused with a message
   double degenerateAreaRatio = 1e-14;  // a triangle is degenerate when its area < ratio * (bbox diagonal)^2
-  bool fixOrientation = true;         // flip inside-out meshes and reorient stray triangles (with a notice)
+  bool fixOrientation = true;          // flip inside-out meshes and reorient stray triangles (with a notice)
 };
 
 struct MeshIssue {
@@ -25,21 +26,22 @@ struct MeshIssue {
 };
 
 struct MeshStats {
-  int vertices = 0;        // referenced vertices
+  int vertices = 0;  // referenced vertices
   int triangles = 0;
   int edges = 0;
   int components = 0;
   int boundaryEdges = 0;
-  int holes = 0;           // boundary loops
-  int genus = -1;          // -1 when undefined (open, non-manifold or several components)
+  int holes = 0;   // boundary loops
+  int genus = -1;  // -1 when undefined (open, non-manifold or several components)
   Eigen::Vector3d bboxMin = Eigen::Vector3d::Zero(), bboxMax = Eigen::Vector3d::Zero();
-  double area = 0;         // in the mesh's own units squared
-  double volume = 0;       // signed, after any orientation fix; > 0 for outward normals
+  double area = 0;    // in the mesh's own units squared
+  double volume = 0;  // signed, after any orientation fix; > 0 for outward normals
+  UpGuess standing;   // the axis it stands on, guessed for a usable mesh (mesh/up_axis.hpp)
 };
 
 struct ValidationReport {
-  bool ok = false;                // no issue of severity "error"
-  bool modified = false;          // the mesh's triangles were reoriented (mesh.F changed)
+  bool ok = false;        // no issue of severity "error"
+  bool modified = false;  // the mesh's triangles were reoriented (mesh.F changed)
   MeshStats stats;
   std::vector<MeshIssue> issues;  // errors first
 };

@@ -224,7 +224,7 @@ export class App {
       const opened = design;
       if (this.awaited) design = this.awaited.attach(fileName, result, design); // the linked design, if this file is its mesh
       // A designer's own file may be Z up (CAD, 3D printing): the guess goes into its new design (up-axis.js).
-      const guess = !quiet && design === opened ? withGuessedUp(design, result, fileName) : { design, notice: null };
+      const guess = !quiet && design === opened ? withGuessedUp(design, result.report, fileName) : { design, notice: null };
       design = guess.design;
       this.installTarget(fileName, result, design, stored);
       if (!stored) this.setStatus('Ready');
