@@ -216,6 +216,54 @@ Band bevelBand(const TriMesh& target, const MeshTopology& topo, const std::vecto
   return {turn, hi - lo};
 }
 
+// The loose ends of the `sharp` edges' chains, for joining them on (bridgeLooseEnds, closeGaps): each vertex's count of
+// sharp edges, and its own chain near an end, not to be joined to.
+struct LooseEnds {
+  const TriMesh& target;
+  const MeshTopology& topo;
+  const std::vector<char>& sharp;
+  std::vector<int> degree;
+  std::vector<double> own;  // along the sharp edges from the end being joined, within ownChain's reach (else infinite)
+  std::vector<int> touched;
+
+  LooseEnds(const TriMesh& t, const MeshTopology& g, const std::vector<char>& s)
+      : target(t), topo(g), sharp(s), degree(size_t(t.V.rows()), 0), own(size_t(t.V.rows()), INFINITY) {
+    for (int e = 0; e < topo.numEdges(); ++e)
+      if (sharp[size_t(e)]) ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
+  }
+  double length(int e) const { return (target.V.row(topo.E(e, 0)) - target.V.row(topo.E(e, 1))).norm(); }
+  void add(int e) { ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))]; }
+  // Whether the chain runs `least` (a length) up to its loose end `end`.
+  bool chainRuns(int end, double least) const {
+    double chain = 0;
+    for (int v = end, from = -1, next = -1; chain < least; from = v, v = next) {
+      next = -1;
+      for (const auto& [u, e] : topo.neighbors[size_t(v)])
+        if (sharp[size_t(e)] && u != from) next = u, chain += length(e);
+      if (next < 0 || degree[size_t(next)] != 2) break;
+    }
+    return chain >= least;
+  }
+  // `own` set along the sharp edges from `end` within `reach`; forgetOwn() clears it.
+  void ownChain(int end, double reach) {
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+    own[size_t(end)] = 0, touched.push_back(end), queue.push({0, end});
+    while (!queue.empty()) {
+      const auto [dv, v] = queue.top();
+      queue.pop();
+      if (dv > own[size_t(v)]) continue;
+      for (const auto& [u, e] : topo.neighbors[size_t(v)])
+        if (sharp[size_t(e)] && dv + length(e) < own[size_t(u)] && dv + length(e) <= reach)
+          own[size_t(u)] = dv + length(e), touched.push_back(u), queue.push({own[size_t(u)], u});
+    }
+  }
+  void forgetOwn() {
+    for (int v : touched) own[size_t(v)] = INFINITY;
+    touched.clear();
+  }
+};
+
 // Where a bevel's crease reaches a corner, its middle row ends short of the other creases there (a rounded corner is a
 // patch of its own, a mitred one has its own edges). Each loose end of a crease that runs kLongChain of the diagonal up
 // to it is joined to the nearest vertex of another crease within the bevel's width and two edges (either crease's
@@ -223,66 +271,48 @@ Band bevelBand(const TriMesh& target, const MeshTopology& topo, const std::vecto
 void bridgeLooseEnds(const TriMesh& target, const MeshTopology& topo, std::vector<char>& sharp,
                      const std::vector<double>& bevelWidth, double diagonal) {
   const int nv = int(target.V.rows());
-  std::vector<int> degree(size_t(nv), 0);
-  for (int e = 0; e < topo.numEdges(); ++e)
-    if (sharp[size_t(e)]) ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
-  const auto length = [&](int e) { return (target.V.row(topo.E(e, 0)) - target.V.row(topo.E(e, 1))).norm(); };
+  LooseEnds ends(target, topo, sharp);
   const auto bevelAt = [&](int v) {
     double w = 0;
     for (const auto& [u, e] : topo.neighbors[size_t(v)])
       if (sharp[size_t(e)]) w = std::max(w, bevelWidth[size_t(e)]);
     return w;
   };
-  std::vector<double> d(size_t(nv), INFINITY), own(size_t(nv), INFINITY);
-  std::vector<int> via(size_t(nv), -1), touched;
+  std::vector<double> d(size_t(nv), INFINITY);
+  std::vector<int> via(size_t(nv), -1), reached;
   using Item = std::pair<double, int>;
   std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
   for (int end = 0; end < nv; ++end) {
-    if (degree[size_t(end)] != 1) continue;
-    double chain = 0;
-    for (int v = end, from = -1, next = -1; chain < kLongChain * diagonal; from = v, v = next) {
-      next = -1;
-      for (const auto& [u, e] : topo.neighbors[size_t(v)])
-        if (sharp[size_t(e)] && u != from) next = u, chain += length(e);
-      if (next < 0 || degree[size_t(next)] != 2) break;
-    }
-    if (chain < kLongChain * diagonal) continue;
+    if (ends.degree[size_t(end)] != 1 || !ends.chainRuns(end, kLongChain * diagonal)) continue;
     double spacing = 0;
-    for (const auto& [u, e] : topo.neighbors[size_t(end)]) spacing = std::max(spacing, 2 * length(e));
+    for (const auto& [u, e] : topo.neighbors[size_t(end)]) spacing = std::max(spacing, 2 * ends.length(e));
     const double ownWidth = bevelAt(end), reach = kWidestBevel * diagonal + spacing;
-    // Its own crease near it, not to be joined to.
-    own[size_t(end)] = 0, touched.push_back(end), queue.push({0, end});
-    while (!queue.empty()) {
-      const auto [dv, v] = queue.top();
-      queue.pop();
-      if (dv > own[size_t(v)]) continue;
-      for (const auto& [u, e] : topo.neighbors[size_t(v)])
-        if (sharp[size_t(e)] && dv + length(e) < own[size_t(u)] && dv + length(e) <= 2 * reach)
-          own[size_t(u)] = dv + length(e), touched.push_back(u), queue.push({own[size_t(u)], u});
-    }
+    ends.ownChain(end, 2 * reach);
     int found = -1;
-    d[size_t(end)] = 0, queue.push({0, end});
+    d[size_t(end)] = 0, reached.push_back(end), queue.push({0, end});
     while (!queue.empty()) {
       const auto [dv, v] = queue.top();
       queue.pop();
       if (dv > d[size_t(v)]) continue;
       const double width = std::max(ownWidth, bevelAt(v));
-      if (v != end && degree[size_t(v)] > 0 && !std::isfinite(own[size_t(v)]) && width > 0 && dv <= width + spacing) {
+      if (v != end && ends.degree[size_t(v)] > 0 && !std::isfinite(ends.own[size_t(v)]) && width > 0 &&
+          dv <= width + spacing) {
         found = v;
         break;
       }
       for (const auto& [u, e] : topo.neighbors[size_t(v)])
-        if (dv + length(e) < d[size_t(u)] && dv + length(e) <= reach)
-          d[size_t(u)] = dv + length(e), via[size_t(u)] = e, touched.push_back(u), queue.push({d[size_t(u)], u});
+        if (dv + ends.length(e) < d[size_t(u)] && dv + ends.length(e) <= reach)
+          d[size_t(u)] = dv + ends.length(e), via[size_t(u)] = e, reached.push_back(u), queue.push({d[size_t(u)], u});
     }
     queue = {};
     for (int v = found; v >= 0 && v != end;) {
       const int e = via[size_t(v)];
-      if (!sharp[size_t(e)]) sharp[size_t(e)] = 1, ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
+      if (!sharp[size_t(e)]) sharp[size_t(e)] = 1, ends.add(e);
       v = topo.E(e, 0) == v ? topo.E(e, 1) : topo.E(e, 0);
     }
-    for (int v : touched) d[size_t(v)] = own[size_t(v)] = INFINITY, via[size_t(v)] = -1;
-    touched.clear();
+    for (int v : reached) d[size_t(v)] = INFINITY, via[size_t(v)] = -1;
+    reached.clear();
+    ends.forgetOwn();
   }
 }
 
@@ -297,40 +327,13 @@ constexpr int kGapEdges = 2;
 
 void closeGaps(const TriMesh& target, const MeshTopology& topo, const std::vector<double>& bend,
                const std::vector<EdgeFrame>& frame, std::vector<char>& sharp, double diagonal) {
-  const int nv = int(target.V.rows());
-  std::vector<int> degree(size_t(nv), 0);
-  for (int e = 0; e < topo.numEdges(); ++e)
-    if (sharp[size_t(e)]) ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
-  const auto length = [&](int e) { return (target.V.row(topo.E(e, 0)) - target.V.row(topo.E(e, 1))).norm(); };
-  std::vector<double> own(size_t(nv), INFINITY);
-  std::vector<int> touched;
-  using Item = std::pair<double, int>;
-  const auto longChain = [&](int end) {
-    double chain = 0;
-    for (int v = end, from = -1, next = -1; chain < kLongChain * diagonal; from = v, v = next) {
-      next = -1;
-      for (const auto& [u, e] : topo.neighbors[size_t(v)])
-        if (sharp[size_t(e)] && u != from) next = u, chain += length(e);
-      if (next < 0 || degree[size_t(next)] != 2) break;
-    }
-    return chain >= kLongChain * diagonal;
-  };
-  for (int end = 0; end < nv; ++end) {
-    if (degree[size_t(end)] != 1 || !longChain(end)) continue;
+  LooseEnds ends(target, topo, sharp);
+  for (int end = 0; end < int(target.V.rows()); ++end) {
+    if (ends.degree[size_t(end)] != 1 || !ends.chainRuns(end, kLongChain * diagonal)) continue;
     // Its own chain within a short crease's length and a few edges: no gap to close there (a detour round a face).
     double spacing = 0;
-    for (const auto& [u, e] : topo.neighbors[size_t(end)]) spacing = std::max(spacing, length(e));
-    const double ownReach = kShortestCrease * diagonal + (kGapEdges + 2) * spacing;
-    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
-    own[size_t(end)] = 0, touched.push_back(end), queue.push({0, end});
-    while (!queue.empty()) {
-      const auto [dv, v] = queue.top();
-      queue.pop();
-      if (dv > own[size_t(v)]) continue;
-      for (const auto& [u, e] : topo.neighbors[size_t(v)])
-        if (sharp[size_t(e)] && dv + length(e) < own[size_t(u)] && dv + length(e) <= ownReach)
-          own[size_t(u)] = dv + length(e), touched.push_back(u), queue.push({own[size_t(u)], u});
-    }
+    for (const auto& [u, e] : topo.neighbors[size_t(end)]) spacing = std::max(spacing, ends.length(e));
+    ends.ownChain(end, kShortestCrease * diagonal + (kGapEdges + 2) * spacing);
     // Breadth first along the edges that turn as much, kGapEdges deep.
     std::vector<int> layer = {end}, next;
     std::vector<std::vector<int>> paths = {{}};  // the edges to each vertex of the layer
@@ -343,18 +346,17 @@ void closeGaps(const TriMesh& target, const MeshTopology& topo, const std::vecto
           if (sharp[size_t(e)] || !(bend[size_t(e)] >= kCreaseTurn) || !frame[size_t(e)].convex || u == end) continue;
           std::vector<int> path = paths[i];
           path.push_back(e);
-          if (degree[size_t(u)] > 0 && !std::isfinite(own[size_t(u)])) {
+          if (ends.degree[size_t(u)] > 0 && !std::isfinite(ends.own[size_t(u)])) {
             found = std::move(path);
             break;
           }
-          if (degree[size_t(u)] == 0) next.push_back(u), longer.push_back(std::move(path));
+          if (ends.degree[size_t(u)] == 0) next.push_back(u), longer.push_back(std::move(path));
         }
       }
       layer.swap(next), paths.swap(longer);
     }
-    for (int e : found) sharp[size_t(e)] = 1, ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
-    for (int v : touched) own[size_t(v)] = INFINITY;
-    touched.clear();
+    for (int e : found) sharp[size_t(e)] = 1, ends.add(e);
+    ends.forgetOwn();
   }
 }
 
