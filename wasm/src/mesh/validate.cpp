@@ -99,7 +99,7 @@ class Validator {
       return std::find(order.begin(), order.end(), a.severity) < std::find(order.begin(), order.end(), b.severity);
     });
     r_.ok = std::none_of(r_.issues.begin(), r_.issues.end(), [](const MeshIssue& i) { return i.severity == "error"; });
-    if (r_.ok) r_.stats.standing = guessUp(m_);
+    if (r_.ok && opt_.guessUp) r_.stats.standing = guessUp(m_);
     return r_;
   }
 

@@ -14,6 +14,7 @@ struct ValidationOptions {
   int maxTriangles = 500000;           // beyond the interactive budget of the solver: refused with a message
   double degenerateAreaRatio = 1e-14;  // a triangle is degenerate when its area < ratio * (bbox diagonal)^2
   bool fixOrientation = true;          // flip inside-out meshes and reorient stray triangles (with a notice)
+  bool guessUp = true;                 // fill MeshStats::standing (a mesh opened anew, not a design's target)
 };
 
 struct MeshIssue {
@@ -36,7 +37,7 @@ struct MeshStats {
   Eigen::Vector3d bboxMin = Eigen::Vector3d::Zero(), bboxMax = Eigen::Vector3d::Zero();
   double area = 0;    // in the mesh's own units squared
   double volume = 0;  // signed, after any orientation fix; > 0 for outward normals
-  UpGuess standing;   // the axis it stands on, guessed for a usable mesh (mesh/up_axis.hpp)
+  UpGuess standing;   // the axis it stands on (mesh/up_axis.hpp), with ValidationOptions::guessUp
 };
 
 struct ValidationReport {

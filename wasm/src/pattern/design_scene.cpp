@@ -30,6 +30,7 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
   // Seam points name the target's triangles and corners: the mesh is used as it is (no reorientation).
   ValidationOptions vo;
   vo.fixOrientation = false;
+  vo.guessUp = false;  // its design names its up axis
   const ValidationReport report = validateTarget(own, vo);
   if (!report.ok) {
     std::string why;
