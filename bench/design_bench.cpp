@@ -348,7 +348,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
                 {"equilibrium", opt.timings().equilibriumMs},
                 {"adjoint", opt.timings().adjointMs},
                 {"align", opt.timings().alignMs},
-                {"objective", opt.timings().objectiveMs},
+                {"direction", opt.timings().directionMs},
                 {"remesh", opt.timings().remeshMs},
                 {"total", opt.timings().totalMs}}},
               {"objectives",

@@ -732,6 +732,7 @@ bool PatternOptimizer::iterate() {
   double modelDecrease = 0;
   // After a Gauss-Newton step that barely lowered E, an L-BFGS step: where the Gauss-Newton model (positive
   // semi-definite, without the equilibrium's second derivatives) sees nothing left to gain, L-BFGS's pairs may.
+  const double t0 = nowMs();
   Eigen::VectorXd gn =
       options_.search.gaussNewton && !gaussNewtonStalled_ ? gaussNewtonDirection(&modelDecrease) : Eigen::VectorXd();
   const bool gnStep = gn.size() == X_.size();
@@ -759,6 +760,7 @@ bool PatternOptimizer::iterate() {
   if (!(slope < 0)) d = -tangential(X_, precondition(gt)), slope = slopeAlong(d), S_.clear(), Y_.clear();
   // Steepest descent within the set: its slope -(T g)^T M^-1 (T g) is negative unless T g = 0.
   if (!(slope < 0) && projectTrials_) d = -T(precondition(T(g_))), slope = g_.dot(d);
+  timings_.directionMs += nowMs() - t0;
   if (!(slope < 0)) return false;
   // Cap the largest vertex move (a step without curvature information has no scale of its own).
   double maxMove = 0;

@@ -213,7 +213,8 @@ struct OptimizeRecord {
 };
 
 struct OptimizeTimings {
-  double setupMs = 0, equilibriumMs = 0, alignMs = 0, adjointMs = 0, objectiveMs = 0, totalMs = 0;
+  double setupMs = 0, equilibriumMs = 0, alignMs = 0, adjointMs = 0, totalMs = 0;
+  double directionMs = 0;  // the search directions: L-BFGS's two loops, or Gauss-Newton's CG with its solves
   int equilibriumSolves = 0, rejectedTrials = 0;
   int snappedTrials = 0;  // line-search trials abandoned on their way into another equilibrium
   int resettlings = 0;    // see OptimizeRecord::resettled
