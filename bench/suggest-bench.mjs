@@ -2,15 +2,15 @@
 // panel count, `billow suggest` (native, mirror-symmetric where the mesh has a mirror plane) and the best layout's
 // panels, distance to the target (the worse way's RMS, % of the diagonal, optimized at 1,000 triangles), seam length
 // and the command's wall time; with how many layouts were tried and kept. With --optimize K (more than the eight the
-// command optimizes), also which of those the app's rule would have chosen from their first looks (looksToOptimize)
-// and the best of those: how much closer a layout was to be had than the rule finds.
+// command optimizes), also which of those the app's rule would have chosen from their first looks (chooseLooks, through
+// the wasm module: build/wasm) and the best of those: how much closer a layout was to be had than the rule finds.
 //   node bench/suggest-bench.mjs [--panels 2,6,12,24] [--meshes bunny,spot] [--optimize K] [--json-out FILE]
 import { execFileSync } from 'node:child_process';
 import { mkdtempSync, readdirSync, readFileSync, writeFileSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join } from 'node:path';
 import { fileURLToPath } from 'node:url';
-import { looksToOptimize } from '../web/src/app/suggest-run.js';
+import { loadApi } from '../tests/node/load-module.mjs';
 
 const ROOT = fileURLToPath(new URL('..', import.meta.url));
 const MESHES = join(ROOT, '../shared/meshes');
@@ -23,6 +23,7 @@ const panelCounts = arg('--panels', '2,6,12,24').split(',').map(Number);
 const optimize = arg('--optimize', null);
 const meshes = arg('--meshes', readdirSync(MESHES).filter((f) => f.endsWith('.obj')).map((f) => f.slice(0, -4)).join(',')).split(',');
 
+const api = optimize ? await loadApi() : null; // the module's chooseLooks, the rule the app asks its worker for
 const rows = [];
 console.log(`| mesh | panels asked | best layout | panels | distance % | seams m | s | layouts kept / tried |${optimize ? ' the rule\'s pick % |' : ''}`);
 console.log(`|---|---|---|---|---|---|---|---|${optimize ? '---|' : ''}`);
@@ -55,9 +56,9 @@ for (const mesh of meshes) {
     const row = { mesh, asked: panels, symmetric, best: best?.name ?? null, panels: best?.panels ?? null, distance: best ? 100 * best.distance.worse_way_rms : null, seamLength: best?.seam_length_m ?? null, seconds, kept: summary.layouts.length, tried };
     if (optimize && best) {
       // The rule's choice among the layouts optimized here (best first, so the first chosen is the closest).
-      const looks = summary.layouts.map((l) => ({ ...l.first_look, seamLength: l.seam_length_m, index: l.rank, distance: l.distance.worse_way_rms }));
+      const looks = summary.layouts.map((l) => ({ lookRank: l.first_look.rank, family: l.first_look.family, distance: l.distance.worse_way_rms }));
       const rule = summary.optimized;
-      row.rulePick = 100 * Math.min(...looksToOptimize(looks, rule.by_default, rule.of_one_family).map((l) => l.distance));
+      row.rulePick = 100 * Math.min(...api.chooseLooks(looks.map(({ lookRank, family }) => ({ lookRank, family })), rule.by_default, rule.of_one_family).map((i) => looks[i].distance));
       missed += row.rulePick - row.distance;
     }
     rows.push(row);

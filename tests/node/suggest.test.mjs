@@ -8,12 +8,14 @@ import { loadApi } from './load-module.mjs';
 import { readObjText, loadSharedMesh } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
 import { ErrorCode, Op, SolverError } from '../../web/src/worker/protocol.js';
-import { better, looksToOptimize, suggestLayouts } from '../../web/src/app/suggest-run.js';
+import { better, suggestLayouts } from '../../web/src/app/suggest-run.js';
 import { inThreadClient, threadedClient } from './solver-clients.mjs';
 import { attachSeamEnds, closestSurfacePoint, linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
 import { reattachSeamEnds } from '../../web/src/app/commands.js';
 
 const api = await loadApi();
+// Which looks the app optimizes (Op.chooseLooks): the module's rule, as the worker asks it.
+const chooseLooks = (looks, optimize, ofOneFamily) => api.chooseLooks(looks.map(({ lookRank, family }) => ({ lookRank, family })), optimize, ofOneFamily);
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
 const session = (mesh) => {
   const handlers = createHandlers(api);
@@ -117,8 +119,10 @@ test('layouts for four panels of the sphere come best first, each as seams of su
   assert.ok(progress.indexOf(looked[0]) < progress.findIndex((p) => p.layout), 'looked at before any is optimized');
   // The looks optimized are those that promised most: the least of the target left away from the balloon (the
   // target's side), which the optimizer cannot pull in as it does the balloon's own bulges.
-  for (const { look } of looked) assert.equal(look.promise, look.targetToInflated, look.name);
-  const chosen = new Set(looksToOptimize(looked.map((p) => p.look), 3, 3).map((l) => l.name));
+  for (const { look } of looked) assert.deepEqual(look.lookRank, [look.targetToInflated, look.seamLength, 0], look.name);
+  const choice = chooseLooks(looked.map((p) => p.look), 3, 3);
+  const chosen = new Set(choice.map((i) => looked[i].look.name));
+  assert.equal(chosen.size, 3);
   assert.ok(result.layouts.every((l) => chosen.has(l.name)), 'the optimized are the chosen');
   assert.equal(progress.findLast((p) => p.stage === 'optimizing the most promising layouts').total, chosen.size);
 });
@@ -128,8 +132,8 @@ test('the looks optimized are the most promising, at most three of a family, as 
   // last; the one not ok never reaches the choice (suggest-run.js keeps only the looks that made panels).
   const promise = [0.011, 0.012, 0.013, 0.014, 0.015, 0.016, 0.017, 0.018, 0.019, 0.02, 0.021, 0.022];
   const family = ['g', 'g', 'g', 'g', 'b', 'g', 'o', 'b', 'x', 'b', 'b', 'y'];
-  const looks = promise.map((p, i) => ({ index: 11 - i, promise: p, family: family[i], seamLength: 1 })).filter((l) => l.index !== 8);
-  const chosen = (count, ofOneFamily) => looksToOptimize(looks, count, ofOneFamily).map((l) => l.index);
+  const looks = promise.map((p, i) => ({ index: 11 - i, lookRank: [p, 1, 0], family: family[i] })).filter((l) => l.index !== 8);
+  const chosen = (count, ofOneFamily) => chooseLooks(looks, count, ofOneFamily).map((i) => looks[i].index);
   assert.deepEqual(chosen(8, 3), [11, 10, 9, 7, 5, 4, 3, 2]);
   assert.deepEqual(chosen(3, 3), [11, 10, 9]);
   assert.deepEqual(chosen(20, 1), [11, 7, 5, 3, 0]);
@@ -335,11 +339,12 @@ test('a flat shape\'s outline layouts are also offered held together inside, the
 });
 
 test('layouts whose pieces fit the design\'s sheet come before closer ones that need a wider roll', async () => {
-  // Fit first, then the closest, then the shorter seams.
-  const a = { distance: 0.01, seamLength: 1, index: 0, sheetNeeded: 1800 };
-  const b = { distance: 0.02, seamLength: 1, index: 1, sheetNeeded: 0 };
+  // By the worker's rank (layoutRank: fit first, then the closest, then the shorter seams), entry by entry, then in
+  // the order proposed.
+  const a = { rank: [1, 0.01, 1], index: 0 };
+  const b = { rank: [0, 0.02, 1], index: 1 };
   assert.deepEqual([a, b].sort(better), [b, a]);
-  assert.deepEqual([b, { ...a, sheetNeeded: 0 }].sort(better).map((l) => l.index), [0, 1]);
+  assert.deepEqual([b, { ...a, rank: [0, 0.02, 1] }].sort(better).map((l) => l.index), [0, 1]);
   // A sphere 3 m across at six panels: on a narrow roll no layout fits, each needing its own width.
   const [client] = await clientsFor('../../web/public/examples/sphere.obj');
   const args = { panels: 6, scale: 1.5, triangles: 400, maxIterations: 4, optimize: 8 };

@@ -13,6 +13,7 @@
 #include "guarded.hpp"
 #include "mesh/validate.hpp"
 #include "simulate/materials.hpp"
+#include "suggest/seam_layouts.hpp"
 
 namespace {
 
@@ -51,6 +52,22 @@ std::string materialPresets() {
   });
 }
 
+// { looks: [{ lookRank, family }], optimize, ofOneFamily } -> [index into looks, ...]: the looks to optimize, as the
+// command line chooses them (chooseLooks), for the app's workers, each of which has looked at a share of them.
+std::string chooseLooks(const std::string& requestJson) {
+  return guarded([&] {
+    const nlohmann::json r = nlohmann::json::parse(requestJson, nullptr, false);
+    if (r.is_discarded() || !r.contains("looks") || !r["looks"].is_array())
+      throw billow::Error("suggest.bad-looks", "The looks to choose from are not valid JSON.");
+    std::vector<billow::LookChoice> looks;
+    for (const nlohmann::json& look : r["looks"])
+      looks.push_back({look.at("lookRank").get<billow::LayoutRank>(), look.at("family").get<std::string>()});
+    return nlohmann::json(billow::chooseLooks(looks, r.value("optimize", billow::kOptimizedLayouts),
+                                              r.value("ofOneFamily", billow::kOptimizedOfOneFamily)))
+        .dump();
+  });
+}
+
 }  // namespace
 
 EMSCRIPTEN_BINDINGS(billow) {
@@ -58,4 +75,5 @@ EMSCRIPTEN_BINDINGS(billow) {
   emscripten::function("crashForTesting", &crashForTesting);
   emscripten::function("version", &version);
   emscripten::function("materialPresets", &materialPresets);
+  emscripten::function("chooseLooks", &chooseLooks);
 }

@@ -62,8 +62,9 @@
 //     the options' fabrication settings give: the design's "fabrication"), sheetNeeded (optimized only: the sheet
 //     width [mm] its widest piece needs where it is wider than that sheet, else 0),
 //     distance (the worse way),
-//     inflatedToTarget, targetToInflated (over the target's diagonal), promise (lookPromise: the looks worth
-//     optimizing are the lowest), family (layoutFamily; looks only), iterations, ms, seams (the kept ones first,
+//     inflatedToTarget, targetToInflated (over the target's diagonal), rank (layoutRank: how the app orders the
+//     layouts, lower first, entry by entry), lookRank (lookRank: the looks worth optimizing are the lowest, its first
+//     entry what the look promises), family (layoutFamily; looks only), iterations, ms, seams (the kept ones first,
 //     then the layout's, as the design document writes them), connections (its internal connections: [i, j] pairs
 //     of indices into seams, as the app writes them), balloon (its inflated outer surface for the card's
 //     picture, LayoutBalloon, null when not ok: { positions #V*3 [m] (about 5 significant digits; the frame the
@@ -562,7 +563,8 @@ class TargetSession {
                  {"distance", e.distance},
                  {"inflatedToTarget", e.inflatedToTarget},
                  {"targetToInflated", e.targetToInflated},
-                 {"promise", billow::lookPromise(e)},
+                 {"rank", billow::layoutRank(e)},
+                 {"lookRank", billow::lookRank(e)},
                  {"iterations", e.iterations},
                  {"ms", e.ms},
                  {"seams", e.ok ? seams : json::array()},

@@ -215,6 +215,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
                         {{"worse_way_rms", t.first.distance},
                          {"target_to_inflated_rms", t.first.targetToInflated},
                          {"promise", lookPromise(t.first)},
+                         {"rank", lookRank(t.first)},
                          {"family", layoutFamily(*t.proposal)}}},
                        {"iterations", t.result.iterations},
                        {"ms", t.result.ms}});

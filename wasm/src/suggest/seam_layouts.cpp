@@ -6,6 +6,7 @@
 #include <chrono>
 #include <cmath>
 #include <map>
+#include <numeric>
 #include <optional>
 
 #include "export/layout.hpp"
@@ -1168,15 +1169,18 @@ bool sameSeams(const std::vector<DesignSeam>& a, const std::vector<DesignSeam>& 
 
 double lookPromise(const LayoutEvaluation& look) { return look.targetToInflated; }
 
+LayoutRank layoutRank(const LayoutEvaluation& layout) {
+  return {layout.sheetNeeded > 0 ? 1.0 : 0.0, layout.distance, layout.seamLength};
+}
+
+LayoutRank lookRank(const LayoutEvaluation& look) { return {lookPromise(look), look.seamLength, 0.0}; }
+
 std::vector<int> layoutsRanked(const std::vector<const LayoutEvaluation*>& layouts) {
   std::vector<int> order;
   for (int i = 0; i < int(layouts.size()); ++i)
     if (layouts[i]->ok) order.push_back(i);
-  std::stable_sort(order.begin(), order.end(), [&](int i, int j) {
-    const LayoutEvaluation &a = *layouts[i], &b = *layouts[j];
-    if ((a.sheetNeeded > 0) != (b.sheetNeeded > 0)) return b.sheetNeeded > 0;
-    return a.distance != b.distance ? a.distance < b.distance : a.seamLength < b.seamLength;
-  });
+  std::stable_sort(order.begin(), order.end(),
+                   [&](int i, int j) { return layoutRank(*layouts[i]) < layoutRank(*layouts[j]); });
   return order;
 }
 
@@ -1189,20 +1193,25 @@ std::string layoutFamily(const LayoutProposal& p) {
          (p.limbs.empty() ? "" : " limbs") + (p.creases.empty() ? "" : " creases");
 }
 
-std::vector<int> looksToOptimize(const std::vector<const LayoutEvaluation*>& looks,
-                                 const std::vector<std::string>& families, int count, int ofOneFamily) {
-  std::vector<int> order;
-  for (int i = 0; i < int(looks.size()); ++i)
-    if (looks[i]->ok) order.push_back(i);
-  // The seam length (sewing time) breaks ties, then the order they were proposed in, as in the app.
-  std::stable_sort(order.begin(), order.end(), [&](int a, int b) {
-    return lookPromise(*looks[a]) != lookPromise(*looks[b]) ? lookPromise(*looks[a]) < lookPromise(*looks[b])
-                                                            : looks[a]->seamLength < looks[b]->seamLength;
-  });
+std::vector<int> chooseLooks(const std::vector<LookChoice>& looks, int count, int ofOneFamily) {
+  std::vector<int> order(looks.size());
+  std::iota(order.begin(), order.end(), 0);
+  std::stable_sort(order.begin(), order.end(), [&](int a, int b) { return looks[a].rank < looks[b].rank; });
   std::vector<int> chosen;
   std::map<std::string, int> taken;
   for (int i : order)
-    if (int(chosen.size()) < count && ++taken[families[i]] <= ofOneFamily) chosen.push_back(i);
+    if (int(chosen.size()) < count && ++taken[looks[i].family] <= ofOneFamily) chosen.push_back(i);
+  return chosen;
+}
+
+std::vector<int> looksToOptimize(const std::vector<const LayoutEvaluation*>& looks,
+                                 const std::vector<std::string>& families, int count, int ofOneFamily) {
+  std::vector<LookChoice> choices;
+  std::vector<int> index;
+  for (int i = 0; i < int(looks.size()); ++i)
+    if (looks[i]->ok) choices.push_back({lookRank(*looks[i]), families[i]}), index.push_back(i);
+  std::vector<int> chosen = chooseLooks(choices, count, ofOneFamily);
+  for (int& i : chosen) i = index[i];
   return chosen;
 }
 

@@ -14,6 +14,7 @@
 // one, also held together inside by bands joined across it). A layout
 // that keeps the target's mirror symmetry lays only what is its own mirror image across the symmetry plane.
 #pragma once
+#include <array>
 #include <functional>
 #include <string>
 #include <vector>
@@ -155,8 +156,16 @@ LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal
                               int panelsAtMost, const std::vector<std::vector<DesignSeam>>& looked,
                               EvaluateOptions options = {});
 
-// The optimized layouts best first: those whose pieces fit the design's sheet, then the closest (the worse way), the
-// seam length (sewing time) breaking ties, then the order given (as the app ranks them, web/src/app/suggest-run.js).
+// How layouts rank, lower first, entry by entry, ties going to the one proposed first: an optimized layout by whether
+// its pieces need a wider sheet than the design's, then how close it came (the worse way), then its seam length
+// (sewing time); a first look by what it promises (lookPromise), then its seam length. The one rule for the command
+// line (layoutsRanked, looksToOptimize) and the app, which sorts by the ranks the worker gives (`rank`, `lookRank`:
+// web/src/app/suggest-run.js) and asks it which looks to optimize (chooseLooks).
+using LayoutRank = std::array<double, 3>;
+LayoutRank layoutRank(const LayoutEvaluation& layout);
+LayoutRank lookRank(const LayoutEvaluation& look);
+
+// The optimized layouts best first (indices into `layouts`; those not ok are left out).
 std::vector<int> layoutsRanked(const std::vector<const LayoutEvaluation*>& layouts);
 
 // What a first look promises, lower first: its target's side (targetToInflated). The optimizer pulls in where the
@@ -174,8 +183,17 @@ constexpr int kOptimizedLayouts = 8, kOptimizedOfOneFamily = 3;
 // along an outline), whatever its counts and turn; as text, for the app (the look's `family`).
 std::string layoutFamily(const LayoutProposal& proposal);
 
-// Which looks to optimize (indices into `looks`; those not ok are skipped): the most promising first (lookPromise),
-// at most `ofOneFamily` of one family (families[i] is looks[i]'s), `count` in all.
+// A look as the choice of looks to optimize sees it.
+struct LookChoice {
+  LayoutRank rank;  // lookRank
+  std::string family;
+};
+
+// Which looks to optimize (indices into `looks`): the best ranked first, at most `ofOneFamily` of one family, `count`
+// in all.
+std::vector<int> chooseLooks(const std::vector<LookChoice>& looks, int count = kOptimizedLayouts,
+                             int ofOneFamily = kOptimizedOfOneFamily);
+// The same for looked-at layouts (those not ok are skipped), families[i] being looks[i]'s.
 std::vector<int> looksToOptimize(const std::vector<const LayoutEvaluation*>& looks,
                                  const std::vector<std::string>& families, int count = kOptimizedLayouts,
                                  int ofOneFamily = kOptimizedOfOneFamily);

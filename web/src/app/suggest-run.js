@@ -8,24 +8,12 @@ import { Op } from '../worker/protocol.js';
 // (as lookAtLayout's `looked` tells them apart for the command line; here across all the workers' looks).
 const seamsKey = (seams) => JSON.stringify(seams.map(({ closed, points }) => [closed, points]));
 
-// Closest first; the seam length (sewing time) breaks ties, then the order they were proposed in. Looks are optimized
-// most promising first (their `promise`, lookPromise in suggest/seam_layouts.hpp).
-const tieBreak = (a, b) => a.seamLength - b.seamLength || a.index - b.index;
-// Optimized layouts best first, as layoutsRanked (suggest/seam_layouts.hpp) ranks them for the command line: those whose
-// pieces fit the design's sheet (`sheetNeeded` 0), then the closest.
-export const better = (a, b) => (a.sheetNeeded > 0) - (b.sheetNeeded > 0) || a.distance - b.distance || tieBreak(a, b);
-const morePromising = (a, b) => a.promise - b.promise || tieBreak(a, b);
-
-// The looks to optimize, as looksToOptimize (suggest/seam_layouts.hpp) chooses for the command line: the most
-// promising first, at most `ofOneFamily` of one family, `count` in all.
-export function looksToOptimize(looks, count, ofOneFamily) {
-  const taken = new Map();
-  return [...looks].sort(morePromising).filter((look) => {
-    const n = (taken.get(look.family) ?? 0) + 1;
-    taken.set(look.family, n);
-    return n <= ofOneFamily;
-  }).slice(0, count);
-}
+// Lower first, entry by entry, then in the order they were proposed: how the worker ranks them (`rank` for layouts,
+// best first: layoutRank in suggest/seam_layouts.hpp, the one rule the command line ranks by too).
+export const better = (a, b) => {
+  for (let i = 0; i < a.rank.length; i++) if (a.rank[i] !== b.rank[i]) return a.rank[i] - b.rank[i];
+  return a.index - b.index;
+};
 
 // clients: [{ call(op, args, { onProgress }) -> { promise, cancel } }] (SolverClient's), each with the target set.
 // args: suggestLook's (kept, panels, symmetry, scale, triangles, pressure, material, up, maxIterations) and
@@ -70,7 +58,13 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
       ),
     );
     for (const look of looks) notUsed.push(...look.notUsed.map(({ name, why }) => ({ name, why })));
-    const chosen = looksToOptimize(looked, optimize ?? looks[0].optimize, looks[0].ofOneFamily);
+    // Which to optimize, as the command line chooses (chooseLooks): asked of one worker, all of them having looked.
+    const picks = await call(clients[0], Op.chooseLooks, {
+      looks: looked.map(({ lookRank, family }) => ({ lookRank, family })),
+      optimize: optimize ?? looks[0].optimize,
+      ofOneFamily: looks[0].ofOneFamily,
+    });
+    const chosen = picks.map((i) => looked[i]);
     const queue = [...chosen];
     const layouts = [];
     let optimized = 0;

@@ -182,6 +182,9 @@ export function createHandlers(api) {
       yield { stage: 'optimizing the layout' };
       return { index, ...requireSession().suggestOptimize(index, seams, connections) };
     },
+    *[Op.chooseLooks]({ looks, optimize, ofOneFamily }) {
+      return api.chooseLooks(looks, optimize, ofOneFamily);
+    },
     *[Op.exportPattern]({ patternText, options }) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);

@@ -35,14 +35,16 @@ export const Op = Object.freeze({
   // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, part, parts } ->
   // { tried, notUsed: [{ index, name, why }] }: the seam layouts for the target, of which this worker looks at those
   // whose index is `part` modulo `parts`; progress carries each as it is looked at ({ look: { index, name, panels,
-  // seamLength, distance, inflatedToTarget, targetToInflated, seams, connections, balloon } }, its flattened panels'
-  // figures);
-  // cancellable. Several workers share one suggestion (web/src/app/suggest-run.js).
+  // seamLength, distance, inflatedToTarget, targetToInflated, rank, lookRank, family, seams, connections, balloon } },
+  // its flattened panels' figures); cancellable. Several workers share one suggestion (web/src/app/suggest-run.js).
   suggestLook: 'suggestLook',
   // { index, seams, connections, ...suggestLook's args } -> layout `index` of that suggestion, optimized at a coarse
   // resolution from the seams and internal connections its look ended with, on any worker (the suggestion started
   // there if it was not: a worker restarted after a crash) -> the look's fields, and sheetUse.
   suggestOptimize: 'suggestOptimize',
+  // { looks: [{ lookRank, family }], optimize, ofOneFamily } -> [index into looks]: which of the looks (all workers')
+  // to optimize, the best ranked first, at most ofOneFamily of one family, `optimize` in all.
+  chooseLooks: 'chooseLooks',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
   // { patternText, options } -> inflated result (Inflation.snapshot in solver-api.js); stepped, with
@@ -66,7 +68,7 @@ export const Op = Object.freeze({
 
 // Quick operations that only read the worker's state: they run at once, even between the steps of a
 // long operation, so drawing stays responsive while the panels inflate.
-export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.distanceToTarget, Op.materialPresets, Op.memoryStats, Op.mirrorSymmetry]);
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.distanceToTarget, Op.materialPresets, Op.memoryStats, Op.mirrorSymmetry, Op.chooseLooks]);
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);

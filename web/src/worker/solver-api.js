@@ -41,6 +41,12 @@ export class SolverApi {
     return SolverApi.unwrap(this.module.materialPresets());
   }
 
+  // The looks of a suggestion to optimize: indices into looks ([{ lookRank, family }], suggestLook's), as the command
+  // line chooses (chooseLooks in suggest/seam_layouts.hpp).
+  chooseLooks(looks, optimize, ofOneFamily) {
+    return SolverApi.unwrap(this.module.chooseLooks(JSON.stringify({ looks, optimize, ofOneFamily })));
+  }
+
   // Copies a typed array into a fresh heap allocation; returns the pointer (caller frees).
   toHeap(array) {
     const heap = HEAP_BY_TYPE.get(array.constructor);
