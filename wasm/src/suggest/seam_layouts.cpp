@@ -269,6 +269,44 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
         }
     }
   }
+  // Bands parted at the target's valleys across an axis (its neck, its waist), as a pattern maker chalks them: the
+  // deepest valley, and as many of the deepest as the count leaves room for; in halves, or each in two pieces along the
+  // outline seen across the axis.
+  for (int axis = 0; axis < 3; ++axis) {
+    if (axis == s) continue;
+    const std::vector<Valley> valleys = findValleys(target, axis);
+    const Eigen::Vector3d e = Eigen::Vector3d::Unit(axis);
+    for (size_t m = 1; m <= std::min(valleys.size(), size_t(kMostBands)); ++m) {
+      if (m > 1 && m < std::min(valleys.size(), size_t(request.panels / 2 - 1))) continue;
+      const int panels = 2 * int(m + 1);
+      if (panels > request.panels) break;
+      if (panels < fewestPanels(request.panels)) continue;
+      std::vector<double> levels;
+      for (size_t j = 0; j < m; ++j) levels.push_back(valleys[j].level);
+      std::sort(levels.begin(), levels.end());
+      const std::string bands =
+          std::to_string(m + 1) + " bands across the " + axisName(axis, request.up) + ", parted where it narrows";
+      for (int other = 0; other < 3; ++other) {
+        if (other == axis) continue;
+        for (int outline = 0; outline < 2; ++outline) {
+          LayoutProposal p;
+          p.axis = axis, p.gores = 2, p.bands = int(m), p.center = center, p.atValleys = true;
+          if (outline) {
+            p.outlineView = other;
+          } else {
+            const Eigen::Vector3d normal = Eigen::Vector3d::Unit(other);
+            p.planes.push_back({normal, normal.dot(center)});
+          }
+          for (double level : levels) p.planes.push_back({e, level});
+          static const char* from[] = {"from the side", "from above", "from the front"};
+          p.name = bands + (outline ? ", each in two pieces along the outline seen " +
+                                          std::string(from[viewAxis(Eigen::Vector3d::Unit(other), request.up)])
+                                    : ", in " + halvesName(p.planes[0].normal, request.up));
+          offer(std::move(p));
+        }
+      }
+    }
+  }
   // Seams around limbs where they join the body, as a plush toy is patterned: each limb halved along its length where
   // a flat panel inside its root seam would not cover it well, the body in two halves by a plane through its middle.
   // The most elongated limbs that fit the count. Where the symmetry is kept, limbs in mirror pairs (or on the plane, on
@@ -1190,7 +1228,7 @@ std::string layoutFamily(const LayoutProposal& p) {
   if (p.outlineView < 0 && p.gores == 2 && !p.planes.empty()) p.planes[0].normal.cwiseAbs().maxCoeff(&halving);
   return std::to_string(p.outlineView) + " " + std::to_string(p.axis) + " " + std::to_string(p.bands > 0) + " " +
          std::to_string(p.gores > 2) + " " + std::to_string(halving) + (p.connected ? " connected" : "") +
-         (p.limbs.empty() ? "" : " limbs") + (p.creases.empty() ? "" : " creases");
+         (p.limbs.empty() ? "" : " limbs") + (p.creases.empty() ? "" : " creases") + (p.atValleys ? " valleys" : "");
 }
 
 std::vector<int> chooseLooks(const std::vector<LookChoice>& looks, int count, int ofOneFamily) {

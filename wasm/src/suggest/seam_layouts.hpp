@@ -27,6 +27,7 @@
 #include "seams/plane_section.hpp"
 #include "suggest/creases.hpp"
 #include "suggest/limbs.hpp"
+#include "suggest/valleys.hpp"
 
 namespace billow {
 
@@ -40,6 +41,9 @@ struct LayoutProposal {
   // section by the plane through the axis and that direction on that side, from pole to pole.
   std::vector<Eigen::Vector3d> meridians;
   std::vector<SectionPlane> planes;  // two gores: the halving plane first; then the bands' planes
+  // The bands' planes at the target's valleys across `axis` (a neck, a waist: suggest/valleys.hpp), not at even shares
+  // of its surface.
+  bool atValleys = false;
   // A front and a back sealed along the outline seen along this axis of the target's own (a foil balloon's two
   // pieces, seams/outline.hpp), in place of gores; -1: none.
   int outlineView = -1;
