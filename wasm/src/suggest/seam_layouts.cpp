@@ -54,6 +54,12 @@ std::string axisName(int axis, const UpAxis& up) {
   return names[viewAxis(Eigen::Vector3d::Unit(axis), up)];
 }
 
+// A front and a back sealed along the outline seen along the target's own axis `view`.
+std::string outlineName(int view, const UpAxis& up) {
+  static const char* from[] = {"from the side", "from above", "from the front"};
+  return std::string("along the outline seen ") + from[viewAxis(Eigen::Vector3d::Unit(view), up)];
+}
+
 std::string halvesName(const Eigen::Vector3d& normal, const UpAxis& up) {
   static const char* names[] = {"left and right halves", "top and bottom halves", "front and back halves"};
   return names[viewAxis(normal, up)];
@@ -246,10 +252,8 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
     return extent[view] < kPillowThickness * std::min(extent[(view + 1) % 3], extent[(view + 2) % 3]);
   };
   for (int view = 0; view < 3; ++view) {
-    static const char* from[] = {"from the side", "from above", "from the front"};
     const bool thin = thinAlong(view);
-    const std::string outline =
-        std::string("along the outline seen ") + from[viewAxis(Eigen::Vector3d::Unit(view), request.up)];
+    const std::string outline = outlineName(view, request.up);
     for (int axis = 0; axis < 3; ++axis) {
       if (axis == view || axis == s) continue;
       const AreaAlong along = areaAlong(faces, axis);
@@ -298,9 +302,7 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
             p.planes.push_back({normal, normal.dot(center)});
           }
           for (double level : levels) p.planes.push_back({e, level});
-          static const char* from[] = {"from the side", "from above", "from the front"};
-          p.name = bands + (outline ? ", each in two pieces along the outline seen " +
-                                          std::string(from[viewAxis(Eigen::Vector3d::Unit(other), request.up)])
+          p.name = bands + (outline ? ", each in two pieces " + outlineName(other, request.up)
                                     : ", in " + halvesName(p.planes[0].normal, request.up));
           offer(std::move(p));
         }
