@@ -13,7 +13,6 @@
 #include "cli/commands.hpp"
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
-#include "mesh/validate.hpp"
 #include "suggest/seam_layouts.hpp"
 #include "util/error.hpp"
 
@@ -63,8 +62,10 @@ bool isDesignFile(const std::string& path) {
   return ext == ".json";
 }
 
-// The design the layouts are laid on, and the path its relative target is read from.
-Design readInput(const std::string& path, const Args& args, std::string& designPath) {
+// The design the layouts are laid on, and the path its relative target is read from. guessUp: a mesh file without --up,
+// whose up axis its check guesses (loadDesignTargetScene).
+Design readInput(const std::string& path, const Args& args, std::string& designPath, bool& guessUp) {
+  guessUp = false;
   if (isDesignFile(path)) {
     designPath = path;
     return readDesignJson(readFileBytes(path));
@@ -74,18 +75,9 @@ Design readInput(const std::string& path, const Args& args, std::string& designP
   design.target.name = fs::absolute(path).lexically_normal().string();
   design.height = numberOption(args, "--height", 0.6, "a height in meters");
   if (!(design.height > 0)) throw Error("cli.usage", "the option --height needs a positive height in meters");
-  if (args.has("--up")) {
-    if (!parseUpAxis(args.get("--up"), design.target.up))
-      throw Error("cli.usage", "the option --up needs +y, -y, +z, -z, +x or -x, not '" + args.get("--up") + "'");
-  } else {
-    TriMesh mesh = readMeshBytes(readFileBytes(path), path);
-    design.target.up = validateTarget(mesh).stats.standing.up;
-    if (design.target.up.axis == 2 && !args.has("--quiet"))
-      std::fprintf(stderr,
-                   "%s looks made Z up, as files from CAD and 3D printing often are: it stands on its Z bottom and "
-                   "would tip over on its Y bottom, so its height is measured along Z (--up +y keeps Y up)\n",
-                   path.c_str());
-  }
+  guessUp = !args.has("--up");
+  if (!guessUp && !parseUpAxis(args.get("--up"), design.target.up))
+    throw Error("cli.usage", "the option --up needs +y, -y, +z, -z, +x or -x, not '" + args.get("--up") + "'");
   designPath = (fs::current_path() / "design.billow.json").string();
   return design;
 }
@@ -117,8 +109,16 @@ int suggestCommand(const std::vector<std::string>& argv) {
   const int optimized = intOption(args, "--optimize", kOptimizedLayouts, 1, 100, "a number of layouts");
 
   std::string designPath;
-  const Design input = readInput(args.positional[0], args, designPath);
-  std::unique_ptr<DesignScene> scene = loadDesignTargetScene(input, designPath, exampleSearchPath(executableDir()));
+  bool guessUp = false;
+  const Design read = readInput(args.positional[0], args, designPath, guessUp);
+  const std::unique_ptr<DesignScene> scene =
+      loadDesignTargetScene(read, designPath, exampleSearchPath(executableDir()), guessUp);
+  const Design input = scene->design;  // as read, its up axis guessed: the layouts change the scene's own
+  if (guessUp && input.target.up.axis == 2 && !quiet)
+    std::fprintf(stderr,
+                 "%s looks made Z up, as files from CAD and 3D printing often are: it stands on its Z bottom and "
+                 "would tip over on its Y bottom, so its height is measured along Z (--up +y keeps Y up)\n",
+                 args.positional[0].c_str());
   evaluate.cut = designFabrication(input);  // the sheet and allowance its pieces are nested with
   request.up = input.target.up;
   if (args.has("--symmetry")) {

@@ -22,7 +22,7 @@ void fillTargetScene(DesignScene& scene, const TriMesh& own) {
 }  // namespace
 
 std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const std::string& designPath,
-                                                   const std::vector<std::string>& exampleDirs) {
+                                                   const std::vector<std::string>& exampleDirs, bool guessUp) {
   auto scene = std::make_unique<DesignScene>();
   const auto t0 = Clock::now();
   scene->design = design;
@@ -30,7 +30,7 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
   // Seam points name the target's triangles and corners: the mesh is used as it is (no reorientation).
   ValidationOptions vo;
   vo.fixOrientation = false;
-  vo.guessUp = false;  // its design names its up axis
+  vo.guessUp = guessUp;
   const ValidationReport report = validateTarget(own, vo);
   if (!report.ok) {
     std::string why;
@@ -38,6 +38,7 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
       if (i.severity == "error") why += (why.empty() ? "" : " ") + i.message;
     throw Error("design.bad-target", "The design's target cannot be used: " + why);
   }
+  if (guessUp) scene->design.target.up = report.stats.standing.up;
   fillTargetScene(*scene, own);
   scene->loadMs = msSince(t0);
   return scene;

@@ -30,9 +30,10 @@ std::unique_ptr<DesignScene> makeDesignScene(const Design& design, const std::st
                                              const std::vector<std::string>& exampleDirs);
 
 // makeDesignScene's phases. The target: loaded, checked and scaled, with its topology, projector and geodesic
-// solver (no curves, no segmentation yet).
+// solver (no curves, no segmentation yet). guessUp: a mesh file opened anew, whose design names no up axis yet: the
+// scene's design takes the one the check guesses (mesh/up_axis.hpp guessUp) and is scaled along it.
 std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const std::string& designPath,
-                                                   const std::vector<std::string>& exampleDirs);
+                                                   const std::vector<std::string>& exampleDirs, bool guessUp = false);
 // The same for a target already loaded and checked, in its own units (the app's worker holds it): scaled by the
 // design's size.
 std::unique_ptr<DesignScene> makeTargetScene(const Design& design, const TriMesh& targetOwnUnits);

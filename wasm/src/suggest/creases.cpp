@@ -229,7 +229,7 @@ struct LooseEnds {
   LooseEnds(const TriMesh& t, const MeshTopology& g, const std::vector<char>& s)
       : target(t), topo(g), sharp(s), degree(size_t(t.V.rows()), 0), own(size_t(t.V.rows()), INFINITY) {
     for (int e = 0; e < topo.numEdges(); ++e)
-      if (sharp[size_t(e)]) ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))];
+      if (sharp[size_t(e)]) add(e);
   }
   double length(int e) const { return (target.V.row(topo.E(e, 0)) - target.V.row(topo.E(e, 1))).norm(); }
   void add(int e) { ++degree[size_t(topo.E(e, 0))], ++degree[size_t(topo.E(e, 1))]; }
