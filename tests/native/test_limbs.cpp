@@ -136,7 +136,7 @@ TEST(SeamLayouts, TheOctopusIsPatternedAroundAndAlongEachArmAndComesFarCloserTha
   std::vector<const LayoutProposal*> limbLayouts;
   const LayoutProposal* outline = nullptr;
   for (const LayoutProposal& p : proposals) {
-    if (!p.limbs.empty() && p.bands == 0) limbLayouts.push_back(&p);
+    if (!p.limbs.empty() && p.bands == 0 && p.outlineView < 0) limbLayouts.push_back(&p);
     if (p.outlineView == 2 && p.bands == 0) outline = &p;
   }
   ASSERT_EQ(limbLayouts.size(), 3u);  // the body halved across each axis (and in bands: not tried here)
@@ -169,6 +169,41 @@ TEST(SeamLayouts, TheOctopusIsPatternedAroundAndAlongEachArmAndComesFarCloserTha
   EXPECT_LT(best.targetToInflated, 0.6 * twoPieces.targetToInflated);
 }
 
+// A plush toy's other pattern: each limb seamed at its root, the body a front and a back sealed along its outline.
+// The bunny's ears stand out of its outline seen from the front, so the outline is laid on the body only, in pieces
+// from ear root to ear root, each meeting the root seams where it ends: six panels, no seam left loose.
+TEST(SeamLayouts, ABodyAlongItsOutlineIsLaidFromLimbRootToLimbRoot) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
+  const auto scene = test::sharedScene("bunny.obj");
+  LayoutRequest request;
+  request.panels = 6;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  const LayoutProposal* layout = nullptr;
+  for (const LayoutProposal& p : proposals)
+    if (!p.limbs.empty() && p.outlineView == 2 && p.bands == 0) layout = &p;
+  ASSERT_NE(layout, nullptr);
+  EXPECT_EQ(layout->name,
+            "seams around 2 limbs, each halved along its length, the body in two pieces along the "
+            "outline seen from the front");
+  EXPECT_TRUE(layout->planes.empty());
+  const std::vector<DesignSeam> seams = proposalSeams(scene->target, *layout);
+  int around = 0, outline = 0;
+  for (const DesignSeam& s : seams) {
+    around += s.name.rfind("around limb ", 0) == 0 && s.closed;
+    if (s.name == "outline") {
+      ++outline;
+      EXPECT_FALSE(s.closed);  // from root to root: the ears stand out of the outline
+    }
+  }
+  EXPECT_EQ(around, 2);
+  EXPECT_GE(outline, 1);  // from one ear round the body to the other (between them too, where the roots lie apart)
+  EvaluateOptions options;
+  const LayoutEvaluation e = evaluateLayout(*scene, seams, 0, options);
+  ASSERT_TRUE(e.ok) << e.problem;
+  EXPECT_TRUE(scene->segmentation.problems.empty());
+  EXPECT_EQ(e.panels, 6);  // each ear in two, the body's front and back
+}
+
 // Where the symmetry is kept, a layout's limbs come in mirror pairs (the same planes reflected) or stand on the mirror
 // plane on their own, halved along it, and the body's halving plane is its own mirror image.
 TEST(SeamLayouts, LimbLayoutsThatKeepTheMirrorSymmetryAreTheirOwnMirrorImage) {
@@ -189,7 +224,7 @@ TEST(SeamLayouts, LimbLayoutsThatKeepTheMirrorSymmetryAreTheirOwnMirrorImage) {
     for (const LayoutProposal& p : proposeLayouts(target, request)) {
       if (p.limbs.empty()) continue;
       ++layouts;
-      ASSERT_EQ(p.planes.size(), size_t(1 + p.bands));
+      ASSERT_EQ(p.planes.size(), size_t((p.outlineView < 0) + p.bands));  // the halving plane, unless an outline
       for (const SectionPlane& plane : p.planes)
         EXPECT_TRUE(same(reflected(plane), plane) || same(reflected(plane), {-plane.normal, -plane.offset}))
             << name << ": " << p.name;

@@ -353,27 +353,34 @@ std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRe
            : halved == 1 && limbs.size() == 1 ? ", halved along its length"
            : halved == int(limbs.size())      ? ", each halved along its length"
                                               : ", " + std::to_string(halved) + " halved along their length");
-      // The body in halves, and in as many bands across another axis as the count leaves room for, each in two.
-      for (int axis = 0; axis < 3; ++axis)
-        for (int across = -1; across < 3; ++across) {
-          if (across == axis || (across >= 0 && across == s)) continue;
-          const int bands = across < 0 ? 0 : (request.panels - limbPanels) / 2 - 1;
-          if ((across >= 0 && bands < 1) || limbPanels + 2 * (bands + 1) < fewestPanels(request.panels)) continue;
-          LayoutProposal p;
-          p.axis = across < 0 ? axis : across, p.gores = 2, p.bands = bands, p.center = bodyCenter, p.limbs = limbs;
-          p.planes.push_back({Eigen::Vector3d::Unit(axis), bodyCenter[axis]});
-          if (bands > 0) {
-            const AreaAlong along = areaAlong(bodyFaces, across);
-            for (int j = 1; j <= bands; ++j)
-              p.planes.push_back({Eigen::Vector3d::Unit(across), along.at(double(j) / (bands + 1))});
+      // The body in halves, or in a front and a back along its outline seen along an axis (a plush fish's sides, a
+      // mushroom's cap top and underside), and in as many bands across another axis as the count leaves room for, each
+      // in two.
+      for (int outline = 0; outline < 2; ++outline)
+        for (int axis = 0; axis < 3; ++axis)
+          for (int across = -1; across < 3; ++across) {
+            if (across == axis || (across >= 0 && across == s)) continue;
+            const int bands = across < 0 ? 0 : (request.panels - limbPanels) / 2 - 1;
+            if ((across >= 0 && bands < 1) || limbPanels + 2 * (bands + 1) < fewestPanels(request.panels)) continue;
+            LayoutProposal p;
+            p.axis = across < 0 ? axis : across, p.gores = 2, p.bands = bands, p.center = bodyCenter, p.limbs = limbs;
+            if (outline)
+              p.outlineView = axis;
+            else
+              p.planes.push_back({Eigen::Vector3d::Unit(axis), bodyCenter[axis]});
+            if (bands > 0) {
+              const AreaAlong along = areaAlong(bodyFaces, across);
+              for (int j = 1; j <= bands; ++j)
+                p.planes.push_back({Eigen::Vector3d::Unit(across), along.at(double(j) / (bands + 1))});
+            }
+            const std::string bandsAcross =
+                bands > 0 ? std::to_string(bands + 1) + " bands across the " + axisName(across, request.up) : "";
+            p.name = around + ", the body in " +
+                     (outline ? (bands > 0 ? bandsAcross + ", each in two pieces " : "two pieces ") +
+                                    outlineName(axis, request.up)
+                              : (bands > 0 ? bandsAcross + ", in " : "") + halvesName(p.planes[0].normal, request.up));
+            offer(std::move(p));
           }
-          p.name =
-              around + ", the body in " +
-              (bands > 0 ? std::to_string(bands + 1) + " bands across the " + axisName(across, request.up) + ", in "
-                         : "") +
-              halvesName(p.planes[0].normal, request.up);
-          offer(std::move(p));
-        }
       break;  // the most limbs that fit: fewer would leave long limbs to the body's halves
     }
   }
@@ -646,9 +653,17 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
     }
     return part < 0;
   };
-  for (const SectionPlane& plane : proposal.planes)
-    for (const SectionLoop& loop : planeSection(target, plane.normal, plane.offset))
-      layPieces(loop, -1, "halving seam");
+  const bool halving = proposal.outlineView < 0;
+  if (!halving) {
+    // The whole target's outline, laid on the body only: where a limb stands out of it, its pieces end at the root.
+    const std::optional<Outline> outline = outlineSeenFrom(target, Eigen::Vector3d::Unit(proposal.outlineView));
+    if (!outline || !outline->holes.empty())
+      throw Error("suggest.no-outline", "the shape shows no outline of one loop from there");
+    layPieces(outline->loop, -1, "outline");
+  }
+  for (size_t j = 0; j < proposal.planes.size(); ++j)
+    for (const SectionLoop& loop : planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset))
+      layPieces(loop, -1, halving && j == 0 ? std::string("halving seam") : "band " + std::to_string(j + !halving));
   // A limb is halved along its outline seen across its flattest direction (where the surface turns edge-on to that
   // view), which follows a tentacle's curl to its root where a plane would leave it.
   Eigen::MatrixX3d normals = Eigen::MatrixX3d::Zero(target.V.rows(), 3);

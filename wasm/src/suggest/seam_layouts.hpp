@@ -9,10 +9,10 @@
 // sealed along the outline seen along one axis (seams/outline.hpp), as a foil balloon is made, with k bands across
 // another: 2 (k + 1) panels, and k more where each band's loop is a front and a back seam joined inside by an internal
 // connection (a flat shape's pillow held to its thickness). Or, on a shape with limbs, as a plush toy is patterned: a
-// seam around each limb where it joins the body, the limb halved along its length and the body in halves or bands. Or,
-// on a shape with creases, along them (a box cushion's six sides, a letter's front, back and gusset strip; on a thin
-// one, also held together inside by bands joined across it). A layout
-// that keeps the target's mirror symmetry lays only what is its own mirror image across the symmetry plane.
+// seam around each limb where it joins the body, the limb halved along its length and the body in halves or along its
+// outline, and in bands. Or, on a shape with creases, along them (a box cushion's six sides, a letter's front, back and
+// gusset strip; on a thin one, also held together inside by bands joined across it). A layout that keeps the target's
+// mirror symmetry lays only what is its own mirror image across the symmetry plane.
 #pragma once
 #include <array>
 #include <functional>
@@ -52,8 +52,9 @@ struct LayoutProposal {
   // would bulge. Only along a view the target is thin along (a hand, a cushion seen from the front).
   bool connected = false;
   // A seam around each of these limbs where it joins the body (suggest/limbs.hpp), each limb that a flat panel inside
-  // that seam would not cover well halved along its length, and the body halved by planes[0] and in bands by the others
-  // (`bands` of them, across `axis`), each plane laid on the body only; in place of gores.
+  // that seam would not cover well halved along its length, and the body halved by planes[0] (with an outlineView, in
+  // a front and a back along that outline instead) and in bands by the others (`bands` of them, across `axis`), each
+  // laid on the body only; in place of gores.
   std::vector<Limb> limbs;
   // Seams along these creases of the target (suggest/creases.hpp), as a cushion or a gusseted letter is patterned: a
   // flat panel bulges everywhere but along its seams. With `planes`, those too (the halving plane); connected, on a
