@@ -176,7 +176,10 @@ test('the octopus gets seams around and along its arms, and the layout used infl
   await page.setInputFiles('#file-input', { name: 'octopus.obj', mimeType: 'text/plain', buffer: readFileSync(`${MESHES}/octopus.obj`) });
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'octopus.obj', null, { timeout: 60000 });
   const cards = await layoutsFor(page, 12);
-  const limbs = cards.find((card) => /^seams around \d+ limbs, each halved along its length/.test(card.name));
+  // The body in halves: the layouts along its outline take twice as long to optimize at the design's size (72 against
+  // 33 s natively, bench/README.md "The body along its outline"), over this test's time on a slow machine.
+  const limbCards = cards.filter((card) => /^seams around \d+ limbs, each halved along its length/.test(card.name));
+  const limbs = limbCards.find((card) => /halves$/.test(card.name)) ?? limbCards[0];
   assert.ok(limbs, JSON.stringify(cards));
   assert.match(cards[0].name, /seams around \d+ limbs/, 'it leads');
   assert.ok(limbs.panels >= 10 && limbs.panels <= 12, JSON.stringify(limbs));
@@ -189,9 +192,7 @@ test('the octopus gets seams around and along its arms, and the layout used infl
   const names = await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name));
   assert.ok(names.filter((n) => /^around limb /.test(n)).length >= 4, JSON.stringify(names));
   assert.ok(names.some((n) => /^along limb /.test(n)), JSON.stringify(names));
-  // Its body along the outline, three arms left to it and opened by cuts: 150 iterations, 72 s natively
-  // (bench/README.md "The body along its outline").
-  await optimizedResultShown(page, 480000);
+  await optimizedResultShown(page);
   await screenshot(page, 'suggest-octopus-used');
   assert.deepEqual(page.errors, []);
 });
