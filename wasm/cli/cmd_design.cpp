@@ -55,7 +55,7 @@ int positiveInt(const Args& args, const std::string& name, int fallback) {
   throw Error("cli.usage", "the option " + name + " needs a triangle count from 8 to 2000000, not '" + v + "'");
 }
 
-int usage(bool help) {
+int designUsage(bool help) {
   std::fprintf(help ? stdout : stderr,
                "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize]\n"
                "                     [--max-iterations N] [--max-memory MB] [--quiet]\n\n"
@@ -197,10 +197,10 @@ Optimized optimizePhase(const DesignJob& job, const Args& args, const DesignScen
 // pieces cannot be laid out (a sheet narrower than a piece) the other outputs are still written.
 std::string exportPhase(const DesignJob& job, const Pattern& pattern, const ExportOptions& cutOptions) {
   std::filesystem::create_directories(job.dir);
-  writeTextFile(job.dir + "/pattern.json", writePatternJson(pattern) + "\n");
+  writeFile(job.dir + "/pattern.json", writePatternJson(pattern) + "\n");
   std::filesystem::remove(job.dir + "/pattern.svg");  // never leave an older cut file beside the new pattern
   try {
-    writeTextFile(job.dir + "/pattern.svg", exportPattern(pattern, cutOptions).svg);
+    writeFile(job.dir + "/pattern.svg", exportPattern(pattern, cutOptions).svg);
   } catch (const Error& e) {
     return e.what();
   }
@@ -215,7 +215,7 @@ InflateResult inflatePhase(const DesignJob& job, const Pattern& pattern, const S
       std::fprintf(stderr, "  inflate: iteration %3d  residual %.3e  volume %.6g m^3\n", solver.iterations(),
                    solver.residual(), solver.volume());
   InflateResult r = solver.result();
-  writeTextFile(job.dir + "/inflated.obj", objText(mesh, r.positions));
+  writeFile(job.dir + "/inflated.obj", objText(mesh, r.positions));
   return r;
 }
 
@@ -259,7 +259,7 @@ int reportPhase(const DesignJob& job, const ReadDesign& read, const BuiltPattern
         {"total", msSince(t0)}}},
       {"memory", {{"predicted_bytes", read.neededBytes}, {"peak_resident_bytes", peakResidentBytes()}}},
       {"cut_file", {{"written", cutFileProblem.empty()}, {"message", cutFileProblem}}}};
-  writeTextFile(job.dir + "/report.json", report.dump(2) + "\n");
+  writeFile(job.dir + "/report.json", report.dump(2) + "\n");
   // The optimizer hands over its own equilibrium, which is usually settled already.
   const std::string settling = !r.converged ? "did not settle after " + std::to_string(r.iterations) + " iterations"
                                : r.iterations == 0 ? "settled where the optimizer left it"
@@ -288,7 +288,8 @@ int reportPhase(const DesignJob& job, const ReadDesign& read, const BuiltPattern
 
 int designCommand(const std::vector<std::string>& argv) {
   const Args args = parseArgs(argv, {"--out-dir", "--resolution", "--max-memory", "--max-iterations"});
-  if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir")) return usage(args.has("--help"));
+  if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir"))
+    return designUsage(args.has("--help"));
   const auto t0 = Clock::now();
   DesignJob job;
   job.designPath = args.positional[0];

@@ -84,12 +84,6 @@ std::pair<int, double> seamAllowanceOption(const std::string& value) {
   return fail("the width is a length in mm");
 }
 
-void writeFile(const std::filesystem::path& path, const std::string& bytes) {
-  std::ofstream file(path, std::ios::binary);
-  file << bytes;
-  if (!file) throw Error("io.cannot-write", "cannot write " + path.string());
-}
-
 }  // namespace
 
 int exportCommand(const std::vector<std::string>& argv) {
@@ -159,10 +153,10 @@ int exportCommand(const std::vector<std::string>& argv) {
   std::error_code ec;
   std::filesystem::create_directories(dir, ec);
   if (ec) throw Error("io.cannot-write", "cannot create the folder " + dir.string() + ": " + ec.message());
-  writeFile(dir / "pattern.svg", bundle.svg);
-  writeFile(dir / "pattern.dxf", bundle.dxf);
-  writeFile(dir / "pattern.pdf", bundle.pdf);
-  writeFile(dir / "stats.json", bundle.statistics + "\n");
+  writeFile((dir / "pattern.svg").string(), bundle.svg);
+  writeFile((dir / "pattern.dxf").string(), bundle.dxf);
+  writeFile((dir / "pattern.pdf").string(), bundle.pdf);
+  writeFile((dir / "stats.json").string(), bundle.statistics + "\n");
   const auto stats = nlohmann::json::parse(bundle.statistics)["totals"];
   std::printf("%s: %d panels on a %.0f x %.0f mm sheet (%.0f %% used), %d seams, %.0f mm of seams; wrote %s\n",
               input.c_str(), stats["panels"].get<int>(), o.sheetWidth, stats["sheet_length_mm"].get<double>(),

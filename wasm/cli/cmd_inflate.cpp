@@ -26,12 +26,6 @@ double number(const Args& args, const std::string& name, double fallback) {
   }
 }
 
-void writeFile(const std::string& path, const std::string& text) {
-  std::ofstream f(path, std::ios::binary);
-  f << text;
-  if (!f) throw Error("io.cannot-write", "cannot write " + path);
-}
-
 // Stitched vertices merged (one OBJ vertex per simulation vertex), outer triangles only, facing outwards.
 std::string toObj(const SewnMesh& mesh, const Vertices& x) {
   return writeObj(x, outerTriangles(mesh), "billow inflated shape (outer surface)");

@@ -76,7 +76,7 @@ int segmentCommand(const std::vector<std::string>& argv) {
     return args.has("--help") ? 0 : 2;
   }
   const auto scene = openDesignScene(args.positional[0], args.has("--quiet"));
-  writeTextFile(args.get("--out"), segmentsJson(*scene).dump() + "\n");
+  writeFile(args.get("--out"), segmentsJson(*scene).dump() + "\n");
   printProblems(scene->segmentation.problems);
   if (!scene->segmentation.ok()) {
     std::fprintf(stderr, "billow segment: this design cannot be made into panels yet (see the errors above)\n");

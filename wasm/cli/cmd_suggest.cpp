@@ -29,7 +29,7 @@ std::string percent(double share) {
   return text;
 }
 
-int usage(bool help) {
+int suggestUsage(bool help) {
   std::fprintf(help ? stdout : stderr,
                "usage: billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams]\n"
                "                      [--height METERS] [--up AXIS] [--resolution TRIANGLES] [--max-iterations N]\n"
@@ -98,7 +98,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   const Args args =
       parseArgs(argv, {"--panels", "--out-dir", "--height", "--up", "--resolution", "--max-iterations", "--optimize"});
   if (args.has("--help") || args.positional.size() != 1 || !args.has("--out-dir") || !args.has("--panels"))
-    return usage(args.has("--help"));
+    return suggestUsage(args.has("--help"));
   const bool quiet = args.has("--quiet");
   const std::string dir = args.get("--out-dir");
   LayoutRequest request;
@@ -195,8 +195,8 @@ int suggestCommand(const std::vector<std::string>& argv) {
     design.connections.insert(design.connections.end(), t.result.connections.begin(), t.result.connections.end());
     if (request.symmetryAxis >= 0) design.extra["symmetry"] = {{"axis", std::string(1, "xyz"[request.symmetryAxis])}};
     const std::string stem = "layout-" + std::to_string(r + 1);
-    writeTextFile(dir + "/" + stem + ".billow.json", writeDesignJson(design) + "\n");
-    writeTextFile(dir + "/" + stem + ".pattern.json", writePatternJson(t.result.pattern) + "\n");
+    writeFile(dir + "/" + stem + ".billow.json", writeDesignJson(design) + "\n");
+    writeFile(dir + "/" + stem + ".pattern.json", writePatternJson(t.result.pattern) + "\n");
     layouts.push_back({{"rank", r + 1},
                        {"name", t.proposal->name},
                        {"description", t.first.description()},
@@ -233,7 +233,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
        {{"layouts", optimized}, {"by_default", kOptimizedLayouts}, {"of_one_family", kOptimizedOfOneFamily}}},
       {"layouts", layouts},
       {"not_used", notUsed}};
-  writeTextFile(dir + "/summary.json", summary.dump(2) + "\n");
+  writeFile(dir + "/summary.json", summary.dump(2) + "\n");
   std::printf("rank  panels  distance %%  seams m  layout\n");
   for (const json& l : layouts)
     std::printf("%4d  %6d  %10.2f  %7.2f  %s\n", l["rank"].get<int>(), l["panels"].get<int>(),

@@ -100,9 +100,9 @@ ExportOptions designFabrication(const Design& design) {
   }
 }
 
-void writeTextFile(const std::string& path, const std::string& text) {
+void writeFile(const std::string& path, const std::string& bytes) {
   std::ofstream f(path, std::ios::binary);
-  f << text;
+  f << bytes;
   if (!f) throw Error("io.cannot-write", "cannot write " + path);
 }
 

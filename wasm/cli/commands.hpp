@@ -43,7 +43,8 @@ std::unique_ptr<DesignScene> openDesignScene(const std::string& path, bool quiet
 // The design's "fabrication" settings (io/export_options_json.hpp), the defaults where it has none; an error names
 // them.
 ExportOptions designFabrication(const Design& design);
-void writeTextFile(const std::string& path, const std::string& text);
+// Writes the bytes (text, or a PDF) as they are; an error names the file.
+void writeFile(const std::string& path, const std::string& bytes);
 // Segmentation and pattern problems on stderr, one a line ("  error: ...").
 void printProblems(const std::vector<SegmentationProblem>& problems);
 

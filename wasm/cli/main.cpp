@@ -15,7 +15,7 @@ const billow::cli::Command* find(const std::string& name) {
   return nullptr;
 }
 
-void usage(FILE* out) {
+void printUsage(FILE* out) {
   std::fprintf(out, "billow: design inflatable structures (Skouras et al. 2014)\n\nusage: billow COMMAND [ARGS]\n\n");
   for (const auto& c : billow::cli::commands()) std::fprintf(out, "  %-10s %s\n", c.name, c.summary);
   std::fprintf(out, "\nRun 'billow COMMAND --help' for a command's options.\n");
@@ -25,13 +25,13 @@ void usage(FILE* out) {
 
 int main(int argc, char** argv) {
   if (argc < 2 || !std::strcmp(argv[1], "--help") || !std::strcmp(argv[1], "-h") || !std::strcmp(argv[1], "help")) {
-    usage(argc < 2 ? stderr : stdout);
+    printUsage(argc < 2 ? stderr : stdout);
     return argc < 2 ? 2 : 0;
   }
   const auto* command = find(argv[1]);
   if (!command) {
     std::fprintf(stderr, "billow: unknown command '%s'\n\n", argv[1]);
-    usage(stderr);
+    printUsage(stderr);
     return 2;
   }
   std::vector<std::string> args(argv + 2, argv + argc);
