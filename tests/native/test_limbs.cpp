@@ -6,6 +6,7 @@
 #include <map>
 #include <set>
 
+#include "crease_shapes.hpp"
 #include "io/design_json.hpp"
 #include "pattern/design_scene.hpp"
 #include "suggest/limbs.hpp"
@@ -137,7 +138,7 @@ TEST(SeamLayouts, TheOctopusIsPatternedAroundAndAlongEachArmAndComesFarCloserTha
   const LayoutProposal* outline = nullptr;
   for (const LayoutProposal& p : proposals) {
     if (!p.limbs.empty() && p.bands == 0 && p.outlineView < 0) limbLayouts.push_back(&p);
-    if (p.outlineView == 2 && p.bands == 0) outline = &p;
+    if (p.limbs.empty() && p.outlineView == 2 && p.bands == 0) outline = &p;  // the two pieces alone
   }
   ASSERT_EQ(limbLayouts.size(), 3u);  // the body halved across each axis (and in bands: not tried here)
   ASSERT_NE(outline, nullptr);
@@ -202,6 +203,36 @@ TEST(SeamLayouts, ABodyAlongItsOutlineIsLaidFromLimbRootToLimbRoot) {
   ASSERT_TRUE(e.ok) << e.problem;
   EXPECT_TRUE(scene->segmentation.problems.empty());
   EXPECT_EQ(e.panels, 6);  // each ear in two, the body's front and back
+}
+
+// The body's outline in a limb layout keeps its corners, as the Outline tool's does: a square cushion with one long
+// arm, seen from the front, has its four corners on the seam, not cut off by chords between control points.
+TEST(SeamLayouts, TheOutlineOnALimbsBodyKeepsItsCorners) {
+  const std::vector<Eigen::Vector2d> corners{{-0.25, -0.25}, {0.25, -0.25}, {0.25, -0.04}, {0.65, -0.04},
+                                             {0.65, 0.04},   {0.25, 0.04},  {0.25, 0.25},  {-0.25, 0.25}};
+  const TriMesh target = test::extrudedOutline(test::polygonOutline(corners, 10), 0.12, 10, 4);
+  const std::vector<Limb> limbs = findLimbs(target);
+  ASSERT_EQ(limbs.size(), 1u);
+  EXPECT_GT(target.V(limbs[0].tip, 0), 0.5) << "the arm's tip";
+  LayoutRequest request;
+  request.panels = 4;
+  const LayoutProposal* layout = nullptr;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(target, request);
+  for (const LayoutProposal& p : proposals)
+    if (!p.limbs.empty() && p.outlineView == 2 && p.bands == 0) layout = &p;
+  ASSERT_NE(layout, nullptr);
+  const std::vector<DesignSeam> seams = proposalSeams(target, *layout);
+  const double diagonal = meshDiagonal(target);
+  for (const Eigen::Vector2d& corner : {corners[0], corners[1], corners[6], corners[7]}) {
+    double nearest = INFINITY;
+    for (const DesignSeam& s : seams)
+      if (s.name == "outline")
+        for (const DesignPoint& p : s.points) {
+          const Eigen::Vector3d x = p.onSurface ? position(target, p.surface) : p.position;
+          nearest = std::min(nearest, (x.head<2>() - corner).norm());
+        }
+    EXPECT_LT(nearest, 0.005 * diagonal) << "a control point at the corner " << corner.transpose();
+  }
 }
 
 // Where the symmetry is kept, a layout's limbs come in mirror pairs (the same planes reflected) or stand on the mirror

@@ -563,8 +563,9 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
   };
   std::vector<DesignSeam> pieces;
   // The pieces of `loop` on `part`: each from where it crosses into the part to where it crosses out. On a limb,
-  // whether one ran round its tip.
-  const auto layPieces = [&](const SectionLoop& loop, int part, const std::string& name) {
+  // whether one ran round its tip. With `corners`, the loop's sharp turns are kept (an outline's, as the Outline tool
+  // keeps them: a seam that skipped one would cut a tip off).
+  const auto layPieces = [&](const SectionLoop& loop, int part, const std::string& name, bool corners = false) {
     const size_t n = loop.size();
     std::vector<int> on(n);
     for (size_t k = 0; k < n; ++k) on[k] = partOf(loop[k]);
@@ -578,7 +579,7 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
         return (p.position - target.V.row(limbs[size_t(part)].tip).transpose()).norm() < limbs[size_t(part)].girth / 4;
       };
       const bool laid = part < 0 || std::any_of(loop.begin(), loop.end(), nearTip);
-      if (laid) pieces.push_back(makeSeam(name, true, sectionSeamPoints(target, loop, spacing)));
+      if (laid) pieces.push_back(makeSeam(name, true, sectionSeamPoints(target, loop, spacing, corners)));
       return laid;
     }
     // Where the loop crosses the root seam between points k and k + 1: where the level of the limb on either side is
@@ -632,7 +633,7 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
       const SectionLoop inner(path.begin() + long(first), path.begin() + long(end));
       std::vector<SurfacePoint> controls{from.at};
       if (inner.size() >= 2)
-        for (const SurfacePoint& p : sectionPathPoints(target, inner, spacing)) controls.push_back(p);
+        for (const SurfacePoint& p : sectionPathPoints(target, inner, spacing, corners)) controls.push_back(p);
       controls.push_back(to.at);
       if (part < 0) {
         pieces.push_back(makeSeam(name, false, controls));
@@ -659,7 +660,7 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
     const std::optional<Outline> outline = outlineSeenFrom(target, Eigen::Vector3d::Unit(proposal.outlineView));
     if (!outline || !outline->holes.empty())
       throw Error("suggest.no-outline", "the shape shows no outline of one loop from there");
-    layPieces(outline->loop, -1, "outline");
+    layPieces(outline->loop, -1, "outline", true);
   }
   for (size_t j = 0; j < proposal.planes.size(); ++j)
     for (const SectionLoop& loop : planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset))
