@@ -158,18 +158,11 @@ TEST(Creases, ABevelledEdgeIsOneCreaseAlongItsMiddle) {
   EXPECT_EQ(chamfered[0].panels, 14);
 }
 
-std::unique_ptr<DesignScene> sceneOf(const TriMesh& mesh) {
-  Design design;
-  design.target.kind = DesignTarget::Inline;
-  design.height = 0.6;
-  return makeTargetScene(design, mesh);
-}
-
 // A star cushion sewn along its creases (front, back and a gusset strip round its side) comes far closer than its two
 // pieces, halves or sealed along its outline: two flat pieces cannot make its flat sides and sharp rims.
 TEST(SeamLayouts, AStarCushionIsSewnAlongItsCreasesAndComesCloserThanItsTwoPieces) {
   BILLOW_NATIVE_ONLY_LONG_RUN();
-  const auto scene = sceneOf(test::starShape(0.3, 0.1));
+  const auto scene = test::sceneOf(test::starShape(0.3, 0.1));
   LayoutRequest request;
   request.panels = 3;
   const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
@@ -256,7 +249,7 @@ TEST(SeamLayouts, CreaseLayoutsThatKeepTheMirrorSymmetryAreTheirOwnMirrorImage) 
 // same creases without the baffle and than its pillow along the outline held together inside.
 TEST(SeamLayouts, ABoxCushionAlongItsCreasesIsHeldTogetherInsideByABaffle) {
   BILLOW_NATIVE_ONLY_LONG_RUN();
-  const auto scene = sceneOf(test::boxShape(0.6, 0.4, 0.2));
+  const auto scene = test::sceneOf(test::boxShape(0.6, 0.4, 0.2));
   LayoutRequest request;
   request.panels = 6;
   const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);

@@ -235,6 +235,54 @@ TEST(SeamLayouts, TheOutlineOnALimbsBodyKeepsItsCorners) {
   }
 }
 
+// A ring with an arm standing out of its side (a swim ring with a handle bar, a doughnut plush with a tail), seen
+// along its axis, has an outline with a hole: the limb layout along that outline cuts its front and back rings open as
+// the outline layout does (the hole's rim, two sections across the ring), on the body only.
+TEST(SeamLayouts, ARingsBodyAlongItsOutlineIsCutOpenAcrossTheRing) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
+  const double R = 1, r = 0.35;
+  const int nu = 120, nv = 40;
+  TriMesh target;
+  target.V.resize(nu * nv, 3), target.F.resize(2 * nu * nv, 3);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * test::kPi * i / nu, v = 2 * test::kPi * j / nv;
+      const Eigen::Vector3d radial(std::cos(u), std::sin(u), 0),
+          normal = std::cos(v) * radial + std::sin(v) * Eigen::Vector3d::UnitZ();
+      // The arm: a bump on the ring's outer equator at u = 0, pushed out along the surface's normal.
+      const double du = std::remainder(u, 2 * test::kPi) * (R + r), dv = std::remainder(v, 2 * test::kPi) * r;
+      const double arm = 1.2 * std::exp(-(du * du + dv * dv) / (0.2 * 0.2));
+      target.V.row(i * nv + j) = R * radial + (r + arm) * normal;
+      const int a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
+                d = i * nv + (j + 1) % nv;
+      target.F.row(2 * a) = Eigen::Vector3i(a, b, c);
+      target.F.row(2 * a + 1) = Eigen::Vector3i(a, c, d);
+    }
+  const auto scene = test::sceneOf(target);
+  const std::vector<Limb> limbs = findLimbs(scene->target);
+  ASSERT_EQ(limbs.size(), 1u);
+  LayoutRequest request;
+  request.panels = 8;
+  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  const LayoutProposal* layout = nullptr;
+  for (const LayoutProposal& p : proposals)
+    if (!p.limbs.empty() && p.outlineView == 2 && p.bands == 0) layout = &p;
+  ASSERT_NE(layout, nullptr);
+  const std::vector<DesignSeam> seams = proposalSeams(scene->target, *layout);
+  int holes = 0, across = 0;
+  for (const DesignSeam& s : seams) {
+    holes += s.name == "hole in the outline";
+    across += s.name == "across a ring";
+  }
+  EXPECT_EQ(holes, 1);
+  EXPECT_EQ(across, 2);
+  EvaluateOptions options;
+  const LayoutEvaluation e = evaluateLayout(*scene, seams, 0, options);
+  ASSERT_TRUE(e.ok) << e.problem;
+  EXPECT_TRUE(scene->segmentation.problems.empty());
+  EXPECT_EQ(e.panels, 6);  // the arm in two, the front and the back rings each in two
+}
+
 // Where the symmetry is kept, a layout's limbs come in mirror pairs (the same planes reflected) or stand on the mirror
 // plane on their own, halved along it, and the body's halving plane is its own mirror image.
 TEST(SeamLayouts, LimbLayoutsThatKeepTheMirrorSymmetryAreTheirOwnMirrorImage) {

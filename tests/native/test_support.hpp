@@ -33,6 +33,14 @@ inline std::unique_ptr<DesignScene> sharedScene(const std::string& name, double 
   return loadDesignTargetScene(design, "", {});
 }
 
+// A scene of a generated mesh, 0.6 m tall, without seams yet.
+inline std::unique_ptr<DesignScene> sceneOf(const TriMesh& mesh) {
+  Design design;
+  design.target.kind = DesignTarget::Inline;
+  design.height = 0.6;
+  return makeTargetScene(design, mesh);
+}
+
 // A file of tests/data, and the app's example meshes (web/public/examples) that designs name.
 inline std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
 inline std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }

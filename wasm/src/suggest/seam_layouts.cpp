@@ -657,10 +657,17 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
   const bool halving = proposal.outlineView < 0;
   if (!halving) {
     // The whole target's outline, laid on the body only: where a limb stands out of it, its pieces end at the root.
-    const std::optional<Outline> outline = outlineSeenFrom(target, Eigen::Vector3d::Unit(proposal.outlineView));
-    if (!outline || !outline->holes.empty())
-      throw Error("suggest.no-outline", "the shape shows no outline of one loop from there");
+    const Eigen::Vector3d towards = Eigen::Vector3d::Unit(proposal.outlineView);
+    const std::optional<Outline> outline = outlineSeenFrom(target, towards);
+    if (!outline) throw Error("suggest.no-outline", "the shape shows no outline from there");
     layPieces(outline->loop, -1, "outline", true);
+    // Seen through a handle, the front and back are rings: each hole's rim, and two sections across each ring, as the
+    // outline layout cuts them open, on the body only.
+    const std::vector<SectionLoop> across = acrossHandles(target, outline->loop, outline->holes, towards);
+    if (across.size() != 2 * outline->holes.size())
+      throw Error("suggest.no-outline", "its outline makes rings on this shape that no section cuts open");
+    for (const SectionLoop& hole : outline->holes) layPieces(hole, -1, "hole in the outline", true);
+    for (const SectionLoop& loop : across) layPieces(loop, -1, "across a ring");
   }
   for (size_t j = 0; j < proposal.planes.size(); ++j)
     for (const SectionLoop& loop : planeSection(target, proposal.planes[j].normal, proposal.planes[j].offset))
