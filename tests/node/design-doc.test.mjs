@@ -86,6 +86,22 @@ test('history: undo and redo step through snapshots; merged edits are one step',
   assert.equal(h.past.length, 2);
 });
 
+test('history: a gesture is one step however slowly it goes, and ends with endStep', () => {
+  const h = new History({ n: 0 });
+  const add = (k) => (doc) => ({ n: doc.n + k });
+  h.apply(add(1), { mergeKey: 'move:0:1', gesture: true, now: 1000 });
+  h.apply(add(1), { mergeKey: 'move:0:1', gesture: true, now: 5000 }); // a pause mid-drag
+  h.apply(add(1), { mergeKey: 'move:0:1', gesture: true, now: 9000 });
+  h.endStep();
+  h.apply(add(10), { mergeKey: 'move:0:1', gesture: true, now: 9100 }); // the same point dragged again
+  assert.equal(h.present.n, 13);
+  assert.equal(h.undo().n, 3, 'the second drag undoes alone');
+  assert.equal(h.undo().n, 0, 'the slow first drag undoes as one');
+  h.apply(add(1), { mergeKey: 'slider', now: 1000 });
+  h.apply(add(1), { mergeKey: 'slider', now: 5000 });
+  assert.equal(h.undo().n, 1, 'without gesture, edits far apart are steps of their own');
+});
+
 test('a design survives the URL hash round trip', async () => {
   const design = {
     ...newDesign('blub'),

@@ -276,10 +276,10 @@ export class App {
   }
 
   // Every change of the design goes through here: history, views, autosave.
-  commitDesign(design, { reset = false, mergeKey = null } = {}) {
+  commitDesign(design, { reset = false, mergeKey = null, gesture = false } = {}) {
     // Panels being made for the previous design are stale now, unless the edit left all they are made from
     // as it was (the mirror plane): those panels and any stored result still belong to the design.
-    if (this.store.commit(design, { reset, mergeKey })) this.panels.designChanged();
+    if (this.store.commit(design, { reset, mergeKey, gesture })) this.panels.designChanged();
     this.showDesign();
     this.save();
   }

@@ -12,11 +12,13 @@ export class History {
     this.lastTime = 0;
   }
 
-  // Applies command(doc) -> doc. mergeKey: edits with the same key within mergeMillis merge into one step.
-  apply(command, { mergeKey = null, now = Date.now() } = {}) {
+  // Applies command(doc) -> doc. mergeKey: edits with the same key within mergeMillis merge into one step; with
+  // gesture, however far apart (a point drag, whose end calls endStep: a pause mid-drag on a slow machine is still
+  // the one drag).
+  apply(command, { mergeKey = null, gesture = false, now = Date.now() } = {}) {
     const next = command(this.present);
     if (next === this.present) return this.present;
-    const merge = mergeKey !== null && mergeKey === this.lastKey && now - this.lastTime < this.mergeMillis;
+    const merge = mergeKey !== null && mergeKey === this.lastKey && (gesture || now - this.lastTime < this.mergeMillis);
     if (!merge) {
       this.past.push(this.present);
       if (this.past.length > this.limit) this.past.shift();
@@ -40,6 +42,11 @@ export class History {
     this.past = [];
     this.future = [];
     this.present = doc;
+    this.lastKey = null;
+  }
+
+  // The next edit is a step of its own, even with the same merge key (a gesture ended).
+  endStep() {
     this.lastKey = null;
   }
 

@@ -337,12 +337,13 @@ export class SeamEditor {
     this.draw();
   }
 
-  // Live drag: one undo step per drag (merged), the curve re-traced as the point moves.
+  // Live drag: one undo step per drag (merged until endDrag, however slowly it goes), the curve re-traced as the point
+  // moves.
   moveControlPoint(seam, index, point) {
     let next = cmd.moveControlPoint(this.design, seam, index, point);
     const twin = this.twinOf(next, seam);
     if (twin !== null) next = cmd.moveControlPoint(next, twin, index, this.mirrored(next, point));
-    this.app.commitDesign(next, { mergeKey: `move:${seam}:${index}` });
+    this.app.commitDesign(next, { mergeKey: `move:${seam}:${index}`, gesture: true });
     this.refresh({ segment: false });
   }
 

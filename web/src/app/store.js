@@ -38,12 +38,13 @@ export class Store {
     for (const fn of [...this.listeners]) fn(what);
   }
 
-  // The design after an edit (mergeKey: quick edits with the same key are one undo step) or, with reset, a new
-  // history starting at it. True when what the panels are made from changed: a new revision.
-  commit(design, { reset = false, mergeKey = null } = {}) {
+  // The design after an edit (mergeKey: quick edits with the same key are one undo step, all of a gesture's until
+  // endStep: History.apply) or, with reset, a new history starting at it. True when what the panels are made from
+  // changed: a new revision.
+  commit(design, { reset = false, mergeKey = null, gesture = false } = {}) {
     const before = this.design;
     if (reset) this.history.reset(design);
-    else this.history.apply(() => design, { mergeKey });
+    else this.history.apply(() => design, { mergeKey, gesture });
     return this.moved(before, reset);
   }
 
@@ -68,7 +69,7 @@ export class Store {
 
   // The next edit is a step of its own, even with the same merge key (a new drag).
   endStep() {
-    this.history.lastKey = null;
+    this.history.endStep();
   }
 
   // Another undo history in place of this one (by default a fresh one at the present design: the classroom
