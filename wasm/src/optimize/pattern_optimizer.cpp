@@ -216,13 +216,19 @@ bool PatternOptimizer::remesh() {
   const Eigen::VectorXd oldX = X_;
   const Vertices oldx = x_;
   const bool wasSimple = outlinesSimple(X_);
-  setUp(remeshed.built);
-  // The new panels must still sew. An outline that zig-zags below the edge length resamples into chords that
-  // differ across a seam; when projecting them back onto equal lengths fails, the old mesh is kept. So it is
-  // where the projection makes an outline cross itself (a tight bend's chords pulled across each other), since
+  // The new panels must still sew. Their sewn mesh may not close (three panels' edges on one seam where a corner's
+  // chords meet differently): the old mesh is kept. An outline that zig-zags below the edge length resamples into
+  // chords that differ across a seam; when projecting them back onto equal lengths fails, the old mesh is kept. So it
+  // is where the projection makes an outline cross itself (a tight bend's chords pulled across each other), since
   // such a panel cannot be cut.
-  const bool sewable = !projectTrials_ ||
-                       (projectStart() && objective_->maxEdgeMismatch(X_) < 1e-6 && (!wasSimple || outlinesSimple(X_)));
+  bool sewn = true;
+  try {
+    setUp(remeshed.built);
+  } catch (const Error&) {
+    sewn = false;
+  }
+  const bool sewable = sewn && (!projectTrials_ || (projectStart() && objective_->maxEdgeMismatch(X_) < 1e-6 &&
+                                                    (!wasSimple || outlinesSimple(X_))));
   Vertices x;
   int newton = 0;
   if (!sewable || !solveEquilibrium(X_, x_, x, &newton)) {  // back to the old mesh
