@@ -1,4 +1,4 @@
-// Embind for the core entry points (validation, version, crash test). The bindings/ folder is the only
+// Embind for the core entry points (validation, version, memory in use, crash test). The bindings/ folder is the only
 // place that knows embind. Bulk data crosses as pointers into the wasm heap that the JS layer
 // (web/src/worker/solver-api.js) fills from typed arrays; results return as JSON text plus heap arrays.
 // Every entry point catches errors and returns {"status":"error","code","message"}: no exception
@@ -14,6 +14,7 @@
 #include "mesh/validate.hpp"
 #include "simulate/materials.hpp"
 #include "suggest/seam_layouts.hpp"
+#include "util/memory_budget.hpp"
 
 namespace {
 
@@ -76,4 +77,5 @@ EMSCRIPTEN_BINDINGS(billow) {
   emscripten::function("version", &version);
   emscripten::function("materialPresets", &materialPresets);
   emscripten::function("chooseLooks", &chooseLooks);
+  emscripten::function("bytesInUse", &billow::bytesInUse);
 }

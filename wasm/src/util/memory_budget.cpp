@@ -52,6 +52,14 @@ double availableBytes() {
 #endif
 }
 
+double bytesInUse() {
+#ifdef __EMSCRIPTEN__
+  return static_cast<double>(mallinfo().uordblks);
+#else
+  return 0;
+#endif
+}
+
 std::string formatBytes(double bytes) {
   char text[32];
   if (bytes >= 1024 * kMiB)

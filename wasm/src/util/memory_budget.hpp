@@ -21,6 +21,10 @@ double optimizationBytes(long long patternTriangles, long long targetTriangles);
 // natively the machine's physical memory.
 double availableBytes();
 
+// Bytes the allocator has handed out and not yet had back (mallinfo's in-use count). In WebAssembly only; natively
+// 0. Unlike the heap's size, it falls again when memory is freed, so a leak shows as a rise between two alike moments.
+double bytesInUse();
+
 // Where the budget comes from, in words ("a browser tab gives Billow 2.0 GB"), for messages.
 std::string budgetDescription(double budgetBytes);
 

@@ -30,13 +30,15 @@ export class SolverApi {
     return { ...rest, pdf };
   }
 
-  // [{ name, label, thickness, youngs_modulus, density, max_stress }] (wasm/src/simulate/materials.cpp)
+  // The wasm heap's size, where a fresh 1 MB block lands (it rises as the free blocks fragment or leak) and the
+  // bytes in use (they rise only with what is held: a leak).
   memoryStats() {
     const probe = this.module._malloc(1 << 20);
     this.module._free(probe);
-    return { heapBytes: this.module.HEAPU8.length, probe };
+    return { heapBytes: this.module.HEAPU8.length, probe, inUse: this.module.bytesInUse() };
   }
 
+  // [{ name, label, thickness, youngs_modulus, density, max_stress }] (wasm/src/simulate/materials.cpp)
   materialPresets() {
     return SolverApi.unwrap(this.module.materialPresets());
   }
