@@ -17,6 +17,7 @@
 #include "pattern/segment_pieces.hpp"
 #include "remesh/panel_mesher.hpp"
 #include "test_support.hpp"
+#include "util/union_find.hpp"
 
 using namespace billow;
 using billow::test::dataPath;
@@ -270,6 +271,59 @@ TEST(PatternBuild, SlitFromTheEquatorIsSewnBackOnItself) {
   for (size_t p = 0; p < 2; ++p)
     for (const PanelPiece& piece : bp.panels[p].pieces) slitPieces += piece.neighborPanel == static_cast<int>(p);
   EXPECT_EQ(slitPieces, 2);  // the two sides of the slit, stitched to each other on the same panel
+}
+
+// A dart sewn shut (pieces 0 and 1 of one panel stitched to each other) whose mesh joins an inside vertex to both
+// its sides next to the tip: sewn, those two edges would be one, a pinch sewPattern refuses ("more than two outer
+// panels meet along one edge"). Stitching flips one of them to the other diagonal of its quad.
+TEST(PatternBuild, AnInsideVertexMeshedToBothSidesOfADartIsFlippedOffOne) {
+  BuiltPattern built;
+  Panel panel;
+  panel.name = "Panel 1";
+  panel.vertices.resize(10, 2);  // the outline (the dart P0 A1 T B1 P1 cut up into a square), then X inside
+  panel.vertices << 0, 0, 0.8, 0, 0.9, 0.5, 1, 1, 1.1, 0.5, 1.2, 0, 2, 0, 2, 2, 0, 2, 1, 1.3;
+  enum { L, P0, A1, T, B1, P1, R, RT, LT, X };
+  panel.triangles.resize(9, 3);
+  panel.triangles << L, P0, A1, L, A1, X, L, X, LT, A1, T, X, T, B1, X, B1, P1, R, B1, R, X, X, R, RT, X, RT, LT;
+  const double area = panelArea(panel);
+  BuiltPanel bp;
+  bp.boundaryVertices = 9;
+  bp.targetPosition = Vertices::Zero(10, 3);
+  bp.pieces = {{{P0, A1, T}, 0, 0, 1}, {{T, B1, P1}, 0, 0, 0}, {{P1, R, RT, LT, L, P0}, 1}};
+  built.pattern.panels = {panel};
+  built.panels = {bp};
+  // Sewn points as the stitches make them; every edge of the panel, sewn, must join two points and be used once
+  // each way at most.
+  const auto pinches = [](const BuiltPattern& b) {
+    UnionFind point(static_cast<int>(b.pattern.panels[0].vertices.rows()));
+    for (const Stitch& s : b.pattern.stitches) point.unite(s.vertexA, s.vertexB);
+    std::map<std::pair<int, int>, int> uses;
+    int bad = 0;
+    const Triangles& F = b.pattern.panels[0].triangles;
+    for (int t = 0; t < F.rows(); ++t)
+      for (int c = 0; c < 3; ++c) {
+        const int u = point.find(F(t, c)), v = point.find(F(t, (c + 1) % 3));
+        bad += u == v || ++uses[{u, v}] > 1;
+      }
+    return bad;
+  };
+  built.pattern.stitches = {{0, A1, 0, B1}};  // as stitchBuiltPattern would, before mending
+  ASSERT_GT(pinches(built), 0) << "the fixture must pinch when sewn";
+  stitchBuiltPattern(built);
+  EXPECT_EQ(pinches(built), 0);
+  const Panel& mended = built.pattern.panels[0];
+  EXPECT_EQ(mended.triangles.rows(), 9);
+  EXPECT_NEAR(panelArea(mended), area, 1e-12);
+  for (int t = 0; t < mended.triangles.rows(); ++t)
+    EXPECT_GT(signedArea(mended, t), 0) << "triangle " << t << " is flipped";
+  const Triangles& F = mended.triangles;
+  int edgesAtX = 0;  // X keeps one of its two edges to the sewn point A1 = B1
+  for (int t = 0; t < F.rows(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const int u = F(t, c), v = F(t, (c + 1) % 3);
+      edgesAtX += u == X && (v == A1 || v == B1);
+    }
+  EXPECT_EQ(edgesAtX, 1);
 }
 
 TEST(PatternBuild, SpotWithTenSeams) {

@@ -216,8 +216,8 @@ bool PatternOptimizer::remesh() {
   const Eigen::VectorXd oldX = X_;
   const Vertices oldx = x_;
   const bool wasSimple = outlinesSimple(X_);
-  // The new panels must still sew. Their sewn mesh may not close (three panels' edges on one seam where a corner's
-  // chords meet differently): the old mesh is kept. An outline that zig-zags below the edge length resamples into
+  // The new panels must still sew. Their sewn mesh may not close where a pinch is beyond flipPinchingEdges' mending
+  // (sewn_pattern.hpp): the old mesh is kept. An outline that zig-zags below the edge length resamples into
   // chords that differ across a seam; when projecting them back onto equal lengths fails, the old mesh is kept. So it
   // is where the projection makes an outline cross itself (a tight bend's chords pulled across each other), since
   // such a panel cannot be cut.

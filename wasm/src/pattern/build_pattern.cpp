@@ -155,6 +155,7 @@ void stitchPieces(BuiltPattern& out) {
       const auto [p1, v1] = where(members[i]);
       out.pattern.stitches.push_back({p0, v0, p1, v1});
     }
+  flipPinchingEdges(out.pattern);
 }
 
 }  // namespace

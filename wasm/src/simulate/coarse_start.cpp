@@ -173,6 +173,7 @@ std::optional<Pattern> coarsenPattern(const Pattern& pattern, const SewnMesh& me
   for (const auto& [s, list] : atSimVertex)
     for (size_t i = 1; i < list.size(); ++i)
       coarse.stitches.push_back({list[i - 1].first, list[i - 1].second, list[i].first, list[i].second});
+  flipPinchingEdges(coarse);
   return coarse;
 }
 

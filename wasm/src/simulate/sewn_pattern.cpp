@@ -2,10 +2,12 @@
 #include "simulate/sewn_pattern.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <numeric>
 
+#include "remesh/predicates.hpp"
 #include "util/error.hpp"
 #include "util/union_find.hpp"
 
@@ -262,6 +264,63 @@ std::vector<Vertices> panelPositions(const SewnMesh& mesh, const Vertices& x) {
     for (int v = 0; v < out[p].rows(); ++v) out[p].row(v) = x.row(mesh.simVertex(p, v));
   }
   return out;
+}
+
+namespace {
+
+// Flips the edge from corner c to c + 1 of triangle t to the other diagonal of the quad it shares with its
+// neighbour, when that quad is convex and `accept` takes the new edge's ends.
+template <class Accept>
+bool flipEdge(Panel& panel, int t, int c, const Accept& accept) {
+  Triangles& F = panel.triangles;
+  const int a = F(t, c), b = F(t, (c + 1) % 3), apex = F(t, (c + 2) % 3);
+  const auto at = [&](int v) -> Eigen::Vector2d { return panel.vertices.row(v).transpose(); };
+  for (int u = 0; u < F.rows(); ++u)
+    for (int k = 0; k < 3; ++k) {
+      if (F(u, k) != b || F(u, (k + 1) % 3) != a) continue;
+      const int d = F(u, (k + 2) % 3);
+      if (orient2d(at(a), at(d), at(apex)) <= 0 || orient2d(at(d), at(b), at(apex)) <= 0 || !accept(apex, d))
+        return false;
+      F.row(t) << a, d, apex;
+      F.row(u) << d, b, apex;
+      return true;
+    }
+  return false;  // on the panel's outline
+}
+
+}  // namespace
+
+int flipPinchingEdges(Pattern& pattern) {
+  std::vector<int> start{0};
+  for (const Panel& panel : pattern.panels) start.push_back(start.back() + static_cast<int>(panel.vertices.rows()));
+  UnionFind point(start.back());
+  for (const Stitch& s : pattern.stitches) point.unite(start[s.panelA] + s.vertexA, start[s.panelB] + s.vertexB);
+  int flips = 0;
+  for (int pass = 0; pass < 100; ++pass) {
+    std::map<std::pair<int, int>, std::vector<std::array<int, 3>>> uses;  // sewn edge -> (panel, triangle, corner)
+    for (int p = 0; p < static_cast<int>(pattern.panels.size()); ++p) {
+      if (pattern.panels[p].internal) continue;  // sewn onto seams on purpose (an internal connection)
+      const Triangles& F = pattern.panels[p].triangles;
+      for (int t = 0; t < F.rows(); ++t)
+        for (int c = 0; c < 3; ++c)
+          uses[{point.find(start[p] + F(t, c)), point.find(start[p] + F(t, (c + 1) % 3))}].push_back({p, t, c});
+    }
+    bool flipped = false;
+    for (const auto& [edge, at] : uses) {
+      if (edge.first != edge.second && at.size() < 2) continue;
+      for (const auto& [p, t, c] : at) {
+        const auto isNew = [&, p = p](int u, int v) {
+          const int su = point.find(start[p] + u), sv = point.find(start[p] + v);
+          return su != sv && !uses.count({su, sv}) && !uses.count({sv, su});
+        };
+        if ((flipped = flipEdge(pattern.panels[p], t, c, isNew))) break;
+      }
+      if (flipped) break;
+    }
+    if (!flipped) break;  // none left, or none a flip mends (sewPattern says where)
+    ++flips;
+  }
+  return flips;
 }
 
 }  // namespace billow

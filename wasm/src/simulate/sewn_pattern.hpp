@@ -39,6 +39,13 @@ SewnMesh sewPattern(const Pattern& pattern, const PatternLimits& limits = {});
 // Panel p's seam corners (its vertices with seamCorner 1), as Panel::seamCorners marks them.
 std::vector<int> seamCorners(const SewnMesh& mesh, int panel);
 
+// Sewing makes the panels' meshes one surface; it pinches where an edge inside a panel joins two vertices the
+// stitches make one point (an inside vertex beside the end of a slit sewn shut, meshed to both its sides) or is
+// sewn onto another edge (three panels' triangles on one edge). sewPattern refuses both; the panel mesher does not
+// know the stitches to avoid them. Each such edge is flipped to the other diagonal of its two triangles where they
+// form a convex quad and that diagonal is a new edge of the sewn surface. Returns the flips made.
+int flipPinchingEdges(Pattern& pattern);
+
 // Outer triangles only, as a closed mesh with merged vertices (for OBJ export and the volume).
 Triangles outerTriangles(const SewnMesh& mesh);
 
