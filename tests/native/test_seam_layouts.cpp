@@ -354,6 +354,23 @@ TEST(SuggestCommand, WritesRankedLayoutsThatOpenAsDesigns) {
     EXPECT_EQ(int(scene->segmentation.segments.size()), l["panels"].get<int>()) << l["name"];
     EXPECT_TRUE(fs::exists(dir / l["pattern"].get<std::string>()));
   }
+  EXPECT_EQ(out.find("mm sheet)"), std::string::npos) << out;
+  // At 3 m its gores and halves are wider than the 1 m roll: the table says what sheet each layout needs, which
+  // is why one closer than another may rank after it.
+  ASSERT_EQ(test::runCapture(test::cliPath() + " suggest " + test::meshPath("sphere.obj") +
+                                 " --height 3 --panels 4 --resolution 400 --max-iterations 8 --optimize 2 --out-dir " +
+                                 dir.string(),
+                             out),
+            0)
+      << out;
+  std::ifstream wide(dir / "summary.json");
+  for (const nlohmann::json& l : nlohmann::json::parse(wide)["layouts"]) {
+    const long sheet = std::lround(l["sheet_needed_mm"].get<double>());
+    EXPECT_GT(sheet, 1000) << l["name"];
+    EXPECT_NE(out.find(l["name"].get<std::string>() + " (needs a " + std::to_string(sheet) + " mm sheet)"),
+              std::string::npos)
+        << out;
+  }
   // A shape with no mirror symmetry cannot keep one; a panel count out of range is refused before any work.
   EXPECT_EQ(test::runCapture(test::cliPath() + " suggest " + test::meshPath("bunny.obj") +
                                  " --panels 4 --symmetry --out-dir " + dir.string(),

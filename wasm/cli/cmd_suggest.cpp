@@ -235,10 +235,14 @@ int suggestCommand(const std::vector<std::string>& argv) {
       {"not_used", notUsed}};
   writeFile(dir + "/summary.json", summary.dump(2) + "\n");
   std::printf("rank  panels  distance %%  seams m  layout\n");
-  for (const json& l : layouts)
-    std::printf("%4d  %6d  %10.2f  %7.2f  %s\n", l["rank"].get<int>(), l["panels"].get<int>(),
+  for (const json& l : layouts) {
+    // A layout with a piece wider than the sheet comes after those that fit, whatever its distance: say why.
+    const double sheet = l["sheet_needed_mm"].get<double>();
+    const std::string needs = sheet > 0 ? " (needs a " + std::to_string(std::lround(sheet)) + " mm sheet)" : "";
+    std::printf("%4d  %6d  %10.2f  %7.2f  %s%s\n", l["rank"].get<int>(), l["panels"].get<int>(),
                 100 * l["distance"]["worse_way_rms"].get<double>(), l["seam_length_m"].get<double>(),
-                l["name"].get<std::string>().c_str());
+                l["name"].get<std::string>().c_str(), needs.c_str());
+  }
   if (ranked.empty()) {
     std::fprintf(stderr,
                  "billow suggest: none of the %zu layouts could be made into at most %d panels on this shape (why: "
