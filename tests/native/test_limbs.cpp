@@ -16,8 +16,6 @@
 namespace billow {
 namespace {
 
-double meshDiagonal(const TriMesh& m) { return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm(); }
-
 double meshArea(const TriMesh& m) {
   double area = 0;
   for (int f = 0; f < m.F.rows(); ++f) {
@@ -30,7 +28,7 @@ double meshArea(const TriMesh& m) {
 // Each limb is closed off by its root loop: a loop where its level is zero, every path from the limb's faces to the
 // body's crossing the faces the loop passes through; the tip on the limb, the limb a small part of the surface.
 void expectLimbsClosedOff(const TriMesh& mesh, const std::vector<Limb>& limbs) {
-  const double D = meshDiagonal(mesh), total = meshArea(mesh);
+  const double D = test::boxDiagonal(mesh), total = meshArea(mesh);
   std::vector<std::set<int>> vertexFaces(size_t(mesh.V.rows()));
   for (int f = 0; f < mesh.F.rows(); ++f)
     for (int k = 0; k < 3; ++k) vertexFaces[size_t(mesh.F(f, k))].insert(f);
@@ -222,7 +220,7 @@ TEST(SeamLayouts, TheOutlineOnALimbsBodyKeepsItsCorners) {
     if (!p.limbs.empty() && p.outlineView == 2 && p.bands == 0) layout = &p;
   ASSERT_NE(layout, nullptr);
   const std::vector<DesignSeam> seams = proposalSeams(target, *layout);
-  const double diagonal = meshDiagonal(target);
+  const double diagonal = test::boxDiagonal(target);
   for (const Eigen::Vector2d& corner : {corners[0], corners[1], corners[6], corners[7]}) {
     double nearest = INFINITY;
     for (const DesignSeam& s : seams)
@@ -288,7 +286,7 @@ TEST(SeamLayouts, ARingsBodyAlongItsOutlineIsCutOpenAcrossTheRing) {
 TEST(SeamLayouts, LimbLayoutsThatKeepTheMirrorSymmetryAreTheirOwnMirrorImage) {
   for (const char* name : {"koala.obj", "elephant.obj"}) {
     const TriMesh target = test::loadShared(name);
-    const double mid = 0.5 * (target.V.col(0).maxCoeff() + target.V.col(0).minCoeff()), D = meshDiagonal(target);
+    const double mid = 0.5 * (target.V.col(0).maxCoeff() + target.V.col(0).minCoeff()), D = test::boxDiagonal(target);
     const auto reflected = [&](const SectionPlane& p) {
       SectionPlane q{p.normal, p.offset - 2 * mid * p.normal.x()};
       q.normal.x() = -q.normal.x();

@@ -21,7 +21,6 @@ namespace {
 
 using test::loadShared;
 
-double diagonal(const TriMesh& m) { return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm(); }
 Eigen::Vector3d boxMiddle(const TriMesh& m) { return 0.5 * (m.V.colwise().maxCoeff() + m.V.colwise().minCoeff()); }
 
 // A layout's balloon (LayoutBalloon) is its shape as evaluated: a closed outer surface of its panels, its distances
@@ -66,7 +65,7 @@ TEST(PlaneSection, TheSphereEquatorIsOneLoopOnThePlaneAndOnTheSurface) {
   const Eigen::Vector3d n = Eigen::Vector3d(1, 2, 0.5).normalized(), c = boxMiddle(sphere);
   const std::vector<SectionLoop> loops = planeSection(sphere, n, n.dot(c));
   ASSERT_EQ(loops.size(), 1u);
-  const double D = diagonal(sphere), r = 0.5 * (sphere.V.col(0).maxCoeff() - sphere.V.col(0).minCoeff());
+  const double D = test::boxDiagonal(sphere), r = 0.5 * (sphere.V.col(0).maxCoeff() - sphere.V.col(0).minCoeff());
   for (const SectionPoint& p : loops[0]) {
     EXPECT_NEAR(p.position.dot(n), n.dot(c), 1e-8 * D);
     EXPECT_LT((position(sphere, p.at) - p.position).norm(), 1e-12 * D);
@@ -88,8 +87,8 @@ TEST(PlaneSection, APlaneBesideTheShapeCutsNothingAndOneThroughFourLegsCutsFour)
   const std::vector<SectionLoop> legs = planeSection(spot, up, low);
   EXPECT_EQ(legs.size(), 4u);
   for (const SectionLoop& leg : legs)
-    for (const SurfacePoint& p : sectionPathPoints(spot, leg, 0.01 * diagonal(spot)))
-      EXPECT_NEAR(position(spot, p).y(), low, 1e-8 * diagonal(spot));
+    for (const SurfacePoint& p : sectionPathPoints(spot, leg, 0.01 * test::boxDiagonal(spot)))
+      EXPECT_NEAR(position(spot, p).y(), low, 1e-8 * test::boxDiagonal(spot));
 }
 
 TEST(SeamLayouts, TheMirrorSymmetryOfTheCowIsFoundAndTheBunnyHasNone) {
@@ -112,7 +111,7 @@ TEST(SeamLayouts, ProposalsHaveThePanelsAskedForAndSymmetricOnesAreTheirOwnMirro
     const std::vector<LayoutProposal> proposals = proposeLayouts(target, request);
     ASSERT_FALSE(proposals.empty()) << panels;
     std::set<std::string> names;
-    const double mid = boxMiddle(target).x(), D = diagonal(target);
+    const double mid = boxMiddle(target).x(), D = test::boxDiagonal(target);
     for (const LayoutProposal& p : proposals) {
       // Down to half the panels asked for (four fewer at small counts), room for the limbs a shape adds (at most the
       // panels asked for); a front and a back along an outline at any count. An internal connection is a panel too.

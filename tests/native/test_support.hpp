@@ -24,6 +24,9 @@ inline std::string meshPath(const std::string& name) { return std::string(BILLOW
 
 inline TriMesh loadShared(const std::string& name) { return readMeshBytes(readFileBytes(meshPath(name)), name); }
 
+// The diagonal of a mesh's bounding box.
+inline double boxDiagonal(const TriMesh& m) { return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm(); }
+
 // A scene of a shared mesh, `height` meters tall, without seams yet.
 inline std::unique_ptr<DesignScene> sharedScene(const std::string& name, double height = 0.6) {
   Design design;

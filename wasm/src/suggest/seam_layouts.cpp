@@ -17,6 +17,7 @@
 #include "seams/outline.hpp"
 #include "seams/plane_section.hpp"
 #include "seams/surface_distance.hpp"
+#include "suggest/segment_cuts.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -149,6 +150,7 @@ std::string LayoutEvaluation::description() const {
   };
   add(opened.tubeCuts, "cut that opens a tube", "cuts that open tubes");
   add(opened.limbSeams, "seam around a limb", "seams around limbs");
+  add(opened.handleSeams, "seam around a handle", "seams around handles");
   add(opened.grazingLoops, "loop left out where it only grazed the shape",
       "loops left out where they only grazed the shape");
   add(int(connections.size()), "internal connection joining a band seam's front and back pieces inside",
@@ -976,13 +978,32 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
 
 namespace {
 
+// Control points about `spacing` apart along a path of cut-mesh vertices (a loop when `closed`: at least three), its
+// ends kept, as the layout's own seams are laid: traced between them, the seam follows the path.
+std::vector<SurfacePoint> controlsAlong(const Segmentation& sg, const std::vector<int>& path, double spacing,
+                                        bool closed) {
+  const TriMesh& m = sg.mesh;
+  const size_t n = path.size();
+  std::vector<double> along{0};
+  for (size_t i = 1; i < n + (closed ? 1 : 0); ++i)
+    along.push_back(along.back() + (m.V.row(path[i % n]) - m.V.row(path[i - 1])).norm());
+  const double total = along.back();
+  const int pieces = std::max(closed ? 3 : 1, int(std::lround(total / spacing)));
+  std::vector<SurfacePoint> controls;
+  for (size_t i = 0, k = 0; i < n && int(k) < pieces; ++i)
+    if (along[i] >= total * double(k) / pieces) controls.push_back(sg.vertexOrigin[size_t(path[i])]), ++k;
+  if (!closed && n >= 2) controls.push_back(sg.vertexOrigin[size_t(path.back())]);
+  return controls;
+}
+
 // Seams that make a layout's segments panels, where plane sections alone leave a segment that is not one: a segment
 // between two loops or more (a plane across a limb leaves a tube, a limb's end cut off inside a band leaves a hole)
-// gets, from each of its loops but the longest, a seam to its nearest point of another loop (the cut that opens a
-// tube, as a designer would add it); a segment too big for its seam (a limb's end) gets the plane section across
-// its longest extent where that loop lies within it, else across the next (around its limbs); a tiny or thin segment
-// loses the shortest closed seam of the layout's own around it (a plane grazing a toe). The first `fixedSeams` seams
-// are the designer's and stay. Counts what it did in `opened`; returns how many seams it added or removed.
+// gets cuts through it that join its loops (cutsJoiningLoops: the cuts that open a tube, as a designer would add
+// them); a segment around a handle a closed seam around it (loopAroundHandle); a segment
+// too big for its seam (a limb's end) gets the plane section across its longest extent where that loop lies within it,
+// else across the next (around its limbs); a tiny or thin segment loses the shortest closed seam of the layout's own
+// around it (a plane grazing a toe). The first `fixedSeams` seams are the designer's and stay. Counts what it did in
+// `opened`; returns how many seams it added or removed.
 int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::vector<DesignSeam>& seams,
                  std::vector<DesignConnection>& connections, LayoutOpenings& opened) {
   const Segmentation& sg = scene.segmentation;
@@ -1038,23 +1059,21 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
     if (problem.segment < 0) continue;
     const Segment& segment = sg.segments[problem.segment];
     if (problem.code == "segment.not-disk" && segment.genus == 0 && segment.loops.size() >= 2) {
-      size_t outer = 0;
-      for (size_t l = 1; l < segment.loops.size(); ++l)
-        if (loopLength(cut, segment.loops[l]) > loopLength(cut, segment.loops[outer])) outer = l;
-      for (size_t l = 0; l < segment.loops.size(); ++l) {
-        if (l == outer) continue;
-        int from = -1, to = -1;
-        double best = INFINITY;
-        for (size_t o = 0; o < segment.loops.size(); ++o) {
-          if (o == l) continue;
-          for (int a : segment.loops[l].vertices)
-            for (int b : segment.loops[o].vertices)
-              if (const double d = (cut.V.row(a) - cut.V.row(b)).squaredNorm(); d < best) best = d, from = a, to = b;
-        }
-        if (from < 0) continue;
-        seams.push_back(makeSeam("a cut that opens a tube", false, {sg.vertexOrigin[from], sg.vertexOrigin[to]}));
+      for (std::vector<int> path : cutsJoiningLoops(sg, problem.segment)) {
+        // From one side of a seam round to its other side (a ring's seam around its tube), the cut is a loop of its own
+        // through that seam.
+        const bool round = path.size() > 3 && path.front() == path.back();
+        if (round) path.pop_back();
+        seams.push_back(makeSeam("a cut that opens a tube", round, controlsAlong(sg, path, spacing, round)));
         ++added, ++opened.tubeCuts;
       }
+    } else if (problem.code == "segment.not-disk" && segment.genus > 0) {
+      const std::vector<int> loop = loopAroundHandle(sg, problem.segment);
+      if (loop.size() < 3) continue;
+      const std::vector<SurfacePoint> controls = controlsAlong(sg, loop, spacing, true);
+      if (controls.size() < 3) continue;
+      seams.push_back(makeSeam("a seam around a handle", true, controls));
+      ++added, ++opened.handleSeams;
     } else if (problem.code == "segment.too-big-for-seam") {
       Eigen::Vector3d center = Eigen::Vector3d::Zero();
       Eigen::Matrix3d second = Eigen::Matrix3d::Zero();

@@ -104,6 +104,7 @@ struct LayoutBalloon {
 struct LayoutOpenings {
   int tubeCuts = 0;      // cuts that open a tube or a holed part
   int limbSeams = 0;     // sections across a part too big for its seam, around a limb
+  int handleSeams = 0;   // closed seams around a handle of a part
   int grazingLoops = 0;  // loops of its own left out, that only grazed the shape (a tiny or thin part)
 };
 

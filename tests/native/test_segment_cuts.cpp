@@ -1,0 +1,164 @@
+// Cuts that open a segment that is not a disk (suggest/segment_cuts.hpp): a loop around a handle that goes the short
+// way round and leaves the segment whole, and paths through a segment that join all its seam loops; with them a
+// suggested layout's segments become panels where plane sections leave a ring or a part with holes.
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "pattern/design_scene.hpp"
+#include "seams/plane_section.hpp"
+#include "suggest/seam_layouts.hpp"
+#include "suggest/segment_cuts.hpp"
+#include "test_support.hpp"
+#include "util/union_find.hpp"
+
+using namespace billow;
+
+namespace {
+
+// A ring around z: radius R to the tube's middle, tube radius r.
+TriMesh ringMesh(double R, double r, int nu = 120, int nv = 40) {
+  TriMesh m;
+  m.V.resize(nu * nv, 3), m.F.resize(2 * nu * nv, 3);
+  for (int i = 0; i < nu; ++i)
+    for (int j = 0; j < nv; ++j) {
+      const double u = 2 * test::kPi * i / nu, v = 2 * test::kPi * j / nv;
+      const Eigen::Vector3d radial(std::cos(u), std::sin(u), 0);
+      m.V.row(i * nv + j) = R * radial + r * (std::cos(v) * radial + std::sin(v) * Eigen::Vector3d::UnitZ());
+      const int a = i * nv + j, b = ((i + 1) % nu) * nv + j, c = ((i + 1) % nu) * nv + (j + 1) % nv,
+                d = i * nv + (j + 1) % nv;
+      m.F.row(2 * a) = Eigen::Vector3i(a, b, c);
+      m.F.row(2 * a + 1) = Eigen::Vector3i(a, c, d);
+    }
+  return m;
+}
+
+// Consecutive vertices of a path are joined by an edge of the mesh's triangles.
+bool joinedByEdges(const TriMesh& m, const std::vector<int>& path, bool closed) {
+  std::set<std::pair<int, int>> edges;
+  for (int t = 0; t < m.F.rows(); ++t)
+    for (int k = 0; k < 3; ++k) edges.insert(std::minmax(m.F(t, k), m.F(t, (k + 1) % 3)));
+  for (size_t i = 0; i + (closed ? 0 : 1) < path.size(); ++i)
+    if (!edges.count(std::minmax(path[i], path[(i + 1) % path.size()]))) return false;
+  return true;
+}
+
+// A closed seam along a plane section, control points `spacing` apart.
+DesignSeam seamAlong(const TriMesh& target, const SectionLoop& loop, double spacing) {
+  DesignSeam seam;
+  seam.closed = true;
+  for (const SurfacePoint& p : sectionSeamPoints(target, loop, spacing)) {
+    DesignPoint point;
+    point.onSurface = true, point.surface = p;
+    seam.points.push_back(point);
+  }
+  return seam;
+}
+
+void segmentWith(DesignScene& scene, const std::vector<DesignSeam>& seams) {
+  scene.design.seams = seams;
+  traceDesignSeams(scene);
+  segmentDesignScene(scene);
+}
+
+}  // namespace
+
+TEST(SegmentCuts, TheLoopAroundARingGoesTheShortWayRound) {
+  const double R = 1, r = 0.35;
+  const TriMesh shape = ringMesh(R, r);
+  const auto scene = test::sceneOf(shape);
+  segmentWith(*scene, {});
+  const Segmentation& sg = scene->segmentation;
+  ASSERT_EQ(sg.segments.size(), 1u);
+  ASSERT_EQ(sg.segments[0].genus, 1);
+  const std::vector<int> loop = loopAroundHandle(sg, 0);
+  ASSERT_GE(loop.size(), 3u);
+  EXPECT_TRUE(joinedByEdges(sg.mesh, loop, true));
+  EXPECT_EQ(std::set<int>(loop.begin(), loop.end()).size(), loop.size()) << "a simple loop";
+  // Round the tube (2 pi r, the mesh's 40-gon a little less), not round the hole (2 pi (R - r) and more).
+  const double scale = test::boxDiagonal(scene->target) / test::boxDiagonal(shape);
+  double length = 0;
+  for (size_t i = 0; i < loop.size(); ++i)
+    length += (sg.mesh.V.row(loop[i]) - sg.mesh.V.row(loop[(i + 1) % loop.size()])).norm();
+  EXPECT_NEAR(length / scale, 2 * test::kPi * r, 0.03 * 2 * test::kPi * r);
+  // A sphere has no handle.
+  const auto ball = test::sharedScene("sphere.obj");
+  segmentWith(*ball, {});
+  ASSERT_EQ(ball->segmentation.segments.size(), 1u);
+  EXPECT_TRUE(loopAroundHandle(ball->segmentation, 0).empty());
+}
+
+TEST(SegmentCuts, PathsThroughAPartJoinAllItsLoopsOnce) {
+  // The sphere with three caps cut off around three axes: the rest is one part with three seam loops.
+  const auto scene = test::sharedScene("sphere.obj");
+  const TriMesh& target = scene->target;
+  const Eigen::Vector3d center = 0.5 * (target.V.colwise().maxCoeff() + target.V.colwise().minCoeff()).transpose();
+  const double radius = 0.5 * (target.V.col(0).maxCoeff() - target.V.col(0).minCoeff());
+  std::vector<DesignSeam> seams;
+  for (int axis = 0; axis < 3; ++axis) {
+    const Eigen::Vector3d n = Eigen::Vector3d::Unit(axis);
+    const std::vector<SectionLoop> loops = planeSection(target, n, n.dot(center) + 0.8 * radius);
+    ASSERT_EQ(loops.size(), 1u);
+    seams.push_back(seamAlong(target, loops[0], 0.05 * radius));
+  }
+  segmentWith(*scene, seams);
+  const Segmentation& sg = scene->segmentation;
+  int part = -1;
+  for (int s = 0; s < int(sg.segments.size()); ++s)
+    if (sg.segments[size_t(s)].loops.size() == 3) part = s;
+  ASSERT_GE(part, 0);
+  const Segment& rest = sg.segments[size_t(part)];
+  const std::vector<std::vector<int>> cuts = cutsJoiningLoops(sg, part);
+  ASSERT_EQ(cuts.size(), 2u);
+  std::vector<int> loopOf(size_t(sg.mesh.V.rows()), -1);
+  for (size_t l = 0; l < rest.loops.size(); ++l)
+    for (int v : rest.loops[l].vertices) loopOf[size_t(v)] = int(l);
+  std::set<int> inside;
+  for (int t : rest.triangles)
+    for (int k = 0; k < 3; ++k) inside.insert(sg.mesh.F(t, k));
+  UnionFind joined(3);
+  for (const std::vector<int>& cut : cuts) {
+    ASSERT_GE(cut.size(), 2u);
+    EXPECT_TRUE(joinedByEdges(sg.mesh, cut, false));
+    const int from = loopOf[size_t(cut.front())], to = loopOf[size_t(cut.back())];
+    ASSERT_GE(from, 0);
+    ASSERT_GE(to, 0);
+    EXPECT_NE(joined.find(from), joined.find(to)) << "two cuts between the same loops cut a piece off";
+    joined.unite(from, to);
+    for (size_t i = 1; i + 1 < cut.size(); ++i) {
+      EXPECT_EQ(loopOf[size_t(cut[i])], -1) << "a cut runs through the part, off its seams";
+      EXPECT_TRUE(inside.count(cut[i]));
+    }
+  }
+  EXPECT_EQ(joined.find(1), joined.find(0));
+  EXPECT_EQ(joined.find(2), joined.find(0));
+
+  // As a suggested layout: the cuts open the part, in one round.
+  EvaluateOptions look;
+  look.maxIterations = 0;
+  look.openingRounds = 1;
+  const LayoutEvaluation e = evaluateLayout(*scene, seams, 0, look);
+  ASSERT_TRUE(e.ok) << e.problem;
+  EXPECT_EQ(e.panels, 4);
+  EXPECT_EQ(e.opened.tubeCuts, 2);
+}
+
+// A ring with a patch cut off its outside: the rest goes round the hole and is no panel until a seam goes round its
+// tube and cuts join that seam's two sides and the patch's seam; the layout says so.
+TEST(SegmentCuts, ARingIsOpenedAroundItsHandle) {
+  const TriMesh shape = ringMesh(1, 0.35, 90, 30);
+  const auto scene = test::sceneOf(shape);
+  const TriMesh& target = scene->target;
+  const double right = target.V.col(0).maxCoeff(), width = right - target.V.col(0).minCoeff();
+  const std::vector<SectionLoop> patch = planeSection(target, Eigen::Vector3d::UnitX(), right - 0.05 * width);
+  ASSERT_EQ(patch.size(), 1u);
+  const DesignSeam seam = seamAlong(target, patch[0], 0.01 * width);
+  EvaluateOptions look;
+  look.maxIterations = 0;
+  const LayoutEvaluation e = evaluateLayout(*scene, {seam}, 1, look);
+  ASSERT_TRUE(e.ok) << e.problem;
+  EXPECT_EQ(e.panels, 2);
+  EXPECT_EQ(e.opened.handleSeams, 1);
+  EXPECT_EQ(e.opened.tubeCuts, 2);
+  EXPECT_NE(e.description().find("1 seam around a handle"), std::string::npos) << e.description();
+}

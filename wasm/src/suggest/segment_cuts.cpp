@@ -1,0 +1,312 @@
+#include "suggest/segment_cuts.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <functional>
+#include <map>
+#include <queue>
+#include <unordered_map>
+
+#include "util/union_find.hpp"
+
+namespace billow {
+namespace {
+
+// The segment capped: every boundary loop closed by a cone over it, so that it is a closed surface of the segment's
+// genus, whose loops that do not separate it are those of the segment. Edges that touch a seam, and the cones', weigh
+// `far`, so no loop shorter than that runs along or across a seam.
+struct CappedSegment {
+  struct Edge {
+    int a = -1, b = -1;
+    double weight = 0;
+    int faceA = -1, faceB = -1;
+  };
+  std::vector<int> cutVertex;  // local vertex -> cut-mesh vertex; -1 for a cone
+  std::vector<char> onSeam;    // local vertex on one of the segment's loops
+  std::vector<Edge> edges;
+  std::vector<std::vector<std::pair<int, int>>> around;  // local vertex -> (neighbour, edge)
+  int triangles = 0;  // faces 0 .. triangles - 1 are the segment's triangles, the rest the cones'
+  int faces = 0;
+  double far = 0;
+};
+
+CappedSegment capSegment(const Segmentation& sg, int s) {
+  const Segment& segment = sg.segments[size_t(s)];
+  const TriMesh& m = sg.mesh;
+  CappedSegment c;
+  std::unordered_map<int, int> local;
+  const auto localOf = [&](int v) {
+    const auto [it, added] = local.emplace(v, int(c.cutVertex.size()));
+    if (added) c.cutVertex.push_back(v);
+    return it->second;
+  };
+  for (int t : segment.triangles)
+    for (int k = 0; k < 3; ++k) localOf(m.F(t, k));
+  c.onSeam.assign(c.cutVertex.size(), 0);
+  std::map<std::pair<int, int>, int> loopEdge;  // directed (segment on its left) -> edge
+  std::map<std::pair<int, int>, int> inside;    // undirected -> edge
+  const double diagonal = (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm();
+  c.far = 1e6 * std::max(diagonal, 1e-12);
+  const auto length = [&](int a, int b) { return (m.V.row(c.cutVertex[a]) - m.V.row(c.cutVertex[b])).norm(); };
+  const int triangles = int(segment.triangles.size());
+  c.triangles = c.faces = triangles;
+  for (const BoundaryLoop& loop : segment.loops) {
+    const int cone = int(c.cutVertex.size()), n = int(loop.vertices.size()), first = c.faces;
+    c.cutVertex.push_back(-1), c.onSeam.push_back(1);
+    for (int i = 0; i < n; ++i) {
+      const int a = localOf(loop.vertices[size_t(i)]), b = localOf(loop.vertices[size_t((i + 1) % n)]);
+      c.onSeam.resize(c.cutVertex.size(), 0);
+      c.onSeam[size_t(a)] = 1;
+      loopEdge[{a, b}] = int(c.edges.size());
+      c.edges.push_back({a, b, c.far, -1, first + i});
+      c.edges.push_back({cone, a, c.far, first + (i + n - 1) % n, first + i});  // between two cone faces
+    }
+    c.faces += n;
+  }
+  c.onSeam.resize(c.cutVertex.size(), 0);
+  for (int i = 0; i < triangles; ++i) {
+    const int t = segment.triangles[size_t(i)];
+    for (int k = 0; k < 3; ++k) {
+      const int a = local.at(m.F(t, k)), b = local.at(m.F(t, (k + 1) % 3));
+      if (const auto along = loopEdge.find({a, b}); along != loopEdge.end()) {
+        c.edges[size_t(along->second)].faceA = i;
+        continue;
+      }
+      const auto [it, added] = inside.emplace(std::minmax(a, b), int(c.edges.size()));
+      if (added) {
+        const bool touches = c.onSeam[size_t(a)] || c.onSeam[size_t(b)];
+        c.edges.push_back({a, b, touches ? c.far : length(a, b), i, -1});
+      } else {
+        c.edges[size_t(it->second)].faceB = i;
+      }
+    }
+  }
+  c.around.resize(c.cutVertex.size());
+  for (int e = 0; e < int(c.edges.size()); ++e) {
+    c.around[size_t(c.edges[size_t(e)].a)].push_back({c.edges[size_t(e)].b, e});
+    c.around[size_t(c.edges[size_t(e)].b)].push_back({c.edges[size_t(e)].a, e});
+  }
+  return c;
+}
+
+struct Tree {
+  std::vector<double> distance;
+  std::vector<int> parentEdge, depth;
+};
+
+Tree shortestPaths(const CappedSegment& c, int root) {
+  const size_t n = c.cutVertex.size();
+  Tree t{std::vector<double>(n, INFINITY), std::vector<int>(n, -1), std::vector<int>(n, 0)};
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  t.distance[size_t(root)] = 0;
+  queue.push({0, root});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > t.distance[size_t(v)]) continue;
+    for (const auto& [w, e] : c.around[size_t(v)])
+      if (const double dw = d + c.edges[size_t(e)].weight; dw < t.distance[size_t(w)]) {
+        t.distance[size_t(w)] = dw, t.parentEdge[size_t(w)] = e, t.depth[size_t(w)] = t.depth[size_t(v)] + 1;
+        queue.push({dw, w});
+      }
+  }
+  return t;
+}
+
+// The loop one edge closes in the tree: from a up to where the paths from a and b meet, and down to b.
+std::vector<int> treeLoop(const CappedSegment& c, const Tree& t, int a, int b) {
+  const auto up = [&](int v) {
+    const CappedSegment::Edge& e = c.edges[size_t(t.parentEdge[size_t(v)])];
+    return e.a == v ? e.b : e.a;
+  };
+  std::vector<int> fromA{a}, fromB{b};
+  while (a != b) {
+    if (t.depth[size_t(a)] >= t.depth[size_t(b)])
+      fromA.push_back(a = up(a));
+    else
+      fromB.push_back(b = up(b));
+  }
+  fromB.pop_back();  // the meeting point is fromA's last
+  fromA.insert(fromA.end(), fromB.rbegin(), fromB.rend());
+  return fromA;
+}
+
+// Whether the segment's triangles stay connected with the loop's edges cut: the loop goes around a handle, it does
+// not cut a part off (the greedy system's loops do not on a closed surface; this holds where a seam pinches the cap).
+bool keepsSegmentWhole(const CappedSegment& c, const std::vector<int>& loop) {
+  std::map<std::pair<int, int>, char> cut;
+  for (size_t i = 0; i < loop.size(); ++i) cut[std::minmax(loop[i], loop[(i + 1) % loop.size()])] = 1;
+  UnionFind faces(c.triangles);
+  for (const CappedSegment::Edge& e : c.edges)
+    if (e.faceA >= 0 && e.faceB >= 0 && e.faceA < c.triangles && e.faceB < c.triangles &&
+        !cut.count(std::minmax(e.a, e.b)))
+      faces.unite(e.faceA, e.faceB);
+  for (int f = 1; f < c.triangles; ++f)
+    if (faces.find(f) != faces.find(0)) return false;
+  return true;
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& sg, int segment) {
+  if (segment < 0 || segment >= int(sg.segments.size())) return {};
+  const Segment& s = sg.segments[size_t(segment)];
+  const TriMesh& m = sg.mesh;
+  const auto length = [&](int a, int b) { return (m.V.row(a) - m.V.row(b)).norm(); };
+  std::unordered_map<int, char> onLoop;
+  for (const BoundaryLoop& loop : s.loops)
+    for (int v : loop.vertices) onLoop[v] = 1;
+  // The segment's inside: its vertices off the loops, and the edges between them.
+  std::unordered_map<int, std::vector<int>> around;
+  std::map<std::pair<int, int>, int> leftOf;  // a loop's directed edge -> the third corner of the triangle on its left
+  for (int t : s.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.F(t, k), b = m.F(t, (k + 1) % 3), c = m.F(t, (k + 2) % 3);
+      leftOf[{a, b}] = c;
+      if (!onLoop.count(a) && !onLoop.count(b)) around[a].push_back(b);
+    }
+  // Every inside vertex's nearest loop through the inside (Dijkstra from all loops at once), each loop reached from
+  // the side the segment lies on: a seam's two sides are two loops of one segment where it goes round a handle.
+  struct Reach {
+    double distance = INFINITY;
+    int loop = -1, parent = -1;  // parent: the previous vertex, a loop vertex for the first inside one
+  };
+  std::unordered_map<int, Reach> reach;
+  std::vector<std::vector<std::pair<double, int>>> seeds(
+      s.loops.size());                                         // per loop: (distance, loop vertex) by vertex
+  std::map<std::pair<int, int>, std::pair<double, int>> seed;  // (inside vertex, loop) -> nearest
+  for (size_t l = 0; l < s.loops.size(); ++l) {
+    const std::vector<int>& v = s.loops[l].vertices;
+    for (size_t i = 0; i < v.size(); ++i) {
+      const auto third = leftOf.find({v[i], v[(i + 1) % v.size()]});
+      if (third == leftOf.end() || onLoop.count(third->second)) continue;
+      for (int a : {v[i], v[(i + 1) % v.size()]}) {
+        auto [it, added] = seed.emplace(std::pair{third->second, int(l)}, std::pair{length(a, third->second), a});
+        if (!added && length(a, third->second) < it->second.first) it->second = {length(a, third->second), a};
+      }
+    }
+  }
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  for (const auto& [key, nearest] : seed) {
+    Reach& r = reach[key.first];
+    if (nearest.first < r.distance)
+      r = {nearest.first, key.second, nearest.second}, queue.push({nearest.first, key.first});
+  }
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    const Reach here = reach.at(v);
+    if (d > here.distance) continue;
+    for (int w : around[v]) {
+      Reach& there = reach[w];
+      if (const double dw = d + length(v, w); dw < there.distance) {
+        there = {dw, here.loop, v};
+        queue.push({dw, w});
+      }
+    }
+  }
+  // The shortest path between two loops passes an inside edge between their regions, or an inside vertex next to both.
+  struct Joint {
+    double length = INFINITY;
+    int a = -1, b = -1;         // inside vertices (a == b: one vertex next to both loops)
+    int loopA = -1, viaB = -1;  // for a single vertex: the second loop and its vertex
+  };
+  std::map<std::pair<int, int>, Joint> joints;  // (loop, loop) -> the shortest path's middle
+  for (const auto& [a, next] : around)
+    for (int b : next) {
+      const Reach &ra = reach.at(a), &rb = reach.at(b);
+      if (ra.loop < 0 || rb.loop < 0 || ra.loop >= rb.loop) continue;
+      Joint& j = joints[{ra.loop, rb.loop}];
+      if (const double total = ra.distance + length(a, b) + rb.distance; total < j.length) j = {total, a, b};
+    }
+  for (const auto& [key, nearest] : seed) {
+    const Reach& r = reach.at(key.first);
+    if (key.second == r.loop) continue;
+    Joint& j = joints[std::minmax(key.second, r.loop)];
+    if (const double total = nearest.first + r.distance; total < j.length)
+      j = {total, key.first, key.first, key.second, nearest.second};
+  }
+  std::vector<std::pair<std::pair<int, int>, Joint>> order(joints.begin(), joints.end());
+  std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.second.length < y.second.length; });
+  UnionFind joined(int(s.loops.size()));
+  std::vector<std::vector<int>> cuts;
+  const auto back = [&](int v, std::vector<int>& path) {  // v, its parents, and the loop vertex it came from
+    for (; v >= 0 && !onLoop.count(v); v = reach.at(v).parent) path.push_back(v);
+    if (v >= 0) path.push_back(v);
+  };
+  for (const auto& [loops, j] : order) {
+    if (joined.find(loops.first) == joined.find(loops.second)) continue;
+    joined.unite(loops.first, loops.second);
+    std::vector<int> path;
+    back(j.a, path);
+    std::reverse(path.begin(), path.end());
+    if (j.a != j.b)
+      back(j.b, path);
+    else
+      path.push_back(j.viaB);
+    cuts.push_back(std::move(path));
+  }
+  return cuts;
+}
+
+std::vector<int> loopAroundHandle(const Segmentation& sg, int segment, int roots) {
+  if (segment < 0 || segment >= int(sg.segments.size()) || sg.segments[size_t(segment)].genus <= 0) return {};
+  const CappedSegment c = capSegment(sg, segment);
+  const int n = int(c.cutVertex.size());
+  std::vector<double> nearestRoot(size_t(n), INFINITY);
+  int root = -1;
+  for (int v = 0; v < n && root < 0; ++v)
+    if (!c.onSeam[size_t(v)]) root = v;
+  std::vector<std::pair<double, std::vector<int>>> found;  // (length, loop)
+  for (int r = 0; r < roots && root >= 0; ++r) {
+    const Tree t = shortestPaths(c, root);
+    std::vector<char> inTree(c.edges.size(), 0);
+    for (int v = 0; v < n; ++v)
+      if (t.parentEdge[size_t(v)] >= 0) inTree[size_t(t.parentEdge[size_t(v)])] = 1;
+    // The cotree: of the edges off the tree, the longest loops first join the faces on their two sides; the 2g
+    // left over close the greedy system's loops.
+    std::vector<int> off;
+    for (int e = 0; e < int(c.edges.size()); ++e)
+      if (!inTree[size_t(e)]) off.push_back(e);
+    const auto loopLength = [&](int e) {
+      return t.distance[size_t(c.edges[size_t(e)].a)] + c.edges[size_t(e)].weight +
+             t.distance[size_t(c.edges[size_t(e)].b)];
+    };
+    std::sort(off.begin(), off.end(), [&](int x, int y) { return loopLength(x) > loopLength(y); });
+    UnionFind dual(c.faces);
+    for (int e : off) {
+      const CappedSegment::Edge& edge = c.edges[size_t(e)];
+      if (edge.faceA >= 0 && edge.faceB >= 0 && dual.find(edge.faceA) != dual.find(edge.faceB)) {
+        dual.unite(edge.faceA, edge.faceB);
+        continue;
+      }
+      if (loopLength(e) >= c.far) continue;  // along or across a seam
+      std::vector<int> loop = treeLoop(c, t, edge.a, edge.b);
+      double length = 0;
+      for (size_t i = 0; i < loop.size(); ++i) {
+        const int a = c.cutVertex[size_t(loop[i])], b = c.cutVertex[size_t(loop[(i + 1) % loop.size()])];
+        length += (sg.mesh.V.row(a) - sg.mesh.V.row(b)).norm();
+      }
+      found.push_back({length, std::move(loop)});
+    }
+    // The next root: the inside vertex farthest from the roots so far.
+    for (int v = 0; v < n; ++v) nearestRoot[size_t(v)] = std::min(nearestRoot[size_t(v)], t.distance[size_t(v)]);
+    root = -1;
+    double farthest = 0;
+    for (int v = 0; v < n; ++v)
+      if (!c.onSeam[size_t(v)] && nearestRoot[size_t(v)] < c.far && nearestRoot[size_t(v)] > farthest)
+        farthest = nearestRoot[size_t(v)], root = v;
+  }
+  std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  for (const auto& [length, loop] : found)
+    if (loop.size() >= 3 && keepsSegmentWhole(c, loop)) {
+      std::vector<int> out;
+      for (int v : loop) out.push_back(c.cutVertex[size_t(v)]);
+      return out;
+    }
+  return {};
+}
+
+}  // namespace billow
