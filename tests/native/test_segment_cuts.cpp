@@ -3,6 +3,8 @@
 // suggested layout's segments become panels where plane sections leave a ring or a part with holes.
 #include <gtest/gtest.h>
 
+#include <array>
+#include <map>
 #include <set>
 
 #include "pattern/design_scene.hpp"
@@ -30,6 +32,52 @@ TriMesh ringMesh(double R, double r, int nu = 120, int nv = 40) {
       m.F.row(2 * a) = Eigen::Vector3i(a, b, c);
       m.F.row(2 * a + 1) = Eigen::Vector3i(a, c, d);
     }
+  return m;
+}
+
+// A slab of 5 x 3 x 1 cubes without the cubes (1, 1) and (3, 1): two holes through it, genus 2. Each cube face in
+// n x n squares.
+TriMesh twoHoledSlab(int n = 4) {
+  const auto solid = [](int i, int j, int k) {
+    return i >= 0 && i < 5 && j >= 0 && j < 3 && k == 0 && !(j == 1 && (i == 1 || i == 3));
+  };
+  std::map<std::array<int, 3>, int> index;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3i> triangles;
+  const auto vertex = [&](const std::array<int, 3>& p) {
+    const auto [it, added] = index.emplace(p, int(points.size()));
+    if (added) points.push_back(Eigen::Vector3d(p[0], p[1], p[2]) / n);
+    return it->second;
+  };
+  for (int i = 0; i < 5; ++i)
+    for (int j = 0; j < 3; ++j) {
+      if (!solid(i, j, 0)) continue;
+      const std::array<int, 3> cell{i, j, 0};
+      for (int a = 0; a < 3; ++a)
+        for (int sign : {-1, 1}) {
+          std::array<int, 3> next = cell;
+          next[a] += sign;
+          if (solid(next[0], next[1], next[2])) continue;
+          const int u = (a + 1) % 3, v = (a + 2) % 3;  // u x v = a
+          for (int iu = 0; iu < n; ++iu)
+            for (int iv = 0; iv < n; ++iv) {
+              std::array<int, 4> q;
+              const int du[4] = {0, 1, 1, 0}, dv[4] = {0, 0, 1, 1};
+              for (int k = 0; k < 4; ++k) {
+                std::array<int, 3> p;
+                p[a] = (cell[a] + (sign > 0)) * n, p[u] = cell[u] * n + iu + du[k], p[v] = cell[v] * n + iv + dv[k];
+                q[size_t(k)] = vertex(p);
+              }
+              if (sign < 0) std::swap(q[1], q[3]);  // facing -a
+              triangles.push_back({q[0], q[1], q[2]});
+              triangles.push_back({q[0], q[2], q[3]});
+            }
+        }
+    }
+  TriMesh m;
+  m.V.resize(int(points.size()), 3), m.F.resize(int(triangles.size()), 3);
+  for (size_t k = 0; k < points.size(); ++k) m.V.row(int(k)) = points[k].transpose();
+  for (size_t k = 0; k < triangles.size(); ++k) m.F.row(int(k)) = triangles[k].transpose();
   return m;
 }
 
@@ -71,7 +119,9 @@ TEST(SegmentCuts, TheLoopAroundARingGoesTheShortWayRound) {
   const Segmentation& sg = scene->segmentation;
   ASSERT_EQ(sg.segments.size(), 1u);
   ASSERT_EQ(sg.segments[0].genus, 1);
-  const std::vector<int> loop = loopAroundHandle(sg, 0);
+  const std::vector<std::vector<int>> loops = loopsAroundHandles(sg, 0);
+  ASSERT_EQ(loops.size(), 1u);
+  const std::vector<int>& loop = loops[0];
   ASSERT_GE(loop.size(), 3u);
   EXPECT_TRUE(joinedByEdges(sg.mesh, loop, true));
   EXPECT_EQ(std::set<int>(loop.begin(), loop.end()).size(), loop.size()) << "a simple loop";
@@ -81,11 +131,19 @@ TEST(SegmentCuts, TheLoopAroundARingGoesTheShortWayRound) {
   for (size_t i = 0; i < loop.size(); ++i)
     length += (sg.mesh.V.row(loop[i]) - sg.mesh.V.row(loop[(i + 1) % loop.size()])).norm();
   EXPECT_NEAR(length / scale, 2 * test::kPi * r, 0.03 * 2 * test::kPi * r);
+  // Where the tube is too thin to seam round, the loop goes round the hole instead (2 pi (R - r) on the inside).
+  const std::vector<std::vector<int>> longer = loopsAroundHandles(sg, 0, 1.5 * length);
+  ASSERT_EQ(longer.size(), 1u);
+  double around = 0;
+  for (size_t i = 0; i < longer[0].size(); ++i)
+    around += (sg.mesh.V.row(longer[0][i]) - sg.mesh.V.row(longer[0][(i + 1) % longer[0].size()])).norm();
+  EXPECT_GE(around, 1.5 * length);
+  EXPECT_LT(around / scale, 1.1 * 2 * test::kPi * (R - r));
   // A sphere has no handle.
   const auto ball = test::sharedScene("sphere.obj");
   segmentWith(*ball, {});
   ASSERT_EQ(ball->segmentation.segments.size(), 1u);
-  EXPECT_TRUE(loopAroundHandle(ball->segmentation, 0).empty());
+  EXPECT_TRUE(loopsAroundHandles(ball->segmentation, 0).empty());
 }
 
 TEST(SegmentCuts, PathsThroughAPartJoinAllItsLoopsOnce) {
@@ -161,4 +219,36 @@ TEST(SegmentCuts, ARingIsOpenedAroundItsHandle) {
   EXPECT_EQ(e.opened.handleSeams, 1);
   EXPECT_EQ(e.opened.tubeCuts, 2);
   EXPECT_NE(e.description().find("1 seam around a handle"), std::string::npos) << e.description();
+}
+
+// A part with two handles gets a loop around each in one round, apart from each other; sewn along both it keeps no
+// handle, and the cuts join its four loops.
+TEST(SegmentCuts, APartWithTwoHandlesGetsALoopAroundEach) {
+  const auto scene = test::sceneOf(twoHoledSlab());
+  segmentWith(*scene, {});
+  const Segmentation& sg = scene->segmentation;
+  ASSERT_EQ(sg.segments.size(), 1u);
+  ASSERT_EQ(sg.segments[0].genus, 2);
+  const std::vector<std::vector<int>> loops = loopsAroundHandles(sg, 0);
+  ASSERT_EQ(loops.size(), 2u);
+  std::set<int> seen;
+  std::vector<DesignSeam> seams;
+  for (const std::vector<int>& loop : loops) {
+    EXPECT_TRUE(joinedByEdges(sg.mesh, loop, true));
+    DesignSeam seam;
+    seam.closed = true;
+    for (int v : loop) {
+      EXPECT_TRUE(seen.insert(v).second) << "the loops are apart";
+      DesignPoint point;
+      point.onSurface = true, point.surface = sg.vertexOrigin[size_t(v)];
+      seam.points.push_back(point);
+    }
+    seams.push_back(seam);
+  }
+  segmentWith(*scene, seams);
+  const Segmentation& sewn = scene->segmentation;
+  ASSERT_EQ(sewn.segments.size(), 1u) << "the loops cut nothing off";
+  EXPECT_EQ(sewn.segments[0].genus, 0);
+  EXPECT_EQ(sewn.segments[0].loops.size(), 4u);
+  EXPECT_EQ(cutsJoiningLoops(sewn, 0).size(), 3u);
 }

@@ -999,13 +999,13 @@ std::vector<SurfacePoint> controlsAlong(const Segmentation& sg, const std::vecto
 // Seams that make a layout's segments panels, where plane sections alone leave a segment that is not one: a segment
 // between two loops or more (a plane across a limb leaves a tube, a limb's end cut off inside a band leaves a hole)
 // gets cuts through it that join its loops (cutsJoiningLoops: the cuts that open a tube, as a designer would add
-// them); a segment around a handle a closed seam around it (loopAroundHandle); a segment
-// too big for its seam (a limb's end) gets the plane section across its longest extent where that loop lies within it,
-// else across the next (around its limbs); a tiny or thin segment loses the shortest closed seam of the layout's own
-// around it (a plane grazing a toe). The first `fixedSeams` seams are the designer's and stay. Counts what it did in
-// `opened`; returns how many seams it added or removed.
-int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::vector<DesignSeam>& seams,
-                 std::vector<DesignConnection>& connections, LayoutOpenings& opened) {
+// them); a segment around handles a closed seam around each, none shorter than four of the panels' edges at
+// `edgeLength` (loopsAroundHandles); a segment too big for its seam (a limb's end) gets the plane section across its
+// longest extent where that loop lies within it, else across the next (around its limbs); a tiny or thin segment
+// loses the shortest closed seam of the layout's own around it (a plane grazing a toe). The first `fixedSeams` seams
+// are the designer's and stay. Counts what it did in `opened`; returns how many seams it added or removed.
+int openSegments(const DesignScene& scene, double spacing, double edgeLength, int fixedSeams,
+                 std::vector<DesignSeam>& seams, std::vector<DesignConnection>& connections, LayoutOpenings& opened) {
   const Segmentation& sg = scene.segmentation;
   const TriMesh& cut = sg.mesh;
   int added = 0;
@@ -1068,12 +1068,12 @@ int openSegments(const DesignScene& scene, double spacing, int fixedSeams, std::
         ++added, ++opened.tubeCuts;
       }
     } else if (problem.code == "segment.not-disk" && segment.genus > 0) {
-      const std::vector<int> loop = loopAroundHandle(sg, problem.segment);
-      if (loop.size() < 3) continue;
-      const std::vector<SurfacePoint> controls = controlsAlong(sg, loop, spacing, true);
-      if (controls.size() < 3) continue;
-      seams.push_back(makeSeam("a seam around a handle", true, controls));
-      ++added, ++opened.handleSeams;
+      for (const std::vector<int>& loop : loopsAroundHandles(sg, problem.segment, 4 * edgeLength)) {
+        const std::vector<SurfacePoint> controls = controlsAlong(sg, loop, spacing, true);
+        if (controls.size() < 3) continue;
+        seams.push_back(makeSeam("a seam around a handle", true, controls));
+        ++added, ++opened.handleSeams;
+      }
     } else if (problem.code == "segment.too-big-for-seam") {
       Eigen::Vector3d center = Eigen::Vector3d::Zero();
       Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
@@ -1167,6 +1167,12 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
   LayoutEvaluation out;
   out.seams = seams, out.connections = connections;
   const double spacing = seamPointSpacing(scene.target);
+  // The panels' edge length at the resolution the layout is looked at (its panels' area about the target's).
+  double area = 0;
+  for (int f = 0; f < scene.target.numTriangles(); ++f) area += triangleArea(scene.target, f);
+  PatternBuildOptions resolution;
+  resolution.triangles = options.triangles;
+  const double edgeLength = area > 0 ? patternEdgeLength(area, resolution) : 0;
   for (int round = 0;; ++round) {
     scene.design.seams = out.seams, scene.design.connections = out.connections;
     try {
@@ -1177,7 +1183,7 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
     }
     segmentDesignScene(scene);
     if (scene.segmentation.problems.empty() || round == options.openingRounds ||
-        openSegments(scene, spacing, fixedSeams, out.seams, out.connections, out.opened) == 0)
+        openSegments(scene, spacing, edgeLength, fixedSeams, out.seams, out.connections, out.opened) == 0)
       break;
   }
   const Segmentation& segmentation = scene.segmentation;

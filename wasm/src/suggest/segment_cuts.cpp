@@ -5,6 +5,7 @@
 #include <functional>
 #include <map>
 #include <queue>
+#include <set>
 #include <unordered_map>
 
 #include "util/union_find.hpp"
@@ -132,11 +133,13 @@ std::vector<int> treeLoop(const CappedSegment& c, const Tree& t, int a, int b) {
   return fromA;
 }
 
-// Whether the segment's triangles stay connected with the loop's edges cut: the loop goes around a handle, it does
-// not cut a part off (the greedy system's loops do not on a closed surface; this holds where a seam pinches the cap).
-bool keepsSegmentWhole(const CappedSegment& c, const std::vector<int>& loop) {
+// Whether the segment's triangles stay connected with the loops' edges cut: they go around handles, they do not cut a
+// part off (the greedy system's loops do not, one at a time, on a closed surface; two may together, as two around the
+// same handle do).
+bool keepsSegmentWhole(const CappedSegment& c, const std::vector<std::vector<int>>& loops) {
   std::map<std::pair<int, int>, char> cut;
-  for (size_t i = 0; i < loop.size(); ++i) cut[std::minmax(loop[i], loop[(i + 1) % loop.size()])] = 1;
+  for (const std::vector<int>& loop : loops)
+    for (size_t i = 0; i < loop.size(); ++i) cut[std::minmax(loop[i], loop[(i + 1) % loop.size()])] = 1;
   UnionFind faces(c.triangles);
   for (const CappedSegment::Edge& e : c.edges)
     if (e.faceA >= 0 && e.faceB >= 0 && e.faceA < c.triangles && e.faceB < c.triangles &&
@@ -236,9 +239,30 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& sg, int segme
     for (; v >= 0 && !onLoop.count(v); v = reach.at(v).parent) path.push_back(v);
     if (v >= 0) path.push_back(v);
   };
+  // Whether cutting along a path from a loop vertex back to the same vertex cuts a piece off the segment: one that
+  // goes round a ring does not; one round a few triangles where two loops touch does.
+  std::set<std::pair<int, int>> seamEdges;
+  for (const BoundaryLoop& loop : s.loops)
+    for (size_t i = 0; i < loop.vertices.size(); ++i)
+      seamEdges.insert(std::minmax(loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()]));
+  const auto cutsOff = [&](const std::vector<int>& path) {
+    std::set<std::pair<int, int>> cut;
+    for (size_t i = 0; i + 1 < path.size(); ++i) cut.insert(std::minmax(path[i], path[i + 1]));
+    UnionFind parts(int(s.triangles.size()));
+    std::map<std::pair<int, int>, int> firstAlong;
+    for (int i = 0; i < int(s.triangles.size()); ++i)
+      for (int k = 0; k < 3; ++k) {
+        const int t = s.triangles[size_t(i)];
+        const std::pair<int, int> e = std::minmax(m.F(t, k), m.F(t, (k + 1) % 3));
+        if (cut.count(e) || seamEdges.count(e)) continue;
+        if (const auto [it, added] = firstAlong.emplace(e, i); !added) parts.unite(i, it->second);
+      }
+    for (int i = 1; i < int(s.triangles.size()); ++i)
+      if (parts.find(i) != parts.find(0)) return true;
+    return false;
+  };
   for (const auto& [loops, j] : order) {
     if (joined.find(loops.first) == joined.find(loops.second)) continue;
-    joined.unite(loops.first, loops.second);
     std::vector<int> path;
     back(j.a, path);
     std::reverse(path.begin(), path.end());
@@ -246,12 +270,14 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& sg, int segme
       back(j.b, path);
     else
       path.push_back(j.viaB);
+    if (path.front() == path.back() && cutsOff(path)) continue;
+    joined.unite(loops.first, loops.second);
     cuts.push_back(std::move(path));
   }
   return cuts;
 }
 
-std::vector<int> loopAroundHandle(const Segmentation& sg, int segment, int roots) {
+std::vector<std::vector<int>> loopsAroundHandles(const Segmentation& sg, int segment, double minLength, int roots) {
   if (segment < 0 || segment >= int(sg.segments.size()) || sg.segments[size_t(segment)].genus <= 0) return {};
   const CappedSegment c = capSegment(sg, segment);
   const int n = int(c.cutVertex.size());
@@ -289,7 +315,7 @@ std::vector<int> loopAroundHandle(const Segmentation& sg, int segment, int roots
         const int a = c.cutVertex[size_t(loop[i])], b = c.cutVertex[size_t(loop[(i + 1) % loop.size()])];
         length += (sg.mesh.V.row(a) - sg.mesh.V.row(b)).norm();
       }
-      found.push_back({length, std::move(loop)});
+      if (length >= minLength) found.push_back({length, std::move(loop)});
     }
     // The next root: the inside vertex farthest from the roots so far.
     for (int v = 0; v < n; ++v) nearestRoot[size_t(v)] = std::min(nearestRoot[size_t(v)], t.distance[size_t(v)]);
@@ -299,14 +325,24 @@ std::vector<int> loopAroundHandle(const Segmentation& sg, int segment, int roots
       if (!c.onSeam[size_t(v)] && nearestRoot[size_t(v)] < c.far && nearestRoot[size_t(v)] > farthest)
         farthest = nearestRoot[size_t(v)], root = v;
   }
+  // The shortest first, each apart from those taken, while all of them together leave the segment whole: one around
+  // each handle.
   std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
-  for (const auto& [length, loop] : found)
-    if (loop.size() >= 3 && keepsSegmentWhole(c, loop)) {
-      std::vector<int> out;
-      for (int v : loop) out.push_back(c.cutVertex[size_t(v)]);
-      return out;
+  std::vector<std::vector<int>> taken;
+  std::vector<char> onTaken(size_t(n), 0);
+  for (const auto& [length, loop] : found) {
+    if (int(taken.size()) == sg.segments[size_t(segment)].genus) break;
+    if (loop.size() < 3 || std::any_of(loop.begin(), loop.end(), [&](int v) { return onTaken[size_t(v)]; })) continue;
+    taken.push_back(loop);
+    if (!keepsSegmentWhole(c, taken)) {
+      taken.pop_back();
+      continue;
     }
-  return {};
+    for (int v : loop) onTaken[size_t(v)] = 1;
+  }
+  for (std::vector<int>& loop : taken)
+    for (int& v : loop) v = c.cutVertex[size_t(v)];
+  return taken;
 }
 
 }  // namespace billow

@@ -1,7 +1,7 @@
 // Cuts that open a segment that is not a disk, as a designer answers the segmentation's "add a seam from one loop to
 // the other" and "add a seam across it": paths through the segment that join its seam loops (a tube, a part with
-// holes), and a loop around a handle (a skull's cheek arch, a mug's handle), whose two sides then bound the segment as
-// two more loops for the cuts to join.
+// holes), and loops around its handles (a skull's cheek arches, a mug's handle), whose two sides then bound the segment
+// as two more loops each for the cuts to join.
 #pragma once
 #include <vector>
 
@@ -14,10 +14,13 @@ namespace billow {
 // Each is cut-mesh vertices from a vertex of one loop to a vertex of another.
 std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& segmentation, int segment);
 
-// The shortest loop found through the inside of `segment` (on Segmentation::mesh, off its seams) that does not
-// separate it: of Erickson and Whittlesey's greedy system of loops (2005) from `roots` roots spread over the segment,
-// the shortest. Cut-mesh vertices in order, the first not repeated at the end; empty when the segment has no handle
-// or every such loop would touch its seams.
-std::vector<int> loopAroundHandle(const Segmentation& segmentation, int segment, int roots = 8);
+// Loops through the inside of `segment` (on Segmentation::mesh, off its seams), one around each of its handles: of
+// Erickson and Whittlesey's greedy systems of loops (2005) from `roots` roots spread over the segment, the shortest
+// first, each apart from those taken, as long as all of them together leave the segment whole. Cut-mesh vertices in
+// order, the first not repeated at the end; none when the segment has no handle, fewer than its genus where no more
+// are found off its seams. None shorter than `minLength` [mesh units]: a seam round a handle thinner than three of the
+// panels' edges would be sewn as two edges, a pinch.
+std::vector<std::vector<int>> loopsAroundHandles(const Segmentation& segmentation, int segment, double minLength = 0,
+                                                 int roots = 8);
 
 }  // namespace billow
