@@ -11,7 +11,8 @@ namespace billow {
 
 // Paths through the inside of `segment` (on Segmentation::mesh) that join all its seam loops: loops - 1 of them, each
 // the shortest between two loops not yet joined (two between the same loops would cut a piece off between them).
-// Each is cut-mesh vertices from a vertex of one loop to a vertex of another.
+// Each is cut-mesh vertices from a vertex of one loop to a vertex of another, left from the side the segment lies on:
+// from one side of a seam round a ring to its other side it ends where it began (none that would cut a piece off).
 std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& segmentation, int segment);
 
 // Loops through the inside of `segment` (on Segmentation::mesh, off its seams), one around each of its handles: of
