@@ -26,8 +26,8 @@ struct CappedSegment {
   std::vector<char> onSeam;    // local vertex on one of the segment's loops
   std::vector<Edge> edges;
   std::vector<std::vector<std::pair<int, int>>> around;  // local vertex -> (neighbour, edge)
-  int triangles = 0;  // faces 0 .. triangles - 1 are the segment's triangles, the rest the cones'
-  int faces = 0;
+  int faces = 0;  // the segment's triangles (in Segment::triangles order), then the cones'
+
   double far = 0;
 };
 
@@ -50,13 +50,12 @@ CappedSegment capSegment(const Segmentation& sg, int s) {
   c.far = 1e6 * std::max(diagonal, 1e-12);
   const auto length = [&](int a, int b) { return (m.V.row(c.cutVertex[a]) - m.V.row(c.cutVertex[b])).norm(); };
   const int triangles = int(segment.triangles.size());
-  c.triangles = c.faces = triangles;
+  c.faces = triangles;
   for (const BoundaryLoop& loop : segment.loops) {
     const int cone = int(c.cutVertex.size()), n = int(loop.vertices.size()), first = c.faces;
     c.cutVertex.push_back(-1), c.onSeam.push_back(1);
     for (int i = 0; i < n; ++i) {
-      const int a = localOf(loop.vertices[size_t(i)]), b = localOf(loop.vertices[size_t((i + 1) % n)]);
-      c.onSeam.resize(c.cutVertex.size(), 0);
+      const int a = local.at(loop.vertices[size_t(i)]), b = local.at(loop.vertices[size_t((i + 1) % n)]);
       c.onSeam[size_t(a)] = 1;
       loopEdge[{a, b}] = int(c.edges.size());
       c.edges.push_back({a, b, c.far, -1, first + i});
@@ -64,7 +63,6 @@ CappedSegment capSegment(const Segmentation& sg, int s) {
     }
     c.faces += n;
   }
-  c.onSeam.resize(c.cutVertex.size(), 0);
   for (int i = 0; i < triangles; ++i) {
     const int t = segment.triangles[size_t(i)];
     for (int k = 0; k < 3; ++k) {
@@ -133,21 +131,32 @@ std::vector<int> treeLoop(const CappedSegment& c, const Tree& t, int a, int b) {
   return fromA;
 }
 
-// Whether the segment's triangles stay connected with the loops' edges cut: they go around handles, they do not cut a
-// part off (the greedy system's loops do not, one at a time, on a closed surface; two may together, as two around the
-// same handle do).
-bool keepsSegmentWhole(const CappedSegment& c, const std::vector<std::vector<int>>& loops) {
-  std::map<std::pair<int, int>, char> cut;
-  for (const std::vector<int>& loop : loops)
-    for (size_t i = 0; i < loop.size(); ++i) cut[std::minmax(loop[i], loop[(i + 1) % loop.size()])] = 1;
-  UnionFind faces(c.triangles);
-  for (const CappedSegment::Edge& e : c.edges)
-    if (e.faceA >= 0 && e.faceB >= 0 && e.faceA < c.triangles && e.faceB < c.triangles &&
-        !cut.count(std::minmax(e.a, e.b)))
-      faces.unite(e.faceA, e.faceB);
-  for (int f = 1; f < c.triangles; ++f)
-    if (faces.find(f) != faces.find(0)) return false;
+// Whether the segment's triangles stay connected across its inside edges but those of `cut` (cut-mesh vertex pairs,
+// lower first): loops round handles and cuts round a ring leave it whole; a loop round a few triangles, or two round
+// the same handle, cut a piece off.
+bool staysWhole(const Segmentation& sg, const Segment& s, const std::set<std::pair<int, int>>& cut) {
+  std::set<std::pair<int, int>> seamEdges;
+  for (const BoundaryLoop& loop : s.loops)
+    for (size_t i = 0; i < loop.vertices.size(); ++i)
+      seamEdges.insert(std::minmax(loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()]));
+  UnionFind parts(int(s.triangles.size()));
+  std::map<std::pair<int, int>, int> firstAlong;
+  for (int i = 0; i < int(s.triangles.size()); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const int t = s.triangles[size_t(i)];
+      const std::pair<int, int> e = std::minmax(sg.mesh.F(t, k), sg.mesh.F(t, (k + 1) % 3));
+      if (cut.count(e) || seamEdges.count(e)) continue;
+      if (const auto [it, added] = firstAlong.emplace(e, i); !added) parts.unite(i, it->second);
+    }
+  for (int i = 1; i < int(s.triangles.size()); ++i)
+    if (parts.find(i) != parts.find(0)) return false;
   return true;
+}
+
+// The edges of a path of cut-mesh vertices, lower vertex first; closing it when `closed`.
+void addEdges(const std::vector<int>& path, bool closed, std::set<std::pair<int, int>>& edges) {
+  for (size_t i = 0; i + (closed ? 0 : 1) < path.size(); ++i)
+    edges.insert(std::minmax(path[i], path[(i + 1) % path.size()]));
 }
 
 }  // namespace
@@ -176,8 +185,6 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& sg, int segme
     int loop = -1, parent = -1;  // parent: the previous vertex, a loop vertex for the first inside one
   };
   std::unordered_map<int, Reach> reach;
-  std::vector<std::vector<std::pair<double, int>>> seeds(
-      s.loops.size());                                         // per loop: (distance, loop vertex) by vertex
   std::map<std::pair<int, int>, std::pair<double, int>> seed;  // (inside vertex, loop) -> nearest
   for (size_t l = 0; l < s.loops.size(); ++l) {
     const std::vector<int>& v = s.loops[l].vertices;
@@ -213,8 +220,8 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& sg, int segme
   // The shortest path between two loops passes an inside edge between their regions, or an inside vertex next to both.
   struct Joint {
     double length = INFINITY;
-    int a = -1, b = -1;         // inside vertices (a == b: one vertex next to both loops)
-    int loopA = -1, viaB = -1;  // for a single vertex: the second loop and its vertex
+    int a = -1, b = -1;  // inside vertices (a == b: one vertex next to both loops)
+    int viaB = -1;       // for a single vertex: the second loop's vertex
   };
   std::map<std::pair<int, int>, Joint> joints;  // (loop, loop) -> the shortest path's middle
   for (const auto& [a, next] : around)
@@ -229,7 +236,7 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& sg, int segme
     if (key.second == r.loop) continue;
     Joint& j = joints[std::minmax(key.second, r.loop)];
     if (const double total = nearest.first + r.distance; total < j.length)
-      j = {total, key.first, key.first, key.second, nearest.second};
+      j = {total, key.first, key.first, nearest.second};
   }
   std::vector<std::pair<std::pair<int, int>, Joint>> order(joints.begin(), joints.end());
   std::sort(order.begin(), order.end(), [](const auto& x, const auto& y) { return x.second.length < y.second.length; });
@@ -238,28 +245,6 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& sg, int segme
   const auto back = [&](int v, std::vector<int>& path) {  // v, its parents, and the loop vertex it came from
     for (; v >= 0 && !onLoop.count(v); v = reach.at(v).parent) path.push_back(v);
     if (v >= 0) path.push_back(v);
-  };
-  // Whether cutting along a path from a loop vertex back to the same vertex cuts a piece off the segment: one that
-  // goes round a ring does not; one round a few triangles where two loops touch does.
-  std::set<std::pair<int, int>> seamEdges;
-  for (const BoundaryLoop& loop : s.loops)
-    for (size_t i = 0; i < loop.vertices.size(); ++i)
-      seamEdges.insert(std::minmax(loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()]));
-  const auto cutsOff = [&](const std::vector<int>& path) {
-    std::set<std::pair<int, int>> cut;
-    for (size_t i = 0; i + 1 < path.size(); ++i) cut.insert(std::minmax(path[i], path[i + 1]));
-    UnionFind parts(int(s.triangles.size()));
-    std::map<std::pair<int, int>, int> firstAlong;
-    for (int i = 0; i < int(s.triangles.size()); ++i)
-      for (int k = 0; k < 3; ++k) {
-        const int t = s.triangles[size_t(i)];
-        const std::pair<int, int> e = std::minmax(m.F(t, k), m.F(t, (k + 1) % 3));
-        if (cut.count(e) || seamEdges.count(e)) continue;
-        if (const auto [it, added] = firstAlong.emplace(e, i); !added) parts.unite(i, it->second);
-      }
-    for (int i = 1; i < int(s.triangles.size()); ++i)
-      if (parts.find(i) != parts.find(0)) return true;
-    return false;
   };
   for (const auto& [loops, j] : order) {
     if (joined.find(loops.first) == joined.find(loops.second)) continue;
@@ -270,7 +255,10 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& sg, int segme
       back(j.b, path);
     else
       path.push_back(j.viaB);
-    if (path.front() == path.back() && cutsOff(path)) continue;
+    // A path back to the vertex it left goes round a ring, or round a few triangles where two loops touch.
+    std::set<std::pair<int, int>> cut;
+    addEdges(path, false, cut);
+    if (path.front() == path.back() && !staysWhole(sg, s, cut)) continue;
     joined.unite(loops.first, loops.second);
     cuts.push_back(std::move(path));
   }
@@ -328,20 +316,22 @@ std::vector<std::vector<int>> loopsAroundHandles(const Segmentation& sg, int seg
   // The shortest first, each apart from those taken, while all of them together leave the segment whole: one around
   // each handle.
   std::sort(found.begin(), found.end(), [](const auto& x, const auto& y) { return x.first < y.first; });
+  const Segment& s = sg.segments[size_t(segment)];
   std::vector<std::vector<int>> taken;
+  std::set<std::pair<int, int>> cut;  // the taken loops' edges
   std::vector<char> onTaken(size_t(n), 0);
   for (const auto& [length, loop] : found) {
-    if (int(taken.size()) == sg.segments[size_t(segment)].genus) break;
+    if (int(taken.size()) == s.genus) break;
     if (loop.size() < 3 || std::any_of(loop.begin(), loop.end(), [&](int v) { return onTaken[size_t(v)]; })) continue;
-    taken.push_back(loop);
-    if (!keepsSegmentWhole(c, taken)) {
-      taken.pop_back();
-      continue;
-    }
+    std::vector<int> path;
+    for (int v : loop) path.push_back(c.cutVertex[size_t(v)]);
+    std::set<std::pair<int, int>> with = cut;
+    addEdges(path, true, with);
+    if (!staysWhole(sg, s, with)) continue;
+    cut = std::move(with);
     for (int v : loop) onTaken[size_t(v)] = 1;
+    taken.push_back(std::move(path));
   }
-  for (std::vector<int>& loop : taken)
-    for (int& v : loop) v = c.cutVertex[size_t(v)];
   return taken;
 }
 
