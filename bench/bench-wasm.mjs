@@ -1,17 +1,12 @@
 // Wasm benchmark of the inflation simulator in Node (same table as billow_bench, see bench/README.md).
 //   node bench/bench-wasm.mjs [--json] [--sizes 700,3000,15000] [--examples mylar,sphere3,pillow:20] [--max-seconds S]
 // An example named NAME:R is the example NAME with aspect R (pillow:20 is a 20:1 tube).
-// Loads build/wasm/billow_node.cjs with wasmBinary (TOOLCHAIN §4; BILLOW_WASM_DIR overrides the folder).
+// Loads the app's module, build/wasm/billow.mjs, as the Node tests do (BILLOW_WASM_DIR overrides the folder).
 // V8 has no on-stack replacement for wasm, so a warm-up inflation runs first and the solve is driven by
 // many short step() calls, as the worker does.
-import fs from 'node:fs';
-import path from 'node:path';
-import { createRequire } from 'node:module';
+import { loadModule } from '../tests/node/load-module.mjs';
 
-const require = createRequire(import.meta.url);
-const dir = path.resolve(process.env.BILLOW_WASM_DIR || 'build/wasm');
-const createBillow = require(path.join(dir, 'billow_node.cjs'));
-const Module = await createBillow({ wasmBinary: fs.readFileSync(path.join(dir, 'billow_node.wasm')) });
+const Module = await loadModule();
 
 const args = process.argv.slice(2);
 const option = (name, fallback) => {

@@ -5,7 +5,7 @@
 //                                    [--json-out FILE] [--perturb SEED]
 // --triangles overrides every design's element count (quick runs), as in the native bench; --json-out FILE writes the
 // rows --json prints besides the table (bench/table1.mjs reads them).
-// Needs build/wasm/billow_node.{cjs,wasm}; BILLOW_WASM_DIR overrides.
+// Needs build/wasm/billow.{mjs,wasm}; BILLOW_WASM_DIR overrides.
 import { readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';

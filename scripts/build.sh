@@ -19,7 +19,7 @@ build_wasm() {
   fi
   log "building wasm (build/wasm)"
   cmake --build "$WASM_DIR" -j"$(nproc)" >"$ROOT/build/wasm-build.log" 2>&1 || { cat "$ROOT/build/wasm-build.log" >&2; die "the wasm build failed (log above)"; }
-  test -f "$WASM_DIR/billow.wasm" -a -f "$WASM_DIR/billow_node.cjs" || die "the wasm build failed"
+  test -f "$WASM_DIR/billow.wasm" -a -f "$WASM_DIR/billow.mjs" || die "the wasm build failed"
 }
 
 build_web() {

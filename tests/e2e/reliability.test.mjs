@@ -189,7 +189,7 @@ test('the app fetches nothing from other sites, the solver worker included', asy
 // A shorter browser version of tests/node/soak.test.mjs: edits that each start making and optimizing the
 // panels, cancelled by the next edit. Neither the worker's wasm heap nor the page's JS heap may grow, and
 // the panels finally shown are those of the last edit, never of an older one.
-test('soak: two batches of 30 edits each cancelling the panels of the one before leave no memory behind and no stale result', async () => {
+test('soak: two batches of 15 edits each cancelling the panels of the one before leave no memory behind and no stale result', async () => {
   const page = await fresh();
   await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
@@ -221,10 +221,10 @@ test('soak: two batches of 30 edits each cancelling the panels of the one before
   for (let k = 0; k < 5; k++) await cycle(k); // warm up: caches, JIT, the allocator's pools
   await complete('1.15');
   const start = await memory();
-  for (let k = 5; k < 35; k++) await cycle(k);
+  for (let k = 5; k < 20; k++) await cycle(k);
   await complete('1.25');
   const before = await memory();
-  for (let k = 35; k < 65; k++) await cycle(k);
+  for (let k = 20; k < 35; k++) await cycle(k);
   await complete('1.35');
   assert.equal(await page.evaluate(() => window.billow.test.design.pressure), 1350);
   const after = await memory();
