@@ -273,6 +273,47 @@ TEST(PatternBuild, SlitFromTheEquatorIsSewnBackOnItself) {
   EXPECT_EQ(slitPieces, 2);  // the two sides of the slit, stitched to each other on the same panel
 }
 
+TEST(PatternBuild, KeepSewnSeamsSimpleGivesAClosedCurveThreeEdgesAndTwinSingleEdgesTwo) {
+  std::vector<int> counts{1, 2, 1, 1, 1, 1, 7};
+  // 0: closed; 1: closed with 2 edges; 2 and 3: single edges between points 5 and 6 (either way round); 4: a single
+  // edge between 5 and 7 alone; 5: a single edge between 8 and 9, beside a curve of 7 edges between them.
+  const std::vector<std::array<int, 2>> ends{{4, 4}, {3, 3}, {5, 6}, {6, 5}, {5, 7}, {8, 9}, {9, 8}};
+  keepSewnSeamsSimple(counts, ends);
+  EXPECT_EQ(counts, (std::vector<int>{3, 3, 2, 2, 1, 1, 7}));
+}
+
+// A small closed seam round the pole, shorter than two edges, with two corners on it: a slit into the cap from one,
+// and a seam from each down to the other pole. Every panel has three or four pieces, so none is held to a polygon
+// by its own pieces, and the loop's two halves were an edge each: a loop of two edges, sewn as one edge with four
+// triangles ("Panel N would be sewn to itself ... its seams touch there", on the skull's suggested bands).
+TEST(PatternBuild, ASmallClosedSeamSplitInTwoGetsAThirdEdge) {
+  auto design = readDesignJson(readFileBytes(dataPath("sphere-equator.billow.json")));
+  const double r = 0.12, y = std::sqrt(1 - r * r);
+  const auto seam = [](const std::vector<Eigen::Vector3d>& points, bool closed) {
+    DesignSeam s;
+    s.closed = closed;
+    s.points.resize(points.size());
+    for (size_t k = 0; k < points.size(); ++k) s.points[k].position = points[k].normalized();
+    return s;
+  };
+  design.seams = {seam({{r, y, 0}, {0, y, r}, {-r, y, 0}, {0, y, -r}}, true), seam({{r, y, 0}, {0.03, 1, 0}}, false),
+                  seam({{r, y, 0}, {1, 0, 0}, {0, -1, 0}}, false), seam({{-r, y, 0}, {-1, 0, 0}, {0, -1, 0}}, false)};
+  auto scene = makeDesignScene(design, dataPath("sphere-equator.billow.json"), {examplesDir()});
+  ASSERT_EQ(scene->segmentation.segments.size(), 3u);
+  PatternBuildOptions options;
+  options.edgeLength = 0.3 * 0.25;  // the loop (0.19 m round, the sphere 0.25 m in radius) is 2.5 edges long
+  const BuiltPattern bp = buildPattern(scene->target, scene->segmentation, options);
+  ASSERT_TRUE(bp.ok()) << (bp.problems.empty() ? "" : bp.problems[0].message);
+  expectSound(*scene, bp);
+  int loopEdges = 0;
+  for (const BuiltPanel& panel : bp.panels)
+    for (const PanelPiece& piece : panel.pieces) {
+      if (piece.seam == 0) loopEdges += static_cast<int>(piece.rows.size()) - 1;
+      if (panel.pieces.size() < 3) ADD_FAILURE() << "a panel of " << panel.pieces.size() << " pieces";
+    }
+  EXPECT_GE(loopEdges, 2 * 3);  // counted from both sides
+}
+
 // A dart sewn shut (pieces 0 and 1 of one panel stitched to each other) whose mesh joins an inside vertex to both
 // its sides next to the tip: sewn, those two edges would be one, a pinch sewPattern refuses ("more than two outer
 // panels meet along one edge"). Stitching flips one of them to the other diagonal of its quad.

@@ -23,6 +23,21 @@ bool BuiltPattern::ok() const {
   return std::none_of(problems.begin(), problems.end(), [](const auto& p) { return p.severity == "error"; });
 }
 
+void keepSewnSeamsSimple(std::vector<int>& counts, const std::vector<std::array<int, 2>>& ends) {
+  std::map<std::array<int, 2>, std::vector<int>> singleEdges;  // by their sorted ends
+  for (size_t c = 0; c < counts.size(); ++c) {
+    auto [a, b] = ends[c];
+    if (a == b) {
+      counts[c] = std::max(counts[c], 3);
+    } else if (counts[c] == 1) {
+      singleEdges[{std::min(a, b), std::max(a, b)}].push_back(static_cast<int>(c));
+    }
+  }
+  for (const auto& [pair, curves] : singleEdges)
+    if (curves.size() > 1)
+      for (int c : curves) counts[c] = 2;
+}
+
 double patternEdgeLength(double panelArea, const PatternBuildOptions& options) {
   if (options.edgeLength > 0) return options.edgeLength;
   if (!(panelArea > 0)) throw Error("pattern.empty", "There is no panel area to mesh.");
@@ -91,25 +106,27 @@ std::map<PieceId, PieceId> pairPieces(const std::vector<FlatSegment>& flats) {
   return partner;
 }
 
-// N per piece, equal on both sides (Sec. 5.3: matching vertices on both panels of a seam). A panel with one
-// piece needs 3 segments, with two pieces 2 each, to stay a polygon.
+// N per piece, equal on both sides (Sec. 5.3: matching vertices on both panels of a seam), the sewn seams kept
+// a simple graph (keepSewnSeamsSimple; cut-mesh vertices are shared across a seam, so they name the sewn points).
 void chooseSegmentCounts(std::vector<FlatSegment>& flats, const std::map<PieceId, PieceId>& partner, double h) {
-  const auto least = [&](int f) {
-    const size_t n = flats[f].pieces.size();
-    return n == 1 ? 3 : n == 2 ? 2 : 1;
-  };
-  for (auto& fs : flats) fs.segments.assign(fs.pieces.size(), 0);
+  std::map<PieceId, int> curveOf;
+  std::vector<int> counts;
+  std::vector<std::array<int, 2>> ends;
   for (int f = 0; f < static_cast<int>(flats.size()); ++f)
     for (int k = 0; k < static_cast<int>(flats[f].pieces.size()); ++k) {
-      if (flats[f].segments[k] > 0) continue;
-      int n = std::max(segmentCountFor(flats[f].pieces[k].length, h), least(f));
+      if (curveOf.count({f, k})) continue;
+      const BoundaryPiece& piece = flats[f].pieces[k];
+      curveOf[{f, k}] = static_cast<int>(counts.size());
       const auto it = partner.find({f, k});
-      if (it != partner.end()) {
-        n = std::max(n, least(it->second.first));
-        flats[it->second.first].segments[it->second.second] = n;
-      }
-      flats[f].segments[k] = n;
+      if (it != partner.end()) curveOf[it->second] = static_cast<int>(counts.size());
+      counts.push_back(segmentCountFor(piece.length, h));
+      ends.push_back({piece.vertices.front(), piece.vertices.back()});
     }
+  keepSewnSeamsSimple(counts, ends);
+  for (int f = 0; f < static_cast<int>(flats.size()); ++f) {
+    flats[f].segments.assign(flats[f].pieces.size(), 0);
+    for (int k = 0; k < static_cast<int>(flats[f].pieces.size()); ++k) flats[f].segments[k] = counts[curveOf[{f, k}]];
+  }
 }
 
 double edgeLength(const Panel& p, int a, int b) { return (p.vertices.row(a) - p.vertices.row(b)).norm(); }

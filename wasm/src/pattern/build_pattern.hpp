@@ -14,6 +14,7 @@
 //   6. every internal connection (Sec. 3.2, Fig. 2) becomes an internal panel: the ruled surface between
 //      its two seams, laid flat and sewn to the outer panels' samples along both seams (internal_panels.hpp).
 #pragma once
+#include <array>
 #include <string>
 #include <vector>
 
@@ -99,6 +100,12 @@ SegmentationProblem sewingProblem(const BuiltPattern& built, const Segmentation&
 // Stitches every sample k of each piece to sample N - k of its partner (chains where three or more panel
 // vertices are one point), replacing the pattern's stitches; the mismatch figures are measured again.
 void stitchBuiltPattern(BuiltPattern& built);
+
+// Segments per seam curve (the pieces sewn as one, which share N), from a first count each, raised so the sewn
+// seams make a simple graph: a closed curve (its two ends one point) gets 3 edges at least, and curves of one edge
+// between the same two points get 2 (two such edges would be sewn into one edge with four triangles, a pinch; a
+// panel of one or two pieces is the case inside one panel). ends[c]: the sewn points curve c runs between.
+void keepSewnSeamsSimple(std::vector<int>& counts, const std::vector<std::array<int, 2>>& ends);
 
 // h: options.edgeLength, else from the wanted triangle count over the total panel area [m^2]:
 // h = sqrt((4/3) 4 A / (sqrt(3) triangles)) (the refined meshes hold ~4/3 as many triangles as equilateral ones).

@@ -19,34 +19,48 @@ double pieceLength(const Panel& panel, const PanelPiece& piece) {
 }
 
 // Segments per piece: one count for all the pieces sewn together (union of neighbour links), from their mean
-// length; a panel of one piece needs 3 segments and of two pieces 2 each, to stay a polygon.
+// length, the sewn seams kept a simple graph (keepSewnSeamsSimple); the sewn points are the pieces' end rows
+// united across their stitches.
 std::vector<std::vector<int>> segmentCounts(const BuiltPattern& built, double h) {
-  std::vector<int> first{0};
-  for (const BuiltPanel& bp : built.panels) first.push_back(first.back() + static_cast<int>(bp.pieces.size()));
-  UnionFind groups(first.back());
+  std::vector<int> first{0}, firstRow{0};
+  for (size_t p = 0; p < built.panels.size(); ++p) {
+    first.push_back(first.back() + static_cast<int>(built.panels[p].pieces.size()));
+    firstRow.push_back(firstRow.back() + static_cast<int>(built.pattern.panels[p].vertices.rows()));
+  }
+  UnionFind groups(first.back()), points(firstRow.back());
   for (size_t p = 0; p < built.panels.size(); ++p)
     for (size_t k = 0; k < built.panels[p].pieces.size(); ++k) {
       const PanelPiece& piece = built.panels[p].pieces[k];
-      if (piece.neighborPanel >= 0) groups.unite(first[p] + k, first[piece.neighborPanel] + piece.neighborPiece);
+      if (piece.neighborPanel < 0) continue;
+      groups.unite(first[p] + k, first[piece.neighborPanel] + piece.neighborPiece);
+      const PanelPiece& other = built.panels[piece.neighborPanel].pieces[piece.neighborPiece];
+      points.unite(firstRow[p] + piece.rows.front(), firstRow[piece.neighborPanel] + other.rows.back());
+      points.unite(firstRow[p] + piece.rows.back(), firstRow[piece.neighborPanel] + other.rows.front());
     }
   std::vector<double> sum(first.back(), 0.0);
-  std::vector<int> count(first.back(), 0), least(first.back(), 1);
-  for (size_t p = 0; p < built.panels.size(); ++p) {
-    const auto& pieces = built.panels[p].pieces;
-    const int minimum = pieces.size() == 1 ? 3 : pieces.size() == 2 ? 2 : 1;
-    for (size_t k = 0; k < pieces.size(); ++k) {
-      const int g = groups.find(first[p] + k);
-      sum[g] += pieceLength(built.pattern.panels[p], pieces[k]);
-      ++count[g];
-      least[g] = std::max(least[g], minimum);
-    }
-  }
-  std::vector<std::vector<int>> out(built.panels.size());
+  std::vector<int> count(first.back(), 0);
   for (size_t p = 0; p < built.panels.size(); ++p)
     for (size_t k = 0; k < built.panels[p].pieces.size(); ++k) {
       const int g = groups.find(first[p] + k);
-      out[p].push_back(std::max(least[g], segmentCountFor(sum[g] / count[g], h)));
+      sum[g] += pieceLength(built.pattern.panels[p], built.panels[p].pieces[k]);
+      ++count[g];
     }
+  std::vector<int> curveOf(first.back(), -1), counts;
+  std::vector<std::array<int, 2>> ends;
+  for (size_t p = 0; p < built.panels.size(); ++p)
+    for (size_t k = 0; k < built.panels[p].pieces.size(); ++k) {
+      const int g = groups.find(first[p] + k);
+      if (curveOf[g] >= 0) continue;
+      const PanelPiece& piece = built.panels[p].pieces[k];
+      curveOf[g] = static_cast<int>(counts.size());
+      counts.push_back(segmentCountFor(sum[g] / count[g], h));
+      ends.push_back({points.find(firstRow[p] + piece.rows.front()), points.find(firstRow[p] + piece.rows.back())});
+    }
+  keepSewnSeamsSimple(counts, ends);
+  std::vector<std::vector<int>> out(built.panels.size());
+  for (size_t p = 0; p < built.panels.size(); ++p)
+    for (size_t k = 0; k < built.panels[p].pieces.size(); ++k)
+      out[p].push_back(counts[curveOf[groups.find(first[p] + k)]]);
   return out;
 }
 
