@@ -252,3 +252,81 @@ TEST(SegmentCuts, APartWithTwoHandlesGetsALoopAroundEach) {
   EXPECT_EQ(sewn.segments[0].loops.size(), 4u);
   EXPECT_EQ(cutsJoiningLoops(sewn, 0).size(), 3u);
 }
+
+// An apple peel: the sphere cut along a seam that spirals six times from a cap round one pole to a cap round the other
+// is one long strip, and laid flat it curls. The layout cuts it across where its outline crosses itself, until its
+// pieces lie flat.
+TEST(SegmentCuts, APeelThatWouldOverlapItselfFlatIsCutAcross) {
+  const auto scene = test::sharedScene("sphere.obj");
+  const TriMesh& target = scene->target;
+  // A design's points are in the mesh's own units.
+  const Eigen::Vector3d center =
+      0.5 * (target.V.colwise().maxCoeff() + target.V.colwise().minCoeff()).transpose() / scene->scale;
+  const double radius = 0.5 * (target.V.col(0).maxCoeff() - target.V.col(0).minCoeff()) / scene->scale;
+  const auto at = [&](double polar, double around) {
+    DesignPoint point;
+    point.position = center + radius * Eigen::Vector3d(std::sin(polar) * std::cos(around), std::cos(polar),
+                                                       std::sin(polar) * std::sin(around));
+    return point;
+  };
+  // From a cap round one pole to a cap round the other.
+  std::vector<DesignSeam> seams(3);
+  const int n = 180, turns = 6;
+  for (int k = 0; k < 12; ++k)
+    for (int cap : {0, 1}) seams[size_t(cap)].points.push_back(at(cap ? test::kPi - 0.3 : 0.3, 2 * test::kPi * k / 12));
+  seams[0].closed = seams[1].closed = true;
+  DesignSeam& peel = seams[2];
+  for (int k = 0; k <= n; ++k) {
+    const double t = double(k) / n;
+    peel.points.push_back(at(0.3 + t * (test::kPi - 0.6), 2 * test::kPi * turns * t));
+  }
+  segmentWith(*scene, seams);
+  const Segmentation& sg = scene->segmentation;
+  ASSERT_TRUE(sg.problems.empty()) << sg.problems[0].message;
+  ASSERT_EQ(sg.segments.size(), 3u);
+  int stripIndex = 0;
+  for (int s = 1; s < 3; ++s)
+    if (sg.segments[size_t(s)].area > sg.segments[size_t(stripIndex)].area) stripIndex = s;
+  // Looked at with 150 triangles, the flattened coil's outline, resampled at that edge length, crosses itself; each cut
+  // across shortens the coil, and it takes several.
+  EvaluateOptions look;
+  look.maxIterations = 0;
+  look.triangles = 150;
+  look.openingRounds = 8;
+  {
+    const BuiltPattern built = buildDesignPattern(*scene, look.triangles);
+    ASSERT_FALSE(built.ok());
+    EXPECT_EQ(built.problems[0].code, "pattern.overlaps") << built.problems[0].message;
+  }
+
+  // The cut: from the peel's edge through its inside to the next turn, straight across.
+  const Segment& strip = sg.segments[size_t(stripIndex)];
+  ASSERT_EQ(strip.loops.size(), 1u);
+  const std::vector<int>& loop = strip.loops[0].vertices;
+  const std::vector<int> path = cutAcross(sg, stripIndex, sg.mesh.V.row(loop[loop.size() / 3]).transpose());
+  ASSERT_GE(path.size(), 2u);
+  EXPECT_TRUE(joinedByEdges(sg.mesh, path, false));
+  const std::set<int> onLoop(loop.begin(), loop.end());
+  EXPECT_TRUE(onLoop.count(path.front()) && onLoop.count(path.back()));
+  for (size_t i = 1; i + 1 < path.size(); ++i) EXPECT_FALSE(onLoop.count(path[i])) << "through the inside";
+  double length = 0, loopLength = 0, from = 0, apart = 0;
+  for (size_t i = 0; i + 1 < path.size(); ++i) length += (sg.mesh.V.row(path[i]) - sg.mesh.V.row(path[i + 1])).norm();
+  for (size_t i = 0; i < loop.size(); ++i) {
+    if (loop[i] == path.front()) from = loopLength;
+    if (loop[i] == path.back()) apart = loopLength;
+    loopLength += (sg.mesh.V.row(loop[i]) - sg.mesh.V.row(loop[(i + 1) % loop.size()])).norm();
+  }
+  apart = std::abs(apart - from);
+  EXPECT_GE(std::min(apart, loopLength - apart), 2 * length) << "across, not round a corner";
+  // A turn apart: (pi - 0.6) / 6 of the sphere's radius along a meridian, give or take the mesh.
+  const double turn = (test::kPi - 0.6) / turns * radius * scene->scale;
+  EXPECT_LT(length, 1.3 * turn);
+
+  const LayoutEvaluation e = evaluateLayout(*scene, seams, 3, look);
+  ASSERT_TRUE(e.ok) << e.problem << " (" << e.description() << ")";
+  EXPECT_GE(e.opened.acrossCuts, 1);
+  EXPECT_EQ(e.panels, 3 + e.opened.acrossCuts);
+  EXPECT_EQ(int(e.seams.size()), 3 + e.opened.acrossCuts);
+  EXPECT_NE(e.description().find(std::to_string(e.opened.acrossCuts) + " cut"), std::string::npos) << e.description();
+  EXPECT_NE(e.description().find("would overlap"), std::string::npos) << e.description();
+}

@@ -5,6 +5,7 @@
 #include <array>
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <numeric>
 #include <optional>
@@ -151,6 +152,8 @@ std::string LayoutEvaluation::description() const {
   add(opened.tubeCuts, "cut that opens a tube", "cuts that open tubes");
   add(opened.limbSeams, "seam around a limb", "seams around limbs");
   add(opened.handleSeams, "seam around a handle", "seams around handles");
+  add(opened.acrossCuts, "cut across a panel that would overlap itself when laid flat",
+      "cuts across panels that would overlap themselves when laid flat");
   add(opened.grazingLoops, "loop left out where it only grazed the shape",
       "loops left out where they only grazed the shape");
   add(int(connections.size()), "internal connection joining a band seam's front and back pieces inside",
@@ -1197,17 +1200,53 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
   return out;
 }
 
+// The panels of the layout on the scene layLayout left; a segment that would overlap itself when laid flat gets a cut
+// across it where its outline crosses itself, as the builder's message advises, and the layout is laid again (in
+// options.openingRounds rounds, to at most `panelsAtMost` panels). Empty, with out.problem, where they cannot be made.
+std::optional<BuiltPattern> layoutPanels(DesignScene& scene, LayoutEvaluation& out, const EvaluateOptions& options,
+                                         int fixedSeams, int panelsAtMost) {
+  for (int round = 0;; ++round) {
+    BuiltPattern built = buildDesignPattern(scene, options.triangles);
+    if (built.ok()) return built;
+    out.problem = built.problems.empty() ? "no panels" : built.problems.front().message;
+    const auto overlap = std::find_if(built.problems.begin(), built.problems.end(), [](const SegmentationProblem& p) {
+      return p.code == "pattern.overlaps" && p.segment >= 0;
+    });
+    if (overlap == built.problems.end() || round == options.openingRounds) return std::nullopt;
+    const std::vector<int> path = cutAcross(scene.segmentation, overlap->segment, overlap->location);
+    if (path.size() < 2) return std::nullopt;
+    const std::string name = "a cut across a panel that would overlap itself";
+    const auto cutsAcross = [&](const std::vector<DesignSeam>& seams) {
+      return std::count_if(seams.begin(), seams.end(), [&](const DesignSeam& seam) { return seam.name == name; });
+    };
+    std::vector<DesignSeam> seams = out.seams;
+    seams.push_back(
+        makeSeam(name, false, controlsAlong(scene.segmentation, path, seamPointSpacing(scene.target), false)));
+    LayoutEvaluation again = layLayout(scene, seams, fixedSeams, options, out.connections);
+    // Laid again, the cut must stay (it is left out again where it cuts a sliver off).
+    if (!again.ok || cutsAcross(again.seams) < cutsAcross(seams)) return std::nullopt;
+    if (again.panels > panelsAtMost) {
+      out.problem = "it makes " + std::to_string(again.panels) + " panels on this shape, with a cut across a panel " +
+                    "that would overlap itself when laid flat";
+      return std::nullopt;
+    }
+    again.opened.add(out.opened);
+    ++again.opened.acrossCuts;
+    out = std::move(again);
+  }
+}
+
 // evaluateLayout's second part, on the scene layLayout left: the panels built, optimized and measured.
-void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOptions& options) {
+void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOptions& options, int fixedSeams,
+                   int panelsAtMost) {
   out.ok = false;
   // A layout whose panels cannot be made or settled is not used, and says why (the pattern's own message: panels
   // sewn three to an edge where a cut meets a section, a fold).
   try {
-    const BuiltPattern built = buildDesignPattern(scene, options.triangles);
-    if (!built.ok()) {
-      out.problem = built.problems.empty() ? "no panels" : built.problems.front().message;
-      return;
-    }
+    const std::optional<BuiltPattern> panels = layoutPanels(scene, out, options, fixedSeams, panelsAtMost);
+    out.ok = false;  // a layout laid again with a cut across is ok as laid, not yet measured
+    if (!panels) return;
+    const BuiltPattern& built = *panels;
     OptimizeOptions oo = appStoppingRule();
     oo.stopping.maxIterations = options.maxIterations;
     // A first look (no iteration) measures the flattened panels' own inflation, not their cut.
@@ -1239,7 +1278,7 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
                                 const EvaluateOptions& options, const std::vector<DesignConnection>& connections) {
   const Clock::time_point t0 = Clock::now();
   LayoutEvaluation out = layLayout(scene, seams, fixedSeams, options, connections);
-  if (out.ok) measureLayout(scene, out, options);
+  if (out.ok) measureLayout(scene, out, options, fixedSeams, std::numeric_limits<int>::max());
   out.ms = msSince(t0);
   return out;
 }
@@ -1332,7 +1371,7 @@ LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal
   if (look.ok && std::any_of(looked.begin(), looked.end(),
                              [&](const std::vector<DesignSeam>& seams) { return sameSeams(seams, look.seams); }))
     look.ok = false, look.problem = "it ends with the same seams as a layout before it";
-  if (look.ok) measureLayout(scene, look, options);
+  if (look.ok) measureLayout(scene, look, options, int(kept.size()), panelsAtMost);
   look.ms = msSince(t0);
   return look;
 }

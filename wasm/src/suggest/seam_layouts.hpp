@@ -106,6 +106,12 @@ struct LayoutOpenings {
   int limbSeams = 0;     // sections across a part too big for its seam, around a limb
   int handleSeams = 0;   // closed seams around a handle of a part
   int grazingLoops = 0;  // loops of its own left out, that only grazed the shape (a tiny or thin part)
+  int acrossCuts = 0;    // cuts across a part that would overlap itself when laid flat
+
+  void add(const LayoutOpenings& o) {
+    tubeCuts += o.tubeCuts, limbSeams += o.limbSeams, handleSeams += o.handleSeams, grazingLoops += o.grazingLoops;
+    acrossCuts += o.acrossCuts;
+  }
 };
 
 struct LayoutEvaluation {
@@ -148,7 +154,9 @@ struct EvaluateOptions {
 
 // Traces and segments `seams` on the scene's target (scene.design's seams and connections become them), adds the
 // seams that open its segments into panels (never changing its first `fixedSeams`, the designer's own), and when
-// every segment is a disk without a problem, flattens, optimizes at the coarse resolution and measures.
+// every segment is a disk without a problem, flattens (a segment that would overlap itself when laid flat is cut
+// across where its outline crosses itself, and the layout laid again), optimizes at the coarse resolution and
+// measures.
 LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
                                 const EvaluateOptions& options = {},
                                 const std::vector<DesignConnection>& connections = {});

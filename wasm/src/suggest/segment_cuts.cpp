@@ -335,4 +335,72 @@ std::vector<std::vector<int>> loopsAroundHandles(const Segmentation& sg, int seg
   return taken;
 }
 
+std::vector<int> cutAcross(const Segmentation& sg, int segment, const Eigen::Vector3d& near) {
+  if (segment < 0 || segment >= int(sg.segments.size())) return {};
+  const Segment& s = sg.segments[size_t(segment)];
+  const TriMesh& m = sg.mesh;
+  const auto length = [&](int a, int b) { return (m.V.row(a) - m.V.row(b)).norm(); };
+  // Each loop vertex's places: its loop and arc length from that loop's first vertex, twice where the segment lies on
+  // both sides of its seam (a slit); the start nearest `near`.
+  struct Place {
+    int loop = -1;
+    double arc = 0;
+  };
+  std::unordered_map<int, std::vector<Place>> places;
+  std::set<std::pair<int, int>> loopEdges;
+  std::vector<double> loopLength(s.loops.size(), 0.0);
+  int start = -1;
+  for (size_t l = 0; l < s.loops.size(); ++l) {
+    const std::vector<int>& v = s.loops[l].vertices;
+    for (size_t i = 0; i < v.size(); ++i) {
+      places[v[i]].push_back({int(l), loopLength[l]});
+      loopEdges.insert(std::minmax(v[i], v[(i + 1) % v.size()]));
+      loopLength[l] += length(v[i], v[(i + 1) % v.size()]);
+      if (start < 0 || (m.V.row(v[i]).transpose() - near).norm() < (m.V.row(start).transpose() - near).norm())
+        start = v[i];
+    }
+  }
+  if (start < 0) return {};
+  const auto apart = [&](int v) {  // along the loop, the shorter way, from the nearest places; across loops: far
+    double nearest = INFINITY;
+    for (const Place& from : places.at(start))
+      for (const Place& to : places.at(v))
+        if (to.loop == from.loop) {
+          const double d = std::abs(to.arc - from.arc);
+          nearest = std::min({nearest, d, loopLength[size_t(from.loop)] - d});
+        }
+    return nearest;
+  };
+  std::unordered_map<int, std::vector<int>> around;
+  for (int t : s.triangles)
+    for (int k = 0; k < 3; ++k) {
+      const int a = m.F(t, k), b = m.F(t, (k + 1) % 3);
+      if (!loopEdges.count(std::minmax(a, b))) around[a].push_back(b), around[b].push_back(a);
+    }
+  // Dijkstra from the start through inside vertices; a loop vertex ends a path and is not gone on from.
+  std::unordered_map<int, std::pair<double, int>> reach;  // vertex -> (distance, previous)
+  using Item = std::pair<double, int>;
+  std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+  reach[start] = {0, -1};
+  queue.push({0, start});
+  while (!queue.empty()) {
+    const auto [d, v] = queue.top();
+    queue.pop();
+    if (d > reach.at(v).first) continue;
+    if (v != start && places.count(v)) {
+      if (apart(v) < 2 * d) continue;
+      std::vector<int> path;
+      for (int w = v; w >= 0; w = reach.at(w).second) path.push_back(w);
+      std::reverse(path.begin(), path.end());
+      return path;
+    }
+    for (int w : around[v]) {
+      const double dw = d + length(v, w);
+      const auto it = reach.find(w);
+      if (it == reach.end() || dw < it->second.first) reach[w] = {dw, v}, queue.push({dw, w});
+    }
+  }
+  return {};
+}
+
 }  // namespace billow

@@ -1,8 +1,9 @@
 // Cuts that open a segment that is not a disk, as a designer answers the segmentation's "add a seam from one loop to
 // the other" and "add a seam across it": paths through the segment that join its seam loops (a tube, a part with
 // holes), and loops around its handles (a skull's cheek arches, a mug's handle), whose two sides then bound the segment
-// as two more loops each for the cuts to join.
+// as two more loops each for the cuts to join. And a cut across a disk that would overlap itself when laid flat.
 #pragma once
+#include <Eigen/Core>
 #include <vector>
 
 #include "segment/segmentation.hpp"
@@ -23,5 +24,11 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& segmentation,
 // panels' edges would be sewn as two edges, a pinch.
 std::vector<std::vector<int>> loopsAroundHandles(const Segmentation& segmentation, int segment, double minLength = 0,
                                                  int roots = 8);
+
+// A path through the inside of `segment` (on Segmentation::mesh) from the loop vertex nearest `near` [mesh units] to
+// another loop vertex, across the segment: the shortest whose ends lie at least twice its length apart along the loop
+// (a shorter way round would only cut a corner off). A band that would overlap itself when laid flat, cut across where
+// its outline crosses itself, lies flat as two panels. Cut-mesh vertices from the start; empty where there is none.
+std::vector<int> cutAcross(const Segmentation& segmentation, int segment, const Eigen::Vector3d& near);
 
 }  // namespace billow
