@@ -104,6 +104,25 @@ export function optimizedResultShown(page, timeout = 180000) {
   return page.waitForFunction(() => window.billow.test.resultShown, null, { timeout });
 }
 
+// The panels of the design on screen are made and an optimizer's iterate of them is inflated in its pane (a new
+// shape since `serial`, window.billow.test.inflatedSerial before the edit); the optimization then stops. Tests of
+// what makes a design use it where the optimized result would only add time.
+export async function panelsInflated(page, serial, timeout = 120000) {
+  await page.waitForFunction((since) => {
+    const t = window.billow.test;
+    return (t.inflatedSerial ?? 0) > (since ?? 0) && t.panes.inflated.shape && t.panes.pattern.pattern
+      && /^Optimizing the panels: step/.test(document.querySelector('#status').textContent);
+  }, serial, { timeout }).catch(async (error) => {
+    const state = await page.evaluate(() => {
+      const t = window.billow.test;
+      return { serial: t.inflatedSerial, shape: Boolean(t.panes.inflated.shape), pattern: Boolean(t.panes.pattern.pattern),
+        optimizing: t.optimizing, status: document.querySelector('#status').textContent };
+    });
+    throw new Error(`no iterate of the panels was inflated since shape ${serial}: ${JSON.stringify(state)} (${error.message})`);
+  });
+  await page.evaluate(() => window.billow.test.stopWork());
+}
+
 export async function screenshot(page, name) {
   await mkdir(SHOTS, { recursive: true });
   const path = join(SHOTS, `${name}.png`);
