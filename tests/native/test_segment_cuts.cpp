@@ -91,6 +91,14 @@ bool joinedByEdges(const TriMesh& m, const std::vector<int>& path, bool closed) 
   return true;
 }
 
+// The length of a path of mesh vertices, closed or not.
+double pathLength(const TriMesh& m, const std::vector<int>& path, bool closed) {
+  double length = 0;
+  for (size_t i = 0; i + (closed ? 0 : 1) < path.size(); ++i)
+    length += (m.V.row(path[i]) - m.V.row(path[(i + 1) % path.size()])).norm();
+  return length;
+}
+
 // A closed seam along a plane section, control points `spacing` apart.
 DesignSeam seamAlong(const TriMesh& target, const SectionLoop& loop, double spacing) {
   DesignSeam seam;
@@ -127,16 +135,12 @@ TEST(SegmentCuts, TheLoopAroundARingGoesTheShortWayRound) {
   EXPECT_EQ(std::set<int>(loop.begin(), loop.end()).size(), loop.size()) << "a simple loop";
   // Round the tube (2 pi r, the mesh's 40-gon a little less), not round the hole (2 pi (R - r) and more).
   const double scale = test::boxDiagonal(scene->target) / test::boxDiagonal(shape);
-  double length = 0;
-  for (size_t i = 0; i < loop.size(); ++i)
-    length += (sg.mesh.V.row(loop[i]) - sg.mesh.V.row(loop[(i + 1) % loop.size()])).norm();
+  const double length = pathLength(sg.mesh, loop, true);
   EXPECT_NEAR(length / scale, 2 * test::kPi * r, 0.03 * 2 * test::kPi * r);
   // Where the tube is too thin to seam round, the loop goes round the hole instead (2 pi (R - r) on the inside).
   const std::vector<std::vector<int>> longer = loopsAroundHandles(sg, 0, 1.5 * length);
   ASSERT_EQ(longer.size(), 1u);
-  double around = 0;
-  for (size_t i = 0; i < longer[0].size(); ++i)
-    around += (sg.mesh.V.row(longer[0][i]) - sg.mesh.V.row(longer[0][(i + 1) % longer[0].size()])).norm();
+  const double around = pathLength(sg.mesh, longer[0], true);
   EXPECT_GE(around, 1.5 * length);
   EXPECT_LT(around / scale, 1.1 * 2 * test::kPi * (R - r));
   // A sphere has no handle.
@@ -309,8 +313,8 @@ TEST(SegmentCuts, APeelThatWouldOverlapItselfFlatIsCutAcross) {
   const std::set<int> onLoop(loop.begin(), loop.end());
   EXPECT_TRUE(onLoop.count(path.front()) && onLoop.count(path.back()));
   for (size_t i = 1; i + 1 < path.size(); ++i) EXPECT_FALSE(onLoop.count(path[i])) << "through the inside";
-  double length = 0, loopLength = 0, from = 0, apart = 0;
-  for (size_t i = 0; i + 1 < path.size(); ++i) length += (sg.mesh.V.row(path[i]) - sg.mesh.V.row(path[i + 1])).norm();
+  const double length = pathLength(sg.mesh, path, false);
+  double loopLength = 0, from = 0, apart = 0;
   for (size_t i = 0; i < loop.size(); ++i) {
     if (loop[i] == path.front()) from = loopLength;
     if (loop[i] == path.back()) apart = loopLength;

@@ -1233,6 +1233,7 @@ std::optional<BuiltPattern> layoutPanels(DesignScene& scene, LayoutEvaluation& o
     again.opened.add(out.opened);
     ++again.opened.acrossCuts;
     out = std::move(again);
+    out.ok = false;  // laid, not yet measured
   }
 }
 
@@ -1244,7 +1245,6 @@ void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOpti
   // sewn three to an edge where a cut meets a section, a fold).
   try {
     const std::optional<BuiltPattern> panels = layoutPanels(scene, out, options, fixedSeams, panelsAtMost);
-    out.ok = false;  // a layout laid again with a cut across is ok as laid, not yet measured
     if (!panels) return;
     const BuiltPattern& built = *panels;
     OptimizeOptions oo = appStoppingRule();

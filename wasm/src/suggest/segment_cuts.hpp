@@ -20,8 +20,8 @@ std::vector<std::vector<int>> cutsJoiningLoops(const Segmentation& segmentation,
 // Erickson and Whittlesey's greedy systems of loops (2005) from `roots` roots spread over the segment, the shortest
 // first, each apart from those taken, as long as all of them together leave the segment whole. Cut-mesh vertices in
 // order, the first not repeated at the end; none when the segment has no handle, fewer than its genus where no more
-// are found off its seams. None shorter than `minLength` [mesh units]: a seam round a handle thinner than three of the
-// panels' edges would be sewn as two edges, a pinch.
+// are found off its seams. None shorter than `minLength` [mesh units]: round a handle only a few of the panels' edges
+// thick the seam would be a triangle or two (the loop then goes round the hole instead).
 std::vector<std::vector<int>> loopsAroundHandles(const Segmentation& segmentation, int segment, double minLength = 0,
                                                  int roots = 8);
 
