@@ -14,6 +14,7 @@
 #include "mesh/validate.hpp"
 #include "simulate/materials.hpp"
 #include "suggest/seam_layouts.hpp"
+#include "suggest/thin_handles.hpp"
 #include "util/memory_budget.hpp"
 
 namespace {
@@ -30,6 +31,26 @@ std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indic
     const billow::ValidationReport report = billow::validateTarget(mesh);
     if (report.modified) Eigen::Map<billow::Triangles>(corners, numTriangles, 3) = mesh.F;
     return billow::toJson(report);
+  });
+}
+
+// positions: #V*3 doubles, indices: #F*3 int32 of a checked target (validateTarget). { handles: [loop length, ...]
+// (its thin handles, thinnest first: suggest/thin_handles.hpp), and with cut { positions, indices } of the target
+// cut through them (every face keeping its index) }.
+std::string thinHandles(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles, bool cut) {
+  return guarded([&] {
+    billow::TriMesh mesh;
+    mesh.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
+    mesh.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
+    const std::vector<billow::ThinHandle> handles = billow::thinHandles(mesh);
+    nlohmann::json out = {{"handles", nlohmann::json::array()}};
+    for (const billow::ThinHandle& h : handles) out["handles"].push_back(h.length);
+    if (cut) {
+      billow::cutThinHandles(mesh, handles);
+      out["positions"] = std::vector<double>(mesh.V.data(), mesh.V.data() + mesh.V.size());
+      out["indices"] = std::vector<int>(mesh.F.data(), mesh.F.data() + mesh.F.size());
+    }
+    return out.dump();
   });
 }
 
@@ -73,6 +94,7 @@ std::string chooseLooks(const std::string& requestJson) {
 
 EMSCRIPTEN_BINDINGS(billow) {
   emscripten::function("validateTarget", &validateTarget);
+  emscripten::function("thinHandles", &thinHandles);
   emscripten::function("crashForTesting", &crashForTesting);
   emscripten::function("version", &version);
   emscripten::function("materialPresets", &materialPresets);

@@ -1,7 +1,7 @@
-// billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--height M] [--up AXIS]
-//                [--resolution TRIANGLES] [--max-iterations N] [--optimize K] [--quiet]: seam layouts for a target
-// nobody has patterned yet (suggest/seam_layouts.hpp), each given a first look (its flattened panels inflated), the
-// K most promising (lookPromise) optimized at a coarse resolution and ranked by how close their optimized panels
+// billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--cut-thin-handles] [--height M]
+//                [--up AXIS] [--resolution TRIANGLES] [--max-iterations N] [--optimize K] [--quiet]: seam layouts for a
+// target nobody has patterned yet (suggest/seam_layouts.hpp), each given a first look (its flattened panels inflated),
+// the K most promising (lookPromise) optimized at a coarse resolution and ranked by how close their optimized panels
 // inflate to the target.
 // Writes DIR/layout-K.billow.json (the design, best first), DIR/layout-K.pattern.json (its optimized coarse panels) and
 // DIR/summary.json.
@@ -14,6 +14,7 @@
 #include "io/mesh_file.hpp"
 #include "io/pattern_json.hpp"
 #include "suggest/seam_layouts.hpp"
+#include "suggest/thin_handles.hpp"
 #include "util/error.hpp"
 
 namespace billow::cli {
@@ -32,8 +33,8 @@ std::string percent(double share) {
 int suggestUsage(bool help) {
   std::fprintf(help ? stdout : stderr,
                "usage: billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams]\n"
-               "                      [--height METERS] [--up AXIS] [--resolution TRIANGLES] [--max-iterations N]\n"
-               "                      [--optimize K] [--quiet]\n\n"
+               "                      [--cut-thin-handles] [--height METERS] [--up AXIS] [--resolution TRIANGLES]\n"
+               "                      [--max-iterations N] [--optimize K] [--quiet]\n\n"
                "Suggests seam layouts for a target shape (a design file, or a mesh file made into a design of\n"
                "--height meters, default 0.6, along --up: +y, +z, ...; a mesh that stands only on its Z bottom,\n"
                "as CAD and 3D-printing files are made, is taken Z up, as the app does): layouts of plane\n"
@@ -44,6 +45,9 @@ int suggestUsage(bool help) {
                "their distance to the target (the worse way).\n"
                "--symmetry keeps the target's mirror symmetry (the design's symmetry plane, else the one the\n"
                "shape has); --keep-seams adds to the design's own seams.\n"
+               "--cut-thin-handles cuts through the handles too thin for a panel to follow (a boot's lace loops:\n"
+               "loops around them shorter than a tenth of the shape's size) and closes their ends, as the app's\n"
+               "\"Cut the thin handles\" does; the layouts' designs say so.\n"
                "Writes DIR/layout-K.billow.json (best first), DIR/layout-K.pattern.json and DIR/summary.json.\n"
                "Exit code 0 when some layout could be made into panels, 1 when none could.\n");
   return help ? 0 : 2;
@@ -110,7 +114,8 @@ int suggestCommand(const std::vector<std::string>& argv) {
 
   std::string designPath;
   bool guessUp = false;
-  const Design read = readInput(args.positional[0], args, designPath, guessUp);
+  Design read = readInput(args.positional[0], args, designPath, guessUp);
+  if (args.has("--cut-thin-handles")) read.target.cutThinHandles = true;
   const std::unique_ptr<DesignScene> scene =
       loadDesignTargetScene(read, designPath, exampleSearchPath(executableDir()), guessUp);
   const Design input = scene->design;  // as read, its up axis guessed: the layouts change the scene's own
@@ -244,10 +249,16 @@ int suggestCommand(const std::vector<std::string>& argv) {
                 l["name"].get<std::string>().c_str(), needs.c_str());
   }
   if (ranked.empty()) {
+    // Each handle needs a seam around it, and a thin one cannot have a panel round it: more panels will not help.
+    const size_t thin = input.target.cutThinHandles ? 0 : thinHandles(scene->target).size();
+    const std::string why = thin ? "; the shape has " + std::to_string(thin) + " thin handle" + (thin > 1 ? "s" : "") +
+                                       " no panel can follow: --cut-thin-handles cuts through " +
+                                       (thin > 1 ? "them" : "it")
+                                 : "; try more panels";
     std::fprintf(stderr,
                  "billow suggest: none of the %zu layouts could be made into at most %d panels on this shape (why: "
-                 "%s/summary.json); try more panels\n",
-                 proposals.size(), request.panels, dir.c_str());
+                 "%s/summary.json)%s\n",
+                 proposals.size(), request.panels, dir.c_str(), why.c_str());
     return 1;
   }
   return 0;

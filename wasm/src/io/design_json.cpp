@@ -201,6 +201,8 @@ UpAxis readUp(FieldReader& r, const json& value) {
 bool readTarget(FieldReader& r, const json& t, DesignTarget& out) {
   if (!t.is_object()) return r.bad("target", "The target must be an object such as {\"example\": \"spot\"}.");
   if (t.contains("up")) out.up = readUp(r, t["up"]);
+  out.cutThinHandles =
+      r.boolean(t, "cutThinHandles", false, "target.cutThinHandles", "Whether its thin handles are cut");
   const int kinds =
       int(t.contains("example")) + int(t.contains("obj")) + int(t.contains("file")) + int(t.contains("vertices"));
   if (kinds != 1)
@@ -379,6 +381,7 @@ std::string writeDesignJson(const Design& d, int indent) {
     target[key] = d.target.name;
   }
   if (d.target.up != UpAxis{}) target["up"] = toString(d.target.up);
+  if (d.target.cutThinHandles) target["cutThinHandles"] = true;
   doc["target"] = target;
   json size = base("size");
   size.erase("height"), size.erase("scale");

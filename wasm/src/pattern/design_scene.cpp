@@ -2,6 +2,7 @@
 
 #include "io/mesh_file.hpp"
 #include "mesh/validate.hpp"
+#include "suggest/thin_handles.hpp"
 #include "util/clock.hpp"
 #include "util/error.hpp"
 
@@ -39,6 +40,7 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
     throw Error("design.bad-target", "The design's target cannot be used: " + why);
   }
   if (guessUp) scene->design.target.up = report.stats.standing.up;
+  if (design.target.cutThinHandles) cutThinHandles(own, thinHandles(own));
   fillTargetScene(*scene, own);
   scene->loadMs = msSince(t0);
   return scene;

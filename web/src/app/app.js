@@ -201,6 +201,7 @@ export class App {
       }
       if (this.target && design.target.file === this.target.fileName) {
         this.commitDesign(design, { reset: true });
+        if (this.thinHandlesLeft(design)) return this.cutThinHandles(); // the design's seams lie on the cut target
         return this.seams.refresh();
       }
       return this.messages.show('warning', `This design uses the target file "${design.target.file}": open that mesh first, then the design.`);
@@ -215,7 +216,7 @@ export class App {
     const interrupted = this.panels.stop();
     try {
       const result = await this.track(`Opening ${fileName}…`, () =>
-        this.client.latest('target', Op.loadTarget, { fileName, bytes }, {
+        this.client.latest('target', Op.loadTarget, { fileName, bytes, cutThinHandles: design?.target?.cutThinHandles }, {
           transfer: [bytes],
           onProgress: (p) => this.setStatus(`Opening ${fileName}: ${p.stage}…`),
         }).promise,
@@ -232,9 +233,8 @@ export class App {
       // the handles open: SeamEditor.segment).
       this.messages.resolve('target.', { prefix: true });
       if (guess.notice) this.messages.show('notice', guess.notice, [], { cause: 'target.up' });
-      const shown = result.report.issues.filter((i) => i.severity !== 'error');
-      for (const issue of shown)
-        if (!quiet || issue.severity !== 'notice') this.messages.show(issue.severity, issue.message, [], { cause: `target.${issue.code}` });
+      this.showTargetIssues(result.report, { quiet });
+      if (this.thinHandlesLeft(design)) await this.cutThinHandles(); // a linked design whose mesh came as this file
     } catch (error) {
       if (error.code === ErrorCode.cancelled) return; // a newer load won
       const report = error.details?.report;
@@ -250,10 +250,72 @@ export class App {
     }
   }
 
+  // What the mesh report says of the target (its notices unless quiet). A shape with thin handles is offered to have
+  // them cut through (the genus warning's action): each would need a seam around a tube no panel can follow.
+  showTargetIssues(report, { quiet = false } = {}) {
+    for (const issue of report.issues.filter((i) => i.severity !== 'error')) {
+      if (quiet && issue.severity === 'notice') continue;
+      const thin = issue.code === 'mesh.genus' ? report.thinHandles ?? [] : [];
+      if (!thin.length) {
+        this.messages.show(issue.severity, issue.message, [], { cause: `target.${issue.code}` });
+        continue;
+      }
+      const scale = this.scaleFor(this.design);
+      const [lo, hi] = [report.stats.bbox_min, report.stats.bbox_max];
+      const diagonal = Math.hypot(hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]);
+      const cm = (units) => {
+        const value = units * scale * 100;
+        return `${value < 10 ? Math.max(0.1, Math.round(value * 10) / 10) : Math.round(value)} cm`;
+      };
+      const share = (units) => `${Math.max(1, Math.round((100 * units) / diagonal))} %`;
+      const around = thin.length > 1 ? `${cm(thin[0])} to ${cm(thin.at(-1))} around, ${share(thin[0])} to ${share(thin.at(-1))}` : `${cm(thin[0])} around, ${share(thin[0])}`;
+      const which = thin.length === report.stats.genus ? (thin.length > 1 ? `All ${thin.length} are` : 'It is') : `${thin.length} of them ${thin.length > 1 ? 'are' : 'is'}`;
+      const them = thin.length > 1 ? 'them' : 'it';
+      const text = `${issue.message} ${which} thin (${around} of the shape's size, as a boot's lace loops or a chain's links): a seam around ${thin.length > 1 ? 'each' : 'it'} would make a sleeve only a few of the panels' edges around. Cutting through ${them} closes the ends and leaves the rest of the shape as it is.`;
+      this.messages.show(issue.severity, text, [], {
+        cause: `target.${issue.code}`,
+        action: { label: thin.length > 1 ? `Cut the ${thin.length} thin handles` : 'Cut the thin handle', run: () => this.cutThinHandles() },
+      });
+    }
+  }
+
+  // Whether the design has its thin handles cut while the target on screen still has them.
+  thinHandlesLeft(design) {
+    return Boolean(design.target.cutThinHandles && this.target?.report.thinHandles?.length);
+  }
+
+  // The target's thin handles cut through (suggest/thin_handles.hpp) and the design marked so, its seams kept: every
+  // face of the target keeps its index. Its panels are made again.
+  async cutThinHandles() {
+    if (!this.target || this.design.target.example) return;
+    const interrupted = this.panels.stop();
+    const design = { ...this.design, target: { ...this.design.target, cutThinHandles: true } };
+    const mesh = { positions: this.target.positions, indices: this.target.indices };
+    try {
+      const result = await this.track('Cutting through the thin handles…', () =>
+        this.client.latest('target', Op.setTarget, { ...mesh, cutThinHandles: true }, {
+          onProgress: (p) => this.setStatus(`Cutting through the thin handles: ${p.stage}…`),
+        }).promise,
+      );
+      this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
+      this.installTarget(this.target.fileName, result, design);
+      this.setStatus('Ready');
+      this.messages.resolve('target.', { prefix: true });
+      const n = result.report.thinHandlesCut ?? 0;
+      this.messages.show('notice', `Cut through ${n} thin handle${n === 1 ? '' : 's'} and closed ${n === 1 ? 'its' : 'their'} ends; the design keeps ${n === 1 ? 'it' : 'them'} cut (open the mesh file again to have ${n === 1 ? 'it' : 'them'} back).`, [], { cause: 'target.thin-handles' });
+      this.showTargetIssues(result.report, { quiet: true });
+    } catch (error) {
+      if (error.code === ErrorCode.cancelled) return;
+      this.messages.show('error', `The thin handles could not be cut: ${error.message} Your design is unchanged.`);
+      this.setStatus('Ready');
+      if (interrupted) this.panels.remake();
+    }
+  }
+
   async installSavedMesh(design, mesh) {
     this.fields.example = '';
-    const result = await this.client.request(Op.setTarget, mesh);
-    this.client.remember(Op.setTarget, mesh);
+    const result = await this.client.request(Op.setTarget, { ...mesh, cutThinHandles: design.target.cutThinHandles });
+    this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
     this.installTarget(design.target.file, result, design);
     this.setStatus('Ready');
   }

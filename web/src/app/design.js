@@ -107,6 +107,11 @@ export function parseDesign(value, { inlineName = 'target.obj' } = {}) {
     design.target = { example: DEFAULT_EXAMPLE };
   }
   design.target = parseUp(design.target, warnings);
+  if ('cutThinHandles' in design.target && typeof design.target.cutThinHandles !== 'boolean') {
+    const { cutThinHandles, ...rest } = design.target;
+    design.target = rest;
+    warnings.push(`Whether the target's thin handles are cut (target.cutThinHandles) must be true or false, not ${JSON.stringify(cutThinHandles)}: they are left as they are.`);
+  }
   const height = value.size?.height;
   if (typeof height === 'number' && Number.isFinite(height) && height >= MIN_HEIGHT && height <= MAX_HEIGHT) {
     design.size = { ...value.size, height };

@@ -272,7 +272,7 @@ export class SeamSuggestions {
       this.finish(
         result.layouts.length
           ? `${result.tried} layouts tried; the ${result.layouts.length === 1 ? 'closest' : `${result.layouts.length} closest`} below, best first.`
-          : `None of the ${result.tried} layouts tried cuts this shape into at most ${panels} panels: ask for more panels.`,
+          : this.noLayout(result.tried, panels),
       );
       this.render();
     } catch (error) {
@@ -280,6 +280,16 @@ export class SeamSuggestions {
       if (error.code === ErrorCode.cancelled) return this.finish(null);
       this.finish(`The layouts could not be tried: ${error.message}`);
     }
+  }
+
+  // Why no layout came: too few panels, or thin handles that each need a seam around them (a sleeve no panel can
+  // follow), which more panels would not cure.
+  noLayout(tried, panels) {
+    const thin = this.app.target?.report.thinHandles?.length ?? 0;
+    const none = `None of the ${tried} layouts tried cuts this shape into at most ${panels} panels`;
+    if (!thin) return `${none}: ask for more panels.`;
+    this.app.showTargetIssues(this.app.target.report, { quiet: true }); // the handles' warning, with its button, again
+    return `${none}: its ${thin === 1 ? 'thin handle needs' : `${thin} thin handles need`} a seam around ${thin === 1 ? 'it' : 'each'}. Cut through ${thin === 1 ? 'it' : 'them'} first: the message about its handles has the button.`;
   }
 
   // Makes a layout's seams the design's: one step of the history. Kept seams stay as they are (with their mirror

@@ -15,13 +15,27 @@ function distanceSummary({ rms, max, diagonal, targetRms, targetMax, uncovered, 
 export function createHandlers(api) {
   const state = { target: null };
 
-  function* installTarget(positions, indices) {
+  // cutThinHandles: the design has its thin handles cut through (suggest/thin_handles.hpp). On a shape with handles
+  // the report also tells its thin ones (report.thinHandles: their loops' lengths, in the mesh's units), or how many
+  // were cut (report.thinHandlesCut).
+  function* installTarget(positions, indices, { cutThinHandles = false } = {}) {
     yield { stage: 'checking the mesh', done: 2, total: 3 };
-    const { report, indices: fixed } = api.validateTarget(positions, indices);
+    let { report, indices: fixed } = api.validateTarget(positions, indices);
     if (!report.ok) {
       const errors = report.issues.filter((i) => i.severity === 'error');
       throw new SolverError('target.invalid', errors.map((i) => i.message).join('\n'), { report });
     }
+    let thin = [];
+    if (report.stats.genus > 0) {
+      yield { stage: cutThinHandles ? 'cutting through its thin handles' : 'measuring its handles', done: 2, total: 3 };
+      const found = api.thinHandles(positions, fixed, cutThinHandles);
+      if (cutThinHandles && found.handles.length) {
+        positions = Float32Array.from(found.positions);
+        ({ report, indices: fixed } = api.validateTarget(positions, found.indices));
+        report.thinHandlesCut = found.handles.length;
+      } else if (!cutThinHandles) thin = found.handles;
+    }
+    report.thinHandles = thin;
     state.target = { positions, indices: fixed };
     state.suggestion = null; // the session forgets it with its target
     state.session ??= api.targetSession();
@@ -51,14 +65,14 @@ export function createHandlers(api) {
   }
 
   return {
-    *[Op.loadTarget]({ fileName, bytes }) {
+    *[Op.loadTarget]({ fileName, bytes, cutThinHandles }) {
       yield { stage: 'reading the file', done: 0, total: 3 };
       const mesh = parseMesh(fileName, bytes);
       yield { stage: 'welding vertices', done: 1, total: 3 };
-      return yield* installTarget(mesh.positions, mesh.indices);
+      return yield* installTarget(mesh.positions, mesh.indices, { cutThinHandles });
     },
-    *[Op.setTarget]({ positions, indices }) {
-      return yield* installTarget(positions, indices);
+    *[Op.setTarget]({ positions, indices, cutThinHandles }) {
+      return yield* installTarget(positions, indices, { cutThinHandles });
     },
     // { patternText, options } -> snapshot (see Inflation.snapshot). Streams the shape while it inflates.
     *[Op.inflatePattern]({ patternText, options = {} }) {

@@ -95,6 +95,17 @@ export class SolverApi {
     });
   }
 
+  // A checked target's thin handles (suggest/thin_handles.hpp): { handles: [loop length, ...] }, thinnest first, and
+  // with cut the target cut through them as { positions: Float64Array, indices: Uint32Array } besides.
+  thinHandles(positions, indices, cut = false) {
+    const pos = positions instanceof Float64Array ? positions : Float64Array.from(positions);
+    const idx = indices instanceof Int32Array ? indices : Int32Array.from(indices);
+    const reply = this.withHeap([pos, idx], (pPos, pIdx) =>
+      SolverApi.unwrap(this.module.thinHandles(pPos, pos.length / 3, pIdx, idx.length / 3, cut)));
+    if (!cut) return { handles: reply.handles };
+    return { handles: reply.handles, positions: Float64Array.from(reply.positions), indices: Uint32Array.from(reply.indices) };
+  }
+
   crashForTesting() {
     this.module.crashForTesting();
   }

@@ -1,0 +1,78 @@
+// A designer's shape with thin handles (a boot's lace loops; here a wire hoop): the genus warning says they are too
+// thin for a panel to follow and offers to cut through them; one click leaves the shape a handle fewer, the design
+// marked so, and a reload keeps it cut. A thick ring (a swim ring) is not offered the cut.
+import { test, before, after } from 'node:test';
+import assert from 'node:assert/strict';
+import { openFreshPage, openPage, screenshot, useBrowser } from './harness.mjs';
+
+const env = useBrowser({ before, after });
+
+const stat = (page, name) => page.textContent(`#target-stats dd[data-stat="${name}"]`);
+
+// A ring around z as OBJ text: radius R to the tube's middle, tube radius r, faces outward.
+function ringObj(R, r, nu, nv) {
+  const lines = [];
+  for (let i = 0; i < nu; i++)
+    for (let j = 0; j < nv; j++) {
+      const u = (2 * Math.PI * i) / nu, v = (2 * Math.PI * j) / nv;
+      const rho = R + r * Math.cos(v);
+      lines.push(`v ${rho * Math.cos(u)} ${r * Math.sin(v)} ${rho * Math.sin(u)}`);
+    }
+  const at = (i, j) => ((i % nu) * nv + (j % nv)) + 1;
+  for (let i = 0; i < nu; i++)
+    for (let j = 0; j < nv; j++) {
+      lines.push(`f ${at(i, j)} ${at(i, j + 1)} ${at(i + 1, j + 1)}`);
+      lines.push(`f ${at(i, j)} ${at(i + 1, j + 1)} ${at(i + 1, j)}`);
+    }
+  return lines.join('\n');
+}
+
+const open = (page, name, text) => page.setInputFiles('#file-input', { name, mimeType: 'text/plain', buffer: Buffer.from(text) });
+const fileShown = (page, name) =>
+  page.waitForFunction((n) => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === n, name, { timeout: 30000 });
+
+test('a thin handle is offered a cut through it; the cut shape keeps its faces and stays cut after a reload', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+
+  // A swim ring: one handle, thick. The warning asks for a seam around it and offers no cut.
+  await open(page, 'swim-ring.obj', ringObj(1, 0.4, 48, 24));
+  await fileShown(page, 'swim-ring.obj');
+  assert.equal(await stat(page, 'genus'), '1');
+  const thick = page.locator('.message', { hasText: 'genus 1' });
+  await thick.waitFor();
+  assert.doesNotMatch(await thick.textContent(), /thin/);
+  assert.equal(await thick.locator('button.action').count(), 0);
+
+  // A wire hoop: its tube 2 pi 0.03 around, 6 % of its bounding box's diagonal.
+  await open(page, 'hoop.obj', ringObj(1, 0.03, 120, 16));
+  await fileShown(page, 'hoop.obj');
+  assert.equal(await stat(page, 'genus'), '1');
+  const warning = page.locator('.message.warning', { hasText: 'genus 1' });
+  await warning.waitFor();
+  assert.match(await warning.textContent(), /It is thin \([\d.]+ cm around, 6 % of the shape's size.*a sleeve only a few of the panels' edges around/);
+  await screenshot(page, 'thin-handles-offered');
+  const faces = await stat(page, 'triangles');
+  await warning.locator('button.action', { hasText: 'Cut the thin handle' }).click();
+
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="genus"]')?.textContent === '0', null, { timeout: 30000 });
+  const notice = page.locator('.message.notice', { hasText: 'Cut through 1 thin handle' });
+  await notice.waitFor();
+  assert.equal(await page.locator('.message', { hasText: 'genus 1' }).count(), 0, 'the genus warning goes');
+  // Both ends closed with a fan of 16 triangles; every face of the hoop kept.
+  const count = (text) => Number(text.replace(/,/g, ''));
+  assert.equal(count(await stat(page, 'triangles')), count(faces) + 32);
+  assert.equal(await page.evaluate(() => window.billow.test.design.target.cutThinHandles), true);
+  await screenshot(page, 'thin-handles-cut');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+
+  // Reopened from the autosave: still cut, no warning again.
+  const again = await openPage(env.context, env.server.url);
+  await fileShown(again, 'hoop.obj');
+  assert.equal(await stat(again, 'genus'), '0');
+  assert.equal(count(await stat(again, 'triangles')), count(faces) + 32);
+  assert.equal(await again.evaluate(() => window.billow.test.design.target.cutThinHandles), true);
+  assert.equal(await again.locator('.message', { hasText: 'genus' }).count(), 0);
+  assert.deepEqual(again.errors, []);
+  await again.close();
+});

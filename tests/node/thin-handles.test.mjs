@@ -1,0 +1,67 @@
+// Thin handles through the worker's handlers in Node, as the app installs a target: a wire hoop's report names its
+// thin handle (the loop round its tube), a swim ring's does not, and installed with cutThinHandles the hoop comes
+// back cut: a handle fewer, every face kept, the ends closed.
+import { test } from 'node:test';
+import assert from 'node:assert/strict';
+import { Op } from '../../web/src/worker/protocol.js';
+import { handlers, run } from './worker-handlers.mjs';
+import { parseDesign } from '../../web/src/app/design.js';
+
+// A ring around y: radius R to the tube's middle, tube radius r, as flat arrays.
+function ring(R, r, nu, nv) {
+  const positions = [], indices = [];
+  for (let i = 0; i < nu; i++)
+    for (let j = 0; j < nv; j++) {
+      const u = (2 * Math.PI * i) / nu, v = (2 * Math.PI * j) / nv, rho = R + r * Math.cos(v);
+      positions.push(rho * Math.cos(u), r * Math.sin(v), rho * Math.sin(u));
+    }
+  const at = (i, j) => (i % nu) * nv + (j % nv);
+  for (let i = 0; i < nu; i++)
+    for (let j = 0; j < nv; j++) indices.push(at(i, j), at(i, j + 1), at(i + 1, j + 1), at(i, j), at(i + 1, j + 1), at(i + 1, j));
+  return { positions: Float32Array.from(positions), indices: Uint32Array.from(indices) };
+}
+
+test('a hoop names its thin handle and is cut through it on request; a swim ring has none', () => {
+  const hoop = ring(1, 0.03, 120, 16);
+  const shown = run(handlers[Op.setTarget](hoop));
+  assert.equal(shown.report.stats.genus, 1);
+  assert.equal(shown.report.thinHandles.length, 1);
+  // Round the tube: the 16-gon's perimeter (float32 positions).
+  assert.ok(Math.abs(shown.report.thinHandles[0] - 32 * 0.03 * Math.sin(Math.PI / 16)) < 1e-6, `${shown.report.thinHandles[0]}`);
+  assert.equal(shown.indices.length, hoop.indices.length, 'nothing is cut unasked');
+
+  const cut = run(handlers[Op.setTarget]({ ...hoop, cutThinHandles: true }));
+  assert.equal(cut.report.stats.genus, 0);
+  assert.equal(cut.report.stats.components, 1);
+  assert.equal(cut.report.thinHandlesCut, 1);
+  assert.deepEqual(cut.report.thinHandles, []);
+  assert.ok(cut.report.ok);
+  assert.equal(cut.indices.length, hoop.indices.length + 32 * 3, 'two ends of 16 triangles');
+  assert.equal(cut.positions.length, hoop.positions.length + (16 + 2) * 3);
+  // Every face of the hoop keeps its corners or their copies, within 0.3 of an edge of where they were.
+  const far = [];
+  for (let c = 0; c < hoop.indices.length; c++) {
+    const a = hoop.indices[c] * 3, b = cut.indices[c] * 3;
+    const d = Math.hypot(...[0, 1, 2].map((k) => hoop.positions[a + k] - cut.positions[b + k]));
+    if (d > 0.3 * 0.055) far.push(c);
+  }
+  assert.deepEqual(far, []);
+  // Installed again as the autosave gives it back, with the design's flag: nothing more to cut.
+  const again = run(handlers[Op.setTarget]({ positions: cut.positions, indices: cut.indices, cutThinHandles: true }));
+  assert.equal(again.indices.length, cut.indices.length);
+  assert.equal(again.report.stats.genus, 0);
+
+  const swimRing = run(handlers[Op.setTarget](ring(1, 0.4, 48, 24)));
+  assert.equal(swimRing.report.stats.genus, 1);
+  assert.deepEqual(swimRing.report.thinHandles, []);
+});
+
+test('a design keeps target.cutThinHandles when it is true or false, and drops another value with a warning', () => {
+  const read = (value) => parseDesign({ format: 'billow-design', version: 1, target: { file: 'boot.obj', cutThinHandles: value }, seams: [] });
+  assert.equal(read(true).design.target.cutThinHandles, true);
+  assert.deepEqual(read(true).warnings, []);
+  assert.equal(read(false).design.target.cutThinHandles, false);
+  const bad = read('yes');
+  assert.equal('cutThinHandles' in bad.design.target, false);
+  assert.match(bad.warnings.join('\n'), /target\.cutThinHandles\) must be true or false, not "yes"/);
+});
