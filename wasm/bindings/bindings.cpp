@@ -11,6 +11,7 @@
 #include <string>
 
 #include "guarded.hpp"
+#include "mesh/close_holes.hpp"
 #include "mesh/validate.hpp"
 #include "simulate/materials.hpp"
 #include "suggest/seam_layouts.hpp"
@@ -51,6 +52,22 @@ std::string thinHandles(uintptr_t positions, int numVertices, uintptr_t indices,
       out["indices"] = std::vector<int>(mesh.F.data(), mesh.F.data() + mesh.F.size());
     }
     return out.dump();
+  });
+}
+
+// positions: #V*3 doubles, indices: #F*3 int32 of an open target turned one way (validateTarget). { closed (how many
+// holes), positions, indices } of the target with its holes capped (mesh/close_holes.hpp, every face keeping its
+// index).
+std::string closeHoles(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles) {
+  return guarded([&] {
+    billow::TriMesh mesh;
+    mesh.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
+    mesh.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
+    const int closed = billow::closeHoles(mesh);
+    return nlohmann::json({{"closed", closed},
+                           {"positions", std::vector<double>(mesh.V.data(), mesh.V.data() + mesh.V.size())},
+                           {"indices", std::vector<int>(mesh.F.data(), mesh.F.data() + mesh.F.size())}})
+        .dump();
   });
 }
 
@@ -95,6 +112,7 @@ std::string chooseLooks(const std::string& requestJson) {
 EMSCRIPTEN_BINDINGS(billow) {
   emscripten::function("validateTarget", &validateTarget);
   emscripten::function("thinHandles", &thinHandles);
+  emscripten::function("closeHoles", &closeHoles);
   emscripten::function("crashForTesting", &crashForTesting);
   emscripten::function("version", &version);
   emscripten::function("materialPresets", &materialPresets);

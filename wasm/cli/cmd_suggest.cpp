@@ -1,8 +1,8 @@
-// billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--cut-thin-handles] [--height M]
-//                [--up AXIS] [--resolution TRIANGLES] [--max-iterations N] [--optimize K] [--quiet]: seam layouts for a
-// target nobody has patterned yet (suggest/seam_layouts.hpp), each given a first look (its flattened panels inflated),
-// the K most promising (lookPromise) optimized at a coarse resolution and ranked by how close their optimized panels
-// inflate to the target.
+// billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams] [--cut-thin-handles]
+//                [--close-holes] [--height M] [--up AXIS] [--resolution TRIANGLES] [--max-iterations N] [--optimize K]
+//                [--quiet]: seam layouts for a target nobody has patterned yet (suggest/seam_layouts.hpp), each given a
+// first look (its flattened panels inflated), the K most promising (lookPromise) optimized at a coarse resolution and
+// ranked by how close their optimized panels inflate to the target.
 // Writes DIR/layout-K.billow.json (the design, best first), DIR/layout-K.pattern.json (its optimized coarse panels) and
 // DIR/summary.json.
 #include <cmath>
@@ -33,7 +33,8 @@ std::string percent(double share) {
 int suggestUsage(bool help) {
   std::fprintf(help ? stdout : stderr,
                "usage: billow suggest DESIGN_OR_MESH --panels N --out-dir DIR [--symmetry] [--keep-seams]\n"
-               "                      [--cut-thin-handles] [--height METERS] [--up AXIS] [--resolution TRIANGLES]\n"
+               "                      [--cut-thin-handles] [--close-holes] [--height METERS] [--up AXIS]\n"
+               "                      [--resolution TRIANGLES]\n"
                "                      [--max-iterations N] [--optimize K] [--quiet]\n\n"
                "Suggests seam layouts for a target shape (a design file, or a mesh file made into a design of\n"
                "--height meters, default 0.6, along --up: +y, +z, ...; a mesh that stands only on its Z bottom,\n"
@@ -47,7 +48,8 @@ int suggestUsage(bool help) {
                "shape has); --keep-seams adds to the design's own seams.\n"
                "--cut-thin-handles cuts through the handles too thin for a panel to follow (a boot's lace loops:\n"
                "loops around them shorter than a tenth of the shape's size) and closes their ends, as the app's\n"
-               "\"Cut the thin handles\" does; the layouts' designs say so.\n"
+               "\"Cut the thin handles\" does; --close-holes closes an open mesh's holes (a statue open at its\n"
+               "base) with caps, as the app's \"Close the holes\" does. The layouts' designs say so.\n"
                "Writes DIR/layout-K.billow.json (best first), DIR/layout-K.pattern.json and DIR/summary.json.\n"
                "Exit code 0 when some layout could be made into panels, 1 when none could.\n");
   return help ? 0 : 2;
@@ -116,6 +118,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   bool guessUp = false;
   Design read = readInput(args.positional[0], args, designPath, guessUp);
   if (args.has("--cut-thin-handles")) read.target.cutThinHandles = true;
+  if (args.has("--close-holes")) read.target.closeHoles = true;
   const std::unique_ptr<DesignScene> scene =
       loadDesignTargetScene(read, designPath, exampleSearchPath(executableDir()), guessUp);
   const Design input = scene->design;  // as read, its up axis guessed: the layouts change the scene's own

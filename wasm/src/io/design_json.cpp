@@ -203,6 +203,7 @@ bool readTarget(FieldReader& r, const json& t, DesignTarget& out) {
   if (t.contains("up")) out.up = readUp(r, t["up"]);
   out.cutThinHandles =
       r.boolean(t, "cutThinHandles", false, "target.cutThinHandles", "Whether its thin handles are cut");
+  out.closeHoles = r.boolean(t, "closeHoles", false, "target.closeHoles", "Whether its holes are closed");
   const int kinds =
       int(t.contains("example")) + int(t.contains("obj")) + int(t.contains("file")) + int(t.contains("vertices"));
   if (kinds != 1)
@@ -382,6 +383,7 @@ std::string writeDesignJson(const Design& d, int indent) {
   }
   if (d.target.up != UpAxis{}) target["up"] = toString(d.target.up);
   if (d.target.cutThinHandles) target["cutThinHandles"] = true;
+  if (d.target.closeHoles) target["closeHoles"] = true;
   doc["target"] = target;
   json size = base("size");
   size.erase("height"), size.erase("scale");

@@ -4,7 +4,7 @@
 //   { "format": "billow-design", "version": 1,
 //     "target": { "example": "spot" } | { "obj": "cow.obj" } | { "file": "cow.obj" }
 //               | { "vertices": [[x, y, z], ...], "triangles": [[i, j, k], ...] }, with "up": "+z" optional,
-//               and "cutThinHandles": true optional,
+//               and "cutThinHandles": true, "closeHoles": true optional,
 //     "size": { "height": 0.6 } | { "scale": 0.01 },
 //     "seams": [ { "name": "belly", "closed": true, "weight": 1.0, "smooth": false,
 //                  "points": [ { "face": 812, "bary": [0.2, 0.3, 0.5] }, [0.01, 0.12, -0.03] ] } ],
@@ -53,6 +53,8 @@ struct DesignTarget {
   // Its thin handles cut through as it is loaded ("cutThinHandles", suggest/thin_handles.hpp): the designer chose to,
   // and the seams lie on the cut target's faces.
   bool cutThinHandles = false;
+  // Its holes closed as it is loaded ("closeHoles", mesh/close_holes.hpp): an open mesh the designer chose to close.
+  bool closeHoles = false;
 };
 
 struct Design {

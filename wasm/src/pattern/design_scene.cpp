@@ -1,6 +1,7 @@
 #include "pattern/design_scene.hpp"
 
 #include "io/mesh_file.hpp"
+#include "mesh/close_holes.hpp"
 #include "mesh/validate.hpp"
 #include "suggest/thin_handles.hpp"
 #include "util/clock.hpp"
@@ -32,11 +33,24 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
   ValidationOptions vo;
   vo.fixOrientation = false;
   vo.guessUp = guessUp;
+  // Holes are closed as the app closes them: on the mesh turned one way first (its caps then face out).
+  if (design.target.closeHoles) {
+    ValidationOptions turn = vo;
+    turn.fixOrientation = true;
+    validateTarget(own, turn);
+    closeHoles(own);
+  }
   const ValidationReport report = validateTarget(own, vo);
   if (!report.ok) {
     std::string why;
-    for (const MeshIssue& i : report.issues)
-      if (i.severity == "error") why += (why.empty() ? "" : " ") + i.message;
+    bool onlyHoles = true;
+    for (const MeshIssue& i : report.issues) {
+      if (i.severity != "error") continue;
+      why += (why.empty() ? "" : " ") + i.message;
+      onlyHoles = onlyHoles && i.code == "mesh.open";
+    }
+    if (onlyHoles && !design.target.closeHoles)
+      why += " Or have Billow close them: \"closeHoles\": true in the design's target (billow suggest --close-holes).";
     throw Error("design.bad-target", "The design's target cannot be used: " + why);
   }
   if (guessUp) scene->design.target.up = report.stats.standing.up;

@@ -19,6 +19,7 @@
 #include "seams/plane_section.hpp"
 #include "seams/surface_distance.hpp"
 #include "suggest/segment_cuts.hpp"
+#include "util/clock.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -1159,9 +1160,6 @@ LayoutBalloon balloonOf(const PatternOptimizer& optimizer, const DesignScene& sc
 }  // namespace
 
 namespace {
-
-using Clock = std::chrono::steady_clock;
-double msSince(Clock::time_point t0) { return std::chrono::duration<double, std::milli>(Clock::now() - t0).count(); }
 
 // evaluateLayout's first part: the seams traced and segmented, with those that open its segments into panels; ok
 // when every segment is a panel. The scene keeps the segmentation for measureLayout.

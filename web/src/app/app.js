@@ -214,9 +214,12 @@ export class App {
     // The worker takes one long operation at a time: panels still being made for the design on screen would
     // hold the new target back until they are done.
     const interrupted = this.panels.stop();
+    // A copy stays here: an open mesh refused can be opened again with its holes closed (the bytes go to the worker).
+    const kept = bytes.slice(0);
     try {
+      const { cutThinHandles, closeHoles } = design?.target ?? {};
       const result = await this.track(`Opening ${fileName}…`, () =>
-        this.client.latest('target', Op.loadTarget, { fileName, bytes, cutThinHandles: design?.target?.cutThinHandles }, {
+        this.client.latest('target', Op.loadTarget, { fileName, bytes, cutThinHandles, closeHoles }, {
           transfer: [bytes],
           onProgress: (p) => this.setStatus(`Opening ${fileName}: ${p.stage}…`),
         }).promise,
@@ -234,6 +237,9 @@ export class App {
       this.messages.resolve('target.', { prefix: true });
       if (guess.notice) this.messages.show('notice', guess.notice, [], { cause: 'target.up' });
       this.showTargetIssues(result.report, { quiet });
+      const closed = result.report.holesClosed ?? 0;
+      if (closed)
+        this.messages.show('notice', `Closed ${closed === 1 ? 'its hole' : `its ${closed} holes`} with ${closed === 1 ? 'a cap' : 'caps'} drawn across ${closed === 1 ? 'the rim' : 'their rims'}, as a base panel closes a statue; the design keeps ${closed === 1 ? 'it' : 'them'} closed.`, [], { cause: 'target.holes-closed' });
       if (this.thinHandlesLeft(design)) await this.cutThinHandles(); // a linked design whose mesh came as this file
     } catch (error) {
       if (error.code === ErrorCode.cancelled) return; // a newer load won
@@ -242,12 +248,23 @@ export class App {
       const text = report
         ? `"${fileName}" cannot be used as a target. Your current design is unchanged.`
         : `${error.message}${this.target ? ' Your current design is unchanged.' : ''}`;
-      this.messages.show('error', text, items);
+      // An open mesh whose holes are all it lacks: offered closed, as a new design that keeps them closed.
+      const holes = report?.stats.holes ?? 0;
+      const action = error.details?.closable && design
+        ? { label: holes === 1 ? 'Close the hole' : `Close the ${holes} holes`, run: () => this.reopenClosed(fileName, kept, design, quiet) }
+        : null;
+      this.messages.show('error', text, items, { action });
       // The design on screen stays, and so do its example's name and the status (no "Opening…" left behind).
       this.fields.example = this.design.target.example ?? '';
       this.setStatus(this.target ? 'Ready' : '');
       if (interrupted) this.panels.remake(); // the design stays: so do its panels
     }
+  }
+
+  // The refused file opened again with its holes closed, as the designer's own file (no example chosen).
+  reopenClosed(fileName, bytes, design, quiet) {
+    if (!design.target.example) this.fields.example = '';
+    return this.loadTargetBytes(fileName, bytes, { ...design, target: { ...design.target, closeHoles: true } }, { quiet });
   }
 
   // What the mesh report says of the target (its notices unless quiet). A shape with thin handles is offered to have

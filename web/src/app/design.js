@@ -107,10 +107,12 @@ export function parseDesign(value, { inlineName = 'target.obj' } = {}) {
     design.target = { example: DEFAULT_EXAMPLE };
   }
   design.target = parseUp(design.target, warnings);
-  if ('cutThinHandles' in design.target && typeof design.target.cutThinHandles !== 'boolean') {
-    const { cutThinHandles, ...rest } = design.target;
+  // What was done to the designer's mesh as it was opened (app.js): its thin handles cut, its holes closed.
+  for (const [key, what] of [['cutThinHandles', "the target's thin handles are cut"], ['closeHoles', "the target's holes are closed"]]) {
+    if (!(key in design.target) || typeof design.target[key] === 'boolean') continue;
+    const { [key]: value, ...rest } = design.target;
     design.target = rest;
-    warnings.push(`Whether the target's thin handles are cut (target.cutThinHandles) must be true or false, not ${JSON.stringify(cutThinHandles)}: they are left as they are.`);
+    warnings.push(`Whether ${what} (target.${key}) must be true or false, not ${JSON.stringify(value)}: the mesh is used as it is.`);
   }
   const height = value.size?.height;
   if (typeof height === 'number' && Number.isFinite(height) && height >= MIN_HEIGHT && height <= MAX_HEIGHT) {

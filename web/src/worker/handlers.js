@@ -18,13 +18,25 @@ export function createHandlers(api) {
   // cutThinHandles: the design has its thin handles cut through (suggest/thin_handles.hpp). On a shape with handles
   // the report also tells its thin ones (report.thinHandles: their loops' lengths, in the mesh's units), or how many
   // were cut (report.thinHandlesCut).
-  function* installTarget(positions, indices, { cutThinHandles = false } = {}) {
+  // closeHoles: the design has an open mesh's holes capped (mesh/close_holes.hpp; report.holesClosed says how many).
+  // An open mesh refused otherwise says whether that would make it usable (the error's details.closable).
+  function* installTarget(positions, indices, { cutThinHandles = false, closeHoles = false } = {}) {
     yield { stage: 'checking the mesh', done: 2, total: 3 };
     let { report, indices: fixed } = api.validateTarget(positions, indices);
+    const onlyHoles = (r) => r.issues.every((i) => i.severity !== 'error' || i.code === 'mesh.open');
+    let holesClosed = 0;
+    if (!report.ok && closeHoles && onlyHoles(report)) {
+      yield { stage: 'closing its holes', done: 2, total: 3 };
+      const capped = api.closeHoles(positions, fixed);
+      positions = Float32Array.from(capped.positions);
+      holesClosed = capped.closed;
+      ({ report, indices: fixed } = api.validateTarget(positions, capped.indices));
+    }
     if (!report.ok) {
       const errors = report.issues.filter((i) => i.severity === 'error');
-      throw new SolverError('target.invalid', errors.map((i) => i.message).join('\n'), { report });
+      throw new SolverError('target.invalid', errors.map((i) => i.message).join('\n'), { report, closable: !closeHoles && onlyHoles(report) });
     }
+    if (holesClosed) report.holesClosed = holesClosed;
     let thin = [];
     if (report.stats.genus > 0) {
       yield { stage: cutThinHandles ? 'cutting through its thin handles' : 'measuring its handles', done: 2, total: 3 };
@@ -65,14 +77,14 @@ export function createHandlers(api) {
   }
 
   return {
-    *[Op.loadTarget]({ fileName, bytes, cutThinHandles }) {
+    *[Op.loadTarget]({ fileName, bytes, cutThinHandles, closeHoles }) {
       yield { stage: 'reading the file', done: 0, total: 3 };
       const mesh = parseMesh(fileName, bytes);
       yield { stage: 'welding vertices', done: 1, total: 3 };
-      return yield* installTarget(mesh.positions, mesh.indices, { cutThinHandles });
+      return yield* installTarget(mesh.positions, mesh.indices, { cutThinHandles, closeHoles });
     },
-    *[Op.setTarget]({ positions, indices, cutThinHandles }) {
-      return yield* installTarget(positions, indices, { cutThinHandles });
+    *[Op.setTarget]({ positions, indices, cutThinHandles, closeHoles }) {
+      return yield* installTarget(positions, indices, { cutThinHandles, closeHoles });
     },
     // { patternText, options } -> snapshot (see Inflation.snapshot). Streams the shape while it inflates.
     *[Op.inflatePattern]({ patternText, options = {} }) {

@@ -106,6 +106,15 @@ export class SolverApi {
     return { handles: reply.handles, positions: Float64Array.from(reply.positions), indices: Uint32Array.from(reply.indices) };
   }
 
+  // An open target turned one way (validateTarget's indices) with its holes capped (mesh/close_holes.hpp):
+  // { closed, positions: Float64Array, indices: Uint32Array }.
+  closeHoles(positions, indices) {
+    const pos = positions instanceof Float64Array ? positions : Float64Array.from(positions);
+    const idx = indices instanceof Int32Array ? indices : Int32Array.from(indices);
+    const reply = this.withHeap([pos, idx], (pPos, pIdx) => SolverApi.unwrap(this.module.closeHoles(pPos, pos.length / 3, pIdx, idx.length / 3)));
+    return { closed: reply.closed, positions: Float64Array.from(reply.positions), indices: Uint32Array.from(reply.indices) };
+  }
+
   crashForTesting() {
     this.module.crashForTesting();
   }

@@ -1,9 +1,13 @@
-// A designer's shape with thin handles (a boot's lace loops; here a wire hoop): the genus warning says they are too
-// thin for a panel to follow and offers to cut through them; one click leaves the shape a handle fewer, the design
-// marked so, and a reload keeps it cut. A thick ring (a swim ring) is not offered the cut.
+// A designer's shape repaired in the browser. Thin handles (a boot's lace loops; here a wire hoop): the genus warning
+// says they are too thin for a panel to follow and offers to cut through them; one click leaves the shape a handle
+// fewer, the design marked so, and a reload keeps it cut. A thick ring (a swim ring) is not offered the cut. Holes (a
+// statue open at its base; here a bowl, the sphere open at its top): the refusal offers to close them, and the shape
+// opens closed.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openFreshPage, openPage, screenshot, useBrowser } from './harness.mjs';
+import { readFileSync } from 'node:fs';
+import { join } from 'node:path';
+import { openFreshPage, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -73,6 +77,40 @@ test('a thin handle is offered a cut through it; the cut shape keeps its faces a
   assert.equal(count(await stat(again, 'triangles')), count(faces) + 32);
   assert.equal(await again.evaluate(() => window.billow.test.design.target.cutThinHandles), true);
   assert.equal(await again.locator('.message', { hasText: 'genus' }).count(), 0);
+  assert.deepEqual(again.errors, []);
+  await again.close();
+});
+
+// The shared sphere without its triangles above 0.8 of its radius, as OBJ text.
+function bowlObj() {
+  const lines = readFileSync(join(MESHES, 'sphere.obj'), 'utf8').split('\n');
+  const ys = lines.filter((l) => l.startsWith('v ')).map((l) => Number(l.split(/\s+/)[2]));
+  return lines.filter((l) => !l.startsWith('f ') || l.split(/\s+/).slice(1, 4).reduce((sum, c) => sum + ys[parseInt(c, 10) - 1], 0) / 3 < 0.8).join('\n');
+}
+
+test('an open mesh is refused with an offer to close its hole; closed, it opens as a target and stays closed', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await open(page, 'bowl.obj', bowlObj());
+  const refusal = page.locator('.message.error', { hasText: '"bowl.obj" cannot be used as a target' });
+  await refusal.waitFor();
+  assert.match(await refusal.textContent(), /1 hole: it must be closed to hold air/);
+  assert.notEqual(await stat(page, 'file'), 'bowl.obj', 'the design on screen stays until the mesh is usable');
+  await screenshot(page, 'mesh-repair-hole-offered');
+  await refusal.locator('button.action', { hasText: 'Close the hole' }).click();
+
+  await fileShown(page, 'bowl.obj');
+  assert.equal(await stat(page, 'genus'), '0');
+  await page.locator('.message.notice', { hasText: 'Closed its hole with a cap' }).waitFor();
+  assert.equal(await page.inputValue('#example-select'), '', 'the designer\'s own file, no example');
+  assert.equal(await page.evaluate(() => window.billow.test.design.target.closeHoles), true);
+  await screenshot(page, 'mesh-repair-hole-closed');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+
+  const again = await openPage(env.context, env.server.url);
+  await fileShown(again, 'bowl.obj');
+  assert.equal(await stat(again, 'genus'), '0');
+  assert.equal(await again.locator('.message.error').count(), 0);
   assert.deepEqual(again.errors, []);
   await again.close();
 });

@@ -1,11 +1,13 @@
-// Thin handles through the worker's handlers in Node, as the app installs a target: a wire hoop's report names its
-// thin handle (the loop round its tube), a swim ring's does not, and installed with cutThinHandles the hoop comes
-// back cut: a handle fewer, every face kept, the ends closed.
+// A designer's mesh repaired through the worker's handlers in Node, as the app installs a target. Thin handles: a wire
+// hoop's report names its thin handle (the loop round its tube), a swim ring's does not, and installed with
+// cutThinHandles the hoop comes back cut: a handle fewer, every face kept, the ends closed. Holes: a sphere open at its
+// top is refused as closable, and installed with closeHoles comes back closed, every face kept.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { Op } from '../../web/src/worker/protocol.js';
 import { handlers, run } from './worker-handlers.mjs';
 import { parseDesign } from '../../web/src/app/design.js';
+import { loadSharedMesh } from './obj.mjs';
 
 // A ring around y: radius R to the tube's middle, tube radius r, as flat arrays.
 function ring(R, r, nu, nv) {
@@ -64,4 +66,34 @@ test('a design keeps target.cutThinHandles when it is true or false, and drops a
   const bad = read('yes');
   assert.equal('cutThinHandles' in bad.design.target, false);
   assert.match(bad.warnings.join('\n'), /target\.cutThinHandles\) must be true or false, not "yes"/);
+  const holes = parseDesign({ format: 'billow-design', version: 1, target: { file: 'lion.obj', closeHoles: 1 }, seams: [] });
+  assert.equal('closeHoles' in holes.design.target, false);
+  assert.match(holes.warnings.join('\n'), /target\.closeHoles\) must be true or false, not 1/);
+});
+
+test('a sphere open at its top is refused as one whose holes can be closed, and closed on request', () => {
+  const sphere = loadSharedMesh('sphere.obj');
+  const y = (f) => [0, 1, 2].reduce((sum, k) => sum + sphere.positions[3 * sphere.indices[3 * f + k] + 1], 0) / 3;
+  const faces = sphere.indices.length / 3, kept = [];
+  for (let f = 0; f < faces; f++) if (y(f) < 0.8) kept.push(...sphere.indices.slice(3 * f, 3 * f + 3));
+  const open = { positions: Float32Array.from(sphere.positions), indices: Uint32Array.from(kept) };
+  assert.throws(() => run(handlers[Op.setTarget](open)), (error) => {
+    assert.equal(error.code, 'target.invalid');
+    assert.equal(error.details.closable, true);
+    assert.equal(error.details.report.stats.holes, 1);
+    return true;
+  });
+  const closed = run(handlers[Op.setTarget]({ ...open, closeHoles: true }));
+  assert.ok(closed.report.ok);
+  assert.equal(closed.report.holesClosed, 1);
+  assert.equal(closed.report.stats.genus, 0);
+  assert.deepEqual(Array.from(closed.indices.slice(0, kept.length)), kept, 'every face kept');
+  // A mesh with another fault as well is not offered the closing: it would still be refused.
+  // Three triangles on one edge: open, and non-manifold there.
+  const fin = { positions: Float32Array.from([0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0, 0.5, 0, 1]), indices: Uint32Array.from([0, 1, 2, 1, 0, 3, 0, 1, 4]) };
+  assert.throws(() => run(handlers[Op.setTarget](fin)), (error) => {
+    assert.ok(error.details.report.issues.some((i) => i.code === 'mesh.non-manifold-edge'));
+    assert.equal(error.details.closable, false);
+    return true;
+  });
 });

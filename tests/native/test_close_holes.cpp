@@ -1,0 +1,118 @@
+// Holes closed (mesh/close_holes.hpp): a sphere with caps cut off is closed again by caps of triangles about its rim's
+// size, facing out, every face kept; holes that touch at a vertex are left; a design says it and is loaded closed.
+#include <gtest/gtest.h>
+
+#include "io/design_json.hpp"
+#include "mesh/close_holes.hpp"
+#include "mesh/validate.hpp"
+#include "pattern/design_scene.hpp"
+#include "test_support.hpp"
+#include "util/error.hpp"
+
+using namespace billow;
+
+namespace {
+
+// The shared sphere without its triangles whose centroid lies above `top` or below `bottom` (along y, in units of its
+// radius from its centre): open there.
+TriMesh openSphere(double top, double bottom = -2) {
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  const Eigen::RowVector3d middle = 0.5 * (sphere.V.colwise().maxCoeff() + sphere.V.colwise().minCoeff());
+  const double radius = 0.5 * (sphere.V.col(1).maxCoeff() - sphere.V.col(1).minCoeff());
+  std::vector<Eigen::Vector3i> kept;
+  for (int f = 0; f < sphere.numTriangles(); ++f) {
+    const double y =
+        (sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2)))(1) / 3;
+    if ((y - middle(1)) / radius <= top && (y - middle(1)) / radius >= bottom) kept.push_back(sphere.F.row(f));
+  }
+  TriMesh m{sphere.V, Triangles(int(kept.size()), 3)};
+  for (size_t f = 0; f < kept.size(); ++f) m.F.row(int(f)) = kept[f].transpose();
+  return m;
+}
+
+double longestEdge(const TriMesh& m, int firstFace) {
+  double longest = 0;
+  for (int f = firstFace; f < m.numTriangles(); ++f)
+    for (int k = 0; k < 3; ++k) longest = std::max(longest, (m.V.row(m.F(f, k)) - m.V.row(m.F(f, (k + 1) % 3))).norm());
+  return longest;
+}
+
+}  // namespace
+
+TEST(CloseHoles, ASphereOpenAtTheTopIsClosedByACapFacingOut) {
+  TriMesh m = openSphere(0.8);
+  {
+    TriMesh checked = m;
+    const ValidationReport open = validateTarget(checked);
+    ASSERT_FALSE(open.ok);
+    ASSERT_EQ(open.stats.holes, 1);
+  }
+  const TriMesh before = m;
+  EXPECT_EQ(closeHoles(m), 1);
+  // Every face kept where it was; the cap appended.
+  ASSERT_GT(m.numTriangles(), before.numTriangles());
+  EXPECT_EQ(m.F.topRows(before.numTriangles()), before.F);
+  EXPECT_EQ(m.V.topRows(before.numVertices()), before.V);
+  TriMesh checked = m;
+  const ValidationReport report = validateTarget(checked);
+  EXPECT_TRUE(report.ok);
+  EXPECT_FALSE(report.modified) << "the cap faces out as the sphere does";
+  EXPECT_EQ(report.stats.genus, 0);
+  EXPECT_EQ(report.stats.components, 1);
+  // The sphere less the segment above its rim (about 0.78 of its radius up: 3-4 % of the ball), closed flat.
+  const double r = 0.5 * (before.V.col(1).maxCoeff() - before.V.col(1).minCoeff()),
+               sphere = 4.0 / 3 * test::kPi * r * r * r;
+  EXPECT_GT(report.stats.volume, 0.95 * sphere);
+  EXPECT_LT(report.stats.volume, sphere);
+  // The cap's triangles about the rim's own edges, not long slivers to a middle.
+  double rim = 0;
+  for (int f = 0; f < before.numTriangles(); ++f)
+    rim = std::max(rim, (before.V.row(before.F(f, 0)) - before.V.row(before.F(f, 1))).norm());
+  EXPECT_LT(longestEdge(m, before.numTriangles()), 2.0 * rim);
+}
+
+TEST(CloseHoles, TwoHolesAreBothClosedAndTouchingOnesAreLeft) {
+  TriMesh m = openSphere(0.7, -0.7);
+  EXPECT_EQ(closeHoles(m), 2);
+  TriMesh checked = m;
+  EXPECT_TRUE(validateTarget(checked).ok);
+
+  // Two triangles off a closed sphere that share one corner: their holes touch there, and neither is closed.
+  TriMesh pinched = test::loadShared("sphere.obj");
+  const int v = pinched.F(0, 0);
+  int other = -1;
+  for (int f = 1; f < pinched.numTriangles() && other < 0; ++f) {
+    bool touchesOnlyAtV = false, sharesEdge = false;
+    for (int k = 0; k < 3; ++k) {
+      const int a = pinched.F(f, k);
+      touchesOnlyAtV = touchesOnlyAtV || a == v;
+      sharesEdge = sharesEdge || (a != v && (a == pinched.F(0, 1) || a == pinched.F(0, 2)));
+    }
+    if (touchesOnlyAtV && !sharesEdge) other = f;
+  }
+  ASSERT_GE(other, 0);
+  Triangles kept(pinched.numTriangles() - 2, 3);
+  for (int f = 0, row = 0; f < pinched.numTriangles(); ++f)
+    if (f != 0 && f != other) kept.row(row++) = pinched.F.row(f);
+  pinched.F = kept;
+  EXPECT_EQ(closeHoles(pinched), 0);
+  EXPECT_FALSE(validateTarget(pinched).ok);
+}
+
+TEST(CloseHoles, ADesignThatHasThemClosedIsLoadedClosedAndOneThatHasNotSaysHow) {
+  Design design;
+  design.target.kind = DesignTarget::Inline;
+  design.target.mesh = openSphere(0.8);
+  try {
+    loadDesignTargetScene(design, "", {});
+    FAIL() << "an open target is refused";
+  } catch (const Error& e) {
+    EXPECT_EQ(e.code, "design.bad-target");
+    EXPECT_NE(std::string(e.what()).find("\"closeHoles\": true"), std::string::npos) << e.what();
+  }
+  design.target.closeHoles = true;
+  const Design back = readDesignJson(writeDesignJson(design));
+  EXPECT_TRUE(back.target.closeHoles);
+  TriMesh target = loadDesignTargetScene(back, "", {})->target;
+  EXPECT_TRUE(validateTarget(target).ok);
+}

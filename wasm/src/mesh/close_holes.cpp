@@ -1,0 +1,98 @@
+#include "mesh/close_holes.hpp"
+
+#include <cmath>
+#include <unordered_map>
+#include <vector>
+
+namespace billow {
+
+int closeHoles(TriMesh& mesh) {
+  // Boundary half-edges a -> b: their edge has one triangle, in which a comes before b.
+  std::unordered_map<std::uint64_t, int> uses;
+  for (int f = 0; f < mesh.numTriangles(); ++f)
+    for (int k = 0; k < 3; ++k) ++uses[edgeKey(mesh.F(f, k), mesh.F(f, (k + 1) % 3))];
+  std::unordered_map<int, int> next;  // a -> b
+  std::unordered_map<int, int> outgoing;
+  std::vector<int> starts;  // in the triangles' order, so native and wasm builds close the holes alike
+  for (int f = 0; f < mesh.numTriangles(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
+      if (uses[edgeKey(a, b)] == 1) next[a] = b, ++outgoing[a], starts.push_back(a);
+    }
+  std::vector<Eigen::RowVector3d> added;
+  std::vector<Eigen::Vector3i> caps;
+  int nextVertex = mesh.numVertices();
+  std::unordered_map<int, char> done;
+  int closed = 0;
+  for (const int start : starts) {
+    if (done[start]) continue;
+    std::vector<int> loop;
+    bool simple = true;
+    for (int v = start; loop.size() <= next.size();) {
+      if (done[v]) {
+        simple = simple && v == start;
+        break;
+      }
+      done[v] = 1, loop.push_back(v);
+      simple = simple && outgoing[v] == 1;
+      const auto it = next.find(v);
+      if (it == next.end()) {
+        simple = false;
+        break;
+      }
+      v = it->second;
+    }
+    const int n = int(loop.size());
+    if (!simple || n < 3) continue;
+    Eigen::RowVector3d center = Eigen::RowVector3d::Zero();
+    double rim = 0, radius = 0;
+    for (int i = 0; i < n; ++i) {
+      center += mesh.V.row(loop[size_t(i)]) / n;
+      rim += (mesh.V.row(loop[size_t(i)]) - mesh.V.row(loop[size_t((i + 1) % n)])).norm() / n;
+    }
+    for (int i = 0; i < n; ++i) radius += (mesh.V.row(loop[size_t(i)]) - center).norm() / n;
+    // Rings about one rim edge apart; a ring keeps every other vertex of the one outside it once they would stand
+    // closer than 0.6 of an edge, so the cap's triangles stay about the rim's size.
+    const int rings = std::max(1, int(std::lround(radius / std::max(rim, 1e-300))));
+    std::vector<int> outer = loop, from(static_cast<size_t>(n));  // ring vertices, the rim vertex each is drawn from
+    for (int i = 0; i < n; ++i) from[size_t(i)] = i;
+    const auto strip = [&](const std::vector<int>& o, const std::vector<int>& inner, const std::vector<int>& first) {
+      // Inner vertex i stands over outer vertex first[i]; the outer ones up to the next inner one's are joined to
+      // it, the first half to inner i, the rest to inner i + 1, with one triangle across between them.
+      const int m = int(o.size()), k = int(inner.size());
+      for (int i = 0; i < k; ++i) {
+        const int a = first[size_t(i)], b = i + 1 < k ? first[size_t(i + 1)] : m;
+        const int mid = a + (b - a + 1) / 2, u = inner[size_t(i)], w = inner[size_t((i + 1) % k)];
+        for (int s = a; s < mid; ++s) caps.emplace_back(o[size_t((s + 1) % m)], o[size_t(s)], u);
+        caps.emplace_back(o[size_t(mid % m)], u, w);
+        for (int s = mid; s < b; ++s) caps.emplace_back(o[size_t((s + 1) % m)], o[size_t(s)], w);
+      }
+    };
+    for (int j = 1; j < rings; ++j) {
+      const double t = 1.0 - double(j) / rings;
+      const int m = int(outer.size());
+      const bool halve = m >= 8 && 2 * M_PI * radius * t / m < 0.6 * rim;
+      std::vector<int> inner, first, innerFrom;
+      for (int i = 0; i < m; i += halve ? 2 : 1) {
+        if (halve && i + 1 == m) break;  // an odd ring's last vertex joins the block before
+        inner.push_back(nextVertex++), first.push_back(i), innerFrom.push_back(from[size_t(i)]);
+        added.push_back(center + t * (mesh.V.row(loop[size_t(from[size_t(i)])]) - center));
+      }
+      strip(outer, inner, first);
+      outer = std::move(inner), from = std::move(innerFrom);
+    }
+    const int middle = nextVertex++;
+    added.push_back(center);
+    const int m = int(outer.size());
+    for (int i = 0; i < m; ++i) caps.emplace_back(outer[size_t((i + 1) % m)], outer[size_t(i)], middle);
+    ++closed;
+  }
+  const int oldV = mesh.numVertices(), oldF = mesh.numTriangles();
+  mesh.V.conservativeResize(oldV + int(added.size()), 3);
+  for (size_t i = 0; i < added.size(); ++i) mesh.V.row(oldV + int(i)) = added[i];
+  mesh.F.conservativeResize(oldF + int(caps.size()), 3);
+  for (size_t i = 0; i < caps.size(); ++i) mesh.F.row(oldF + int(i)) = caps[i].transpose();
+  return closed;
+}
+
+}  // namespace billow
