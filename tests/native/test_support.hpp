@@ -1,5 +1,6 @@
 // Helpers shared by the native and wasm GoogleTest suites.
 #pragma once
+#include <gtest/gtest.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -12,6 +13,7 @@
 #include "io/design_json.hpp"
 #include "io/mesh_file.hpp"
 #include "mesh/tri_mesh.hpp"
+#include "mesh/validate.hpp"
 #include "pattern/design_scene.hpp"
 #include "simulate/example_patterns.hpp"
 #include "simulate/inflate.hpp"
@@ -45,6 +47,17 @@ inline std::unique_ptr<DesignScene> sceneOf(const TriMesh& mesh) {
 }
 
 // A file of tests/data, and the app's example meshes (web/public/examples) that designs name.
+// A repaired target (mesh/close_holes.hpp, suggest/thin_handles.hpp) as the validator sees it: usable, one closed
+// surface of `genus`, its new triangles facing as the others (nothing turned). Its report, for what a test asks more.
+inline ValidationReport expectClosedSurface(TriMesh mesh, int genus) {
+  const ValidationReport report = validateTarget(mesh);
+  EXPECT_TRUE(report.ok);
+  EXPECT_FALSE(report.modified) << "the new triangles face out as the others do";
+  EXPECT_EQ(report.stats.components, 1);
+  EXPECT_EQ(report.stats.genus, genus);
+  return report;
+}
+
 inline std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
 inline std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
 

@@ -49,12 +49,7 @@ TEST(ThinHandles, CuttingAThinRingLeavesOneClosedSurfaceWithEveryFaceWhereItWas)
   // Two ends of 16 triangles each, around a new vertex in their middle; a copy of each loop vertex.
   EXPECT_EQ(ring.numTriangles(), before.numTriangles() + 32);
   EXPECT_EQ(ring.numVertices(), before.numVertices() + 16 + 2);
-  TriMesh checked = ring;
-  const ValidationReport report = validateTarget(checked);
-  EXPECT_TRUE(report.ok);
-  EXPECT_FALSE(report.modified) << "the ends face outward as the rest does";
-  EXPECT_EQ(report.stats.components, 1);
-  EXPECT_EQ(report.stats.genus, 0);
+  const ValidationReport report = test::expectClosedSurface(ring, 0);
   EXPECT_GT(report.stats.volume, 0.9 * 2 * test::kPi * test::kPi * 1.0 * 0.03 * 0.03);
   // Every face keeps its index and its place: its corners move by at most 0.3 of their longest edge (the loop's,
   // drawn back), the diagonal of a quad up to 2 pi 1.03 / 120 along the ring and 2 pi 0.03 / 16 round the tube.
@@ -76,11 +71,7 @@ TEST(ThinHandles, EveryHandleTakenAsThinIsCutAndTheShapeStaysWhole) {
   ASSERT_EQ(handles.size(), 2u);
   EXPECT_LE(handles[0].length, handles[1].length);
   cutThinHandles(slab, handles);
-  const ValidationReport report = validateTarget(slab);
-  EXPECT_TRUE(report.ok);
-  EXPECT_FALSE(report.modified);
-  EXPECT_EQ(report.stats.components, 1);
-  EXPECT_EQ(report.stats.genus, 0);
+  test::expectClosedSurface(slab, 0);
 }
 
 TEST(ThinHandles, ADesignThatHasThemCutIsLoadedCutAndSaysSo) {

@@ -11,10 +11,10 @@ namespace billow {
 
 std::vector<ThinHandle> thinHandles(const TriMesh& target, double maxLengthRatio) {
   const double diagonal = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
-  const int chi = target.numVertices() - int(buildTopology(target).numEdges()) + target.numTriangles();
-  if (chi >= 2) return {};
+  const MeshTopology topology = buildTopology(target);
+  if (target.numVertices() - topology.numEdges() + target.numTriangles() >= 2) return {};  // genus 0
   // With no seams the whole target is one segment, and its cut mesh's vertices are the target's.
-  const Segmentation sg = segmentTarget(target, buildTopology(target), {});
+  const Segmentation sg = segmentTarget(target, topology, {});
   if (sg.segments.size() != 1) return {};
   std::vector<ThinHandle> out;
   for (const std::vector<int>& loop : loopsAroundHandles(sg, 0)) {
@@ -29,7 +29,9 @@ std::vector<ThinHandle> thinHandles(const TriMesh& target, double maxLengthRatio
       h.length += (target.V.row(h.loop[i]) - target.V.row(h.loop[(i + 1) % h.loop.size()])).norm();
     if (h.length < maxLengthRatio * diagonal) out.push_back(std::move(h));
   }
-  std::sort(out.begin(), out.end(), [](const ThinHandle& a, const ThinHandle& b) { return a.length < b.length; });
+  // Stable: equally thin handles keep the loops' order, the same in native and wasm builds.
+  std::stable_sort(out.begin(), out.end(),
+                   [](const ThinHandle& a, const ThinHandle& b) { return a.length < b.length; });
   return out;
 }
 
