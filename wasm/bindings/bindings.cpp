@@ -11,6 +11,7 @@
 #include <string>
 
 #include "guarded.hpp"
+#include "heap_mesh.hpp"
 #include "mesh/close_holes.hpp"
 #include "mesh/validate.hpp"
 #include "simulate/materials.hpp"
@@ -21,18 +22,22 @@
 namespace {
 
 using billow::bindings::guarded;
+using billow::bindings::meshFromHeap;
 
 // positions: #V*3 doubles, indices: #F*3 int32 (rewritten in place when the orientation is fixed).
 std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles) {
   return guarded([&] {
-    billow::TriMesh mesh;
-    mesh.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
-    auto* corners = reinterpret_cast<int*>(indices);
-    mesh.F = Eigen::Map<const billow::Triangles>(corners, numTriangles, 3);
+    billow::TriMesh mesh = meshFromHeap(positions, numVertices, indices, numTriangles);
     const billow::ValidationReport report = billow::validateTarget(mesh);
-    if (report.modified) Eigen::Map<billow::Triangles>(corners, numTriangles, 3) = mesh.F;
+    if (report.modified) Eigen::Map<billow::Triangles>(reinterpret_cast<int*>(indices), numTriangles, 3) = mesh.F;
     return billow::toJson(report);
   });
+}
+
+// A repaired mesh back to JS, appended to `out` as flat "positions" and "indices" (row-major, as they came).
+void putMesh(const billow::TriMesh& mesh, nlohmann::json& out) {
+  out["positions"] = std::vector<double>(mesh.V.data(), mesh.V.data() + mesh.V.size());
+  out["indices"] = std::vector<int>(mesh.F.data(), mesh.F.data() + mesh.F.size());
 }
 
 // positions: #V*3 doubles, indices: #F*3 int32 of a checked target (validateTarget). { handles: [loop length, ...]
@@ -40,16 +45,13 @@ std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indic
 // cut through them (every face keeping its index) }.
 std::string thinHandles(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles, bool cut) {
   return guarded([&] {
-    billow::TriMesh mesh;
-    mesh.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
-    mesh.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
+    billow::TriMesh mesh = meshFromHeap(positions, numVertices, indices, numTriangles);
     const std::vector<billow::ThinHandle> handles = billow::thinHandles(mesh);
     nlohmann::json out = {{"handles", nlohmann::json::array()}};
     for (const billow::ThinHandle& h : handles) out["handles"].push_back(h.length);
     if (cut) {
       billow::cutThinHandles(mesh, handles);
-      out["positions"] = std::vector<double>(mesh.V.data(), mesh.V.data() + mesh.V.size());
-      out["indices"] = std::vector<int>(mesh.F.data(), mesh.F.data() + mesh.F.size());
+      putMesh(mesh, out);
     }
     return out.dump();
   });
@@ -60,14 +62,10 @@ std::string thinHandles(uintptr_t positions, int numVertices, uintptr_t indices,
 // index).
 std::string closeHoles(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles) {
   return guarded([&] {
-    billow::TriMesh mesh;
-    mesh.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
-    mesh.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
-    const int closed = billow::closeHoles(mesh);
-    return nlohmann::json({{"closed", closed},
-                           {"positions", std::vector<double>(mesh.V.data(), mesh.V.data() + mesh.V.size())},
-                           {"indices", std::vector<int>(mesh.F.data(), mesh.F.data() + mesh.F.size())}})
-        .dump();
+    billow::TriMesh mesh = meshFromHeap(positions, numVertices, indices, numTriangles);
+    nlohmann::json out = {{"closed", billow::closeHoles(mesh)}};
+    putMesh(mesh, out);
+    return out.dump();
   });
 }
 

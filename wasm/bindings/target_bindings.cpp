@@ -82,6 +82,7 @@
 #include <nlohmann/json.hpp>
 
 #include "guarded.hpp"
+#include "heap_mesh.hpp"
 #include "io/design_json.hpp"
 #include "io/distance_json.hpp"
 #include "io/export_options_json.hpp"
@@ -139,8 +140,7 @@ class TargetSession {
       scaledGeodesic_.reset();
       optimizer_.reset();
       suggest_.reset();
-      mesh_.V = Eigen::Map<const billow::Vertices>(reinterpret_cast<const double*>(positions), numVertices, 3);
-      mesh_.F = Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(indices), numTriangles, 3);
+      mesh_ = billow::bindings::meshFromHeap(positions, numVertices, indices, numTriangles);
       topology_ = billow::buildTopology(mesh_);
       projector_ = std::make_unique<billow::SurfaceProjector>(mesh_);
       geodesic_ = std::make_unique<billow::GeodesicSolver>(mesh_, topology_);

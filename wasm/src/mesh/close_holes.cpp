@@ -11,37 +11,29 @@ int closeHoles(TriMesh& mesh) {
   std::unordered_map<std::uint64_t, int> uses;
   for (int f = 0; f < mesh.numTriangles(); ++f)
     for (int k = 0; k < 3; ++k) ++uses[edgeKey(mesh.F(f, k), mesh.F(f, (k + 1) % 3))];
-  std::unordered_map<int, int> next;  // a -> b
-  std::unordered_map<int, int> outgoing;
+  const size_t numVertices = size_t(mesh.numVertices());
+  std::vector<int> next(numVertices, -1), outgoing(numVertices, 0);  // a -> b, and how many start at a
   std::vector<int> starts;  // in the triangles' order, so native and wasm builds close the holes alike
   for (int f = 0; f < mesh.numTriangles(); ++f)
     for (int k = 0; k < 3; ++k) {
       const int a = mesh.F(f, k), b = mesh.F(f, (k + 1) % 3);
-      if (uses[edgeKey(a, b)] == 1) next[a] = b, ++outgoing[a], starts.push_back(a);
+      if (uses[edgeKey(a, b)] == 1) next[size_t(a)] = b, ++outgoing[size_t(a)], starts.push_back(a);
     }
   std::vector<Eigen::RowVector3d> added;
   std::vector<Eigen::Vector3i> caps;
   int nextVertex = mesh.numVertices();
-  std::unordered_map<int, char> done;
+  std::vector<char> done(numVertices, 0);
   int closed = 0;
   for (const int start : starts) {
-    if (done[start]) continue;
+    if (done[size_t(start)]) continue;
+    // Followed until it comes back; a vertex two boundary edges start at makes the hole not simple.
     std::vector<int> loop;
     bool simple = true;
-    for (int v = start; loop.size() <= next.size();) {
-      if (done[v]) {
-        simple = simple && v == start;
-        break;
-      }
-      done[v] = 1, loop.push_back(v);
-      simple = simple && outgoing[v] == 1;
-      const auto it = next.find(v);
-      if (it == next.end()) {
-        simple = false;
-        break;
-      }
-      v = it->second;
+    for (int v = start; v >= 0 && !done[size_t(v)]; v = next[size_t(v)]) {
+      done[size_t(v)] = 1, loop.push_back(v);
+      simple = simple && outgoing[size_t(v)] == 1;
     }
+    simple = simple && next[size_t(loop.back())] == start;
     const int n = int(loop.size());
     if (!simple || n < 3) continue;
     Eigen::RowVector3d center = Eigen::RowVector3d::Zero();

@@ -83,11 +83,15 @@ export class SolverApi {
     return reply.result;
   }
 
+  // A mesh's arrays as the bindings read them from the heap: positions as doubles, indices as int32.
+  static meshArrays(positions, indices) {
+    return [positions instanceof Float64Array ? positions : Float64Array.from(positions), indices instanceof Int32Array ? indices : Int32Array.from(indices)];
+  }
+
   // positions: #V*3 numbers, indices: #F*3 integers. Returns { report, indices } where indices is a new
   // Uint32Array with any orientation fix applied (report.modified tells).
   validateTarget(positions, indices) {
-    const pos = positions instanceof Float64Array ? positions : Float64Array.from(positions);
-    const idx = indices instanceof Int32Array ? indices : Int32Array.from(indices);
+    const [pos, idx] = SolverApi.meshArrays(positions, indices);
     return this.withHeap([pos, idx], (pPos, pIdx) => {
       const report = SolverApi.unwrap(this.module.validateTarget(pPos, pos.length / 3, pIdx, idx.length / 3));
       const fixed = report.modified ? new Uint32Array(this.fromHeap(Int32Array, pIdx, idx.length).buffer) : null;
@@ -98,8 +102,7 @@ export class SolverApi {
   // A checked target's thin handles (suggest/thin_handles.hpp): { handles: [loop length, ...] }, thinnest first, and
   // with cut the target cut through them as { positions: Float64Array, indices: Uint32Array } besides.
   thinHandles(positions, indices, cut = false) {
-    const pos = positions instanceof Float64Array ? positions : Float64Array.from(positions);
-    const idx = indices instanceof Int32Array ? indices : Int32Array.from(indices);
+    const [pos, idx] = SolverApi.meshArrays(positions, indices);
     const reply = this.withHeap([pos, idx], (pPos, pIdx) =>
       SolverApi.unwrap(this.module.thinHandles(pPos, pos.length / 3, pIdx, idx.length / 3, cut)));
     if (!cut) return { handles: reply.handles };
@@ -109,8 +112,7 @@ export class SolverApi {
   // An open target turned one way (validateTarget's indices) with its holes capped (mesh/close_holes.hpp):
   // { closed, positions: Float64Array, indices: Uint32Array }.
   closeHoles(positions, indices) {
-    const pos = positions instanceof Float64Array ? positions : Float64Array.from(positions);
-    const idx = indices instanceof Int32Array ? indices : Int32Array.from(indices);
+    const [pos, idx] = SolverApi.meshArrays(positions, indices);
     const reply = this.withHeap([pos, idx], (pPos, pIdx) => SolverApi.unwrap(this.module.closeHoles(pPos, pos.length / 3, pIdx, idx.length / 3)));
     return { closed: reply.closed, positions: Float64Array.from(reply.positions), indices: Uint32Array.from(reply.indices) };
   }
