@@ -43,9 +43,33 @@ test('a result belongs to the revision it was made for', () => {
   store.commit(cmd.setHeight(store.design, 2));
   assert.equal(store.result('optimized'), null);
   store.undo();
-  assert.equal(store.result('optimized'), null, 'undo is a new revision too: its panels are made again');
+  assert.equal(store.result('optimized'), null, 'undo is a new revision too: its panels are kept results or made again');
   store.clearResults();
   assert.equal(store.results.size, 0);
+});
+
+test('a result is kept by what it was made from: met again by undo, forgotten with the target, the newest eight', () => {
+  const store = new Store(cmd.addSeam(newDesign('sphere'), seam));
+  const first = store.madeKey();
+  store.keepResult(first, { patternText: 'one seam' });
+  store.commit(cmd.setPressure(store.design, 2000));
+  assert.notEqual(store.madeKey(), first, 'the pressure is part of it');
+  assert.equal(store.keptResult(store.madeKey()), null);
+  store.commit(cmd.setFabrication(store.design, { allowance: 12 }));
+  store.undo();
+  store.undo();
+  assert.equal(store.madeKey(), first, 'undone to the same seams and physics');
+  assert.equal(store.keptResult(store.madeKey()).patternText, 'one seam');
+  store.setResolution(3000);
+  assert.equal(store.keptResult(store.madeKey()), null, 'made at another resolution');
+  for (let k = 0; k < 8; k++) store.keepResult(`other ${k}`, { patternText: String(k) });
+  assert.equal(store.keptResult(first), null, 'eight newer: the oldest went');
+  assert.equal(store.keptResult('other 0').patternText, '0');
+  store.keepResult('other 8', { patternText: '8' });
+  assert.equal(store.keptResult('other 1'), null, 'the oldest goes first');
+  assert.equal(store.keptResult('other 0').patternText, '0', 'met again, it became the newest');
+  store.forgetKept();
+  assert.equal(store.keptResult('other 8'), null, 'another target');
 });
 
 test('the optimized panels are shown once made, inflated and on screen with nothing under way', () => {

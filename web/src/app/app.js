@@ -339,6 +339,7 @@ export class App {
 
   installTarget(fileName, result, design, stored = null) {
     this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
+    this.store.forgetKept();
     this.panes.target.setTarget(this.target, this.scaleFor(design), findExample(design.target.example)?.front);
     this.seams.reset();
     this.panels.markOutdated(false);

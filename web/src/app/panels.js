@@ -92,12 +92,19 @@ export class Panels {
 
   // The panels of the current seams: flattened (shown at once in the pattern pane), then optimized in the
   // worker so their inflated shape matches the target (paper Sec. 5), then inflated for the panes. A newer
-  // edit supersedes this one (commitDesign cancels it).
+  // edit supersedes this one (commitDesign cancels it). Panels made before for the same seams and physics (undo,
+  // redo, a compared layout put back) are the store's kept result, shown without optimizing again.
   async make() {
     this.markOutdated(false);
     this.messages.resolve('distance.cut-panels');
     const revision = this.app.revision;
+    const key = this.store.madeKey();
     this.client.supersede('inflation');
+    const kept = this.store.keptResult(key);
+    if (kept) {
+      this.client.supersede('panels');
+      return this.showMade(kept, revision);
+    }
     const call = this.client.latest(
       'panels',
       Op.optimizeDesign,
@@ -117,21 +124,28 @@ export class Panels {
     this.store.working('panels', +1);
     try {
       const result = await call.promise;
-      this.store.setResult('optimized', result, revision);
-      this.store.dropResult('stored'); // replaced by the live result
-      this.messages.resolve('pattern', { prefix: true });
-      const shown = await this.showVersion('optimized');
-      if (shown && revision === this.app.revision) {
-        this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
-        const note = cutPanelsNote(result.status);
-        if (note) this.messages.show('notice', note, [], { cause: 'distance.cut-panels' });
-      }
+      if (revision === this.app.revision) this.store.keepResult(key, result);
+      await this.showMade(result, revision);
     } catch (error) {
       if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed || revision !== this.app.revision) return;
       this.showFailure(error);
       this.app.setStatus('');
     } finally {
       this.store.working('panels', -1);
+    }
+  }
+
+  // The optimized panels of the design at `revision`: the store's result, inflated and shown, with how the
+  // optimizer ended.
+  async showMade(result, revision) {
+    this.store.setResult('optimized', result, revision);
+    this.store.dropResult('stored'); // replaced by the live result
+    this.messages.resolve('pattern', { prefix: true });
+    const shown = await this.showVersion('optimized');
+    if (shown && revision === this.app.revision) {
+      this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
+      const note = cutPanelsNote(result.status);
+      if (note) this.messages.show('notice', note, [], { cause: 'distance.cut-panels' });
     }
   }
 

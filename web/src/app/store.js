@@ -9,11 +9,17 @@ import { canonicalJson, optimizeArgs, DEFAULT_RESOLUTION } from './stored-result
 // What a design's panels are made from, besides the target and the resolution, as comparable text.
 const panelInputs = (design) => canonicalJson({ height: design.size.height, up: design.target.up, ...optimizeArgs(design, 0) });
 
+// How many optimized results are kept for designs met again (undo, redo, a compared layout put back).
+const KEPT_RESULTS = 8;
+
 export class Store {
   constructor(design) {
     this.history = new History(design);
     this.revision = 0; // counts the changes of what the panels are made from
     this.results = new Map(); // kind -> { revision, value }
+    // The newest optimized results by what they were made from (madeKey), oldest first: a design met again shows
+    // its panels at once instead of optimizing them again. Made on the target installed; a new one forgets them.
+    this.kept = new Map();
     this.work = new Map(); // kind -> how many of that kind run ('opening', 'panels', 'inflation')
     // What the panes show: the pattern (its JSON text and, parsed, in meters), its inflated shape and its cut
     // figures (the exporter's statistics). A pattern opened from a file is shown without being a result.
@@ -105,6 +111,30 @@ export class Store {
   result(kind) {
     const r = this.results.get(kind);
     return r && r.revision === this.revision ? r.value : null;
+  }
+
+  // What the current design's panels are made from, with the resolution: the key of a kept result.
+  madeKey() {
+    return `${this.resolution}|${panelInputs(this.design)}`;
+  }
+
+  keepResult(key, value) {
+    this.kept.delete(key);
+    this.kept.set(key, value);
+    if (this.kept.size > KEPT_RESULTS) this.kept.delete(this.kept.keys().next().value);
+  }
+
+  // The result kept for this key (now the newest), or null.
+  keptResult(key) {
+    const value = this.kept.get(key);
+    if (value === undefined) return null;
+    this.keepResult(key, value);
+    return value;
+  }
+
+  // Another target: the kept results are of panels cut from the one before.
+  forgetKept() {
+    this.kept.clear();
   }
 
   dropResult(kind) {
