@@ -76,6 +76,7 @@ TEST(PatternOptimizer, TargetDistancesAreThoseOfTheCurrentShape) {
 // tried (OptimizeSearch::shapeStepGrowth, 5 by default): such trials settle higher about half the time, after
 // many Newton iterations. Held to twice here; without the limit some accepted step grows more than that.
 TEST(PatternOptimizer, StepsGrowNoMoreThanTheLimitInPredictedShapeMove) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
   const Fixture f = makeFixture("../../bench/designs/penguin-front-back.billow.json", 1000);
   ASSERT_TRUE(f.built.ok());
   for (double growth : {0.0, 2.0}) {
@@ -275,6 +276,7 @@ TEST(PatternOptimizer, FrontBackStuffedToyAbandonsTrialsThatSnapAndKeepsItsOutli
 // thin disc ears): the flattened panels have slits, and steps that made their sides cross were refused until the
 // optimizer stopped (after 9 iterations at 2.9 % here). E_gap holds the sides apart, so the steps go along them.
 TEST(PatternOptimizer, FrontBackStuffedToyGoesOnAlongItsOutlinesThinNotches) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
   const Fixture f = makeFixture("stuffedtoy-front-back.billow.json", 1500);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;

@@ -61,7 +61,7 @@ inline ValidationReport expectClosedSurface(TriMesh mesh, int genus) {
 inline std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
 inline std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
 
-// The longest optimizer runs (10-17 s each in wasm, half the wasm suite's time) are tested natively only: the
+// The longest optimizer runs (9-17 s each in wasm, most of the wasm suite's time) are tested natively only: the
 // wasm build runs the same optimizer in the node and end-to-end suites.
 #ifdef __EMSCRIPTEN__
 #define BILLOW_NATIVE_ONLY_LONG_RUN() GTEST_SKIP() << "a long optimizer run, tested natively"
