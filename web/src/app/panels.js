@@ -103,7 +103,12 @@ export class Panels {
     const kept = this.store.keptResult(key);
     if (kept) {
       this.client.supersede('panels');
-      return this.showMade(kept, revision);
+      this.store.working('panels', +1); // until shown with its distance, as a result just made
+      try {
+        return await this.showMade(kept, revision);
+      } finally {
+        this.store.working('panels', -1);
+      }
     }
     const call = this.client.latest(
       'panels',
