@@ -1,6 +1,6 @@
 // A designer's shape repaired in the browser. Thin handles (a boot's lace loops; here a wire hoop): the genus warning
 // says they are too thin for a panel to follow and offers to cut through them; one click leaves the shape a handle
-// fewer, the design marked so, and a reload keeps it cut. A thick ring (a swim ring) is not offered the cut. Holes (a
+// fewer, the design marked so, undo puts the handle back, and a reload keeps it cut. A thick ring (a swim ring) is not offered the cut. Holes (a
 // statue open at its base; here a bowl, the sphere open at its top): the refusal offers to close them, and the shape
 // opens closed.
 import { test, before, after } from 'node:test';
@@ -35,7 +35,7 @@ const open = (page, name, text) => page.setInputFiles('#file-input', { name, mim
 const fileShown = (page, name) =>
   page.waitForFunction((n) => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === n, name, { timeout: 30000 });
 
-test('a thin handle is offered a cut through it; the cut shape keeps its faces and stays cut after a reload', async () => {
+test('a thin handle is offered a cut through it; the cut shape keeps its faces, is undone and redone, and stays cut after a reload', async () => {
   const page = await openFreshPage(env.context, env.server.url);
 
   // A swim ring: one handle, thick. The warning asks for a seam around it and offers no cut.
@@ -67,6 +67,19 @@ test('a thin handle is offered a cut through it; the cut shape keeps its faces a
   assert.equal(count(await stat(page, 'triangles')), count(faces) + 32);
   assert.equal(await page.evaluate(() => window.billow.test.design.target.cutThinHandles), true);
   await screenshot(page, 'thin-handles-cut');
+
+  // The cut is one undo step: undone, the hoop is whole again and the cut offered again; redone, cut again.
+  const genus = (g) => page.waitForFunction((want) => document.querySelector('#target-stats dd[data-stat="genus"]')?.textContent === want, g, { timeout: 30000 });
+  await page.click('#undo-button');
+  await genus('1');
+  assert.equal(await stat(page, 'triangles'), faces);
+  assert.equal(await page.evaluate(() => Boolean(window.billow.test.design.target.cutThinHandles)), false);
+  await page.locator('.message.warning', { hasText: 'genus 1' }).locator('button.action', { hasText: 'Cut the thin handle' }).waitFor();
+  await page.click('#redo-button');
+  await genus('0');
+  assert.equal(count(await stat(page, 'triangles')), count(faces) + 32);
+  assert.equal(await page.evaluate(() => window.billow.test.design.target.cutThinHandles), true);
+  assert.equal(await page.locator('.message', { hasText: 'genus 1' }).count(), 0);
   assert.deepEqual(page.errors, []);
   await page.close();
 

@@ -24,6 +24,9 @@ test('what the panels are made from makes a new revision; the cut files alone do
   assert.equal(store.redo(), false);
   assert.equal(store.amend(cmd.setSeamWeight(store.design, 0, 0.5)), true, 'a fix-up of the seams');
   assert.equal(store.history.past.length, 2, 'a fix-up is no step of its own');
+  const cut = { ...store.design, target: { ...store.design.target, cutThinHandles: true } };
+  assert.equal(store.commit(cut), true, "the target's thin handles cut");
+  assert.equal(store.undo(), true, 'put back');
   const before = store.revision;
   store.setResolution(3000);
   assert.equal(store.revision, before + 1, 'another resolution');

@@ -301,32 +301,69 @@ export class App {
     return Boolean(design.target.cutThinHandles && this.target?.report.thinHandles?.length);
   }
 
-  // The target's thin handles cut through (suggest/thin_handles.hpp) and the design marked so, its seams kept: every
-  // face of the target keeps its index. Its panels are made again.
+  // The target's thin handles cut through (suggest/thin_handles.hpp) and the design marked so, in one undo step, its
+  // seams kept: every face of the target keeps its index. Its panels are made again.
   async cutThinHandles() {
-    if (!this.target || this.design.target.example) return;
+    if (!this.target || this.design.target.example || this.target.uncut) return;
     const interrupted = this.panels.stop();
-    const design = { ...this.design, target: { ...this.design.target, cutThinHandles: true } };
-    const mesh = { positions: this.target.positions, indices: this.target.indices };
     try {
-      const result = await this.track('Cutting through the thin handles…', () =>
-        this.client.latest('target', Op.setTarget, { ...mesh, cutThinHandles: true }, {
-          onProgress: (p) => this.setStatus(`Cutting through the thin handles: ${p.stage}…`),
-        }).promise,
-      );
-      this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
-      this.installTarget(this.target.fileName, result, design);
-      this.setStatus('Ready');
-      this.messages.resolve('target.', { prefix: true });
+      const result = await this.setTargetCut(true);
+      if (!this.design.target.cutThinHandles) this.commitDesign({ ...this.design, target: { ...this.design.target, cutThinHandles: true } });
+      this.seams.refresh();
       const n = result.report.thinHandlesCut ?? 0;
-      this.messages.show('notice', `Cut through ${n} thin handle${n === 1 ? '' : 's'} and closed ${n === 1 ? 'its' : 'their'} ends; the design keeps ${n === 1 ? 'it' : 'them'} cut (open the mesh file again to have ${n === 1 ? 'it' : 'them'} back).`, [], { cause: 'target.thin-handles' });
-      this.showTargetIssues(result.report, { quiet: true });
+      this.messages.show('notice', `Cut through ${n} thin handle${n === 1 ? '' : 's'} and closed ${n === 1 ? 'its' : 'their'} ends; the design keeps ${n === 1 ? 'it' : 'them'} cut (undo, or open the mesh file again, to have ${n === 1 ? 'it' : 'them'} back).`, [], { cause: 'target.thin-handles' });
     } catch (error) {
       if (error.code === ErrorCode.cancelled) return;
       this.messages.show('error', `The thin handles could not be cut: ${error.message} Your design is unchanged.`);
       this.setStatus('Ready');
       if (interrupted) this.panels.remake();
     }
+  }
+
+  // Undo or redo crossed the cut of the thin handles: the target follows the design (the seams of either lie on both,
+  // every face keeping its index), then the seams are traced on it again.
+  async followThinHandleCut() {
+    const cut = Boolean(this.design.target.cutThinHandles);
+    try {
+      await this.setTargetCut(cut);
+      this.save(); // the autosave's mesh is the target on screen
+    } catch (error) {
+      if (error.code === ErrorCode.cancelled) return;
+      this.messages.show('error', `The thin handles could not be ${cut ? 'cut' : 'put back'}: ${error.message}`);
+      this.setStatus('Ready');
+    }
+    this.seams.refresh();
+    this.panels.refreshCutLines();
+  }
+
+  // Whether the target on screen is cut other than the design says: only across the cut's undo step, since a target
+  // opened with the design's flag is cut as it opens (and its history starts there).
+  thinHandleCutToFollow() {
+    if (!this.target || this.design.target.example) return false;
+    return this.design.target.cutThinHandles ? !this.target.uncut && this.thinHandlesLeft(this.design) : Boolean(this.target.uncut);
+  }
+
+  // The target with its thin handles cut, or as it was opened (kept on the cut one as `uncut`), in the worker and on
+  // screen; the design is left to the caller. Returns the worker's result.
+  async setTargetCut(cut) {
+    const uncut = this.target.uncut ?? this.target;
+    const stage = cut ? 'Cutting through the thin handles' : 'Putting the thin handles back';
+    const result = await this.track(`${stage}…`, () =>
+      this.client.latest('target', Op.setTarget, { positions: uncut.positions, indices: uncut.indices, cutThinHandles: cut }, {
+        onProgress: (p) => this.setStatus(`${stage}: ${p.stage}…`),
+      }).promise,
+    );
+    this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
+    this.target = { fileName: uncut.fileName, positions: result.positions, indices: result.indices, report: result.report };
+    if (cut) this.target.uncut = uncut;
+    this.panes.target.setTarget(this.target, this.scaleFor(this.design));
+    this.seams.reset();
+    this.panels.markOutdated(false);
+    this.showDesign(); // the target's figures
+    this.setStatus('Ready');
+    this.messages.resolve('target.', { prefix: true });
+    this.showTargetIssues(result.report, { quiet: true });
+    return result;
   }
 
   async installSavedMesh(design, mesh) {
@@ -537,6 +574,7 @@ export class App {
     this.seams.selection = null;
     this.showDesign();
     this.save();
+    if (this.thinHandleCutToFollow()) return this.followThinHandleCut();
     this.seams.refresh();
     this.panels.refreshCutLines();
   }

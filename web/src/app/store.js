@@ -6,8 +6,10 @@
 import { History } from './history.js';
 import { canonicalJson, optimizeArgs, DEFAULT_RESOLUTION } from './stored-result.js';
 
-// What a design's panels are made from, besides the target and the resolution, as comparable text.
-const panelInputs = (design) => canonicalJson({ height: design.size.height, up: design.target.up, ...optimizeArgs(design, 0) });
+// What a design's panels are made from, besides the target mesh and the resolution, as comparable text: the target's
+// thin handles cut or not (undo and redo cross the cut) is part of it.
+const panelInputs = (design) =>
+  canonicalJson({ height: design.size.height, up: design.target.up, cutThinHandles: Boolean(design.target.cutThinHandles), ...optimizeArgs(design, 0) });
 
 // How many optimized results are kept for designs met again (undo, redo, a compared layout put back).
 const KEPT_RESULTS = 8;
