@@ -87,6 +87,15 @@ test('material and pressure are part of the design: the panels are made again, s
   assert.equal(await page.textContent('#inflated-stats dd[data-stat="pressure"]'), '1.00 kPa');
   const foilStress = parseFloat(await page.textContent('#inflated-stats dd[data-stat="peak-stress"]'));
 
+  // Each pane's draws from here on: the panels' optimization streams its iterates to the inflated pane alone.
+  await page.evaluate(() => {
+    window.drawn = { target: 0, inflated: 0 };
+    for (const name of Object.keys(window.drawn)) {
+      const pane = window.billow.test.panes[name];
+      const render = pane.render.bind(pane);
+      pane.render = (...args) => (window.drawn[name]++, render(...args));
+    }
+  });
   await page.selectOption('#material-select', 'pvc');
   await page.fill('#pressure-input', '2');
   await page.press('#pressure-input', 'Enter');
@@ -96,6 +105,8 @@ test('material and pressure are part of the design: the panels are made again, s
     null,
     { timeout: 90000 },
   );
+  const drawn = await page.evaluate(() => window.drawn);
+  assert.ok(drawn.inflated >= 3 && drawn.target <= drawn.inflated / 2, `the target drawn ${drawn.target} times, the inflated shape ${drawn.inflated}`);
   // The same shape at twice the pressure: the sheet's tension doubles; PVC is 12x thicker than foil, so
   // its stress is about 2/12 of the foil's (membrane stress ~ p r / h).
   const pvcStress = parseFloat(await page.textContent('#inflated-stats dd[data-stat="peak-stress"]'));

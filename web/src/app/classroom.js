@@ -117,7 +117,7 @@ function frameView(pane, object, direction = VIEW) {
   pane.camera.updateProjectionMatrix();
   pane.controls.target.copy(sphere.center);
   pane.controls.update();
-  pane.viewport.requestRender();
+  pane.viewport.requestRender(pane);
 }
 
 // A shape's distance to the target, both ways (units.formatDistance), the worse one as the lead figure.

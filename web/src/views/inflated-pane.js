@@ -102,7 +102,7 @@ export class InflatedPane extends Pane3D {
     this.recolor();
     this.element.parentElement.querySelector('.hint')?.setAttribute('hidden', '');
     if (frame) this.frame(this.group);
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
     this.onFieldsChanged?.();
   }
 
@@ -207,7 +207,7 @@ export class InflatedPane extends Pane3D {
     }
     color.needsUpdate = true;
     this.describe(mode, { maxStress, distanceScale });
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   describe(mode, { maxStress, distanceScale }) {
@@ -253,7 +253,7 @@ export class InflatedPane extends Pane3D {
       mesh.geometry.computeVertexNormals();
       mesh.geometry.computeBoundingSphere();
     }
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   // Indexed meshes share one position attribute, so the shape is smooth-shaded; recolor() fills the
@@ -290,5 +290,6 @@ export class InflatedPane extends Pane3D {
     this.position = null;
     this.fields = null;
     this.serial = (this.serial ?? 0) + 1; // which shown shape late results (distances) belong to
+    this.viewport.requestRender(this);
   }
 }

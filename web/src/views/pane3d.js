@@ -25,12 +25,12 @@ export class Pane3D {
     this.controls = new OrbitControls(this.camera, element);
     this.controls.enableDamping = false;
     this.controls.zoomToCursor = true; // a thin part under the cursor stays there as it grows, to click on
-    this.controls.addEventListener('change', () => viewport.requestRender());
+    this.controls.addEventListener('change', () => viewport.requestRender(this));
     this.square = null; // where the view is framed: { left, top, side } in client pixels (fitView)
     this.fitKey = '';
     this.front = null; // the way the shown object faces, in its own coordinates (defaultView)
     viewport.add(this);
-    watchOverlays(element.parentElement, () => viewport.requestRender()); // a box opened, closed or shown
+    watchOverlays(element.parentElement, () => viewport.requestRender(this)); // a box opened, closed or shown
   }
 
   // The view is framed in the free part of the pane (free-area.js): the largest square that fits there, centred
@@ -91,7 +91,7 @@ export class Pane3D {
     this.controls.target.copy(sphere.center);
     this.camera.updateProjectionMatrix();
     this.controls.update();
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   // Turns the view about its centre until `point` (a Vector3 in the scene) faces the viewer, keeping the zoom:
@@ -121,7 +121,7 @@ export function linkViews(a, b) {
     const distance = to.camera.position.distanceTo(to.controls.target);
     to.camera.position.copy(to.controls.target).addScaledVector(from.viewDirection(), distance);
     to.controls.update();
-    to.viewport.requestRender();
+    to.viewport.requestRender(to);
     following = false;
   };
   a.controls.addEventListener('change', follow(a, b));

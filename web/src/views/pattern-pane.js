@@ -31,7 +31,7 @@ export class PatternPane {
     this.controls.zoomToCursor = true; // a piece's corner under the cursor stays there as it grows
     this.controls.mouseButtons = { LEFT: 2, MIDDLE: 1, RIGHT: 2 }; // PAN, DOLLY, PAN
     this.controls.touches = { ONE: 1, TWO: 2 }; // PAN, DOLLY_PAN
-    this.controls.addEventListener('change', () => viewport.requestRender());
+    this.controls.addEventListener('change', () => viewport.requestRender(this));
     this.content = new Group();
     this.scene.add(this.content);
     this.labels = document.createElement('div');
@@ -82,7 +82,7 @@ export class PatternPane {
     this.grid.rotation.x = Math.PI / 2;
     this.grid.position.set(round(center.x), round(center.y), -0.001);
     this.scene.add(this.grid);
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   // pattern: panels in meters (see docs/formats.md); each seam has one color on both panels it joins;
@@ -185,7 +185,7 @@ export class PatternPane {
     const box = new Box3().setFromObject(this.content);
     if (!box.isEmpty()) this.placeGrid(box);
     if (frame || this.outgrewFrame(box)) this.frame(this.content);
-    else this.viewport.requestRender();
+    else this.viewport.requestRender(this);
   }
 
   // The exporter's figures of `pattern` (ignored when another pattern is shown by now; web/src/worker/
@@ -437,7 +437,7 @@ export class PatternPane {
   setSeamLabelsShown(shown) {
     this.seamLabelsShown = shown;
     this.labels.classList.toggle('with-seams', shown);
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   seamLabels() {
@@ -472,7 +472,7 @@ export class PatternPane {
         this.seamLabelAnchors.push({ label, id, length: run.length, at: new Vector3(at[0] + t * (at[2] - at[0]), at[1] + t * (at[3] - at[1]), 0) });
       }
     }
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   // World meters per screen pixel.
@@ -491,7 +491,7 @@ export class PatternPane {
       this.highlight = null;
     }
     const runs = this.seams?.runs.get(this.selectedSeam);
-    if (!runs) return this.viewport.requestRender();
+    if (!runs) return this.viewport.requestRender(this);
     const half = 3 * this.metersPerPixel();
     this.highlightScale = half;
     const points = [];
@@ -511,7 +511,7 @@ export class PatternPane {
     this.highlight.position.z = 0.003;
     this.highlight.renderOrder = 2;
     this.content.add(this.highlight);
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   // The seam (id, -1 for a free edge) nearest a point of the pane (client pixels), within a few pixels of
@@ -573,6 +573,7 @@ export class PatternPane {
     this.labels.replaceChildren();
     this.labelAnchors = [];
     this.panelLabels = [];
+    this.viewport.requestRender(this);
   }
 
   // Fits the object in the free part of the pane (free-area.js: beside the figures, the messages and the seam
@@ -595,7 +596,7 @@ export class PatternPane {
     this.camera.position.set(center.x - dx, center.y + dy, 5);
     this.controls.update();
     this.framed = true;
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   // Whether what is shown now (box) reaches past the margin the last frame() left around the pieces, while the view

@@ -96,7 +96,7 @@ export class TargetPane extends Pane3D {
   }
 
   requestRender() {
-    this.viewport.requestRender();
+    this.viewport.requestRender(this);
   }
 
   // positions in file units, scale to meters; centered on the bounding box's bottom center. front: the way the model

@@ -21,6 +21,6 @@ export function standUp(panes, up) {
   turn(inflated.group, frame);
   if (target.mesh) target.frame(target.group, { reset: true });
   if (inflated.shape) inflated.frame(inflated.group);
-  target.requestRender();
+  target.viewport.requestRender(); // both panes turned
   return true;
 }

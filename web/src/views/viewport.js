@@ -1,5 +1,8 @@
 // One WebGL renderer for all panes: the canvas lies under the pane grid and each pane is drawn into its
-// own rectangle with the scissor test. Rendering is on demand (after input, resize or new content).
+// own rectangle with the scissor test. Rendering is on demand (after input, resize or new content), and only
+// of the panes that changed: the drawing buffer is kept, so an optimization streaming its iterates to the
+// inflated pane leaves the target and the pattern as drawn (on a software rasterizer every pane drawn costs
+// the CPU the solver needs).
 import { WebGLRenderer, Color } from 'three';
 
 // Whether WebGL runs on a software rasterizer, by the renderer's name (Chromium and Firefox expose it).
@@ -22,6 +25,9 @@ export class Viewport {
     this.renderer.setScissorTest(true);
     this.panes = [];
     this.scheduled = false;
+    this.dirty = new Set(); // the panes to draw at the next frame
+    this.all = true; // every pane, and the page between them
+    this.drawn = []; // each pane's rectangle in the canvas when last drawn
     this.clearColor = new Color(0xeef1f6); // each pane's background
     this.pageColor = new Color(0xf4f5f7); // between the panes
     new ResizeObserver(() => this.requestRender()).observe(canvas);
@@ -43,7 +49,10 @@ export class Viewport {
     this.requestRender();
   }
 
-  requestRender() {
+  // A frame for `pane` (a pane's own content changed) or, without one, for all of them.
+  requestRender(pane = null) {
+    if (pane) this.dirty.add(pane);
+    else this.all = true;
     if (this.scheduled) return;
     this.scheduled = true;
     requestAnimationFrame(() => {
@@ -56,22 +65,34 @@ export class Viewport {
     const { canvas, renderer } = this;
     const width = canvas.clientWidth;
     const height = canvas.clientHeight;
-    if (canvas.width !== Math.floor(width * renderer.getPixelRatio()) || canvas.height !== Math.floor(height * renderer.getPixelRatio()))
+    if (canvas.width !== Math.floor(width * renderer.getPixelRatio()) || canvas.height !== Math.floor(height * renderer.getPixelRatio())) {
       renderer.setSize(width, height, false);
+      this.all = true;
+    }
     const box = canvas.getBoundingClientRect();
-    renderer.setScissor(0, 0, width, height);
-    renderer.setClearColor(this.pageColor);
-    renderer.clear();
-    for (const pane of this.panes) {
+    const rects = this.panes.map((pane) => {
       const r = pane.element.getBoundingClientRect();
-      if (r.width <= 0 || r.height <= 0) continue;
-      const left = r.left - box.left;
-      const bottom = box.bottom - r.bottom;
-      renderer.setViewport(left, bottom, r.width, r.height);
-      renderer.setScissor(left, bottom, r.width, r.height);
+      return { left: r.left - box.left, bottom: box.bottom - r.bottom, width: r.width, height: r.height };
+    });
+    // A pane moved or changed size since it was drawn: all are drawn again, and the page between them.
+    const same = (a, b) => b && a.left === b.left && a.bottom === b.bottom && a.width === b.width && a.height === b.height;
+    const all = this.all || rects.some((r, i) => !same(r, this.drawn[i]));
+    if (all) {
+      renderer.setScissor(0, 0, width, height);
+      renderer.setClearColor(this.pageColor);
+      renderer.clear();
+    }
+    this.panes.forEach((pane, i) => {
+      const r = rects[i];
+      if (r.width <= 0 || r.height <= 0 || !(all || this.dirty.has(pane))) return;
+      renderer.setViewport(r.left, r.bottom, r.width, r.height);
+      renderer.setScissor(r.left, r.bottom, r.width, r.height);
       renderer.setClearColor(this.clearColor);
       renderer.clear();
       pane.render(renderer, r.width / r.height);
-    }
+    });
+    this.drawn = rects;
+    this.dirty.clear();
+    this.all = false;
   }
 }
