@@ -354,11 +354,8 @@ export class App {
       }).promise,
     );
     this.client.remember(Op.setTarget, { positions: result.positions, indices: result.indices });
-    this.target = { fileName: uncut.fileName, positions: result.positions, indices: result.indices, report: result.report };
+    this.placeTarget(uncut.fileName, result, this.design);
     if (cut) this.target.uncut = uncut;
-    this.panes.target.setTarget(this.target, this.scaleFor(this.design));
-    this.seams.reset();
-    this.panels.markOutdated(false);
     this.showDesign(); // the target's figures
     this.setStatus('Ready');
     this.messages.resolve('target.', { prefix: true });
@@ -375,16 +372,21 @@ export class App {
   }
 
   installTarget(fileName, result, design, stored = null) {
-    this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
+    this.placeTarget(fileName, result, design);
     this.store.forgetKept();
-    this.panes.target.setTarget(this.target, this.scaleFor(design), findExample(design.target.example)?.front);
-    this.seams.reset();
-    this.panels.markOutdated(false);
     this.commitDesign(design, { reset: true });
     // The seams (and so the live optimization) after the stored result: its inflation and cut lines are then
     // queued in the worker first, not held back until the optimization is done.
     if (stored) this.panels.showStored(stored).finally(() => this.seams.refresh());
     else this.seams.refresh();
+  }
+
+  // The worker's target (result: { positions, indices, report }) on screen, its seams and panels to be made again.
+  placeTarget(fileName, result, design) {
+    this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
+    this.panes.target.setTarget(this.target, this.scaleFor(design), findExample(design.target.example)?.front);
+    this.seams.reset();
+    this.panels.markOutdated(false);
   }
 
   // Mesh files carry no units: the design's height (m) along the target's up axis fixes the scale of its units.
