@@ -5,7 +5,14 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 what="${1:-all}"   # all | native | wasm | web
 
 build_native() {
-  [ -f "$NATIVE_DIR/build.ninja" ] || cmake -S "$ROOT" -B "$NATIVE_DIR" -G Ninja -DCMAKE_BUILD_TYPE=Release >/dev/null
+  native_compilers
+  # A build folder configured with another compiler (g++ before) is configured again from scratch.
+  if [ -f "$NATIVE_DIR/CMakeCache.txt" ] && ! grep -q "^CMAKE_CXX_COMPILER:[A-Z]*=$CXX_BIN$" "$NATIVE_DIR/CMakeCache.txt"; then
+    log "configuring build/native again for $CXX_BIN"
+    rm -rf "$NATIVE_DIR"
+  fi
+  [ -f "$NATIVE_DIR/build.ninja" ] || CC="$CC_BIN" CXX="$CXX_BIN" cmake -S "$ROOT" -B "$NATIVE_DIR" -G Ninja \
+    -DCMAKE_BUILD_TYPE=Release >/dev/null
   log "building native (build/native)"
   cmake --build "$NATIVE_DIR" -j"$(nproc)" >"$ROOT/build/native-build.log" 2>&1 || { cat "$ROOT/build/native-build.log" >&2; die "the native build failed (log above)"; }
   test -x "$NATIVE_DIR/billow" || die "the native build failed"

@@ -13,9 +13,8 @@ TARGETS=(${FUZZ_TARGETS:-obj stl ply pattern_json design_json})
 FUZZ_DIR="${FUZZ_BUILD_DIR:-$ROOT/build/fuzz}"
 FUZZ_JOBS="${FUZZ_JOBS:-$(nproc)}"
 
-ensure_debian_packages clang-14 libclang-rt-14-dev cmake ninja-build libeigen3-dev nlohmann-json3-dev libgtest-dev
-CC_BIN=$(command -v clang || command -v clang-14) || die "clang not found"
-CXX_BIN=$(command -v clang++ || command -v clang++-14) || die "clang++ not found"
+ensure_debian_packages libclang-rt-14-dev cmake ninja-build libeigen3-dev nlohmann-json3-dev libgtest-dev
+native_compilers
 
 log "building the fuzz targets in $FUZZ_DIR"
 if [ ! -f "$FUZZ_DIR/build.ninja" ]; then

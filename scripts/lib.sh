@@ -20,3 +20,11 @@ ensure_debian_packages() {
   $sudo apt-get update -qq
   DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
 }
+
+# The native and fuzz builds' compiler: Debian's clang 14, the LLVM the wasm build's em++ uses too. On this code it
+# compiles the native build a quarter faster than g++ 12, and its binaries run as fast or faster (bench/README.md).
+native_compilers() {
+  ensure_debian_packages clang-14
+  CC_BIN=$(command -v clang || command -v clang-14) || die "clang not found"
+  CXX_BIN=$(command -v clang++ || command -v clang++-14) || die "clang++ not found"
+}

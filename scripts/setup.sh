@@ -3,7 +3,7 @@
 # npm packages of package-lock.json. Safe to run again: it does nothing when all is there.
 source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
-APT_PACKAGES=(cmake ninja-build g++ libgtest-dev libeigen3-dev nlohmann-json3-dev emscripten chromium)
+APT_PACKAGES=(cmake ninja-build clang-14 g++ libgtest-dev libeigen3-dev nlohmann-json3-dev emscripten chromium)
 ensure_debian_packages "${APT_PACKAGES[@]}"
 # Chromium's recommended fonts make pages readable in screenshots.
 ensure_debian_packages fonts-dejavu-core

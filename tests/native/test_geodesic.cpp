@@ -102,10 +102,19 @@ TEST(Geodesic, FollowsGreatCirclesOnTheSphere) {
   const GeodesicSolver solver(m, topo);
   std::mt19937 rng(3);
   std::normal_distribution<double> n(0, 1);
+  // One coordinate per statement: the order a constructor's arguments are evaluated in differs between compilers.
+  const auto direction = [&] {
+    Eigen::Vector3d d;
+    for (int k = 0; k < 3; ++k) d[k] = n(rng);
+    return d.normalized();
+  };
+  double edge = 0;
+  for (int e = 0; e < topo.numEdges(); ++e)
+    edge += (m.V.row(topo.E(e, 0)) - m.V.row(topo.E(e, 1))).norm() / topo.numEdges();
   int tested = 0;
   while (tested < 12) {
-    const Eigen::Vector3d p = Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
-    const Eigen::Vector3d q = Eigen::Vector3d(n(rng), n(rng), n(rng)).normalized();
+    const Eigen::Vector3d p = direction();
+    const Eigen::Vector3d q = direction();
     const double arc = std::acos(std::max(-1.0, std::min(1.0, p.dot(q))));
     if (arc > 2.6 || arc < 0.3) continue;  // not antipodal, not trivial
     ++tested;
@@ -118,9 +127,10 @@ TEST(Geodesic, FollowsGreatCirclesOnTheSphere) {
     double r = 0;
     for (const PathPoint& x : g.points) r += x.position.norm() / g.points.size();
     EXPECT_NEAR(g.length, exact * r, 0.01 * exact * r) << "arc " << exact;
-    // and every path point lies near the plane of the great circle
+    // and every path point lies within an edge's length of the great circle's plane: the shortest path over the
+    // facets may cross other triangles than the plane does (up to half an edge length in 400 random pairs)
     const Eigen::Vector3d normal = pa.cross(pb).normalized();
-    for (const PathPoint& x : g.points) EXPECT_LT(std::abs(x.position.dot(normal)), 0.03);
+    for (const PathPoint& x : g.points) EXPECT_LT(std::abs(x.position.dot(normal)), edge);
   }
 }
 
