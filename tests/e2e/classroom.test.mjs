@@ -62,10 +62,10 @@ const resultShown = (page) => optimizedResultShown(page, LONG.timeout);
 
 test('the classroom walk shows each step of the method and gives the design back', async () => {
   const page = await openFreshPage(env.context, env.server.url);
-  // The designer's own work: the penguin with its seam, and one edit to undo.
+  // The designer's own work: the penguin with its seam and its panels made, and one edit to undo (heat sealed).
   await page.evaluate(() => window.billow.test.openGalleryDesign('toy'));
   await resultShown(page);
-  await page.evaluate(() => window.billow.test.setHeight(0.95));
+  await page.evaluate(() => window.billow.test.setJoining('sealed'));
   const mine = await designerState(page);
   assert.equal(mine.past, 1, 'one undo step');
   await page.waitForFunction(async (design) => {
@@ -174,7 +174,13 @@ test('the classroom walk shows each step of the method and gives the design back
   assert.equal(await page.isDisabled('aside.classroom .classroom-back'), true);
   assert.equal(await page.evaluate(() => window.billow.test.panes.target.seams.items.children.length), 0, 'step 1 again: no seams');
 
-  // Escape: the penguin comes back with its undo step; the autosave never held the walk's example.
+  // Escape: the penguin comes back with its undo step and its panels at once, not optimized again; the autosave
+  // never held the walk's example.
+  await page.evaluate(() => {
+    const status = document.querySelector('#status');
+    window.statusSeen = [];
+    new MutationObserver(() => window.statusSeen.push(status.textContent)).observe(status, { childList: true, characterData: true, subtree: true });
+  });
   await page.keyboard.press('Escape');
   await page.waitForSelector('aside.classroom', { state: 'hidden' });
   await page.waitForFunction(() => window.billow.test.design.target.example === 'penguin' && !window.billow.test.autosavePaused, null, LONG);
@@ -184,10 +190,12 @@ test('the classroom walk shows each step of the method and gives the design back
   assert.equal(new URL(page.url()).hash, '', 'the #classroom link is gone');
   assert.equal(await page.evaluate(() => window.billow.test.toolMode), 'orbit');
   assert.equal(await autosaved(page), mine.design, 'the autosave still holds the designer\'s design');
-  await resultShown(page); // the designer's panels are made again
+  await resultShown(page);
   assert.equal(await page.evaluate(() => window.billow.test.shownPattern.panels.length), 2);
+  const seen = await page.evaluate(() => window.statusSeen);
+  assert.ok(!seen.some((text) => /^(Making|Optimizing) the panels/.test(text)), JSON.stringify(seen));
   await page.click('#undo-button');
-  assert.equal(await page.evaluate(() => window.billow.test.design.size.height), 0.9, 'their undo step works');
+  assert.equal(await page.evaluate(() => window.billow.test.design.fabrication.joining ?? 'sewn'), 'sewn', 'their undo step works');
   assert.deepEqual(page.errors, []);
   await page.close();
 });

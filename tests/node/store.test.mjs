@@ -51,7 +51,7 @@ test('a result belongs to the revision it was made for', () => {
   assert.equal(store.results.size, 0);
 });
 
-test('a result is kept by what it was made from: met again by undo, forgotten with the target, the newest eight', () => {
+test('a result is kept by what it was made from: met again by undo and on its target opened again, the newest eight', () => {
   const store = new Store(cmd.addSeam(newDesign('sphere'), seam));
   const first = store.madeKey();
   store.keepResult(first, { patternText: 'one seam' });
@@ -71,8 +71,12 @@ test('a result is kept by what it was made from: met again by undo, forgotten wi
   store.keepResult('other 8', { patternText: '8' });
   assert.equal(store.keptResult('other 1'), null, 'the oldest goes first');
   assert.equal(store.keptResult('other 0').patternText, '0', 'met again, it became the newest');
-  store.forgetKept();
-  assert.equal(store.keptResult('other 8'), null, 'another target');
+  const onSphere = store.madeKey();
+  store.keepResult(onSphere, { patternText: 'on the sphere' });
+  store.targetKey = 'another mesh';
+  assert.equal(store.keptResult(store.madeKey()), null, 'the same design on another target mesh');
+  store.targetKey = '';
+  assert.equal(store.keptResult(store.madeKey()).patternText, 'on the sphere', 'its target opened again');
 });
 
 test('the optimized panels are shown once made, inflated and on screen with nothing under way', () => {

@@ -11,7 +11,7 @@ import { encodeDesign, decodeDesign, linkNotice } from './share.js';
 import { awaitTarget } from './shared-link.js';
 import { PatternSession } from './pattern-session.js';
 import { Panels } from './panels.js';
-import { resultKey } from './stored-result.js';
+import { resultKey, hashBytes } from './stored-result.js';
 import { SeamEditor } from './seam-editor.js';
 import { setHeight, setUp, setMaterial, setPressure, setFabrication, setSeamAllowance, addValve, setValveWidth, removeValve } from './commands.js';
 import { upOf, heightScale, withGuessedUp } from './up-axis.js';
@@ -373,7 +373,6 @@ export class App {
 
   installTarget(fileName, result, design, stored = null) {
     this.placeTarget(fileName, result, design);
-    this.store.forgetKept();
     this.commitDesign(design, { reset: true });
     // The seams (and so the live optimization) after the stored result: its inflation and cut lines are then
     // queued in the worker first, not held back until the optimization is done.
@@ -384,6 +383,7 @@ export class App {
   // The worker's target (result: { positions, indices, report }) on screen, its seams and panels to be made again.
   placeTarget(fileName, result, design) {
     this.target = { fileName, positions: result.positions, indices: result.indices, report: result.report };
+    this.store.targetKey = `${hashBytes(result.positions)}${hashBytes(result.indices)}`;
     this.panes.target.setTarget(this.target, this.scaleFor(design), findExample(design.target.example)?.front);
     this.seams.reset();
     this.panels.markOutdated(false);

@@ -20,8 +20,10 @@ export class Store {
     this.revision = 0; // counts the changes of what the panels are made from
     this.results = new Map(); // kind -> { revision, value }
     // The newest optimized results by what they were made from (madeKey), oldest first: a design met again shows
-    // its panels at once instead of optimizing them again. Made on the target installed; a new one forgets them.
+    // its panels at once instead of optimizing them again, also on a target opened again (the classroom walk's
+    // way back to the designer's own).
     this.kept = new Map();
+    this.targetKey = ''; // the target mesh on screen, as a hash of its vertices and triangles
     this.work = new Map(); // kind -> how many of that kind run ('opening', 'panels', 'inflation')
     // What the panes show: the pattern (its JSON text and, parsed, in meters), its inflated shape and its cut
     // figures (the exporter's statistics). A pattern opened from a file is shown without being a result.
@@ -115,9 +117,9 @@ export class Store {
     return r && r.revision === this.revision ? r.value : null;
   }
 
-  // What the current design's panels are made from, with the resolution: the key of a kept result.
+  // What the current design's panels are made from, with the target mesh and the resolution: the key of a kept result.
   madeKey() {
-    return `${this.resolution}|${panelInputs(this.design)}`;
+    return `${this.targetKey}|${this.resolution}|${panelInputs(this.design)}`;
   }
 
   keepResult(key, value) {
@@ -132,11 +134,6 @@ export class Store {
     if (value === undefined) return null;
     this.keepResult(key, value);
     return value;
-  }
-
-  // Another target: the kept results are of panels cut from the one before.
-  forgetKept() {
-    this.kept.clear();
   }
 
   dropResult(kind) {
