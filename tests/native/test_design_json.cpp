@@ -160,6 +160,38 @@ TEST(DesignJson, LenientReadingFallsBackWithWarnings) {
   EXPECT_EQ(warnings[0].field, "seams[1].points");
 }
 
+// The app turns an inside-out mesh the right way before the designer draws on it, so a design's surface points name
+// the corners of the turned mesh: read natively, the target is turned the same way and the points land where they
+// were drawn (before, the CLI read the mesh as it was and moved every such point within its triangle).
+TEST(DesignJson, AnInsideOutTargetIsTurnedAsTheAppTurnsItAndItsSeamPointsLandWhereDrawn) {
+  const std::string path = dataPath("sphere-gores.billow.json");
+  const Design drawn = readDesignJson(readFileBytes(path));
+  Design insideOut = drawn;
+  insideOut.target.kind = DesignTarget::Inline;
+  insideOut.target.mesh = loadDesignTarget(drawn, path, {examplesDir()});
+  for (int f = 0; f < insideOut.target.mesh.numTriangles(); ++f)
+    std::swap(insideOut.target.mesh.F(f, 1), insideOut.target.mesh.F(f, 2));
+  const auto asDrawn = makeDesignScene(drawn, path, {examplesDir()});
+  const auto turned = makeDesignScene(insideOut, path, {examplesDir()});
+  EXPECT_TRUE(turned->target.F == asDrawn->target.F);
+  const auto specsOf = [](const DesignScene& scene) {
+    return designSeamSpecs(scene.design.seams, scene.target, *scene.projector, scene.scale);
+  };
+  const std::vector<SeamSpec> a = specsOf(*asDrawn), b = specsOf(*turned);
+  ASSERT_EQ(a.size(), b.size());
+  int surfacePoints = 0;
+  for (size_t s = 0; s < a.size(); ++s) {
+    ASSERT_EQ(a[s].controls.size(), b[s].controls.size());
+    for (size_t i = 0; i < a[s].controls.size(); ++i) {
+      surfacePoints += drawn.seams[s].points[i].onSurface;
+      EXPECT_LT((position(asDrawn->target, a[s].controls[i]) - position(turned->target, b[s].controls[i])).norm(),
+                1e-12);
+    }
+  }
+  EXPECT_GT(surfacePoints, 0);
+  ASSERT_EQ(turned->segmentation.segments.size(), asDrawn->segmentation.segments.size());
+}
+
 TEST(DesignJson, ThreeDimensionalPointsAreProjectedOntoTheScaledTarget) {
   const std::string path = dataPath("sphere-equator.billow.json");
   const Design d = readDesignJson(readFileBytes(path));

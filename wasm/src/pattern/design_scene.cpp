@@ -29,15 +29,13 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
   const auto t0 = Clock::now();
   scene->design = design;
   TriMesh own = loadDesignTarget(design, designPath, exampleDirs);
-  // Seam points name the target's triangles and corners: the mesh is used as it is (no reorientation).
+  // Seam points name the target's triangles and corners, so the mesh is turned the right way as the app turns it
+  // (an inside-out mesh flipped, stray triangles turned) before they are read.
   ValidationOptions vo;
-  vo.fixOrientation = false;
   vo.guessUp = guessUp;
-  // Holes are closed as the app closes them: on the mesh turned one way first (its caps then face out).
+  // Holes are closed as the app closes them: on the mesh turned the right way first (its caps then face out).
   if (design.target.closeHoles) {
-    ValidationOptions turn = vo;
-    turn.fixOrientation = true;
-    validateTarget(own, turn);
+    validateTarget(own, vo);
     closeHoles(own);
   }
   const ValidationReport report = validateTarget(own, vo);
