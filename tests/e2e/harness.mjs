@@ -2,7 +2,7 @@
 // port, and drives Debian's Chromium through playwright-core. Every page fails its test on any console
 // error or uncaught exception.
 import { createServer } from 'node:http';
-import { readFile, mkdtemp, mkdir } from 'node:fs/promises';
+import { readFile, mkdtemp, mkdir, rm } from 'node:fs/promises';
 import { existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, extname, normalize, dirname } from 'node:path';
@@ -54,7 +54,7 @@ export async function serve({ base = '/' } = {}) {
 export async function launch({ serviceWorkers = 'block' } = {}) {
   if (!existsSync(join(DIST, 'index.html'))) throw new Error('web/dist is missing: run npm run build first');
   const profile = await mkdtemp(join(tmpdir(), 'billow-chromium-'));
-  return chromium.launchPersistentContext(profile, {
+  const context = await chromium.launchPersistentContext(profile, {
     executablePath: '/usr/bin/chromium',
     headless: true,
     serviceWorkers,
@@ -62,6 +62,13 @@ export async function launch({ serviceWorkers = 'block' } = {}) {
     args: ['--no-sandbox', '--disable-gpu', '--disable-quic', '--no-first-run', '--disable-background-networking',
       '--disable-component-update', '--disable-sync', '--enable-unsafe-swiftshader'],
   });
+  // The profile goes with the browser (tens of MB each: a run left hundreds in the temporary folder).
+  const close = context.close.bind(context);
+  context.close = async (options) => {
+    await close(options);
+    await rm(profile, { recursive: true, force: true });
+  };
+  return context;
 }
 
 // Opens url in a new page of context and collects console errors; assertNoErrors() fails on any.
