@@ -55,7 +55,7 @@ suite node node node --test --test-concurrency=2 --test-timeout=120000 "$ROOT/te
 # design's size (100 s alone, over 200 s with another file beside it).
 suite e2e node node --test --test-concurrency=2 --test-timeout=900000 "$ROOT/tests/e2e/"
 # A short libFuzzer run of every reader under ASan+UBSan (npm run fuzz runs longer): counts as one test.
-suite fuzz exit bash "$ROOT/scripts/fuzz.sh" "${BILLOW_FUZZ_SECONDS:-10}"
+suite fuzz exit bash "$ROOT/scripts/fuzz.sh" "${BILLOW_FUZZ_SECONDS:-5}"
 
 echo
 echo "all suites: $passed passed, $failed failed"

@@ -189,7 +189,7 @@ test('the app fetches nothing from other sites, the solver worker included', asy
 // A shorter browser version of tests/node/soak.test.mjs: edits that each start making and optimizing the
 // panels, cancelled by the next edit. Neither the worker's wasm heap nor the page's JS heap may grow, and
 // the panels finally shown are those of the last edit, never of an older one.
-test('soak: two batches of 15 edits each cancelling the panels of the one before leave no memory behind and no stale result', async () => {
+test('soak: two batches of 10 edits each cancelling the panels of the one before leave no memory behind and no stale result', async () => {
   const page = await fresh();
   await openDesignFixture(page, 'sphere-equator.billow.json');
   await page.waitForFunction(() => /^Inflated the optimized panels/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });
@@ -218,13 +218,13 @@ test('soak: two batches of 15 edits each cancelling the panels of the one before
   // A leak shows in the bytes in use, compared between the ends of two batches alike. Where a fresh 1 MB block lands
   // (the probe, logged) depends on how the free blocks lie, and so on where the cancels caught the work: it moved
   // 9.6 -> 13.0 MB in a CI run with no leak, and 9.3 -> 13.6 MB in another.
-  for (let k = 0; k < 5; k++) await cycle(k); // warm up: caches, JIT, the allocator's pools
+  for (let k = 0; k < 3; k++) await cycle(k); // warm up: caches, JIT, the allocator's pools
   await complete('1.15');
   const start = await memory();
-  for (let k = 5; k < 20; k++) await cycle(k);
+  for (let k = 3; k < 13; k++) await cycle(k);
   await complete('1.25');
   const before = await memory();
-  for (let k = 20; k < 35; k++) await cycle(k);
+  for (let k = 13; k < 23; k++) await cycle(k);
   await complete('1.35');
   assert.equal(await page.evaluate(() => window.billow.test.design.pressure), 1350);
   const after = await memory();
