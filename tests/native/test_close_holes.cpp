@@ -110,3 +110,63 @@ TEST(CloseHoles, ADesignThatHasThemClosedIsLoadedClosedAndOneThatHasNotSaysHow) 
   TriMesh target = loadDesignTargetScene(back, "", {})->target;
   EXPECT_TRUE(validateTarget(target).ok);
 }
+
+namespace {
+
+// The shared sphere open along a C: the triangles above 0.3 of its radius whose centroid, seen from above, lies
+// in a ring between 0.3 and 0.75 of the radius from the axis, three quarters round. The hole's middle is outside it.
+TriMesh sphereOpenAlongAC() {
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  const Eigen::RowVector3d middle = 0.5 * (sphere.V.colwise().maxCoeff() + sphere.V.colwise().minCoeff());
+  const double radius = 0.5 * (sphere.V.col(1).maxCoeff() - sphere.V.col(1).minCoeff());
+  std::vector<Eigen::Vector3i> kept;
+  for (int f = 0; f < sphere.numTriangles(); ++f) {
+    const Eigen::RowVector3d c =
+        ((sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2))) / 3 - middle) /
+        radius;
+    const double r = std::hypot(c(0), c(2)), angle = std::atan2(c(2), c(0));
+    const bool open = c(1) > 0.3 && r > 0.3 && r < 0.75 && angle > -M_PI / 2;
+    if (!open) kept.push_back(sphere.F.row(f));
+  }
+  TriMesh m{sphere.V, Triangles(int(kept.size()), 3)};
+  for (size_t f = 0; f < kept.size(); ++f) m.F.row(int(f)) = kept[f].transpose();
+  return m;
+}
+
+}  // namespace
+
+TEST(CloseHoles, AHoleWhoseMiddleLiesOutsideItGetsACapThatDoesNotFoldOverItself) {
+  TriMesh m = sphereOpenAlongAC();
+  const int before = m.numTriangles();
+  ASSERT_EQ(closeHoles(m), 1);
+  test::expectClosedSurface(m, 0);
+  // Seen from above, along the axis the C's rim lies across, the cap's triangles all turn one way and cover the
+  // hole once: their areas' sum is the sum of their sizes.
+  double sum = 0, sizes = 0;
+  for (int f = before; f < m.numTriangles(); ++f) {
+    const Eigen::RowVector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
+    const double area = 0.5 * ((b(2) - a(2)) * (c(0) - a(0)) - (b(0) - a(0)) * (c(2) - a(2)));
+    sum += area, sizes += std::abs(area);
+  }
+  EXPECT_GT(sizes, 0);
+  EXPECT_NEAR(std::abs(sum), sizes, 1e-9 * sizes) << "cap triangles fold over each other";
+}
+
+TEST(CloseHoles, AHoleWhoseRimCrossesItselfSeenAlongItsPlaneIsStillClosed) {
+  // A slot around the sphere's middle, 300 degrees round: its rim's two long sides lie one over the other seen
+  // along the plane that fits it, so no flat triangulation covers it; the rings drawn towards its centroid do.
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  const Eigen::RowVector3d middle = 0.5 * (sphere.V.colwise().maxCoeff() + sphere.V.colwise().minCoeff());
+  const double radius = 0.5 * (sphere.V.col(1).maxCoeff() - sphere.V.col(1).minCoeff());
+  std::vector<Eigen::Vector3i> kept;
+  for (int f = 0; f < sphere.numTriangles(); ++f) {
+    const Eigen::RowVector3d c =
+        ((sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2))) / 3 - middle) /
+        radius;
+    if (!(std::abs(c(1)) < 0.2 && std::atan2(c(2), c(0)) > -2 * M_PI / 3)) kept.push_back(sphere.F.row(f));
+  }
+  TriMesh m{sphere.V, Triangles(int(kept.size()), 3)};
+  for (size_t f = 0; f < kept.size(); ++f) m.F.row(int(f)) = kept[f].transpose();
+  ASSERT_EQ(closeHoles(m), 1);
+  test::expectClosedSurface(m, 0);
+}

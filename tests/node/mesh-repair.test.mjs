@@ -6,7 +6,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { Op } from '../../web/src/worker/protocol.js';
 import { handlers, run } from './worker-handlers.mjs';
-import { parseDesign } from '../../web/src/app/design.js';
+import { designForFile, newDesign, parseDesign } from '../../web/src/app/design.js';
 import { loadSharedMesh } from './obj.mjs';
 
 // A ring around y: radius R to the tube's middle, tube radius r, as flat arrays.
@@ -88,6 +88,21 @@ test('a sphere open at its top is refused as one whose holes can be closed, and 
   assert.equal(closed.report.holesClosed, 1);
   assert.equal(closed.report.stats.genus, 0);
   assert.deepEqual(Array.from(closed.indices.slice(0, kept.length)), kept, 'every face kept');
+  assert.equal(closed.report.facesRead, kept.length / 3, 'the faces added are known as such');
+  // Saved beside the mesh file, a seam point on the cap is written as the 3D point it is (a later Billow may cap
+  // otherwise), one on the file's own faces as { face, bary }.
+  const target = { positions: closed.positions, indices: closed.indices, report: closed.report };
+  const capFace = kept.length / 3 + 2, corners = [0, 1, 2].map((k) => closed.indices[3 * capFace + k]);
+  const design = { ...newDesign(), target: { file: 'open.obj', closeHoles: true }, seams: [{ name: 'around', closed: false, points: [{ face: 5, bary: [0.2, 0.3, 0.5] }, { face: capFace, bary: [0.5, 0.5, 0] }] }] };
+  const written = designForFile(design, target);
+  assert.deepEqual(written.seams[0].points[0], { face: 5, bary: [0.2, 0.3, 0.5] });
+  const expected = [0, 1, 2].map((axis) => 0.5 * closed.positions[3 * corners[0] + axis] + 0.5 * closed.positions[3 * corners[1] + axis]);
+  written.seams[0].points[1].forEach((x, axis) => assert.ok(Math.abs(x - expected[axis]) < 1e-6, `${x} against ${expected[axis]}`));
+  assert.deepEqual(design.seams[0].points[1], { face: capFace, bary: [0.5, 0.5, 0] }, 'the design itself is left as it is');
+  // A target opened as it was (nothing added) has no report.facesRead: its design is written as it is.
+  const whole = run(handlers[Op.setTarget]({ positions: Float32Array.from(sphere.positions), indices: Uint32Array.from(sphere.indices) }));
+  assert.equal(whole.report.facesRead, undefined);
+  assert.equal(designForFile(design, { ...whole }), design);
   // A mesh with another fault as well is not offered the closing: it would still be refused.
   // Three triangles on one edge: open, and non-manifold there.
   const fin = { positions: Float32Array.from([0, 0, 0, 1, 0, 0, 0.5, 1, 0, 0.5, -1, 0, 0.5, 0, 1]), indices: Uint32Array.from([0, 1, 2, 1, 0, 3, 0, 1, 4]) };

@@ -1,10 +1,90 @@
 #include "mesh/close_holes.hpp"
 
+#include <Eigen/Eigenvalues>
+#include <Eigen/SparseCholesky>
 #include <cmath>
 #include <unordered_map>
 #include <vector>
 
+#include "flatten/flatten_boundary.hpp"
+#include "remesh/refine.hpp"
+
 namespace billow {
+namespace {
+
+// A cap over the loop: its rim seen along the normal of the plane that fits it best, triangulated (constrained
+// Delaunay, refined to about the rim's edge length `rim` without points added on the rim), and lifted off that
+// plane as a membrane stretched over the rim (each inner vertex at the cotangent-weighted mean of its neighbours),
+// so a flat rim gets a flat cap and the cap never folds over itself. False, and nothing added, where the rim seen
+// so crosses itself.
+bool membraneCap(const TriMesh& mesh, const std::vector<int>& loop, double rim, int& nextVertex,
+                 std::vector<Eigen::RowVector3d>& added, std::vector<Eigen::Vector3i>& caps) {
+  const int n = int(loop.size());
+  Eigen::MatrixXd rimPoints(n, 3);
+  for (int i = 0; i < n; ++i) rimPoints.row(i) = mesh.V.row(loop[size_t(i)]);
+  const Eigen::RowVector3d center = rimPoints.colwise().mean();
+  const Eigen::MatrixXd centered = rimPoints.rowwise() - center;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> fit(centered.transpose() * centered);
+  const Eigen::Vector3d u = fit.eigenvectors().col(2), v = fit.eigenvectors().col(1);  // across the normal, col(0)
+  Pslg pslg;
+  pslg.points.resize(n, 2);
+  pslg.segments.resize(n, 2);
+  for (int i = 0; i < n; ++i) {
+    pslg.points.row(i) << centered.row(i).dot(u.transpose()), centered.row(i).dot(v.transpose());
+    pslg.segments.row(i) << i, (i + 1) % n;
+  }
+  const bool counterclockwise = signedArea(pslg.points) > 0;
+  if (!isSimpleCcwPolygon(counterclockwise ? pslg.points : Points2(pslg.points.colwise().reverse()))) return false;
+  RefineOptions refineOptions;
+  refineOptions.maxEdgeLength = 1.5 * rim;
+  refineOptions.allowBoundarySplits = false;
+  refineOptions.maxSteinerPoints = 50 * n * n;
+  const CdtResult cdt = triangulateRefined(pslg, refineOptions);
+  // Every rim vertex its own point, first (no two seen at one place).
+  for (int i = 0; i < n; ++i)
+    if (cdt.inputToPoint[size_t(i)] != i) return false;
+  const int points = int(cdt.points.rows()), inner = points - n;
+  // The membrane: the inner vertices' positions solve the cotangent Laplace equation with the rim held.
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(std::max(inner, 1), 3);
+  for (int f = 0; f < cdt.triangles.rows(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      // The edge opposite corner k, weighted by half the cotangent of the angle there.
+      const int a = cdt.triangles(f, (k + 1) % 3), b = cdt.triangles(f, (k + 2) % 3), c = cdt.triangles(f, k);
+      const Vec2 ea = cdt.points.row(a) - cdt.points.row(c), eb = cdt.points.row(b) - cdt.points.row(c);
+      const double w = 0.5 * ea.dot(eb) / std::max(std::abs(cross2(ea, eb)), 1e-300);
+      for (const auto& [i, j] : {std::pair{a, b}, std::pair{b, a}}) {
+        if (i < n) continue;
+        entries.emplace_back(i - n, i - n, w);
+        if (j >= n)
+          entries.emplace_back(i - n, j - n, -w);
+        else
+          rhs.row(i - n) += w * rimPoints.row(j);
+      }
+    }
+  Eigen::MatrixXd lifted(inner, 3);
+  if (inner > 0) {
+    Eigen::SparseMatrix<double> laplacian(inner, inner);
+    laplacian.setFromTriplets(entries.begin(), entries.end());
+    const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(laplacian);
+    if (solver.info() != Eigen::Success) return false;
+    lifted = solver.solve(rhs);
+    if (solver.info() != Eigen::Success || !lifted.allFinite()) return false;
+  }
+  std::vector<int> vertex(static_cast<size_t>(points));
+  for (int i = 0; i < n; ++i) vertex[size_t(i)] = loop[size_t(i)];
+  for (int i = 0; i < inner; ++i) vertex[size_t(n + i)] = nextVertex++, added.push_back(lifted.row(i));
+  // A rim edge a -> b is its triangle's; the cap's triangle along it runs b -> a. The triangulation's turn
+  // counterclockwise, as the rim does when `counterclockwise`: then they are turned.
+  for (int f = 0; f < cdt.triangles.rows(); ++f) {
+    const int a = vertex[size_t(cdt.triangles(f, 0))], b = vertex[size_t(cdt.triangles(f, 1))],
+              c = vertex[size_t(cdt.triangles(f, 2))];
+    caps.push_back(counterclockwise ? Eigen::Vector3i(a, c, b) : Eigen::Vector3i(a, b, c));
+  }
+  return true;
+}
+
+}  // namespace
 
 int closeHoles(TriMesh& mesh) {
   // Boundary half-edges a -> b: their edge has one triangle, in which a comes before b.
@@ -42,6 +122,11 @@ int closeHoles(TriMesh& mesh) {
       center += mesh.V.row(loop[size_t(i)]) / n;
       rim += (mesh.V.row(loop[size_t(i)]) - mesh.V.row(loop[size_t((i + 1) % n)])).norm() / n;
     }
+    if (membraneCap(mesh, loop, rim, nextVertex, added, caps)) {
+      ++closed;
+      continue;
+    }
+    // Where the rim seen along its plane crosses itself: rings drawn towards its centroid.
     for (int i = 0; i < n; ++i) radius += (mesh.V.row(loop[size_t(i)]) - center).norm() / n;
     // Rings about one rim edge apart; a ring keeps every other vertex of the one outside it once they would stand
     // closer than 0.6 of an edge, so the cap's triangles stay about the rim's size.

@@ -4,7 +4,7 @@
 // DesignFields' (views/design-fields.js).
 import { Op, ErrorCode } from '../worker/protocol.js';
 import { findExample } from './examples.js';
-import { newDesign, parseDesign, clampHeight } from './design.js';
+import { newDesign, parseDesign, clampHeight, designForFile } from './design.js';
 import { autosave, tabRecordKey } from './autosave.js';
 import { Store } from './store.js';
 import { encodeDesign, decodeDesign, linkNotice } from './share.js';
@@ -596,9 +596,9 @@ export class App {
     }
   }
 
-  // Downloads the design document as a .json file.
+  // Downloads the design document as a .json file (its seams' points on faces Billow added as 3D points).
   saveDesignFile() {
-    download(JSON.stringify(this.design, null, 2), `${this.fileBaseName()}.billow.json`, 'application/json');
+    download(JSON.stringify(designForFile(this.design, this.target), null, 2), `${this.fileBaseName()}.billow.json`, 'application/json');
   }
 
   // The name files of this design are called by: its example or mesh file, without extension.

@@ -58,6 +58,24 @@ function parseMaterial(value, warnings) {
 
 const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v);
 
+// The design as its file is written, beside the designer's mesh file. Billow numbers the faces it adds as it opens
+// that file (the caps over its holes, the ends of cut handles) after the file's own, and may cap or cut another way
+// in a later version: so a seam point on an added face is written as the 3D point it is (read back, it is projected
+// onto the surface), while a point on one of the file's own faces keeps { face, bary }. target: { positions,
+// indices, report } as the worker installed it (report.facesRead: the file's own faces, set where faces were added).
+export function designForFile(design, target) {
+  const own = target?.report?.facesRead;
+  if (!Number.isInteger(own) || design.target.example) return design;
+  const position = (p) => [0, 1, 2].map((axis) =>
+    [0, 1, 2].reduce((sum, corner) => sum + p.bary[corner] * target.positions[3 * target.indices[3 * p.face + corner] + axis], 0));
+  const onAdded = (p) => Number.isInteger(p?.face) && p.face >= own && Array.isArray(p.bary);
+  if (!design.seams.some((seam) => seam.points?.some(onAdded))) return design;
+  return {
+    ...design,
+    seams: design.seams.map((seam) => (seam.points?.some(onAdded) ? { ...seam, points: seam.points.map((p) => (onAdded(p) ? position(p) : p)) } : seam)),
+  };
+}
+
 // The last part of a path, as a file picker names the file ("meshes/octopus.obj" -> "octopus.obj").
 const baseName = (path) => path.split(/[\\/]/).pop();
 

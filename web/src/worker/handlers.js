@@ -25,6 +25,7 @@ export function createHandlers(api) {
     let { report, indices: fixed } = api.validateTarget(positions, indices);
     const onlyHoles = (r) => r.issues.every((i) => i.severity !== 'error' || i.code === 'mesh.open');
     let holesClosed = 0;
+    const facesRead = fixed.length / 3; // the file's own faces: closing and cutting append theirs after them
     if (!report.ok && closeHoles && onlyHoles(report)) {
       yield { stage: 'closing its holes', done: 2, total: 3 };
       const capped = api.closeHoles(positions, fixed);
@@ -48,6 +49,7 @@ export function createHandlers(api) {
       } else if (!cutThinHandles) thin = found.handles;
     }
     report.thinHandles = thin;
+    if (fixed.length / 3 > facesRead) report.facesRead = facesRead;
     state.target = { positions, indices: fixed };
     state.suggestion = null; // the session forgets it with its target
     state.session ??= api.targetSession();
