@@ -157,11 +157,27 @@ TEST(Validation, DegenerateTriangleIsAnError) {
   EXPECT_GE(findIssue(r, "mesh.degenerate")->count, 1);
 }
 
-TEST(Validation, DuplicateTriangleAndBadNumbers) {
-  TriMesh dup = test::loadShared("sphere.obj");
-  dup.F.conservativeResize(dup.numTriangles() + 1, 3);
-  dup.F.row(dup.numTriangles() - 1) = dup.F.row(0);
-  EXPECT_NE(findIssue(validateTarget(dup), "mesh.duplicate"), nullptr);
+TEST(Validation, ATriangleThatAppearsTwiceLosesItsCopyAndBadNumbersAreErrors) {
+  // A face written again, once as it was and once turned the other way: the copies are left out with a notice,
+  // the first of each kept, the other faces in their order, and the sphere is whole again.
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  TriMesh dup = sphere;
+  dup.F.conservativeResize(sphere.numTriangles() + 2, 3);
+  dup.F.bottomRows(2) = dup.F.topRows(2);
+  dup.F.row(sphere.numTriangles() + 1) = Eigen::RowVector3i(dup.F(1, 0), dup.F(1, 2), dup.F(1, 1));
+  dup.F.row(7).swap(dup.F.row(sphere.numTriangles()));  // a copy in the middle, and face 7 after the others
+  const ValidationReport fixed = validateTarget(dup);
+  EXPECT_TRUE(fixed.ok);
+  EXPECT_TRUE(fixed.modified);
+  ASSERT_NE(findIssue(fixed, "mesh.duplicate"), nullptr);
+  EXPECT_EQ(findIssue(fixed, "mesh.duplicate")->severity, "notice");
+  EXPECT_EQ(findIssue(fixed, "mesh.duplicate")->count, 2);
+  EXPECT_EQ(fixed.stats.triangles, sphere.numTriangles());
+  ASSERT_EQ(dup.numTriangles(), sphere.numTriangles());
+  const int n = sphere.numTriangles();
+  EXPECT_EQ(dup.F.topRows(7), sphere.F.topRows(7));
+  EXPECT_EQ(dup.F.middleRows(7, n - 8), sphere.F.bottomRows(n - 8));
+  EXPECT_EQ(dup.F.row(n - 1), sphere.F.row(7));
 
   TriMesh nan = test::loadShared("sphere.obj");
   nan.V(3, 1) = std::nan("");

@@ -65,7 +65,7 @@ class Validator {
     checkEdges();
     checkVertexFans();
     countComponents();
-    if (opt_.fixOrientation && nonManifoldEdges_ == 0) fixOrientation();
+    if (opt_.repair && nonManifoldEdges_ == 0) fixOrientation();
     computeMeasures();
     checkVolume(diag);
     computeGenus();
@@ -148,7 +148,9 @@ class Validator {
   }
 
   void checkTriangles(double diag) {
-    int degenerate = 0, duplicate = 0, firstDegenerate = -1, firstDuplicate = -1;
+    int degenerate = 0, duplicate = 0, firstDegenerate = -1;
+    Eigen::Vector3d firstDuplicate = Eigen::Vector3d::Zero();
+    std::vector<char> repeats(static_cast<size_t>(m_.numTriangles()), 0);  // the same corners as a triangle before it
     std::set<std::array<int, 3>> seen;
     for (int f = 0; f < m_.numTriangles(); ++f) {
       const Eigen::Vector3d a = m_.V.row(m_.F(f, 0)), b = m_.V.row(m_.F(f, 1)), c = m_.V.row(m_.F(f, 2));
@@ -159,7 +161,10 @@ class Validator {
       }
       std::array<int, 3> k = {m_.F(f, 0), m_.F(f, 1), m_.F(f, 2)};
       std::sort(k.begin(), k.end());
-      if (!seen.insert(k).second && duplicate++ == 0) firstDuplicate = f;
+      if (!seen.insert(k).second) {
+        if (duplicate++ == 0) firstDuplicate = centroid(f);
+        repeats[size_t(f)] = 1;
+      }
     }
     if (degenerate > 0) {
       const Eigen::Vector3d p = centroid(firstDegenerate);
@@ -168,12 +173,25 @@ class Validator {
               ". Remove them, for example with 'Merge by Distance' in Blender, and load the mesh again.",
           degenerate, &p);
     }
-    if (duplicate > 0) {
-      const Eigen::Vector3d p = centroid(firstDuplicate);
+    if (duplicate > 0 && opt_.repair) {
+      // A triangle twice over is a file's slip (an export that wrote a face again), not a shape: the copies are
+      // left out, keeping the first of each and the order of the rest, so every load of the file numbers its
+      // faces alike.
+      Triangles kept(m_.numTriangles() - duplicate, 3);
+      for (int f = 0, row = 0; f < m_.numTriangles(); ++f)
+        if (!repeats[size_t(f)]) kept.row(row++) = m_.F.row(f);
+      m_.F = std::move(kept);
+      r_.stats.triangles = m_.numTriangles();
+      r_.modified = true;
+      add("mesh.duplicate", "notice",
+          plural(duplicate, "triangle appeared", "triangles appeared") + " twice, the first " + where(firstDuplicate) +
+              ": the " + (duplicate == 1 ? "copy was" : "copies were") + " left out.",
+          duplicate, &firstDuplicate);
+    } else if (duplicate > 0) {
       add("mesh.duplicate", "error",
-          plural(duplicate, "triangle appears", "triangles appear") + " twice, the first " + where(p) +
+          plural(duplicate, "triangle appears", "triangles appear") + " twice, the first " + where(firstDuplicate) +
               ". Remove the duplicates and load the mesh again.",
-          duplicate, &p);
+          duplicate, &firstDuplicate);
     }
   }
 
@@ -228,7 +246,7 @@ class Validator {
               ". On a closed surface every edge joins exactly two triangles.",
           nonManifoldEdges_, &p);
     }
-    if (inconsistentEdges_ > 0 && !opt_.fixOrientation) {
+    if (inconsistentEdges_ > 0 && !opt_.repair) {
       const Eigen::Vector3d p = centroid(firstInconsistent);
       add("mesh.inconsistent-orientation", "error",
           "Neighbouring triangles face opposite ways along " + plural(inconsistentEdges_, "edge", "edges") +
@@ -400,7 +418,7 @@ class Validator {
       add("mesh.flat", "error", "The shape encloses no volume (it is flat), so it cannot be inflated.", 0);
       return;
     }
-    if (st.volume < 0 && opt_.fixOrientation && st.components == 1) {
+    if (st.volume < 0 && opt_.repair && st.components == 1) {
       for (int f = 0; f < m_.numTriangles(); ++f) std::swap(m_.F(f, 1), m_.F(f, 2));
       st.volume = -st.volume;
       r_.modified = true;

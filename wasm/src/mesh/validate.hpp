@@ -13,8 +13,10 @@ namespace billow {
 struct ValidationOptions {
   int maxTriangles = 500000;           // beyond the interactive budget of the solver: refused with a message
   double degenerateAreaRatio = 1e-14;  // a triangle is degenerate when its area < ratio * (bbox diagonal)^2
-  bool fixOrientation = true;          // flip inside-out meshes and reorient stray triangles (with a notice)
-  bool guessUp = true;                 // fill MeshStats::standing (a mesh opened anew, not a design's target)
+  // Repair in place what has one right answer, each with a notice: flip an inside-out mesh, turn stray triangles,
+  // leave out the copies of a triangle that appears twice (mesh.F then has fewer rows).
+  bool repair = true;
+  bool guessUp = true;  // fill MeshStats::standing (a mesh opened anew, not a design's target)
 };
 
 struct MeshIssue {
@@ -42,12 +44,12 @@ struct MeshStats {
 
 struct ValidationReport {
   bool ok = false;        // no issue of severity "error"
-  bool modified = false;  // the mesh's triangles were reoriented (mesh.F changed)
+  bool modified = false;  // the mesh's triangles were reoriented or their copies left out (mesh.F changed)
   MeshStats stats;
   std::vector<MeshIssue> issues;  // errors first
 };
 
-// Checks mesh and, with options.fixOrientation, repairs orientation in place (reported as notices).
+// Checks mesh and, with options.repair, repairs its orientation and repeated triangles in place (as notices).
 ValidationReport validateTarget(TriMesh& mesh, const ValidationOptions& options = {});
 
 // The report as JSON text (the same text natively and in wasm).
