@@ -12,7 +12,7 @@
 namespace billow {
 namespace {
 
-// A cap over the loop: its rim seen along the normal of the plane that fits it best, triangulated (constrained
+// A cap over the loop: its rim seen along a direction it lies simply across (below), triangulated (constrained
 // Delaunay, refined to about the rim's edge length `rim` without points added on the rim), and lifted off that
 // plane as a membrane stretched over the rim (each inner vertex at the cotangent-weighted mean of its neighbours),
 // so a flat rim gets a flat cap and the cap never folds over itself. False, and nothing added, where the rim seen
@@ -20,21 +20,30 @@ namespace {
 bool membraneCap(const TriMesh& mesh, const std::vector<int>& loop, double rim, int& nextVertex,
                  std::vector<Eigen::RowVector3d>& added, std::vector<Eigen::Vector3i>& caps) {
   const int n = int(loop.size());
-  Eigen::MatrixXd rimPoints(n, 3);
+  Eigen::Matrix<double, Eigen::Dynamic, 3> rimPoints(n, 3);
   for (int i = 0; i < n; ++i) rimPoints.row(i) = mesh.V.row(loop[size_t(i)]);
   const Eigen::RowVector3d center = rimPoints.colwise().mean();
-  const Eigen::MatrixXd centered = rimPoints.rowwise() - center;
+  const Eigen::Matrix<double, Eigen::Dynamic, 3> centered = rimPoints.rowwise() - center;
+  // Seen along the loop's vector area (the direction it encloses most area across), else along the normal of the
+  // plane that fits it best: a rim that winds round a curved part may lie simply in one and not in the other.
+  Eigen::Vector3d vectorArea = Eigen::Vector3d::Zero();
+  for (int i = 0; i < n; ++i) vectorArea += centered.row(i).cross(centered.row((i + 1) % n)).transpose();
   const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> fit(centered.transpose() * centered);
-  const Eigen::Vector3d u = fit.eigenvectors().col(2), v = fit.eigenvectors().col(1);  // across the normal, col(0)
   Pslg pslg;
   pslg.points.resize(n, 2);
   pslg.segments.resize(n, 2);
-  for (int i = 0; i < n; ++i) {
-    pslg.points.row(i) << centered.row(i).dot(u.transpose()), centered.row(i).dot(v.transpose());
-    pslg.segments.row(i) << i, (i + 1) % n;
+  for (int i = 0; i < n; ++i) pslg.segments.row(i) << i, (i + 1) % n;
+  bool counterclockwise = false, simple = false;
+  for (const Eigen::Vector3d& normal : {Eigen::Vector3d(vectorArea), Eigen::Vector3d(fit.eigenvectors().col(0))}) {
+    if (!(normal.norm() > 0)) continue;
+    const Eigen::Vector3d w = normal.normalized(), u = w.unitOrthogonal(), v = w.cross(u);
+    for (int i = 0; i < n; ++i)
+      pslg.points.row(i) << centered.row(i).dot(u.transpose()), centered.row(i).dot(v.transpose());
+    counterclockwise = signedArea(pslg.points) > 0;
+    simple = isSimpleCcwPolygon(counterclockwise ? pslg.points : Points2(pslg.points.colwise().reverse()));
+    if (simple) break;
   }
-  const bool counterclockwise = signedArea(pslg.points) > 0;
-  if (!isSimpleCcwPolygon(counterclockwise ? pslg.points : Points2(pslg.points.colwise().reverse()))) return false;
+  if (!simple) return false;
   RefineOptions refineOptions;
   refineOptions.maxEdgeLength = 1.5 * rim;
   refineOptions.allowBoundarySplits = false;
