@@ -2,7 +2,7 @@
 // the native CLI's report (`billow check --json`): native and wasm must agree.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync } from 'node:fs';
+import { readFileSync, rmSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { loadApi } from './load-module.mjs';
@@ -64,7 +64,23 @@ test('an open mesh is reported identically by wasm and native, with the hole loc
   for (let v = 0; v < positions.length; v += 3) lines.push(`v ${positions[v]} ${positions[v + 1]} ${positions[v + 2]}`);
   for (let f = 0; f < open.length; f += 3) lines.push(`f ${open[f] + 1} ${open[f + 1] + 1} ${open[f + 2] + 1}`);
   writeFileSync(`${dir}/open.obj`, lines.join('\n'));
-  assertSameReport(report, nativeReport(`${dir}/open.obj`));
+  try {
+    assertSameReport(report, nativeReport(`${dir}/open.obj`));
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
+test('a triangle written twice comes back once, with a notice, the other faces in their order', () => {
+  const { positions, indices } = readObjText(readFileSync(`${MESHES}/spot.obj`, 'utf8'));
+  const twice = Uint32Array.from([...indices.slice(0, 30), ...indices.slice(27, 30), ...indices.slice(30)]);
+  const result = api.validateTarget(positions, twice);
+  assert.equal(result.report.ok, true);
+  assert.equal(result.report.modified, true);
+  const notice = result.report.issues.find((i) => i.code === 'mesh.duplicate');
+  assert.equal(notice?.severity, 'notice');
+  assert.match(notice.message, /1 triangle appeared twice, the first .*: the copy was left out\./);
+  assert.deepEqual(Array.from(result.indices), Array.from(indices));
 });
 
 test('an inside-out mesh comes back flipped with a notice', () => {

@@ -94,7 +94,8 @@ export class SolverApi {
     const [pos, idx] = SolverApi.meshArrays(positions, indices);
     return this.withHeap([pos, idx], (pPos, pIdx) => {
       const report = SolverApi.unwrap(this.module.validateTarget(pPos, pos.length / 3, pIdx, idx.length / 3));
-      const fixed = report.modified ? new Uint32Array(this.fromHeap(Int32Array, pIdx, idx.length).buffer) : null;
+      // Repaired in place: turned triangles, and fewer where a triangle's copy was left out (report.stats.triangles).
+      const fixed = report.modified ? new Uint32Array(this.fromHeap(Int32Array, pIdx, 3 * report.stats.triangles).buffer) : null;
       return { report, indices: fixed ?? Uint32Array.from(idx) };
     });
   }
