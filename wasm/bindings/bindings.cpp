@@ -30,7 +30,8 @@ std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indic
     billow::TriMesh mesh = meshFromHeap(positions, numVertices, indices, numTriangles);
     const billow::ValidationReport report = billow::validateTarget(mesh);
     // Repaired, its triangles go back in place: as many or fewer (a triangle's copy left out: report.stats.triangles).
-    if (report.modified) Eigen::Map<billow::Triangles>(reinterpret_cast<int*>(indices), mesh.numTriangles(), 3) = mesh.F;
+    if (report.modified)
+      Eigen::Map<billow::Triangles>(reinterpret_cast<int*>(indices), mesh.numTriangles(), 3) = mesh.F;
     return billow::toJson(report);
   });
 }
