@@ -2,6 +2,7 @@
 
 #include <Eigen/Eigenvalues>
 #include <Eigen/SparseCholesky>
+#include <algorithm>
 #include <cmath>
 #include <unordered_map>
 #include <vector>
@@ -12,11 +13,11 @@
 namespace billow {
 namespace {
 
-// A cap over the loop: its rim seen along a direction it lies simply across (below), triangulated (constrained
-// Delaunay, refined to about the rim's edge length `rim` without points added on the rim), and lifted off that
-// plane as a membrane stretched over the rim (each inner vertex at the cotangent-weighted mean of its neighbours),
-// so a flat rim gets a flat cap and the cap never folds over itself. False, and nothing added, where the rim seen
-// so crosses itself.
+// A cap over the loop: its rim seen along a direction it lies simply across (below), else laid on a circle,
+// triangulated there (constrained Delaunay, refined to about the rim's edge length `rim` without points added on the
+// rim), and lifted as a membrane stretched over the rim (each inner vertex at the cotangent-weighted mean of its
+// neighbours), so a flat rim gets a flat cap and the cap never folds over itself where the rim lies simply across
+// some plane. False, and nothing added, where the triangulation or the lifting fails.
 bool membraneCap(const TriMesh& mesh, const std::vector<int>& loop, double rim, int& nextVertex,
                  std::vector<Eigen::RowVector3d>& added, std::vector<Eigen::Vector3i>& caps) {
   const int n = int(loop.size());
@@ -43,43 +44,76 @@ bool membraneCap(const TriMesh& mesh, const std::vector<int>& loop, double rim, 
     simple = isSimpleCcwPolygon(counterclockwise ? pslg.points : Points2(pslg.points.colwise().reverse()));
     if (simple) break;
   }
-  if (!simple) return false;
-  RefineOptions refineOptions;
-  refineOptions.maxEdgeLength = 1.5 * rim;
-  refineOptions.allowBoundarySplits = false;
-  refineOptions.maxSteinerPoints = 50 * n * n;
-  const CdtResult cdt = triangulateRefined(pslg, refineOptions);
-  // Every rim vertex its own point, first (no two seen at one place).
-  for (int i = 0; i < n; ++i)
-    if (cdt.inputToPoint[size_t(i)] != i) return false;
-  const int points = int(cdt.points.rows()), inner = points - n;
-  // The membrane: the inner vertices' positions solve the cotangent Laplace equation with the rim held.
-  std::vector<Eigen::Triplet<double>> entries;
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(std::max(inner, 1), 3);
-  for (int f = 0; f < cdt.triangles.rows(); ++f)
-    for (int k = 0; k < 3; ++k) {
-      // The edge opposite corner k, weighted by half the cotangent of the angle there.
-      const int a = cdt.triangles(f, (k + 1) % 3), b = cdt.triangles(f, (k + 2) % 3), c = cdt.triangles(f, k);
-      const Vec2 ea = cdt.points.row(a) - cdt.points.row(c), eb = cdt.points.row(b) - cdt.points.row(c);
-      const double w = 0.5 * ea.dot(eb) / std::max(std::abs(cross2(ea, eb)), 1e-300);
-      for (const auto& [i, j] : {std::pair{a, b}, std::pair{b, a}}) {
-        if (i < n) continue;
-        entries.emplace_back(i - n, i - n, w);
-        if (j >= n)
-          entries.emplace_back(i - n, j - n, -w);
-        else
-          rhs.row(i - n) += w * rimPoints.row(j);
-      }
+  if (!simple) {
+    // A rim that crosses itself seen from every side tried (one that winds round a car's body): laid on a circle by
+    // its arc length, which any loop lies simply on. The membrane over it is then a soap film's (a harmonic map of
+    // the disc, which does not fold where the rim is convex seen from somewhere, as a flat rim seen across is).
+    double length = 0;
+    std::vector<double> along(static_cast<size_t>(n), 0.0);
+    for (int i = 0; i < n; ++i) {
+      along[size_t(i)] = length;
+      length += (centered.row((i + 1) % n) - centered.row(i)).norm();
     }
-  Eigen::MatrixXd lifted(inner, 3);
-  if (inner > 0) {
+    for (int i = 0; i < n; ++i) {
+      const double angle = 2 * M_PI * along[size_t(i)] / length;
+      pslg.points.row(i) << length / (2 * M_PI) * std::cos(angle), length / (2 * M_PI) * std::sin(angle);
+    }
+    counterclockwise = true;
+  }
+  // The membrane over a triangulation of the plane's rim, refined to maxEdge: the inner vertices' positions solve the
+  // cotangent Laplace equation with the rim held. False where the triangulation or the solve fails.
+  CdtResult cdt;
+  Eigen::MatrixXd lifted;
+  const auto membrane = [&](double maxEdge) {
+    RefineOptions refineOptions;
+    refineOptions.maxEdgeLength = maxEdge;
+    refineOptions.allowBoundarySplits = false;
+    refineOptions.maxSteinerPoints = 50 * n * n;
+    cdt = triangulateRefined(pslg, refineOptions);
+    for (int i = 0; i < n; ++i)  // every rim vertex its own point, first (no two seen at one place)
+      if (cdt.inputToPoint[size_t(i)] != i) return false;
+    const int inner = int(cdt.points.rows()) - n;
+    std::vector<Eigen::Triplet<double>> entries;
+    Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(std::max(inner, 1), 3);
+    for (int f = 0; f < cdt.triangles.rows(); ++f)
+      for (int k = 0; k < 3; ++k) {
+        // The edge opposite corner k, weighted by half the cotangent of the angle there.
+        const int a = cdt.triangles(f, (k + 1) % 3), b = cdt.triangles(f, (k + 2) % 3), c = cdt.triangles(f, k);
+        const Vec2 ea = cdt.points.row(a) - cdt.points.row(c), eb = cdt.points.row(b) - cdt.points.row(c);
+        const double w = 0.5 * ea.dot(eb) / std::max(std::abs(cross2(ea, eb)), 1e-300);
+        for (const auto& [i, j] : {std::pair{a, b}, std::pair{b, a}}) {
+          if (i < n) continue;
+          entries.emplace_back(i - n, i - n, w);
+          if (j >= n)
+            entries.emplace_back(i - n, j - n, -w);
+          else
+            rhs.row(i - n) += w * rimPoints.row(j);
+        }
+      }
+    lifted.resize(inner, 3);
+    if (inner == 0) return true;
     Eigen::SparseMatrix<double> laplacian(inner, inner);
     laplacian.setFromTriplets(entries.begin(), entries.end());
     const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(laplacian);
     if (solver.info() != Eigen::Success) return false;
     lifted = solver.solve(rhs);
-    if (solver.info() != Eigen::Success || !lifted.allFinite()) return false;
+    return solver.info() == Eigen::Success && lifted.allFinite();
+  };
+  // Sized twice: a coarse membrane tells how much the lifting shrinks or stretches the plane's triangles (the
+  // circle's disc is far larger than a long rim's film), and the cap is refined to the rim's edge length over it.
+  if (!membrane(6 * rim)) return false;
+  double planeArea = 0, liftedArea = 0;
+  const auto at = [&](int p) -> Eigen::Vector3d {
+    return p < n ? Eigen::Vector3d(rimPoints.row(p).transpose()) : Eigen::Vector3d(lifted.row(p - n).transpose());
+  };
+  for (int f = 0; f < cdt.triangles.rows(); ++f) {
+    const int a = cdt.triangles(f, 0), b = cdt.triangles(f, 1), c = cdt.triangles(f, 2);
+    planeArea += 0.5 * std::abs(cross2(cdt.points.row(b) - cdt.points.row(a), cdt.points.row(c) - cdt.points.row(a)));
+    liftedArea += 0.5 * (at(b) - at(a)).cross(at(c) - at(a)).norm();
   }
+  const double scale = planeArea > 0 && liftedArea > 0 ? std::sqrt(liftedArea / planeArea) : 1;
+  if (!membrane(1.5 * rim / std::clamp(scale, 0.05, 20.0))) return false;
+  const int points = int(cdt.points.rows()), inner = points - n;
   std::vector<int> vertex(static_cast<size_t>(points));
   for (int i = 0; i < n; ++i) vertex[size_t(i)] = loop[size_t(i)];
   for (int i = 0; i < inner; ++i) vertex[size_t(n + i)] = nextVertex++, added.push_back(lifted.row(i));
@@ -125,53 +159,9 @@ int closeHoles(TriMesh& mesh) {
     simple = simple && next[size_t(loop.back())] == start;
     const int n = int(loop.size());
     if (!simple || n < 3) continue;
-    Eigen::RowVector3d center = Eigen::RowVector3d::Zero();
-    double rim = 0, radius = 0;
-    for (int i = 0; i < n; ++i) {
-      center += mesh.V.row(loop[size_t(i)]) / n;
-      rim += (mesh.V.row(loop[size_t(i)]) - mesh.V.row(loop[size_t((i + 1) % n)])).norm() / n;
-    }
-    if (membraneCap(mesh, loop, rim, nextVertex, added, caps)) {
-      ++closed;
-      continue;
-    }
-    // Where the rim seen along its plane crosses itself: rings drawn towards its centroid.
-    for (int i = 0; i < n; ++i) radius += (mesh.V.row(loop[size_t(i)]) - center).norm() / n;
-    // Rings about one rim edge apart; a ring keeps every other vertex of the one outside it once they would stand
-    // closer than 0.6 of an edge, so the cap's triangles stay about the rim's size.
-    const int rings = std::max(1, int(std::lround(radius / std::max(rim, 1e-300))));
-    std::vector<int> outer = loop, from(static_cast<size_t>(n));  // ring vertices, the rim vertex each is drawn from
-    for (int i = 0; i < n; ++i) from[size_t(i)] = i;
-    const auto strip = [&](const std::vector<int>& o, const std::vector<int>& inner, const std::vector<int>& first) {
-      // Inner vertex i stands over outer vertex first[i]; the outer ones up to the next inner one's are joined to
-      // it, the first half to inner i, the rest to inner i + 1, with one triangle across between them.
-      const int m = int(o.size()), k = int(inner.size());
-      for (int i = 0; i < k; ++i) {
-        const int a = first[size_t(i)], b = i + 1 < k ? first[size_t(i + 1)] : m;
-        const int mid = a + (b - a + 1) / 2, u = inner[size_t(i)], w = inner[size_t((i + 1) % k)];
-        for (int s = a; s < mid; ++s) caps.emplace_back(o[size_t((s + 1) % m)], o[size_t(s)], u);
-        caps.emplace_back(o[size_t(mid % m)], u, w);
-        for (int s = mid; s < b; ++s) caps.emplace_back(o[size_t((s + 1) % m)], o[size_t(s)], w);
-      }
-    };
-    for (int j = 1; j < rings; ++j) {
-      const double t = 1.0 - double(j) / rings;
-      const int m = int(outer.size());
-      const bool halve = m >= 8 && 2 * M_PI * radius * t / m < 0.6 * rim;
-      std::vector<int> inner, first, innerFrom;
-      for (int i = 0; i < m; i += halve ? 2 : 1) {
-        if (halve && i + 1 == m) break;  // an odd ring's last vertex joins the block before
-        inner.push_back(nextVertex++), first.push_back(i), innerFrom.push_back(from[size_t(i)]);
-        added.push_back(center + t * (mesh.V.row(loop[size_t(from[size_t(i)])]) - center));
-      }
-      strip(outer, inner, first);
-      outer = std::move(inner), from = std::move(innerFrom);
-    }
-    const int middle = nextVertex++;
-    added.push_back(center);
-    const int m = int(outer.size());
-    for (int i = 0; i < m; ++i) caps.emplace_back(outer[size_t((i + 1) % m)], outer[size_t(i)], middle);
-    ++closed;
+    double rim = 0;  // the mean rim edge
+    for (int i = 0; i < n; ++i) rim += (mesh.V.row(loop[size_t(i)]) - mesh.V.row(loop[size_t((i + 1) % n)])).norm() / n;
+    if (membraneCap(mesh, loop, rim, nextVertex, added, caps)) ++closed;
   }
   const int oldV = mesh.numVertices(), oldF = mesh.numTriangles();
   mesh.V.conservativeResize(oldV + int(added.size()), 3);

@@ -7,11 +7,9 @@
 namespace billow {
 
 // Closes every hole of an oriented mesh (validateTarget has turned its triangles one way): each boundary loop whose
-// vertices it passes once is capped by a membrane over its rim (close_holes.cpp), or where the rim seen along its
-// plane crosses itself by rings of its own vertices drawn towards its centroid (fewer per ring where they crowd)
-// and a fan at the middle, faced as the mesh's triangles are. Every face keeps its index; vertices and
-// faces are appended. A boundary that passes a vertex twice (two holes touching) is left open. Returns how many
-// holes it closed.
+// vertices it passes once is capped by a membrane over its rim (close_holes.cpp), faced as the mesh's triangles are.
+// Every face keeps its index; vertices and faces are appended. A boundary that passes a vertex twice (two holes
+// touching) is left open. Returns how many holes it closed.
 int closeHoles(TriMesh& mesh);
 
 }  // namespace billow
