@@ -15,21 +15,27 @@ using namespace billow;
 
 namespace {
 
-// The shared sphere without its triangles whose centroid lies above `top` or below `bottom` (along y, in units of its
-// radius from its centre): open there.
-TriMesh openSphere(double top, double bottom = -2) {
+// The shared sphere without the triangles whose centroid c (from its centre, in units of its radius) is `open(c)`.
+template <class Open>
+TriMesh sphereOpenWhere(Open open) {
   const TriMesh sphere = test::loadShared("sphere.obj");
   const Eigen::RowVector3d middle = 0.5 * (sphere.V.colwise().maxCoeff() + sphere.V.colwise().minCoeff());
   const double radius = 0.5 * (sphere.V.col(1).maxCoeff() - sphere.V.col(1).minCoeff());
   std::vector<Eigen::Vector3i> kept;
   for (int f = 0; f < sphere.numTriangles(); ++f) {
-    const double y =
-        (sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2)))(1) / 3;
-    if ((y - middle(1)) / radius <= top && (y - middle(1)) / radius >= bottom) kept.push_back(sphere.F.row(f));
+    const Eigen::RowVector3d c =
+        ((sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2))) / 3 - middle) /
+        radius;
+    if (!open(c)) kept.push_back(sphere.F.row(f));
   }
   TriMesh m{sphere.V, Triangles(int(kept.size()), 3)};
   for (size_t f = 0; f < kept.size(); ++f) m.F.row(int(f)) = kept[f].transpose();
   return m;
+}
+
+// Open above `top` and below `bottom` (along y).
+TriMesh openSphere(double top, double bottom = -2) {
+  return sphereOpenWhere([&](const Eigen::RowVector3d& c) { return c(1) > top || c(1) < bottom; });
 }
 
 double longestEdge(const TriMesh& m, int firstFace) {
@@ -118,21 +124,10 @@ namespace {
 // The shared sphere open along a C: the triangles above 0.3 of its radius whose centroid, seen from above, lies
 // in a ring between 0.3 and 0.75 of the radius from the axis, three quarters round. The hole's middle is outside it.
 TriMesh sphereOpenAlongAC() {
-  const TriMesh sphere = test::loadShared("sphere.obj");
-  const Eigen::RowVector3d middle = 0.5 * (sphere.V.colwise().maxCoeff() + sphere.V.colwise().minCoeff());
-  const double radius = 0.5 * (sphere.V.col(1).maxCoeff() - sphere.V.col(1).minCoeff());
-  std::vector<Eigen::Vector3i> kept;
-  for (int f = 0; f < sphere.numTriangles(); ++f) {
-    const Eigen::RowVector3d c =
-        ((sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2))) / 3 - middle) /
-        radius;
+  return sphereOpenWhere([](const Eigen::RowVector3d& c) {
     const double r = std::hypot(c(0), c(2)), angle = std::atan2(c(2), c(0));
-    const bool open = c(1) > 0.3 && r > 0.3 && r < 0.75 && angle > -M_PI / 2;
-    if (!open) kept.push_back(sphere.F.row(f));
-  }
-  TriMesh m{sphere.V, Triangles(int(kept.size()), 3)};
-  for (size_t f = 0; f < kept.size(); ++f) m.F.row(int(f)) = kept[f].transpose();
-  return m;
+    return c(1) > 0.3 && r > 0.3 && r < 0.75 && angle > -M_PI / 2;
+  });
 }
 
 }  // namespace
@@ -160,17 +155,8 @@ TEST(CloseHoles, AHoleWhoseRimCrossesItselfSeenFromEverySideIsClosedByAFilmThatS
   // spanned by a soap film's cap, whose neighbouring triangles seldom turn sharply back on each other (1 % of its
   // edges by more than 120 degrees, at the slot's narrow ends; the rings drawn towards the centroid, 8 %).
   const TriMesh sphere = test::loadShared("sphere.obj");
-  const Eigen::RowVector3d middle = 0.5 * (sphere.V.colwise().maxCoeff() + sphere.V.colwise().minCoeff());
-  const double radius = 0.5 * (sphere.V.col(1).maxCoeff() - sphere.V.col(1).minCoeff());
-  std::vector<Eigen::Vector3i> kept;
-  for (int f = 0; f < sphere.numTriangles(); ++f) {
-    const Eigen::RowVector3d c =
-        ((sphere.V.row(sphere.F(f, 0)) + sphere.V.row(sphere.F(f, 1)) + sphere.V.row(sphere.F(f, 2))) / 3 - middle) /
-        radius;
-    if (!(std::abs(c(1)) < 0.2 && std::atan2(c(2), c(0)) > -2 * M_PI / 3)) kept.push_back(sphere.F.row(f));
-  }
-  TriMesh m{sphere.V, Triangles(int(kept.size()), 3)};
-  for (size_t f = 0; f < kept.size(); ++f) m.F.row(int(f)) = kept[f].transpose();
+  TriMesh m = sphereOpenWhere(
+      [](const Eigen::RowVector3d& c) { return std::abs(c(1)) < 0.2 && std::atan2(c(2), c(0)) > -2 * M_PI / 3; });
   const int before = m.numTriangles();
   ASSERT_EQ(closeHoles(m), 1);
   test::expectClosedSurface(m, 0);
