@@ -115,8 +115,23 @@ TEST(CloseHoles, ADesignThatHasThemClosedIsLoadedClosedAndOneThatHasNotSaysHow) 
   design.target.closeHoles = true;
   const Design back = readDesignJson(writeDesignJson(design));
   EXPECT_TRUE(back.target.closeHoles);
-  TriMesh target = loadDesignTargetScene(back, "", {})->target;
+  const std::unique_ptr<DesignScene> scene = loadDesignTargetScene(back, "", {});
+  TriMesh target = scene->target;
   EXPECT_TRUE(validateTarget(target).ok);
+
+  // A seam point on the cap is written as the 3D point it is (in the mesh's own units), one on the file's own faces
+  // as it was: a later version may cap the hole otherwise, the file's faces stay.
+  EXPECT_EQ(scene->facesRead, design.target.mesh.numTriangles());
+  DesignSeam seam;
+  const SurfacePoint own{3, Eigen::Vector3d(0.2, 0.3, 0.5)},
+      cap{scene->facesRead + 1, Eigen::Vector3d(0.5, 0.25, 0.25)};
+  for (const SurfacePoint& p : {own, cap}) seam.points.push_back(DesignPoint{true, p, Eigen::Vector3d::Zero()});
+  std::vector<DesignSeam> seams{seam};
+  addedFacePointsAsPositions(*scene, seams);
+  ASSERT_TRUE(seams[0].points[0].onSurface);
+  EXPECT_EQ(seams[0].points[0].surface.face, 3);
+  ASSERT_FALSE(seams[0].points[1].onSurface);
+  EXPECT_LT((seams[0].points[1].position * scene->scale - position(scene->target, cap)).norm(), 1e-12);
 }
 
 namespace {

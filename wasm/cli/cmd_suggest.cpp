@@ -200,6 +200,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
       design.connections.clear();
     }
     design.seams = t.result.seams;
+    addedFacePointsAsPositions(*scene, design.seams);
     design.connections.insert(design.connections.end(), t.result.connections.begin(), t.result.connections.end());
     if (request.symmetryAxis >= 0) design.extra["symmetry"] = {{"axis", std::string(1, "xyz"[request.symmetryAxis])}};
     const std::string stem = "layout-" + std::to_string(r + 1);

@@ -36,9 +36,11 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
   // Holes are closed as the app closes them: on the mesh turned the right way first (its caps then face out).
   if (design.target.closeHoles) {
     validateTarget(own, vo);
+    scene->facesRead = own.numTriangles();
     closeHoles(own);
   }
   const ValidationReport report = validateTarget(own, vo);
+  if (!design.target.closeHoles) scene->facesRead = own.numTriangles();
   if (!report.ok) {
     std::string why;
     bool onlyHoles = true;
@@ -61,8 +63,18 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
 std::unique_ptr<DesignScene> makeTargetScene(const Design& design, const TriMesh& own) {
   auto scene = std::make_unique<DesignScene>();
   scene->design = design;
+  scene->facesRead = own.numTriangles();
   fillTargetScene(*scene, own);
   return scene;
+}
+
+void addedFacePointsAsPositions(const DesignScene& scene, std::vector<DesignSeam>& seams) {
+  for (DesignSeam& seam : seams)
+    for (DesignPoint& p : seam.points)
+      if (p.onSurface && p.surface.face >= scene.facesRead) {
+        p.position = position(scene.target, p.surface) / scene.scale;
+        p.onSurface = false;
+      }
 }
 
 void traceDesignSeams(DesignScene& scene) {

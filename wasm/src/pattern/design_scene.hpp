@@ -16,6 +16,9 @@ struct DesignScene {
   Design design;
   TriMesh target;    // in meters
   double scale = 1;  // meters per target unit
+  // The target file's own faces, checked: the faces after them are the ones added as it was loaded (caps over its
+  // holes, the ends of cut handles), which a later version may add otherwise.
+  int facesRead = 0;
   MeshTopology topology;
   std::unique_ptr<SurfaceProjector> projector;
   std::unique_ptr<GeodesicSolver> geodesic;
@@ -37,6 +40,9 @@ std::unique_ptr<DesignScene> loadDesignTargetScene(const Design& design, const s
 // The same for a target already loaded and checked, in its own units (the app's worker holds it): scaled by the
 // design's size.
 std::unique_ptr<DesignScene> makeTargetScene(const Design& design, const TriMesh& targetOwnUnits);
+// Seam points on faces added as the target was loaded (DesignScene::facesRead) made 3D points in its own units, as
+// a design file beside the mesh keeps them: read again, they are projected onto whatever that version added.
+void addedFacePointsAsPositions(const DesignScene& scene, std::vector<DesignSeam>& seams);
 // The seams placed on it (designSeamSpecs: triangles it has, 3D points near it) and traced.
 void traceDesignSeams(DesignScene& scene);
 // The target cut along them.
