@@ -45,9 +45,10 @@ bool membraneCap(const TriMesh& mesh, const std::vector<int>& loop, double rim, 
     if (simple) break;
   }
   if (!simple) {
-    // A rim that crosses itself seen from every side tried (one that winds round a car's body): laid on a circle by
-    // its arc length, which any loop lies simply on. The membrane over it is then a soap film's (a harmonic map of
-    // the disc, which does not fold where the rim is convex seen from somewhere, as a flat rim seen across is).
+    // A rim that crosses itself seen from both sides tried (one that winds round a car's body): laid on a circle by
+    // its arc length, which any loop lies simply on. The membrane over it is then a harmonic map of the disc, a soap
+    // film's shape, which may fold where the rim turns sharply back (a slot's narrow ends). Seen across a plane
+    // instead, the cotangent weights reproduce the plane's own coordinates, so the cap is a graph over it.
     double length = 0;
     std::vector<double> along(static_cast<size_t>(n), 0.0);
     for (int i = 0; i < n; ++i) {
