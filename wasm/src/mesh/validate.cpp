@@ -65,7 +65,7 @@ class Validator {
     checkEdges();
     checkVertexFans();
     countComponents();
-    if (opt_.repair && nonManifoldEdges_ == 0) fixOrientation();
+    if (nonManifoldEdges_ == 0) fixOrientation();
     computeMeasures();
     checkVolume(diag);
     computeGenus();
@@ -173,7 +173,7 @@ class Validator {
               ". Remove them, for example with 'Merge by Distance' in Blender, and load the mesh again.",
           degenerate, &p);
     }
-    if (duplicate > 0 && opt_.repair) {
+    if (duplicate > 0) {
       // A triangle twice over is a file's slip (an export that wrote a face again), not a shape: the copies are
       // left out, keeping the first of each and the order of the rest, so every load of the file numbers its
       // faces alike.
@@ -186,11 +186,6 @@ class Validator {
       add("mesh.duplicate", "notice",
           plural(duplicate, "triangle appeared", "triangles appeared") + " twice, the first " + where(firstDuplicate) +
               ": the " + (duplicate == 1 ? "copy was" : "copies were") + " left out.",
-          duplicate, &firstDuplicate);
-    } else if (duplicate > 0) {
-      add("mesh.duplicate", "error",
-          plural(duplicate, "triangle appears", "triangles appear") + " twice, the first " + where(firstDuplicate) +
-              ". Remove the duplicates and load the mesh again.",
           duplicate, &firstDuplicate);
     }
   }
@@ -222,7 +217,7 @@ class Validator {
   void checkEdges() {
     auto& st = r_.stats;
     std::vector<std::pair<int, int>> boundary;
-    int firstNonManifold = -1, firstInconsistent = -1;
+    int firstNonManifold = -1;
     forEachEdge([&](size_t i, size_t j) {
       ++st.edges;
       const size_t k = j - i;
@@ -231,7 +226,7 @@ class Validator {
       } else if (k == 2) {
         const bool same = from(half_[i]) == from(half_[i + 1]);
         pairs_.push_back({half_[i].face, half_[i + 1].face, same ? 1 : 0});
-        if (same && inconsistentEdges_++ == 0) firstInconsistent = half_[i].face;
+        if (same) ++inconsistentEdges_;
       } else if (nonManifoldEdges_++ == 0) {
         firstNonManifold = half_[i].face;
       }
@@ -245,13 +240,6 @@ class Validator {
               " shared by more than two triangles (non-manifold), the first " + where(p) +
               ". On a closed surface every edge joins exactly two triangles.",
           nonManifoldEdges_, &p);
-    }
-    if (inconsistentEdges_ > 0 && !opt_.repair) {
-      const Eigen::Vector3d p = centroid(firstInconsistent);
-      add("mesh.inconsistent-orientation", "error",
-          "Neighbouring triangles face opposite ways along " + plural(inconsistentEdges_, "edge", "edges") +
-              ", the first " + where(p) + ".",
-          inconsistentEdges_, &p);
     }
   }
 
@@ -418,7 +406,7 @@ class Validator {
       add("mesh.flat", "error", "The shape encloses no volume (it is flat), so it cannot be inflated.", 0);
       return;
     }
-    if (st.volume < 0 && opt_.repair && st.components == 1) {
+    if (st.volume < 0 && st.components == 1) {
       for (int f = 0; f < m_.numTriangles(); ++f) std::swap(m_.F(f, 1), m_.F(f, 2));
       st.volume = -st.volume;
       r_.modified = true;

@@ -13,10 +13,7 @@ namespace billow {
 struct ValidationOptions {
   int maxTriangles = 500000;           // beyond the interactive budget of the solver: refused with a message
   double degenerateAreaRatio = 1e-14;  // a triangle is degenerate when its area < ratio * (bbox diagonal)^2
-  // Repair in place what has one right answer, each with a notice: flip an inside-out mesh, turn stray triangles,
-  // leave out the copies of a triangle that appears twice (mesh.F then has fewer rows).
-  bool repair = true;
-  bool guessUp = true;  // fill MeshStats::standing (a mesh opened anew, not a design's target)
+  bool guessUp = true;                 // fill MeshStats::standing (a mesh opened anew, not a design's target)
 };
 
 struct MeshIssue {
@@ -49,7 +46,8 @@ struct ValidationReport {
   std::vector<MeshIssue> issues;  // errors first
 };
 
-// Checks mesh and, with options.repair, repairs its orientation and repeated triangles in place (as notices).
+// Checks mesh and repairs in place what has one right answer, each with a notice: an inside-out mesh flipped, stray
+// triangles turned, the copies of a triangle that appears twice left out (mesh.F then has fewer rows).
 ValidationReport validateTarget(TriMesh& mesh, const ValidationOptions& options = {});
 
 // The report as JSON text (the same text natively and in wasm).

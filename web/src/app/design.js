@@ -6,7 +6,7 @@ import {
   findMaterialPreset, presetMaterial, formatPressure,
 } from './materials.js';
 import { fabricationFor, parseFabrication } from './fabrication.js';
-import { parseSymmetry } from './symmetry.js';
+import { parseSymmetry, positionOf } from './symmetry.js';
 import { parseUp } from './up-axis.js';
 import { parseBand } from './band.js';
 
@@ -66,13 +66,11 @@ const isObject = (v) => v !== null && typeof v === 'object' && !Array.isArray(v)
 export function designForFile(design, target) {
   const own = target?.report?.facesRead;
   if (!Number.isInteger(own) || design.target.example) return design;
-  const position = (p) => [0, 1, 2].map((axis) =>
-    [0, 1, 2].reduce((sum, corner) => sum + p.bary[corner] * target.positions[3 * target.indices[3 * p.face + corner] + axis], 0));
   const onAdded = (p) => Number.isInteger(p?.face) && p.face >= own && Array.isArray(p.bary);
   if (!design.seams.some((seam) => seam.points?.some(onAdded))) return design;
   return {
     ...design,
-    seams: design.seams.map((seam) => (seam.points?.some(onAdded) ? { ...seam, points: seam.points.map((p) => (onAdded(p) ? position(p) : p)) } : seam)),
+    seams: design.seams.map((seam) => (seam.points?.some(onAdded) ? { ...seam, points: seam.points.map((p) => (onAdded(p) ? positionOf(target, p) : p)) } : seam)),
   };
 }
 
