@@ -578,9 +578,17 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
     return -1;
   };
   std::vector<DesignSeam> pieces;
-  // The pieces of `loop` on `part`: each from where it crosses into the part to where it crosses out. On a limb,
-  // whether one ran round its tip. With `corners`, the loop's sharp turns are kept (an outline's, as the Outline tool
-  // keeps them: a seam that skipped one would cut a tip off).
+  // A seam along a limb that runs round its tip, with where it meets the root seam (none for a loop on the limb alone).
+  struct AlongLimb {
+    DesignSeam seam;
+    double length = 0;
+    std::optional<SectionPoint> from, to;
+  };
+  std::vector<AlongLimb> alongLimb;
+  // The pieces of `loop` on `part`: each from where it crosses into the part to where it crosses out. On the body each
+  // is laid; on a limb, the one that runs round its tip goes to `alongLimb`, and says whether there was one. With
+  // `corners`, the loop's sharp turns are kept (an outline's, as the Outline tool keeps them: a seam that skipped one
+  // would cut a tip off).
   const auto layPieces = [&](const SectionLoop& loop, int part, const std::string& name, bool corners = false) {
     const size_t n = loop.size();
     std::vector<int> on(n);
@@ -594,9 +602,14 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
       const auto nearTip = [&](const SectionPoint& p) {
         return (p.position - target.V.row(limbs[size_t(part)].tip).transpose()).norm() < limbs[size_t(part)].girth / 4;
       };
-      const bool laid = part < 0 || std::any_of(loop.begin(), loop.end(), nearTip);
-      if (laid) pieces.push_back(makeSeam(name, true, sectionSeamPoints(target, loop, spacing, corners)));
-      return laid;
+      if (part < 0) {
+        pieces.push_back(makeSeam(name, true, sectionSeamPoints(target, loop, spacing, corners)));
+        return true;
+      }
+      if (!std::any_of(loop.begin(), loop.end(), nearTip)) return false;
+      alongLimb.push_back({makeSeam(name, true, sectionSeamPoints(target, loop, spacing, corners)), loopLength(loop),
+                           std::nullopt, std::nullopt});
+      return true;
     }
     // Where the loop crosses the root seam between points k and k + 1: where the level of the limb on either side is
     // zero, on the straight piece between them in the face the later one names (the level is linear there).
@@ -621,7 +634,7 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
     struct Piece {
       std::vector<SurfacePoint> controls;
       SectionPoint from, to;
-      int entered = -1, left = -1;
+      double length = 0;
     };
     std::optional<Piece> roundTip;
     for (size_t step = 0; step < n; ++step) {
@@ -660,12 +673,11 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
       for (const SectionPoint& p : path)
         if (const double d = (p.position - tip).norm(); d < nearestTip) {
           nearestTip = d;
-          roundTip = Piece{controls, from, to, entered, left};
+          roundTip = Piece{controls, from, to, loopLength(path)};
         }
     }
     if (roundTip && nearestTip < limbs[size_t(part)].girth / 4) {
-      pieces.push_back(makeSeam(name, false, roundTip->controls));
-      meet(size_t(roundTip->entered), roundTip->from), meet(size_t(roundTip->left), roundTip->to);
+      alongLimb.push_back({makeSeam(name, false, roundTip->controls), roundTip->length, roundTip->from, roundTip->to});
       return true;
     }
     return part < 0;
@@ -713,7 +725,16 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
       } else {
         loops = planeSection(target, n, n.dot(limb.center));
       }
+      alongLimb.clear();
       for (const SectionLoop& loop : loops) laid |= layPieces(loop, int(i), "along limb " + std::to_string(i + 1));
+      if (!laid) continue;
+      // Of the seams that run round the tip, the longest, which runs the limb's length: another is a loop round a bump
+      // near the tip (an ear on a head), which would cut a panel of its own off.
+      const AlongLimb& longest =
+          *std::max_element(alongLimb.begin(), alongLimb.end(),
+                            [](const AlongLimb& a, const AlongLimb& b) { return a.length < b.length; });
+      pieces.push_back(longest.seam);
+      if (longest.from) meet(i, *longest.from), meet(i, *longest.to);
     }
   }
   std::vector<DesignSeam> seams;
