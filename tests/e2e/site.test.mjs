@@ -94,7 +94,11 @@ test('from a sub-path: loads, renders, then works offline through its service wo
     await shows(page, 'penguin.obj');
     await assertRendered(page, 'another example, offline');
     await screenshot(page, 'site-offline');
-    assert.deepEqual(server.requests, [], 'nothing reached the server while offline');
+    // The browser's own check for a newer service worker after a navigation is not the page's (the emulated offline
+    // does not hold it back, and it can come late after the reload before going offline): offline it fails, and the
+    // cached site goes on.
+    const pageRequests = server.requests.filter((r) => r.path !== `${BASE}sw.js`);
+    assert.deepEqual(pageRequests, [], 'nothing the page asked for reached the server while offline');
     assertNoErrors(page);
     await page.close();
   } finally {
