@@ -631,12 +631,7 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
     while (!(on[start] != part && on[(start + 1) % n] == part)) ++start;  // a step into the part
     // On a limb, the one piece that runs round its tip: others only nick its root.
     double nearestTip = INFINITY;
-    struct Piece {
-      std::vector<SurfacePoint> controls;
-      SectionPoint from, to;
-      double length = 0;
-    };
-    std::optional<Piece> roundTip;
+    std::optional<AlongLimb> roundTip;
     for (size_t step = 0; step < n; ++step) {
       const size_t k = (start + step) % n;
       if (!(on[k] != part && on[(k + 1) % n] == part)) continue;
@@ -670,14 +665,13 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
         continue;
       }
       const Eigen::Vector3d tip = target.V.row(limbs[size_t(part)].tip);
-      for (const SectionPoint& p : path)
-        if (const double d = (p.position - tip).norm(); d < nearestTip) {
-          nearestTip = d;
-          roundTip = Piece{controls, from, to, loopLength(path)};
-        }
+      double nearest = INFINITY;
+      for (const SectionPoint& p : path) nearest = std::min(nearest, (p.position - tip).norm());
+      if (nearest < nearestTip)
+        nearestTip = nearest, roundTip = AlongLimb{makeSeam(name, false, controls), loopLength(path), from, to};
     }
     if (roundTip && nearestTip < limbs[size_t(part)].girth / 4) {
-      alongLimb.push_back({makeSeam(name, false, roundTip->controls), roundTip->length, roundTip->from, roundTip->to});
+      alongLimb.push_back(std::move(*roundTip));
       return true;
     }
     return part < 0;
