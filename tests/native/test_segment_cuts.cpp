@@ -274,3 +274,141 @@ TEST(SegmentCuts, APeelThatWouldOverlapItselfFlatIsCutAcross) {
   EXPECT_NE(e.description().find(std::to_string(e.opened.acrossCuts) + " cut"), std::string::npos) << e.description();
   EXPECT_NE(e.description().find("would overlap"), std::string::npos) << e.description();
 }
+
+namespace {
+
+// A tail: a tube of radius r whose axis curls round a circle of radius R through `turn` radians, each end rounded by
+// a half sphere; `rings` rings of `around` vertices along the curl, `capRings` over each half sphere.
+TriMesh curledTail(double R, double r, double turn, int rings = 60, int around = 24, int capRings = 6) {
+  const auto axis = [&](double s) { return Eigen::Vector3d(R * std::sin(s / R), R * (1 - std::cos(s / R)), 0); };
+  const auto tangent = [&](double s) { return Eigen::Vector3d(std::cos(s / R), std::sin(s / R), 0); };
+  const auto normal = [&](double s) { return Eigen::Vector3d(-std::sin(s / R), std::cos(s / R), 0); };
+  const double length = R * turn;
+  // Each ring: its centre on the axis, pushed out along the tangent over the caps, and its radius.
+  std::vector<std::pair<Eigen::Vector3d, double>> centers;
+  std::vector<Eigen::Vector3d> normals;
+  for (int k = 1; k < capRings; ++k) {
+    const double phi = 0.5 * test::kPi * k / capRings;
+    centers.push_back({axis(0) - r * std::cos(phi) * tangent(0), r * std::sin(phi)}), normals.push_back(normal(0));
+  }
+  for (int k = 0; k <= rings; ++k) {
+    const double s = length * k / rings;
+    centers.push_back({axis(s), r}), normals.push_back(normal(s));
+  }
+  for (int k = capRings - 1; k >= 1; --k) {
+    const double phi = 0.5 * test::kPi * k / capRings;
+    centers.push_back({axis(length) + r * std::cos(phi) * tangent(length), r * std::sin(phi)});
+    normals.push_back(normal(length));
+  }
+  const int n = int(centers.size());
+  TriMesh m;
+  m.V.resize(n * around + 2, 3), m.F.resize(2 * (n - 1) * around + 2 * around, 3);
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < around; ++j) {
+      const double v = 2 * test::kPi * j / around;
+      m.V.row(i * around + j) =
+          centers[size_t(i)].first +
+          centers[size_t(i)].second * (std::cos(v) * normals[size_t(i)] + std::sin(v) * Eigen::Vector3d::UnitZ());
+    }
+  const int first = n * around, last = first + 1;
+  m.V.row(first) = axis(0) - r * tangent(0);
+  m.V.row(last) = axis(length) + r * tangent(length);
+  int f = 0;
+  for (int i = 0; i + 1 < n; ++i)
+    for (int j = 0; j < around; ++j) {
+      const int a = i * around + j, b = (i + 1) * around + j, c = (i + 1) * around + (j + 1) % around,
+                d = i * around + (j + 1) % around;
+      m.F.row(f++) = Eigen::Vector3i(a, d, c), m.F.row(f++) = Eigen::Vector3i(a, c, b);
+    }
+  for (int j = 0; j < around; ++j) {
+    m.F.row(f++) = Eigen::Vector3i(first, (j + 1) % around, j);
+    m.F.row(f++) = Eigen::Vector3i(last, (n - 1) * around + j, (n - 1) * around + (j + 1) % around);
+  }
+  return m;
+}
+
+}  // namespace
+
+// A curled tail sewn round near its root: the rest, a long curled tube closed at its tip, is too big for its seam. A
+// section across it would leave a tube, its end still too big; cut along its length through its tip, from its seam to
+// the seam's far side, it is two pieces.
+TEST(SegmentCuts, ALimbsEndTooBigForItsSeamIsCutAlongThroughItsTip) {
+  const TriMesh shape = curledTail(0.5, 0.1, 4.0, 80);
+  test::expectClosedSurface(shape, 0);
+  const auto scene = test::sceneOf(shape);
+  const TriMesh& target = scene->target;
+  const double size = test::boxDiagonal(target);
+  // The tail as the scene stands it (0.6 m tall): its root end, and the tangent there.
+  const Eigen::Vector3d rootTip = target.V.row(shape.V.rows() - 2), farTip = target.V.row(shape.V.rows() - 1);
+  const Eigen::Vector3d along = (target.V.row(0) - target.V.row(shape.V.rows() - 2)).normalized();
+  const std::vector<SectionLoop> root = planeSection(target, along, along.dot(rootTip) + 0.05 * size);
+  ASSERT_EQ(root.size(), 1u);
+  const DesignSeam seam = seamAlong(target, root[0], 0.01 * size);
+  segmentWith(*scene, {seam});
+  const Segmentation& sg = scene->segmentation;
+  ASSERT_EQ(sg.segments.size(), 2u);
+  const int tail = sg.segments[0].area > sg.segments[1].area ? 0 : 1;
+  ASSERT_FALSE(sg.problems.empty());
+  EXPECT_EQ(sg.problems[0].code, "segment.too-big-for-seam");
+  EXPECT_EQ(sg.problems[0].segment, tail);
+
+  const std::vector<int> path = cutAlong(sg, tail);
+  ASSERT_GE(path.size(), 3u);
+  EXPECT_TRUE(joinedByEdges(sg.mesh, path, false));
+  const std::vector<int>& loop = sg.segments[size_t(tail)].loops[0].vertices;
+  const std::set<int> onLoop(loop.begin(), loop.end());
+  EXPECT_TRUE(onLoop.count(path.front()) && onLoop.count(path.back()));
+  std::set<int> visited;
+  double nearestTip = INFINITY;
+  for (size_t i = 1; i + 1 < path.size(); ++i) {
+    EXPECT_FALSE(onLoop.count(path[i])) << "through the inside";
+    EXPECT_TRUE(visited.insert(path[i]).second) << "the path does not cross itself";
+    nearestTip = std::min(nearestTip, (sg.mesh.V.row(path[i]).transpose() - farTip).norm());
+  }
+  EXPECT_LT(nearestTip, 0.02 * size) << "it runs round the tip";
+  // Its ends half the loop apart, on either side of the tail.
+  double loopLength = 0, from = 0, to = 0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    if (loop[i] == path.front()) from = loopLength;
+    if (loop[i] == path.back()) to = loopLength;
+    loopLength += (sg.mesh.V.row(loop[i]) - sg.mesh.V.row(loop[(i + 1) % loop.size()])).norm();
+  }
+  const double apart = std::min(std::abs(to - from), loopLength - std::abs(to - from));
+  EXPECT_GT(apart, 0.4 * loopLength);
+  // Two halves: the tail's triangles joined across edges but the path's fall into two parts of about equal area (a path
+  // down the curl's shorter inner side and back round near the seam would cut a strip off).
+  std::set<std::pair<int, int>> cutEdges;
+  for (size_t i = 0; i + 1 < path.size(); ++i) cutEdges.insert(std::minmax(path[i], path[i + 1]));
+  const std::vector<int>& triangles = sg.segments[size_t(tail)].triangles;
+  std::map<std::pair<int, int>, int> firstBeside;
+  UnionFind parts(int(triangles.size()));
+  for (int i = 0; i < int(triangles.size()); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const auto edge = std::minmax(sg.mesh.F(triangles[size_t(i)], k), sg.mesh.F(triangles[size_t(i)], (k + 1) % 3));
+      if (cutEdges.count(edge)) continue;
+      const auto [it, added] = firstBeside.emplace(edge, i);
+      if (!added) parts.unite(i, it->second);
+    }
+  std::map<int, double> partArea;
+  double tailArea = 0;
+  for (int i = 0; i < int(triangles.size()); ++i) {
+    const int t = triangles[size_t(i)];
+    const Eigen::Vector3d p0 = sg.mesh.V.row(sg.mesh.F(t, 0)), p1 = sg.mesh.V.row(sg.mesh.F(t, 1)),
+                          p2 = sg.mesh.V.row(sg.mesh.F(t, 2));
+    const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
+    partArea[parts.find(i)] += a, tailArea += a;
+  }
+  ASSERT_EQ(partArea.size(), 2u);
+  for (const auto& [part, a] : partArea) EXPECT_GT(a, 0.4 * tailArea);
+
+  // As a suggested layout, in one round: three panels, none too big for its seam, and no tube left.
+  EvaluateOptions look;
+  look.maxIterations = 0;
+  look.openingRounds = 1;
+  const LayoutEvaluation e = evaluateLayout(*scene, {seam}, 1, look);
+  ASSERT_TRUE(e.ok) << e.problem;
+  EXPECT_EQ(e.panels, 3);
+  EXPECT_EQ(e.opened.limbEndCuts, 1);
+  EXPECT_EQ(e.opened.tubeCuts, 0);
+  EXPECT_NE(e.description().find("1 cut along a limb's end"), std::string::npos) << e.description();
+}

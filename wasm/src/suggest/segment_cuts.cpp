@@ -1,5 +1,6 @@
 #include "suggest/segment_cuts.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
 #include <functional>
@@ -401,6 +402,104 @@ std::vector<int> cutAcross(const Segmentation& sg, int segment, const Eigen::Vec
     }
   }
   return {};
+}
+
+std::vector<int> cutAlong(const Segmentation& sg, int segment) {
+  if (segment < 0 || segment >= int(sg.segments.size())) return {};
+  const Segment& s = sg.segments[size_t(segment)];
+  if (s.loops.size() != 1) return {};
+  const TriMesh& m = sg.mesh;
+  const auto length = [&](int a, int b) { return (m.V.row(a) - m.V.row(b)).norm(); };
+  const std::vector<int>& loop = s.loops[0].vertices;
+  std::unordered_map<int, double> arc;  // loop vertex -> arc length from the loop's first vertex
+  std::set<std::pair<int, int>> loopEdges;
+  double loopLength = 0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    // A vertex twice on the loop (the segment on both sides of a seam) keeps its first place.
+    arc.emplace(loop[i], loopLength);
+    loopEdges.insert(std::minmax(loop[i], loop[(i + 1) % loop.size()]));
+    loopLength += length(loop[i], loop[(i + 1) % loop.size()]);
+  }
+  // The segment's flattest direction (a curled tail's plane's normal) and each vertex's normal: the cut runs where the
+  // surface is seen edge-on from that direction, along the inner and the outer side of the curl, as two mirror pieces
+  // of a curled tube are sewn.
+  std::unordered_map<int, std::vector<int>> around;
+  std::unordered_map<int, Eigen::Vector3d> normal;
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  double area = 0;
+  for (int t : s.triangles) {
+    const Eigen::Vector3d a = m.V.row(m.F(t, 0)), b = m.V.row(m.F(t, 1)), c = m.V.row(m.F(t, 2));
+    const Eigen::Vector3d n = (b - a).cross(c - a), mid = (a + b + c) / 3;
+    const double at = 0.5 * n.norm();
+    center += at * mid, second += at * mid * mid.transpose(), area += at;
+    for (int k = 0; k < 3; ++k) {
+      const int u = m.F(t, k), v = m.F(t, (k + 1) % 3);
+      if (!loopEdges.count(std::minmax(u, v))) around[u].push_back(v), around[v].push_back(u);
+      normal.try_emplace(u, Eigen::Vector3d::Zero()).first->second += n;
+    }
+  }
+  if (!(area > 0)) return {};
+  center /= area;
+  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(second / area - center * center.transpose());
+  const Eigen::Vector3d flattest = principal.eigenvectors().col(0);
+  const auto facing = [&](int v) { return std::abs(normal.at(v).normalized().dot(flattest)); };
+  // Dijkstra from `sources` through inside vertices (a loop vertex is reached, not gone on from), an edge weighing its
+  // length, times 1 + kFacing x its ends' mean facing when `edgeOn`: vertex -> (distance, previous).
+  constexpr double kFacing = 10;
+  using Reach = std::unordered_map<int, std::pair<double, int>>;
+  const auto paths = [&](const std::vector<int>& sources, bool edgeOn) {
+    Reach reach;
+    using Item = std::pair<double, int>;
+    std::priority_queue<Item, std::vector<Item>, std::greater<>> queue;
+    for (int v : sources) reach[v] = {0, -1}, queue.push({0, v});
+    while (!queue.empty()) {
+      const auto [d, v] = queue.top();
+      queue.pop();
+      if (d > reach.at(v).first) continue;
+      if (reach.at(v).second >= 0 && arc.count(v)) continue;
+      for (int w : around[v]) {
+        const double weight = edgeOn ? 1 + 0.5 * kFacing * (facing(v) + facing(w)) : 1;
+        const double dw = d + weight * length(v, w);
+        const auto it = reach.find(w);
+        if (it == reach.end() || dw < it->second.first) reach[w] = {dw, v}, queue.push({dw, w});
+      }
+    }
+    return reach;
+  };
+  const Reach fromLoop = paths(loop, false);
+  int tip = -1;
+  for (const auto& [v, r] : fromLoop)
+    if (!arc.count(v) &&
+        (tip < 0 || r.first > fromLoop.at(tip).first || (r.first == fromLoop.at(tip).first && v < tip)))
+      tip = v;
+  if (tip < 0) return {};
+  const Reach fromTip = paths({tip}, true);
+  // Down to the nearest loop vertex, and to the nearest of those a third of the loop or more along from it: the other
+  // side's.
+  int a = -1, b = -1;
+  for (int v : loop)
+    if (fromTip.count(v) && (a < 0 || fromTip.at(v).first < fromTip.at(a).first)) a = v;
+  if (a < 0) return {};
+  for (int v : loop) {
+    const double d = std::abs(arc.at(v) - arc.at(a));
+    if (fromTip.count(v) && std::min(d, loopLength - d) >= loopLength / 3 &&
+        (b < 0 || fromTip.at(v).first < fromTip.at(b).first))
+      b = v;
+  }
+  if (b < 0) return {};
+  const auto down = [&](int v) {
+    std::vector<int> path;
+    for (int w = v; w >= 0; w = fromTip.at(w).second) path.push_back(w);
+    std::reverse(path.begin(), path.end());  // from the tip
+    return path;
+  };
+  const std::vector<int> toA = down(a), toB = down(b);
+  size_t shared = 1;  // both begin at the tip
+  while (shared < toA.size() && shared < toB.size() && toA[shared] == toB[shared]) ++shared;
+  std::vector<int> path(toA.rbegin(), toA.rend() - long(shared) + 1);  // a up to where the ways part
+  path.insert(path.end(), toB.begin() + long(shared), toB.end());
+  return path;
 }
 
 }  // namespace billow

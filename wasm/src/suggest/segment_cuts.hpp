@@ -31,4 +31,12 @@ std::vector<std::vector<int>> loopsAroundHandles(const Segmentation& segmentatio
 // its outline crosses itself, lies flat as two panels. Cut-mesh vertices from the start; empty where there is none.
 std::vector<int> cutAcross(const Segmentation& segmentation, int segment, const Eigen::Vector3d& near);
 
+// A path through the inside of `segment` (on Segmentation::mesh), a disk, that halves it along its length: from a
+// vertex of its loop through its tip (the inside vertex farthest from the loop) to a loop vertex on the other side, as
+// a pattern maker halves a tail or a trunk into two mirror pieces sewn along it. It keeps to where the surface is seen
+// edge-on from the segment's flattest direction (the inner and the outer side of a curled tail). Where the ways down
+// from the tip share their first edges, the path turns where they part. Cut-mesh vertices from one loop vertex to the
+// other; empty where the segment has no inside vertex or is not one loop.
+std::vector<int> cutAlong(const Segmentation& segmentation, int segment);
+
 }  // namespace billow
