@@ -327,6 +327,41 @@ TriMesh curledTail(double R, double r, double turn, int rings = 60, int around =
   return m;
 }
 
+// The pieces a path cuts a segment into: each one's area and the length of its outline (its part of the segment's loops
+// and of the path).
+std::vector<std::pair<double, double>> piecesCutBy(const Segmentation& sg, int segment, const std::vector<int>& path) {
+  const TriMesh& m = sg.mesh;
+  std::set<std::pair<int, int>> cutEdges, loopEdges;
+  for (size_t i = 0; i + 1 < path.size(); ++i) cutEdges.insert(std::minmax(path[i], path[i + 1]));
+  for (const BoundaryLoop& loop : sg.segments[size_t(segment)].loops)
+    for (size_t i = 0; i < loop.vertices.size(); ++i)
+      loopEdges.insert(std::minmax(loop.vertices[i], loop.vertices[(i + 1) % loop.vertices.size()]));
+  const std::vector<int>& triangles = sg.segments[size_t(segment)].triangles;
+  std::map<std::pair<int, int>, int> firstBeside;
+  UnionFind parts(int(triangles.size()));
+  for (int i = 0; i < int(triangles.size()); ++i)
+    for (int k = 0; k < 3; ++k) {
+      const auto edge = std::minmax(m.F(triangles[size_t(i)], k), m.F(triangles[size_t(i)], (k + 1) % 3));
+      if (cutEdges.count(edge) || loopEdges.count(edge)) continue;
+      const auto [it, added] = firstBeside.emplace(edge, i);
+      if (!added) parts.unite(i, it->second);
+    }
+  std::map<int, std::pair<double, double>> sizes;
+  for (int i = 0; i < int(triangles.size()); ++i) {
+    const int t = triangles[size_t(i)];
+    const Eigen::Vector3d p0 = m.V.row(m.F(t, 0)), p1 = m.V.row(m.F(t, 1)), p2 = m.V.row(m.F(t, 2));
+    auto& [area, outline] = sizes[parts.find(i)];
+    area += 0.5 * (p1 - p0).cross(p2 - p0).norm();
+    for (int k = 0; k < 3; ++k) {
+      const auto edge = std::minmax(m.F(t, k), m.F(t, (k + 1) % 3));
+      if (cutEdges.count(edge) || loopEdges.count(edge)) outline += (m.V.row(edge.first) - m.V.row(edge.second)).norm();
+    }
+  }
+  std::vector<std::pair<double, double>> out;
+  for (const auto& [part, size] : sizes) out.push_back(size);
+  return out;
+}
+
 }  // namespace
 
 // A curled tail sewn round near its root: the rest, a long curled tube closed at its tip, is too big for its seam. A
@@ -352,7 +387,7 @@ TEST(SegmentCuts, ALimbsEndTooBigForItsSeamIsCutAlongThroughItsTip) {
   EXPECT_EQ(sg.problems[0].code, "segment.too-big-for-seam");
   EXPECT_EQ(sg.problems[0].segment, tail);
 
-  const std::vector<int> path = cutAlong(sg, tail);
+  const std::vector<int> path = cutAlong(sg, tail, SegmentationOptions{}.minFlatShare);
   ASSERT_GE(path.size(), 3u);
   EXPECT_TRUE(joinedByEdges(sg.mesh, path, false));
   const std::vector<int>& loop = sg.segments[size_t(tail)].loops[0].vertices;
@@ -375,31 +410,12 @@ TEST(SegmentCuts, ALimbsEndTooBigForItsSeamIsCutAlongThroughItsTip) {
   }
   const double apart = std::min(std::abs(to - from), loopLength - std::abs(to - from));
   EXPECT_GT(apart, 0.4 * loopLength);
-  // Two halves: the tail's triangles joined across edges but the path's fall into two parts of about equal area (a path
-  // down the curl's shorter inner side and back round near the seam would cut a strip off).
-  std::set<std::pair<int, int>> cutEdges;
-  for (size_t i = 0; i + 1 < path.size(); ++i) cutEdges.insert(std::minmax(path[i], path[i + 1]));
-  const std::vector<int>& triangles = sg.segments[size_t(tail)].triangles;
-  std::map<std::pair<int, int>, int> firstBeside;
-  UnionFind parts(int(triangles.size()));
-  for (int i = 0; i < int(triangles.size()); ++i)
-    for (int k = 0; k < 3; ++k) {
-      const auto edge = std::minmax(sg.mesh.F(triangles[size_t(i)], k), sg.mesh.F(triangles[size_t(i)], (k + 1) % 3));
-      if (cutEdges.count(edge)) continue;
-      const auto [it, added] = firstBeside.emplace(edge, i);
-      if (!added) parts.unite(i, it->second);
-    }
-  std::map<int, double> partArea;
-  double tailArea = 0;
-  for (int i = 0; i < int(triangles.size()); ++i) {
-    const int t = triangles[size_t(i)];
-    const Eigen::Vector3d p0 = sg.mesh.V.row(sg.mesh.F(t, 0)), p1 = sg.mesh.V.row(sg.mesh.F(t, 1)),
-                          p2 = sg.mesh.V.row(sg.mesh.F(t, 2));
-    const double a = 0.5 * (p1 - p0).cross(p2 - p0).norm();
-    partArea[parts.find(i)] += a, tailArea += a;
-  }
-  ASSERT_EQ(partArea.size(), 2u);
-  for (const auto& [part, a] : partArea) EXPECT_GT(a, 0.4 * tailArea);
+  // Two halves of about equal area (a path down the curl's shorter inner side and back round near the seam would cut a
+  // strip off).
+  const std::vector<std::pair<double, double>> halves = piecesCutBy(sg, tail, path);
+  ASSERT_EQ(halves.size(), 2u);
+  const double tailArea = halves[0].first + halves[1].first;
+  for (const auto& [area, outline] : halves) EXPECT_GT(area, 0.4 * tailArea);
 
   // As a suggested layout, in one round: three panels, none too big for its seam, and no tube left.
   EvaluateOptions look;
@@ -411,4 +427,38 @@ TEST(SegmentCuts, ALimbsEndTooBigForItsSeamIsCutAlongThroughItsTip) {
   EXPECT_EQ(e.opened.limbEndCuts, 1);
   EXPECT_EQ(e.opened.tubeCuts, 0);
   EXPECT_NE(e.description().find("1 cut along a limb's end"), std::string::npos) << e.description();
+}
+
+// The hand with a seam round its wrist: the rest, five fingers on a palm, is too big for that seam. A cut along it is
+// made only where it leaves no piece too big for its seam (else the section across opens it): given the share a flat
+// panel must cover, it is refused just above the smaller of its pieces' shares.
+TEST(SegmentCuts, ACutAlongLeavesNoPieceTooBigForItsSeam) {
+  const auto scene = test::sharedScene("hand.obj");
+  const TriMesh& target = scene->target;
+  const Eigen::Vector3d low = target.V.colwise().minCoeff(), high = target.V.colwise().maxCoeff();
+  Eigen::Index axis = 0;
+  (high - low).maxCoeff(&axis);
+  const Eigen::Vector3d n = Eigen::Vector3d::Unit(axis);
+  std::vector<DesignSeam> seams;
+  for (const double at : {0.06, 0.94}) {
+    const std::vector<SectionLoop> loops = planeSection(target, n, low[axis] + at * (high - low)[axis]);
+    if (loops.size() == 1) seams.push_back(seamAlong(target, loops[0], 0.01 * test::boxDiagonal(target)));
+  }
+  ASSERT_EQ(seams.size(), 1u) << "one end of the hand is the wrist, cut in one loop";
+  segmentWith(*scene, seams);
+  const Segmentation& sg = scene->segmentation;
+  ASSERT_EQ(sg.segments.size(), 2u);
+  const int hand = sg.segments[0].area > sg.segments[1].area ? 0 : 1;
+  ASSERT_TRUE(std::any_of(sg.problems.begin(), sg.problems.end(), [&](const SegmentationProblem& p) {
+    return p.code == "segment.too-big-for-seam" && p.segment == hand;
+  }));
+  const std::vector<int> path = cutAlong(sg, hand, 0);
+  ASSERT_FALSE(path.empty());
+  const std::vector<std::pair<double, double>> pieces = piecesCutBy(sg, hand, path);
+  ASSERT_EQ(pieces.size(), 2u);
+  double smallest = INFINITY;
+  for (const auto& [area, outline] : pieces) smallest = std::min(smallest, outline * outline / (4 * test::kPi * area));
+  EXPECT_GE(smallest, SegmentationOptions{}.minFlatShare) << "the hand's halves fit their seams";
+  EXPECT_EQ(cutAlong(sg, hand, 0.99 * smallest), path);
+  EXPECT_TRUE(cutAlong(sg, hand, 1.01 * smallest).empty());
 }

@@ -1021,10 +1021,10 @@ std::vector<SurfacePoint> controlsAlong(const Segmentation& sg, const std::vecto
 // gets cuts through it that join its loops (cutsJoiningLoops: the cuts that open a tube, as a designer would add
 // them); a segment around handles a closed seam around each, none shorter than four of the panels' edges at
 // `edgeLength` (loopsAroundHandles); a segment too big for its seam (a limb's end) is cut along its length through its
-// tip where it is a disk (cutAlong), else gets the plane section across its longest extent where that loop lies within
-// it, else across the next (around its limbs); a tiny or thin segment loses the shortest closed seam of the layout's
-// own around it (a plane grazing a toe). The first `fixedSeams` seams are the designer's and stay. Counts what it did
-// in `opened`; returns how many seams it added or removed.
+// tip where it is a disk and that leaves no piece too big (cutAlong), else gets the plane section across its longest
+// extent where that loop lies within it, else across the next (around its limbs); a tiny or thin segment loses the
+// shortest closed seam of the layout's own around it (a plane grazing a toe). The first `fixedSeams` seams are the
+// designer's and stay. Counts what it did in `opened`; returns how many seams it added or removed.
 int openSegments(const DesignScene& scene, double spacing, double edgeLength, int fixedSeams,
                  std::vector<DesignSeam>& seams, std::vector<DesignConnection>& connections, LayoutOpenings& opened) {
   const Segmentation& sg = scene.segmentation;
@@ -1099,7 +1099,7 @@ int openSegments(const DesignScene& scene, double spacing, double edgeLength, in
       // A limb's end or a head on its neck: halved along its length through its tip, two pieces where a section across
       // would leave a tube and an end still too big for its seam (a lion's tail, each of three rounds).
       if (segment.genus == 0 && segment.loops.size() == 1) {
-        const std::vector<int> path = cutAlong(sg, problem.segment);
+        const std::vector<int> path = cutAlong(sg, problem.segment, SegmentationOptions{}.minFlatShare);
         if (path.size() >= 3) {
           seams.push_back(makeSeam("a cut along a limb's end", false, controlsAlong(sg, path, spacing, false)));
           ++added, ++opened.limbEndCuts;

@@ -404,7 +404,7 @@ std::vector<int> cutAcross(const Segmentation& sg, int segment, const Eigen::Vec
   return {};
 }
 
-std::vector<int> cutAlong(const Segmentation& sg, int segment) {
+std::vector<int> cutAlong(const Segmentation& sg, int segment, double minFlatShare) {
   if (segment < 0 || segment >= int(sg.segments.size())) return {};
   const Segment& s = sg.segments[size_t(segment)];
   if (s.loops.size() != 1) return {};
@@ -499,6 +499,35 @@ std::vector<int> cutAlong(const Segmentation& sg, int segment) {
   while (shared < toA.size() && shared < toB.size() && toA[shared] == toB[shared]) ++shared;
   std::vector<int> path(toA.rbegin(), toA.rend() - long(shared) + 1);  // a up to where the ways part
   path.insert(path.end(), toB.begin() + long(shared), toB.end());
+  // The two pieces: the segment's triangles joined across its inside edges but the cut's, each with its area and the
+  // length of its outline (its part of the loop and the cut).
+  std::set<std::pair<int, int>> cutEdges;
+  for (size_t i = 0; i + 1 < path.size(); ++i) cutEdges.insert(std::minmax(path[i], path[i + 1]));
+  const int triangles = int(s.triangles.size());
+  UnionFind pieces(triangles);
+  std::map<std::pair<int, int>, int> firstBeside;
+  for (int i = 0; i < triangles; ++i)
+    for (int k = 0; k < 3; ++k) {
+      const int t = s.triangles[size_t(i)];
+      const auto edge = std::minmax(m.F(t, k), m.F(t, (k + 1) % 3));
+      if (cutEdges.count(edge) || loopEdges.count(edge)) continue;
+      const auto [it, added] = firstBeside.emplace(edge, i);
+      if (!added) pieces.unite(i, it->second);
+    }
+  std::map<int, std::pair<double, double>> pieceSize;  // piece -> (area, outline length)
+  for (int i = 0; i < triangles; ++i) {
+    const int t = s.triangles[size_t(i)];
+    const Eigen::Vector3d p0 = m.V.row(m.F(t, 0)), p1 = m.V.row(m.F(t, 1)), p2 = m.V.row(m.F(t, 2));
+    auto& [pieceArea, outline] = pieceSize[pieces.find(i)];
+    pieceArea += 0.5 * (p1 - p0).cross(p2 - p0).norm();
+    for (int k = 0; k < 3; ++k) {
+      const int u = m.F(t, k), v = m.F(t, (k + 1) % 3);
+      if (cutEdges.count(std::minmax(u, v)) || loopEdges.count(std::minmax(u, v))) outline += length(u, v);
+    }
+  }
+  if (pieceSize.size() != 2) return {};
+  for (const auto& [piece, size] : pieceSize)
+    if (size.second * size.second / (4 * M_PI * size.first) < minFlatShare) return {};
   return path;
 }
 

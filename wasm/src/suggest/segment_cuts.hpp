@@ -36,7 +36,9 @@ std::vector<int> cutAcross(const Segmentation& segmentation, int segment, const 
 // a pattern maker halves a tail or a trunk into two mirror pieces sewn along it. It keeps to where the surface is seen
 // edge-on from the segment's flattest direction (the inner and the outer side of a curled tail). Where the ways down
 // from the tip share their first edges, the path turns where they part. Cut-mesh vertices from one loop vertex to the
-// other; empty where the segment has no inside vertex or is not one loop.
-std::vector<int> cutAlong(const Segmentation& segmentation, int segment);
+// other; empty where the segment has no inside vertex or is not one loop, or where a piece would still be too big for
+// its seam (a flat panel inside it covering less than `minFlatShare` of it, as SegmentationOptions measures: a part
+// over several limbs, which a section across each opens instead).
+std::vector<int> cutAlong(const Segmentation& segmentation, int segment, double minFlatShare);
 
 }  // namespace billow
