@@ -2,7 +2,7 @@
 // says they are too thin for a panel to follow and offers to cut through them; one click leaves the shape a handle
 // fewer, the design marked so, undo puts the handle back, and a reload keeps it cut. A thick ring (a swim ring) is not offered the cut. Holes (a
 // statue open at its base; here a bowl, the sphere open at its top): the refusal offers to close them, and the shape
-// opens closed.
+// opens closed. A flat sheet (an outline drawn in 2D) is told it needs thickness instead.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
@@ -126,4 +126,28 @@ test('an open mesh is refused with an offer to close its hole; closed, it opens 
   assert.equal(await again.locator('.message.error').count(), 0);
   assert.deepEqual(again.errors, []);
   await again.close();
+});
+
+test('a flat sheet (an outline drawn in 2D) is told it needs thickness, with no offer to close it, and changes nothing', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  const before = await stat(page, 'file');
+  // A letter-sized square sheet in the plane z = 0, 8 x 8 squares.
+  const n = 8;
+  const lines = [];
+  for (let i = 0; i <= n; ++i) for (let j = 0; j <= n; ++j) lines.push(`v ${(0.3 * i) / n} ${(0.2 * j) / n} 0`);
+  for (let i = 0; i < n; ++i)
+    for (let j = 0; j < n; ++j) {
+      const a = i * (n + 1) + j + 1;
+      lines.push(`f ${a} ${a + n + 1} ${a + n + 2}`, `f ${a} ${a + n + 2} ${a + 1}`);
+    }
+  await open(page, 'sheet.obj', lines.join('\n'));
+  const refusal = page.locator('.message.error', { hasText: '"sheet.obj" cannot be used as a target' });
+  await refusal.waitFor();
+  assert.match(await refusal.textContent(), /flat sheet with no thickness/);
+  assert.match(await refusal.textContent(), /give the sheet thickness/);
+  assert.equal(await refusal.locator('button.action', { hasText: /Close the hole/ }).count(), 0, 'capping a flat sheet would enclose nothing');
+  assert.equal(await stat(page, 'file'), before, 'the design on screen stays');
+  await screenshot(page, 'mesh-repair-flat-sheet');
+  assert.deepEqual(page.errors, []);
+  await page.close();
 });

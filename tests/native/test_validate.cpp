@@ -75,6 +75,35 @@ TEST(Validation, HoleIsReportedWithItsLocation) {
   EXPECT_EQ(r.stats.genus, -1);
 }
 
+// A flat sheet (a drawing's outline, a letter traced in 2D) is not offered to be closed, which would enclose nothing:
+// it is told to be a flat sheet that wants thickness.
+TEST(Validation, AFlatSheetIsToldItNeedsThickness) {
+  const int n = 8;
+  TriMesh m;
+  m.V.resize((n + 1) * (n + 1), 3), m.F.resize(2 * n * n, 3);
+  for (int i = 0; i <= n; ++i)
+    for (int j = 0; j <= n; ++j) m.V.row(i * (n + 1) + j) = Eigen::RowVector3d(0.3 * i / n, 0.2 * j / n, 0.05);
+  for (int i = 0, f = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j) {
+      const int a = i * (n + 1) + j;
+      m.F.row(f++) = Eigen::Vector3i(a, a + n + 1, a + n + 2), m.F.row(f++) = Eigen::Vector3i(a, a + n + 2, a + 1);
+    }
+  const ValidationReport flat = validateTarget(m);
+  EXPECT_FALSE(flat.ok);
+  EXPECT_EQ(findIssue(flat, "mesh.open"), nullptr);
+  const MeshIssue* sheet = findIssue(flat, "mesh.flat-sheet");
+  ASSERT_NE(sheet, nullptr);
+  EXPECT_EQ(sheet->severity, "error");
+  EXPECT_NE(sheet->message.find("flat sheet"), std::string::npos) << sheet->message;
+  EXPECT_NE(sheet->message.find("thickness"), std::string::npos) << sheet->message;
+  EXPECT_EQ(flat.stats.boundaryEdges, 4 * n);
+  // Bent out of its plane by a hair more than the flatness allows, it is an open shape with a hole.
+  m.V(0, 2) += 1e-5;
+  const ValidationReport bent = validateTarget(m);
+  EXPECT_NE(findIssue(bent, "mesh.open"), nullptr);
+  EXPECT_EQ(findIssue(bent, "mesh.flat-sheet"), nullptr);
+}
+
 TEST(Validation, NonManifoldEdgeIsAnError) {
   TriMesh m = test::loadShared("sphere.obj");
   // A fin: a third triangle on the edge (F00, F01), to a new vertex.

@@ -2,6 +2,7 @@
 // an undirected edge used once is a boundary, twice a manifold edge, more often a non-manifold edge.
 #include "mesh/validate.hpp"
 
+#include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -263,11 +264,33 @@ class Validator {
       }
     r_.stats.holes = holes;
     const Eigen::Vector3d p = sum[largest] / count[largest];
+    if (flatSheet()) {
+      // Capping a flat sheet's outline would enclose nothing: what it wants is thickness, so no hole is offered to
+      // close.
+      add("mesh.flat-sheet", "error",
+          "The mesh is a flat sheet with no thickness (" +
+              plural(r_.stats.boundaryEdges, "boundary edge", "boundary edges") + " along " +
+              plural(holes, "outline", "outlines") +
+              "): a balloon needs a closed 3D shape to hold air. For a two-piece balloon of this outline, give the "
+              "sheet thickness first (for example 'Solidify' in Blender, or extrude it) and load it again.",
+          r_.stats.boundaryEdges, &p);
+      return;
+    }
     add("mesh.open", "error",
         "The mesh has " + plural(r_.stats.boundaryEdges, "boundary edge", "boundary edges") + " around " +
             plural(holes, "hole", "holes") + ": it must be closed to hold air. The largest hole is " + where(p) +
             ". Fill the holes (for example with 'Fill Holes' in MeshLab or Blender) and load it again.",
         r_.stats.boundaryEdges, &p);
+  }
+
+  // Every vertex within a millionth of the mesh's size of one plane (its best fit): a drawing's flat sheet, not a
+  // shape.
+  bool flatSheet() const {
+    const Eigen::RowVector3d center = m_.V.colwise().mean();
+    const Eigen::MatrixX3d centered = m_.V.rowwise() - center;
+    const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(centered.transpose() * centered);
+    const double diag = (m_.V.colwise().maxCoeff() - m_.V.colwise().minCoeff()).norm();
+    return (centered * principal.eigenvectors().col(0)).cwiseAbs().maxCoeff() <= 1e-6 * diag;
   }
 
   // A vertex is manifold when its triangles form a single fan: corners at the vertex are joined
