@@ -289,7 +289,7 @@ class Validator {
     const Eigen::RowVector3d center = m_.V.colwise().mean();
     const Eigen::MatrixX3d centered = m_.V.rowwise() - center;
     const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(centered.transpose() * centered);
-    const double diag = (m_.V.colwise().maxCoeff() - m_.V.colwise().minCoeff()).norm();
+    const double diag = (r_.stats.bboxMax - r_.stats.bboxMin).norm();
     return (centered * principal.eigenvectors().col(0)).cwiseAbs().maxCoeff() <= 1e-6 * diag;
   }
 

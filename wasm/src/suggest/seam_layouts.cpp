@@ -1098,32 +1098,20 @@ int openSegments(const DesignScene& scene, double spacing, double edgeLength, in
     } else if (problem.code == "segment.too-big-for-seam") {
       // A limb's end or a head on its neck: halved along its length through its tip, two pieces where a section across
       // would leave a tube and an end still too big for its seam (a lion's tail, each of three rounds).
-      if (segment.genus == 0 && segment.loops.size() == 1) {
-        const std::vector<int> path = cutAlong(sg, problem.segment, SegmentationOptions{}.minFlatShare);
-        if (path.size() >= 3) {
-          seams.push_back(makeSeam("a cut along a limb's end", false, controlsAlong(sg, path, spacing, false)));
-          ++added, ++opened.limbEndCuts;
-          continue;
-        }
+      if (const std::vector<int> path = cutAlong(sg, problem.segment, SegmentationOptions{}.minFlatShare);
+          path.size() >= 3) {
+        seams.push_back(makeSeam("a cut along a limb's end", false, controlsAlong(sg, path, spacing, false)));
+        ++added, ++opened.limbEndCuts;
+        continue;
       }
-      Eigen::Vector3d center = Eigen::Vector3d::Zero();
-      Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-      double area = 0;
-      for (int t : segment.triangles) {
-        const Eigen::Vector3d a = cut.V.row(cut.F(t, 0)), b = cut.V.row(cut.F(t, 1)), c = cut.V.row(cut.F(t, 2));
-        const double at = 0.5 * (b - a).cross(c - a).norm();
-        const Eigen::Vector3d m = (a + b + c) / 3;
-        center += at * m, second += at * m * m.transpose(), area += at;
-      }
-      if (!(area > 0)) continue;
-      center /= area;
-      const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(second / area - center * center.transpose());
+      const SegmentSpread spread = segmentSpread(sg, problem.segment);
+      if (!(spread.area > 0)) continue;
       // Across its longest extent first; a cap over two limbs has none there, and gets the planes across the others
       // (around each limb).
       for (int direction = 2; direction >= 0; --direction) {
-        const Eigen::Vector3d normal = eig.eigenvectors().col(direction);
+        const Eigen::Vector3d normal = spread.axes.col(direction);
         int laid = 0;
-        for (const SectionLoop& loop : planeSection(scene.target, normal, normal.dot(center))) {
+        for (const SectionLoop& loop : planeSection(scene.target, normal, normal.dot(spread.center))) {
           const bool inside = std::all_of(loop.begin(), loop.end(), [&](const SectionPoint& p) {
             const std::vector<int>& in = faceSegments[p.at.face];
             return std::find(in.begin(), in.end(), problem.segment) != in.end();

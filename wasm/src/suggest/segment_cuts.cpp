@@ -404,6 +404,23 @@ std::vector<int> cutAcross(const Segmentation& sg, int segment, const Eigen::Vec
   return {};
 }
 
+SegmentSpread segmentSpread(const Segmentation& sg, int segment) {
+  const TriMesh& m = sg.mesh;
+  SegmentSpread out;
+  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
+  for (int t : sg.segments[size_t(segment)].triangles) {
+    const Eigen::Vector3d a = m.V.row(m.F(t, 0)), b = m.V.row(m.F(t, 1)), c = m.V.row(m.F(t, 2));
+    const double at = 0.5 * (b - a).cross(c - a).norm();
+    const Eigen::Vector3d mid = (a + b + c) / 3;
+    out.center += at * mid, second += at * mid * mid.transpose(), out.area += at;
+  }
+  if (!(out.area > 0)) return out;
+  out.center /= out.area;
+  out.axes = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(second / out.area - out.center * out.center.transpose())
+                 .eigenvectors();
+  return out;
+}
+
 std::vector<int> cutAlong(const Segmentation& sg, int segment, double minFlatShare) {
   if (segment < 0 || segment >= int(sg.segments.size())) return {};
   const Segment& s = sg.segments[size_t(segment)];
@@ -423,26 +440,20 @@ std::vector<int> cutAlong(const Segmentation& sg, int segment, double minFlatSha
   // The segment's flattest direction (a curled tail's plane's normal) and each vertex's normal: the cut runs where the
   // surface is seen edge-on from that direction, along the inner and the outer side of the curl, as two mirror pieces
   // of a curled tube are sewn.
+  const SegmentSpread spread = segmentSpread(sg, segment);
+  if (!(spread.area > 0)) return {};
+  const Eigen::Vector3d flattest = spread.axes.col(0);
   std::unordered_map<int, std::vector<int>> around;
   std::unordered_map<int, Eigen::Vector3d> normal;
-  Eigen::Vector3d center = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d second = Eigen::Matrix3d::Zero();
-  double area = 0;
   for (int t : s.triangles) {
     const Eigen::Vector3d a = m.V.row(m.F(t, 0)), b = m.V.row(m.F(t, 1)), c = m.V.row(m.F(t, 2));
-    const Eigen::Vector3d n = (b - a).cross(c - a), mid = (a + b + c) / 3;
-    const double at = 0.5 * n.norm();
-    center += at * mid, second += at * mid * mid.transpose(), area += at;
+    const Eigen::Vector3d n = (b - a).cross(c - a);
     for (int k = 0; k < 3; ++k) {
       const int u = m.F(t, k), v = m.F(t, (k + 1) % 3);
       if (!loopEdges.count(std::minmax(u, v))) around[u].push_back(v), around[v].push_back(u);
       normal.try_emplace(u, Eigen::Vector3d::Zero()).first->second += n;
     }
   }
-  if (!(area > 0)) return {};
-  center /= area;
-  const Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> principal(second / area - center * center.transpose());
-  const Eigen::Vector3d flattest = principal.eigenvectors().col(0);
   const auto facing = [&](int v) { return std::abs(normal.at(v).normalized().dot(flattest)); };
   // Dijkstra from `sources` through inside vertices (a loop vertex is reached, not gone on from), an edge weighing its
   // length, times 1 + kFacing x its ends' mean facing when `edgeOn`: vertex -> (distance, previous).

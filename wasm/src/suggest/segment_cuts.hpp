@@ -31,6 +31,15 @@ std::vector<std::vector<int>> loopsAroundHandles(const Segmentation& segmentatio
 // its outline crosses itself, lies flat as two panels. Cut-mesh vertices from the start; empty where there is none.
 std::vector<int> cutAcross(const Segmentation& segmentation, int segment, const Eigen::Vector3d& near);
 
+// A segment's spread (on Segmentation::mesh): the area-weighted centre of its triangles and its principal axes, the
+// least spread first (the columns of `axes`); area 0 when it has none.
+struct SegmentSpread {
+  Eigen::Vector3d center = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d axes = Eigen::Matrix3d::Identity();
+  double area = 0;
+};
+SegmentSpread segmentSpread(const Segmentation& segmentation, int segment);
+
 // A path through the inside of `segment` (on Segmentation::mesh), a disk, that halves it along its length: from a
 // vertex of its loop through its tip (the inside vertex farthest from the loop) to a loop vertex on the other side, as
 // a pattern maker halves a tail or a trunk into two mirror pieces sewn along it. It keeps to where the surface is seen
