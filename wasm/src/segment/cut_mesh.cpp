@@ -158,6 +158,13 @@ class Cutter {
 };
 
 void Cutter::cutFace(int f) {
+  // Most faces no seam touches: kept as they are, without the frame and lists a cut face needs.
+  if (byFace_[f].empty() && reg_.inFace[f].empty() && reg_.onEdge[topo_.faceEdges(f, 0)].empty() &&
+      reg_.onEdge[topo_.faceEdges(f, 1)].empty() && reg_.onEdge[topo_.faceEdges(f, 2)].empty()) {
+    tris_.push_back({m_.F(f, 0), m_.F(f, 1), m_.F(f, 2)});
+    out_.faceOrigin.push_back(f);
+    return;
+  }
   FaceCut fc = collect(f);
   const double scale = (fc.P[1] - fc.P[0]).norm() + (fc.P[2] - fc.P[1]).norm() + fc.P[2].norm();
   const double eps = 1e-10 * scale;
