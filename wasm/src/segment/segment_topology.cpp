@@ -14,28 +14,23 @@ namespace {
 // segmentation); on an edge with more than two, each later one pairs with the first and the first with the last.
 std::vector<int> twins(const TriMesh& m) {
   const int nh = 3 * m.numTriangles();
-  std::vector<int> start(m.numVertices() + 1, 0), bucket(nh);
-  const auto ends = [&](int h, int& lo, int& hi) {
+  std::vector<int> lower(nh), upper(nh), start(m.numVertices() + 1, 0);
+  for (int h = 0; h < nh; ++h) {
     const int a = m.F(h / 3, h % 3), b = m.F(h / 3, (h % 3 + 1) % 3);
-    lo = std::min(a, b), hi = std::max(a, b);
-  };
-  int lo, hi;
-  for (int h = 0; h < nh; ++h) ends(h, lo, hi), ++start[lo + 1];
+    lower[h] = std::min(a, b), upper[h] = std::max(a, b);
+    ++start[lower[h] + 1];
+  }
   for (int v = 0; v < m.numVertices(); ++v) start[v + 1] += start[v];
-  std::vector<int> fill(start.begin(), start.end() - 1);
-  for (int h = 0; h < nh; ++h) ends(h, lo, hi), bucket[fill[lo]++] = h;  // each bucket in increasing h
+  std::vector<int> bucket(nh), fill(start.begin(), start.end() - 1);
+  for (int h = 0; h < nh; ++h) bucket[fill[lower[h]]++] = h;  // each bucket in increasing h
   std::vector<int> twin(nh, -1);
   for (int v = 0; v < m.numVertices(); ++v)
-    for (int i = start[v]; i < start[v + 1]; ++i) {
-      int hiI, hiJ;
-      ends(bucket[i], lo, hiI);
-      for (int j = start[v]; j < i; ++j) {
-        ends(bucket[j], lo, hiJ);
-        if (hiJ != hiI) continue;
-        twin[bucket[i]] = bucket[j], twin[bucket[j]] = bucket[i];
-        break;  // the first of this edge
-      }
-    }
+    for (int i = start[v]; i < start[v + 1]; ++i)
+      for (int j = start[v]; j < i; ++j)
+        if (upper[bucket[j]] == upper[bucket[i]]) {  // the first of this edge
+          twin[bucket[i]] = bucket[j], twin[bucket[j]] = bucket[i];
+          break;
+        }
   return twin;
 }
 
