@@ -272,3 +272,40 @@ TEST(Objectives, CoverDoesNotPullASmallLoopsLensInward) {
   EXPECT_LT(rms[1], 1.5 * rms[0] + 0.003);              // plain d^2: 13.7 %
   EXPECT_LT(msPerIteration[1], 4 * msPerIteration[0]);  // plain d^2: 12x
 }
+
+// The coarse first phase's weights (weightsAtEdgeLength): the same two pieces built at a quarter of the triangles
+// weigh E_smooth and E_seam against E_target as the design's mesh does. Unscaled, the coarse outline's E_smooth is
+// an order of magnitude more (the phase smoothed outlines instead of following the target), E_seam about twice.
+TEST(Objectives, CoarseWeightsAskOfACoarseMeshWhatTheDesignsMeshAsks) {
+  const Fixture fine = makeFixture("stuffedtoy-front-back.billow.json", 3000);
+  const Fixture coarse = makeFixture("stuffedtoy-front-back.billow.json", 750);
+  ASSERT_TRUE(fine.built.ok() && coarse.built.ok());
+  const double ratio = coarse.built.figures.edgeLength / fine.built.figures.edgeLength;
+  EXPECT_NEAR(ratio, 2, 0.3);
+  const ImlsDistance imls(fine.scene->target);
+  // E_smooth at the flattened outlines; E_seam with every seam vertex 1 mm off its point on the target's seam.
+  const auto terms = [&](const Fixture& f, const OptimizeWeights& w) {
+    const SewnMesh mesh = sewPattern(f.built.pattern);
+    const PatternObjective obj(imls, f.built, mesh, f.weights, w);
+    const Eigen::VectorXd X = packPattern(f.built.pattern);
+    Vertices x = Vertices::Zero(mesh.numVertices, 3);
+    for (const PatternObjective::SeamVertex& s : obj.seamVertices())
+      x.row(s.vertex) = (s.target + Eigen::Vector3d(1e-3, 0, 0)).transpose();
+    ObjectiveTerms shape, pattern;
+    obj.shapeEnergy(x, X, nullptr, nullptr, &shape);
+    obj.patternEnergy(X, nullptr, &pattern);
+    return std::array<double, 2>{pattern.smooth, shape.seam};
+  };
+  const OptimizeWeights w;
+  const std::array<double, 2> atFine = terms(fine, w), unscaled = terms(coarse, w),
+                              scaled = terms(coarse, weightsAtEdgeLength(w, ratio));
+  std::printf(
+      "[figures] stuffed toy front/back, edge length x %.2f: E_smooth coarse / fine %.1f unscaled, %.2f scaled; "
+      "E_seam %.2f, %.2f\n",
+      ratio, unscaled[0] / atFine[0], scaled[0] / atFine[0], unscaled[1] / atFine[1], scaled[1] / atFine[1]);
+  EXPECT_GT(unscaled[0], 6 * atFine[0]);
+  EXPECT_GT(scaled[0], 0.4 * atFine[0]);
+  EXPECT_LT(scaled[0], 2.5 * atFine[0]);
+  EXPECT_GT(unscaled[1], 1.5 * atFine[1]);
+  EXPECT_NEAR(scaled[1] / atFine[1], 1, 0.3);
+}

@@ -10,6 +10,12 @@
 
 namespace billow {
 
+OptimizeWeights weightsAtEdgeLength(OptimizeWeights w, double ratio) {
+  w.seam /= ratio;
+  w.smooth /= std::pow(ratio, 4);
+  return w;
+}
+
 PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern& built, const SewnMesh& mesh,
                                    const std::vector<double>& seamWeights, const OptimizeWeights& weights)
     : imls_(imls), w_(weights), n_(mesh.numVertices), targetCache_(size_t(mesh.numVertices)) {

@@ -62,6 +62,15 @@ struct OptimizeWeights {
   double gap = 1.0;       // E_gap
 };
 
+// The weights on a mesh of `ratio` times the design's edge length that ask of it what `w` asks of the design's mesh.
+// E_smooth and E_seam sum over outline and seam vertices but are divided by the count n of all vertices, while
+// E_target and E_cover are means: against them E_seam grows as the ratio (fewer seam vertices, far fewer in all), and
+// E_smooth as its fourth power (a fair outline's second differences also grow as the edge length squared; across the
+// coarse phase's remeshing fb-spot's and gusset-spot's E_smooth fell 18 x, 2^4.2). Unscaled, the coarse first phase
+// spent its iterations smoothing outlines the fine mesh then meshed anew, and stopped short (fb-spot 1.80 % against
+// the fine phase's 1.46 %; bench/README.md "The coarse first phase").
+OptimizeWeights weightsAtEdgeLength(OptimizeWeights w, double ratio);
+
 struct ObjectiveTerms {
   double target = 0, cover = 0, seam = 0, length = 0, smooth = 0, laplace = 0, quality = 0, gap = 0;
   double total() const { return target + cover + seam + length + smooth + laplace + quality + gap; }

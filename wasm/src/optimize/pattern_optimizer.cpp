@@ -127,7 +127,8 @@ PatternOptimizer::PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, con
       int(built.figures.triangles) >= remeshing.coarseMinTriangles) {
     try {
       const double f = remeshing.coarseFactor;
-      setUp(remeshNear(built, built.pattern.inflated, f * fineEdgeLength_, built.figures.triangles / (f * f)).built);
+      setUp(remeshNear(built, built.pattern.inflated, f * fineEdgeLength_, built.figures.triangles / (f * f)).built,
+            true);
       coarsePhase_ = true, flattened_ = built;
     } catch (const Error&) {  // an outline the coarse edge length cannot mesh: no coarse phase
     }
@@ -136,7 +137,7 @@ PatternOptimizer::PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, con
   timings_.setupMs = elapsedMs();
 }
 
-void PatternOptimizer::setUp(const BuiltPattern& built) {
+void PatternOptimizer::setUp(const BuiltPattern& built, bool coarse) {
   built_ = built;
   pattern_ = built.pattern;
   // Which seam vertices carry a rod is fixed for the phase (a corner is judged by its rest angle, a jump), so E(X)
@@ -150,7 +151,9 @@ void PatternOptimizer::setUp(const BuiltPattern& built) {
   stiffness_.reset();
   rods_ = std::make_shared<const SeamRods>(
       makeSeamRods(mesh_, seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness)));
-  objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, options_.weights);
+  const OptimizeWeights weights =
+      coarse ? weightsAtEdgeLength(options_.weights, built.figures.edgeLength / fineEdgeLength_) : options_.weights;
+  objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, weights);
   X_ = packPattern(pattern_);
   boundaryVertices_.clear();
   for (const BuiltPanel& bp : built.panels) boundaryVertices_.push_back(bp.boundaryVertices);
@@ -233,7 +236,7 @@ bool PatternOptimizer::remesh() {
   int newton = 0;
   if (!sewable || !solveEquilibrium(X_, x_, x, &newton)) {  // back to the old mesh
     current.pattern.inflated = inflated;
-    setUp(current);
+    setUp(current, coarsePhase_);
     X_ = oldX, x_ = oldx;
     E_ = settledEnergy(X_, x_);
     variableGradient(X_, x_, g_);

@@ -276,7 +276,8 @@ class PatternOptimizer {
  private:
   // Everything that follows from the (flattened or remeshed) pattern: mesh, objective, variables, the
   // preconditioner, the start x (its `inflated`); the L-BFGS memory is cleared.
-  void setUp(const BuiltPattern& built);
+  // The objective's weights follow the mesh's edge length where it is not the design's (the coarse phase).
+  void setUp(const BuiltPattern& built, bool coarse = false);
   // With imls, the target distance of another run (its kernels are built once per target); else built from
   // target, within this run's time.
   PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
