@@ -62,13 +62,11 @@ struct OptimizeWeights {
   double gap = 1.0;       // E_gap
 };
 
-// The weights on a mesh of `ratio` times the design's edge length that ask of it what `w` asks of the design's mesh.
-// E_smooth and E_seam sum over outline and seam vertices but are divided by the count n of all vertices, while
-// E_target and E_cover are means: against them E_seam grows as the ratio (fewer seam vertices, far fewer in all), and
-// E_smooth as its fourth power (a fair outline's second differences also grow as the edge length squared; across the
-// coarse phase's remeshing fb-spot's and gusset-spot's E_smooth fell 18 x, 2^4.2). Unscaled, the coarse first phase
-// spent its iterations smoothing outlines the fine mesh then meshed anew, and stopped short (fb-spot 1.80 % against
-// the fine phase's 1.46 %; bench/README.md "The coarse first phase").
+// The weights that ask of a mesh of `ratio` times the design's edge length what `w` asks of the design's mesh (the
+// coarse first phase): E_smooth and E_seam sum over outline and seam vertices divided by the count of all vertices,
+// where E_target and E_cover are means, so against them E_seam grows as the ratio and E_smooth as its fourth power (a
+// fair outline's second differences also grow as the edge length squared). Unscaled, the coarse phase smoothed
+// outlines the fine mesh then meshed anew instead of following the target (bench/README.md "The coarse first phase").
 OptimizeWeights weightsAtEdgeLength(OptimizeWeights w, double ratio);
 
 struct ObjectiveTerms {
