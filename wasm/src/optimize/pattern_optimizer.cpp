@@ -42,6 +42,12 @@ constexpr double kPredictionReach = 1000;
 constexpr double kGaussNewtonStall = 1e-4;
 // OptimizeRemeshing::stallIterations: a mesh on which E fell by less than this (relative) over them is stalled.
 constexpr double kStallDecrease = 1e-3;
+// A cut whose objective on its new mesh exceeds its own mesh's by this factor snapped (settleCutPanels: fb-spot's
+// snapped cuts 1.34-1.70, those that keep their shape 0.99-1.17 on the bench's designs); then the iterates this many
+// back are tried, the last 33 kept.
+constexpr double kCutSnapRatio = 1.25;
+constexpr int kCutBack[] = {4, 8, 16, 32};
+constexpr int kCheckpoints = 33;
 }  // namespace
 
 const char* toString(OptimizeState s) {
@@ -186,6 +192,7 @@ void PatternOptimizer::setUp(const BuiltPattern& built, bool coarse) {
   dampingScale_ = 0, gaussNewtonStalled_ = false;
   stalled_ = 0;
   best_ = {};
+  checkpoints_.clear();
 }
 
 void PatternOptimizer::startInterior() {
@@ -205,7 +212,7 @@ bool PatternOptimizer::projectStart() {
 
 std::vector<Vertices> PatternOptimizer::panelInflated() const { return panelPositions(mesh_, x_); }
 
-bool PatternOptimizer::remesh() {
+bool PatternOptimizer::remesh(bool recordIt) {
   const double t0 = nowMs();
   BuiltPattern current = built_;
   current.pattern = pattern_;
@@ -243,16 +250,17 @@ bool PatternOptimizer::remesh() {
     timings_.remeshMs += nowMs() - t0;
     return false;
   }
-  takeNewMesh(std::move(x), newton, t0);
+  takeNewMesh(std::move(x), newton, t0, recordIt);
   return true;
 }
 
-void PatternOptimizer::takeNewMesh(Vertices x, int newton, double t0) {
+void PatternOptimizer::takeNewMesh(Vertices x, int newton, double t0, bool recordIt) {
   x_ = std::move(x);
   E_ = settledEnergy(X_, x_);
   variableGradient(X_, x_, g_);
   ++timings_.remeshings;
   timings_.remeshMs += nowMs() - t0;
+  if (!recordIt) return;
   record(0, newton, false);
   history_.back().remeshed = true;
 }
@@ -521,6 +529,10 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
   history_.push_back(r);
   if (options_.keepShapes) shapes_.push_back(x_);
   if (!projected && r.objective < best_.E) best_ = {r.objective, X_, x_, g_};
+  if (!projected && !coarsePhase_ && !sliding_) {
+    checkpoints_.push_back({X_, x_, r.objective});
+    if (int(checkpoints_.size()) > kCheckpoints) checkpoints_.pop_front();
+  }
 }
 
 const Eigen::VectorXd* PatternOptimizer::targetDistances() const {
@@ -979,8 +991,69 @@ void PatternOptimizer::slideWindow() {
 void PatternOptimizer::settleCutPanels() {
   if (sliding_ || coarsePhase_ || !options_.remeshing.cutPanels) return;
   takeCutShape();  // the iterate to cut: the best one, seam lengths exact
-  // Where the outlines do not mesh or settle anew, the run ends on its own mesh.
-  if (remesh()) history_.back().cutPanels = true;
+  const double ownE = E_;
+  BuiltPattern own = built_;
+  own.pattern = pattern_;
+  own.pattern.inflated = panelInflated();
+  const std::deque<Checkpoint> checkpoints = std::move(checkpoints_);
+  if (!remesh()) return;  // where the outlines do not mesh or settle anew, the run ends on its own mesh
+  history_.back().cutPanels = true;
+  if (E_ <= kCutSnapRatio * ownE) return;
+  // The cut panels snapped into another equilibrium (fb-spot: the head across the thickness, E +35-70 %): the last
+  // iterates sit near the fold where the optimizer's mesh keeps its equilibrium and a new mesh does not. An earlier
+  // iterate, farther from the fold, may cut without snapping: the designer gets the cut panels of least E.
+  struct Cut {
+    BuiltPattern built;
+    Eigen::VectorXd X;
+    Vertices x;
+    double E;
+    const Checkpoint* from;  // null: the last iterate's
+  };
+  auto current = [&](const Checkpoint* from) {
+    Cut c{built_, X_, x_, E_, from};
+    c.built.pattern = pattern_;
+    return c;
+  };
+  Cut best = current(nullptr);
+  // The earlier iterates, of least objective first; the first whose cut keeps its shape ends the search.
+  std::vector<const Checkpoint*> earlier;
+  for (int back : kCutBack)
+    if (back < int(checkpoints.size())) earlier.push_back(&checkpoints[checkpoints.size() - 1 - back]);
+  if (earlier.empty()) return;
+  std::sort(earlier.begin(), earlier.end(), [](const Checkpoint* a, const Checkpoint* b) { return a->E < b->E; });
+  for (const Checkpoint* c : earlier) {
+    BuiltPattern panels = own;
+    unpackPattern(c->X, panels.pattern);
+    setUp(panels);
+    std::optional<CutShape> cut = cutShape(c->X, c->x);
+    if (!cut) continue;
+    X_ = std::move(cut->X), x_ = std::move(cut->x);
+    unpackPattern(X_, pattern_);
+    if (!remesh(false)) continue;
+    if (E_ < best.E) best = current(c);
+    if (E_ <= kCutSnapRatio * c->E) break;
+  }
+  if (best.from) {  // the chosen iterate, cut, on the optimizer's mesh: what the panes compare the cut panels with
+    BuiltPattern panels = own;
+    unpackPattern(best.from->X, panels.pattern);
+    setUp(panels);
+    if (std::optional<CutShape> cut = cutShape(best.from->X, best.from->x)) {
+      X_ = std::move(cut->X), x_ = std::move(cut->x);
+      unpackPattern(X_, pattern_);
+      E_ = settledEnergy(X_, x_);
+      record(0, cut->newton, true);
+      history_.back().restored = true;
+    }
+  }
+  setUp(best.built);
+  X_ = std::move(best.X), x_ = std::move(best.x);
+  E_ = settledEnergy(X_, x_);
+  variableGradient(X_, x_, g_);
+  ++timings_.remeshings;  // the app fetches the mesh anew by this count
+  if (best.from) {
+    record(0, 0, false);
+    history_.back().remeshed = history_.back().cutPanels = true;
+  }
 }
 
 OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {

@@ -119,7 +119,8 @@ struct OptimizeRemeshing {
   int coarseWindow = 10;
   // Held seams: where the run stops, its outlines are meshed anew at the design's triangle count, as a maker's cut
   // panels are, and settled there, so the shape and distance the designer gets are the cut panels' (the optimizer's
-  // own mesh can hold an equilibrium they do not have: a gusseted penguin's flippers stood out once cut).
+  // own mesh can hold an equilibrium they do not have: a gusseted penguin's flippers stood out once cut). Where the
+  // last iterate's cut panels snap into another shape, an earlier iterate's are tried (settleCutPanels).
   bool cutPanels = true;
 };
 
@@ -201,10 +202,11 @@ struct OptimizeRecord {
   // edge of a shape it can hold (a fold of its equilibria), which longer steps cross.
   bool snapLimited = false;
   // The optimizer went back to its best iterate of this mesh at the end (not an L-BFGS step): resettlings had
-  // left it at a worse equilibrium.
+  // left it at a worse equilibrium; or, before a second cut, to the earlier iterate whose cut panels did not snap.
   bool restored = false;
   // The run's end: its outlines meshed anew as they are cut and settled (OptimizeRemeshing::cutPanels); the record
-  // before is the run's own mesh's last.
+  // before is the run's own mesh's last (of the iterate cut). A run has two where the first cut snapped and an
+  // earlier iterate cut closer.
   bool cutPanels = false;
   // The distance to the target both ways as one figure: the RMS of the two ways' RMS.
   double bothWaysDistance() const {
@@ -303,17 +305,19 @@ class PatternOptimizer {
   bool projectStart();
   // Meshes the panels again from their current outlines at the design's size (its edge length, corrected to about
   // its triangle count, since at one edge length the remesher gives 0.7-1.45 x the pattern builder's triangles)
-  // and solves the new equilibrium; false (the old mesh kept) when that fails.
-  bool remesh();
+  // and solves the new equilibrium; false (the old mesh kept) when that fails. recordIt: the new iterate goes into the
+  // history (not for a trial cut of settleCutPanels).
+  bool remesh(bool recordIt = true);
   // The new mesh's equilibrium x (newton iterations, the remeshing started at t0 ms) as the current iterate, recorded
   // as a remeshing.
-  void takeNewMesh(Vertices x, int newton, double t0);
+  void takeNewMesh(Vertices x, int newton, double t0, bool recordIt = true);
   // Leaves the coarse first phase for the flattened panels at the design's edge length (setUp, projected).
   void setUpFlattened();
   // Ends the coarse first phase (OptimizeRemeshing::coarseFactor): the outlines meshed at the design's triangle
   // count, else the flattened panels started again; false (the run failed) when neither settles.
   bool leaveCoarsePhase();
-  // OptimizeRemeshing::cutPanels at the run's end (finish): the cut panels settled as the current iterate.
+  // OptimizeRemeshing::cutPanels at the run's end (finish): the cut panels settled as the current iterate; where they
+  // snap into another equilibrium, those of the earlier iterate (checkpoints_) whose cut comes closest.
   void settleCutPanels();
   // Per panel, the current inflated position x of each panel vertex (what remeshPattern carries over).
   std::vector<Vertices> panelInflated() const;
@@ -404,6 +408,14 @@ class PatternOptimizer {
     Vertices x;
     Eigen::VectorXd g;
   } best_;
+  // The last accepted iterates on this mesh (panels, shape, objective), newest last: where the final one's cut
+  // panels snap into another equilibrium, an earlier one is cut instead (settleCutPanels).
+  struct Checkpoint {
+    Eigen::VectorXd X;
+    Vertices x;
+    double E = INFINITY;
+  };
+  std::deque<Checkpoint> checkpoints_;
   std::vector<Eigen::VectorXd> S_, Y_;  // L-BFGS pairs
   std::vector<OptimizeRecord> history_;
   std::vector<Vertices> shapes_;
