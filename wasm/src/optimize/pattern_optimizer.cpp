@@ -1007,14 +1007,14 @@ void PatternOptimizer::settleCutPanels() {
     Eigen::VectorXd X;
     Vertices x;
     double E;
-    const Checkpoint* from;  // null: the last iterate's
+    std::optional<CutShape> own;  // the earlier iterate cut on the optimizer's mesh; none: the last iterate's
   };
-  auto current = [&](const Checkpoint* from) {
-    Cut c{built_, X_, x_, E_, from};
+  auto current = [&](std::optional<CutShape> own) {
+    Cut c{built_, X_, x_, E_, std::move(own)};
     c.built.pattern = pattern_;
     return c;
   };
-  Cut best = current(nullptr);
+  Cut best = current(std::nullopt);
   // The earlier iterates, of least objective first; the first whose cut keeps its shape ends the search.
   std::vector<const Checkpoint*> earlier;
   for (int back : kCutBack)
@@ -1027,30 +1027,27 @@ void PatternOptimizer::settleCutPanels() {
     setUp(panels);
     std::optional<CutShape> cut = cutShape(c->X, c->x);
     if (!cut) continue;
-    X_ = std::move(cut->X), x_ = std::move(cut->x);
+    X_ = cut->X, x_ = cut->x;
     unpackPattern(X_, pattern_);
     if (!remesh(false)) continue;
-    if (E_ < best.E) best = current(c);
+    if (E_ < best.E) best = current(std::move(cut));
     if (E_ <= kCutSnapRatio * c->E) break;
   }
-  if (best.from) {  // the chosen iterate, cut, on the optimizer's mesh: what the panes compare the cut panels with
+  if (best.own) {  // the chosen iterate, cut, on the optimizer's mesh: what the panes compare the cut panels with
     BuiltPattern panels = own;
-    unpackPattern(best.from->X, panels.pattern);
+    unpackPattern(best.own->X, panels.pattern);
     setUp(panels);
-    if (std::optional<CutShape> cut = cutShape(best.from->X, best.from->x)) {
-      X_ = std::move(cut->X), x_ = std::move(cut->x);
-      unpackPattern(X_, pattern_);
-      E_ = settledEnergy(X_, x_);
-      record(0, cut->newton, true);
-      history_.back().restored = true;
-    }
+    X_ = std::move(best.own->X), x_ = std::move(best.own->x);
+    E_ = settledEnergy(X_, x_);
+    record(0, best.own->newton, true);
+    history_.back().restored = true;
   }
   setUp(best.built);
   X_ = std::move(best.X), x_ = std::move(best.x);
   E_ = settledEnergy(X_, x_);
   variableGradient(X_, x_, g_);
   ++timings_.remeshings;  // the app fetches the mesh anew by this count
-  if (best.from) {
+  if (best.own) {
     record(0, 0, false);
     history_.back().remeshed = history_.back().cutPanels = true;
   }
