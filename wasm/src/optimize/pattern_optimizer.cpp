@@ -1015,6 +1015,11 @@ void PatternOptimizer::settleCutPanels() {
     return c;
   };
   Cut best = current(std::nullopt);
+  auto setUpOwn = [&](const Eigen::VectorXd& X) {  // the optimizer's mesh with panels X
+    BuiltPattern panels = own;
+    unpackPattern(X, panels.pattern);
+    setUp(panels);
+  };
   // The earlier iterates, of least objective first; the first whose cut keeps its shape ends the search.
   std::vector<const Checkpoint*> earlier;
   for (int back : kCutBack)
@@ -1022,9 +1027,7 @@ void PatternOptimizer::settleCutPanels() {
   if (earlier.empty()) return;
   std::sort(earlier.begin(), earlier.end(), [](const Checkpoint* a, const Checkpoint* b) { return a->E < b->E; });
   for (const Checkpoint* c : earlier) {
-    BuiltPattern panels = own;
-    unpackPattern(c->X, panels.pattern);
-    setUp(panels);
+    setUpOwn(c->X);
     std::optional<CutShape> cut = cutShape(c->X, c->x);
     if (!cut) continue;
     X_ = cut->X, x_ = cut->x;
@@ -1034,9 +1037,7 @@ void PatternOptimizer::settleCutPanels() {
     if (E_ <= kCutSnapRatio * c->E) break;
   }
   if (best.own) {  // the chosen iterate, cut, on the optimizer's mesh: what the panes compare the cut panels with
-    BuiltPattern panels = own;
-    unpackPattern(best.own->X, panels.pattern);
-    setUp(panels);
+    setUpOwn(best.own->X);
     X_ = std::move(best.own->X), x_ = std::move(best.own->x);
     E_ = settledEnergy(X_, x_);
     record(0, best.own->newton, true);
