@@ -34,6 +34,14 @@ Density tautDensity(const Eigen::Vector3d& c, double kappa) {
   return d;
 }
 
+// soft's value alone, the same arithmetic.
+double softValue(double u, double band) {
+  if (u <= -band) return 0;
+  if (u >= band) return u;
+  const double s = u / band, s2 = s * s;
+  return band * (15.0 / 16.0 * (s2 / 2 - s2 * s2 / 6 + s2 * s2 * s2 / 30) + s / 2 + 5.0 / 32.0);
+}
+
 struct Eigenvalues {
   double l1, l2, r;
 };
@@ -64,6 +72,23 @@ Density relaxedDensity(const Eigen::Vector3d& c, double kappa, double band) {
   const Dual2 l2s = t + soft(l2 - t, band);         // l2* = max(l2, t), smoothed
   const Dual2 psi = kappa * (l1s + l2s + detail::inverse(l1s * l2s) + (-3.0));
   return {psi.v, psi.g, psi.h};
+}
+
+double relaxedEnergyDensity(const Eigen::Vector3d& c, double kappa, double band) {
+  // relaxedDensity's branches and operations in its order, on values alone, so the two agree to the bit.
+  const Eigenvalues e = eigenvaluesOf(c);
+  if (e.l1 <= 1 - band) return 0;
+  const bool taut = e.l1 >= 1 + band && e.l2 - 1 / std::sqrt(e.l1) >= band;
+  const auto tautPsi = [&] { return kappa * (c[0] + c[1] + 1 / (c[0] * c[1] - c[2] * c[2]) - 3); };
+  if (taut) return tautPsi();
+  if (e.r < 1e-12) return e.l1 >= 1 ? tautPsi() : 0;
+  const double m = 0.5 * (c[0] + c[1]), a = 0.5 * (c[0] - c[1]);
+  const double r = std::sqrt(a * a + c[2] * c[2]);
+  const double l1 = m + r, l2 = m - r;
+  const double l1s = softValue(l1 + (-1.0), band) + 1.0;
+  const double t = 1.0 / std::sqrt(l1s);
+  const double l2s = t + softValue(l2 - t, band);
+  return kappa * (l1s + l2s + 1.0 / (l1s * l2s) + (-3.0));
 }
 
 ElementRest makeElementRest(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1, const Eigen::Vector2d& X2) {
@@ -141,7 +166,7 @@ double membraneElementEnergy(const ElementRest& rest, const Eigen::Vector3d& x0,
   const Eigen::Vector3d c = cauchyGreen(deformationGradient(rest, x0, x1, x2));
   const Eigenvalues e = eigenvaluesOf(c);
   if (e.l1 <= 1 - material.band) return 0;
-  return material.thickness * rest.area * relaxedDensity(c, material.kappa(), material.band).psi;
+  return material.thickness * rest.area * relaxedEnergyDensity(c, material.kappa(), material.band);
 }
 
 double membraneElement(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,

@@ -38,6 +38,8 @@ struct Density {
   Eigen::Matrix3d hess = Eigen::Matrix3d::Zero();
 };
 Density relaxedDensity(const Eigen::Vector3d& c, double kappa, double band);
+// relaxedDensity(c, kappa, band).psi, without the derivatives (the line search's energies).
+double relaxedEnergyDensity(const Eigen::Vector3d& c, double kappa, double band);
 
 // Rest data of one triangle: Dm^-1 (Dm = [X1-X0, X2-X0]) and rest area A_e.
 struct ElementRest {
