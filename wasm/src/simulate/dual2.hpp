@@ -47,6 +47,10 @@ inline Dual2 inverse(const Dual2& a) {
   const double i = 1.0 / a.v;
   return apply(a, i, -i * i, 2 * i * i * i);
 }
+// The same on plain values, so one formula serves both (membrane_energy.cpp).
+inline double sqrt(double a) { return std::sqrt(a); }
+inline double inverse(double a) { return 1.0 / a; }
+inline double inverseSqrt(double a) { return 1.0 / std::sqrt(a); }
 inline Dual2 inverseSqrt(const Dual2& a) {
   const double i = 1.0 / std::sqrt(a.v);
   return apply(a, i, -0.5 * i / a.v, 0.75 * i / (a.v * a.v));

@@ -11,35 +11,49 @@ namespace {
 using detail::Dual2;
 
 // C2 soft version of max(u, 0) over [-band, band]: soft'' = 15/(16 band) (1 - s^2)^2, s = u / band.
+double soft(double u, double band) {
+  if (u <= -band) return 0;
+  if (u >= band) return u;
+  const double s = u / band, s2 = s * s;
+  return band * (15.0 / 16.0 * (s2 / 2 - s2 * s2 / 6 + s2 * s2 * s2 / 30) + s / 2 + 5.0 / 32.0);
+}
 Dual2 soft(const Dual2& u, double band) {
   if (u.v <= -band) return Dual2::constant(0);
   if (u.v >= band) return u;
   const double s = u.v / band, s2 = s * s;
-  const double f = band * (15.0 / 16.0 * (s2 / 2 - s2 * s2 / 6 + s2 * s2 * s2 / 30) + s / 2 + 5.0 / 32.0);
   const double f1 = 15.0 / 16.0 * (s - 2 * s * s2 / 3 + s * s2 * s2 / 5) + 0.5;
   const double f2 = 15.0 / (16.0 * band) * (1 - s2) * (1 - s2);
-  return detail::apply(u, f, f1, f2);
+  return detail::apply(u, soft(u.v, band), f1, f2);
 }
 
 // Taut regime, Eq. 3 in invariants: psi = kappa (tr C + 1/det C - 3). No eigen-decomposition.
+double tautPsi(const Eigen::Vector3d& c, double kappa) {
+  return kappa * (c[0] + c[1] + 1 / (c[0] * c[1] - c[2] * c[2]) - 3);
+}
 Density tautDensity(const Eigen::Vector3d& c, double kappa) {
   const double det = c[0] * c[1] - c[2] * c[2];
   const Eigen::Vector3d dDet(c[1], c[0], -2 * c[2]);
   Eigen::Matrix3d hDet;
   hDet << 0, 1, 0, 1, 0, 0, 0, 0, -2;
   Density d;
-  d.psi = kappa * (c[0] + c[1] + 1 / det - 3);
+  d.psi = tautPsi(c, kappa);
   d.grad = kappa * (Eigen::Vector3d(1, 1, 0) - dDet / (det * det));
   d.hess = kappa * (2 * dDet * dDet.transpose() / (det * det * det) - hDet / (det * det));
   return d;
 }
 
-// soft's value alone, the same arithmetic.
-double softValue(double u, double band) {
-  if (u <= -band) return 0;
-  if (u >= band) return u;
-  const double s = u / band, s2 = s * s;
-  return band * (15.0 / 16.0 * (s2 / 2 - s2 * s2 / 6 + s2 * s2 * s2 / 30) + s / 2 + 5.0 / 32.0);
+// Bands and the wrinkled regime: psi(l1*, l2*) through the eigenvalues (distinct here, r > 0). On values (the line
+// search's energies) or on dual numbers (the Newton step's derivatives): the same operations, so the same values.
+template <class T>
+T smoothedPsi(const T& c11, const T& c22, const T& c12, double kappa, double band) {
+  using detail::inverse, detail::inverseSqrt, detail::sqrt;
+  const T m = 0.5 * (c11 + c22), a = 0.5 * (c11 - c22);
+  const T r = sqrt(a * a + c12 * c12);
+  const T l1 = m + r, l2 = m - r;
+  const T l1s = soft(l1 + (-1.0), band) + 1.0;  // l1* = max(l1, 1), smoothed
+  const T t = inverseSqrt(l1s);                 // Eq. 5: energetic minimum of l2
+  const T l2s = t + soft(l2 - t, band);         // l2* = max(l2, t), smoothed
+  return kappa * (l1s + l2s + inverse(l1s * l2s) + (-3.0));
 }
 
 struct Eigenvalues {
@@ -51,44 +65,43 @@ Eigenvalues eigenvaluesOf(const Eigen::Vector3d& c) {
   return {m + r, m - r, r};
 }
 
+// Which form psi~ takes at C (Eq. 4, with our bands).
+enum class Branch { Slack, Taut, Smoothed };
+Branch branchOf(const Eigen::Vector3d& c, double band) {
+  const Eigenvalues e = eigenvaluesOf(c);
+  if (e.l1 <= 1 - band) return Branch::Slack;
+  if (e.l1 >= 1 + band && e.l2 - 1 / std::sqrt(e.l1) >= band) return Branch::Taut;
+  // Isotropic C inside a band: the eigenvalue map has a kink here; fall back to unsmoothed Eq. 4.
+  if (e.r < 1e-12) return e.l1 >= 1 ? Branch::Taut : Branch::Slack;
+  return Branch::Smoothed;
+}
+
 }  // namespace
 
 Density relaxedDensity(const Eigen::Vector3d& c, double kappa, double band) {
-  const Eigenvalues e = eigenvaluesOf(c);
-  if (e.l1 <= 1 - band) return {};  // slack: Eq. 4, first case
-  const bool taut = e.l1 >= 1 + band && e.l2 - 1 / std::sqrt(e.l1) >= band;
-  if (taut) return tautDensity(c, kappa);
-  if (e.r < 1e-12) {
-    // Isotropic C inside a band: the eigenvalue map has a kink here; fall back to unsmoothed Eq. 4.
-    return e.l1 >= 1 ? tautDensity(c, kappa) : Density{};
+  switch (branchOf(c, band)) {
+    case Branch::Slack:
+      return {};
+    case Branch::Taut:
+      return tautDensity(c, kappa);
+    case Branch::Smoothed:
+      break;
   }
-  // Bands and the wrinkled regime: psi(l1*, l2*) through the eigenvalues (distinct here, r > 0).
-  const Dual2 c11 = Dual2::variable(c[0], 0), c22 = Dual2::variable(c[1], 1), c12 = Dual2::variable(c[2], 2);
-  const Dual2 m = 0.5 * (c11 + c22), a = 0.5 * (c11 - c22);
-  const Dual2 r = detail::sqrt(a * a + c12 * c12);
-  const Dual2 l1 = m + r, l2 = m - r;
-  const Dual2 l1s = soft(l1 + (-1.0), band) + 1.0;  // l1* = max(l1, 1), smoothed
-  const Dual2 t = detail::inverseSqrt(l1s);         // Eq. 5: energetic minimum of l2
-  const Dual2 l2s = t + soft(l2 - t, band);         // l2* = max(l2, t), smoothed
-  const Dual2 psi = kappa * (l1s + l2s + detail::inverse(l1s * l2s) + (-3.0));
+  const Dual2 psi =
+      smoothedPsi(Dual2::variable(c[0], 0), Dual2::variable(c[1], 1), Dual2::variable(c[2], 2), kappa, band);
   return {psi.v, psi.g, psi.h};
 }
 
 double relaxedEnergyDensity(const Eigen::Vector3d& c, double kappa, double band) {
-  // relaxedDensity's branches and operations in its order, on values alone, so the two agree to the bit.
-  const Eigenvalues e = eigenvaluesOf(c);
-  if (e.l1 <= 1 - band) return 0;
-  const bool taut = e.l1 >= 1 + band && e.l2 - 1 / std::sqrt(e.l1) >= band;
-  const auto tautPsi = [&] { return kappa * (c[0] + c[1] + 1 / (c[0] * c[1] - c[2] * c[2]) - 3); };
-  if (taut) return tautPsi();
-  if (e.r < 1e-12) return e.l1 >= 1 ? tautPsi() : 0;
-  const double m = 0.5 * (c[0] + c[1]), a = 0.5 * (c[0] - c[1]);
-  const double r = std::sqrt(a * a + c[2] * c[2]);
-  const double l1 = m + r, l2 = m - r;
-  const double l1s = softValue(l1 + (-1.0), band) + 1.0;
-  const double t = 1.0 / std::sqrt(l1s);
-  const double l2s = t + softValue(l2 - t, band);
-  return kappa * (l1s + l2s + 1.0 / (l1s * l2s) + (-3.0));
+  switch (branchOf(c, band)) {
+    case Branch::Slack:
+      return 0;
+    case Branch::Taut:
+      return tautPsi(c, kappa);
+    case Branch::Smoothed:
+      break;
+  }
+  return smoothedPsi(c[0], c[1], c[2], kappa, band);
 }
 
 ElementRest makeElementRest(const Eigen::Vector2d& X0, const Eigen::Vector2d& X1, const Eigen::Vector2d& X2) {
@@ -164,8 +177,6 @@ void hessianParts(const Density& d, const ElementOptions& options, Eigen::Matrix
 double membraneElementEnergy(const ElementRest& rest, const Eigen::Vector3d& x0, const Eigen::Vector3d& x1,
                              const Eigen::Vector3d& x2, const MembraneMaterial& material) {
   const Eigen::Vector3d c = cauchyGreen(deformationGradient(rest, x0, x1, x2));
-  const Eigenvalues e = eigenvaluesOf(c);
-  if (e.l1 <= 1 - material.band) return 0;
   return material.thickness * rest.area * relaxedEnergyDensity(c, material.kappa(), material.band);
 }
 
