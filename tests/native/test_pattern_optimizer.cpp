@@ -73,6 +73,46 @@ TEST(PatternOptimizer, TargetDistancesAreThoseOfTheCurrentShape) {
   }
 }
 
+// On a target with more than twice as many vertices as the balloon's outer surface, a record during the run
+// measures the target at E_cover's sample of its vertices (the whole target took a quarter of a coarse run on a
+// 94k-vertex scan): close to the whole measure, and the app then measures the whole itself. The figures a run keeps,
+// its last record and its own mesh's last before the cut panels (the app compares the two), measure every vertex.
+TEST(PatternOptimizer, AFineTargetIsSampledDuringARunAndMeasuredWholeWhereItsFiguresAreKept) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 200);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o;
+  o.stopping.maxIterations = 6;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  const TriMesh& target = opt.objective().imls().target();
+  const double D = opt.objective().modelSize();
+  ASSERT_LT(opt.objective().coverVertices().size(), size_t(target.numVertices())) << "a target finer than the balloon";
+  int sampled = 0;
+  while (opt.step(1) == OptimizeState::Running) {
+    const OptimizeRecord& r = opt.history().back();
+    if (!r.targetSampled) continue;
+    ++sampled;
+    EXPECT_EQ(opt.targetDistances(), nullptr) << "no whole field to stream";
+    const TargetCoverage whole = targetCoverage(target, opt.inflated(), outerTriangles(opt.mesh()), D);
+    EXPECT_NEAR(r.targetDistanceRms, whole.summary.rms, 0.15 * whole.summary.rms) << "iteration " << r.iteration;
+    EXPECT_LE(r.targetDistanceMax, whole.summary.max + 1e-15);
+  }
+  EXPECT_GE(sampled, 3);
+  ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+  const auto& h = opt.history();
+  const OptimizeRecord& last = h.back();
+  EXPECT_FALSE(last.targetSampled);
+  const TargetCoverage whole = targetCoverage(target, opt.inflated(), outerTriangles(opt.mesh()), D);
+  EXPECT_EQ(last.targetDistanceRms, whole.summary.rms);
+  ASSERT_NE(opt.targetDistances(), nullptr);
+  EXPECT_EQ(*opt.targetDistances(), whole.distances);
+  const auto cut = std::find_if(h.rbegin(), h.rend(), [](const OptimizeRecord& q) { return q.cutPanels; });
+  ASSERT_NE(cut, h.rend()) << "the run ends on its cut panels";
+  ASSERT_NE(std::next(cut), h.rend());
+  EXPECT_FALSE(std::next(cut)->targetSampled) << "the own mesh's last figures, which the cut panels' are compared with";
+  for (const OptimizeRecord& q : h)  // the last iterate's, recorded before the run ended, too
+    if (q.iteration == last.iteration) EXPECT_FALSE(q.targetSampled);
+}
+
 // A step whose equilibrium is predicted to move the balloon far beyond the last steps' is shortened before it is
 // tried (OptimizeSearch::shapeStepGrowth, 5 by default): such trials settle higher about half the time, after
 // many Newton iterations. Held to twice here; without the limit some accepted step grows more than that.

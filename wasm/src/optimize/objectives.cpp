@@ -58,8 +58,11 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
   double sampled = 0;
   for (int v = 0; v < target.numVertices(); v += int(stride)) coverVertex_.push_back(v), sampled += lumped[v];
   coverWeight_.resize(long(coverVertex_.size()));
-  for (size_t k = 0; k < coverVertex_.size(); ++k)
+  coverArea_.resize(long(coverVertex_.size()));
+  for (size_t k = 0; k < coverVertex_.size(); ++k) {
     coverWeight_[long(k)] = sampled > 0 ? w_.cover * norm_ * double(used) * lumped[coverVertex_[k]] / sampled : 0;
+    coverArea_[long(k)] = lumped[coverVertex_[k]];
+  }
   coverTau2_ = (w_.coverReach * D_) * (w_.coverReach * D_);
   std::vector<std::vector<int>> at(n_);
   for (size_t t = 0; t < outer_.size(); ++t)

@@ -141,7 +141,11 @@ class PatternObjective {
   // E_target's weights of d(x_i)^2 (#V, include w_t / (n D^2)) in pattern X; zero off the outer surface.
   Eigen::VectorXd targetWeights(const Eigen::VectorXd& X) const;
   const Eigen::VectorXd& targetWeights() const { return targetWeight_; }  // in the flattened pattern
-  double modelSize() const { return D_; }                                 // bounding-box diagonal [m]
+  // E_cover's sample of the target's vertices (all of them unless the target has more than twice as many as the
+  // outer surface) and their lumped areas [m^2].
+  const std::vector<int>& coverVertices() const { return coverVertex_; }
+  const Eigen::VectorXd& coverAreas() const { return coverArea_; }
+  double modelSize() const { return D_; }  // bounding-box diagonal [m]
   double meanEdgeLength() const { return edge_; }
   int numVertices() const { return n_; }
 
@@ -183,6 +187,7 @@ class PatternObjective {
   // outer triangles around each outer triangle (sharing a vertex) for the walk; each sample's tracked triangle.
   std::vector<int> coverVertex_;
   Eigen::VectorXd coverWeight_;
+  Eigen::VectorXd coverArea_;  // each sample's lumped area on the target [m^2]
   std::vector<int> aroundStart_, around_;
   mutable std::vector<int> coverTriangle_;
   mutable std::vector<ClosestFaceCache> targetCache_;  // per simulation vertex, for E_target's fallback

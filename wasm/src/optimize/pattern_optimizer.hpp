@@ -186,6 +186,9 @@ struct OptimizeRecord {
   double distanceRms = 0, distanceMax = 0;  // closest-point distance of outer vertices / bbox diagonal
   // The other way: of the target's vertices to the outer surface (targetCoverage), which sees what is left out.
   double targetDistanceRms = 0, targetDistanceMax = 0;
+  // Those two over E_cover's sample of a fine target's vertices (during a run; the run's last records measure every
+  // vertex).
+  bool targetSampled = false;
   double seamMismatch = 0;   // max relative stitched-edge length difference
   double gradient = 0;       // scaled ||dE/dX||_inf (see gradientTolerance); its part tangent to equal seam lengths
                              // (the Lagrangian's) while every trial is projected onto them
@@ -256,8 +259,8 @@ class PatternOptimizer {
   const std::vector<OptimizeRecord>& history() const { return history_; }
   const std::vector<Vertices>& shapes() const { return shapes_; }  // when options.keepShapes
   // Per target vertex, its distance to the inflated outer surface [m], as the last record measured it for
-  // targetDistanceRms; null once the shape has changed since. The app streams every iterate's distances both
-  // ways, and so need not measure this way again.
+  // targetDistanceRms; null once the shape has changed since, or where that record sampled a fine target. The app
+  // streams every iterate's distances both ways, and so need not measure this way again.
   const Eigen::VectorXd* targetDistances() const;
   const OptimizeTimings& timings() const { return timings_; }
   const OptimizeOptions& options() const { return options_; }  // as used (slidingOptions)
@@ -358,6 +361,9 @@ class PatternOptimizer {
   };
   std::optional<CutShape> cutShape(const Eigen::VectorXd& X0, const Vertices& x0);
   void record(double alpha, int newton, bool projected);
+  // r's target figures for shape x (on the current mesh): over E_cover's sample during a run on a fine target, else
+  // over every target vertex, whose distances targetDistances() then gives.
+  void measureTarget(OptimizeRecord& r, const Vertices& x);
   bool rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) const;
   // Whether every panel's outline at X is a simple polygon (no two of its edges meet but neighbours).
   bool outlinesSimple(const Eigen::VectorXd& X) const;
@@ -419,8 +425,9 @@ class PatternOptimizer {
   std::vector<Eigen::VectorXd> S_, Y_;  // L-BFGS pairs
   std::vector<OptimizeRecord> history_;
   std::vector<Vertices> shapes_;
-  Eigen::VectorXd targetDistances_;  // targetDistances(), of the shape coverageShape_
-  Vertices coverageShape_;
+  Eigen::VectorXd targetDistances_;  // targetDistances(), of the shape coverageShape_ (empty where sampled)
+  Vertices coverageShape_;           // the last record's shape
+  bool exactTarget_ = false;         // records measure the whole target (from finish on)
   OptimizeTimings timings_;
   OptimizeState state_ = OptimizeState::Running;
   std::string message_;
