@@ -54,8 +54,9 @@ TEST(PatternOptimizer, ThreeGoreSphereGetsMuchCloser) {
   EXPECT_LT(r.cut.distanceRms, 0.5 * first.distanceRms);
 }
 
-// The target's distances to the inflated shape are measured once per iterate (for the record's figure), and
-// the app streams them from there: they are the shape's own until the shape changes.
+// The target's distances to the inflated shape are measured once per iterate (for the record's figure; every
+// vertex of a target no finer than the balloon, as here), and the app streams them from there: they are the shape's
+// own until the shape changes.
 TEST(PatternOptimizer, TargetDistancesAreThoseOfTheCurrentShape) {
   const Fixture f = makeFixture("sphere-gores.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
