@@ -190,3 +190,35 @@ TEST(CloseHoles, AHoleWhoseRimCrossesItselfSeenFromEverySideIsClosedByAFilmThatS
   EXPECT_LT(folds, 0.02 * edges);
   EXPECT_LT(longestEdge(m, before), 3 * longestEdge(sphere, 0));
 }
+
+TEST(CloseHoles, ARimVertexWithOneTriangleGetsACapThatDoesNotRepeatThatTrianglesInnerEdge) {
+  // A flap on the rim, folded back over the surface (as at the libigl snail's opening): its tip is a rim vertex with
+  // one triangle, whose edge across the tip's neighbours already has two triangles. Seen across the hole the flap
+  // lies inside the rim, so a cap laid there without points on its rim takes the flap's triangle as an ear, and the
+  // flap's inner edge would have four triangles.
+  TriMesh m = openSphere(0.8);
+  std::map<std::pair<int, int>, int> uses;
+  for (int f = 0; f < m.numTriangles(); ++f)
+    for (int k = 0; k < 3; ++k) ++uses[std::minmax(m.F(f, k), m.F(f, (k + 1) % 3))];
+  int a = -1, b = -1;  // a rim edge a -> b as its triangle runs
+  for (int f = 0; f < m.numTriangles() && a < 0; ++f)
+    for (int k = 0; k < 3 && a < 0; ++k)
+      if (uses[std::minmax(m.F(f, k), m.F(f, (k + 1) % 3))] == 1) a = m.F(f, k), b = m.F(f, (k + 1) % 3);
+  ASSERT_GE(a, 0);
+  // The tip in the rim's plane, away from the axis.
+  const Eigen::RowVector3d middle = 0.5 * (m.V.row(a) + m.V.row(b)),
+                           inward = Eigen::RowVector3d(-middle(0), 0, -middle(2)).normalized();
+  const int tip = m.numVertices();
+  m.V.conservativeResize(tip + 1, 3);
+  m.V.row(tip) = middle - 0.5 * (m.V.row(a) - m.V.row(b)).norm() * inward;
+  m.F.conservativeResize(m.numTriangles() + 1, 3);
+  m.F.row(m.numTriangles() - 1) << b, a, tip;
+  {
+    TriMesh checked = m;
+    const ValidationReport open = validateTarget(checked);
+    ASSERT_EQ(open.stats.holes, 1);
+    ASSERT_FALSE(open.modified) << "the tip's triangle faces as the others do";
+  }
+  ASSERT_EQ(closeHoles(m), 1);
+  test::expectClosedSurface(m, 0);
+}

@@ -128,6 +128,39 @@ bool membraneCap(const TriMesh& mesh, const std::vector<int>& loop, double rim, 
   return true;
 }
 
+// A cap edge between two rim vertices that the mesh already has with two triangles (a flap on the rim folded over the
+// hole, whose triangle the cap takes as an ear) would have four: each such edge is split at a new vertex, the mean of
+// its two cap triangles' corners, and those two triangles into four. Cap triangles from `first` on.
+void splitRepeatedEdges(const TriMesh& mesh, const std::unordered_map<std::uint64_t, int>& uses, size_t first,
+                        int& nextVertex, std::vector<Eigen::RowVector3d>& added, std::vector<Eigen::Vector3i>& caps) {
+  const int oldVertices = mesh.numVertices();
+  const auto at = [&](int v) -> Eigen::RowVector3d {
+    return v < oldVertices ? Eigen::RowVector3d(mesh.V.row(v)) : added[size_t(v - oldVertices)];
+  };
+  const auto repeated = [&](int a, int b) {
+    if (a >= oldVertices || b >= oldVertices) return false;
+    const auto it = uses.find(edgeKey(a, b));
+    return it != uses.end() && it->second >= 2;
+  };
+  for (size_t f = first; f < caps.size(); ++f)
+    for (int k = 0; k < 3; ++k) {
+      const int a = caps[f](k), b = caps[f]((k + 1) % 3);
+      if (!repeated(a, b)) continue;
+      size_t g = first;  // the cap triangle across a -> b runs b -> a
+      int j = -1;
+      for (; g < caps.size() && j < 0; ++g)
+        for (int i = 0; i < 3; ++i)
+          if (caps[g](i) == b && caps[g]((i + 1) % 3) == a) j = i;
+      if (j < 0) continue;  // a cap that does not close over the edge: left, and the mesh's check will say so
+      --g;
+      const int p = caps[f]((k + 2) % 3), q = caps[g]((j + 2) % 3), m = nextVertex++;
+      added.push_back(0.25 * (at(a) + at(b) + at(p) + at(q)));
+      caps[f] = Eigen::Vector3i(a, m, p), caps[g] = Eigen::Vector3i(b, m, q);
+      caps.emplace_back(m, b, p), caps.emplace_back(m, a, q);
+      k = -1;  // this triangle's other edges again, as it now is
+    }
+}
+
 }  // namespace
 
 int closeHoles(TriMesh& mesh) {
@@ -162,7 +195,10 @@ int closeHoles(TriMesh& mesh) {
     if (!simple || n < 3) continue;
     double rim = 0;  // the mean rim edge
     for (int i = 0; i < n; ++i) rim += (mesh.V.row(loop[size_t(i)]) - mesh.V.row(loop[size_t((i + 1) % n)])).norm() / n;
-    if (membraneCap(mesh, loop, rim, nextVertex, added, caps)) ++closed;
+    const size_t first = caps.size();
+    if (!membraneCap(mesh, loop, rim, nextVertex, added, caps)) continue;
+    splitRepeatedEdges(mesh, uses, first, nextVertex, added, caps);
+    ++closed;
   }
   const int oldV = mesh.numVertices(), oldF = mesh.numTriangles();
   mesh.V.conservativeResize(oldV + int(added.size()), 3);
