@@ -116,8 +116,9 @@ export class Panels {
       { ...optimizeArgs(this.app.design, this.app.resolution), scale: this.app.scaleFor(this.app.design), up: upOf(this.app.design) },
       {
         onProgress: (p) => {
+          // The target's side from the stream, measured whole: the record samples a fine target during a run.
           const step = p.iteration !== undefined && p.stage === 'optimizing'
-            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance ${formatDistance({ rms: p.distanceRms, targetRms: p.targetDistanceRms })}` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
+            ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance ${formatDistance({ rms: p.distanceRms, targetRms: p.distance?.targetRms ?? p.targetDistanceRms })}` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
             : null;
           if (this.storedShown()) return this.app.setStatus(`${STORED_STATUS}: ${step ?? p.stage}…`);
           if (p.flattenedText) this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
