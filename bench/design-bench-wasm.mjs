@@ -134,7 +134,9 @@ function run(entry) {
   const scale = design.size.height / (hi - lo);
   const handlers = createHandlers(api);
   const t0 = performance.now();
-  for (const _ of handlers.setTarget(target)); // eslint-disable-line no-unused-vars
+  // The design's repairs of its target, as the app makes them when it opens the design.
+  const repairs = { cutThinHandles: Boolean(design.target.cutThinHandles), closeHoles: Boolean(design.target.closeHoles) };
+  for (const _ of handlers.setTarget({ ...target, ...repairs })); // eslint-disable-line no-unused-vars
   const seams = design.seams.map(({ points, closed, weight, name }) => ({ points: perturb > 0 ? points.map(nudged) : points, closed, weight: weight ?? 1, name }));
   const job = handlers.optimizeDesign({
     seams, scale, triangles: triangles > 0 ? triangles : entry.triangles, maxIterations: 300, pressure: design.pressure, material: design.material,
