@@ -113,13 +113,15 @@ export function optimizedResultShown(page, timeout = 180000) {
 
 // The panels of the design on screen are made and an optimizer's iterate of them is inflated in its pane (a new
 // shape since `serial`, window.billow.test.inflatedSerial before the edit); the optimization then stops. Tests of
-// what makes a design use it where the optimized result would only add time.
+// what makes a design use it where the optimized result would only add time. Looked at on a timer, not a frame: a
+// loaded machine's software renderer may draw no frame for seconds while the iterates stream; a short
+// optimization may end between two looks, and its result shown counts as well.
 export async function panelsInflated(page, serial, timeout = 120000) {
   await page.waitForFunction((since) => {
     const t = window.billow.test;
     return (t.inflatedSerial ?? 0) > (since ?? 0) && t.panes.inflated.shape && t.panes.pattern.pattern
-      && /^Optimizing the panels: step/.test(document.querySelector('#status').textContent);
-  }, serial, { timeout }).catch(async (error) => {
+      && (/^Optimizing the panels: step/.test(document.querySelector('#status').textContent) || t.resultShown);
+  }, serial, { timeout, polling: 100 }).catch(async (error) => {
     const state = await page.evaluate(() => {
       const t = window.billow.test;
       return { serial: t.inflatedSerial, shape: Boolean(t.panes.inflated.shape), pattern: Boolean(t.panes.pattern.pattern),
