@@ -116,7 +116,7 @@ test('the outline as seen is laid in one action: a front and a back panel, and a
   assert.ok(Math.min(...areas) > 0.3 * (areas[0] + areas[1]), `front and back halves: ${areas}`);
   const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
   await note.waitFor({ timeout: 10000 });
-  assert.match(await note.textContent(), /small parts? turned away .* went with the panel around/);
+  assert.match(await note.textContent(), /parts? turned away .* went with the panel around/);
   await page.waitForTimeout(300);
   await screenshot(page, 'flat-cut-outline');
   // Laid again from the front: a second seam, and the note of the first gives way to the second's.
@@ -125,6 +125,57 @@ test('the outline as seen is laid in one action: a front and a back panel, and a
   assert.ok(await note.count() <= 1);
   await page.click('#undo-button');
   await page.waitForFunction(() => window.billow.test.design.seams.length === 1);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('the View menu and keys 1, 3, 7 and 9 turn the target straight on; an outline laid at an angle names the straight view that turns less away', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.waitForFunction(() => window.billow.test.panes.target.mesh);
+  const directions = () => page.evaluate(() => {
+    const { target, inflated } = window.billow.test.panes;
+    return [target.viewDirection().toArray(), inflated.viewDirection().toArray(), target.namedView('front', target.group).toArray()];
+  });
+  const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
+  await page.selectOption('#view-select', 'front');
+  let [view, inflated, front] = await directions();
+  assert.ok(dot(view, front) > 0.9999 && Math.abs(view[1]) < 1e-6, `front: ${view} against ${front}`);
+  assert.ok(dot(view, inflated) > 0.9999, 'the inflated pane turns with it');
+  assert.equal(await page.inputValue('#view-select'), '', 'the menu goes back to its title, to be chosen again');
+  await page.keyboard.press('3');
+  [view] = await directions();
+  assert.ok(Math.abs(dot(view, front)) < 1e-6 && Math.abs(view[1]) < 1e-6, `right: ${view}`);
+  const right = view;
+  await page.keyboard.press('9');
+  [view] = await directions();
+  assert.ok(dot(view, right) < -0.9999, `the opposite side: ${view}`);
+  await page.keyboard.press('7');
+  [view] = await directions();
+  assert.ok(view[1] > 0.9999, `from above: ${view}`);
+  // The cow seen from behind and above: its far side's parts go with the front, the largest a share the note names,
+  // with the straight view that turns less away.
+  await lookFrom(page, [0.33, 0.28, -0.9]);
+  await page.keyboard.press('o');
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 1);
+  const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
+  await note.waitFor({ timeout: 10000 });
+  const text = await note.textContent();
+  const named = text.match(/the largest (\d+) % of the surface.*seen straight from the (front|right|top) \(View menu, or key ([137])\) (?:the largest part turned away is (under 1|\d+) %|no part turns away)/);
+  assert.ok(named, text);
+  await screenshot(page, 'outline-at-an-angle');
+  // Turned as the note says and laid again: the largest part that goes with the other side is as the note said.
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
+  await page.keyboard.press(named[3]);
+  await page.keyboard.press('o');
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 1);
+  await page.waitForFunction((before) => [...document.querySelectorAll('.message.notice')].every((m) => m.textContent !== before), text);
+  const again = (await note.count()) ? await note.textContent() : '';
+  const share = again.match(/, (?:the largest )?(\d+) % of the surface/);
+  if (named[4] === undefined || named[4] === 'under 1') assert.equal(share, null, again);
+  else assert.equal(share?.[1], named[4], again);
+  assert.ok(Number(named[1]) >= 2 * (Number(named[4]) || 0), text);
+  await screenshot(page, 'outline-straight-on');
   assert.deepEqual(page.errors, []);
   await page.close();
 });

@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { readdirSync } from 'node:fs';
 import { SHARED_MESHES, loadSharedMesh } from './obj.mjs';
 import { handlers, run } from './worker-handlers.mjs';
-import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough, acrossHandles } from '../../web/src/app/section.js';
+import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough, acrossHandles, splitInTwo, vertexAreas } from '../../web/src/app/section.js';
 import { positionOf } from '../../web/src/app/symmetry.js';
 
 const MESHES = SHARED_MESHES;
@@ -68,6 +68,29 @@ test('the outline of the sphere seen along z is its equator, with nothing turned
   const outline = outlineLoop(sphere, [0, 0, 1]);
   assert.deepEqual([outline.toBack, outline.toFront, outline.loops], [0, 0, 1]);
   for (const p of outline.loop) assert.ok(Math.abs(p.position[2]) < 0.05, `on the equator: ${p.position}`);
+});
+
+test('the largest part an outline moves to the other side is the area of that part, and zero when it moves none', () => {
+  const sphere = load('sphere.obj');
+  const area = vertexAreas(sphere);
+  const total = area.reduce((a, b) => a + b, 0);
+  // Front above the equator, but for a cap around the north pole and a smaller one off it: two islands of the back.
+  const z = (v) => sphere.positions[3 * v + 2];
+  const x = (v) => sphere.positions[3 * v];
+  const field = Float64Array.from({ length: area.length }, (_, v) => (z(v) > 0.8 || (z(v) > 0.3 && z(v) < 0.5 && x(v) > 0.7) ? -1 : z(v) > 0 ? 1 : -1));
+  const cap = area.reduce((s, a, v) => (z(v) > 0.8 ? s + a : s), 0);
+  const islands = area.reduce((s, a, v) => (z(v) > 0.8 || (z(v) > 0.3 && z(v) < 0.5 && x(v) > 0.7) ? s + a : s), 0);
+  const split = splitInTwo(sphere, field);
+  assert.equal(split.toPositive, 2, 'both islands join the front');
+  assert.ok(Math.abs(split.largestMoved - cap) < 1e-12 * total, `the cap: ${split.largestMoved} against ${cap}`);
+  assert.ok(Math.abs(split.moved[1] - islands) < 1e-12 * total, `both: ${split.moved[1]} against ${islands}`);
+  // As outlineLoop reports it: a share of the surface, zero where nothing moved.
+  for (const file of ['sphere.obj', 'spot.obj', 'hand.obj'])
+    for (const towards of [[0, 0, 1], [1, 0, 0], [0.33, 0.28, -0.9]].map((d) => d.map((c) => c / Math.hypot(...d)))) {
+      const outline = outlineLoop(load(file), towards);
+      if (outline.toBack + outline.toFront === 0) assert.equal(outline.largestMoved, 0, `${file} ${towards}`);
+      else assert.ok(outline.largestMoved > 0 && outline.largestMoved < 0.5, `${file} ${towards}: ${outline.largestMoved}`);
+    }
 });
 
 // A ring (a torus about z, tube radius r, ring radius R) as a mesh of n x m quads split in two.

@@ -156,6 +156,15 @@ const cycleColorMode = () => {
   const modes = [...colorSelect.options].filter((o) => !o.disabled).map((o) => o.value);
   setColorMode(modes[(modes.indexOf(colorSelect.value) + 1) % modes.length]);
 };
+// The target pane's named views (front, sides, top, bottom): an Outline seam laid straight on. The menu names
+// the action and goes back to its title, so the same view can be chosen again after turning.
+const viewSelect = $('view-select');
+viewSelect.addEventListener('change', () => {
+  if (viewSelect.value) panes.target.showView(viewSelect.value);
+  viewSelect.value = '';
+  viewSelect.blur(); // the keys (1, 3, 7, O) go to the views again
+});
+const VIEW_KEYS = { 1: 'front', 3: 'right', 7: 'top' };
 // The pattern pane's view: the panels side by side, or nested on the sheet; remembered on this device.
 const patternView = $('pattern-view');
 const setPatternView = (view) => {
@@ -204,6 +213,10 @@ window.addEventListener('keydown', (e) => {
   } else if (!mod && !e.altKey && key === 'm') {
     const axes = ['', 'x', 'y', 'z'];
     app.seams.setSymmetry(axes[(axes.indexOf(app.design.symmetry?.axis ?? '') + 1) % axes.length] || null);
+  } else if (!mod && !e.altKey && VIEW_KEYS[key]) {
+    panes.target.showView(VIEW_KEYS[key]);
+  } else if (!mod && !e.altKey && key === '9') {
+    panes.target.turnTo(panes.target.viewDirection().negate()); // the opposite side, as 9 does in Blender
   } else if (!mod && !e.altKey && key === 'c') {
     cycleColorMode();
   } else if (!mod && !e.altKey && key === 'n') {

@@ -2,6 +2,8 @@
 // the Help button or "?"; text only through textContent.
 export const SHORTCUTS = [
   ['V', 'View: orbit (drag; the target and inflated views turn together), zoom (wheel or pinch), pan (right drag or two fingers)'],
+  ['1 / 3 / 7', 'Turn the view to see the target straight from the front, the right or above (the View menu has every side), as an Outline seam is laid'],
+  ['9', 'Turn the view to the opposite side'],
   ['D', 'Draw seams: click points on the target; click the first point to close a loop'],
   ['S', 'Section seam: click the target for a seam all around it where a plane through that point cuts it; with a Band width, two seams with a gusset strip between them'],
   ['O', 'Outline seam: a seam around the shape as seen from here, for a front and a back panel'],

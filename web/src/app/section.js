@@ -171,9 +171,10 @@ function keepTurns(loop, arcs, stray) {
 // own coordinates): the zero set of n · towards over the vertex normals, the contour where the surface turns
 // away, cleaned into one loop (splitInTwo). Front-facing parts that are not the largest front (a fold, an arm's
 // far side) go with the back, then back-facing parts that are not the largest back go with the front, so front
-// and back are each one piece. Returns { loop, holes, toBack, toFront, loops, facing } (loops: how many the
-// contour still makes, more than one on a shape with a handle; loop is the longest, holes the others; facing:
-// the cleaned field, > 0 in front), or null when the shape has no front or back.
+// and back are each one piece. Returns { loop, holes, toBack, toFront, largestMoved, loops, facing } (largestMoved:
+// the largest part that changed sides, a share of the surface; loops: how many the contour still makes, more than
+// one on a shape with a handle; loop is the longest, holes the others; facing: the cleaned field, > 0 in front),
+// or null when the shape has no front or back.
 export function outlineLoop(mesh, towards) {
   const facing = facingField(mesh, towards);
   const split = splitInTwo(mesh, facing);
@@ -181,7 +182,8 @@ export function outlineLoop(mesh, towards) {
   const loops = zeroLoops(mesh, facing);
   if (!loops.length) return null;
   const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
-  return { loop, holes: loops.filter((l) => l !== loop), toBack: split.toNegative, toFront: split.toPositive, loops: loops.length, facing };
+  const largestMoved = split.largestMoved / (split.area[0] + split.area[1]);
+  return { loop, holes: loops.filter((l) => l !== loop), toBack: split.toNegative, toFront: split.toPositive, largestMoved, loops: loops.length, facing };
 }
 
 // A shape with a handle seen through it (a ring face on, a letter O) has an outline of several loops: the rim
@@ -240,8 +242,8 @@ function facingField({ positions, indices }, towards) {
 // Changes the sign of a field given at the vertices (values, changed in place) where needed so that its positive
 // and its negative side are each one edge-connected piece and no vertex pinches a side: its zero set is then one
 // loop on a shape without handles. Parts of a side that are not its largest change sides, the positive side's
-// first. Returns { toNegative, toPositive, moved: [area to negative, area to positive], area: [positive,
-// negative] as they were }, or null when a side is empty.
+// first. Returns { toNegative, toPositive, moved: [area to negative, area to positive], largestMoved (the area of
+// the largest part that changed sides), area: [positive, negative] as they were }, or null when a side is empty.
 export function splitInTwo(mesh, values) {
   const { positions, indices } = mesh;
   const nv = positions.length / 3;
@@ -249,6 +251,7 @@ export function splitInTwo(mesh, values) {
   const sideArea = (positive) => area.reduce((s, a, v) => (values[v] > 0 === positive ? s + a : s), 0);
   const before = [sideArea(true), sideArea(false)];
   const moved = [0, 0];
+  let largestMoved = 0;
   // Keeps only the largest edge-connected part of each side: the others change sides.
   const neighbours = vertexNeighbours(indices, nv);
   const keepLargest = (front) => {
@@ -270,6 +273,7 @@ export function splitInTwo(mesh, values) {
     }
     if (!sizes.length) return -1;
     const largest = sizes.indexOf(Math.max(...sizes));
+    for (const [id, size] of sizes.entries()) if (id !== largest) largestMoved = Math.max(largestMoved, size);
     for (let v = 0; v < nv; v++)
       if (part[v] >= 0 && part[v] !== largest) {
         values[v] = front ? -Math.max(values[v], 1e-6) : Math.max(-values[v], 1e-6);
@@ -302,7 +306,7 @@ export function splitInTwo(mesh, values) {
     toPositive += negative;
     if (!pinches()) break;
   }
-  return { toNegative, toPositive, moved, area: before };
+  return { toNegative, toPositive, moved, largestMoved, area: before };
 }
 
 // A third of the area of the triangles around each vertex.

@@ -18,6 +18,13 @@ const SNAP_PX = { mouse: 12, pen: 16, touch: 28 }; // to control points and the 
 const CURVE_SNAP_PX = { mouse: 6, pen: 9, touch: 18 }; // to a seam's curve between its points
 const PICK_PX = { mouse: 10, pen: 14, touch: 26 }; // mouse: SeamEditor's default
 const reach = (table, event) => table[event.pointerType] ?? table.mouse;
+// The parts of the surface that go with the other side's panel when the outline is laid: under SMALL_PART of the
+// surface each, folds and creases; from LARGE_PART on, the note looks for a straight view that turns less away.
+const SMALL_PART = 0.01;
+const LARGE_PART = 0.02;
+const percent = (share) => (share < 0.01 ? 'under 1 %' : `${Math.round(100 * share)} %`);
+// The straight views the Outline note may point to, with their keys.
+const STRAIGHT_VIEWS = [['front', '1'], ['right', '3'], ['top', '7']];
 export const SECTION_AXES = ['x', 'y', 'z', 'view'];
 
 export class SeamTool {
@@ -226,7 +233,13 @@ export class SeamTool {
     if (!outline) return this.app.noteLaid('The shape shows no outline from here: turn the view and try again.', 'warning');
     const notes = [];
     const parts = outline.toBack + outline.toFront;
-    if (parts) notes.push(`${parts} small ${parts === 1 ? 'part' : 'parts'} turned away from the rest of ${parts === 1 ? 'its' : 'their'} side (a fold, a limb in front of the body) went with the panel around ${parts === 1 ? 'it' : 'them'}; a section seam around a limb gives it panels of its own`);
+    const one = parts === 1;
+    if (parts) {
+      const what = outline.largestMoved < SMALL_PART ? `${parts} small ${one ? 'part' : 'parts'}` : `${parts} ${one ? 'part' : 'parts'}`;
+      const share = outline.largestMoved < SMALL_PART ? '' : `, ${one ? '' : 'the largest '}${percent(outline.largestMoved)} of the surface`;
+      const straighter = outline.largestMoved >= LARGE_PART ? this.straighterView(outline.largestMoved) : '';
+      notes.push(`${what} turned away from the rest of ${one ? 'its' : 'their'} side (a fold, a limb in front of the body, an ear seen at an angle) went with the panel around ${one ? 'it' : 'them'}${share}; a section seam around a limb gives it panels of its own${straighter}`);
+    }
     // Seen through a handle (a ring, a letter O), the front and back are rings: each hole's rim is laid too,
     // and two sections across the ring cut them into halves.
     const holes = outline.holes.length;
@@ -238,6 +251,19 @@ export class SeamTool {
     const loops = opened ? [outline.loop, ...outline.holes, ...across] : [outline.loop];
     const names = opened ? ['Outline', ...outline.holes.map((_, k) => `Outline, hole ${k + 1}`), ...across.map((_, k) => `Across the ring ${k + 1}`)] : [];
     this.app.commitLoops(loops, { names, note: notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null });
+  }
+
+  // Where a straight view (front, side, top) leaves less than half the largest part `share` out of its outline,
+  // the note's clause that names the best, else ''.
+  straighterView(share) {
+    let best = null;
+    for (const [name, key] of STRAIGHT_VIEWS) {
+      const outline = outlineLoop(this.app.target, this.toTarget(this.pane.namedView(name, this.pane.group)));
+      if (outline && (!best || outline.largestMoved < best.share)) best = { name, key, share: outline.largestMoved };
+    }
+    if (!best || best.share >= share / 2) return '';
+    const moved = best.share > 0 ? `the largest part turned away is ${percent(best.share)} of it` : 'no part turns away';
+    return `; seen straight from the ${best.name} (View menu, or key ${best.key}) ${moved}`;
   }
 
   // Two seams half the band's width to each side of the outline, measured on the surface, and the seam across

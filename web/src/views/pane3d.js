@@ -73,6 +73,28 @@ export class Pane3D {
     return DEFAULT_VIEW.clone().applyAxisAngle(new Vector3(0, 1, 0), Math.atan2(front.x, front.z));
   }
 
+  // The unit direction from the object to the viewer of a named view: 'front', 'back', 'left', 'right' (the
+  // viewer's, facing the front), 'top', 'bottom' or 'three-quarter' (defaultView), turned about the vertical as
+  // defaultView is. Top and bottom lean a hair to the front, so the orbit keeps its up direction.
+  namedView(name, object) {
+    if (name === 'three-quarter') return this.defaultView(object);
+    const front = this.front?.clone().applyQuaternion(object.quaternion);
+    const yaw = front && front.x * front.x + front.z * front.z >= 1e-12 ? Math.atan2(front.x, front.z) : 0;
+    const turns = { front: 0, right: Math.PI / 2, back: Math.PI, left: -Math.PI / 2 };
+    const vertical = { top: 1, bottom: -1 }[name];
+    const across = vertical ? 1e-3 : 1;
+    const angle = yaw + (turns[name] ?? 0);
+    return new Vector3(across * Math.sin(angle), vertical ?? 0, across * Math.cos(angle)).normalize();
+  }
+
+  // Turns the view about its centre to look along `direction` (from the centre to the viewer), keeping the zoom.
+  turnTo(direction) {
+    const distance = this.camera.position.distanceTo(this.controls.target);
+    this.camera.position.copy(this.controls.target).addScaledVector(direction.clone().normalize(), distance);
+    this.controls.update();
+    this.controls.dispatchEvent({ type: 'change' });
+  }
+
   // Frames the object: camera distance from its bounding sphere and the field of view, whole in the free part
   // of the pane (fitView), seen from where the camera already looks (a new shape does not undo the designer's
   // turning of the view), or with reset from the default three-quarter front view.
@@ -98,11 +120,7 @@ export class Pane3D {
   // how a problem's place is shown.
   turnTowards(point) {
     const direction = point.clone().sub(this.controls.target);
-    if (!(direction.lengthSq() > 0)) return;
-    const distance = this.camera.position.distanceTo(this.controls.target);
-    this.camera.position.copy(this.controls.target).addScaledVector(direction.normalize(), distance);
-    this.controls.update();
-    this.controls.dispatchEvent({ type: 'change' });
+    if (direction.lengthSq() > 0) this.turnTo(direction);
   }
 
   render(renderer) {

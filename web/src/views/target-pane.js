@@ -128,6 +128,11 @@ export class TargetPane extends Pane3D {
     this.setScale(scale);
   }
 
+  // Turns the view to a named one (Pane3D.namedView), the target's front as it stands.
+  showView(name) {
+    if (this.mesh) this.turnTo(this.namedView(name, this.group));
+  }
+
   setScale(scale) {
     if (!this.mesh || this.mesh.scale.x === scale) return;
     const box = this.mesh.geometry.boundingBox;
