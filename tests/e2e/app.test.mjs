@@ -103,6 +103,15 @@ test('opening a file and dropping a file both replace the target', async () => {
   assert.equal(await stat(page, 'vertices'), '642');
   assert.equal(await stat(page, 'triangles'), '1,280');
   assert.ok(await page.isHidden('#drop-overlay'));
+  // An ascii PLY whose surface is triangle strips (as scanned meshes came), each strip a triangle and a -1.
+  const lines = sphere.split('\n').map((l) => l.trim().split(/\s+/));
+  const vertices = lines.filter((p) => p[0] === 'v').map((p) => p.slice(1, 4).join(' '));
+  const strips = lines.filter((p) => p[0] === 'f').flatMap((p) => [...p.slice(1, 4).map((k) => Number(k) - 1), -1]);
+  const ply = `ply\nformat ascii 1.0\nelement vertex ${vertices.length}\nproperty float x\nproperty float y\nproperty float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n${vertices.join('\n')}\n${strips.length} ${strips.join(' ')}\n`;
+  await page.setInputFiles('#file-input', { name: 'scan.ply', mimeType: 'application/octet-stream', buffer: Buffer.from(ply) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'scan.ply');
+  assert.equal(await stat(page, 'vertices'), '642');
+  assert.equal(await stat(page, 'triangles'), '1,280');
   assertNoErrors(page);
   await page.close();
 });

@@ -1,6 +1,8 @@
 // STL and PLY readers and welding: meshes are written to bytes here, in every format, and read back.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -8,6 +10,7 @@
 #include <limits>
 #include <sstream>
 #include <string>
+#include <vector>
 
 #include "io/mesh_file.hpp"
 #include "io/ply_reader.hpp"
@@ -360,6 +363,65 @@ TEST(PlyReader, SplitsPolygonsIntoFans) {
   EXPECT_EQ(m.F.row(0), Eigen::RowVector3i(0, 1, 2));
   EXPECT_EQ(m.F.row(1), Eigen::RowVector3i(0, 2, 3));
   EXPECT_EQ(m.V(2, 1), 1.0);
+}
+
+// The vertices (x, y, z as doubles) and one 'tristrips' element whose int list is `strip` (-1 ends a strip).
+std::string plyStrips(const Eigen::MatrixXd& V, const std::vector<int>& strip, PlyFormat format) {
+  const bool binary = format != PlyFormat::Ascii, big = format == PlyFormat::BigEndian;
+  std::ostringstream head;
+  head << "ply\nformat "
+       << (format == PlyFormat::Ascii ? "ascii"
+           : big                      ? "binary_big_endian"
+                                      : "binary_little_endian")
+       << " 1.0\nelement vertex " << V.rows() << "\nproperty double x\nproperty double y\nproperty double z\n"
+       << "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
+  std::string out = head.str();
+  std::ostringstream text;
+  for (Eigen::Index i = 0; i < V.rows(); ++i)
+    for (int k = 0; k < 3; ++k) binary ? putF64(out, V(i, k), big) : void(text << V(i, k) << (k == 2 ? "\n" : " "));
+  if (binary) {
+    putBits(out, strip.size(), 4, big);
+    for (int v : strip) putBits(out, static_cast<std::uint64_t>(static_cast<std::int64_t>(v)), 4, big);
+    return out;
+  }
+  text << strip.size();
+  for (int v : strip) text << ' ' << v;
+  return out + text.str() + "\n";
+}
+
+// A triangle's corners turned so that the smallest comes first (the same triangle, facing the same way).
+Eigen::RowVector3i rotatedToSmallest(const Eigen::RowVector3i& t) {
+  int k = 0;
+  for (int c = 1; c < 3; ++c)
+    if (t(c) < t(k)) k = c;
+  return {t(k), t((k + 1) % 3), t((k + 2) % 3)};
+}
+
+TEST_P(PlyRoundTrip, TriangleStripsFaceOneWayAndEndAtMinusOne) {
+  // One strip around a tetrahedron gives its four faces, each facing out as the faces the other readers get.
+  const TriMesh tet = tetrahedron();
+  const TriMesh fromStrip = readPly(plyStrips(tet.V, {0, 2, 1, 3, 0, 2}, GetParam()));
+  ASSERT_EQ(fromStrip.numTriangles(), 4);
+  std::vector<std::array<int, 3>> got, expected;
+  for (int t = 0; t < 4; ++t) {
+    const Eigen::RowVector3i a = rotatedToSmallest(fromStrip.F.row(t)), b = rotatedToSmallest(tet.F.row(t));
+    got.push_back({a(0), a(1), a(2)}), expected.push_back({b(0), b(1), b(2)});
+  }
+  std::sort(got.begin(), got.end()), std::sort(expected.begin(), expected.end());
+  EXPECT_EQ(got, expected);
+  // Two ladders in the plane, the second after a -1, and a repeated vertex: every triangle faces -z, none spans
+  // the restart, and the ones with a repeated corner are left out.
+  Eigen::MatrixXd V(10, 3);
+  for (int i = 0; i < 10; ++i) V.row(i) << i / 2 + (i >= 6 ? 1 : 0), i % 2, 0;
+  const TriMesh ladders = readPly(plyStrips(V, {0, 1, 2, 3, 4, 5, -1, 6, 7, 8, 8, 9}, GetParam()));
+  ASSERT_EQ(ladders.numTriangles(), 5);  // 4 in the first; 6-7-8 in the second (7-8-8 and 8-8-9 repeat a corner)
+  for (int t = 0; t < ladders.numTriangles(); ++t) {
+    const Eigen::Vector3d a = ladders.V.row(ladders.F(t, 0)), b = ladders.V.row(ladders.F(t, 1)),
+                          c = ladders.V.row(ladders.F(t, 2));
+    EXPECT_LT((b - a).cross(c - a).z(), 0) << "triangle " << t;
+    EXPECT_FALSE((ladders.F.row(t).array() <= 5).any() && (ladders.F.row(t).array() >= 6).any()) << "triangle " << t;
+  }
+  expectError([&] { readPly(plyStrips(V, {0, 1, 12}, GetParam())); }, "ply.bad-index", "strips");
 }
 
 TEST(PlyReader, ReadsSignedIntegerCoordinatesInBothByteOrders) {

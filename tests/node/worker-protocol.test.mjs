@@ -84,6 +84,49 @@ test('a broken file is rejected with a designer-facing message and its report', 
   );
 });
 
+// spot.obj as a binary little-endian PLY: its vertices, and its triangles as faces, or as triangle strips of one
+// triangle each (each ended by -1), or none at all (a point cloud).
+function spotPly(triangles) {
+  const lines = readFileSync(`${MESHES}/spot.obj`, 'utf8').split('\n');
+  const vertices = lines.filter((l) => l.startsWith('v ')).map((l) => l.split(/\s+/).slice(1, 4).map(Number));
+  const faces = lines.filter((l) => l.startsWith('f ')).map((l) => l.split(/\s+/).slice(1, 4).map((w) => Number(w.split('/')[0]) - 1));
+  const element = { faces: `element face ${faces.length}\nproperty list uchar int vertex_indices\n`, strips: 'element tristrips 1\nproperty list int int vertex_indices\n', none: '' }[triangles];
+  const header = `ply\nformat binary_little_endian 1.0\nelement vertex ${vertices.length}\nproperty float x\nproperty float y\nproperty float z\n${element}end_header\n`;
+  const body = [];
+  const view = (bytes, write) => {
+    const b = new DataView(new ArrayBuffer(bytes));
+    write(b);
+    body.push(new Uint8Array(b.buffer));
+  };
+  for (const v of vertices) view(12, (b) => v.forEach((x, k) => b.setFloat32(4 * k, x, true)));
+  if (triangles === 'faces') for (const f of faces) view(13, (b) => (b.setUint8(0, 3), f.forEach((i, k) => b.setInt32(1 + 4 * k, i, true))));
+  if (triangles === 'strips') {
+    const list = faces.flatMap((f) => [...f, -1]);
+    view(4 * (list.length + 1), (b) => (b.setInt32(0, list.length, true), list.forEach((i, k) => b.setInt32(4 * (k + 1), i, true))));
+  }
+  return new Blob([header, ...body]).arrayBuffer();
+}
+
+test('a PLY file opens through the command line\'s reader: its faces, its triangle strips, and a point cloud says what it is', async () => {
+  const client = newClient();
+  const obj = await client.request(Op.loadTarget, { fileName: 'spot.obj', bytes: bytesOf('spot.obj') });
+  for (const triangles of ['faces', 'strips']) {
+    const ply = await client.request(Op.loadTarget, { fileName: `spot-${triangles}.PLY`, bytes: await spotPly(triangles) });
+    assert.equal(ply.report.ok, true, triangles);
+    assert.deepEqual(ply.report.stats, obj.report.stats, triangles);
+    assert.deepEqual([...ply.indices], [...obj.indices], `${triangles}: the same triangles, facing the same way`);
+  }
+  await assert.rejects(client.request(Op.loadTarget, { fileName: 'scan.ply', bytes: await spotPly('none') }), (e) => {
+    assert.equal(e.code, 'ply.no-faces');
+    assert.match(e.message, /no faces \(it may be a point cloud\)/);
+    return true;
+  });
+  // Cut off: early, the header's counts are more than the file holds; late, in its last face.
+  const whole = await spotPly('faces');
+  await assert.rejects(client.request(Op.loadTarget, { fileName: 'cut.ply', bytes: whole.slice(0, 5000) }), (e) => e.code === 'ply.bad-count' && /damaged or cut off/.test(e.message));
+  await assert.rejects(client.request(Op.loadTarget, { fileName: 'cut.ply', bytes: whole.slice(0, whole.byteLength - 6) }), (e) => e.code === 'ply.truncated' && /face 5855/.test(e.message));
+});
+
 test('cancel stops a request between steps', async () => {
   const client = newClient();
   await client.ready;

@@ -12,6 +12,7 @@
 
 #include "guarded.hpp"
 #include "heap_mesh.hpp"
+#include "io/mesh_file.hpp"
 #include "mesh/close_holes.hpp"
 #include "mesh/validate.hpp"
 #include "simulate/materials.hpp"
@@ -71,6 +72,21 @@ std::string closeHoles(uintptr_t positions, int numVertices, uintptr_t indices, 
   });
 }
 
+// A mesh file's bytes (length bytes at `bytes`) read by the command line's reader for its extension (io/mesh_file.hpp),
+// refused beyond maxTriangles: { positions, indices } as the file has them, or the reader's error. The app reads PLY so
+// (its triangle strips too).
+std::string readMeshFile(uintptr_t bytes, int length, const std::string& fileName, int maxTriangles) {
+  return guarded([&] {
+    billow::MeshReadOptions options;
+    options.maxTriangles = maxTriangles;
+    const std::string_view file(reinterpret_cast<const char*>(bytes), static_cast<size_t>(length));
+    const billow::TriMesh mesh = billow::readMeshBytes(file, fileName, options);
+    nlohmann::json out = nlohmann::json::object();
+    putMesh(mesh, out);
+    return out.dump();
+  });
+}
+
 // Deliberately traps the module: the worker's crash recovery is tested with it.
 void crashForTesting() { std::abort(); }
 
@@ -113,6 +129,7 @@ EMSCRIPTEN_BINDINGS(billow) {
   emscripten::function("validateTarget", &validateTarget);
   emscripten::function("thinHandles", &thinHandles);
   emscripten::function("closeHoles", &closeHoles);
+  emscripten::function("readMeshFile", &readMeshFile);
   emscripten::function("crashForTesting", &crashForTesting);
   emscripten::function("version", &version);
   emscripten::function("materialPresets", &materialPresets);

@@ -287,17 +287,22 @@ void checkCounts(const Header& h, size_t bodyBytes) {
 
 struct Target {
   const Element* vertex = nullptr;
-  const Element* face = nullptr;
+  const Element* face = nullptr;  // 'face', or where the file has none, 'tristrips' (strips is then true)
+  bool strips = false;
   int xyz[3] = {-1, -1, -1};  // property positions of x, y, z in the vertex element
-  int indices = -1;           // property position of the face's index list
+  int indices = -1;           // property position of the face's (or strips') index list
 };
 
 Target findTarget(const Header& h) {
   Target t;
+  const Element* strips = nullptr;
   for (const Element& e : h.elements) {
     if (e.name == "vertex" && !t.vertex) t.vertex = &e;
     if (e.name == "face" && !t.face) t.face = &e;
+    if (e.name == "tristrips" && !strips) strips = &e;
   }
+  // Scanned meshes of the 1990s (the Stanford and Cyberware ones) come as triangle strips instead of faces.
+  if ((!t.face || t.face->count == 0) && strips && strips->count > 0) t.face = strips, t.strips = true;
   if (!t.vertex) throw Error("ply.missing-coordinates", "The PLY file has no 'vertex' element, so no points to use.");
   for (int k = 0; k < 3; ++k) {
     const char* axis[] = {"x", "y", "z"};
@@ -315,7 +320,8 @@ Target findTarget(const Header& h) {
     if (p.isList && (p.name == "vertex_indices" || p.name == "vertex_index")) t.indices = static_cast<int>(i);
   }
   if (t.indices < 0)
-    throw Error("ply.missing-indices", "The PLY file's faces have no 'vertex_indices' list, so they join no vertices.");
+    throw Error("ply.missing-indices", std::string("The PLY file's ") + (t.strips ? "triangle strips" : "faces") +
+                                           " have no 'vertex_indices' list, so they join no vertices.");
   return t;
 }
 
@@ -324,7 +330,7 @@ void checkLimits(const Target& t, const MeshReadOptions& options) {
   if (t.vertex->count > maxVertices)
     throw Error("mesh.too-large", "The PLY file has " + std::to_string(t.vertex->count) + " vertices, more than the " +
                                       std::to_string(maxVertices) + " Billow can work with. Simplify the mesh first.");
-  if (t.face->count > options.maxTriangles)
+  if (!t.strips && t.face->count > options.maxTriangles)
     throw Error("mesh.too-large", "The PLY file has " + std::to_string(t.face->count) + " faces, more than the " +
                                       std::to_string(options.maxTriangles) +
                                       " triangles Billow can work with. Simplify the mesh first.");
@@ -382,6 +388,44 @@ void readFace(Body& body, const Target& t, long long face, std::vector<int>& cor
   }
 }
 
+// A strip's list: each vertex after the first two makes a triangle with the two before it, every second one turned
+// so that all face the same way; -1 ends a strip. Triangles with a repeated corner (how strips are joined) are left
+// out.
+void readStrips(Body& body, const Target& t, std::vector<int>& corners, const MeshReadOptions& options) {
+  const auto& props = t.face->properties;
+  for (size_t i = 0; i < props.size(); ++i) {
+    if (static_cast<int>(i) != t.indices) {
+      skipProperty(body, props[i]);
+      continue;
+    }
+    const long long n = body.integer(props[i].countType, std::numeric_limits<long long>::max() / 2,
+                                     "the number of vertices in the strips");
+    int a = -1, b = -1;
+    long long inStrip = 0;
+    for (long long k = 0; k < n; ++k) {
+      const double v = body.value(props[i].type);
+      if (v == -1) {
+        inStrip = 0;
+        continue;
+      }
+      if (!(v >= 0 && v < static_cast<double>(t.vertex->count)) || v != std::floor(v))
+        throw Error("ply.bad-index", "The triangle strips of the PLY file refer to vertex " + Body::formatNumber(v) +
+                                         ", which does not exist (" + vertexRange(t.vertex->count) + ").");
+      const int c = static_cast<int>(v);
+      if (inStrip >= 2 && a != b && b != c && a != c) {
+        if (static_cast<long long>(corners.size() / 3) >= options.maxTriangles)
+          throw Error("mesh.too-large", "The PLY file has more than " + std::to_string(options.maxTriangles) +
+                                            " triangles, more than Billow can work with. Simplify the mesh first.");
+        if (inStrip % 2 == 0)
+          corners.insert(corners.end(), {a, b, c});
+        else
+          corners.insert(corners.end(), {b, a, c});
+      }
+      a = b, b = c, ++inStrip;
+    }
+  }
+}
+
 }  // namespace
 
 TriMesh readPly(std::string_view bytes, const MeshReadOptions& options) {
@@ -400,6 +444,8 @@ TriMesh readPly(std::string_view bytes, const MeshReadOptions& options) {
       body.at(e.name, i);
       if (&e == target.vertex)
         readVertex(body, target, &mesh.V(i, 0));
+      else if (&e == target.face && target.strips)
+        readStrips(body, target, corners, options);
       else if (&e == target.face)
         readFace(body, target, i, corners, options);
       else

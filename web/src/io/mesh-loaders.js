@@ -1,9 +1,9 @@
-// Target mesh files through the three.js loaders (OBJ, STL, PLY), welded into an indexed mesh.
-// Runs inside the worker: large files never freeze the page.
+// Target mesh files, welded into an indexed mesh: OBJ and STL through the three.js loaders, PLY through the command
+// line's reader (io/ply_reader.cpp, which knows the triangle strips of scanned meshes). Runs inside the worker: large
+// files never freeze the page.
 import { BufferGeometry, Float32BufferAttribute } from 'three';
 import { OBJLoader } from 'three/addons/loaders/OBJLoader.js';
 import { STLLoader } from 'three/addons/loaders/STLLoader.js';
-import { PLYLoader } from 'three/addons/loaders/PLYLoader.js';
 import { mergeVertices } from 'three/addons/utils/BufferGeometryUtils.js';
 import { SolverError } from '../worker/protocol.js';
 
@@ -20,8 +20,9 @@ function fail(code, message) {
   throw new SolverError(code, message);
 }
 
-// Geometries from the loader, whatever it returns (OBJ gives a Group of meshes, STL/PLY one geometry).
-function geometriesOf(fileName, bytes) {
+// Geometries from the loader, whatever it returns (OBJ gives a Group of meshes, STL one geometry; PLY one mesh from
+// readMeshFile, the solver's reader: (fileName, bytes, maxTriangles) -> { positions, indices }).
+function geometriesOf(fileName, bytes, readMeshFile) {
   const ext = extensionOf(fileName);
   if (ext === 'obj') {
     const text = new TextDecoder().decode(bytes);
@@ -33,7 +34,7 @@ function geometriesOf(fileName, bytes) {
     return out;
   }
   if (ext === 'stl') return [new STLLoader().parse(bytes)];
-  if (ext === 'ply') return [new PLYLoader().parse(bytes)];
+  if (ext === 'ply') return [readMeshFile(fileName, bytes, MAX_TRIANGLES)];
   return fail(
     'mesh.unknown-format',
     `Billow cannot open "${fileName}": use a mesh in OBJ, STL or PLY format (.obj, .stl, .ply).`,
@@ -45,6 +46,12 @@ function positionsAndIndices(geometries) {
   const positions = [];
   const indices = [];
   for (const g of geometries) {
+    if (g.indices) {
+      const base = positions.length / 3;
+      for (const p of g.positions) positions.push(p);
+      for (const i of g.indices) indices.push(base + i);
+      continue;
+    }
     const pos = g.getAttribute('position');
     if (!pos) continue;
     const base = positions.length / 3;
@@ -55,14 +62,15 @@ function positionsAndIndices(geometries) {
   return { positions, indices };
 }
 
-// Parses bytes (ArrayBuffer) named fileName into { positions: Float32Array, indices: Uint32Array }.
-export function parseMesh(fileName, bytes) {
+// Parses bytes (ArrayBuffer) named fileName into { positions: Float32Array, indices: Uint32Array }; readMeshFile as
+// geometriesOf's.
+export function parseMesh(fileName, bytes, readMeshFile) {
   if (bytes.byteLength === 0) fail('mesh.empty-file', `"${fileName}" is empty.`);
   if (bytes.byteLength > MAX_FILE_BYTES)
     fail('mesh.file-too-large', `"${fileName}" is larger than ${MAX_FILE_BYTES >> 20} MB, more than Billow can open.`);
   let geometries;
   try {
-    geometries = geometriesOf(fileName, bytes);
+    geometries = geometriesOf(fileName, bytes, readMeshFile);
   } catch (error) {
     if (error instanceof SolverError) throw error;
     fail('mesh.unreadable', `"${fileName}" could not be read as a ${extensionOf(fileName).toUpperCase()} mesh. The file may be damaged.`);

@@ -4,6 +4,7 @@
 import { SolverError } from './protocol.js';
 
 const HEAP_BY_TYPE = new Map([
+  [Uint8Array, 'HEAPU8'],
   [Float64Array, 'HEAPF64'],
   [Float32Array, 'HEAPF32'],
   [Int32Array, 'HEAP32'],
@@ -116,6 +117,14 @@ export class SolverApi {
     const [pos, idx] = SolverApi.meshArrays(positions, indices);
     const reply = this.withHeap([pos, idx], (pPos, pIdx) => SolverApi.unwrap(this.module.closeHoles(pPos, pos.length / 3, pIdx, idx.length / 3)));
     return { closed: reply.closed, positions: Float64Array.from(reply.positions), indices: Uint32Array.from(reply.indices) };
+  }
+
+  // A mesh file (bytes: an ArrayBuffer) read by the command line's reader for its extension, refused beyond maxTriangles:
+  // { positions: Float64Array, indices: Uint32Array } as the file has them, or a SolverError with the reader's message.
+  readMeshFile(fileName, bytes, maxTriangles) {
+    const array = new Uint8Array(bytes);
+    const reply = this.withHeap([array], (pBytes) => SolverApi.unwrap(this.module.readMeshFile(pBytes, array.length, fileName, maxTriangles)));
+    return { positions: Float64Array.from(reply.positions), indices: Uint32Array.from(reply.indices) };
   }
 
   crashForTesting() {
