@@ -120,7 +120,7 @@ TEST(Validation, NonManifoldEdgeIsAnError) {
 }
 
 TEST(Validation, NonManifoldVertexIsAnError) {
-  // Two tetrahedra sharing one vertex only.
+  // Two tetrahedra sharing one vertex only: two shapes, not one touching itself, so the vertex is not split.
   TriMesh m;
   m.V.resize(7, 3);
   m.V << 0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1, -1, 0, 0, 0, -1, 0, 0, 0, -1;
@@ -130,6 +130,47 @@ TEST(Validation, NonManifoldVertexIsAnError) {
   EXPECT_FALSE(r.ok);
   ASSERT_NE(findIssue(r, "mesh.non-manifold-vertex"), nullptr) << toJson(r);
   EXPECT_EQ(findIssue(r, "mesh.non-manifold-vertex")->count, 1);
+}
+
+TEST(Validation, APointWhereOnePieceTouchesItselfGetsAVertexForEachPartWithANotice) {
+  // The sphere with its vertex farthest from vertex 0 welded onto vertex 0: one piece whose surface touches itself
+  // there, two fans around one vertex (as a tail tip touching a leg in a scanned animal).
+  TriMesh m = test::loadShared("sphere.obj");
+  int far = 0;
+  for (int v = 0; v < m.numVertices(); ++v)
+    if ((m.V.row(v) - m.V.row(0)).norm() > (m.V.row(far) - m.V.row(0)).norm()) far = v;
+  for (int f = 0; f < m.numTriangles(); ++f)
+    for (int c = 0; c < 3; ++c)
+      if (m.F(f, c) == far) m.F(f, c) = 0;
+  const Triangles pinched = m.F;
+  const int vertices = m.numVertices();
+  const ValidationReport r = validateTarget(m);
+  EXPECT_TRUE(r.ok) << toJson(r);
+  ASSERT_NE(findIssue(r, "mesh.pinch-split"), nullptr) << toJson(r);
+  EXPECT_EQ(findIssue(r, "mesh.pinch-split")->severity, "notice");
+  EXPECT_EQ(findIssue(r, "mesh.pinch-split")->count, 1);
+  EXPECT_EQ(r.stats.genus, 0);
+  EXPECT_TRUE(r.modified);
+  // One vertex more, where vertex 0 is; the faces are the same ones, only the far fan's corner renamed to it.
+  ASSERT_EQ(m.numVertices(), vertices + 1);
+  EXPECT_EQ(m.V.row(vertices), m.V.row(0));
+  ASSERT_EQ(m.numTriangles(), pinched.rows());
+  int renamed = 0;
+  for (int f = 0; f < m.numTriangles(); ++f)
+    for (int c = 0; c < 3; ++c)
+      if (m.F(f, c) != pinched(f, c)) {
+        EXPECT_EQ(pinched(f, c), 0);
+        EXPECT_EQ(m.F(f, c), vertices);
+        ++renamed;
+      }
+  EXPECT_GE(renamed, 3);
+  EXPECT_LT(renamed, 12);
+  // Checked again, it is as it was left.
+  const TriMesh once = m;
+  const ValidationReport again = validateTarget(m);
+  EXPECT_TRUE(again.ok);
+  EXPECT_EQ(findIssue(again, "mesh.pinch-split"), nullptr);
+  EXPECT_EQ(m.F, once.F);
 }
 
 TEST(Validation, FlippedTriangleIsTurnedAroundWithANotice) {

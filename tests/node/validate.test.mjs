@@ -94,6 +94,34 @@ test('an inside-out mesh comes back flipped with a notice', () => {
   assert.deepEqual(Array.from(result.indices), Array.from(indices));
 });
 
+test('a point where one piece touches itself gets a vertex for each part, as the CLI gives it, and the mesh is usable', async () => {
+  // The sphere with its vertex farthest from vertex 0 welded onto it (test_validate.cpp's pinched sphere).
+  const { positions, indices } = readObjText(readFileSync(`${MESHES}/sphere.obj`, 'utf8'));
+  const at = (v) => [0, 1, 2].map((k) => positions[3 * v + k]);
+  const gap = (v) => Math.hypot(...at(v).map((x, k) => x - at(0)[k]));
+  let far = 0;
+  for (let v = 0; v < positions.length / 3; v++) if (gap(v) > gap(far)) far = v;
+  const pinched = indices.map((v) => (v === far ? 0 : v));
+  const result = api.validateTarget(positions, pinched);
+  assert.equal(result.report.ok, true, JSON.stringify(result.report.issues));
+  assert.ok(result.report.issues.some((i) => i.code === 'mesh.pinch-split' && i.severity === 'notice'));
+  assert.equal(result.positions.length, positions.length + 3);
+  assert.deepEqual(Array.from(result.positions.slice(-3)), Array.from(Float32Array.from(at(0))));
+  const renamed = [...result.indices].filter((v, i) => v !== pinched[i]);
+  assert.ok(renamed.length >= 3 && renamed.every((v) => v === positions.length / 3), JSON.stringify(renamed));
+  const { writeFileSync, mkdtempSync } = await import('node:fs');
+  const dir = mkdtempSync('/tmp/billow-node-');
+  const lines = [];
+  for (let v = 0; v < positions.length; v += 3) lines.push(`v ${positions[v]} ${positions[v + 1]} ${positions[v + 2]}`);
+  for (let f = 0; f < pinched.length; f += 3) lines.push(`f ${pinched[f] + 1} ${pinched[f + 1] + 1} ${pinched[f + 2] + 1}`);
+  writeFileSync(`${dir}/pinched.obj`, lines.join('\n'));
+  try {
+    assertSameReport(result.report, nativeReport(`${dir}/pinched.obj`));
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
+});
+
 test('no heap growth over repeated validations', () => {
   const { positions, indices } = readObjText(readFileSync(`${MESHES}/spot.obj`, 'utf8'));
   api.validateTarget(positions, indices);

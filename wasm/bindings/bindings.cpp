@@ -25,7 +25,8 @@ namespace {
 using billow::bindings::guarded;
 using billow::bindings::meshFromHeap;
 
-// positions: #V*3 doubles, indices: #F*3 int32 (rewritten in place when the orientation is fixed).
+// positions: #V*3 doubles, indices: #F*3 int32 (rewritten in place when the orientation is fixed). The report, and
+// where a point the surface touched itself at got vertices of its own, "positions": all of them, the new ones last.
 std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indices, int numTriangles) {
   return guarded([&] {
     billow::TriMesh mesh = meshFromHeap(positions, numVertices, indices, numTriangles);
@@ -33,7 +34,10 @@ std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indic
     // Repaired, its triangles go back in place: as many or fewer (a triangle's copy left out: report.stats.triangles).
     if (report.modified)
       Eigen::Map<billow::Triangles>(reinterpret_cast<int*>(indices), mesh.numTriangles(), 3) = mesh.F;
-    return billow::toJson(report);
+    if (mesh.numVertices() == numVertices) return billow::toJson(report);
+    nlohmann::json out = nlohmann::json::parse(billow::toJson(report));
+    out["positions"] = std::vector<double>(mesh.V.data(), mesh.V.data() + mesh.V.size());
+    return out.dump();
   });
 }
 

@@ -7,6 +7,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <map>
 #include <nlohmann/json.hpp>
 #include <numeric>
 #include <queue>
@@ -294,30 +295,72 @@ class Validator {
   }
 
   // A vertex is manifold when its triangles form a single fan: corners at the vertex are joined
-  // whenever their triangles share an edge through it.
+  // whenever their triangles share an edge through it. Where a vertex joins several fans of one piece (a tail tip
+  // touching a leg at a point), each fan after the first gets a vertex of its own at the same place: the surface is
+  // then manifold, still touching itself there. Fans of separate pieces stay an error: they are two shapes.
   void checkVertexFans() {
-    DisjointSets corners(3 * m_.numTriangles());
+    DisjointSets corners(3 * m_.numTriangles()), pieces(m_.numTriangles());
     auto cornerAt = [&](const HalfEdge& h, int v) { return 3 * h.face + (from(h) == v ? h.local : (h.local + 1) % 3); };
     forEachEdge([&](size_t i, size_t j) {
       const int a = static_cast<int>(half_[i].key >> 32), b = static_cast<int>(half_[i].key & 0xffffffffu);
       for (size_t k = i + 1; k < j; ++k) {
         corners.unite(cornerAt(half_[i], a), cornerAt(half_[k], a));
         corners.unite(cornerAt(half_[i], b), cornerAt(half_[k], b));
+        pieces.unite(half_[i].face, half_[k].face);
       }
     });
     std::vector<int> firstRoot(m_.numVertices(), -1), fans(m_.numVertices(), 0);
+    std::vector<char> onePiece(m_.numVertices(), 1);
     for (int c = 0; c < 3 * m_.numTriangles(); ++c) {
       const int v = m_.F(c / 3, c % 3), root = corners.find(c);
       if (firstRoot[v] == -1) {
         firstRoot[v] = root;
         fans[v] = 1;
-      } else if (firstRoot[v] != root && fans[v] == 1) {
+      } else if (firstRoot[v] != root) {
         fans[v] = 2;  // at least two fans; enough to know
+        if (pieces.find(c / 3) != pieces.find(firstRoot[v] / 3)) onePiece[v] = 0;
       }
     }
-    int first = -1;
-    for (int v = 0; v < m_.numVertices(); ++v)
-      if (fans[v] > 1 && nonManifoldVertices_++ == 0) first = v;
+    const bool split = nonManifoldEdges_ == 0;
+    int first = -1, firstSplit = -1, splitCount = 0;
+    std::map<int, int> vertexOfFan;  // a fan's root -> its own vertex, for the fans after a vertex's first
+    for (int v = 0; v < m_.numVertices(); ++v) {
+      if (fans[v] < 2) continue;
+      if (split && onePiece[v]) {
+        if (splitCount++ == 0) firstSplit = v;
+      } else if (nonManifoldVertices_++ == 0) {
+        first = v;
+      }
+    }
+    if (splitCount > 0) {
+      const Eigen::Vector3d p = m_.V.row(firstSplit);
+      const int before = m_.numVertices();
+      for (int c = 0; c < 3 * m_.numTriangles(); ++c) {
+        const int v = m_.F(c / 3, c % 3), root = corners.find(c);
+        if (v >= before || fans[v] < 2 || !onePiece[v] || root == firstRoot[v]) continue;
+        auto [at, added] = vertexOfFan.try_emplace(root, m_.numVertices());
+        if (added) {
+          m_.V.conservativeResize(m_.numVertices() + 1, 3);
+          m_.V.row(at->second) = m_.V.row(v);
+        }
+        m_.F(c / 3, c % 3) = at->second;
+      }
+      const int added = m_.numVertices() - before;
+      referenced_.resize(static_cast<size_t>(m_.numVertices()), 1);
+      r_.stats.vertices += added;
+      r_.modified = true;
+      // The corners changed: the edges are gathered again (the same ones, between other vertices).
+      half_.clear(), pairs_.clear();
+      r_.stats.edges = 0, inconsistentEdges_ = 0;
+      buildEdges();
+      checkEdges();
+      add("mesh.pinch-split", "notice",
+          plural(splitCount, "point where the surface touched itself", "points where the surface touched itself") +
+              " (the first " + where(p) + ") " + (splitCount == 1 ? "was" : "were") +
+              " given a vertex for each part that meets there, so that Billow can follow the surface; the shape is "
+              "unchanged.",
+          splitCount, &p);
+    }
     if (nonManifoldVertices_ > 0) {
       const Eigen::Vector3d p = m_.V.row(first);
       add("mesh.non-manifold-vertex", "error",

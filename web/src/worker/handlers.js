@@ -22,7 +22,8 @@ export function createHandlers(api) {
   // An open mesh refused otherwise says whether that would make it usable (the error's details.closable).
   function* installTarget(positions, indices, { cutThinHandles = false, closeHoles = false } = {}) {
     yield { stage: 'checking the mesh', done: 2, total: 3 };
-    let { report, indices: fixed } = api.validateTarget(positions, indices);
+    let report, fixed;
+    ({ report, positions, indices: fixed } = api.validateTarget(positions, indices));
     const onlyHoles = (r) => r.issues.every((i) => i.severity !== 'error' || i.code === 'mesh.open');
     let holesClosed = 0;
     const facesRead = fixed.length / 3; // the file's own faces: closing and cutting append theirs after them
@@ -31,7 +32,7 @@ export function createHandlers(api) {
       const capped = api.closeHoles(positions, fixed);
       positions = Float32Array.from(capped.positions);
       holesClosed = capped.closed;
-      ({ report, indices: fixed } = api.validateTarget(positions, capped.indices));
+      ({ report, positions, indices: fixed } = api.validateTarget(positions, capped.indices));
     }
     if (!report.ok) {
       const errors = report.issues.filter((i) => i.severity === 'error');
@@ -44,7 +45,7 @@ export function createHandlers(api) {
       const found = api.thinHandles(positions, fixed, cutThinHandles);
       if (cutThinHandles && found.handles.length) {
         positions = Float32Array.from(found.positions);
-        ({ report, indices: fixed } = api.validateTarget(positions, found.indices));
+        ({ report, positions, indices: fixed } = api.validateTarget(positions, found.indices));
         report.thinHandlesCut = found.handles.length;
       } else if (!cutThinHandles) thin = found.handles;
     }

@@ -89,15 +89,16 @@ export class SolverApi {
     return [positions instanceof Float64Array ? positions : Float64Array.from(positions), indices instanceof Int32Array ? indices : Int32Array.from(indices)];
   }
 
-  // positions: #V*3 numbers, indices: #F*3 integers. Returns { report, indices } where indices is a new
-  // Uint32Array with any orientation fix applied (report.modified tells).
+  // positions: #V*3 numbers, indices: #F*3 integers. Returns { report, positions, indices } where indices is a new
+  // Uint32Array with any repair applied (report.modified tells) and positions are the ones given, or where a point
+  // the surface touched itself at got vertices of its own, a new Float32Array with them last.
   validateTarget(positions, indices) {
     const [pos, idx] = SolverApi.meshArrays(positions, indices);
     return this.withHeap([pos, idx], (pPos, pIdx) => {
-      const report = SolverApi.unwrap(this.module.validateTarget(pPos, pos.length / 3, pIdx, idx.length / 3));
+      const { positions: split, ...report } = SolverApi.unwrap(this.module.validateTarget(pPos, pos.length / 3, pIdx, idx.length / 3));
       // Repaired in place: turned triangles, and fewer where a triangle's copy was left out (report.stats.triangles).
       const fixed = report.modified ? new Uint32Array(this.fromHeap(Int32Array, pIdx, 3 * report.stats.triangles).buffer) : null;
-      return { report, indices: fixed ?? Uint32Array.from(idx) };
+      return { report, positions: split ? Float32Array.from(split) : positions, indices: fixed ?? Uint32Array.from(idx) };
     });
   }
 
