@@ -119,10 +119,11 @@ function nudged(point) {
   return { ...point, bary: bary.map((b) => b / sum) };
 }
 
+// The design's target mesh: an OBJ as the file numbers it, another format through the module's reader.
 function targetOf(design, designPath) {
   const t = design.target;
   const file = t.example ? join(HERE, '../web/public/examples', `${t.example}.obj`) : resolve(dirname(designPath), t.obj);
-  return readObjText(readFileSync(file, 'utf8'));
+  return /\.obj$/i.test(file) ? readObjText(readFileSync(file, 'utf8')) : api.readMeshFile(file, readFileSync(file), 10_000_000);
 }
 
 function run(entry) {
