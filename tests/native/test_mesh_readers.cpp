@@ -79,17 +79,18 @@ std::string stlAscii(const TriMesh& m) {
   return out.str();
 }
 
+// A PLY file's first two lines, in `format`.
+std::string plyStart(PlyFormat format) {
+  static const char* names[] = {"ascii", "binary_little_endian", "binary_big_endian"};
+  return std::string("ply\nformat ") + names[static_cast<int>(format)] + " 1.0\n";
+}
+
 // With extras: vertex normals and uchar colours, an 'edge' element between vertices and faces, a face flag
 // after the index list, and a trailing 'material' element with a list.
 std::string ply(const TriMesh& m, PlyFormat format, bool extras) {
   const bool binary = format != PlyFormat::Ascii, big = format == PlyFormat::BigEndian;
   std::ostringstream head;
-  head << "ply\nformat "
-       << (format == PlyFormat::Ascii ? "ascii"
-           : big                      ? "binary_big_endian"
-                                      : "binary_little_endian")
-       << " 1.0\n"
-       << "comment written by the Billow tests\nelement vertex " << m.numVertices() << "\n";
+  head << plyStart(format) << "comment written by the Billow tests\nelement vertex " << m.numVertices() << "\n";
   head << (extras
                ? "property float nx\nproperty double x\nproperty float32 y\nproperty float64 z\n"
                  "property float ny\nproperty float nz\nproperty uchar red\nproperty uint8 green\nproperty char blue\n"
@@ -369,11 +370,8 @@ TEST(PlyReader, SplitsPolygonsIntoFans) {
 std::string plyStrips(const Eigen::MatrixXd& V, const std::vector<int>& strip, PlyFormat format) {
   const bool binary = format != PlyFormat::Ascii, big = format == PlyFormat::BigEndian;
   std::ostringstream head;
-  head << "ply\nformat "
-       << (format == PlyFormat::Ascii ? "ascii"
-           : big                      ? "binary_big_endian"
-                                      : "binary_little_endian")
-       << " 1.0\nelement vertex " << V.rows() << "\nproperty double x\nproperty double y\nproperty double z\n"
+  head << plyStart(format) << "element vertex " << V.rows()
+       << "\nproperty double x\nproperty double y\nproperty double z\n"
        << "element tristrips 1\nproperty list int int vertex_indices\nend_header\n";
   std::string out = head.str();
   std::ostringstream text;
