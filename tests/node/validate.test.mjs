@@ -2,7 +2,7 @@
 // the native CLI's report (`billow check --json`): native and wasm must agree.
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
-import { readFileSync, rmSync } from 'node:fs';
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
 import { execFileSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { loadApi } from './load-module.mjs';
@@ -18,6 +18,20 @@ function nativeReport(path) {
   } catch (error) {
     if (error.status === 1) return JSON.parse(error.stdout); // "not usable" exits 1 with the report
     throw error;
+  }
+}
+
+// The CLI's report of a mesh given as arrays (written to an OBJ file for it).
+function nativeReportOf(positions, indices) {
+  const dir = mkdtempSync('/tmp/billow-node-');
+  const lines = [];
+  for (let v = 0; v < positions.length; v += 3) lines.push(`v ${positions[v]} ${positions[v + 1]} ${positions[v + 2]}`);
+  for (let f = 0; f < indices.length; f += 3) lines.push(`f ${indices[f] + 1} ${indices[f + 1] + 1} ${indices[f + 2] + 1}`);
+  writeFileSync(`${dir}/mesh.obj`, lines.join('\n'));
+  try {
+    return nativeReport(`${dir}/mesh.obj`);
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
   }
 }
 
@@ -47,7 +61,7 @@ for (const name of ['sphere.obj', 'spot.obj', 'blub.obj', 'octopus.obj']) {
   });
 }
 
-test('an open mesh is reported identically by wasm and native, with the hole located', async (t) => {
+test('an open mesh is reported identically by wasm and native, with the hole located', () => {
   const { positions, indices } = readObjText(readFileSync(`${MESHES}/sphere.obj`, 'utf8'));
   const open = indices.slice(3); // drop the first triangle
   const { report } = api.validateTarget(positions, open);
@@ -58,17 +72,7 @@ test('an open mesh is reported identically by wasm and native, with the hole loc
   assert.match(issue.message, /must be closed/);
   assert.equal(issue.location.length, 3);
   // The same mesh through the CLI.
-  const { writeFileSync, mkdtempSync } = await import('node:fs');
-  const dir = mkdtempSync('/tmp/billow-node-');
-  const lines = [];
-  for (let v = 0; v < positions.length; v += 3) lines.push(`v ${positions[v]} ${positions[v + 1]} ${positions[v + 2]}`);
-  for (let f = 0; f < open.length; f += 3) lines.push(`f ${open[f] + 1} ${open[f + 1] + 1} ${open[f + 2] + 1}`);
-  writeFileSync(`${dir}/open.obj`, lines.join('\n'));
-  try {
-    assertSameReport(report, nativeReport(`${dir}/open.obj`));
-  } finally {
-    rmSync(dir, { recursive: true, force: true });
-  }
+  assertSameReport(report, nativeReportOf(positions, open));
 });
 
 test('a triangle written twice comes back once, with a notice, the other faces in their order', () => {
@@ -94,7 +98,7 @@ test('an inside-out mesh comes back flipped with a notice', () => {
   assert.deepEqual(Array.from(result.indices), Array.from(indices));
 });
 
-test('a point where one piece touches itself gets a vertex for each part, as the CLI gives it, and the mesh is usable', async () => {
+test('a point where one piece touches itself gets a vertex for each part, as the CLI gives it, and the mesh is usable', () => {
   // The sphere with its vertex farthest from vertex 0 welded onto it (test_validate.cpp's pinched sphere).
   const { positions, indices } = readObjText(readFileSync(`${MESHES}/sphere.obj`, 'utf8'));
   const at = (v) => [0, 1, 2].map((k) => positions[3 * v + k]);
@@ -109,17 +113,7 @@ test('a point where one piece touches itself gets a vertex for each part, as the
   assert.deepEqual(Array.from(result.positions.slice(-3)), Array.from(Float32Array.from(at(0))));
   const renamed = [...result.indices].filter((v, i) => v !== pinched[i]);
   assert.ok(renamed.length >= 3 && renamed.every((v) => v === positions.length / 3), JSON.stringify(renamed));
-  const { writeFileSync, mkdtempSync } = await import('node:fs');
-  const dir = mkdtempSync('/tmp/billow-node-');
-  const lines = [];
-  for (let v = 0; v < positions.length; v += 3) lines.push(`v ${positions[v]} ${positions[v + 1]} ${positions[v + 2]}`);
-  for (let f = 0; f < pinched.length; f += 3) lines.push(`f ${pinched[f] + 1} ${pinched[f + 1] + 1} ${pinched[f + 2] + 1}`);
-  writeFileSync(`${dir}/pinched.obj`, lines.join('\n'));
-  try {
-    assertSameReport(result.report, nativeReport(`${dir}/pinched.obj`));
-  } finally {
-    rmSync(dir, { recursive: true, force: true });
-  }
+  assertSameReport(result.report, nativeReportOf(positions, pinched));
 });
 
 test('no heap growth over repeated validations', () => {
