@@ -182,8 +182,19 @@ export function outlineLoop(mesh, towards) {
   const loops = zeroLoops(mesh, facing);
   if (!loops.length) return null;
   const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
-  const largestMoved = split.largestMoved / (split.area[0] + split.area[1]);
-  return { loop, holes: loops.filter((l) => l !== loop), toBack: split.toNegative, toFront: split.toPositive, largestMoved, loops: loops.length, facing };
+  return { loop, holes: loops.filter((l) => l !== loop), toBack: split.toNegative, toFront: split.toPositive, largestMoved: movedShare(split), loops: loops.length, facing };
+}
+
+// outlineLoop's largestMoved alone, without tracing the contour: the largest part the outline seen from `towards` would
+// turn to the other side, a share of the surface, or null when the shape has no front or back from there.
+export function largestTurnedAway(mesh, towards) {
+  const split = splitInTwo(mesh, facingField(mesh, towards));
+  return split && movedShare(split);
+}
+
+// splitInTwo's largest moved part as a share of the surface.
+function movedShare(split) {
+  return split.largestMoved / (split.area[0] + split.area[1]);
 }
 
 // A shape with a handle seen through it (a ring face on, a letter O) has an outline of several loops: the rim

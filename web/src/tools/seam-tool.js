@@ -9,7 +9,7 @@
 // reach farther to snap or grab; the seam panel shows Finish / Close / Cancel buttons while drawing, since
 // there is no Enter key or reliable double-tap.
 import { Matrix4, Vector3 } from 'three';
-import { outlineLoop, sectionThrough, acrossHandles } from '../app/section.js';
+import { outlineLoop, sectionThrough, acrossHandles, largestTurnedAway } from '../app/section.js';
 import { bandNames, lowestPoint, outlineBandLoops } from '../app/band.js';
 import { UP_FRAMES, upOf } from '../app/up-axis.js';
 
@@ -253,15 +253,15 @@ export class SeamTool {
     this.app.commitLoops(loops, { names, note: notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null });
   }
 
-  // Where a straight view (front, side, top) leaves less than half the largest part `share` out of its outline,
+  // Where a straight view (front, side, top) leaves less than half the largest part `largest` out of its outline,
   // the note's clause that names the best, else ''.
-  straighterView(share) {
+  straighterView(largest) {
     let best = null;
     for (const [name, key] of STRAIGHT_VIEWS) {
-      const outline = outlineLoop(this.app.target, this.toTarget(this.pane.namedView(name, this.pane.group)));
-      if (outline && (!best || outline.largestMoved < best.share)) best = { name, key, share: outline.largestMoved };
+      const share = largestTurnedAway(this.app.target, this.toTarget(this.pane.namedView(name, this.pane.group)));
+      if (share !== null && (!best || share < best.share)) best = { name, key, share };
     }
-    if (!best || best.share >= share / 2) return '';
+    if (!best || best.share >= largest / 2) return '';
     const moved = best.share > 0 ? `the largest part turned away is ${percent(best.share)} of it` : 'no part turns away';
     return `; seen straight from the ${best.name} (View menu, or key ${best.key}) ${moved}`;
   }
