@@ -227,7 +227,9 @@ function assertApart(labels, label) {
 test('no two labels of the sheet view overlap: the pieces\', the sheet\'s and the seams\'', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await openKoala(page);
-  // The live optimization stops: its result would replace the pieces and their labels while they are measured.
+  // The live optimization stops: its result would replace the pieces and their labels while they are measured. It
+  // starts after the stored result is shown (once the seams are traced), so it is waited for before it is stopped.
+  await page.waitForFunction(() => window.billow.test.optimizing || window.billow.test.optimized, null, { timeout: 60000 });
   await page.evaluate(() => window.billow.test.stopWork());
   await page.click('#pattern-view [data-view="sheet"]');
   await page.waitForFunction(() => window.billow.test.panes.pattern.sheetMesh, null, { timeout: 30000 });
