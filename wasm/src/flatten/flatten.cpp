@@ -56,14 +56,14 @@ void placeOnPrincipalAxis(const Triangles& F, Points2& uv) {
 }
 
 // Interior by one Laplacian solve; falls back to uniform weights, then to the local repair.
-void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, const FlattenOptions& o, int sweeps,
-                   FlattenResult& r) {
+void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, InteriorLaplacian& laplacian,
+                   const FlattenOptions& o, int sweeps, FlattenResult& r) {
   r.interior = o.weights == LaplacianWeights::Cotangent ? "cotangent" : "uniform";
-  solveInterior(segment, isBoundary, o.weights, o.cotangentClamp, r.uv);
+  laplacian.solve(o.weights, r.uv);
   r.flippedTriangles = countFlipped(segment.F, r.uv);
   if (r.flippedTriangles > 0 && o.weights == LaplacianWeights::Cotangent) {
     Points2 uniform = r.uv;
-    solveInterior(segment, isBoundary, LaplacianWeights::Uniform, 0, uniform);
+    laplacian.solve(LaplacianWeights::Uniform, uniform);
     const int flips = countFlipped(segment.F, uniform);
     if (flips < r.flippedTriangles) {
       r.uv = uniform;
@@ -86,8 +86,9 @@ FlattenResult flattenSegment(const TriMesh& segment, const FlattenOptions& optio
   const int nb = static_cast<int>(r.boundary.size());
   std::vector<char> isBoundary(segment.numVertices(), 0);
   for (int j = 0; j < nb; ++j) isBoundary[r.boundary[j]] = 1;
+  InteriorLaplacian laplacian(segment, isBoundary, options.cotangentClamp);
   if (options.conformalAngles) {
-    const Eigen::VectorXd shift = conformalAngleShift(segment, isBoundary, options.cotangentClamp);
+    const Eigen::VectorXd shift = laplacian.conformalAngleShift();
     for (int j = 0; j < nb; ++j) targets.angle[j] += shift[r.boundary[j]];
   }
   // Eq. 14, then the interior; when the boundary is so far from convex that the interior cannot be placed
@@ -107,7 +108,7 @@ FlattenResult flattenSegment(const TriMesh& segment, const FlattenOptions& optio
     }
     // A short repair while a more convex boundary remains to be tried; the full one on the last.
     const bool last = b.convexBlend >= 1 || options.untangleSweeps == 0;
-    placeInterior(segment, isBoundary, options,
+    placeInterior(segment, isBoundary, laplacian, options,
                   last ? options.untangleSweeps : std::min(options.untangleSweeps, options.sweepsBeforeBlending), r);
     if (r.flippedTriangles == 0 || last) break;
   }

@@ -94,72 +94,68 @@ void untangleVertex(const std::vector<std::pair<int, int>>& link, Points2& uv, i
 
 }  // namespace
 
-void solveInterior(const TriMesh& segment, const std::vector<char>& isBoundary, LaplacianWeights weights, double clamp,
-                   Points2& uv) {
-  const int n = segment.numVertices();
-  std::vector<int> index(n, -1);
-  int m = 0;
-  for (int v = 0; v < n; ++v)
-    if (!isBoundary[v]) index[v] = m++;
-  if (m == 0) return;
-  const Eigen::SparseMatrix<double> W = edgeWeights(segment, weights, clamp);
-  std::vector<Triplet> t;
-  t.reserve(W.nonZeros() + m);
-  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(m, 2);
-  for (int j = 0; j < W.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(W, j); it; ++it) {
-      const int i = static_cast<int>(it.row());
-      if (index[i] < 0) continue;
-      t.emplace_back(index[i], index[i], it.value());
-      if (index[j] >= 0)
-        t.emplace_back(index[i], index[j], -it.value());
-      else
-        rhs.row(index[i]) += it.value() * uv.row(j);
-    }
-  Eigen::SparseMatrix<double> A(m, m);
-  A.setFromTriplets(t.begin(), t.end());
-  Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-  const Eigen::MatrixXd x = ldlt.solve(rhs);
-  for (int v = 0; v < n; ++v)
-    if (index[v] >= 0) uv.row(v) = x.row(index[v]);
+InteriorLaplacian::InteriorLaplacian(const TriMesh& segment, const std::vector<char>& isBoundary, double clamp)
+    : segment_(segment), isBoundary_(isBoundary), clamp_(clamp), index_(segment.numVertices(), -1) {
+  for (int v = 0; v < segment.numVertices(); ++v)
+    if (!isBoundary[v]) index_[v] = interior_++;
 }
 
-Eigen::VectorXd conformalAngleShift(const TriMesh& segment, const std::vector<char>& isBoundary, double clamp) {
-  const int n = segment.numVertices();
-  std::vector<int> index(n, -1);
-  int m = 0;
-  for (int v = 0; v < n; ++v)
-    if (!isBoundary[v]) index[v] = m++;
-  Eigen::VectorXd shift = Eigen::VectorXd::Zero(n);
-  if (m == 0) return shift;
-  Eigen::VectorXd defect = Eigen::VectorXd::Constant(m, 2 * M_PI);  // Omega_I: 2 pi minus the angle sum
-  for (int f = 0; f < segment.numTriangles(); ++f)
-    for (int c = 0; c < 3; ++c) {
-      const int v = segment.F(f, c);
-      if (index[v] < 0) continue;
-      const Eigen::Vector3d a = segment.V.row(segment.F(f, (c + 1) % 3)) - segment.V.row(v);
-      const Eigen::Vector3d b = segment.V.row(segment.F(f, (c + 2) % 3)) - segment.V.row(v);
-      defect[index[v]] -= std::atan2(a.cross(b).norm(), a.dot(b));
-    }
-  const Eigen::SparseMatrix<double> W = edgeWeights(segment, LaplacianWeights::Cotangent, clamp);
+InteriorLaplacian::System& InteriorLaplacian::system(LaplacianWeights weights) {
+  std::unique_ptr<System>& s = weights == LaplacianWeights::Cotangent ? cotangent_ : uniform_;
+  if (s) return *s;
+  s = std::make_unique<System>();
+  s->W = edgeWeights(segment_, weights, weights == LaplacianWeights::Cotangent ? clamp_ : 0);
   std::vector<Triplet> t;
-  t.reserve(W.nonZeros() + m);
-  for (int j = 0; j < W.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(W, j); it; ++it) {
+  t.reserve(s->W.nonZeros() + interior_);
+  for (int j = 0; j < s->W.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(s->W, j); it; ++it) {
       const int i = static_cast<int>(it.row());
-      if (index[i] < 0) continue;
-      t.emplace_back(index[i], index[i], it.value());
-      if (index[j] >= 0) t.emplace_back(index[i], index[j], -it.value());
+      if (index_[i] < 0) continue;
+      t.emplace_back(index_[i], index_[i], it.value());
+      if (index_[j] >= 0) t.emplace_back(index_[i], index_[j], -it.value());
     }
-  Eigen::SparseMatrix<double> A(m, m);
+  Eigen::SparseMatrix<double> A(interior_, interior_);
   A.setFromTriplets(t.begin(), t.end());
-  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> ldlt(A);
-  const Eigen::VectorXd u = ldlt.solve(defect);
-  if (ldlt.info() != Eigen::Success || !u.allFinite()) return shift;
-  for (int j = 0; j < W.outerSize(); ++j)
-    for (Eigen::SparseMatrix<double>::InnerIterator it(W, j); it; ++it) {
+  s->ldlt.compute(A);
+  return *s;
+}
+
+void InteriorLaplacian::solve(LaplacianWeights weights, Points2& uv) {
+  if (interior_ == 0) return;
+  System& s = system(weights);
+  Eigen::MatrixXd rhs = Eigen::MatrixXd::Zero(interior_, 2);
+  for (int j = 0; j < s.W.outerSize(); ++j) {
+    if (index_[j] >= 0) continue;
+    for (Eigen::SparseMatrix<double>::InnerIterator it(s.W, j); it; ++it) {
+      const int i = index_[it.row()];
+      if (i >= 0) rhs.row(i) += it.value() * uv.row(j);
+    }
+  }
+  const Eigen::MatrixXd x = s.ldlt.solve(rhs);
+  for (int v = 0; v < segment_.numVertices(); ++v)
+    if (index_[v] >= 0) uv.row(v) = x.row(index_[v]);
+}
+
+Eigen::VectorXd InteriorLaplacian::conformalAngleShift() {
+  const int n = segment_.numVertices();
+  Eigen::VectorXd shift = Eigen::VectorXd::Zero(n);
+  if (interior_ == 0) return shift;
+  Eigen::VectorXd defect = Eigen::VectorXd::Constant(interior_, 2 * M_PI);  // Omega_I: 2 pi minus the angle sum
+  for (int f = 0; f < segment_.numTriangles(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int v = segment_.F(f, c);
+      if (index_[v] < 0) continue;
+      const Eigen::Vector3d a = segment_.V.row(segment_.F(f, (c + 1) % 3)) - segment_.V.row(v);
+      const Eigen::Vector3d b = segment_.V.row(segment_.F(f, (c + 2) % 3)) - segment_.V.row(v);
+      defect[index_[v]] -= std::atan2(a.cross(b).norm(), a.dot(b));
+    }
+  System& s = system(LaplacianWeights::Cotangent);
+  const Eigen::VectorXd u = s.ldlt.solve(defect);
+  if (s.ldlt.info() != Eigen::Success || !u.allFinite()) return shift;
+  for (int j = 0; j < s.W.outerSize(); ++j)
+    for (Eigen::SparseMatrix<double>::InnerIterator it(s.W, j); it; ++it) {
       const int b = static_cast<int>(it.row());
-      if (isBoundary[b] && index[j] >= 0) shift[b] -= it.value() * u[index[j]];
+      if (isBoundary_[b] && index_[j] >= 0) shift[b] -= it.value() * u[index_[j]];
     }
   return shift;
 }

@@ -116,7 +116,8 @@ export class Panels {
       { ...optimizeArgs(this.app.design, this.app.resolution), scale: this.app.scaleFor(this.app.design), up: upOf(this.app.design) },
       {
         onProgress: (p) => {
-          // The target's side from the stream, measured whole: the record samples a fine target during a run.
+          // The target's side from the stream, measured whole (on a fine target, which the record samples during a
+          // run, at most a second before: TargetSession::optimizedDistance).
           const step = p.iteration !== undefined && p.stage === 'optimizing'
             ? `step ${p.iteration}${p.distanceRms !== undefined ? `, distance ${formatDistance({ rms: p.distanceRms, targetRms: p.distance?.targetRms ?? p.targetDistanceRms })}` : ''}${p.slidingSeams ? ', light seams sliding' : ''}`
             : null;
