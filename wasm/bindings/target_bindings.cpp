@@ -39,7 +39,8 @@
 //   t.optimizedPattern() -> billow-pattern JSON of the current panels, "inflated" = their inflated shape
 //   optimizedPositionsPtr() #V*3 f64 / optimizedVertices(): the current inflated shape (simulation vertices)
 //   optimizedTrianglesPtr() #F*3 i32 / optimizedTriangles(), optimizedOuterPtr() #F i32: the optimizer's sewn mesh
-//   t.optimizedDistance(scale, up): distanceToTarget of the optimizer's current shape on its outer surface
+//   t.optimizedDistance(scale, up): distanceToTarget of the optimizer's current shape on its outer surface (the
+//     target's side of a fine target, which the run samples, measured whole at most a tenth of the time)
 //   t.distanceToTarget(positionsPtr, numVertices, scale, surfacePtr, numSurfaceTriangles, up)
 //     -> { rms, max, diagonal }
 //     (rms and max of |d| over the diagonal of the target's box, over the corners of the #S x 3 int32 surface
