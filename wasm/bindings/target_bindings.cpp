@@ -182,7 +182,7 @@ class TargetSession {
   std::string startOptimization(const std::string& seamsJson, const std::string& optionsJson) {
     return guarded([&] {
       optimizer_.reset();
-      streamTarget_.resize(0);
+      streamTarget_.reset();
       requireOptimizationMemory(optionsJson);
       const PatternRequest request = readPatternRequest(seamsJson, optionsJson);
       const billow::BuiltPattern built = makePattern(request);
@@ -297,14 +297,17 @@ class TargetSession {
         const Eigen::VectorXd targetDistances = *measured / scale;
         return distanceJson(billow::measureDistance(mesh_, *projector_, x, outer, upAxis, &targetDistances), scale);
       }
-      if (streamTarget_.size() != mesh_.numVertices() || billow::msSince(streamTargetAt_) >= 9 * streamTargetMs_) {
+      if (!streamTarget_ || billow::msSince(streamTargetAt_) >= 9 * streamTargetMs_) {
         const billow::Clock::time_point start = billow::Clock::now();
-        billow::TwoWayDistance d = billow::measureDistance(mesh_, *projector_, x, outer, upAxis);
-        streamTarget_ = d.targetToInflated.distances;
+        streamTarget_ =
+            std::make_unique<billow::TwoWayDistance>(billow::measureDistance(mesh_, *projector_, x, outer, upAxis));
         streamTargetMs_ = billow::msSince(start), streamTargetAt_ = billow::Clock::now();
-        return distanceJson(d, scale);
+        return distanceJson(*streamTarget_, scale);
       }
-      return distanceJson(billow::measureDistance(mesh_, *projector_, x, outer, upAxis, &streamTarget_), scale);
+      billow::TwoWayDistance d = *streamTarget_;
+      d.signedDistances = billow::signedDistances(mesh_, *projector_, x);
+      d.inflatedToTarget = billow::summarizeDistances(d.signedDistances, outer, d.diagonal);
+      return distanceJson(d, scale);
     });
   }
 
@@ -613,9 +616,9 @@ class TargetSession {
   Eigen::VectorXd distances_;            // of the last distanceToTarget
   std::vector<int> uncoveredTriangles_;  // the parts of the target that shape leaves out: #U x 3 vertex indices
   std::vector<int> outer_;               // optimizedOuterPtr's copy
-  // optimizedDistance's last whole measurement of the target's side on a sampled run: per target vertex (target
-  // units), when it ended and what it took [ms].
-  Eigen::VectorXd streamTarget_;
+  // optimizedDistance's last whole measurement on a sampled run (its target's side is shown until the next), when it
+  // ended and what it took [ms].
+  std::unique_ptr<billow::TwoWayDistance> streamTarget_;
   billow::Clock::time_point streamTargetAt_;
   double streamTargetMs_ = 0;
 };
