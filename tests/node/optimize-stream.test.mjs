@@ -186,6 +186,60 @@ test('the streamed distance is the shape\'s own: the target\'s side as the optim
   session.delete();
 });
 
+// Each triangle split in four at its edges' midpoints: the same surface, four times the triangles.
+function splitInFour({ positions, indices }) {
+  const P = Array.from(positions), F = [], middle = new Map();
+  const mid = (a, b) => {
+    const key = a < b ? `${a},${b}` : `${b},${a}`;
+    if (!middle.has(key)) {
+      middle.set(key, P.length / 3);
+      for (let d = 0; d < 3; d++) P.push((P[3 * a + d] + P[3 * b + d]) / 2);
+    }
+    return middle.get(key);
+  };
+  for (let f = 0; f < indices.length; f += 3) {
+    const [a, b, c] = [indices[f], indices[f + 1], indices[f + 2]];
+    const [ab, bc, ca] = [mid(a, b), mid(b, c), mid(c, a)];
+    F.push(a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca);
+  }
+  return { positions: Float64Array.from(P), indices: Int32Array.from(F) };
+}
+
+test('on a fine target the stream measures the target\'s side whole now and then, its own side at every iterate', (t) => {
+  // 81,920 triangles: a whole measurement costs more than a step of a 300-triangle design, so most iterates show the
+  // last whole one's target side (TargetSession::optimizedDistance). Whichever they show, it is a whole measurement
+  // of this shape or of one streamed before; the shape's own side is always its own.
+  const design = JSON.parse(read('../../web/public/gallery/sphere3.billow.json'));
+  let target = readObjText(read('../../web/public/examples/sphere.obj'));
+  for (let k = 0; k < 3; k++) target = splitInFour(target);
+  const seams = design.seams.map(({ points, closed }) => ({ points, closed, weight: 1 }));
+  const session = api.targetSession();
+  session.setTarget(target.positions, target.indices);
+  const scale = 0.25;
+  assert.ok(session.startOptimization(seams, { scale, triangles: 300 }).ok);
+  const wholeOf = [];
+  let stale = 0;
+  for (let k = 0; k < 8; k++) {
+    const status = session.optimizeStep(1, 0);
+    assert.ok(status.state === 'running' || status.state === 'converged', status.message);
+    const streamed = session.optimizedDistance(scale, '+y');
+    const mesh = session.optimizedMesh();
+    const surface = [];
+    for (let f = 0; f < mesh.outer.length; f++) if (mesh.outer[f]) surface.push(...mesh.triangles.slice(3 * f, 3 * f + 3));
+    const fresh = session.distanceToTarget(session.optimizedPositions(), scale, surface, '+y');
+    wholeOf.push(fresh);
+    assert.ok(Math.abs(streamed.rms - fresh.rms) <= 1e-12 * Math.max(1, fresh.rms), `own side: ${streamed.rms} vs ${fresh.rms}`);
+    assert.deepEqual(streamed.distances, fresh.distances);
+    const same = (d) => d.targetRms === streamed.targetRms && d.targetMax === streamed.targetMax
+      && d.uncoveredTriangles.length === streamed.uncoveredTriangles.length;
+    assert.ok(wholeOf.some(same), `iteration ${status.iteration}: the target's side ${streamed.targetRms} is no shape's so far`);
+    if (!same(fresh)) stale += 1;
+    if (status.state === 'converged') break;
+  }
+  t.diagnostic(`${stale} of ${wholeOf.length} iterates showed an earlier whole measurement`);
+  session.delete();
+});
+
 test('the designer is told when the cut panels inflate clearly farther than the optimizer\'s own mesh showed', () => {
   const own = { distanceRms: 0.0073, targetDistanceRms: 0.015 };
   const note = cutPanelsNote({ ownMesh: own, distanceRms: 0.027, targetDistanceRms: 0.022 });
