@@ -81,6 +81,7 @@
 #include <iterator>
 #include <memory>
 #include <nlohmann/json.hpp>
+#include <optional>
 
 #include "guarded.hpp"
 #include "heap_mesh.hpp"
@@ -299,15 +300,14 @@ class TargetSession {
       }
       if (!streamTarget_ || billow::msSince(streamTargetAt_) >= 9 * streamTargetMs_) {
         const billow::Clock::time_point start = billow::Clock::now();
-        streamTarget_ =
-            std::make_unique<billow::TwoWayDistance>(billow::measureDistance(mesh_, *projector_, x, outer, upAxis));
+        streamTarget_ = billow::measureDistance(mesh_, *projector_, x, outer, upAxis);
         streamTargetMs_ = billow::msSince(start), streamTargetAt_ = billow::Clock::now();
-        return distanceJson(*streamTarget_, scale);
+      } else {  // this shape's own side beside the last whole measurement's target side
+        streamTarget_->signedDistances = billow::signedDistances(mesh_, *projector_, x);
+        streamTarget_->inflatedToTarget =
+            billow::summarizeDistances(streamTarget_->signedDistances, outer, streamTarget_->diagonal);
       }
-      billow::TwoWayDistance d = *streamTarget_;
-      d.signedDistances = billow::signedDistances(mesh_, *projector_, x);
-      d.inflatedToTarget = billow::summarizeDistances(d.signedDistances, outer, d.diagonal);
-      return distanceJson(d, scale);
+      return distanceJson(*streamTarget_, scale);
     });
   }
 
@@ -616,9 +616,9 @@ class TargetSession {
   Eigen::VectorXd distances_;            // of the last distanceToTarget
   std::vector<int> uncoveredTriangles_;  // the parts of the target that shape leaves out: #U x 3 vertex indices
   std::vector<int> outer_;               // optimizedOuterPtr's copy
-  // optimizedDistance's last whole measurement on a sampled run (its target's side is shown until the next), when it
-  // ended and what it took [ms].
-  std::unique_ptr<billow::TwoWayDistance> streamTarget_;
+  // optimizedDistance's last whole measurement on a sampled run (its target's side is shown until the next, its own
+  // side the latest shape's), when it ended and what it took [ms].
+  std::optional<billow::TwoWayDistance> streamTarget_;
   billow::Clock::time_point streamTargetAt_;
   double streamTargetMs_ = 0;
 };
