@@ -7,6 +7,7 @@
 #include <climits>
 #include <cstdio>
 #include <cstdlib>
+#include <map>
 #include <memory>
 #include <string>
 
@@ -60,6 +61,31 @@ inline ValidationReport expectClosedSurface(TriMesh mesh, int genus) {
 
 inline std::string dataPath(const std::string& name) { return std::string(BILLOW_TEST_DATA_DIR) + "/" + name; }
 inline std::string examplesDir() { return std::string(BILLOW_TEST_DATA_DIR) + "/../../web/public/examples"; }
+
+// Each triangle split in four at its edges' midpoints: the same surface, four times the triangles (a scan's density).
+inline TriMesh splitInFour(const TriMesh& m) {
+  std::map<std::uint64_t, int> midpoint;
+  std::vector<Eigen::Vector3d> v;
+  for (int i = 0; i < m.numVertices(); ++i) v.push_back(m.V.row(i).transpose());
+  auto middle = [&](int a, int b) {
+    const auto [it, added] = midpoint.try_emplace(edgeKey(a, b), int(v.size()));
+    if (added) v.push_back(0.5 * (v[size_t(a)] + v[size_t(b)]));
+    return it->second;
+  };
+  TriMesh out;
+  out.F.resize(4 * m.numTriangles(), 3);
+  for (int f = 0; f < m.numTriangles(); ++f) {
+    const int a = m.F(f, 0), b = m.F(f, 1), c = m.F(f, 2);
+    const int ab = middle(a, b), bc = middle(b, c), ca = middle(c, a);
+    out.F.row(4 * f) = Eigen::Vector3i(a, ab, ca);
+    out.F.row(4 * f + 1) = Eigen::Vector3i(ab, b, bc);
+    out.F.row(4 * f + 2) = Eigen::Vector3i(ca, bc, c);
+    out.F.row(4 * f + 3) = Eigen::Vector3i(ab, bc, ca);
+  }
+  out.V.resize(int(v.size()), 3);
+  for (size_t i = 0; i < v.size(); ++i) out.V.row(int(i)) = v[i].transpose();
+  return out;
+}
 
 // The longest optimizer runs (9-17 s each in wasm, most of the wasm suite's time) are tested natively only: the
 // wasm build runs the same optimizer in the node and end-to-end suites.
