@@ -312,6 +312,85 @@ TEST(SeamLayouts, ALayoutWithMorePanelsThanAskedForIsRefusedBeforeItIsBuilt) {
   EXPECT_EQ(lookPromise(look), look.targetToInflated);
 }
 
+// The seam a loop makes on a scene's target, or an open one through these surface points.
+DesignSeam seamThrough(const std::vector<SurfacePoint>& points, bool closed) {
+  DesignSeam seam;
+  seam.closed = closed;
+  for (const SurfacePoint& p : points) {
+    DesignPoint d;
+    d.onSurface = true, d.surface = p;
+    seam.points.push_back(d);
+  }
+  return seam;
+}
+
+// The seam ends that reach no other seam.
+int danglingEnds(const Segmentation& s) {
+  return int(
+      std::count_if(s.junctions.begin(), s.junctions.end(), [](const SeamJunction& j) { return j.seamEdges == 1; }));
+}
+
+TEST(SeamLayouts, AFineTargetIsLaidOnACopyWhoseSeamsMeetOnTheTargetAsOnTheCopy) {
+  // The cow split twice in four (93,696 triangles, more than twice the copy's).
+  const auto scene = test::sceneOf(test::splitInFour(test::splitInFour(test::loadShared("spot.obj"))));
+  const auto copy = suggestionScene(*scene);
+  ASSERT_TRUE(copy);
+  EXPECT_NEAR(copy->target.numTriangles(), kSuggestionTargetTriangles, 2);
+  EXPECT_EQ(copy->scale, scene->scale);
+  EXPECT_FALSE(suggestionScene(*copy)) << "a target no finer than twice the copy is laid on itself";
+  // On the copy: a loop across its longest axis, and a seam from one of its points between control points, over
+  // the far end of that axis, to another (a cut ending on a limb's loop): three segments.
+  const TriMesh& c = copy->target;
+  Eigen::Index axis = 0;
+  (c.V.colwise().maxCoeff() - c.V.colwise().minCoeff()).maxCoeff(&axis);
+  const Eigen::Vector3d normal = Eigen::Vector3d::Unit(axis);
+  std::vector<SectionLoop> loops = planeSection(c, normal, 0.5 * (c.V.col(axis).maxCoeff() + c.V.col(axis).minCoeff()));
+  ASSERT_FALSE(loops.empty());
+  const SectionLoop& loop =
+      *std::max_element(loops.begin(), loops.end(),
+                        [](const SectionLoop& a, const SectionLoop& b) { return loopLength(a) < loopLength(b); });
+  const double size = test::boxDiagonal(c);
+  copy->design.seams = {seamThrough(sectionSeamPoints(c, loop, 0.02 * size), true)};
+  traceDesignSeams(*copy);
+  const SeamCurve& curve = copy->curves[0];
+  auto betweenControls = [&](double share) {
+    int i = int(share * double(curve.points.size()));
+    while (std::count(curve.controlIndices.begin(), curve.controlIndices.end(), i)) ++i;
+    return curve.points[size_t(i)].point;
+  };
+  Eigen::Index tip = 0;
+  c.V.col(axis).maxCoeff(&tip);
+  SurfacePoint far;
+  for (int f = 0; f < c.numTriangles() && far.face < 0; ++f)
+    for (int k = 0; k < 3; ++k)
+      if (c.F(f, k) == int(tip)) far.face = f, far.bary = Eigen::Vector3d::Unit(k);
+  const std::vector<DesignSeam> seams = {copy->design.seams[0],
+                                         seamThrough({betweenControls(0.2), far, betweenControls(0.7)}, false)};
+  copy->design.seams = seams;
+  traceDesignSeams(*copy);
+  segmentDesignScene(*copy);
+  ASSERT_TRUE(copy->segmentation.ok());
+  ASSERT_EQ(copy->segmentation.segments.size(), 3u);
+  ASSERT_EQ(danglingEnds(copy->segmentation), 0);
+
+  // Carried to the target, its ends lie on the loop as traced there, where projecting them alone would not.
+  scene->design.seams = carriedSeams(seams, *copy, *scene);
+  traceDesignSeams(*scene);
+  segmentDesignScene(*scene);
+  EXPECT_TRUE(scene->segmentation.ok());
+  ASSERT_EQ(scene->segmentation.segments.size(), 3u);
+  for (const Segment& s : scene->segmentation.segments) EXPECT_TRUE(s.isDisk);
+  EXPECT_EQ(danglingEnds(scene->segmentation), 0);
+  for (const size_t k : {size_t(0), size_t(2)}) {
+    const Eigen::Vector3d end = position(scene->target, scene->design.seams[1].points[k].surface);
+    const Eigen::Vector3d projected =
+        position(scene->target, scene->projector->project(position(c, seams[1].points[k].surface)));
+    EXPECT_LT(snapToSeams(scene->target, scene->topology, end, {scene->curves[0]}, size).distance, 1e-12 * size);
+    EXPECT_GT(snapToSeams(scene->target, scene->topology, projected, {scene->curves[0]}, size).distance, 1e-9 * size)
+        << "the end projected alone would lie on the loop: the test shows nothing";
+  }
+}
+
 #ifndef __EMSCRIPTEN__
 TEST(SuggestCommand, WritesRankedLayoutsThatOpenAsDesigns) {
   namespace fs = std::filesystem;

@@ -15,3 +15,22 @@ export function readObjText(text) {
 // The meshes of ../shared/meshes (SOURCES.md), by file name.
 export const SHARED_MESHES = new URL('../../../shared/meshes/', import.meta.url);
 export const loadSharedMesh = (name) => readObjText(readFileSync(new URL(name, SHARED_MESHES), 'utf8'));
+
+// Each triangle split in four at its edges' midpoints: the same surface, four times the triangles.
+export function splitInFour({ positions, indices }) {
+  const P = Array.from(positions), F = [], middle = new Map();
+  const mid = (a, b) => {
+    const key = a < b ? `${a},${b}` : `${b},${a}`;
+    if (!middle.has(key)) {
+      middle.set(key, P.length / 3);
+      for (let d = 0; d < 3; d++) P.push((P[3 * a + d] + P[3 * b + d]) / 2);
+    }
+    return middle.get(key);
+  };
+  for (let f = 0; f < indices.length; f += 3) {
+    const [a, b, c] = [indices[f], indices[f + 1], indices[f + 2]];
+    const [ab, bc, ca] = [mid(a, b), mid(b, c), mid(c, a)];
+    F.push(a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca);
+  }
+  return { positions: Float64Array.from(P), indices: Int32Array.from(F) };
+}

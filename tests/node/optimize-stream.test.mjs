@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
-import { readObjText } from './obj.mjs';
+import { readObjText, splitInFour } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
 import { cutPanelsNote } from '../../web/src/app/panels.js';
 
@@ -178,24 +178,6 @@ test('the streamed distance is the shape\'s own: the target\'s side as the optim
   session.delete();
 });
 
-// Each triangle split in four at its edges' midpoints: the same surface, four times the triangles.
-function splitInFour({ positions, indices }) {
-  const P = Array.from(positions), F = [], middle = new Map();
-  const mid = (a, b) => {
-    const key = a < b ? `${a},${b}` : `${b},${a}`;
-    if (!middle.has(key)) {
-      middle.set(key, P.length / 3);
-      for (let d = 0; d < 3; d++) P.push((P[3 * a + d] + P[3 * b + d]) / 2);
-    }
-    return middle.get(key);
-  };
-  for (let f = 0; f < indices.length; f += 3) {
-    const [a, b, c] = [indices[f], indices[f + 1], indices[f + 2]];
-    const [ab, bc, ca] = [mid(a, b), mid(b, c), mid(c, a)];
-    F.push(a, ab, ca, ab, b, bc, ca, bc, c, ab, bc, ca);
-  }
-  return { positions: Float64Array.from(P), indices: Int32Array.from(F) };
-}
 
 test('on a fine target the stream measures the target\'s side whole now and then, its own side at every iterate', (t) => {
   // 81,920 triangles: a whole measurement costs more than a step of a 300-triangle design, so most iterates show the

@@ -5,7 +5,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
-import { readObjText, loadSharedMesh } from './obj.mjs';
+import { readObjText, loadSharedMesh, splitInFour } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
 import { ErrorCode, Op, SolverError } from '../../web/src/worker/protocol.js';
 import { better, suggestLayouts } from '../../web/src/app/suggest-run.js';
@@ -89,6 +89,7 @@ test('layouts for four panels of the sphere come best first, each as seams of su
     assert.equal(layout.description, '', layout.name);
     if (k > 0) assert.ok(layout.distance >= result.layouts[k - 1].distance, 'best first');
     assertBalloon(layout, 0.25);
+    assert.equal(layout.copySeams, undefined, 'laid on the target itself');
     assert.ok(layout.seams.length >= 1);
     for (const seam of layout.seams) {
       assert.equal(typeof seam.closed, 'boolean');
@@ -125,6 +126,36 @@ test('layouts for four panels of the sphere come best first, each as seams of su
   assert.equal(chosen.size, 3);
   assert.ok(result.layouts.every((l) => chosen.has(l.name)), 'the optimized are the chosen');
   assert.equal(progress.findLast((p) => p.stage === 'optimizing the most promising layouts').total, chosen.size);
+});
+
+test('a fine target\'s layouts are laid on a simplified copy and come as seams on the target that cut it as they cut the copy', async () => {
+  // The sphere split three times in four: 81,920 triangles, a scan's density (the copy has 20,000).
+  let target = readObjText(read('../../web/public/examples/sphere.obj'));
+  for (let k = 0; k < 3; k++) target = splitInFour(target);
+  const triangles = target.indices.length / 3;
+  const handlers = createHandlers(api);
+  for (const _ of handlers.setTarget({ positions: target.positions, indices: target.indices }));
+  const client = inThreadClient(api);
+  await client.request(Op.setTarget, { positions: target.positions, indices: target.indices });
+  const progress = [];
+  const result = await suggest([client], { panels: 4, scale: 0.25, triangles: 400, maxIterations: 8, optimize: 2 }, progress);
+  assert.ok(result.layouts.length >= 1, `${result.layouts.length} layouts`);
+  const looks = progress.filter((p) => p.look).map((p) => p.look);
+  for (const layout of [...looks, ...result.layouts]) {
+    // Its seams on the target, point for point those on the copy the worker optimizes from.
+    assert.ok(layout.copySeams?.length === layout.seams.length, `${layout.name}: its seams on the copy`);
+    const onTarget = layout.seams.flatMap((s) => s.points.map((p) => p.face));
+    const onCopy = layout.copySeams.flatMap((s) => s.points.map((p) => p.face));
+    assert.equal(onTarget.length, onCopy.length, layout.name);
+    assert.ok(onTarget.every((f) => Number.isInteger(f) && f >= 0 && f < triangles), layout.name);
+    assert.ok(onCopy.every((f) => Number.isInteger(f) && f >= 0 && f <= 20002), layout.name);
+    assert.ok(onTarget.some((f) => f > 20002), `${layout.name}: on the target's own triangles`);
+    // They cut the target into its panels, without a problem (their ends on other seams still on them).
+    const cut = drive(handlers.segment({ seams: layout.seams }));
+    assert.equal(cut.segments.length, layout.panels, layout.name);
+    assert.deepEqual(cut.problems, [], layout.name);
+  }
+  for (const layout of result.layouts) assert.ok(layout.distance > 0 && layout.distance < 0.03, `${layout.name}: ${layout.distance}`);
 });
 
 test('the looks optimized are the most promising, at most three of a family, as the command line chooses them', () => {

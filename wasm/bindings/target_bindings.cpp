@@ -133,6 +133,8 @@ json balloonJson(const billow::LayoutBalloon& b) {
 }
 
 class TargetSession {
+  struct Suggestion;  // a seam suggestion under way (below)
+
  public:
   TargetSession() = default;
 
@@ -419,10 +421,12 @@ class TargetSession {
       const PatternRequest request = readPatternRequest(keptSeamsJson, optionsJson);
       const json o = parse(optionsJson);
       auto s = std::make_unique<Suggestion>();
-      s->kept = request.design.seams;
       billow::Design design = request.design;
       design.scale = request.scale;
-      s->scene = billow::makeTargetScene(design, mesh_);
+      s->target = billow::makeTargetScene(design, mesh_);
+      s->copy = billow::suggestionScene(*s->target);
+      s->keptOnTarget = request.design.seams;
+      s->kept = s->copy ? billow::carriedSeams(s->keptOnTarget, *s->target, *s->copy) : s->keptOnTarget;
       s->evaluate.triangles = request.triangles;
       if (o.contains("fabrication") && o["fabrication"].is_object())
         s->evaluate.cut = billow::readExportOptionsJson(o["fabrication"]);
@@ -437,7 +441,7 @@ class TargetSession {
         layout.symmetryAxis = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
       }
       s->panels = layout.panels;
-      s->proposals = billow::proposeLayouts(s->scene->target, layout);
+      s->proposals = billow::proposeLayouts(s->laid().target, layout);
       json names = json::array();
       for (const billow::LayoutProposal& p : s->proposals) names.push_back(p.name);
       suggest_ = std::move(s);
@@ -454,14 +458,15 @@ class TargetSession {
     return guarded([&] {
       Suggestion& s = startedSuggestion(index);
       const billow::LayoutEvaluation e =
-          billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, {}, s.evaluate);
-      json look = layoutJson(e, s.proposals[index].name);
+          billow::lookAtLayout(s.laid(), s.proposals[index], s.kept, s.panels, {}, s.evaluate);
+      json look = layoutJson(e, s.proposals[index].name, s);
       look["family"] = billow::layoutFamily(s.proposals[index]);
       return look.dump();
     });
   }
 
-  // Layout `index` optimized, from the seams its look ended with (any worker's: several share a suggestion).
+  // Layout `index` optimized, from the seams its look ended with (any worker's: several share a suggestion), as they
+  // lie on the scene the suggestion is laid on (a look's `copySeams` where it has them).
   std::string suggestOptimize(int index, const std::string& seamsJson, const std::string& connectionsJson) {
     return guarded([&] {
       Suggestion& s = startedSuggestion(index);
@@ -470,8 +475,8 @@ class TargetSession {
       const std::vector<billow::DesignConnection> connections =
           billow::readDesignConnections(parse(connectionsJson), seams.size());
       const billow::LayoutEvaluation e =
-          billow::evaluateLayout(*s.scene, seams, int(seams.size()), s.evaluate, connections);
-      return layoutJson(e, s.proposals[index].name).dump();
+          billow::evaluateLayout(s.laid(), seams, int(seams.size()), s.evaluate, connections);
+      return layoutJson(e, s.proposals[index].name, s).dump();
     });
   }
 
@@ -563,36 +568,46 @@ class TargetSession {
     scale_ = scale;
   }
 
-  // A suggestion under way: the target scaled as asked, the designer's seams kept, the layouts and the seams each
-  // first look settled on (opened into panels; empty where it failed).
-  static json layoutJson(const billow::LayoutEvaluation& e, const std::string& name) {
-    json seams = json::array();
-    for (const billow::DesignSeam& seam : e.seams) seams.push_back(billow::designSeamJson(seam));
+  // A layout as the page takes it: `seams` on the target; laid on a copy of it, also `copySeams` as they lie there, which
+  // suggestOptimize takes back.
+  static json layoutJson(const billow::LayoutEvaluation& e, const std::string& name, const Suggestion& s) {
+    json seams = json::array(), copySeams = json::array();
+    const std::vector<billow::DesignSeam> onTarget =
+        s.copy && e.ok ? billow::carriedSeams(e.seams, *s.copy, *s.target, s.keptOnTarget) : e.seams;
+    for (const billow::DesignSeam& seam : onTarget) seams.push_back(billow::designSeamJson(seam));
+    if (s.copy)
+      for (const billow::DesignSeam& seam : e.seams) copySeams.push_back(billow::designSeamJson(seam));
     json connections = json::array();
     for (const billow::DesignConnection& c : e.connections) connections.push_back(c.seams);
-    return json({{"ok", e.ok},
-                 {"problem", e.problem},
-                 {"name", name},
-                 {"description", e.description()},
-                 {"panels", e.panels},
-                 {"seamLength", e.seamLength},
-                 {"sheetUse", e.sheetUse},
-                 {"sheetNeeded", e.sheetNeeded},
-                 {"distance", e.distance},
-                 {"inflatedToTarget", e.inflatedToTarget},
-                 {"targetToInflated", e.targetToInflated},
-                 {"rank", billow::layoutRank(e)},
-                 {"lookRank", billow::lookRank(e)},
-                 {"iterations", e.iterations},
-                 {"ms", e.ms},
-                 {"seams", e.ok ? seams : json::array()},
-                 {"connections", e.ok ? connections : json::array()},
-                 {"balloon", e.ok ? balloonJson(e.balloon) : json(nullptr)}});
+    json out({{"ok", e.ok},
+              {"problem", e.problem},
+              {"name", name},
+              {"description", e.description()},
+              {"panels", e.panels},
+              {"seamLength", e.seamLength},
+              {"sheetUse", e.sheetUse},
+              {"sheetNeeded", e.sheetNeeded},
+              {"distance", e.distance},
+              {"inflatedToTarget", e.inflatedToTarget},
+              {"targetToInflated", e.targetToInflated},
+              {"rank", billow::layoutRank(e)},
+              {"lookRank", billow::lookRank(e)},
+              {"iterations", e.iterations},
+              {"ms", e.ms},
+              {"seams", e.ok ? seams : json::array()},
+              {"connections", e.ok ? connections : json::array()},
+              {"balloon", e.ok ? balloonJson(e.balloon) : json(nullptr)}});
+    if (s.copy && e.ok) out["copySeams"] = copySeams;
+    return out;
   }
 
+  // A suggestion under way: the target scaled as asked (and its copy), the designer's seams kept, the layouts.
   struct Suggestion {
-    std::unique_ptr<billow::DesignScene> scene;
-    std::vector<billow::DesignSeam> kept;
+    std::unique_ptr<billow::DesignScene> target;
+    // A fine target's simplified copy the layouts are laid on (suggest/seam_layouts.hpp suggestionScene), or null.
+    std::unique_ptr<billow::DesignScene> copy;
+    billow::DesignScene& laid() const { return copy ? *copy : *target; }
+    std::vector<billow::DesignSeam> keptOnTarget, kept;  // the designer's seams kept, on the target and as laid
     std::vector<billow::LayoutProposal> proposals;
     billow::EvaluateOptions evaluate;
     int panels = 0;  // at most, as asked

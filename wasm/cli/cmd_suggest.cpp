@@ -137,8 +137,16 @@ int suggestCommand(const std::vector<std::string>& argv) {
                   "this shape is not its own mirror image across the middle of its box along x, y or z, so no layout "
                   "can keep a symmetry it does not have: leave out --symmetry");
   }
-  const std::vector<DesignSeam> kept = args.has("--keep-seams") ? input.seams : std::vector<DesignSeam>{};
-  const std::vector<LayoutProposal> proposals = proposeLayouts(scene->target, request);
+  // A fine target's layouts are laid on a simplified copy of it, the designer's seams carried there, and theirs back.
+  const std::unique_ptr<DesignScene> copy = suggestionScene(*scene);
+  DesignScene& laid = copy ? *copy : *scene;
+  const std::vector<DesignSeam> kept = !args.has("--keep-seams") ? std::vector<DesignSeam>{}
+                                       : copy                    ? carriedSeams(input.seams, *scene, *copy)
+                                                                 : input.seams;
+  if (copy && !quiet)
+    std::fprintf(stderr, "%s: %d triangles, the layouts laid on a copy of %d\n", args.positional[0].c_str(),
+                 scene->target.numTriangles(), copy->target.numTriangles());
+  const std::vector<LayoutProposal> proposals = proposeLayouts(laid.target, request);
   if (!quiet)
     std::fprintf(stderr, "%s: %zu layouts of at most %d panels to try%s\n", args.positional[0].c_str(),
                  proposals.size(), request.panels,
@@ -157,7 +165,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   for (size_t i = 0; i < proposals.size(); ++i) {
     Tried t;
     t.proposal = &proposals[i];
-    t.first = lookAtLayout(*scene, proposals[i], kept, request.panels, lookedSeams, evaluate);
+    t.first = lookAtLayout(laid, proposals[i], kept, request.panels, lookedSeams, evaluate);
     if (t.first.ok) lookedSeams.push_back(t.first.seams);
     if (!quiet)
       std::fprintf(
@@ -173,7 +181,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   for (int i : looksToOptimize(looks, families, optimized)) looked.push_back(&tried[i]);
   for (size_t i = 0; i < looked.size(); ++i) {
     Tried& t = *looked[i];
-    t.result = evaluateLayout(*scene, t.first.seams, int(t.first.seams.size()), evaluate, t.first.connections);
+    t.result = evaluateLayout(laid, t.first.seams, int(t.first.seams.size()), evaluate, t.first.connections);
     if (!quiet) {
       if (t.result.ok)
         std::fprintf(stderr, "  optimize %zu/%zu  %-54s %2d panels, seams %.2f m, distance %.2f %% (%.1f s)\n", i + 1,
@@ -199,7 +207,8 @@ int suggestCommand(const std::vector<std::string>& argv) {
       design.extra.erase("seams");
       design.connections.clear();
     }
-    design.seams = t.result.seams;
+    design.seams =
+        copy ? carriedSeams(t.result.seams, *copy, *scene, kept.empty() ? kept : input.seams) : t.result.seams;
     addedFacePointsAsPositions(*scene, design.seams);
     design.connections.insert(design.connections.end(), t.result.connections.begin(), t.result.connections.end());
     if (request.symmetryAxis >= 0) design.extra["symmetry"] = {{"axis", std::string(1, "xyz"[request.symmetryAxis])}};
@@ -254,7 +263,7 @@ int suggestCommand(const std::vector<std::string>& argv) {
   }
   if (ranked.empty()) {
     // Each handle needs a seam around it, and a thin one cannot have a panel round it: more panels will not help.
-    const size_t thin = input.target.cutThinHandles ? 0 : thinHandles(scene->target).size();
+    const size_t thin = input.target.cutThinHandles ? 0 : thinHandles(laid.target).size();
     const std::string why = thin ? "; the shape has " + std::to_string(thin) + " thin handle" + (thin > 1 ? "s" : "") +
                                        " no panel can follow: --cut-thin-handles cuts through " +
                                        (thin > 1 ? "them" : "it")

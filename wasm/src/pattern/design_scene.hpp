@@ -45,6 +45,12 @@ std::unique_ptr<DesignScene> makeTargetScene(const Design& design, const TriMesh
 void addedFacePointsAsPositions(const DesignScene& scene, std::vector<DesignSeam>& seams);
 // The seams placed on it (designSeamSpecs: triangles it has, 3D points near it) and traced.
 void traceDesignSeams(DesignScene& scene);
+// `seams` laid on `from` as they lie on `to`, a mesh of the same surface (a simplified copy of a fine target, or the
+// target it copies), each control point projected onto `to`; an open seam's end that lies on another seam's line on
+// `from` (a cut ending on a limb's loop) is put on that seam's line as traced on `to`, so that the two still meet.
+// The first onTo.size() seams are given as they lie on `to` already (the designer's own), taken as they are.
+std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const DesignScene& from,
+                                     const DesignScene& to, const std::vector<DesignSeam>& onTo = {});
 // The target cut along them.
 void segmentDesignScene(DesignScene& scene);
 

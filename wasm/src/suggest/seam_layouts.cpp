@@ -11,6 +11,7 @@
 #include <optional>
 
 #include "export/layout.hpp"
+#include "mesh/simplify.hpp"
 #include "optimize/optimized_pattern.hpp"
 #include "optimize/pattern_optimizer.hpp"
 #include "optimize/stopping_rule.hpp"
@@ -1387,6 +1388,17 @@ LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal
   if (look.ok) measureLayout(scene, look, options, int(kept.size()), panelsAtMost);
   look.ms = msSince(t0);
   return look;
+}
+
+std::unique_ptr<DesignScene> suggestionScene(const DesignScene& scene) {
+  if (scene.target.numTriangles() <= 2 * kSuggestionTargetTriangles) return nullptr;
+  Design design = scene.design;
+  design.seams.clear();
+  design.connections.clear();
+  design.scale = scene.scale;
+  TriMesh copy = simplifiedCopy(scene.target, kSuggestionTargetTriangles);
+  copy.V /= scene.scale;
+  return makeTargetScene(design, copy);
 }
 
 }  // namespace billow

@@ -16,6 +16,7 @@
 #pragma once
 #include <array>
 #include <functional>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -78,6 +79,16 @@ int designSymmetryAxis(const Design& design);
 // The target's own axis across whose box mid-plane the target is its own mirror image (its vertices reflected lie
 // within `tolerance` x its diagonal of its surface, RMS), the closest of the three; -1 when none is.
 int mirrorSymmetryAxis(const TriMesh& target, const SurfaceProjector& projector, double tolerance = 0.01);
+
+// A fine target (a scan, hundreds of thousands of triangles) has its layouts proposed, looked at and optimized on a
+// copy simplified to this many triangles (mesh/simplify.hpp), where it has more than twice as many; they are compared
+// at 1,000 triangles, and the copy lies within about 0.1 % of the target's diagonal of it (bench/README.md "Suggested
+// seam layouts": the figures). Its seams are carried back to the target (carriedSeams).
+constexpr int kSuggestionTargetTriangles = 10000;
+
+// The scene the layouts for `scene` are laid on: a copy of its target simplified to kSuggestionTargetTriangles, at its
+// scale, without seams; null where the target is not more than twice that fine (the layouts are laid on it).
+std::unique_ptr<DesignScene> suggestionScene(const DesignScene& scene);
 
 // The layouts worth trying for `request` on `target` (its own coordinates), each plane set once.
 std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRequest& request);

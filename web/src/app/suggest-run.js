@@ -73,8 +73,9 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
     await Promise.all(
       clients.map(async (client) => {
         for (let next = queue.shift(); next; next = queue.shift()) {
-          const { index, seams, connections } = next;
-          const layout = await call(client, Op.suggestOptimize, { ...args, index, seams, connections });
+          // A fine target's layouts are laid on a simplified copy of it: optimized from their seams there.
+          const { index, seams, copySeams, connections } = next;
+          const layout = await call(client, Op.suggestOptimize, { ...args, index, seams: copySeams ?? seams, connections });
           optimized++;
           if (!layout.ok) notUsed.push({ name: next.name, why: layout.problem });
           else layouts.push({ ...layout, description: next.description }); // what its look did to its sections

@@ -325,8 +325,10 @@ export class TargetSession {
   // Suggested seam layouts: kept (the designer's seams the layouts add to), options: buildPattern's and { panels,
   // symmetry ('x' | 'y' | 'z' | null), maxIterations } -> { proposals: [name] }; then suggestLook(i), a first look at
   // layout i, and suggestOptimize(i, seams, connections), it optimized from the seams and internal connections its look
-  // ended with (a look of any worker's): { ok, problem, name, panels, seamLength,
-  // sheetUse, distance, inflatedToTarget, targetToInflated, iterations, ms, seams, connections, balloon }, balloon its inflated
+  // ended with (a look of any worker's; its `copySeams` where it has them): { ok, problem, name, panels, seamLength,
+  // sheetUse, distance, inflatedToTarget, targetToInflated, iterations, ms, seams, copySeams, connections, balloon },
+  // copySeams the same seams on the simplified copy of a fine target the layouts are laid on (absent where they are
+  // laid on the target itself: suggest/seam_layouts.hpp suggestionScene), balloon its inflated
   // outer surface for the card's picture: { positions #V*3 [m], triangles #F*3, distance #V (signed, over the
   // target's diagonal), panel #F } as plain arrays (typed ones would be transferred away with the progress message
   // that brings a layout before the reply brings it again).
