@@ -156,6 +156,16 @@ test('a fine target\'s layouts are laid on a simplified copy and come as seams o
     assert.deepEqual(cut.problems, [], layout.name);
   }
   for (const layout of result.layouts) assert.ok(layout.distance > 0 && layout.distance < 0.03, `${layout.name}: ${layout.distance}`);
+  // Asked again for fewer panels (the worker's copy serves again), the layouts are the target's as well.
+  const again = await suggest([client], { panels: 2, scale: 0.25, triangles: 400, maxIterations: 8, optimize: 2 });
+  assert.ok(again.layouts.length >= 1, `${again.layouts.length} layouts`);
+  for (const layout of again.layouts) {
+    assert.equal(layout.panels, 2, layout.name);
+    assert.ok(layout.copySeams?.length === layout.seams.length, layout.name);
+    const cut = drive(handlers.segment({ seams: layout.seams }));
+    assert.equal(cut.segments.length, 2, layout.name);
+    assert.deepEqual(cut.problems, [], layout.name);
+  }
 });
 
 test('the looks optimized are the most promising, at most three of a family, as the command line chooses them', () => {

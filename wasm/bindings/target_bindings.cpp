@@ -417,14 +417,26 @@ class TargetSession {
 
   std::string suggestStart(const std::string& keptSeamsJson, const std::string& optionsJson) {
     return guarded([&] {
-      suggest_.reset();
+      // The target's scene and copy of the last suggestion at this size serve again (the same target: a new one
+      // resets the suggestion), the designer's seams and settings taken anew: another panel count starts at once.
+      std::unique_ptr<Suggestion> last = std::move(suggest_);
       const PatternRequest request = readPatternRequest(keptSeamsJson, optionsJson);
       const json o = parse(optionsJson);
       auto s = std::make_unique<Suggestion>();
       billow::Design design = request.design;
       design.scale = request.scale;
-      s->target = billow::makeTargetScene(design, mesh_);
-      s->copy = billow::suggestionScene(*s->target);
+      if (last && last->target->scale == design.scale) {
+        s->target = std::move(last->target), s->copy = std::move(last->copy);
+        s->target->design = design;
+        if (s->copy) {
+          s->copy->design = design;
+          s->copy->design.seams.clear(), s->copy->design.connections.clear();
+        }
+      } else {
+        s->target = billow::makeTargetScene(design, mesh_);
+        s->copy = billow::suggestionScene(*s->target);
+      }
+      last.reset();
       s->keptOnTarget = request.design.seams;
       s->kept = s->copy ? billow::carriedSeams(s->keptOnTarget, *s->target, *s->copy) : s->keptOnTarget;
       s->evaluate.triangles = request.triangles;
@@ -568,8 +580,8 @@ class TargetSession {
     scale_ = scale;
   }
 
-  // A layout as the page takes it: `seams` on the target; laid on a copy of it, also `copySeams` as they lie there, which
-  // suggestOptimize takes back.
+  // A layout as the page takes it: `seams` on the target; laid on a copy of it, also `copySeams` as they lie there,
+  // which suggestOptimize takes back.
   static json layoutJson(const billow::LayoutEvaluation& e, const std::string& name, const Suggestion& s) {
     json seams = json::array(), copySeams = json::array();
     const std::vector<billow::DesignSeam> onTarget =
