@@ -332,12 +332,15 @@ int danglingEnds(const Segmentation& s) {
 
 TEST(SeamLayouts, AFineTargetIsLaidOnACopyWhoseSeamsMeetOnTheTargetAsOnTheCopy) {
   // The cow split twice in four (93,696 triangles, more than twice the copy's).
-  const auto scene = test::sceneOf(test::splitInFour(test::splitInFour(test::loadShared("spot.obj"))));
-  const auto copy = suggestionScene(*scene);
+  const TriMesh spot = test::loadShared("spot.obj"), fine = test::splitInFour(test::splitInFour(spot));
+  const auto scene = test::sceneOf(fine);
+  Design design = scene->design;
+  design.scale = scene->scale;
+  const auto copy = suggestionScene(design, fine);
   ASSERT_TRUE(copy);
   EXPECT_NEAR(copy->target.numTriangles(), kSuggestionTargetTriangles, 2);
   EXPECT_EQ(copy->scale, scene->scale);
-  EXPECT_FALSE(suggestionScene(*copy)) << "a target no finer than twice the copy is laid on itself";
+  EXPECT_FALSE(suggestionScene(design, spot)) << "a target no finer than twice the copy is laid on itself";
   // On the copy: a loop across its longest axis, and a seam from one of its points between control points, over
   // the far end of that axis, to another (a cut ending on a limb's loop): three segments.
   const TriMesh& c = copy->target;

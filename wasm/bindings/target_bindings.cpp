@@ -417,28 +417,25 @@ class TargetSession {
 
   std::string suggestStart(const std::string& keptSeamsJson, const std::string& optionsJson) {
     return guarded([&] {
-      // The target's scene and copy of the last suggestion at this size serve again (the same target: a new one
-      // resets the suggestion), the designer's seams and settings taken anew: another panel count starts at once.
+      // The scene of the last suggestion at this size serves again (the same target: a new one resets the
+      // suggestion), the designer's seams and settings taken anew: another panel count starts at once.
       std::unique_ptr<Suggestion> last = std::move(suggest_);
       const PatternRequest request = readPatternRequest(keptSeamsJson, optionsJson);
       const json o = parse(optionsJson);
       auto s = std::make_unique<Suggestion>();
       billow::Design design = request.design;
       design.scale = request.scale;
-      if (last && last->target->scale == design.scale) {
-        s->target = std::move(last->target), s->copy = std::move(last->copy);
-        s->target->design = design;
-        if (s->copy) {
-          s->copy->design = design;
-          s->copy->design.seams.clear(), s->copy->design.connections.clear();
-        }
+      if (last && last->scene->scale == design.scale) {
+        s->scene = std::move(last->scene), s->onCopy = last->onCopy;
+        s->scene->design = design;
       } else {
-        s->target = billow::makeTargetScene(design, mesh_);
-        s->copy = billow::suggestionScene(*s->target);
+        s->scene = billow::suggestionScene(design, mesh_);
+        s->onCopy = s->scene != nullptr;
+        if (!s->onCopy) s->scene = billow::makeTargetScene(design, mesh_);
       }
       last.reset();
       s->keptOnTarget = request.design.seams;
-      s->kept = s->copy ? billow::carriedSeams(s->keptOnTarget, *s->target, *s->copy) : s->keptOnTarget;
+      s->kept = s->onCopy ? billow::carriedSeams(s->keptOnTarget, ownSurface(), *s->scene) : s->keptOnTarget;
       s->evaluate.triangles = request.triangles;
       if (o.contains("fabrication") && o["fabrication"].is_object())
         s->evaluate.cut = billow::readExportOptionsJson(o["fabrication"]);
@@ -453,7 +450,7 @@ class TargetSession {
         layout.symmetryAxis = axis == "x" ? 0 : axis == "y" ? 1 : axis == "z" ? 2 : -1;
       }
       s->panels = layout.panels;
-      s->proposals = billow::proposeLayouts(s->laid().target, layout);
+      s->proposals = billow::proposeLayouts(s->scene->target, layout);
       json names = json::array();
       for (const billow::LayoutProposal& p : s->proposals) names.push_back(p.name);
       suggest_ = std::move(s);
@@ -470,7 +467,7 @@ class TargetSession {
     return guarded([&] {
       Suggestion& s = startedSuggestion(index);
       const billow::LayoutEvaluation e =
-          billow::lookAtLayout(s.laid(), s.proposals[index], s.kept, s.panels, {}, s.evaluate);
+          billow::lookAtLayout(*s.scene, s.proposals[index], s.kept, s.panels, {}, s.evaluate);
       json look = layoutJson(e, s.proposals[index].name, s);
       look["family"] = billow::layoutFamily(s.proposals[index]);
       return look.dump();
@@ -487,7 +484,7 @@ class TargetSession {
       const std::vector<billow::DesignConnection> connections =
           billow::readDesignConnections(parse(connectionsJson), seams.size());
       const billow::LayoutEvaluation e =
-          billow::evaluateLayout(s.laid(), seams, int(seams.size()), s.evaluate, connections);
+          billow::evaluateLayout(*s.scene, seams, int(seams.size()), s.evaluate, connections);
       return layoutJson(e, s.proposals[index].name, s).dump();
     });
   }
@@ -516,6 +513,12 @@ class TargetSession {
 
   void requireTarget() const {
     if (!geodesic_) throw billow::Error("seams.no-target", "Load a target before drawing seams.");
+  }
+
+  // The target in its own units, as seams are laid on it.
+  billow::SeamSurface ownSurface() const {
+    requireTarget();
+    return {mesh_, 1.0, topology_, *projector_, *geodesic_};
   }
 
   // The seams' control points on the target (io/design_json.hpp designSeamSpecs: faces it has, 3D points near it).
@@ -582,12 +585,12 @@ class TargetSession {
 
   // A layout as the page takes it: `seams` on the target; laid on a copy of it, also `copySeams` as they lie there,
   // which suggestOptimize takes back.
-  static json layoutJson(const billow::LayoutEvaluation& e, const std::string& name, const Suggestion& s) {
+  json layoutJson(const billow::LayoutEvaluation& e, const std::string& name, const Suggestion& s) const {
     json seams = json::array(), copySeams = json::array();
     const std::vector<billow::DesignSeam> onTarget =
-        s.copy && e.ok ? billow::carriedSeams(e.seams, *s.copy, *s.target, s.keptOnTarget) : e.seams;
+        s.onCopy && e.ok ? billow::carriedSeams(e.seams, *s.scene, ownSurface(), s.keptOnTarget) : e.seams;
     for (const billow::DesignSeam& seam : onTarget) seams.push_back(billow::designSeamJson(seam));
-    if (s.copy)
+    if (s.onCopy)
       for (const billow::DesignSeam& seam : e.seams) copySeams.push_back(billow::designSeamJson(seam));
     json connections = json::array();
     for (const billow::DesignConnection& c : e.connections) connections.push_back(c.seams);
@@ -609,16 +612,16 @@ class TargetSession {
               {"seams", e.ok ? seams : json::array()},
               {"connections", e.ok ? connections : json::array()},
               {"balloon", e.ok ? balloonJson(e.balloon) : json(nullptr)}});
-    if (s.copy && e.ok) out["copySeams"] = copySeams;
+    if (s.onCopy && e.ok) out["copySeams"] = copySeams;
     return out;
   }
 
   // A suggestion under way: the target scaled as asked (and its copy), the designer's seams kept, the layouts.
   struct Suggestion {
-    std::unique_ptr<billow::DesignScene> target;
-    // A fine target's simplified copy the layouts are laid on (suggest/seam_layouts.hpp suggestionScene), or null.
-    std::unique_ptr<billow::DesignScene> copy;
-    billow::DesignScene& laid() const { return copy ? *copy : *target; }
+    // The scene the layouts are laid on: a fine target's simplified copy (suggest/seam_layouts.hpp suggestionScene),
+    // else the target's own.
+    std::unique_ptr<billow::DesignScene> scene;
+    bool onCopy = false;
     std::vector<billow::DesignSeam> keptOnTarget, kept;  // the designer's seams kept, on the target and as laid
     std::vector<billow::LayoutProposal> proposals;
     billow::EvaluateOptions evaluate;

@@ -138,7 +138,11 @@ int suggestCommand(const std::vector<std::string>& argv) {
                   "can keep a symmetry it does not have: leave out --symmetry");
   }
   // A fine target's layouts are laid on a simplified copy of it, the designer's seams carried there, and theirs back.
-  const std::unique_ptr<DesignScene> copy = suggestionScene(*scene);
+  Design scaled = scene->design;
+  scaled.scale = scene->scale;
+  TriMesh ownUnits = scene->target;
+  ownUnits.V /= scene->scale;
+  const std::unique_ptr<DesignScene> copy = suggestionScene(scaled, ownUnits);
   DesignScene& laid = copy ? *copy : *scene;
   const std::vector<DesignSeam> kept = !args.has("--keep-seams") ? std::vector<DesignSeam>{}
                                        : copy                    ? carriedSeams(input.seams, *scene, *copy)

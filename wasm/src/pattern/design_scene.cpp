@@ -87,18 +87,18 @@ void traceDesignSeams(DesignScene& scene) {
   scene.seamsMs = msSince(t1);
 }
 
-std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const DesignScene& from,
-                                     const DesignScene& to, const std::vector<DesignSeam>& onTo) {
-  const std::vector<SeamSpec> specs = designSeamSpecs(seams, from.target, *from.projector, from.scale);
+std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const SeamSurface& from,
+                                     const SeamSurface& to, const std::vector<DesignSeam>& onTo) {
+  const std::vector<SeamSpec> specs = designSeamSpecs(seams, from.target, from.projector, from.scale);
   std::vector<SeamCurve> fromCurves;
-  for (const SeamSpec& spec : specs) fromCurves.push_back(buildSeamCurve(*from.geodesic, *from.projector, spec));
+  for (const SeamSpec& spec : specs) fromCurves.push_back(buildSeamCurve(from.geodesic, from.projector, spec));
   std::vector<DesignSeam> out = seams;
   const double toFrom = to.scale / from.scale;
   for (size_t i = onTo.size(); i < out.size(); ++i)
     for (size_t k = 0; k < out[i].points.size(); ++k) {
       DesignPoint& p = out[i].points[k];
       p.onSurface = true;
-      p.surface = to.projector->project(toFrom * position(from.target, specs[i].controls[k]));
+      p.surface = to.projector.project(toFrom * position(from.target, specs[i].controls[k]));
     }
   std::copy(onTo.begin(), onTo.end(), out.begin());
   // The open seams' ends on another seam's line: a hair from it on `from`, where the layout was traced.
@@ -119,12 +119,12 @@ std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const
     }
   }
   if (ends.empty()) return out;
-  const std::vector<SeamSpec> toSpecs = designSeamSpecs(out, to.target, *to.projector, to.scale);
+  const std::vector<SeamSpec> toSpecs = designSeamSpecs(out, to.target, to.projector, to.scale);
   std::vector<std::optional<SeamCurve>> toCurves(out.size());
   const double toSize = (to.target.V.colwise().maxCoeff() - to.target.V.colwise().minCoeff()).norm();
   for (const End& e : ends) {
     std::optional<SeamCurve>& host = toCurves[size_t(e.host)];
-    if (!host) host = buildSeamCurve(*to.geodesic, *to.projector, toSpecs[size_t(e.host)]);
+    if (!host) host = buildSeamCurve(to.geodesic, to.projector, toSpecs[size_t(e.host)]);
     // Within a hundredth of the size: the two meshes of one surface differ by far less.
     const SeamSnap snap = snapToSeams(to.target, to.topology, position(to.target, out[e.seam].points[e.point].surface),
                                       {*host}, 1e-2 * toSize);

@@ -45,12 +45,24 @@ std::unique_ptr<DesignScene> makeTargetScene(const Design& design, const TriMesh
 void addedFacePointsAsPositions(const DesignScene& scene, std::vector<DesignSeam>& seams);
 // The seams placed on it (designSeamSpecs: triangles it has, 3D points near it) and traced.
 void traceDesignSeams(DesignScene& scene);
+// A target as seams are laid on it: a scene's, or one its holder keeps in its own units (the app's target session).
+struct SeamSurface {
+  const TriMesh& target;
+  double scale;  // a design's 3D points (the target's own units) times this are in `target`'s coordinates
+  const MeshTopology& topology;
+  const SurfaceProjector& projector;
+  const GeodesicSolver& geodesic;
+  SeamSurface(const DesignScene& s)  // implicit: a scene is one
+      : target(s.target), scale(s.scale), topology(s.topology), projector(*s.projector), geodesic(*s.geodesic) {}
+  SeamSurface(const TriMesh& t, double sc, const MeshTopology& to, const SurfaceProjector& p, const GeodesicSolver& g)
+      : target(t), scale(sc), topology(to), projector(p), geodesic(g) {}
+};
 // `seams` laid on `from` as they lie on `to`, a mesh of the same surface (a simplified copy of a fine target, or the
 // target it copies), each control point projected onto `to`; an open seam's end that lies on another seam's line on
 // `from` (a cut ending on a limb's loop) is put on that seam's line as traced on `to`, so that the two still meet.
 // The first onTo.size() seams are given as they lie on `to` already (the designer's own), taken as they are.
-std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const DesignScene& from,
-                                     const DesignScene& to, const std::vector<DesignSeam>& onTo = {});
+std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const SeamSurface& from,
+                                     const SeamSurface& to, const std::vector<DesignSeam>& onTo = {});
 // The target cut along them.
 void segmentDesignScene(DesignScene& scene);
 

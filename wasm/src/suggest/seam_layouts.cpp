@@ -1390,15 +1390,12 @@ LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal
   return look;
 }
 
-std::unique_ptr<DesignScene> suggestionScene(const DesignScene& scene) {
-  if (scene.target.numTriangles() <= 2 * kSuggestionTargetTriangles) return nullptr;
-  Design design = scene.design;
-  design.seams.clear();
-  design.connections.clear();
-  design.scale = scene.scale;
-  TriMesh copy = simplifiedCopy(scene.target, kSuggestionTargetTriangles);
-  copy.V /= scene.scale;
-  return makeTargetScene(design, copy);
+std::unique_ptr<DesignScene> suggestionScene(const Design& design, const TriMesh& target) {
+  if (target.numTriangles() <= 2 * kSuggestionTargetTriangles) return nullptr;
+  Design own = design;
+  own.seams.clear();
+  own.connections.clear();
+  return makeTargetScene(own, simplifiedCopy(target, kSuggestionTargetTriangles));
 }
 
 }  // namespace billow

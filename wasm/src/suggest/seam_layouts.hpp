@@ -86,9 +86,10 @@ int mirrorSymmetryAxis(const TriMesh& target, const SurfaceProjector& projector,
 // seam layouts": the figures). Its seams are carried back to the target (carriedSeams).
 constexpr int kSuggestionTargetTriangles = 10000;
 
-// The scene the layouts for `scene` are laid on: a copy of its target simplified to kSuggestionTargetTriangles, at its
-// scale, without seams; null where the target is not more than twice that fine (the layouts are laid on it).
-std::unique_ptr<DesignScene> suggestionScene(const DesignScene& scene);
+// The scene the layouts for `design` on `target` (its own units; design.scale set) are laid on: a copy of the target
+// simplified to kSuggestionTargetTriangles, at the design's scale, without its seams; null where the target is not
+// more than twice that fine (the layouts are laid on it).
+std::unique_ptr<DesignScene> suggestionScene(const Design& design, const TriMesh& target);
 
 // The layouts worth trying for `request` on `target` (its own coordinates), each plane set once.
 std::vector<LayoutProposal> proposeLayouts(const TriMesh& target, const LayoutRequest& request);
