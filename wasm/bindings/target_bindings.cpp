@@ -423,7 +423,8 @@ class TargetSession {
       const PatternRequest request = readPatternRequest(keptSeamsJson, optionsJson);
       const json o = parse(optionsJson);
       auto s = std::make_unique<Suggestion>();
-      billow::Design design = request.design;
+      billow::Design design = request.design;  // the settings: the seams go to the scene with each layout
+      design.seams.clear(), design.connections.clear();
       design.scale = request.scale;
       if (last && last->scene->scale == design.scale) {
         s->scene = std::move(last->scene), s->onCopy = last->onCopy;

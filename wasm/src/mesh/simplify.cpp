@@ -96,8 +96,8 @@ class Simplifier {
     while (aliveFaces_ > triangles && !heap_.empty()) {
       const Collapse c = heap_.top();
       heap_.pop();
+      // Stale: a vertex collapsed away or moved since (a collapse stamps both its vertices).
       if (stamp_[size_t(c.a)] != c.stampA || stamp_[size_t(c.b)] != c.stampB) continue;
-      if (vertexFaces_[size_t(c.a)].empty() || vertexFaces_[size_t(c.b)].empty()) continue;  // collapsed away
       if (aliveFaces_ - 2 < triangles) break;
       Eigen::Vector3d p;
       costed(c.a, c.b, &p);

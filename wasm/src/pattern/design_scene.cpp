@@ -90,8 +90,6 @@ void traceDesignSeams(DesignScene& scene) {
 std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const SeamSurface& from,
                                      const SeamSurface& to, const std::vector<DesignSeam>& onTo) {
   const std::vector<SeamSpec> specs = designSeamSpecs(seams, from.target, from.projector, from.scale);
-  std::vector<SeamCurve> fromCurves;
-  for (const SeamSpec& spec : specs) fromCurves.push_back(buildSeamCurve(from.geodesic, from.projector, spec));
   std::vector<DesignSeam> out = seams;
   const double toFrom = to.scale / from.scale;
   for (size_t i = onTo.size(); i < out.size(); ++i)
@@ -102,32 +100,35 @@ std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const
     }
   std::copy(onTo.begin(), onTo.end(), out.begin());
   // The open seams' ends on another seam's line: a hair from it on `from`, where the layout was traced.
-  const double fromSize = (from.target.V.colwise().maxCoeff() - from.target.V.colwise().minCoeff()).norm();
+  const auto diagonal = [](const TriMesh& m) { return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm(); };
   struct End {
     size_t seam, point;
     int host;
   };
   std::vector<End> ends;
+  std::vector<SeamCurve> fromCurves;  // traced once an open seam asks
   for (size_t i = onTo.size(); i < out.size(); ++i) {
     if (out[i].closed || out[i].points.size() < 2) continue;
-    std::vector<SeamCurve> others = fromCurves;
-    others[i] = SeamCurve();
+    if (fromCurves.empty())
+      for (const SeamSpec& spec : specs) fromCurves.push_back(buildSeamCurve(from.geodesic, from.projector, spec));
+    SeamCurve own;  // out of the way while its ends look for another seam's line
+    std::swap(own, fromCurves[i]);
     for (const size_t k : {size_t(0), out[i].points.size() - 1}) {
-      const SeamSnap snap =
-          snapToSeams(from.target, from.topology, position(from.target, specs[i].controls[k]), others, 1e-6 * fromSize);
+      const SeamSnap snap = snapToSeams(from.target, from.topology, position(from.target, specs[i].controls[k]),
+                                        fromCurves, 1e-6 * diagonal(from.target));
       if (snap.kind != SeamSnap::None) ends.push_back({i, k, snap.curve});
     }
+    std::swap(own, fromCurves[i]);
   }
   if (ends.empty()) return out;
   const std::vector<SeamSpec> toSpecs = designSeamSpecs(out, to.target, to.projector, to.scale);
   std::vector<std::optional<SeamCurve>> toCurves(out.size());
-  const double toSize = (to.target.V.colwise().maxCoeff() - to.target.V.colwise().minCoeff()).norm();
   for (const End& e : ends) {
     std::optional<SeamCurve>& host = toCurves[size_t(e.host)];
     if (!host) host = buildSeamCurve(to.geodesic, to.projector, toSpecs[size_t(e.host)]);
     // Within a hundredth of the size: the two meshes of one surface differ by far less.
     const SeamSnap snap = snapToSeams(to.target, to.topology, position(to.target, out[e.seam].points[e.point].surface),
-                                      {*host}, 1e-2 * toSize);
+                                      {*host}, 1e-2 * diagonal(to.target));
     if (snap.kind != SeamSnap::None) out[e.seam].points[e.point].surface = snap.point;
   }
   return out;
