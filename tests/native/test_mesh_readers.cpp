@@ -481,7 +481,7 @@ TEST(PlyReader, AbsurdCountsAreRefusedBeforeAllocating) {
 TEST(PlyReader, RefusesMeshesBeyondTheLimits) {
   const std::string bytes = ply(tetrahedron(), PlyFormat::LittleEndian, false);
   expectError([&] { readPly(bytes, MeshReadOptions{3, 10}); }, "mesh.too-large", "4 vertices");
-  expectError([&] { readPly(bytes, MeshReadOptions{10, 3}); }, "mesh.too-large", "4 faces");
+  expectError([&] { readPly(bytes, MeshReadOptions{10, 3}); }, "mesh.too-large", "more than 3 triangles");
   const std::string square = std::string(kSquareHeader) + "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 3\n";
   expectError([&] { readPly(square, MeshReadOptions{10, 1}); }, "mesh.too-large", "more than 1 triangles");
   EXPECT_EQ(readPly(bytes, MeshReadOptions{4, 4}).numTriangles(), 4);
@@ -493,4 +493,35 @@ TEST(MeshFile, UnknownFormatListsTheReadableOnes) {
   expectError([] { readMeshBytes("", "model.fbx"); }, "io.unknown-format", "OBJ, STL or PLY");
   expectError([] { readMeshBytes("solid x\nendsolid x\n", "x.Stl"); }, "stl.no-faces");
   expectError([] { readMeshBytes("ply\n", "x.pLy"); }, "ply.no-header-end");
+}
+
+// An OBJ or PLY written a vertex per face corner (as some exporters do) reads as the same mesh as one whose faces share
+// their vertices, as an STL does: the one reader welds every format alike. Unused vertices go; the faces keep their
+// order.
+TEST(MeshFile, EveryFormatIsWeldedAlike) {
+  const TriMesh shared = tetrahedron();
+  TriMesh perCorner;
+  perCorner.V.resize(3 * shared.numTriangles() + 1, 3);
+  perCorner.F.resize(shared.numTriangles(), 3);
+  for (int t = 0; t < shared.numTriangles(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      perCorner.V.row(3 * t + c) = shared.V.row(shared.F(t, c)) + Eigen::RowVector3d(1e-9, 0, 0) * c;
+      perCorner.F(t, c) = 3 * t + c;
+    }
+  perCorner.V.row(3 * shared.numTriangles()) << 5, 5, 5;  // used by no face
+  std::ostringstream obj;
+  for (int v = 0; v < perCorner.numVertices(); ++v)
+    obj << "v " << perCorner.V(v, 0) << ' ' << perCorner.V(v, 1) << ' ' << perCorner.V(v, 2) << '\n';
+  for (int t = 0; t < perCorner.numTriangles(); ++t)
+    obj << "f " << perCorner.F(t, 0) + 1 << ' ' << perCorner.F(t, 1) + 1 << ' ' << perCorner.F(t, 2) + 1 << '\n';
+  const TriMesh fromStl = readMeshBytes(stlBinary(shared), "a.stl");
+  for (const TriMesh& read :
+       {readMeshBytes(obj.str(), "a.obj"), readMeshBytes(ply(perCorner, PlyFormat::LittleEndian, false), "a.ply")}) {
+    EXPECT_EQ(read.numVertices(), 4);
+    EXPECT_EQ(read.F, fromStl.F);
+    expectSameMesh(read, shared, 1e-6);
+  }
+  // Faces that already share their vertices keep them, in the order the faces first use them.
+  const TriMesh again = readMeshBytes(ply(shared, PlyFormat::Ascii, false), "b.ply");
+  EXPECT_EQ(again.F, fromStl.F);
 }

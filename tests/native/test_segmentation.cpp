@@ -329,7 +329,17 @@ TEST_P(CorpusSegmentation, ManySeamsCutSoundlyAndFast) {
   std::mt19937 rng(17);
   std::uniform_int_distribution<int> pick(0, scene.mesh.numVertices() - 1);
   const auto t0 = std::chrono::steady_clock::now();
-  for (int i = 0; i < 8; ++i) loopAround(scene, pick(rng), 0.06 * diag);
+  // Eight loops around caps; one that crosses itself (three points on a frontier that wraps round two tentacles) is
+  // not what a designer draws round a cap, and is drawn elsewhere.
+  for (int attempt = 0; scene.seams.size() < 8 && attempt < 100; ++attempt) {
+    loopAround(scene, pick(rng), 0.06 * diag);
+    const int added = static_cast<int>(scene.seams.size()) - 1;
+    const Segmentation s = segmentTarget(scene.mesh, scene.topo, scene.seams);
+    if (std::any_of(s.problems.begin(), s.problems.end(),
+                    [&](const auto& p) { return p.code == "seam.self-crossing" && p.seam == added; }))
+      scene.seams.pop_back();
+  }
+  ASSERT_EQ(scene.seams.size(), 8u);
   const int loops = static_cast<int>(scene.seams.size());
   for (int i = 0; i < 7; ++i) {  // open seams from one loop to the next, snapped at both ends
     const SeamCurve &a = scene.seams[i % loops], &b = scene.seams[(i + 1) % loops];

@@ -5,6 +5,7 @@
 // ever escapes to JS as a bare number.
 #include <emscripten/bind.h>
 
+#include <cmath>
 #include <cstdint>
 #include <cstdlib>
 #include <nlohmann/json.hpp>
@@ -42,8 +43,18 @@ std::string validateTarget(uintptr_t positions, int numVertices, uintptr_t indic
 }
 
 // A repaired mesh back to JS, appended to `out` as flat "positions" and "indices" (row-major, as they came).
+// A coordinate that is not a number goes as the string JavaScript's Number() reads back ("NaN", "Infinity"): JSON
+// has no such number, and a file's damaged vertex must reach validation as it is (SolverApi's Float64Array.from).
 void putMesh(const billow::TriMesh& mesh, nlohmann::json& out) {
-  out["positions"] = std::vector<double>(mesh.V.data(), mesh.V.data() + mesh.V.size());
+  nlohmann::json positions = nlohmann::json::array();
+  for (Eigen::Index k = 0; k < mesh.V.size(); ++k) {
+    const double x = mesh.V.data()[k];
+    if (std::isfinite(x))
+      positions.push_back(x);
+    else
+      positions.push_back(std::isnan(x) ? "NaN" : x > 0 ? "Infinity" : "-Infinity");
+  }
+  out["positions"] = std::move(positions);
   out["indices"] = std::vector<int>(mesh.F.data(), mesh.F.data() + mesh.F.size());
 }
 
@@ -77,8 +88,8 @@ std::string closeHoles(uintptr_t positions, int numVertices, uintptr_t indices, 
 }
 
 // A mesh file's bytes (length bytes at `bytes`) read by the command line's reader for its extension (io/mesh_file.hpp),
-// refused beyond maxTriangles: { positions, indices } as the file has them, or the reader's error. The app reads PLY so
-// (its triangle strips too).
+// refused beyond maxTriangles: { positions, indices }, its corners welded, or the reader's error. The app reads every
+// mesh file so.
 std::string readMeshFile(uintptr_t bytes, int length, const std::string& fileName, int maxTriangles) {
   return guarded([&] {
     billow::MeshReadOptions options;

@@ -7,6 +7,7 @@
 
 #include "io/ply_reader.hpp"
 #include "io/stl_reader.hpp"
+#include "mesh/weld.hpp"
 #include "util/error.hpp"
 
 namespace billow {
@@ -29,11 +30,26 @@ std::string readFileBytes(const std::string& path, size_t maxBytes) {
 TriMesh readMeshBytes(std::string_view bytes, const std::string& fileName, const MeshReadOptions& options) {
   std::string ext = fileName.substr(std::min(fileName.size(), fileName.rfind('.') + 1));
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  if (ext == "obj") return readObj(bytes, options);
-  if (ext == "stl") return readStl(bytes, options);
-  if (ext == "ply") return readPly(bytes, options);
-  throw Error("io.unknown-format",
-              "Billow cannot read '" + fileName + "': use a mesh in OBJ, STL or PLY format (.obj, .stl, .ply).");
+  if (ext == "stl") return readStl(bytes, options);  // welded as it is read: STL stores each triangle's corners
+  TriMesh read;
+  if (ext == "obj")
+    read = readObj(bytes, options);
+  else if (ext == "ply")
+    read = readPly(bytes, options);
+  else
+    throw Error("io.unknown-format",
+                "Billow cannot read '" + fileName + "': use a mesh in OBJ, STL or PLY format (.obj, .stl, .ply).");
+  // Exporters may write a vertex per face or per normal: corners at one place are one vertex in every format, as in
+  // STL, numbered in the order the faces first use them (the app's links hash that numbering, docs/formats.md).
+  Vertices soup(3 * read.numTriangles(), 3);
+  for (int t = 0; t < read.numTriangles(); ++t)
+    for (int c = 0; c < 3; ++c) {
+      const int v = read.F(t, c);
+      // A bad index or a coordinate that is not a number: the mesh is refused, and validation counts them as read.
+      if (v < 0 || v >= read.numVertices() || !read.V.row(v).allFinite()) return read;
+      soup.row(3 * t + c) = read.V.row(v);
+    }
+  return weld(soup);
 }
 
 }  // namespace billow

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "util/error.hpp"
+#include "util/text.hpp"
 
 namespace billow {
 
@@ -50,6 +51,15 @@ class LineParser {
 
 }  // namespace
 
+Error tooManyTriangles(const std::string& format, long long maxTriangles, long long triangles) {
+  const std::string has = triangles > maxTriangles
+                              ? grouped(triangles) + " triangles, more than the " + grouped(maxTriangles)
+                              : "more than " + grouped(maxTriangles) + " triangles, more than";
+  return Error("mesh.too-large", "The " + format + " file has " + has +
+                                     " Billow can work with. Simplify it (for example with Decimate in Blender or "
+                                     "MeshLab) and open it again.");
+}
+
 TriMesh readObj(std::string_view text, const MeshReadOptions& options) {
   std::vector<double> coords;
   std::vector<int> corners;
@@ -86,8 +96,7 @@ TriMesh readObj(std::string_view text, const MeshReadOptions& options) {
       if (polygon.size() < 3) line.fail("a face needs at least three vertices");
       for (size_t k = 1; k + 1 < polygon.size(); ++k) {
         if (static_cast<long long>(corners.size() / 3) >= options.maxTriangles)
-          throw Error("mesh.too-large", "The OBJ file has more than " + std::to_string(options.maxTriangles) +
-                                            " triangles, more than Billow can work with. Simplify the mesh first.");
+          throw tooManyTriangles("OBJ", options.maxTriangles);
         corners.push_back(static_cast<int>(polygon[0]));
         corners.push_back(static_cast<int>(polygon[k]));
         corners.push_back(static_cast<int>(polygon[k + 1]));

@@ -330,10 +330,7 @@ void checkLimits(const Target& t, const MeshReadOptions& options) {
   if (t.vertex->count > maxVertices)
     throw Error("mesh.too-large", "The PLY file has " + std::to_string(t.vertex->count) + " vertices, more than the " +
                                       std::to_string(maxVertices) + " Billow can work with. Simplify the mesh first.");
-  if (!t.strips && t.face->count > options.maxTriangles)
-    throw Error("mesh.too-large", "The PLY file has " + std::to_string(t.face->count) + " faces, more than the " +
-                                      std::to_string(options.maxTriangles) +
-                                      " triangles Billow can work with. Simplify the mesh first.");
+  if (!t.strips && t.face->count > options.maxTriangles) throw tooManyTriangles("PLY", options.maxTriangles);
 }
 
 void skipProperty(Body& body, const Property& p) {
@@ -378,8 +375,7 @@ void readFace(Body& body, const Target& t, long long face, std::vector<int>& cor
       const int index = static_cast<int>(v);
       if (k >= 2) {
         if (static_cast<long long>(corners.size() / 3) >= options.maxTriangles)
-          throw Error("mesh.too-large", "The PLY file has more than " + std::to_string(options.maxTriangles) +
-                                            " triangles, more than Billow can work with. Simplify the mesh first.");
+          throw tooManyTriangles("PLY", options.maxTriangles);
         corners.insert(corners.end(), {first, previous, index});
       }
       if (k == 0) first = index;
@@ -414,8 +410,7 @@ void readStrips(Body& body, const Target& t, std::vector<int>& corners, const Me
       const int c = static_cast<int>(v);
       if (inStrip >= 2 && a != b && b != c && a != c) {
         if (static_cast<long long>(corners.size() / 3) >= options.maxTriangles)
-          throw Error("mesh.too-large", "The PLY file has more than " + std::to_string(options.maxTriangles) +
-                                            " triangles, more than Billow can work with. Simplify the mesh first.");
+          throw tooManyTriangles("PLY", options.maxTriangles);
         if (inStrip % 2 == 0)
           corners.insert(corners.end(), {a, b, c});
         else

@@ -16,10 +16,10 @@ namespace {
 constexpr size_t kHeaderBytes = 84;
 constexpr size_t kTriangleBytes = 50;
 
-void checkTriangleLimit(std::uint64_t triangles, const MeshReadOptions& options) {
+// known: the file's count is its header's (binary), not only as many as read so far (ASCII).
+void checkTriangleLimit(std::uint64_t triangles, const MeshReadOptions& options, bool known) {
   if (triangles > static_cast<std::uint64_t>(options.maxTriangles))
-    throw Error("mesh.too-large", "The STL file has more than " + std::to_string(options.maxTriangles) +
-                                      " triangles, more than Billow can work with. Simplify the mesh first.");
+    throw tooManyTriangles("STL", options.maxTriangles, known ? static_cast<long long>(triangles) : -1);
 }
 
 std::uint32_t u32le(const unsigned char* p) {
@@ -74,7 +74,7 @@ bool sizeMatchesCount(std::string_view bytes) {
 
 Vertices readBinary(std::string_view bytes, const MeshReadOptions& options) {
   const std::uint64_t count = declaredCount(bytes);
-  checkTriangleLimit(count, options);
+  checkTriangleLimit(count, options, true);
   Vertices soup(static_cast<Eigen::Index>(3 * count), 3);
   const auto* data = reinterpret_cast<const unsigned char*>(bytes.data()) + kHeaderBytes;
   for (std::uint64_t t = 0; t < count; ++t) {
@@ -172,7 +172,7 @@ Vertices readAscii(std::string_view text, const MeshReadOptions& options) {
       }
       if (!Words::sameKeyword(w, "facet"))
         words.fail("'" + std::string(w) + "' is not what an STL file has here (expected 'facet' or 'endsolid')");
-      checkTriangleLimit(coords.size() / 9 + 1, options);
+      checkTriangleLimit(coords.size() / 9 + 1, options, false);
       readFacet(words, coords);
     }
   }

@@ -49,8 +49,8 @@ class Validator {
     }
     if (m_.numTriangles() > opt_.maxTriangles) {
       add("mesh.too-large", "error",
-          "The mesh has " + std::to_string(m_.numTriangles()) + " triangles; Billow works interactively up to " +
-              std::to_string(opt_.maxTriangles) +
+          "The mesh has " + grouped(m_.numTriangles()) + " triangles; Billow works interactively up to " +
+              grouped(opt_.maxTriangles) +
               ". Simplify it (for example with Decimate in Blender or MeshLab) and load it again.",
           m_.numTriangles());
       return finish();

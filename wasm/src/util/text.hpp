@@ -1,4 +1,4 @@
-// Counts in the words of messages: "3 holes", "1 vertex is".
+// Counts in the words of messages: "3 holes", "1 vertex is", "500,000".
 #pragma once
 #include <cstdint>
 #include <string>
@@ -7,6 +7,16 @@ namespace billow {
 
 inline std::string plural(std::int64_t n, const std::string& one, const std::string& many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// Digits grouped by thousands, as a designer reads a large count: 500000 -> "500,000".
+inline std::string grouped(std::int64_t n) {
+  std::string digits = std::to_string(n < 0 ? -n : n), out;
+  for (size_t k = 0; k < digits.size(); ++k) {
+    if (k > 0 && (digits.size() - k) % 3 == 0) out += ',';
+    out += digits[k];
+  }
+  return n < 0 ? "-" + out : out;
 }
 
 // The many form adds an s.

@@ -245,9 +245,11 @@ export class App {
       if (error.code === ErrorCode.cancelled) return; // a newer load won
       const report = error.details?.report;
       const items = report ? report.issues.filter((i) => i.severity === 'error').map((i) => i.message) : [];
+      // The reader's messages say what is wrong and where (a line, a byte); the file they mean is named here, once.
+      const named = error.message.includes(`"${fileName}"`) || error.message.includes(`'${fileName}'`);
       const text = report
         ? `"${fileName}" cannot be used as a target. Your current design is unchanged.`
-        : `${error.message}${this.target ? ' Your current design is unchanged.' : ''}`;
+        : `${named ? '' : `"${fileName}" cannot be opened. `}${error.message}${this.target ? ' Your current design is unchanged.' : ''}`;
       // An open mesh whose holes are all it lacks: offered closed, as a new design that keeps them closed.
       const holes = report?.stats.holes ?? 0;
       const action = error.details?.closable && design

@@ -83,7 +83,6 @@ export function createHandlers(api) {
     *[Op.loadTarget]({ fileName, bytes, cutThinHandles, closeHoles }) {
       yield { stage: 'reading the file', done: 0, total: 3 };
       const mesh = parseMesh(fileName, bytes, (...file) => api.readMeshFile(...file));
-      yield { stage: 'welding vertices', done: 1, total: 3 };
       return yield* installTarget(mesh.positions, mesh.indices, { cutThinHandles, closeHoles });
     },
     *[Op.setTarget]({ positions, indices, cutThinHandles, closeHoles }) {

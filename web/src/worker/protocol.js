@@ -12,7 +12,7 @@
 
 export const Op = Object.freeze({
   // { fileName, bytes: ArrayBuffer } -> { report, positions: Float32Array, indices: Uint32Array }
-  // Parses OBJ/STL/PLY, welds, validates (orientation fixed in place) and makes this mesh the target.
+  // Reads OBJ/STL/PLY with the command line's reader (welded), validates (orientation fixed in place) and makes this mesh the target.
   loadTarget: 'loadTarget',
   // Re-installs a target that was already loaded: { positions, indices } -> same as loadTarget.
   setTarget: 'setTarget',
