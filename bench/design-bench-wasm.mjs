@@ -10,7 +10,6 @@ import { readFileSync, writeFileSync } from 'node:fs';
 import { dirname, join, resolve } from 'node:path';
 import { fileURLToPath } from 'node:url';
 import { loadApi } from '../tests/node/load-module.mjs';
-import { readObjText } from '../tests/node/obj.mjs';
 import { createHandlers } from '../web/src/worker/handlers.js';
 
 const HERE = dirname(fileURLToPath(import.meta.url));
@@ -119,11 +118,11 @@ function nudged(point) {
   return { ...point, bary: bary.map((b) => b / sum) };
 }
 
-// The design's target mesh: an OBJ as the file numbers it, another format through the module's reader.
+// The design's target mesh, read as the app and the command line read it (the module's reader).
 function targetOf(design, designPath) {
   const t = design.target;
   const file = t.example ? join(HERE, '../web/public/examples', `${t.example}.obj`) : resolve(dirname(designPath), t.obj);
-  return /\.obj$/i.test(file) ? readObjText(readFileSync(file, 'utf8')) : api.readMeshFile(file, readFileSync(file), 10_000_000);
+  return api.readMeshFile(file, readFileSync(file), 10_000_000);
 }
 
 function run(entry) {

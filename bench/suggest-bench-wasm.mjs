@@ -4,11 +4,11 @@
 // many as the app starts here (one per core, at most 4): the time until the first layout shows (its first look), until
 // the first optimized one, until the end, and the best layout's distance (the worse way, % of the diagonal).
 //   node --no-experimental-fetch bench/suggest-bench-wasm.mjs [--panels 12] [--meshes koala,spot,blub] [--workers 1,2]
-// A mesh named with a slash is an OBJ file's path (a shape made for the purpose).
+// A mesh named with a slash is a mesh file's path (OBJ, STL or PLY: a shape made for the purpose).
 import { readFileSync } from 'node:fs';
 import { availableParallelism } from 'node:os';
 import { basename } from 'node:path';
-import { loadSharedMesh, readObjText } from '../tests/node/obj.mjs';
+import { SHARED_MESHES } from '../tests/node/obj.mjs';
 import { threadedClient } from '../tests/node/solver-clients.mjs';
 import { Op } from '../web/src/worker/protocol.js';
 import { suggestLayouts } from '../web/src/app/suggest-run.js';
@@ -25,15 +25,18 @@ const HEIGHT = 0.6;
 console.log(`| mesh | panels asked | workers | first layout s | first optimized s | all s | layouts tried | best layout | panels | distance % |`);
 console.log('|---|---|---|---|---|---|---|---|---|---|');
 for (const given of meshes) {
-  const name = given.includes('/') ? basename(given, '.obj') : given;
-  const mesh = given.includes('/') ? readObjText(readFileSync(given, 'utf8')) : loadSharedMesh(`${given}.obj`);
-  let lo = Infinity;
-  let hi = -Infinity;
-  for (let v = 1; v < mesh.positions.length; v += 3) (lo = Math.min(lo, mesh.positions[v])), (hi = Math.max(hi, mesh.positions[v]));
+  const name = given.includes('/') ? basename(given).replace(/\.[^.]*$/, '') : given;
+  const path = given.includes('/') ? given : new URL(`${given}.obj`, SHARED_MESHES);
+  const file = readFileSync(path);
+  // Opened as the app opens a file (loadTarget: the command line's reader), each worker with its own copy.
+  const load = (client) => client.request(Op.loadTarget, { fileName: basename(String(path)), bytes: file.buffer.slice(file.byteOffset, file.byteOffset + file.byteLength) });
   for (const workers of new Set(workerCounts)) {
     const clients = Array.from({ length: workers }, () => threadedClient());
     try {
-      await Promise.all(clients.map((client) => client.request(Op.setTarget, { positions: mesh.positions, indices: mesh.indices })));
+      const [mesh] = await Promise.all(clients.map(load));
+      let lo = Infinity;
+      let hi = -Infinity;
+      for (let v = 1; v < mesh.positions.length; v += 3) (lo = Math.min(lo, mesh.positions[v])), (hi = Math.max(hi, mesh.positions[v]));
       const { axis } = await clients[0].request(Op.mirrorSymmetry, {});
       const t0 = performance.now();
       let firstLook = null;
