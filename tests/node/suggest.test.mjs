@@ -156,6 +156,14 @@ test('a fine target\'s layouts are laid on a simplified copy and come as seams o
     assert.deepEqual(cut.problems, [], layout.name);
   }
   for (const layout of result.layouts) assert.ok(layout.distance > 0 && layout.distance < 0.03, `${layout.name}: ${layout.distance}`);
+  // Made ahead as the app's Suggest panel opens (suggestPrepare): the copy, here at another size first (made again),
+  // then at the suggestion's; the suggestion takes it on. A target no finer than the copy is laid on itself.
+  assert.deepEqual(await client.request(Op.suggestPrepare, { scale: 0.3, triangles: 400 }), { onCopy: true });
+  assert.deepEqual(await client.request(Op.suggestPrepare, { scale: 0.25, triangles: 400 }), { onCopy: true });
+  const coarse = inThreadClient(api);
+  const sphere = readObjText(read('../../web/public/examples/sphere.obj'));
+  await coarse.request(Op.setTarget, { positions: sphere.positions, indices: sphere.indices });
+  assert.deepEqual(await coarse.request(Op.suggestPrepare, { scale: 0.25, triangles: 400 }), { onCopy: false });
   // Asked again for fewer panels (the worker's copy serves again), the layouts are the target's as well.
   const again = await suggest([client], { panels: 2, scale: 0.25, triangles: 400, maxIterations: 8, optimize: 2 });
   assert.ok(again.layouts.length >= 1, `${again.layouts.length} layouts`);

@@ -53,6 +53,8 @@
 //   Suggested seam layouts (suggest/seam_layouts.hpp), a layout a call so the worker reports progress and can stop:
 //   t.mirrorSymmetry() -> { axis: "x" | "y" | "z" | null }: the target's own axis across whose box mid-plane it is
 //     its own mirror image (mirrorSymmetryAxis)
+//   t.suggestPrepare(optionsJson) -> { onCopy }: the scene suggestStart at the options' scale lays its layouts on,
+//     made ahead (a fine target's simplified copy, suggestionScene, else the target's own)
 //   t.suggestStart(keptSeamsJson, optionsJson)  kept: the designer's seams the layouts add to; options: buildPattern's
 //     and { panels (2-40), symmetry ("x" | "y" | "z" | null: layouts that are their own mirror image across it),
 //     maxIterations (the optimized layouts', default 40) } -> { proposals: [name, ...], optimize, ofOneFamily (how many
@@ -415,26 +417,23 @@ class TargetSession {
     });
   }
 
+  // The scene a suggestion at the options' size is laid on, made ahead while the designer picks the panels (a fine
+  // target's copy takes a second or two): suggestStart at that size takes it on. { onCopy }.
+  std::string suggestPrepare(const std::string& optionsJson) {
+    return guarded([&] {
+      auto s = std::make_unique<Suggestion>();
+      takeScene(*s, readPatternRequest("[]", optionsJson));
+      suggest_ = std::move(s);
+      return json({{"onCopy", suggest_->onCopy}}).dump();
+    });
+  }
+
   std::string suggestStart(const std::string& keptSeamsJson, const std::string& optionsJson) {
     return guarded([&] {
-      // The scene of the last suggestion at this size serves again (the same target: a new one resets the
-      // suggestion), the designer's seams and settings taken anew: another panel count starts at once.
-      std::unique_ptr<Suggestion> last = std::move(suggest_);
       const PatternRequest request = readPatternRequest(keptSeamsJson, optionsJson);
       const json o = parse(optionsJson);
       auto s = std::make_unique<Suggestion>();
-      billow::Design design = request.design;  // the settings: the seams go to the scene with each layout
-      design.seams.clear(), design.connections.clear();
-      design.scale = request.scale;
-      if (last && last->scene->scale == design.scale) {
-        s->scene = std::move(last->scene), s->onCopy = last->onCopy;
-        s->scene->design = design;
-      } else {
-        s->scene = billow::suggestionScene(design, mesh_);
-        s->onCopy = s->scene != nullptr;
-        if (!s->onCopy) s->scene = billow::makeTargetScene(design, mesh_);
-      }
-      last.reset();
+      takeScene(*s, request);
       s->keptOnTarget = request.design.seams;
       s->kept = s->onCopy ? billow::carriedSeams(s->keptOnTarget, ownSurface(), *s->scene) : s->keptOnTarget;
       s->evaluate.triangles = request.triangles;
@@ -629,6 +628,24 @@ class TargetSession {
     int panels = 0;  // at most, as asked
   };
   std::unique_ptr<Suggestion> suggest_;
+  // The scene of the last suggestion (or preparation) at the request's size serves again (the same target: a new one
+  // resets the suggestion), the designer's settings taken anew without their seams, which go to the scene with each
+  // layout: another panel count starts at once. Else a fine target's simplified copy, or the target itself.
+  void takeScene(Suggestion& s, const PatternRequest& request) {
+    std::unique_ptr<Suggestion> last = std::move(suggest_);
+    billow::Design design = request.design;
+    design.seams.clear(), design.connections.clear();
+    design.scale = request.scale;
+    if (last && last->scene->scale == design.scale) {
+      s.scene = std::move(last->scene), s.onCopy = last->onCopy;
+      s.scene->design = design;
+      return;
+    }
+    last.reset();
+    s.scene = billow::suggestionScene(design, mesh_);
+    s.onCopy = s.scene != nullptr;
+    if (!s.onCopy) s.scene = billow::makeTargetScene(design, mesh_);
+  }
   Suggestion& startedSuggestion(int index) {
     if (!suggest_ || index < 0 || index >= int(suggest_->proposals.size()))
       throw billow::Error("suggest.not-started", "There are no layouts to try yet.");
@@ -682,6 +699,7 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("uncoveredTrianglesPtr", &TargetSession::uncoveredTrianglesPtr)
       .function("uncoveredTriangles", &TargetSession::uncoveredTriangles)
       .function("mirrorSymmetry", &TargetSession::mirrorSymmetry)
+      .function("suggestPrepare", &TargetSession::suggestPrepare)
       .function("suggestStart", &TargetSession::suggestStart)
       .function("suggestLook", &TargetSession::suggestLook)
       .function("suggestOptimize", &TargetSession::suggestOptimize);

@@ -100,6 +100,7 @@ export class SeamSuggestions {
     this.keepLabel.hidden = !this.app.design.seams.length;
     this.keep.checked = false;
     this.render();
+    this.prepare();
     // Offered where the target has a mirror plane: the one the design's seams are mirrored across, else the one the
     // worker finds.
     const key = this.targetKey();
@@ -113,6 +114,19 @@ export class SeamSuggestions {
       }
     }
     this.showSymmetry();
+  }
+
+  // As the panel opens, the helpers start with the target and make the scene a suggestion at the design's size is laid
+  // on (a fine target's simplified copy: a second or two), while the designer picks the panels. A request queues
+  // behind it in each helper; at another size by then it is made again. Errors show when Suggest is clicked.
+  prepare() {
+    const { app } = this;
+    if (!app.target) return;
+    const { seams, connections, ...physics } = optimizeArgs(app.design, TRIANGLES);
+    const args = { ...physics, scale: app.scaleFor(app.design), up: upOf(app.design) };
+    this.helperClients()
+      .then((clients) => Promise.all(clients.map((client) => client.request(Op.suggestPrepare, args))))
+      .catch(() => {});
   }
 
   // The mirror plane a layout may keep, or null.

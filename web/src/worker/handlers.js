@@ -202,6 +202,10 @@ export function createHandlers(api) {
       }
       return { tried: proposals.length, notUsed, optimize, ofOneFamily };
     },
+    *[Op.suggestPrepare](options) {
+      state.suggestion = null; // the session's suggestion is this preparation now
+      return requireSession().suggestPrepare(options);
+    },
     // A layout of the suggestion, optimized at its coarse resolution from the seams and internal connections its look
     // (on this worker or another) ended with; the suggestion is started here too where this worker has not (restarted
     // after a crash).

@@ -32,6 +32,10 @@ export const Op = Object.freeze({
   optimizeDesign: 'optimizeDesign',
   // {} -> { axis: 'x' | 'y' | 'z' | null }: the target's mirror symmetry plane, where it has one.
   mirrorSymmetry: 'mirrorSymmetry',
+  // { scale, triangles, pressure, material, up } -> { onCopy }: the scene a suggestion at that scale is laid on, made
+  // ahead while the designer picks the panels (a fine target's simplified copy takes a second or two); suggestLook
+  // takes it on.
+  suggestPrepare: 'suggestPrepare',
   // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, part, parts } ->
   // { tried, notUsed: [{ index, name, why }] }: the seam layouts for the target, of which this worker looks at those
   // whose index is `part` modulo `parts`; progress carries each as it is looked at ({ look: { index, name, panels,

@@ -332,6 +332,10 @@ export class TargetSession {
   // outer surface for the card's picture: { positions #V*3 [m], triangles #F*3, distance #V (signed, over the
   // target's diagonal), panel #F } as plain arrays (typed ones would be transferred away with the progress message
   // that brings a layout before the reply brings it again).
+  suggestPrepare(options) {
+    return SolverApi.unwrap(this.session.suggestPrepare(JSON.stringify(options)));
+  }
+
   suggestStart(kept, options) {
     return SolverApi.unwrap(this.session.suggestStart(JSON.stringify(kept), JSON.stringify(options)));
   }
