@@ -17,9 +17,9 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   } catch (const Error&) {
     return 0;  // refused with a message: expected
   }
-  // readMeshBytes must agree with the direct reader on an accepted input.
+  // readMeshBytes must accept it too: the same triangles, over the file's vertices welded (as many or fewer).
   TriMesh again = readMeshBytes(text, "file.obj", fuzz::smallMeshOptions());
-  if (again.V.rows() != mesh.V.rows() || again.F.rows() != mesh.F.rows()) __builtin_trap();
+  if (again.F.rows() != mesh.F.rows() || again.V.rows() > mesh.V.rows()) __builtin_trap();
   try {
     fuzz::validateMesh(mesh);
   } catch (const Error&) {
