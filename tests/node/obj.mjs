@@ -1,6 +1,9 @@
 import { readFileSync } from 'node:fs';
 
-// A minimal OBJ reader for tests (v and triangular f lines only, as in ../shared/meshes).
+// A minimal OBJ reader for tests (v and triangular f lines only, as in ../shared/meshes), its vertices numbered as the
+// file lists them. The app and the command line read a file with the module's reader (io/mesh_file.cpp, welded, the
+// vertices numbered as the faces first use them: 7 of the 12 shared meshes otherwise); a test of the app's own
+// numbering opens the file through loadTarget or readMeshFile.
 export function readObjText(text) {
   const positions = [];
   const indices = [];
