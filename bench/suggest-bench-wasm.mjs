@@ -28,15 +28,18 @@ for (const given of meshes) {
   const name = given.includes('/') ? basename(given).replace(/\.[^.]*$/, '') : given;
   const path = given.includes('/') ? given : new URL(`${given}.obj`, SHARED_MESHES);
   const file = readFileSync(path);
-  // Opened as the app opens a file (loadTarget: the command line's reader), each worker with its own copy.
-  const load = (client) => client.request(Op.loadTarget, { fileName: basename(String(path)), bytes: file.buffer.slice(file.byteOffset, file.byteOffset + file.byteLength) });
+  // Opened as the app opens a file (loadTarget: the command line's reader); the helpers take the mesh it gives, as the
+  // app's take its own worker's.
+  const reader = threadedClient();
+  const mesh = await reader.request(Op.loadTarget, { fileName: basename(String(path)), bytes: file.buffer.slice(file.byteOffset, file.byteOffset + file.byteLength) });
+  reader.terminate();
+  let lo = Infinity;
+  let hi = -Infinity;
+  for (let v = 1; v < mesh.positions.length; v += 3) (lo = Math.min(lo, mesh.positions[v])), (hi = Math.max(hi, mesh.positions[v]));
   for (const workers of new Set(workerCounts)) {
     const clients = Array.from({ length: workers }, () => threadedClient());
     try {
-      const [mesh] = await Promise.all(clients.map(load));
-      let lo = Infinity;
-      let hi = -Infinity;
-      for (let v = 1; v < mesh.positions.length; v += 3) (lo = Math.min(lo, mesh.positions[v])), (hi = Math.max(hi, mesh.positions[v]));
+      await Promise.all(clients.map((client) => client.request(Op.setTarget, { positions: mesh.positions, indices: mesh.indices })));
       const { axis } = await clients[0].request(Op.mirrorSymmetry, {});
       const t0 = performance.now();
       let firstLook = null;

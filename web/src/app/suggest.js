@@ -120,13 +120,18 @@ export class SeamSuggestions {
   // on (a fine target's simplified copy: a second or two), while the designer picks the panels. A request queues
   // behind it in each helper; at another size by then it is made again. Errors show when Suggest is clicked.
   prepare() {
-    const { app } = this;
-    if (!app.target) return;
-    const { seams, connections, ...physics } = optimizeArgs(app.design, TRIANGLES);
-    const args = { ...physics, scale: app.scaleFor(app.design), up: upOf(app.design) };
+    if (!this.app.target) return;
+    const { scene } = this.settingsOf(this.app.design);
     this.helperClients()
-      .then((clients) => Promise.all(clients.map((client) => client.request(Op.suggestPrepare, args))))
+      .then((clients) => Promise.all(clients.map((client) => client.request(Op.suggestPrepare, scene))))
       .catch(() => {});
+  }
+
+  // What a suggestion's scene is made with, as the design has it (its sheet, pressure and resolution, at its size:
+  // one rule for the preparation and the suggestion, whose scene serves again only at the same size), and its seams.
+  settingsOf(design) {
+    const { seams, connections, ...physics } = optimizeArgs(design, TRIANGLES);
+    return { seams, scene: { ...physics, scale: this.app.scaleFor(design), up: upOf(design) } };
   }
 
   // The mirror plane a layout may keep, or null.
@@ -231,15 +236,13 @@ export class SeamSuggestions {
     const axis = this.symmetry.checked ? this.symmetryAxis() : null;
     // The sheet, pressure and resolution as the panels are made; the design's seams only when kept; its fabrication
     // settings (the roll's width, the seam allowance) as its pieces are nested.
-    const { seams, connections, ...physics } = optimizeArgs(design, TRIANGLES);
+    const { seams, scene } = this.settingsOf(design);
     const args = {
-      ...physics,
+      ...scene,
       fabrication: exportOptions(design.fabrication),
       kept: keep ? seams : [],
       panels,
       symmetry: axis,
-      scale: app.scaleFor(design),
-      up: upOf(design),
       maxIterations: MAX_ITERATIONS,
     };
     this.layouts = [];
