@@ -1,13 +1,12 @@
-// The worker protocol end to end in Node: the real SolverClient, Runner and handlers over the wasm
-// module, with an in-process stand-in for the Web Worker (same message passing, asynchronous).
+// The worker protocol end to end in Node: the real SolverClient, and the worker's Runner and handlers (serve.js)
+// over the wasm module, with an in-process stand-in for the Web Worker (same message passing, asynchronous).
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { fileURLToPath } from 'node:url';
 import { loadApi } from './load-module.mjs';
 import { SolverClient } from '../../web/src/worker/client.js';
-import { Runner } from '../../web/src/worker/runner.js';
-import { createHandlers } from '../../web/src/worker/handlers.js';
+import { serveSolver } from '../../web/src/worker/serve.js';
 import { Op, ErrorCode } from '../../web/src/worker/protocol.js';
 
 const MESHES = fileURLToPath(new URL('../../../shared/meshes', import.meta.url));
@@ -24,17 +23,16 @@ class InProcessWorker {
     this.terminated = false;
     this.early = [];
     loadApi().then((api) => {
-      this.runner = new Runner(createHandlers(api), (message) => {
+      ({ receive: this.receive, runner: this.runner } = serveSolver(api, (message) => {
         const copy = structuredClone(message);
         queueMicrotask(() => !this.terminated && this.onmessage?.({ data: copy }));
-      });
-      this.onmessage?.({ data: { kind: 'ready', version: api.version() } });
-      for (const m of this.early.splice(0)) this.runner.receive(m);
+      }));
+      for (const m of this.early.splice(0)) this.receive(m);
     });
   }
   postMessage(message) {
     const copy = structuredClone(message);
-    queueMicrotask(() => (this.runner ? this.runner.receive(copy) : this.early.push(copy)));
+    queueMicrotask(() => (this.receive ? this.receive(copy) : this.early.push(copy)));
   }
   terminate() {
     this.terminated = true;

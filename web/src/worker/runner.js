@@ -22,6 +22,34 @@ export class Runner {
     this.cancelled = new Set();
     this.unfinished = new Set(); // ids queued or running: a cancel for any other id has nothing to stop
     this.queue = Promise.resolve();
+    this.idleSteps = null; // a generator stepped only while no request is queued or running (idle())
+    this.stepping = false;
+  }
+
+  // Runs `steps` (a generator of short steps, whose results nobody waits for) while the worker has nothing else to
+  // do: a request waits at most for the step under way, and the rest go on once the worker is idle again.
+  // idle(null) drops the steps left.
+  idle(steps) {
+    this.idleSteps?.return(); // its finally blocks free what it made
+    this.idleSteps = steps;
+    if (steps) this.stepWhileIdle();
+  }
+
+  async stepWhileIdle() {
+    if (this.stepping) return;
+    this.stepping = true;
+    try {
+      while (this.idleSteps) {
+        await tick();
+        if (this.unfinished.size > 0) return; // run()'s finally resumes it
+        if (this.idleSteps.next().done) this.idleSteps = null;
+      }
+    } catch {
+      // Nothing waits for it, so a failure only ends it; were the module dead, the next request says so.
+      this.idleSteps = null;
+    } finally {
+      this.stepping = false;
+    }
   }
 
   receive(message) {
@@ -73,6 +101,7 @@ export class Runner {
     } finally {
       this.cancelled.delete(id);
       this.unfinished.delete(id);
+      if (this.unfinished.size === 0 && this.idleSteps) this.stepWhileIdle();
       try {
         steps?.return(); // runs the handler's finally blocks (frees wasm objects) on cancel and error
       } catch {
