@@ -3,7 +3,7 @@ import { Op, SolverError } from './protocol.js';
 import { parseMesh } from '../io/mesh-loaders.js';
 
 const STEP_ITERATIONS = 1000; // a step ends on time, not on count
-const STEP_MILLIS = 30; // short steps keep cancel responsive
+export const STEP_MILLIS = 30; // short steps keep cancel responsive
 const PANELS_EVERY_MS = 500; // how often an optimization streams its panels (their JSON costs a little)
 const PREVIEW_MILLIS = 120; // how often the inflating shape is streamed to the page
 

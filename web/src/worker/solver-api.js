@@ -322,6 +322,12 @@ export class TargetSession {
     return SolverApi.unwrap(this.session.mirrorSymmetry());
   }
 
+  // The scene a suggestion at options' size is laid on (buildPattern's options), made ahead: suggestStart at that size
+  // takes it on -> { onCopy }.
+  suggestPrepare(options) {
+    return SolverApi.unwrap(this.session.suggestPrepare(JSON.stringify(options)));
+  }
+
   // Suggested seam layouts: kept (the designer's seams the layouts add to), options: buildPattern's and { panels,
   // symmetry ('x' | 'y' | 'z' | null), maxIterations } -> { proposals: [name] }; then suggestLook(i), a first look at
   // layout i, and suggestOptimize(i, seams, connections), it optimized from the seams and internal connections its look
@@ -332,10 +338,6 @@ export class TargetSession {
   // outer surface for the card's picture: { positions #V*3 [m], triangles #F*3, distance #V (signed, over the
   // target's diagonal), panel #F } as plain arrays (typed ones would be transferred away with the progress message
   // that brings a layout before the reply brings it again).
-  suggestPrepare(options) {
-    return SolverApi.unwrap(this.session.suggestPrepare(JSON.stringify(options)));
-  }
-
   suggestStart(kept, options) {
     return SolverApi.unwrap(this.session.suggestStart(JSON.stringify(kept), JSON.stringify(options)));
   }

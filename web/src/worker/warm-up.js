@@ -2,12 +2,13 @@
 // optimization runs in optimized code. A fresh module runs in baseline code until each function has run often
 // enough to be compiled again (V8's tiering), which doubled the time to the first look at the inflated panels
 // (bench/README.md "The module's warm-up").
+import { STEP_MILLIS } from './handlers.js';
 import { TargetSession } from './solver-api.js';
 
 // Optimizer iterations on 300 triangles: enough for the solver's and the optimizer's loops to be compiled again (a
 // 3,000-element design's iterations then take as long as in a process that has optimized another before).
 const WARM_UP_ITERATIONS = 20;
-const STEP_MILLIS = 30;
+const SCALE = 0.3; // meters per target unit: a balloon 0.48 m tall
 
 // An ellipsoid (semi-axes 1, 0.8 and 0.45, poles on z) meshed by latitude rings, with the ring at z = 0 among
 // them: { positions, indices, equator } (equator: the ring's vertex indices, in order around it).
@@ -53,7 +54,7 @@ export function* warmUp(api) {
   try {
     session.setTarget(target.positions, target.indices);
     yield;
-    const start = session.startOptimization([equatorSeam(target)], { scale: 0.3, triangles: 300, pressure: 1000, material: { name: 'foil' } });
+    const start = session.startOptimization([equatorSeam(target)], { scale: SCALE, triangles: 300, pressure: 1000, material: { name: 'foil' } });
     if (!start.ok) return 0;
     let done = 0;
     for (let step = 0; done < WARM_UP_ITERATIONS; step = 1) {
@@ -61,7 +62,7 @@ export function* warmUp(api) {
       const status = session.optimizeStep(step, STEP_MILLIS); // the flattened panels' first equilibrium, then iterations
       done = status.iteration;
       if (status.state !== 'running') break;
-      session.optimizedDistance(0.3); // as the worker measures each iterate it streams
+      session.optimizedDistance(SCALE); // as the worker measures each iterate it streams
     }
     return done;
   } finally {
