@@ -128,7 +128,16 @@ test('a new deployment replaces the cache once the old pages are closed, with a 
     assertNoErrors(page);
     await page.close();
 
-    // With the old page closed the new version takes over and the old cache goes.
+    // With the old page closed the new version takes over and the old cache goes. Seen from a page of the origin
+    // outside the site's scope (a client of neither version), so that the next page's load does not race the
+    // activation (a CI run once timed out waiting for that load).
+    const outside = await context.newPage();
+    await outside.goto(`${server.origin}/outside-the-site`);
+    await outside.waitForFunction(async (b) => {
+      const r = await navigator.serviceWorker.getRegistration(b);
+      return r?.active && !r.waiting && !r.installing && (await caches.keys()).join() === `billow-precache:${b}:0000000000000000`;
+    }, BASE, { timeout: 30000, polling: 100 });
+    await outside.close();
     const next = await openPage(context, server.url);
     await next.waitForFunction(async (b) => (await caches.keys()).join() === `billow-precache:${b}:0000000000000000`, BASE, { timeout: 30000, polling: 100 });
     await shows(next, 'spot.obj');
