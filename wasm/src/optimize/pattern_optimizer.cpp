@@ -401,6 +401,7 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
     }
   }
   ++timings_.equilibriumSolves;
+  timings_.newtonIterations += solver.iterations();
   timings_.equilibriumMs += nowMs() - t0;
   if (newton) *newton = solver.iterations();
   if (snapped && *snapped) return false;

@@ -221,10 +221,11 @@ struct OptimizeTimings {
   double setupMs = 0, equilibriumMs = 0, alignMs = 0, adjointMs = 0, totalMs = 0;
   double directionMs = 0;  // the search directions: L-BFGS's two loops, or Gauss-Newton's CG with its solves
   int equilibriumSolves = 0, rejectedTrials = 0;
-  int snappedTrials = 0;  // line-search trials abandoned on their way into another equilibrium
-  int resettlings = 0;    // see OptimizeRecord::resettled
-  int remeshings = 0;     // remeshing steps taken
-  double remeshMs = 0;    // their time, their equilibrium solves included
+  int newtonIterations = 0;  // of every equilibrium solve, trials refused and snapped included
+  int snappedTrials = 0;     // line-search trials abandoned on their way into another equilibrium
+  int resettlings = 0;       // see OptimizeRecord::resettled
+  int remeshings = 0;        // remeshing steps taken
+  double remeshMs = 0;       // their time, their equilibrium solves included
 };
 
 // How PatternOptimizer solves one equilibrium (line-search trials, resettling).

@@ -27,6 +27,11 @@ struct InflateOptions {
   // Converged when max |f_i| / (p * l^2) < tolerance: the largest net force on a vertex relative to the pressure
   // load on a patch of mean rest edge length l (the paper stops at 1e-5 too).
   double tolerance = 1e-5;
+  // Also converged once an unshifted Newton step would move no vertex by settledStep radii of the sphere with the
+  // pattern's area yet raises Pi beyond its round-off: the relaxed membrane is so stiff along its tension that a
+  // residual of 1e-4 p l^2 is a move of 1e-8 radii, below what Pi resolves (0: off). The optimizer's line-search
+  // trials sat there at 2-400 times the tolerance, halving steps of 1e-9 radii to their Newton budget.
+  double settledStep = 1e-6;
   int maxIterations = 1000;
   double maxShift = 1e12;  // fails when the LM shift (in units of p * mean edge length) exceeds this
 
