@@ -122,6 +122,40 @@ TEST(Segmentation, ArcOverThePoleSnappedToTheEquatorGivesThreeDisks) {
   expectSound(scene, s);
 }
 
+// Gores whose common ends lie a hair from a vertex at a sharp tip of the target, just inside the distance at which
+// the cut takes a seam point for the vertex (as seams carried from a coarser copy of the target land): the seams must
+// meet there. Traced from beside the vertex, a gore passes it through edge points just beyond that distance, and
+// the cut leaves a sliver between them and the vertex (libigl's bumpy cube at six panels).
+TEST(Segmentation, GoresEndingAHairFromASharpTipMeetThere) {
+  Scene scene("sphere.obj");
+  for (int v = 0; v < scene.mesh.numVertices(); ++v)
+    if (std::abs(scene.mesh.V(v, 2)) > 0.999) scene.mesh.V.row(v) *= 1.6;  // the poles pulled out into spikes
+  scene.topo = buildTopology(scene.mesh);  // its angles changed (the solver refers to both)
+  const SurfaceProjector projector(scene.mesh);
+  const auto besideVertex = [&](const Eigen::Vector3d& p) {
+    SurfacePoint q = projector.project(p);
+    int corner = 0;
+    q.bary.maxCoeff(&corner);
+    q.bary.setConstant(0.99 * kSeamPointTolerance);
+    q.bary[corner] = 1 - 2 * 0.99 * kSeamPointTolerance;
+    return q;
+  };
+  const SurfacePoint top = besideVertex({0, 0, 1.6}), bottom = besideVertex({0, 0, -1.6});
+  for (int k = 0; k < 3; ++k) {
+    const double a = 2 * kPi * k / 3 + 3.33;
+    SeamSpec spec;
+    spec.controls = {top, projector.project({std::cos(a), std::sin(a), 0}), bottom};
+    scene.seams.push_back(buildSeamCurve(scene.solver, projector, spec));
+  }
+  const Segmentation s = segmentTarget(scene.mesh, scene.topo, scene.seams);
+  EXPECT_EQ(s.segments.size(), 3u);
+  EXPECT_EQ(disks(s), 3);
+  EXPECT_TRUE(s.problems.empty()) << s.problems.front().message;
+  ASSERT_EQ(s.junctions.size(), 2u);
+  for (const SeamJunction& j : s.junctions) EXPECT_EQ(j.seamEdges, 3);
+  expectSound(scene, s);
+}
+
 TEST(Segmentation, TwoCrossingGreatCirclesGiveFourDisks) {
   Scene scene("sphere.obj");
   scene.greatCircle({1, 0, 0.1}, {0, 0, 1});

@@ -110,6 +110,19 @@ std::vector<char> crossingSpans(const GeodesicSolver& solver, const std::vector<
   return crossing;
 }
 
+// p on the vertex or edge the cut merges it with (kSeamPointTolerance), in p's face. Traced from a hair beside
+// a vertex, seams that share an end leave it through edge points just beyond the tolerance, which the cut keeps
+// apart: their common end splits into stubs a hair long (gores carried onto libigl's bumpy cube).
+SurfacePoint onMergedFeature(const TriMesh& mesh, const MeshTopology& topo, const SurfacePoint& p) {
+  const SurfaceLocation loc = locate(mesh, topo, p, kSeamPointTolerance);
+  if (loc.kind == SurfaceLocation::Face) return p;
+  SurfacePoint q = p;
+  for (int k = 0; k < 3; ++k)
+    if (std::abs(q.bary[k]) <= kSeamPointTolerance) q.bary[k] = 0;
+  q.bary /= q.bary.sum();
+  return q;
+}
+
 }  // namespace
 
 SeamCurve buildSeamCurve(const GeodesicSolver& solver, const SurfaceProjector& projector, const SeamSpec& spec,
@@ -120,17 +133,21 @@ SeamCurve buildSeamCurve(const GeodesicSolver& solver, const SurfaceProjector& p
                 spec.closed ? "A closed seam needs at least three points." : "A seam needs at least two points.");
   SeamCurve curve;
   curve.closed = spec.closed, curve.weight = spec.weight;
+  std::vector<SurfacePoint> controls(n);
   std::vector<Eigen::Vector3d> c(n);
-  for (int i = 0; i < n; ++i) c[i] = position(solver.mesh(), spec.controls[i]);
+  for (int i = 0; i < n; ++i) {
+    controls[i] = onMergedFeature(solver.mesh(), solver.topology(), spec.controls[i]);
+    c[i] = position(solver.mesh(), controls[i]);
+  }
   const std::vector<Eigen::Vector3d> m = tangents(c, spec.closed);
   const int count = spec.closed ? n : n - 1;
   std::vector<GeodesicPath> direct(count), spans(count);
   for (int i = 0; i < count; ++i) {
     const int j = (i + 1) % n;
-    spans[i] = direct[i] = solver.path(spec.controls[i], spec.controls[j], options.geodesic);
+    spans[i] = direct[i] = solver.path(controls[i], controls[j], options.geodesic);
     if (spec.smooth && options.samplesPerSpan > 0) {
       const Eigen::Vector3d data[4] = {c[i], m[i], c[j], m[j]};
-      spans[i] = smoothSpan(solver, projector, spec.controls[i], spec.controls[j], data, direct[i], options);
+      spans[i] = smoothSpan(solver, projector, controls[i], controls[j], data, direct[i], options);
     }
   }
   // A smoothed span that makes the seam cross itself (the spline overshooting on a tight or concave turn)

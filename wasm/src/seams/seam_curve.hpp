@@ -12,6 +12,12 @@
 
 namespace billow {
 
+// Barycentric tolerance under which seam points merge with a vertex, an edge or each other. A seam laid along an
+// outline passes a hair (1e-6) beside the vertices its rim lies on; cut there, they would stay inside one side
+// behind sliver triangles and give it the rim's curvature (a star's tips all to the back panel). Control points
+// are traced from where the cut takes them (buildSeamCurve).
+inline constexpr double kSeamPointTolerance = 1e-5;
+
 struct SeamSpec {
   std::vector<SurfacePoint> controls;  // at least 2 (3 when closed)
   bool closed = false;                 // closed loops join the last control point to the first

@@ -29,11 +29,6 @@ struct CutMesh {
   int unrecoveredPieces = 0;            // seam pieces the triangulation could not insert (should stay 0)
 };
 
-// Barycentric tolerance under which seam points merge with a vertex, an edge or each other. A seam laid along an
-// outline passes a hair (1e-6) beside the vertices its rim lies on; cut there, they would stay inside one side
-// behind sliver triangles and give it the rim's curvature (a star's tips all to the back panel).
-inline constexpr double kSeamPointTolerance = 1e-5;
-
 CutMesh cutAlongSeams(const TriMesh& target, const MeshTopology& topo, const std::vector<SeamCurve>& seams,
                       double tol = kSeamPointTolerance);
 
