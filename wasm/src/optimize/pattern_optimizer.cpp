@@ -285,7 +285,7 @@ bool PatternOptimizer::leaveCoarsePhase() {
   Vertices x;
   int newton = 0;
   if (!solveEquilibrium(X_, x_, x, &newton)) {
-    finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
+    finish(OptimizeState::Failed, unsettledReason());
     return false;
   }
   takeNewMesh(std::move(x), newton, t0);
@@ -344,6 +344,14 @@ bool PatternOptimizer::rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) con
     }
   }
   return true;
+}
+
+std::string PatternOptimizer::unsettledReason() const {
+  SewnMesh mesh = mesh_;
+  if (!rebuildRest(X_, mesh))
+    return "a panel flattens with a sliver too thin to inflate, where seams end a hair apart: bring their ends "
+           "together or apart";
+  return "the flattened pattern does not settle under pressure";
 }
 
 bool PatternOptimizer::outlinesSimple(const Eigen::VectorXd& X) const {
@@ -1106,7 +1114,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
       settled = solveEquilibrium(X_, x_, x, &newton);
     }
     if (!settled) {
-      finish(OptimizeState::Failed, "the flattened pattern does not settle under pressure");
+      finish(OptimizeState::Failed, unsettledReason());
       return state_;
     }
     x_ = std::move(x);

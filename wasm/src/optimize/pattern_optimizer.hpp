@@ -366,6 +366,8 @@ class PatternOptimizer {
   // over every target vertex, whose distances targetDistances() then gives.
   void measureTarget(OptimizeRecord& r, const Vertices& x);
   bool rebuildRest(const Eigen::VectorXd& X, SewnMesh& mesh) const;
+  // Why the flattened pattern did not settle, in the designer's words: a rest triangle it cannot take, or Newton.
+  std::string unsettledReason() const;
   // Whether every panel's outline at X is a simple polygon (no two of its edges meet but neighbours).
   bool outlinesSimple(const Eigen::VectorXd& X) const;
   double elapsedMs() const;
