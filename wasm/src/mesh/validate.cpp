@@ -64,6 +64,7 @@ class Validator {
     }
     checkTriangles(diag);
     buildEdges();
+    edgeIssuesFrom_ = r_.issues.size();
     checkEdges();
     checkVertexFans();
     countComponents();
@@ -82,6 +83,7 @@ class Validator {
   std::vector<std::array<int, 3>> pairs_;  // manifold edges: face a, face b, 1 if both run the same way
   std::vector<int> referenced_;
   int nonManifoldEdges_ = 0, nonManifoldVertices_ = 0, inconsistentEdges_ = 0;
+  size_t edgeIssuesFrom_ = 0;  // where checkEdges' issues start, so that gathering the edges again replaces them
   bool orientable_ = true;
 
   Eigen::Vector3d centroid(int f) const {
@@ -133,7 +135,8 @@ class Validator {
     r_.stats.vertices = static_cast<int>(std::count(referenced_.begin(), referenced_.end(), 1));
     if (r_.stats.vertices < nV)
       add("mesh.unused-vertices", "notice",
-          plural(nV - r_.stats.vertices, "vertex is", "vertices are") + " not used by any triangle and were ignored.",
+          plural(nV - r_.stats.vertices, "vertex is", "vertices are") + " not used by any triangle and " +
+              (nV - r_.stats.vertices == 1 ? "was" : "were") + " ignored.",
           nV - r_.stats.vertices);
     return true;
   }
@@ -349,9 +352,11 @@ class Validator {
       referenced_.resize(static_cast<size_t>(m_.numVertices()), 1);
       r_.stats.vertices += added;
       r_.modified = true;
-      // The corners changed: the edges are gathered again (the same ones, between other vertices).
+      // The corners changed: the edges are gathered again (the same ones, between other vertices), and their
+      // issues (holes, non-manifold edges) said once.
       half_.clear(), pairs_.clear();
-      r_.stats.edges = 0, inconsistentEdges_ = 0;
+      r_.issues.resize(edgeIssuesFrom_);
+      r_.stats.edges = 0, inconsistentEdges_ = 0, nonManifoldEdges_ = 0;
       buildEdges();
       checkEdges();
       add("mesh.pinch-split", "notice",
