@@ -591,7 +591,7 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   timings_.totalMs = elapsedMs();
 }
 
-void PatternOptimizer::takeCutShape() {
+double PatternOptimizer::takeCutShape() {
   // A resettling took the optimizer to a worse equilibrium and it did not get back below its best: the best
   // iterate is what it found (a settled equilibrium of those panels), nothing of it is lost. But that iterate
   // may sit where its equilibrium is about to vanish (why the resettling came), and cut it can snap into the
@@ -599,6 +599,7 @@ void PatternOptimizer::takeCutShape() {
   // branch the balloon snapped into, then cuts better. The designer gets the better of the two cut shapes.
   std::optional<CutShape> cut;
   bool restore = best_.E < E_ && best_.X.size() == X_.size();
+  const double lastE = E_;
   if (restore) {
     cut = cutShape(best_.X, best_.x);
     if (!cut || cut->E > E_) {
@@ -623,6 +624,7 @@ void PatternOptimizer::takeCutShape() {
   } else {
     message_ += (message_.empty() ? "" : "; ") + std::string("the exact seam-length projection did not settle");
   }
+  return restore ? best_.E : lastE;
 }
 
 std::optional<PatternOptimizer::CutShape> PatternOptimizer::cutShape(const Eigen::VectorXd& X0, const Vertices& x0) {
@@ -1031,8 +1033,10 @@ void PatternOptimizer::slideWindow() {
 
 void PatternOptimizer::settleCutPanels() {
   if (sliding_ || coarsePhase_ || !options_.remeshing.cutPanels) return;
-  takeCutShape();  // the iterate to cut: the best one, seam lengths exact
-  const double ownE = E_;
+  // The iterate to cut: the best one, seam lengths exact. Its cut panels are judged against its objective before
+  // that projection, as the earlier iterates' below, since where it sits at a fold the projection alone can snap
+  // it (a screwdriver's layout: E 7.0e-4 -> 2.0e-3), and against that the snapped cut panels would pass.
+  const double ownE = takeCutShape();
   BuiltPattern own = built_;
   own.pattern = pattern_;
   own.pattern.inflated = panelInflated();

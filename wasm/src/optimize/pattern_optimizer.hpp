@@ -351,8 +351,8 @@ class PatternOptimizer {
   bool resettle(const Vertices& from);
   void finish(OptimizeState s, const std::string& message);
   // The final iterate, cut: the panels projected onto equal seam lengths and settled (a note in message_ when
-  // they do not settle).
-  void takeCutShape();
+  // they do not settle). Returns the objective of the iterate it cut, as it was before the projection.
+  double takeCutShape();
   // The panels X with equal seam lengths exactly, as they are cut, settled from x0 with the cut panels' own rods.
   struct CutShape {
     Eigen::VectorXd X;
