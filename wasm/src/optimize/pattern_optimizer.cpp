@@ -583,9 +583,12 @@ void PatternOptimizer::finish(OptimizeState s, const std::string& message) {
   // which the app compares with theirs): each measures the whole target.
   exactTarget_ = true;
   if (!history_.empty() && history_.back().targetSampled) measureTarget(history_.back(), Vertices(coverageShape_));
+  // A first look (no iteration, no cut panels) whose panels were projected onto equal seam lengths as it started is
+  // its own cut shape: settled again, the same equilibrium in no Newton iteration.
+  const bool ownCut = measuresOnly() && !options_.remeshing.cutPanels && projectTrials_;
   if (s != OptimizeState::Failed) {
     settleCutPanels();
-    takeCutShape();
+    if (!ownCut) takeCutShape();
   }
   state_ = s;
   timings_.totalMs = elapsedMs();
@@ -973,6 +976,7 @@ bool PatternOptimizer::resettle(const Vertices& from) {
 }
 
 std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const {
+  if (measuresOnly()) return StopReason{OptimizeState::Stopped, "the iteration limit was reached"};  // no gradient
   if (history_.back().gradient < options_.stopping.gradientTolerance) return StopReason{OptimizeState::Converged, ""};
   if (stalled_ >= options_.stopping.stallIterations)
     return StopReason{OptimizeState::Converged, "the objective stopped decreasing"};
@@ -1111,11 +1115,12 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     if (options_.search.projectEveryStep) projectTrials_ = projectStart();
     Vertices x;
     int newton = 0;
-    bool settled = solveEquilibrium(X_, x_, x, &newton);
+    const EquilibriumLimits first{measuresOnly() ? kTrialAlignment : EquilibriumLimits{}.alignTolerance};
+    bool settled = solveEquilibrium(X_, x_, x, &newton, false, first);
     if (!settled && coarsePhase_) {  // the coarse mesh alone may not settle: the design's mesh from the start
       setUpFlattened();
       ++timings_.remeshings;  // a new mesh, which the app fetches by this count
-      settled = solveEquilibrium(X_, x_, x, &newton);
+      settled = solveEquilibrium(X_, x_, x, &newton, false, first);
     }
     if (!settled) {
       finish(OptimizeState::Failed, unsettledReason());
@@ -1123,7 +1128,7 @@ OptimizeState PatternOptimizer::step(int maxIterations, double maxMillis) {
     }
     x_ = std::move(x);
     E_ = settledEnergy(X_, x_);
-    variableGradient(X_, x_, g_);
+    if (!measuresOnly()) variableGradient(X_, x_, g_);
     record(0, newton, false);
   }
   for (int k = 0; k < maxIterations; ++k) {

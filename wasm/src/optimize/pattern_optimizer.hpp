@@ -350,6 +350,9 @@ class PatternOptimizer {
   // current state. False when it is no different.
   bool resettle(const Vertices& from);
   void finish(OptimizeState s, const std::string& message);
+  // A run of no iterations (a suggested layout's first look, a cut check) only measures its panels' shape: no
+  // gradient is taken, and its alignment needs no more than a trial's.
+  bool measuresOnly() const { return options_.stopping.maxIterations == 0; }
   // The final iterate, cut: the panels projected onto equal seam lengths and settled (a note in message_ when
   // they do not settle). Returns the objective of the iterate it cut, as it was before the projection.
   double takeCutShape();
