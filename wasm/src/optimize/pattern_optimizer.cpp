@@ -117,6 +117,10 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
     : PatternOptimizer(nullptr, built, seamWeights, options, target) {}
 
 PatternOptimizer::PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
+                                   const std::vector<double>& seamWeights, const OptimizeOptions& options)
+    : PatternOptimizer(imls, built, seamWeights, options, imls->target()) {}
+
+PatternOptimizer::PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
                                    const std::vector<double>& seamWeights, const OptimizeOptions& options,
                                    const TriMesh& target)
     : options_(slidingOptions(options, seamWeights, built.figures.edgeLength,

@@ -244,6 +244,10 @@ class PatternOptimizer {
   // seamWeights[s]: sigma_s of seam s (Eq. 10). Throws billow::Error when the pattern does not sew.
   PatternOptimizer(const TriMesh& target, const BuiltPattern& built, const std::vector<double>& seamWeights,
                    const OptimizeOptions& options = {});
+  // The same on the target distance of another run (its kernels depend on the target alone: a suggestion's layouts
+  // share one).
+  PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
+                   const std::vector<double>& seamWeights, const OptimizeOptions& options = {});
   ~PatternOptimizer();
 
   // Up to maxIterations L-BFGS iterations or maxMillis (<= 0: none), whichever first; checked between

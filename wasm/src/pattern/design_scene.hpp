@@ -12,6 +12,8 @@
 
 namespace billow {
 
+class ImlsDistance;
+
 struct DesignScene {
   Design design;
   TriMesh target;    // in meters
@@ -24,6 +26,9 @@ struct DesignScene {
   std::unique_ptr<GeodesicSolver> geodesic;
   std::vector<SeamCurve> curves;
   Segmentation segmentation;
+  // The target's distance for the pattern optimizer (optimize/imls_distance.hpp), made by the first suggested layout
+  // optimized on this scene and kept for the next.
+  std::shared_ptr<const ImlsDistance> targetDistance;
   double loadMs = 0, seamsMs = 0, segmentMs = 0;
 };
 

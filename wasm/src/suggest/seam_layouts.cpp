@@ -1265,7 +1265,8 @@ void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOpti
     oo.stopping.maxIterations = options.maxIterations;
     // A first look (no iteration) measures the flattened panels' own inflation, not their cut.
     oo.remeshing.cutPanels = options.maxIterations > 0;
-    PatternOptimizer optimizer(scene.target, built, designSeamWeights(scene.design), oo);
+    if (!scene.targetDistance) scene.targetDistance = std::make_shared<const ImlsDistance>(scene.target, oo.imls);
+    PatternOptimizer optimizer(scene.targetDistance, built, designSeamWeights(scene.design), oo);
     while (optimizer.step(5) == OptimizeState::Running) {
     }
     if (optimizer.state() == OptimizeState::Failed || optimizer.history().empty()) {
