@@ -852,3 +852,31 @@ TEST(PatternOptimizer, APanelBoundedByOneLoopStaysSmoothWhereTheLoopStarts) {
     EXPECT_LT(turn[corner], 3 * median + 0.05) << "panel " << p;
   }
 }
+
+// A run of no iterations (a suggested layout's first look) measures the flattened panels' settled shape and stops
+// there: no gradient (an adjoint solve nothing would use), and projected onto equal seam lengths as it started, no
+// second settle as its cut. Its figures are those of a run's first iterate, to the alignment's tolerance.
+TEST(PatternOptimizer, AFirstLookOnlyMeasures) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  OptimizeOptions o = appStoppingRule();
+  o.stopping.maxIterations = 0, o.remeshing.cutPanels = false;
+  PatternOptimizer look(f.scene->target, f.built, f.weights, o);
+  while (look.step(5) == OptimizeState::Running) {
+  }
+  EXPECT_EQ(look.state(), OptimizeState::Stopped) << look.message();
+  ASSERT_EQ(look.history().size(), 1u);
+  EXPECT_FALSE(look.history()[0].projected);
+  EXPECT_EQ(look.timings().adjointMs, 0);
+  EXPECT_EQ(look.timings().equilibriumSolves, 1);
+  EXPECT_LT(look.history()[0].seamMismatch, 1e-9);
+  o.stopping.maxIterations = 1;
+  PatternOptimizer run(f.scene->target, f.built, f.weights, o);
+  run.step(0);  // the first equilibrium only
+  ASSERT_EQ(run.history().size(), 1u);
+  EXPECT_GT(run.timings().adjointMs, 0);
+  const OptimizeRecord &a = look.history()[0], &b = run.history()[0];
+  EXPECT_NEAR(a.distanceRms, b.distanceRms, 1e-3 * b.distanceRms);
+  EXPECT_NEAR(a.targetDistanceRms, b.targetDistanceRms, 1e-3 * b.targetDistanceRms);
+  EXPECT_NEAR(a.objective, b.objective, 1e-4 * b.objective);
+}
