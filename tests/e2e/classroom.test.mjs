@@ -285,9 +285,16 @@ test('two seam layouts compared side by side; either one can be put back, undoab
   await page.click('.compare-card[data-layout="A"] .compare-use');
   await page.waitForFunction(() => window.billow.test.design.seams.length === 3);
   await resultShown(page);
-  // While the app is idle the panel does nothing: it follows the app's changes, it does not poll.
-  const idleRenders = await page.evaluate(() => window.billow.test.compareRenders(1500));
-  assert.equal(idleRenders, 0, 'no renders while idle');
+  // While the app is idle the panel does nothing: it follows the app's changes, it does not poll. A change the app
+  // makes just after its result is shown is followed, so the panel is judged over a quiet spell, the first of up to
+  // three: a poller draws in every one.
+  const windows = [];
+  for (let k = 0; k < 3 && (windows.length === 0 || windows.at(-1).renders > 0); ++k)
+    windows.push(await page.evaluate(() => window.billow.test.compareRenders(1500)));
+  if (windows.length > 1) console.log(`# the comparison drew after the result was shown: ${JSON.stringify(windows)}`);
+  const quiet = windows.at(-1);
+  assert.equal(quiet.renders, 0, `no renders while idle: ${JSON.stringify(windows)}`);
+  for (const w of windows) assert.ok(w.renders <= w.changes.length, `a draw only on a change of the app: ${JSON.stringify(w)}`);
   await page.click('dialog.compare-dialog .compare-close');
   assert.equal(await page.isVisible('dialog.compare-dialog'), false);
   assert.deepEqual(page.errors, []);

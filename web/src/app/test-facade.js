@@ -127,17 +127,21 @@ export function testFacade({ app, seamTool, gallery, classroom, compare, tabGuar
 
     // The classroom walk's figures of a step ([label, value] rows).
     classroomFigures: (step) => classroom.targetFigures(step),
-    // How often the layout comparison draws itself within `millis` (it follows the app's changes, no timer).
+    // How often the layout comparison draws itself within `millis` (it follows the app's changes, no timer), and
+    // the app's changes in that time ('work', 'shown', ...: what a draw would follow).
     async compareRenders(millis) {
       const render = compare.render;
-      let calls = 0;
+      let renders = 0;
       compare.render = function counted() {
-        calls += 1;
+        renders += 1;
         return render.call(this);
       };
+      const changes = [];
+      const unsubscribe = app.store.subscribe((what) => changes.push(what));
       await new Promise((resolve) => setTimeout(resolve, millis));
       compare.render = render;
-      return calls;
+      unsubscribe();
+      return { renders, changes };
     },
     get isPrimaryTab() {
       return tabGuard.isPrimary;
