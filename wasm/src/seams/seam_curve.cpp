@@ -113,13 +113,12 @@ std::vector<char> crossingSpans(const GeodesicSolver& solver, const std::vector<
 // p on the vertex or edge the cut merges it with (kSeamPointTolerance), in p's face. Traced from a hair beside
 // a vertex, seams that share an end leave it through edge points just beyond the tolerance, which the cut keeps
 // apart: their common end splits into stubs a hair long (gores carried onto libigl's bumpy cube).
-SurfacePoint onMergedFeature(const TriMesh& mesh, const MeshTopology& topo, const SurfacePoint& p) {
-  const SurfaceLocation loc = locate(mesh, topo, p, kSeamPointTolerance);
-  if (loc.kind == SurfaceLocation::Face) return p;
+SurfacePoint onMergedFeature(const SurfacePoint& p) {
   SurfacePoint q = p;
+  bool merged = false;
   for (int k = 0; k < 3; ++k)
-    if (std::abs(q.bary[k]) <= kSeamPointTolerance) q.bary[k] = 0;
-  q.bary /= q.bary.sum();
+    if (std::abs(q.bary[k]) <= kSeamPointTolerance) q.bary[k] = 0, merged = true;
+  if (merged) q.bary /= q.bary.sum();
   return q;
 }
 
@@ -136,7 +135,7 @@ SeamCurve buildSeamCurve(const GeodesicSolver& solver, const SurfaceProjector& p
   std::vector<SurfacePoint> controls(n);
   std::vector<Eigen::Vector3d> c(n);
   for (int i = 0; i < n; ++i) {
-    controls[i] = onMergedFeature(solver.mesh(), solver.topology(), spec.controls[i]);
+    controls[i] = onMergedFeature(spec.controls[i]);
     c[i] = position(solver.mesh(), controls[i]);
   }
   const std::vector<Eigen::Vector3d> m = tangents(c, spec.closed);
