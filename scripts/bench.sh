@@ -27,3 +27,5 @@ node "$ROOT/bench/suggest-bench.mjs" --panels 12 --meshes koala,spot,blub
 log "suggested seam layouts, wasm (node)"
 node --no-experimental-fetch "$ROOT/bench/suggest-bench-wasm.mjs" --panels 12 --meshes koala,spot,blub
 bash "$ROOT/scripts/build.sh" web >/dev/null && log "site (headless Chromium)" && node "$ROOT/bench/site-bench.mjs"
+log "suggested seam layouts, the app (headless Chromium)"
+node "$ROOT/bench/suggest-bench-app.mjs" --panels 12 --meshes koala

@@ -128,6 +128,14 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
   await page.click('#redo-button');
   await page.waitForFunction(() => /Stopped: the design changed/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 30000 });
   assert.equal(await page.textContent('.suggest-go'), 'Suggest layouts');
+  // The layouts looked at before it stopped stay to compare, each numbered, its picture drawn once in view.
+  const stayed = await page.$$eval('.suggest-card', (els) => els.map((el) => el.dataset.rank));
+  assert.ok(stayed.length > 0 && stayed.every((rank, k) => rank === String(k + 1)), JSON.stringify(stayed));
+  await page.waitForFunction(() => {
+    const canvas = document.querySelector('.suggest-card[data-rank="1"] canvas.suggest-picture');
+    const { data } = canvas.getContext('2d').getImageData(0, 0, canvas.width, canvas.height);
+    return data.some((x, i) => i % 4 === 3 && x > 0);
+  }, null, { timeout: 10000 });
   assert.deepEqual(page.errors, []);
 });
 

@@ -24,6 +24,7 @@ const MAX_ITERATIONS = 40;
 // Workers of its own, one per core up to this many: the layouts are tried side by side, and the design's own worker
 // stays free for the designer's edits meanwhile.
 const MOST_HELPERS = 4;
+const SHOW_EVERY = 250; // ms
 
 // Optimized layouts first, those that fit the sheet and then the closest first; then the ones only looked at, closest
 // first.
@@ -51,7 +52,21 @@ export class SeamSuggestions {
     this.layouts = [];
     this.symmetryOf = new Map(); // target key -> the axis the worker found, or null
     this.pictures = new WeakMap(); // a layout's balloon -> its drawn canvas and the view it was drawn from
+    this.cardsOf = new WeakMap(); // a layout -> its card, how to number it, and what it shows (render)
+    this.pictureOf = new WeakMap(); // a canvas -> its picture
     this.build();
+    // Within a panel's height of the cards in view, a picture is drawn.
+    this.nearView = new IntersectionObserver(
+      (entries) => {
+        for (const entry of entries) {
+          const picture = this.pictureOf.get(entry.target);
+          if (!picture) continue;
+          picture.seen = entry.isIntersecting;
+          if (picture.seen) this.draw(picture);
+        }
+      },
+      { root: this.cards.parentElement, rootMargin: '100% 0px' },
+    );
     button?.addEventListener('click', () => (this.dialog.open ? this.close() : this.open()));
   }
 
@@ -215,7 +230,30 @@ export class SeamSuggestions {
     this.finish(note);
   }
 
+  // The progress and the cards as they stand, at most every SHOW_EVERY ms: each frame of the page costs the workers'
+  // cores about 10 ms (its layout, paint and commit), and a suggestion's looks come 5-10 a second.
+  showProgress(p, arrived) {
+    this.shown = { p, arrived: arrived || Boolean(this.shown?.arrived) };
+    this.showTimer ||= setTimeout(() => {
+      const { p, arrived } = this.shown;
+      this.showTimer = 0;
+      this.shown = null;
+      if (p.total) {
+        this.progress.max = p.total;
+        this.progress.value = p.done;
+      }
+      this.status.textContent = p.layout || p.look ? `${p.stage}: ${p.done} of ${p.total}…` : `${p.stage}: ${p.done + 1} of ${p.total}${p.detail ? `, ${p.detail}` : ''}…`;
+      if (arrived) this.render();
+    }, SHOW_EVERY);
+  }
+
   finish(note) {
+    // Layouts that came since the cards were last shown stay, stopped or not.
+    const unshown = this.shown?.arrived;
+    clearTimeout(this.showTimer);
+    this.showTimer = 0;
+    this.shown = null;
+    if (unshown) this.render();
     this.call = null;
     this.unsubscribe?.();
     this.unsubscribe = null;
@@ -246,6 +284,7 @@ export class SeamSuggestions {
       maxIterations: MAX_ITERATIONS,
     };
     this.layouts = [];
+    this.nearView.disconnect(); // the last request's cards go
     this.request = { revision: app.revision, kept: keep ? design.seams.length : 0, axis, panels };
     this.render();
     this.progress.hidden = false;
@@ -269,17 +308,10 @@ export class SeamSuggestions {
     const call = (this.call = suggestLayouts(clients, args, {
       onProgress: (p) => {
         if (call !== this.call) return;
-        if (p.total) {
-          this.progress.max = p.total;
-          this.progress.value = p.done;
-        }
-        this.status.textContent = p.layout || p.look ? `${p.stage}: ${p.done} of ${p.total}…` : `${p.stage}: ${p.done + 1} of ${p.total}${p.detail ? `, ${p.detail}` : ''}…`;
-        // A layout looked at shows at once with its flattened panels' figures; optimized, it takes its own.
+        // A layout looked at shows with its flattened panels' figures; optimized, it takes its own.
         const arrived = p.layout ?? (p.look && { ...p.look, firstLook: true });
-        if (arrived) {
-          this.layouts = [...this.layouts.filter((l) => l.name !== arrived.name), arrived].sort(byQuality);
-          this.render();
-        }
+        if (arrived) this.layouts = [...this.layouts.filter((l) => l.name !== arrived.name), arrived].sort(byQuality);
+        this.showProgress(p, Boolean(arrived));
       },
     }));
     try {
@@ -336,9 +368,21 @@ export class SeamSuggestions {
     this.render();
   }
 
+  // Each layout keeps its card while it shows the same, renumbered as others arrive, and only a card that is new or
+  // moved enters the list: made anew at each of a suggestion's 100-odd looks, every card was restyled, laid out and
+  // painted again (a third of a core on two, beside the workers).
   render() {
-    const cards = this.layouts.map((layout, k) => this.card(layout, k));
-    this.cards.replaceChildren(...cards);
+    const { sheet_width: width, units } = this.app.design.fabrication;
+    const cards = this.layouts.map((layout, k) => {
+      const state = `${layout.name === this.usedName} ${layout.name === this.shownName} ${width} ${units}`;
+      let kept = this.cardsOf.get(layout);
+      if (kept?.state !== state) this.cardsOf.set(layout, (kept = { ...this.card(layout), state }));
+      kept.number(k);
+      return kept.card;
+    });
+    const shown = this.cards.children;
+    cards.forEach((card, i) => shown[i] !== card && this.cards.insertBefore(card, shown[i] ?? null));
+    while (shown.length > cards.length) shown[shown.length - 1].remove();
   }
 
   // The pictures are seen as the target is: turning it turns them (once a frame at most).
@@ -349,7 +393,10 @@ export class SeamSuggestions {
     const turned = () => {
       frame ||= requestAnimationFrame(() => {
         frame = 0;
-        for (const layout of this.layouts) if (layout.balloon) this.picture(layout);
+        for (const layout of this.layouts) {
+          const picture = layout.balloon && this.pictures.get(layout.balloon);
+          if (picture?.seen) this.draw(picture);
+        }
       });
     };
     controls.addEventListener('change', turned);
@@ -359,11 +406,9 @@ export class SeamSuggestions {
     };
   }
 
-  // The layout's balloon drawn from the target pane's view (once per view: the cards are made anew at each layout
-  // that arrives).
+  // The canvas of the layout's balloon, drawn once it comes near the panel's view (a suggestion's hundred-odd first
+  // looks arrive as cards, of which the designer sees a few before the optimized ones replace them).
   picture(layout) {
-    const view = viewOf(this.app.panes?.target);
-    const key = view.elements.map((x) => x.toFixed(4)).join(' ');
     let picture = this.pictures.get(layout.balloon);
     if (!picture) {
       const canvas = Object.assign(document.createElement('canvas'), { className: 'suggest-picture' });
@@ -371,20 +416,27 @@ export class SeamSuggestions {
       const label = `Its panels inflated${layout.firstLook ? ' as first flattened (not optimized yet)' : ''}, colored by distance from the target: blue inside it, orange outside, the seams dark lines`;
       canvas.setAttribute('aria-label', label);
       canvas.title = label;
-      picture = { canvas, key: null };
+      picture = { canvas, balloon: layout.balloon, key: null, seen: false };
       this.pictures.set(layout.balloon, picture);
-    }
-    if (picture.key !== key) {
-      drawBalloon(picture.canvas, layout.balloon, view);
-      picture.key = key;
+      this.pictureOf.set(canvas, picture);
+      this.nearView.observe(canvas);
     }
     return picture.canvas;
   }
 
-  card(layout, k) {
+  // A picture drawn from the target pane's view (once per view).
+  draw(picture) {
+    const view = viewOf(this.app.panes?.target);
+    const key = view.elements.map((x) => x.toFixed(4)).join(' ');
+    if (picture.key === key) return;
+    drawBalloon(picture.canvas, picture.balloon, view);
+    picture.key = key;
+  }
+
+  // A layout's card, and how to number it (its rank among the layouts shown).
+  card(layout) {
     const card = document.createElement('article');
     card.className = 'suggest-card';
-    card.dataset.rank = String(k + 1);
     if (layout.name === this.usedName) card.classList.add('current');
     if (layout.name === this.shownName) card.classList.add('shown');
     if (layout.firstLook) card.classList.add('first-look');
@@ -392,8 +444,11 @@ export class SeamSuggestions {
     // two pieces along the outline seen from the front"): the whole name in bold ran to five lines.
     const [title, ...rest] = layout.name.split(', ');
     const h = document.createElement('h3');
-    h.textContent = `${k + 1}. ${title[0].toUpperCase()}${title.slice(1)}`;
     h.title = layout.name;
+    const number = (k) => {
+      card.dataset.rank = String(k + 1);
+      h.textContent = `${k + 1}. ${title[0].toUpperCase()}${title.slice(1)}`;
+    };
     const kind = rest.length ? Object.assign(document.createElement('p'), { className: 'suggest-kind', textContent: rest.join(', ') }) : null;
     const shown = layout.name === this.shownName;
     const show = Object.assign(document.createElement('button'), { type: 'button', className: 'suggest-show', textContent: shown ? 'Hide' : 'Show' });
@@ -435,6 +490,6 @@ export class SeamSuggestions {
     // What was added to its sections, or left out, so that every part is a panel.
     if (layout.description) card.append(Object.assign(document.createElement('p'), { className: 'suggest-description', textContent: `With ${layout.description}.` }));
     card.append(figures, buttons);
-    return card;
+    return { card, number };
   }
 }
