@@ -442,7 +442,13 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  const json manifest = json::parse(readFileBytes(manifestPath));
+  json manifest;
+  try {
+    manifest = json::parse(readFileBytes(manifestPath));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "billow_design_bench: %s\n", e.what());
+    return 2;
+  }
   const std::filesystem::path base = std::filesystem::path(manifestPath).parent_path();
   json rows = json::array();
   if (!asJson)

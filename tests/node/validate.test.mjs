@@ -3,7 +3,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from 'node:fs';
-import { execFileSync } from 'node:child_process';
+import { execFileSync, spawnSync } from 'node:child_process';
 import { fileURLToPath } from 'node:url';
 import { loadApi } from './load-module.mjs';
 import { readObjText } from './obj.mjs';
@@ -77,6 +77,17 @@ test('an open mesh is reported identically by wasm and native, with the hole loc
   assert.equal(issue.location.length, 3);
   // The same mesh through the CLI.
   assertSameReport(report, nativeReportOf(positions, open));
+  // Told in words, `billow check` names its own way to close the holes (the app's message has its button).
+  const dir = mkdtempSync('/tmp/billow-node-');
+  try {
+    writeFileSync(`${dir}/open.obj`, objText(positions, open));
+    const run = spawnSync(CLI, ['check', `${dir}/open.obj`], { encoding: 'utf8' });
+    assert.equal(run.status, 1);
+    assert.match(run.stderr, /must be closed to hold air/);
+    assert.match(run.stderr, new RegExp(`billow suggest ${dir}/open\\.obj --close-holes`));
+  } finally {
+    rmSync(dir, { recursive: true, force: true });
+  }
 });
 
 test('a triangle written twice comes back once, with a notice, the other faces in their order', () => {

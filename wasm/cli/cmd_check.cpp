@@ -31,9 +31,16 @@ int checkMesh(const std::string& path, bool asJson) {
                 st.area, st.volume);
     if (report.ok && st.standing.up.axis == 2)
       std::printf("  it stands on its Z bottom and would tip over on its Y bottom: made Z up, as CAD files are\n");
-    for (const auto& issue : report.issues)
+    for (const auto& issue : report.issues) {
       std::fprintf(issue.severity == "error" ? stderr : stdout, "  %s: %s\n", issue.severity.c_str(),
                    issue.message.c_str());
+      // The validation's words serve the app too, whose message offers a button for it: here, the option.
+      if (issue.code == "mesh.open")
+        std::fprintf(stderr,
+                     "  Or let Billow close them: billow suggest %s --close-holes, as the app's \"Close the holes\" "
+                     "button does.\n",
+                     path.c_str());
+    }
     std::printf("%s\n", report.ok ? "OK: Billow can use this target." : "NOT USABLE: fix the errors above.");
   }
   return report.ok ? 0 : 1;
