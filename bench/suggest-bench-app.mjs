@@ -29,7 +29,8 @@ try {
     await page.setInputFiles('#file-input', { name, mimeType: 'text/plain', buffer: readFileSync(path) });
     await page.waitForFunction((n) => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === n, name, { timeout: 120000, ...POLL });
     await page.click('#suggest-button');
-    await page.waitForSelector('dialog.suggest-dialog[open]');
+    // Its mirror plane found first, as a designer who reads the panel before asking sees the symmetry offered.
+    await page.waitForSelector('dialog.suggest-dialog[open][data-symmetry-known]');
     await page.fill('.suggest-panels', panels);
     const cdp = await context.newCDPSession(page);
     await cdp.send('Performance.enable');

@@ -111,6 +111,7 @@ export class SeamSuggestions {
   async open() {
     // Over the inflated pane, as the layout comparison: the target pane, where the seams are, stays in view.
     showOverInflatedPane(this.dialog, { down: true });
+    delete this.dialog.dataset.symmetryKnown;
     this.watchView();
     this.keepLabel.hidden = !this.app.design.seams.length;
     this.keep.checked = false;
@@ -129,6 +130,7 @@ export class SeamSuggestions {
       }
     }
     this.showSymmetry();
+    this.dialog.dataset.symmetryKnown = 'true'; // whether the target has a mirror plane (benches and tests wait for it)
   }
 
   // As the panel opens, the helpers start with the target and make the scene a suggestion at the design's size is laid
