@@ -9,7 +9,7 @@ source "$(dirname "${BASH_SOURCE[0]}")/lib.sh"
 
 SECONDS_PER_TARGET="${1:-60}"
 [[ "$SECONDS_PER_TARGET" =~ ^[0-9]+$ ]] || die "usage: scripts/fuzz.sh [SECONDS_PER_TARGET]"
-TARGETS=(${FUZZ_TARGETS:-obj stl ply pattern_json design_json})
+TARGETS=(${FUZZ_TARGETS:-obj stl ply off pattern_json design_json})
 FUZZ_DIR="${FUZZ_BUILD_DIR:-$ROOT/build/fuzz}"
 FUZZ_JOBS="${FUZZ_JOBS:-$(nproc)}"
 
@@ -25,13 +25,13 @@ cmake --build "$FUZZ_DIR" --target billow_fuzz >/dev/null
 
 max_len() {
   case "$1" in
-    obj | stl | ply) echo 8192 ;;
+    obj | stl | ply | off) echo 8192 ;;
     *) echo 16384 ;;
   esac
 }
 dict_of() {
   case "$1" in
-    obj | stl | ply) echo "$ROOT/tests/fuzz/$1.dict" ;;
+    obj | stl | ply | off) echo "$ROOT/tests/fuzz/$1.dict" ;;
     *) echo "$ROOT/tests/fuzz/json.dict" ;;
   esac
 }
@@ -73,10 +73,13 @@ for t in "${TARGETS[@]}"; do
   if ((crashes)) || grep -qE 'ERROR: (libFuzzer|AddressSanitizer)|runtime error:' "$logf"; then
     status=1
     ((crashes)) || crashes="?"
+  elif [ -z "$execs" ]; then
+    status=1  # it never ran (a dictionary it could not parse, a build that failed): see its log
+    crashes="-"
   fi
   printf '%-14s %12s %8s %8s %8s %8s\n' "$t" "${execs:--}" "${speed:--}" "${cov:--}" "${corpus:--}" "$crashes"
 done
 if ((status)); then
-  log "crashes: see build/fuzz/fuzz_<target>.log and build/fuzz/artifacts/<target>/ (replay: build/fuzz/tests/fuzz/fuzz_<target> <file>)"
+  log "crashes, or a target that did not run: see build/fuzz/fuzz_<target>.log and build/fuzz/artifacts/<target>/ (replay: build/fuzz/tests/fuzz/fuzz_<target> <file>)"
 fi
 exit "$status"

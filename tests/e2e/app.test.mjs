@@ -72,12 +72,12 @@ test('a mesh with a hole, opened with the file picker, gets a clear message and 
   assert.match(await page.locator('.message.error >> nth=1').textContent(), /"noise\.stl" cannot be opened\. The STL file is only 5 bytes/);
   await page.setInputFiles('#file-input', { name: 'photo.jpg', mimeType: 'image/jpeg', buffer: Buffer.from('xx') });
   await page.locator('.message.error >> nth=2').waitFor();
-  assert.match(await page.locator('.message.error >> nth=2').textContent(), /OBJ, STL or PLY/);
+  assert.match(await page.locator('.message.error >> nth=2').textContent(), /OBJ, STL, PLY or OFF/);
   assertNoErrors(page);
   await page.close();
 });
 
-test('opening a file and dropping a file both replace the target', async () => {
+test('opening a file (OBJ, PLY, OFF) and dropping one (STL) each replace the target', async () => {
   const page = await fresh();
   await page.setInputFiles('#file-input', { name: 'blub.obj', mimeType: 'text/plain', buffer: readFileSync(`${MESHES}/blub.obj`) });
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="triangles"]')?.textContent === '1,886');
@@ -112,6 +112,13 @@ test('opening a file and dropping a file both replace the target', async () => {
   const ply = `ply\nformat ascii 1.0\nelement vertex ${vertices.length}\nproperty float x\nproperty float y\nproperty float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n${vertices.join('\n')}\n${strips.length} ${strips.join(' ')}\n`;
   await page.setInputFiles('#file-input', { name: 'scan.ply', mimeType: 'application/octet-stream', buffer: Buffer.from(ply) });
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'scan.ply');
+  assert.equal(await stat(page, 'vertices'), '642');
+  assert.equal(await stat(page, 'triangles'), '1,280');
+  // An OFF file (libigl's and CGAL's meshes come so): its header, counts, a comment, 0-based faces.
+  const faces = lines.filter((p) => p[0] === 'f').map((p) => `3 ${p.slice(1, 4).map((k) => Number(k) - 1).join(' ')}`);
+  const off = `OFF\n# the sphere\n${vertices.length} ${faces.length} 0\n${vertices.join('\n')}\n${faces.join('\n')}\n`;
+  await page.setInputFiles('#file-input', { name: 'sphere.off', mimeType: 'application/octet-stream', buffer: Buffer.from(off) });
+  await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'sphere.off');
   assert.equal(await stat(page, 'vertices'), '642');
   assert.equal(await stat(page, 'triangles'), '1,280');
   assertNoErrors(page);

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "io/design_json.hpp"
+#include "io/off_reader.hpp"
 #include "io/pattern_json.hpp"
 #include "io/ply_reader.hpp"
 #include "util/error.hpp"
@@ -68,4 +69,11 @@ TEST(FuzzRegressions, PlyElementWithoutPropertiesAndHugeCountDoesNotHang) {
   const TriMesh binMesh = readPly(bin);
   EXPECT_EQ(binMesh.V.rows(), 3);
   EXPECT_EQ(binMesh.F.rows(), 1);
+}
+
+// fuzz_off, corpus/off/regress_huge_face_count.off: a face's vertex count past a long long (strtoll saturates)
+// overflowed the check of how many indices its line names (UBSan).
+TEST(FuzzRegressions, OffFaceCountBeyondItsLineIsASyntaxError) {
+  const std::string off = "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n99999999999999999999999 0 1 2\n";
+  EXPECT_EQ(errorCode([&] { readOff(off); }), "off.syntax");
 }

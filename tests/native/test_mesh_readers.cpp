@@ -1,4 +1,4 @@
-// STL and PLY readers and welding: meshes are written to bytes here, in every format, and read back.
+// STL, PLY and OFF readers and welding: meshes are written to bytes here, in every format, and read back.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "io/mesh_file.hpp"
+#include "io/off_reader.hpp"
 #include "io/ply_reader.hpp"
 #include "io/stl_reader.hpp"
 #include "mesh/weld.hpp"
@@ -524,4 +525,81 @@ TEST(MeshFile, EveryFormatIsWeldedAlike) {
   // Faces that already share their vertices keep them, in the order the faces first use them.
   const TriMesh again = readMeshBytes(ply(shared, PlyFormat::Ascii, false), "b.ply");
   EXPECT_EQ(again.F, fromStl.F);
+}
+
+// ---- OFF ----------------------------------------------------------------------------------------------
+
+namespace {
+
+// m as OFF text: the header alone on its line ("OFF"), on the counts' line ("OFF 8 6 0") or left out (""), with
+// a colour after each vertex and face when the header says COFF, and comments between.
+std::string off(const TriMesh& m, const std::string& header, bool countsOnHeaderLine = false) {
+  std::ostringstream s;
+  s.precision(17);
+  s << "# written by the test\n";
+  if (!header.empty()) s << header << (countsOnHeaderLine ? " " : "\n");
+  s << m.numVertices() << ' ' << m.numTriangles() << " 0\n\n";
+  const bool colours = header == "COFF";
+  for (int v = 0; v < m.numVertices(); ++v) {
+    s << m.V(v, 0) << ' ' << m.V(v, 1) << '\t' << m.V(v, 2);
+    if (colours) s << " 255 128 0 255";
+    s << (v == 0 ? "  # the first vertex\r\n" : "\n");
+  }
+  for (int t = 0; t < m.numTriangles(); ++t) {
+    s << "3 " << m.F(t, 0) << ' ' << m.F(t, 1) << ' ' << m.F(t, 2);
+    if (colours) s << " 0.5 0.5 0.5";
+    s << '\n';
+  }
+  return s.str();
+}
+
+const char* const kSquareOff = "OFF\n4 1 4\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n";
+
+}  // namespace
+
+TEST(OffReader, SphereReadsBackExactlyWhateverItsHeader) {
+  const TriMesh sphere = test::loadShared("sphere.obj");
+  for (const auto& [header, sameLine] : std::vector<std::pair<std::string, bool>>{
+           {"OFF", false}, {"OFF", true}, {"", false}, {"COFF", false}, {"NOFF", false}}) {
+    SCOPED_TRACE(header + (sameLine ? " (counts on its line)" : ""));
+    expectSameMesh(readMeshBytes(off(sphere, header, sameLine), "sphere.OFF"), sphere, 0);
+  }
+}
+
+TEST(OffReader, SplitsPolygonsIntoFansAndSkipsWhatFollowsTheFaces) {
+  const TriMesh m = readOff(std::string(kSquareOff) + "4 0 1 2 3\n0 1\n1 2\n");
+  ASSERT_EQ(m.numTriangles(), 2);
+  EXPECT_EQ(m.F.row(0), Eigen::RowVector3i(0, 1, 2));
+  EXPECT_EQ(m.F.row(1), Eigen::RowVector3i(0, 2, 3));
+}
+
+TEST(OffReader, ErrorsNameTheLineAndWhatToDo) {
+  const std::string square = kSquareOff;
+  expectError([&] { readOff(square + "3 0 1 4\n"); }, "off.syntax", "line 7: vertex 4 does not exist");
+  expectError([&] { readOff(square + "3 0 -1 2\n"); }, "off.syntax", "vertex -1 does not exist");
+  expectError([&] { readOff(square + "2 0 1\n"); }, "off.syntax", "at least three vertices");
+  expectError([&] { readOff(square + "4 0 1 2\n"); }, "off.syntax", "names 3 of its 4 vertices");
+  expectError([&] { readOff("OFF\n4 1 4\n0 0 0\n1 zero 0\n1 1 0\n0 1 0\n4 0 1 2 3\n"); }, "off.syntax",
+              "line 4: 'zero' is not a number");
+  expectError([&] { readOff("OFF\n4 1 4\n0 0 0\n1 0\n"); }, "off.syntax", "line 4: a vertex needs three coordinates");
+  expectError([&] { readOff("OFF\n4\n"); }, "off.syntax", "numbers of vertices and faces");
+  expectError([&] { readOff("OFF\n"); }, "off.syntax", "numbers of vertices and faces are missing");
+  expectError([&] { readOff("OFF\n4 1 4\n0 0 0\n1 0 0\n"); }, "off.truncated", "after 2 vertices of the 4");
+  expectError([&] { readOff(square + "# no face\n"); }, "off.truncated", "after 0 faces of the 1");
+  expectError([&] { readOff("OFF\n4 0 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\n"); }, "off.no-faces");
+  expectError([&] { readOff("# nothing\n\n"); }, "off.no-faces", "empty");
+  expectError([&] { readOff("OFF BINARY\n\x01\x02"); }, "off.unsupported-format", "Save it as text OFF");
+  expectError([&] { readOff("4OFF\n1 1 0\n0 0 0 1\n"); }, "off.unsupported-format", "'4OFF'");
+  expectError([&] { readMeshBytes("OFF\n1 1 0\n", "mesh.off3"); }, "io.unknown-format", "OFF format");
+}
+
+TEST(OffReader, RefusesMeshesBeyondTheLimitsBeforeReadingThem) {
+  MeshReadOptions small;
+  small.maxVertices = 3;
+  expectError([&] { readOff(kSquareOff, small); }, "mesh.too-large", "4 vertices");
+  small = {};
+  small.maxTriangles = 1;
+  expectError([&] { readOff(std::string(kSquareOff) + "4 0 1 2 3\n", small); }, "mesh.too-large", "OFF file");
+  // An absurd count in a small file is a file cut off, found without reserving memory for the count.
+  expectError([&] { readOff("OFF\n4000000 1 0\n0 0 0\n"); }, "off.truncated", "after 1 vertex of the 4,000,000");
 }

@@ -159,6 +159,21 @@ test('a PLY file opens through the command line\'s reader: its faces, its triang
   await assert.rejects(client.request(Op.loadTarget, { fileName: 'cut.ply', bytes: whole.slice(0, whole.byteLength - 6) }), (e) => e.code === 'ply.truncated' && /face 5855/.test(e.message));
 });
 
+test('an OFF file opens through the command line\'s reader as its OBJ does, and a cut-off one says so', async () => {
+  const client = newClient();
+  const obj = await client.request(Op.loadTarget, { fileName: 'spot.obj', bytes: bytesOf('spot.obj') });
+  const lines = readFileSync(`${MESHES}/spot.obj`, 'utf8').split('\n');
+  const vertices = lines.filter((l) => l.startsWith('v ')).map((l) => l.split(/\s+/).slice(1, 4).join(' '));
+  const faces = lines.filter((l) => l.startsWith('f ')).map((l) => `3 ${l.split(/\s+/).slice(1, 4).map((w) => Number(w.split('/')[0]) - 1).join(' ')}`);
+  const text = `OFF\n${vertices.length} ${faces.length} 0\n${vertices.join('\n')}\n${faces.join('\n')}\n`;
+  const off = await client.request(Op.loadTarget, { fileName: 'spot.off', bytes: new TextEncoder().encode(text).buffer });
+  assert.equal(off.report.ok, true);
+  assert.deepEqual(off.report.stats, obj.report.stats);
+  assert.deepEqual([...off.indices], [...obj.indices], 'the same triangles, facing the same way');
+  const cut = new TextEncoder().encode(text.slice(0, text.lastIndexOf('\n3 '))).buffer;
+  await assert.rejects(client.request(Op.loadTarget, { fileName: 'cut.off', bytes: cut }), (e) => e.code === 'off.truncated' && /after 5,855 faces of the 5,856/.test(e.message));
+});
+
 test('cancel stops a request between steps', async () => {
   const client = newClient();
   await client.ready;

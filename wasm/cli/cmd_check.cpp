@@ -86,7 +86,7 @@ int checkCommand(const std::vector<std::string>& argv) {
     std::fprintf(args.has("--help") ? stdout : stderr,
                  "usage: billow check MESH [--json]\n"
                  "       billow check DESIGN.json [--json]\n\n"
-                 "Checks that MESH (.obj, .stl, .ply) is a closed, manifold, consistently oriented single shape.\n"
+                 "Checks that MESH (.obj, .stl, .ply, .off) is a closed, manifold, consistently oriented single shape.\n"
                  "A design (a .json file) is read as the app reads it: every field checked, its target loaded and\n"
                  "checked, its seams placed on the target.\n"
                  "Exit code 0 when Billow can use it, 1 when not.\n");

@@ -5,6 +5,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "io/off_reader.hpp"
 #include "io/ply_reader.hpp"
 #include "io/stl_reader.hpp"
 #include "mesh/weld.hpp"
@@ -36,9 +37,11 @@ TriMesh readMeshBytes(std::string_view bytes, const std::string& fileName, const
     read = readObj(bytes, options);
   else if (ext == "ply")
     read = readPly(bytes, options);
+  else if (ext == "off")
+    read = readOff(bytes, options);
   else
-    throw Error("io.unknown-format",
-                "Billow cannot read '" + fileName + "': use a mesh in OBJ, STL or PLY format (.obj, .stl, .ply).");
+    throw Error("io.unknown-format", "Billow cannot read '" + fileName +
+                                         "': use a mesh in OBJ, STL, PLY or OFF format (.obj, .stl, .ply, .off).");
   // Exporters may write a vertex per face or per normal: corners at one place are one vertex in every format, as in
   // STL, numbered in the order the faces first use them (the app's links hash that numbering, docs/formats.md).
   Vertices soup(3 * read.numTriangles(), 3);

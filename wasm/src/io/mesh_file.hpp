@@ -1,4 +1,4 @@
-// Reading a target mesh from a file's bytes, by its name's extension (OBJ, STL, PLY): the one reader of mesh files, for
+// Reading a target mesh from a file's bytes, by its name's extension (OBJ, STL, PLY, OFF): the one reader of mesh files, for
 // the command line and the app alike.
 #pragma once
 #include <string>

@@ -16,7 +16,7 @@ struct MeshReadOptions {
 
 TriMesh readObj(std::string_view text, const MeshReadOptions& options = {});
 
-// What every reader throws past options.maxTriangles (format: "OBJ", "STL", "PLY"), with the file's own count where
+// What every reader throws past options.maxTriangles (format: "OBJ", "STL", "PLY", "OFF"), with the file's own count where
 // it is known before reading on (a binary STL's header), else -1.
 Error tooManyTriangles(const std::string& format, long long maxTriangles, long long triangles = -1);
 

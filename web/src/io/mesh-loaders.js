@@ -1,4 +1,4 @@
-// Target mesh files (OBJ, STL, PLY), read inside the worker by the command line's reader (io/mesh_file.cpp, through the
+// Target mesh files (OBJ, STL, PLY, OFF), read inside the worker by the command line's reader (io/mesh_file.cpp, through the
 // module's readMeshFile), so a file opens in the app as `billow check` reads it: the same triangles, welded alike, and
 // the reader's message naming the line or byte where a file is damaged. Large files never freeze the page.
 import { SolverError } from '../worker/protocol.js';
