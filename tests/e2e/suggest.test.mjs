@@ -125,6 +125,7 @@ test('suggested layouts come best first, and one is used as the design\'s seams,
   await page.fill('.suggest-panels', '6');
   await page.click('.suggest-go');
   await page.waitForFunction(() => /first look/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 60000 });
+  await page.waitForSelector('.suggest-card', { timeout: 60000 }); // a layout looked at (the last request's cards went)
   await page.click('#redo-button');
   await page.waitForFunction(() => /Stopped: the design changed/.test(document.querySelector('.suggest-status').textContent), null, { timeout: 30000 });
   assert.equal(await page.textContent('.suggest-go'), 'Suggest layouts');

@@ -491,7 +491,7 @@ TEST(PlyReader, RefusesMeshesBeyondTheLimits) {
 // ---- dispatch -----------------------------------------------------------------------------------------
 
 TEST(MeshFile, UnknownFormatListsTheReadableOnes) {
-  expectError([] { readMeshBytes("", "model.fbx"); }, "io.unknown-format", "OBJ, STL or PLY");
+  expectError([] { readMeshBytes("", "model.fbx"); }, "io.unknown-format", "OBJ, STL, PLY or OFF");
   expectError([] { readMeshBytes("solid x\nendsolid x\n", "x.Stl"); }, "stl.no-faces");
   expectError([] { readMeshBytes("ply\n", "x.pLy"); }, "ply.no-header-end");
 }

@@ -74,7 +74,7 @@ test('a broken file is rejected with a designer-facing message and its report', 
   });
   await assert.rejects(
     client.request(Op.loadTarget, { fileName: 'notes.txt', bytes: new TextEncoder().encode('hello').buffer }),
-    /OBJ, STL or PLY/,
+    /OBJ, STL, PLY or OFF/,
   );
   await assert.rejects(
     client.request(Op.loadTarget, { fileName: 'garbage.obj', bytes: new Uint8Array([0, 1, 2, 255]).buffer }),
