@@ -235,11 +235,11 @@ export class SeamSuggestions {
   // The progress and the cards as they stand, at most every SHOW_EVERY ms: each frame of the page costs the workers'
   // cores about 10 ms (its layout, paint and commit), and a suggestion's looks come 5-10 a second.
   showProgress(p, arrived) {
-    this.shown = { p, arrived: arrived || Boolean(this.shown?.arrived) };
+    this.pending = { p, arrived: arrived || Boolean(this.pending?.arrived) };
     this.showTimer ||= setTimeout(() => {
-      const { p, arrived } = this.shown;
+      const { p, arrived } = this.pending;
       this.showTimer = 0;
-      this.shown = null;
+      this.pending = null;
       if (p.total) {
         this.progress.max = p.total;
         this.progress.value = p.done;
@@ -251,10 +251,10 @@ export class SeamSuggestions {
 
   finish(note) {
     // Layouts that came since the cards were last shown stay, stopped or not.
-    const unshown = this.shown?.arrived;
+    const unshown = this.pending?.arrived;
     clearTimeout(this.showTimer);
     this.showTimer = 0;
-    this.shown = null;
+    this.pending = null;
     if (unshown) this.render();
     this.call = null;
     this.unsubscribe?.();
@@ -382,9 +382,9 @@ export class SeamSuggestions {
       kept.number(k);
       return kept.card;
     });
-    const shown = this.cards.children;
-    cards.forEach((card, i) => shown[i] !== card && this.cards.insertBefore(card, shown[i] ?? null));
-    while (shown.length > cards.length) shown[shown.length - 1].remove();
+    const children = this.cards.children;
+    cards.forEach((card, i) => children[i] !== card && this.cards.insertBefore(card, children[i] ?? null));
+    while (children.length > cards.length) children[children.length - 1].remove();
   }
 
   // The pictures are seen as the target is: turning it turns them (once a frame at most).
