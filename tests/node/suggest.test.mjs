@@ -289,7 +289,7 @@ test('seam ends on other seams stay on them, and on their twins, when a layout\'
   assert.ok(segmentation(bare).problems.length > 0, 'the unattached twin leaves a slit');
 });
 
-test('two workers side by side find the layouts one finds, each looking at its share, the closest optimized by whichever is free', async () => {
+test('two workers side by side find the layouts one finds, each looking at the next layout when free, the closest optimized by whichever is free', async () => {
   const args = { panels: 6, symmetry: 'x', scale: 0.6, triangles: 300, maxIterations: 2, optimize: 4 };
   const one = await suggest(await clientsFor('../../web/public/examples/spot.obj'), args);
   const threads = [threadedClient(), threadedClient()];
@@ -310,6 +310,27 @@ test('two workers side by side find the layouts one finds, each looking at its s
   } finally {
     for (const client of threads) client.terminate();
   }
+});
+
+test('a worker held up looks at fewer layouts, the other at the rest: each layout once, none waiting on a fixed share', async () => {
+  const [quick, held] = await clientsFor('../../web/public/examples/sphere.obj', [inThreadClient(api), inThreadClient(api)]);
+  const lookedBy = { quick: [], held: [] };
+  // Each watched for the layouts it is handed; the held one answers each look 400 ms late (a worker whose looks are
+  // the slow ones).
+  const watch = (client, name, delay) => ({
+    call: (op, args, options) => {
+      if (op !== Op.suggestLook || !args.indices?.length) return client.call(op, args, options);
+      lookedBy[name].push(...args.indices);
+      let call;
+      const promise = new Promise((r) => setTimeout(r, delay)).then(() => (call = client.call(op, args, options)).promise);
+      return { promise, cancel: () => call?.cancel() };
+    },
+  });
+  const result = await suggest([watch(quick, 'quick', 0), watch(held, 'held', 400)], { panels: 4, scale: 0.25, triangles: 300, maxIterations: 2, optimize: 2 });
+  const all = [...lookedBy.quick, ...lookedBy.held].sort((a, b) => a - b);
+  assert.deepEqual(all, [...Array(result.tried).keys()], 'every layout looked at once');
+  assert.ok(lookedBy.held.length >= 1 && lookedBy.quick.length >= 2 * lookedBy.held.length, `quick ${lookedBy.quick.length}, held ${lookedBy.held.length}`);
+  assert.ok(result.layouts.length >= 1);
 });
 
 test('a worker that stops during a suggestion stops the others, and the designer is told in their words', async () => {

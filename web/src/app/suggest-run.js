@@ -1,7 +1,7 @@
-// One seam suggestion shared by several workers (issue 27): the layouts are independent, so each worker looks at its
-// share of them (suggestLook: those whose index is its part modulo the parts), and the most promising looks are
-// optimized (suggestOptimize, from the seams each look ended with), each by whichever worker is free. No DOM: the app
-// runs it over its helper workers (suggest.js), the tests and the bench over workers in Node.
+// One seam suggestion shared by several workers (issue 27): the layouts are independent, so each is looked at
+// (suggestLook) and the most promising looks are optimized (suggestOptimize, from the seams each look ended with), each
+// by whichever worker is free. No DOM: the app runs it over its helper workers (suggest.js), the tests and the bench
+// over workers in Node.
 import { Op } from '../worker/protocol.js';
 
 // The same seams, their names aside: two proposals can end alike once the loops that only grazed the shape are gone
@@ -34,35 +34,40 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
     for (const c of [...running]) c.cancel();
   };
   const work = async () => {
-    const parts = clients.length;
     const looked = [];
     const notUsed = [];
     const seen = new Set();
-    const done = new Array(parts).fill(0);
-    const total = new Array(parts).fill(0);
-    const sum = (counts) => counts.reduce((s, n) => s + n, 0);
-    const looks = await Promise.all(
-      clients.map((client, part) =>
-        call(client, Op.suggestLook, { ...args, part, parts }, {
-          onProgress: ({ stage, done: d, total: t, detail, look }) => {
-            [done[part], total[part]] = [d, t];
-            const progress = { stage, done: sum(done), total: sum(total), detail };
-            if (!look) return onProgress(progress);
-            const key = seamsKey(look.seams);
-            if (seen.has(key)) return notUsed.push({ name: look.name, why: 'it ends with the same seams as a layout before it' });
-            seen.add(key);
-            looked.push(look);
-            onProgress({ ...progress, detail: undefined, look });
-          },
-        }),
-      ),
+    // Every worker makes the layouts ready (the same on each), then takes the next one to look at as it comes free:
+    // looks differ by several times, and a fixed share each left one worker idle for a fifth of the looks (the cat
+    // at 12 panels, every other layout each: 12.9 s against 18.6 s).
+    const ready = await Promise.all(clients.map((client) => call(client, Op.suggestLook, { ...args, indices: [] })));
+    const { tried, optimize: optimizeByDefault, ofOneFamily } = ready[0];
+    let next = 0;
+    let finished = 0;
+    await Promise.all(
+      clients.map(async (client) => {
+        for (let index = next++; index < tried; index = next++) {
+          const look = await call(client, Op.suggestLook, { ...args, indices: [index] }, {
+            onProgress: ({ stage, detail, look }) => {
+              const progress = { stage, done: finished, total: tried, detail };
+              if (!look) return onProgress(progress);
+              const key = seamsKey(look.seams);
+              if (seen.has(key)) return notUsed.push({ name: look.name, why: 'it ends with the same seams as a layout before it' });
+              seen.add(key);
+              looked.push(look);
+              onProgress({ ...progress, done: finished + 1, detail: undefined, look });
+            },
+          });
+          finished++;
+          notUsed.push(...look.notUsed.map(({ name, why }) => ({ name, why })));
+        }
+      }),
     );
-    for (const look of looks) notUsed.push(...look.notUsed.map(({ name, why }) => ({ name, why })));
     // Which to optimize, as the command line chooses (chooseLooks): asked of one worker, all of them having looked.
     const picks = await call(clients[0], Op.chooseLooks, {
       looks: looked.map(({ lookRank, family }) => ({ lookRank, family })),
-      optimize: optimize ?? looks[0].optimize,
-      ofOneFamily: looks[0].ofOneFamily,
+      optimize: optimize ?? optimizeByDefault,
+      ofOneFamily,
     });
     const chosen = picks.map((i) => looked[i]);
     const queue = [...chosen];
@@ -83,7 +88,7 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
         }
       }),
     );
-    return { layouts: layouts.sort(better), notUsed, tried: looks[0]?.tried ?? 0 };
+    return { layouts: layouts.sort(better), notUsed, tried };
   };
   const promise = work();
   // One worker's failure (a crash, a cancel) stops the others.

@@ -185,13 +185,13 @@ export function createHandlers(api) {
     *[Op.mirrorSymmetry]() {
       return requireSession().mirrorSymmetry();
     },
-    // Seam layouts for the target (suggest/seam_layouts.hpp), the first look at each of a share of them: the layouts
-    // whose index is `part` modulo `parts`, so that several workers share one suggestion (web/src/app/suggest-run.js).
-    // One layout a step, so progress shows and a cancel stops between layouts.
-    *[Op.suggestLook]({ kept = [], part = 0, parts = 1, ...options }) {
+    // Seam layouts for the target (suggest/seam_layouts.hpp) and the first look at those of `indices` (all of them
+    // where not given): several workers share one suggestion, each handed the next layout as it comes free
+    // (web/src/app/suggest-run.js). One layout a step, so progress shows and a cancel stops between layouts.
+    *[Op.suggestLook]({ kept = [], indices, ...options }) {
       const session = requireSession();
       const { proposals, optimize, ofOneFamily } = startSuggestion(kept, options);
-      const mine = [...proposals.keys()].filter((i) => i % parts === part);
+      const mine = indices ?? [...proposals.keys()];
       const notUsed = [];
       for (const [k, index] of mine.entries()) {
         yield { stage: 'a first look at each layout', done: k, total: mine.length, detail: proposals[index] };

@@ -36,11 +36,12 @@ export const Op = Object.freeze({
   // ahead while the designer picks the panels (a fine target's simplified copy takes a second or two); suggestLook
   // takes it on.
   suggestPrepare: 'suggestPrepare',
-  // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, part, parts } ->
+  // { kept (seams), panels, symmetry, scale, triangles, pressure, material, up, maxIterations, indices } ->
   // { tried, notUsed: [{ index, name, why }] }: the seam layouts for the target, of which this worker looks at those
-  // whose index is `part` modulo `parts`; progress carries each as it is looked at ({ look: { index, name, panels,
-  // seamLength, distance, inflatedToTarget, targetToInflated, rank, lookRank, family, seams, connections, balloon } },
-  // its flattened panels' figures); cancellable. Several workers share one suggestion (web/src/app/suggest-run.js).
+  // of `indices` (all where not given; none: the layouts made ready and counted); progress carries each as it is looked
+  // at ({ look: { index, name, panels, seamLength, distance, inflatedToTarget, targetToInflated, rank, lookRank, family,
+  // seams, connections, balloon } }, its flattened panels' figures); cancellable. Several workers share one
+  // suggestion (web/src/app/suggest-run.js).
   suggestLook: 'suggestLook',
   // { index, seams, connections, ...suggestLook's args } -> layout `index` of that suggestion, optimized at a coarse
   // resolution from the seams and internal connections its look ended with, on any worker (the suggestion started
