@@ -603,3 +603,31 @@ TEST(OffReader, RefusesMeshesBeyondTheLimitsBeforeReadingThem) {
   // An absurd count in a small file is a file cut off, found without reserving memory for the count.
   expectError([&] { readOff("OFF\n4000000 1 0\n0 0 0\n"); }, "off.truncated", "after 1 vertex of the 4,000,000");
 }
+
+TEST(MeshFile, EveryReaderWordsItsLimitsAlike) {
+  // One message for a mesh too large, whichever reader finds it: the count where the file says it, the limit, and
+  // what to do (util/text.hpp's tooLargeMessage).
+  const std::string advice =
+      " Billow can work with. Simplify it (for example with Decimate in Blender or MeshLab) and open it again.";
+  const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 1 4 3\nf 2 3 4\n";
+  const std::string off = "OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 0 3 2\n3 1 2 3\n";
+  const std::vector<std::pair<std::string, std::string>> files = {
+      {"tetrahedron.obj", obj},
+      {"tetrahedron.off", off},
+      {"tetrahedron.stl", stlBinary(tetrahedron())},
+      {"tetrahedron.ply", ply(tetrahedron(), PlyFormat::Ascii, false)}};
+  for (const auto& [name, bytes] : files)
+    for (const MeshReadOptions limits : {MeshReadOptions{3, 10}, MeshReadOptions{10, 3}}) {
+      try {
+        readMeshBytes(bytes, name, limits);
+        ADD_FAILURE() << name << ": read past its limits";
+      } catch (const Error& e) {
+        const std::string message = e.what();
+        EXPECT_EQ(e.code, "mesh.too-large") << message;
+        EXPECT_NE(message.find(" 3 "), std::string::npos) << message;
+        EXPECT_NE(message.find(limits.maxVertices == 3 ? "vertices" : "triangles"), std::string::npos) << message;
+        ASSERT_GE(message.size(), advice.size());
+        EXPECT_EQ(message.substr(message.size() - advice.size()), advice) << name;
+      }
+    }
+}

@@ -52,12 +52,11 @@ class LineParser {
 }  // namespace
 
 Error tooManyTriangles(const std::string& format, long long maxTriangles, long long triangles) {
-  const std::string has = triangles > maxTriangles
-                              ? grouped(triangles) + " triangles, more than the " + grouped(maxTriangles)
-                              : "more than " + grouped(maxTriangles) + " triangles, more than";
-  return Error("mesh.too-large", "The " + format + " file has " + has +
-                                     " Billow can work with. Simplify it (for example with Decimate in Blender or "
-                                     "MeshLab) and open it again.");
+  return Error("mesh.too-large", tooLargeMessage("The " + format + " file", triangles, maxTriangles, "triangles"));
+}
+
+Error tooManyVertices(const std::string& format, long long maxVertices, long long vertices, const std::string& what) {
+  return Error("mesh.too-large", tooLargeMessage("The " + format + " file", vertices, maxVertices, what));
 }
 
 TriMesh readObj(std::string_view text, const MeshReadOptions& options) {
@@ -75,8 +74,7 @@ TriMesh readObj(std::string_view text, const MeshReadOptions& options) {
     const std::string_view kind = line.word();
     if (kind == "v") {
       if (static_cast<long long>(coords.size() / 3) >= options.maxVertices)
-        throw Error("mesh.too-large", "The OBJ file has more than " + std::to_string(options.maxVertices) +
-                                          " vertices, more than Billow can work with. Simplify the mesh first.");
+        throw tooManyVertices("OBJ", options.maxVertices);
       for (int k = 0; k < 3; ++k) coords.push_back(line.number());
     } else if (kind == "f") {
       polygon.clear();

@@ -100,11 +100,7 @@ TriMesh readOff(std::string_view text, const MeshReadOptions& options) {
   const long long vertices = lines.integer(w[first], "a number of vertices");
   const long long faces = lines.integer(w[first + 1], "a number of faces");
   if (vertices < 0 || faces < 0) lines.fail("the numbers of vertices and faces cannot be negative");
-  if (vertices > options.maxVertices)
-    throw Error("mesh.too-large", "The OFF file has " + grouped(vertices) + " vertices, more than the " +
-                                      grouped(options.maxVertices) +
-                                      " Billow can work with. Simplify it (for example with Decimate in Blender or "
-                                      "MeshLab) and open it again.");
+  if (vertices > options.maxVertices) throw tooManyVertices("OFF", options.maxVertices, vertices);
   if (faces == 0) throw Error("off.no-faces", "The OFF file contains no faces, so there is no surface to use.");
   std::vector<double> coords;
   // Reserved for as many vertices as the file can hold (six bytes each at least), not as it announces.

@@ -327,9 +327,7 @@ Target findTarget(const Header& h) {
 
 void checkLimits(const Target& t, const MeshReadOptions& options) {
   const long long maxVertices = std::min<long long>(options.maxVertices, std::numeric_limits<int>::max());
-  if (t.vertex->count > maxVertices)
-    throw Error("mesh.too-large", "The PLY file has " + std::to_string(t.vertex->count) + " vertices, more than the " +
-                                      std::to_string(maxVertices) + " Billow can work with. Simplify the mesh first.");
+  if (t.vertex->count > maxVertices) throw tooManyVertices("PLY", maxVertices, t.vertex->count);
   if (!t.strips && t.face->count > options.maxTriangles) throw tooManyTriangles("PLY", options.maxTriangles);
 }
 

@@ -199,9 +199,7 @@ Vertices readStlSoup(std::string_view bytes, const MeshReadOptions& options) {
 TriMesh readStl(std::string_view bytes, const MeshReadOptions& options, const WeldOptions& weldOptions) {
   TriMesh mesh = weld(readStlSoup(bytes, options), weldOptions);
   if (mesh.numVertices() > options.maxVertices)
-    throw Error("mesh.too-large", "The STL file has " + std::to_string(mesh.numVertices()) +
-                                      " distinct vertices, more than the " + std::to_string(options.maxVertices) +
-                                      " Billow can work with. Simplify the mesh first.");
+    throw tooManyVertices("STL", options.maxVertices, mesh.numVertices(), "distinct vertices");
   return mesh;
 }
 

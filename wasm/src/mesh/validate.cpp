@@ -48,10 +48,7 @@ class Validator {
       return finish();
     }
     if (m_.numTriangles() > opt_.maxTriangles) {
-      add("mesh.too-large", "error",
-          "The mesh has " + grouped(m_.numTriangles()) + " triangles; Billow works interactively up to " +
-              grouped(opt_.maxTriangles) +
-              ". Simplify it (for example with Decimate in Blender or MeshLab) and load it again.",
+      add("mesh.too-large", "error", tooLargeMessage("The mesh", m_.numTriangles(), opt_.maxTriangles, "triangles"),
           m_.numTriangles());
       return finish();
     }
