@@ -47,7 +47,7 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
     await Promise.all(
       clients.map(async (client) => {
         for (let index = next++; index < tried; index = next++) {
-          const look = await call(client, Op.suggestLook, { ...args, indices: [index] }, {
+          const reply = await call(client, Op.suggestLook, { ...args, indices: [index] }, {
             onProgress: ({ stage, detail, look }) => {
               const progress = { stage, done: finished, total: tried, detail };
               if (!look) return onProgress(progress);
@@ -59,7 +59,7 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
             },
           });
           finished++;
-          notUsed.push(...look.notUsed.map(({ name, why }) => ({ name, why })));
+          notUsed.push(...reply.notUsed.map(({ name, why }) => ({ name, why })));
         }
       }),
     );
