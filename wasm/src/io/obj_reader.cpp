@@ -51,12 +51,8 @@ class LineParser {
 
 }  // namespace
 
-Error tooManyTriangles(const std::string& format, long long maxTriangles, long long triangles) {
-  return Error("mesh.too-large", tooLargeMessage("The " + format + " file", triangles, maxTriangles, "triangles"));
-}
-
-Error tooManyVertices(const std::string& format, long long maxVertices, long long vertices, const std::string& what) {
-  return Error("mesh.too-large", tooLargeMessage("The " + format + " file", vertices, maxVertices, what));
+Error meshTooLarge(const std::string& format, const std::string& what, long long limit, long long count) {
+  return Error("mesh.too-large", tooLargeMessage("The " + format + " file", count, limit, what));
 }
 
 TriMesh readObj(std::string_view text, const MeshReadOptions& options) {
@@ -74,7 +70,7 @@ TriMesh readObj(std::string_view text, const MeshReadOptions& options) {
     const std::string_view kind = line.word();
     if (kind == "v") {
       if (static_cast<long long>(coords.size() / 3) >= options.maxVertices)
-        throw tooManyVertices("OBJ", options.maxVertices);
+        throw meshTooLarge("OBJ", "vertices", options.maxVertices);
       for (int k = 0; k < 3; ++k) coords.push_back(line.number());
     } else if (kind == "f") {
       polygon.clear();
@@ -94,7 +90,7 @@ TriMesh readObj(std::string_view text, const MeshReadOptions& options) {
       if (polygon.size() < 3) line.fail("a face needs at least three vertices");
       for (size_t k = 1; k + 1 < polygon.size(); ++k) {
         if (static_cast<long long>(corners.size() / 3) >= options.maxTriangles)
-          throw tooManyTriangles("OBJ", options.maxTriangles);
+          throw meshTooLarge("OBJ", "triangles", options.maxTriangles);
         corners.push_back(static_cast<int>(polygon[0]));
         corners.push_back(static_cast<int>(polygon[k]));
         corners.push_back(static_cast<int>(polygon[k + 1]));

@@ -16,11 +16,9 @@ struct MeshReadOptions {
 
 TriMesh readObj(std::string_view text, const MeshReadOptions& options = {});
 
-// What every reader throws past options.maxTriangles or maxVertices (format: "OBJ", "STL", "PLY", "OFF"), with the
-// file's own count where it is known before reading on (a binary STL's header), else -1 (util/text.hpp's
-// tooLargeMessage).
-Error tooManyTriangles(const std::string& format, long long maxTriangles, long long triangles = -1);
-Error tooManyVertices(const std::string& format, long long maxVertices, long long vertices = -1,
-                      const std::string& what = "vertices");
+// What every reader throws past options.maxTriangles or maxVertices (format: "OBJ", "STL", "PLY", "OFF"; what:
+// "triangles", "vertices", "distinct vertices"), with the file's own count where it is known before reading on (a
+// binary STL's header), else -1 (util/text.hpp's tooLargeMessage).
+Error meshTooLarge(const std::string& format, const std::string& what, long long limit, long long count = -1);
 
 }  // namespace billow

@@ -100,7 +100,7 @@ TriMesh readOff(std::string_view text, const MeshReadOptions& options) {
   const long long vertices = lines.integer(w[first], "a number of vertices");
   const long long faces = lines.integer(w[first + 1], "a number of faces");
   if (vertices < 0 || faces < 0) lines.fail("the numbers of vertices and faces cannot be negative");
-  if (vertices > options.maxVertices) throw tooManyVertices("OFF", options.maxVertices, vertices);
+  if (vertices > options.maxVertices) throw meshTooLarge("OFF", "vertices", options.maxVertices, vertices);
   if (faces == 0) throw Error("off.no-faces", "The OFF file contains no faces, so there is no surface to use.");
   std::vector<double> coords;
   // Reserved for as many vertices as the file can hold (six bytes each at least), not as it announces.
@@ -132,7 +132,7 @@ TriMesh readOff(std::string_view text, const MeshReadOptions& options) {
     }
     for (size_t k = 1; k + 1 < polygon.size(); ++k) {
       if (static_cast<long long>(corners.size() / 3) >= options.maxTriangles)
-        throw tooManyTriangles("OFF", options.maxTriangles);
+        throw meshTooLarge("OFF", "triangles", options.maxTriangles);
       corners.insert(corners.end(), {polygon[0], polygon[k], polygon[k + 1]});
     }
   }

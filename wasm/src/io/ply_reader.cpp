@@ -327,8 +327,8 @@ Target findTarget(const Header& h) {
 
 void checkLimits(const Target& t, const MeshReadOptions& options) {
   const long long maxVertices = std::min<long long>(options.maxVertices, std::numeric_limits<int>::max());
-  if (t.vertex->count > maxVertices) throw tooManyVertices("PLY", maxVertices, t.vertex->count);
-  if (!t.strips && t.face->count > options.maxTriangles) throw tooManyTriangles("PLY", options.maxTriangles);
+  if (t.vertex->count > maxVertices) throw meshTooLarge("PLY", "vertices", maxVertices, t.vertex->count);
+  if (!t.strips && t.face->count > options.maxTriangles) throw meshTooLarge("PLY", "triangles", options.maxTriangles);
 }
 
 void skipProperty(Body& body, const Property& p) {
@@ -373,7 +373,7 @@ void readFace(Body& body, const Target& t, long long face, std::vector<int>& cor
       const int index = static_cast<int>(v);
       if (k >= 2) {
         if (static_cast<long long>(corners.size() / 3) >= options.maxTriangles)
-          throw tooManyTriangles("PLY", options.maxTriangles);
+          throw meshTooLarge("PLY", "triangles", options.maxTriangles);
         corners.insert(corners.end(), {first, previous, index});
       }
       if (k == 0) first = index;
@@ -408,7 +408,7 @@ void readStrips(Body& body, const Target& t, std::vector<int>& corners, const Me
       const int c = static_cast<int>(v);
       if (inStrip >= 2 && a != b && b != c && a != c) {
         if (static_cast<long long>(corners.size() / 3) >= options.maxTriangles)
-          throw tooManyTriangles("PLY", options.maxTriangles);
+          throw meshTooLarge("PLY", "triangles", options.maxTriangles);
         if (inStrip % 2 == 0)
           corners.insert(corners.end(), {a, b, c});
         else

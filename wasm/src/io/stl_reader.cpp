@@ -19,7 +19,7 @@ constexpr size_t kTriangleBytes = 50;
 // known: the file's count is its header's (binary), not only as many as read so far (ASCII).
 void checkTriangleLimit(std::uint64_t triangles, const MeshReadOptions& options, bool known) {
   if (triangles > static_cast<std::uint64_t>(options.maxTriangles))
-    throw tooManyTriangles("STL", options.maxTriangles, known ? static_cast<long long>(triangles) : -1);
+    throw meshTooLarge("STL", "triangles", options.maxTriangles, known ? static_cast<long long>(triangles) : -1);
 }
 
 std::uint32_t u32le(const unsigned char* p) {
@@ -199,7 +199,7 @@ Vertices readStlSoup(std::string_view bytes, const MeshReadOptions& options) {
 TriMesh readStl(std::string_view bytes, const MeshReadOptions& options, const WeldOptions& weldOptions) {
   TriMesh mesh = weld(readStlSoup(bytes, options), weldOptions);
   if (mesh.numVertices() > options.maxVertices)
-    throw tooManyVertices("STL", options.maxVertices, mesh.numVertices(), "distinct vertices");
+    throw meshTooLarge("STL", "distinct vertices", options.maxVertices, mesh.numVertices());
   return mesh;
 }
 
