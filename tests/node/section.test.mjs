@@ -7,7 +7,7 @@ import assert from 'node:assert/strict';
 import { readdirSync } from 'node:fs';
 import { SHARED_MESHES, loadSharedMesh } from './obj.mjs';
 import { handlers, run } from './worker-handlers.mjs';
-import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough, acrossHandles, splitInTwo, vertexAreas } from '../../web/src/app/section.js';
+import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough, acrossHandles, splitInTwo, vertexAreas, projectedArea, straighterView } from '../../web/src/app/section.js';
 import { positionOf } from '../../web/src/app/symmetry.js';
 
 const MESHES = SHARED_MESHES;
@@ -91,6 +91,30 @@ test('the largest part an outline moves to the other side is the area of that pa
       if (outline.toBack + outline.toFront === 0) assert.equal(outline.largestMoved, 0, `${file} ${towards}`);
       else assert.ok(outline.largestMoved > 0 && outline.largestMoved < 0.5, `${file} ${towards}: ${outline.largestMoved}`);
     }
+});
+
+// The straight view the Outline note names: of those that turn less than half the largest part away, the one that
+// shows most of the shape, as a foil balloon is cut along its largest silhouette.
+test('the straight view the Outline note names is the one that shows most of the shape', () => {
+  const views = [['front', '1', [0, 0, 1]], ['right', '3', [1, 0, 0]], ['top', '7', [0, 1, 0]]].map(([name, key, towards]) => ({ name, key, towards }));
+  // An ellipsoid 3 x 1 x 2 (the unit sphere scaled): nothing turns away from any side, and its silhouettes are
+  // pi a b: 6 pi from the top, 3 pi from the right, 2 pi from the front.
+  const sphere = load('sphere.obj');
+  const scale = [3, 1, 2];
+  const ellipsoid = { ...sphere, positions: Float64Array.from(sphere.positions, (x, i) => x * scale[i % 3]) };
+  for (const [towards, expected] of [[[0, 1, 0], 6 * Math.PI], [[1, 0, 0], 2 * Math.PI], [[0, 0, 1], 3 * Math.PI]]) {
+    const area = projectedArea(ellipsoid, towards);
+    assert.ok(Math.abs(area - expected) < 0.02 * expected, `along ${towards}: ${area} against ${expected}`);
+  }
+  assert.deepEqual(straighterView(ellipsoid, views, 0.5), { name: 'top', key: '7', share: 0 });
+  // None that turns less than half as much away: none named.
+  assert.equal(straighterView(ellipsoid, views, 0), null);
+  // The cow is cut from its side (x), the hand from its front (z), whichever view the outline was laid from.
+  for (const [file, name] of [['spot.obj', 'right'], ['hand.obj', 'front']]) {
+    const chosen = straighterView(load(file), views, 1);
+    assert.equal(chosen?.name, name, `${file}: ${JSON.stringify(chosen)}`);
+    assert.ok(chosen.share < 0.5, `${file}: ${chosen.share}`);
+  }
 });
 
 // A ring (a torus about z, tube radius r, ring radius R) as a mesh of n x m quads split in two.

@@ -187,9 +187,39 @@ export function outlineLoop(mesh, towards) {
 
 // outlineLoop's largestMoved alone, without tracing the contour: the largest part the outline seen from `towards` would
 // turn to the other side, a share of the surface, or null when the shape has no front or back from there.
-export function largestTurnedAway(mesh, towards) {
+function largestTurnedAway(mesh, towards) {
   const split = splitInTwo(mesh, facingField(mesh, towards));
   return split && movedShare(split);
+}
+
+// Of the straight views [{ name, key, towards }], the one to name where the outline from here turns a part of `largest`
+// (a share of the surface) away: of those that turn less than half as much away, the one that shows most of the
+// shape, its surface's area projected along the view (a foil balloon is cut along its largest silhouette: a horse
+// from its side, not from above, where both leave its legs out alike), with its share; null when none does.
+export function straighterView(mesh, views, largest) {
+  let best = null;
+  for (const view of views) {
+    const share = largestTurnedAway(mesh, view.towards);
+    if (share === null || share >= largest / 2) continue;
+    const shown = projectedArea(mesh, view.towards);
+    if (!best || shown > best.shown) best = { ...view, share, shown };
+  }
+  return best && { name: best.name, key: best.key, share: best.share };
+}
+
+// The area of the surface seen along `towards` (unit), front and back alike: half the sum of |n . towards| over its
+// triangles, the silhouette's area where the shape is convex.
+export function projectedArea({ positions, indices }, towards) {
+  let sum = 0;
+  const at = (v, k) => positions[3 * v + k];
+  for (let f = 0; f < indices.length / 3; f++) {
+    const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
+    const u = [0, 1, 2].map((k) => at(b, k) - at(a, k));
+    const w = [0, 1, 2].map((k) => at(c, k) - at(a, k));
+    const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]; // twice the area
+    sum += Math.abs(n[0] * towards[0] + n[1] * towards[1] + n[2] * towards[2]);
+  }
+  return sum / 4;
 }
 
 // splitInTwo's largest moved part as a share of the surface.

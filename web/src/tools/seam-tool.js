@@ -9,7 +9,7 @@
 // reach farther to snap or grab; the seam panel shows Finish / Close / Cancel buttons while drawing, since
 // there is no Enter key or reliable double-tap.
 import { Matrix4, Vector3 } from 'three';
-import { outlineLoop, sectionThrough, acrossHandles, largestTurnedAway } from '../app/section.js';
+import { outlineLoop, sectionThrough, acrossHandles, straighterView } from '../app/section.js';
 import { bandNames, lowestPoint, outlineBandLoops } from '../app/band.js';
 import { UP_FRAMES, upOf } from '../app/up-axis.js';
 
@@ -237,7 +237,7 @@ export class SeamTool {
     if (parts) {
       const what = outline.largestMoved < SMALL_PART ? `${parts} small ${one ? 'part' : 'parts'}` : `${parts} ${one ? 'part' : 'parts'}`;
       const share = outline.largestMoved < SMALL_PART ? '' : `, ${one ? '' : 'the largest '}${percent(outline.largestMoved)} of the surface`;
-      const straighter = outline.largestMoved >= LARGE_PART ? this.straighterView(outline.largestMoved) : '';
+      const straighter = outline.largestMoved >= LARGE_PART ? this.straighterViewClause(outline.largestMoved) : '';
       notes.push(`${what} turned away from the rest of ${one ? 'its' : 'their'} side (a fold, a limb in front of the body, an ear seen at an angle) went with the panel around ${one ? 'it' : 'them'}${share}; a section seam around a limb gives it panels of its own${straighter}`);
     }
     // Seen through a handle (a ring, a letter O), the front and back are rings: each hole's rim is laid too,
@@ -253,15 +253,12 @@ export class SeamTool {
     this.app.commitLoops(loops, { names, note: notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null });
   }
 
-  // Where a straight view (front, side, top) leaves less than half the largest part `largest` out of its outline,
-  // the note's clause that names the best, else ''.
-  straighterView(largest) {
-    let best = null;
-    for (const [name, key] of STRAIGHT_VIEWS) {
-      const share = largestTurnedAway(this.app.target, this.toTarget(this.pane.namedView(name, this.pane.group)));
-      if (share !== null && (!best || share < best.share)) best = { name, key, share };
-    }
-    if (!best || best.share >= largest / 2) return '';
+  // The note's clause naming a straight view (front, side, top) that leaves less than half the largest part `largest`
+  // out of its outline (section.js straighterView), else ''.
+  straighterViewClause(largest) {
+    const views = STRAIGHT_VIEWS.map(([name, key]) => ({ name, key, towards: this.toTarget(this.pane.namedView(name, this.pane.group)) }));
+    const best = straighterView(this.app.target, views, largest);
+    if (!best) return '';
     const moved = best.share > 0 ? `the largest part turned away is ${percent(best.share)} of it` : 'no part turns away';
     return `; seen straight from the ${best.name} (View menu, or key ${best.key}) ${moved}`;
   }
