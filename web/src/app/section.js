@@ -211,12 +211,8 @@ export function straighterView(mesh, views, largest) {
 // triangles, the silhouette's area where the shape is convex.
 export function projectedArea({ positions, indices }, towards) {
   let sum = 0;
-  const at = (v, k) => positions[3 * v + k];
   for (let f = 0; f < indices.length / 3; f++) {
-    const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
-    const u = [0, 1, 2].map((k) => at(b, k) - at(a, k));
-    const w = [0, 1, 2].map((k) => at(c, k) - at(a, k));
-    const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]; // twice the area
+    const n = faceNormal(positions, indices, f);
     sum += Math.abs(n[0] * towards[0] + n[1] * towards[1] + n[2] * towards[2]);
   }
   return sum / 4;
@@ -262,13 +258,9 @@ export function acrossHandles(mesh, rim, holes, towards) {
 function facingField({ positions, indices }, towards) {
   const nv = positions.length / 3;
   const normal = new Float64Array(3 * nv);
-  const at = (v, k) => positions[3 * v + k];
   for (let f = 0; f < indices.length / 3; f++) {
-    const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
-    const u = [0, 1, 2].map((k) => at(b, k) - at(a, k));
-    const w = [0, 1, 2].map((k) => at(c, k) - at(a, k));
-    const n = [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]]; // twice the area
-    for (const v of [a, b, c]) for (let k = 0; k < 3; k++) normal[3 * v + k] += n[k];
+    const n = faceNormal(positions, indices, f);
+    for (let i = 0; i < 3; i++) for (let k = 0; k < 3; k++) normal[3 * indices[3 * f + i] + k] += n[k];
   }
   const facing = new Float64Array(nv);
   for (let v = 0; v < nv; v++) {
@@ -350,16 +342,20 @@ export function splitInTwo(mesh, values) {
   return { toNegative, toPositive, moved, largestMoved, area: before };
 }
 
+// Face f's normal, as long as twice its area: (b - a) x (c - a).
+function faceNormal(positions, indices, f) {
+  const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
+  const u = [0, 1, 2].map((k) => positions[3 * b + k] - positions[3 * a + k]);
+  const w = [0, 1, 2].map((k) => positions[3 * c + k] - positions[3 * a + k]);
+  return [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
+}
+
 // A third of the area of the triangles around each vertex.
 export function vertexAreas({ positions, indices }) {
   const area = new Float64Array(positions.length / 3);
-  const at = (v, k) => positions[3 * v + k];
   for (let f = 0; f < indices.length / 3; f++) {
-    const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
-    const u = [0, 1, 2].map((k) => at(b, k) - at(a, k));
-    const w = [0, 1, 2].map((k) => at(c, k) - at(a, k));
-    const twice = Math.hypot(u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]);
-    for (const v of [a, b, c]) area[v] += twice / 6;
+    const twice = Math.hypot(...faceNormal(positions, indices, f));
+    for (let i = 0; i < 3; i++) area[indices[3 * f + i]] += twice / 6;
   }
   return area;
 }
