@@ -30,7 +30,8 @@ export function gridOf(positions, indices, bits = QUANT_BITS) {
 
 export const quantize = (positions, { lo, step }) => Float64Array.from(positions, (x, i) => Math.round((x - lo[i % 3]) / step));
 
-function normalOf(p, indices, f, scale = 1) {
+// Face f's normal, as long as twice its area: (b - a) x (c - a), each edge scaled by `scale` (grid steps to length).
+export function faceNormal(p, indices, f, scale = 1) {
   const [a, b, c] = [0, 1, 2].map((k) => 3 * indices[3 * f + k]);
   const u = [0, 1, 2].map((i) => (p[b + i] - p[a + i]) * scale);
   const v = [0, 1, 2].map((i) => (p[c + i] - p[a + i]) * scale);
@@ -40,8 +41,8 @@ function normalOf(p, indices, f, scale = 1) {
 // True when every triangle on the grid (quantized positions q) faces about the way it did.
 function keepsTriangles(positions, indices, q, step) {
   for (let f = 0; f < indices.length / 3; f++) {
-    const n = normalOf(positions, indices, f);
-    const m = normalOf(q, indices, f, step);
+    const n = faceNormal(positions, indices, f);
+    const m = faceNormal(q, indices, f, step);
     const dot = n[0] * m[0] + n[1] * m[1] + n[2] * m[2];
     const size = Math.hypot(...n);
     if (size > 0 && !(dot > MAX_TURN * size * Math.hypot(...m))) return false; // one without area has no way

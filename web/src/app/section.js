@@ -3,6 +3,7 @@
 // made of a loop keeps, for every control point, the triangle and barycentric weights it lies in, so it is an
 // ordinary seam of surface points.
 import { bounds } from './symmetry.js';
+import { faceNormal } from './mesh-grid.js';
 
 // The loops where the plane {p · normal = offset} cuts the mesh ({ positions, indices }, flat arrays). Each
 // loop is an array of { position: [x, y, z], face, bary: [3] }, in walking order (a point on an edge, with
@@ -340,14 +341,6 @@ export function splitInTwo(mesh, values) {
     if (!pinches()) break;
   }
   return { toNegative, toPositive, moved, largestMoved, area: before };
-}
-
-// Face f's normal, as long as twice its area: (b - a) x (c - a).
-function faceNormal(positions, indices, f) {
-  const [a, b, c] = [indices[3 * f], indices[3 * f + 1], indices[3 * f + 2]];
-  const u = [0, 1, 2].map((k) => positions[3 * b + k] - positions[3 * a + k]);
-  const w = [0, 1, 2].map((k) => positions[3 * c + k] - positions[3 * a + k]);
-  return [u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2], u[0] * w[1] - u[1] * w[0]];
 }
 
 // A third of the area of the triangles around each vertex.
