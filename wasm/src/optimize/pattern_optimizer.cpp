@@ -1021,6 +1021,8 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
     return StopReason{OptimizeState::Stopped, "the iteration limit was reached"};
   if (options_.stopping.maxMillis > 0 && elapsedMs() > options_.stopping.maxMillis)
     return StopReason{OptimizeState::Stopped, "the time limit was reached"};
+  if (options_.stopping.maxNewtonIterations > 0 && timings_.newtonIterations >= options_.stopping.maxNewtonIterations)
+    return StopReason{OptimizeState::Stopped, "the work allowed for it was done"};
   return std::nullopt;
 }
 

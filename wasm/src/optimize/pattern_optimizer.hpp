@@ -53,6 +53,9 @@ struct OptimizeStopping {
   double distanceDecrease = 0.05;
   int maxIterations = 300;
   double maxMillis = 0;  // total budget over all steps (<= 0: none)
+  // Stopped once the equilibrium solves (refused trials included) took this many Newton iterations in all (0: no
+  // limit): a bound on the work, where maxMillis would depend on the machine.
+  int maxNewtonIterations = 0;
 };
 
 // One L-BFGS iteration: its direction, its line search and the equilibrium solve of every trial.

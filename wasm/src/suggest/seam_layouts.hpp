@@ -160,6 +160,9 @@ struct EvaluateOptions {
   // pieces are nested with. Layouts whose pieces fit the sheet come first (layoutsRanked).
   ExportOptions cut;
   int maxIterations = 40;  // of the app's stopping rule; 0: the flattened panels' inflation alone, a first look
+  // and at most this many Newton iterations in all its equilibrium solves: a layout whose balloon keeps walking (a
+  // limb swinging on wrinkled fabric) is compared where it stands rather than holding up the suggestion.
+  int maxNewtonIterations = 1500;
   // Rounds of seams added where plane sections leave a segment that is not a panel (a tube around a limb, a hole,
   // a limb's end too big for its seam).
   int openingRounds = 3;
