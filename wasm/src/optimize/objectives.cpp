@@ -402,17 +402,38 @@ double PatternObjective::patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd
 double PatternObjective::gapEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const {
   const double kappa = w_.gap * edge_ * edge_ * norm_;
   double E = 0;
+  // Each edge meets only the outline vertices within an edge length of it: found among the loop sorted by x,
+  // then taken in loop order as the all-pairs sum took them, so that E and its gradient are the same to the bit.
+  std::vector<int> byX;
+  std::vector<double> xs;
+  std::vector<int> near;  // an edge's candidates, as offsets k along the loop from its first vertex
   for (size_t p = 0; p < outlines_.size(); ++p) {
     const std::vector<int>& loop = outlines_[p];
     const int n = int(loop.size());
+    byX.resize(n), xs.resize(n);
+    for (int i = 0; i < n; ++i) {
+      if (!std::isfinite(X[2 * loop[i]]) || !std::isfinite(X[2 * loop[i] + 1])) return INFINITY;
+      byX[i] = i;
+    }
+    std::sort(byX.begin(), byX.end(), [&](int u, int v) { return X[2 * loop[u]] < X[2 * loop[v]]; });
+    for (int i = 0; i < n; ++i) xs[i] = X[2 * loop[byX[i]]];
     for (int j = 0; j < n; ++j) {
       const int ia = loop[j], ib = loop[(j + 1) % n];
       const Eigen::Vector2d a = X.segment<2>(2 * ia), b = X.segment<2>(2 * ib), ab = b - a;
       const Eigen::Vector2d lo = a.cwiseMin(b).array() - edge_, hi = a.cwiseMax(b).array() + edge_;
-      for (int k = 2; k < n; ++k) {  // every vertex but the edge's own two
+      near.clear();
+      const auto first = std::lower_bound(xs.begin(), xs.end(), lo.x());
+      const auto last = std::upper_bound(first, xs.end(), hi.x());
+      for (auto it = first; it != last; ++it) {
+        const int at = byX[it - xs.begin()];
+        const double y = X[2 * loop[at] + 1];
+        const int k = (at - j + n) % n;
+        if (k >= 2 && !(y < lo.y()) && !(y > hi.y())) near.push_back(k);  // every vertex but the edge's own two
+      }
+      std::sort(near.begin(), near.end());
+      for (const int k : near) {
         const int at = (j + k) % n, iv = loop[at];
         const Eigen::Vector2d v = X.segment<2>(2 * iv);
-        if ((v.array() < lo.array()).any() || (v.array() > hi.array()).any()) continue;
         const double h = gapReach_[p][at];
         const double t = closestSegmentParameter(v, a, b);
         const Eigen::Vector2d r = v - (a + t * ab);
