@@ -887,23 +887,19 @@ TEST(PatternOptimizer, ANewtonBudgetStopsTheRunOnceSpent) {
   const Fixture f = makeFixture("sphere-gores.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o = appStoppingRule();
-  o.stopping.maxIterations = 20, o.remeshing.cutPanels = false;
-  PatternOptimizer free(f.scene->target, f.built, f.weights, o);
-  while (free.step(1) == OptimizeState::Running) {
-  }
-  const int spent = free.timings().newtonIterations;
-  ASSERT_GT(free.iterations(), 6);
+  o.remeshing.cutPanels = false;
+  const std::unique_ptr<PatternOptimizer> free = optimizedFor(f, 20, o);
+  const int spent = free->timings().newtonIterations;
+  ASSERT_GT(free->iterations(), 6);
 
   o.stopping.maxNewtonIterations = spent / 3;
-  PatternOptimizer held(f.scene->target, f.built, f.weights, o);
-  while (held.step(1) == OptimizeState::Running) {
-  }
-  EXPECT_EQ(held.state(), OptimizeState::Stopped);
-  EXPECT_EQ(held.message(), "the work allowed for it was done");
-  EXPECT_GE(held.timings().newtonIterations, spent / 3);
-  EXPECT_LT(held.iterations(), free.iterations());
-  ASSERT_GE(held.history().size(), 2u);
+  const std::unique_ptr<PatternOptimizer> held = optimizedFor(f, 20, o);
+  EXPECT_EQ(held->state(), OptimizeState::Stopped);
+  EXPECT_EQ(held->message(), "the work allowed for it was done");
+  EXPECT_GE(held->timings().newtonIterations, spent / 3);
+  EXPECT_LT(held->iterations(), free->iterations());
+  ASSERT_GE(held->history().size(), 2u);
   // The same path: each iterate as the free run's.
-  for (size_t k = 0; k + 1 < held.history().size(); ++k)
-    EXPECT_DOUBLE_EQ(held.history()[k].objective, free.history()[k].objective) << "iterate " << k;
+  for (size_t k = 0; k + 1 < held->history().size(); ++k)
+    EXPECT_DOUBLE_EQ(held->history()[k].objective, free->history()[k].objective) << "iterate " << k;
 }
