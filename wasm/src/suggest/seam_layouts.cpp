@@ -1263,7 +1263,7 @@ void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOpti
     const BuiltPattern& built = *panels;
     OptimizeOptions oo = appStoppingRule();
     oo.stopping.maxIterations = options.maxIterations;
-    oo.stopping.maxNewtonIterations = options.maxNewtonIterations;
+    oo.stopping.maxNewtonIterations = int(options.newtonPerIteration * options.maxIterations);
     // A first look (no iteration) measures the flattened panels' own inflation, not their cut.
     oo.remeshing.cutPanels = options.maxIterations > 0;
     if (!scene.targetDistance) scene.targetDistance = std::make_shared<const ImlsDistance>(scene.target, oo.imls);

@@ -160,9 +160,10 @@ struct EvaluateOptions {
   // pieces are nested with. Layouts whose pieces fit the sheet come first (layoutsRanked).
   ExportOptions cut;
   int maxIterations = 40;  // of the app's stopping rule; 0: the flattened panels' inflation alone, a first look
-  // and at most this many Newton iterations in all its equilibrium solves: a layout whose balloon keeps walking (a
-  // limb swinging on wrinkled fabric) is compared where it stands rather than holding up the suggestion.
-  int maxNewtonIterations = 1500;
+  // and at most this many Newton iterations per iteration asked for, in all its equilibrium solves together: a layout
+  // whose balloon keeps walking (a limb swinging on wrinkled fabric) is compared where it stands rather than holding
+  // up the suggestion (1,500 at 40 iterations; most layouts take 250-600, bench/README.md).
+  double newtonPerIteration = 37.5;
   // Rounds of seams added where plane sections leave a segment that is not a panel (a tube around a limb, a hole,
   // a limb's end too big for its seam).
   int openingRounds = 3;
