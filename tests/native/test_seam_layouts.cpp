@@ -245,6 +245,52 @@ TEST(SeamLayouts, TubesAPlaneCutAroundLimbsAreOpenedIntoPanels) {
   for (size_t i = 0; i < seams.size(); ++i) EXPECT_EQ(fixed.seams[i].name, seams[i].name);
 }
 
+// A plane grazing the body beside a limb's root runs out and back along a hairpin (libigl's camel, its tail), and the
+// shortest paths between its points there cross: the layout's own seam loses the point where it turns back, and its
+// segments are panels. The designer's own seam stays as drawn.
+TEST(SeamLayouts, ASeamOfTheLayoutThatTurnsBackOnItselfLosesTheFold) {
+  auto sphere = sharedScene("sphere.obj", 1.0);
+  const TriMesh& target = sphere->target;
+  const std::vector<SectionLoop> loops = planeSection(target, Eigen::Vector3d::UnitY(), boxMiddle(target).y());
+  ASSERT_EQ(loops.size(), 1u);
+  const std::vector<SurfacePoint> around = sectionSeamPoints(target, loops[0], loopLength(loops[0]) / 24);
+  ASSERT_EQ(around.size(), 24u);
+  // Every other point, and after the fourth the seam turns back to the one before it, then on over the fourth again.
+  std::vector<int> order;
+  for (int i = 0; i < 24; i += 2) {
+    order.push_back(i);
+    if (i == 6) order.push_back(5);
+  }
+  DesignSeam seam;
+  seam.name = "equator", seam.closed = true;
+  for (int i : order) {
+    DesignPoint point;
+    point.onSurface = true, point.surface = around[size_t(i)];
+    seam.points.push_back(point);
+  }
+  EvaluateOptions look;
+  look.triangles = 600, look.maxIterations = 0;
+  const LayoutEvaluation drawn = evaluateLayout(*sphere, {seam}, 1, look);
+  EXPECT_FALSE(drawn.ok);
+  const auto crosses = [&] {
+    return std::any_of(sphere->segmentation.problems.begin(), sphere->segmentation.problems.end(),
+                       [](const SegmentationProblem& p) { return p.code == "seam.self-crossing"; });
+  };
+  EXPECT_TRUE(crosses()) << drawn.problem;
+  ASSERT_EQ(drawn.seams.size(), 1u);
+  EXPECT_EQ(drawn.seams[0].points.size(), order.size());
+
+  const LayoutEvaluation laid = evaluateLayout(*sphere, {seam}, 0, look);
+  ASSERT_TRUE(laid.ok) << laid.problem;
+  EXPECT_EQ(laid.panels, 2);
+  EXPECT_FALSE(crosses());
+  EXPECT_TRUE(sphere->segmentation.problems.empty());
+  ASSERT_EQ(laid.seams.size(), 1u);
+  // One of the two points the seam turned back at is gone, and nothing else.
+  EXPECT_EQ(laid.seams[0].points.size(), order.size() - 1);
+  for (const Segment& s : sphere->segmentation.segments) EXPECT_TRUE(s.isDisk);
+}
+
 TEST(SeamLayouts, AnAxisBesideTheShapeGivesItsGoresNoPoles) {
   // A ring lying in the xz-plane: its vertical axis through the middle passes through the hole.
   TriMesh ring;

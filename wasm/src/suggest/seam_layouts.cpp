@@ -1017,6 +1017,57 @@ std::vector<SurfacePoint> controlsAlong(const Segmentation& sg, const std::vecto
   return controls;
 }
 
+// The layout's own seams that cross themselves lose the control points where they turn back on themselves, the
+// sharpest first, while one turns back by more than 120 degrees: where a plane grazes the body beside a limb's root,
+// its loop runs out and back along a hairpin, and the shortest paths between its points there cross. A seam's ends
+// stay, and so do the points other seams end on. The first `fixedSeams` seams are the designer's. Returns how many
+// seams it changed.
+int unfoldCrossingSeams(const DesignScene& scene, int fixedSeams, std::vector<DesignSeam>& seams) {
+  constexpr double kFoldDeg = 60;  // the angle between the ways back and on at a point, below which it is a fold
+  const TriMesh& cut = scene.segmentation.mesh;
+  const double tiny = 1e-9 * (cut.V.colwise().maxCoeff() - cut.V.colwise().minCoeff()).norm();
+  std::vector<Eigen::Vector3d> ends;
+  for (const SeamCurve& c : scene.curves)
+    if (!c.closed && !c.points.empty())
+      ends.push_back(c.points.front().position), ends.push_back(c.points.back().position);
+  const auto endOfAnother = [&](const Eigen::Vector3d& x) {
+    return std::any_of(ends.begin(), ends.end(), [&](const Eigen::Vector3d& e) { return (e - x).norm() < tiny; });
+  };
+  std::vector<int> crossing;
+  for (const SegmentationProblem& p : scene.segmentation.problems)
+    if (p.code == "seam.self-crossing" && p.seam >= fixedSeams && p.seam < int(seams.size()) &&
+        p.seam < int(scene.curves.size()) && std::find(crossing.begin(), crossing.end(), p.seam) == crossing.end())
+      crossing.push_back(p.seam);
+  int changed = 0;
+  for (int s : crossing) {
+    const SeamCurve& curve = scene.curves[size_t(s)];
+    DesignSeam& seam = seams[size_t(s)];
+    if (curve.controlIndices.size() != seam.points.size()) continue;
+    std::vector<size_t> kept(seam.points.size());
+    std::iota(kept.begin(), kept.end(), size_t(0));
+    const auto at = [&](size_t k) { return curve.points[size_t(curve.controlIndices[kept[k]])].position; };
+    while (kept.size() > (seam.closed ? 3u : 2u)) {
+      const size_t n = kept.size();
+      size_t fold = n;
+      double sharpest = kFoldDeg * M_PI / 180;
+      for (size_t k = seam.closed ? 0 : 1; k < (seam.closed ? n : n - 1); ++k) {
+        if (endOfAnother(at(k))) continue;
+        const Eigen::Vector3d back = at((k + n - 1) % n) - at(k), on = at((k + 1) % n) - at(k);
+        const double angle = std::atan2(back.cross(on).norm(), back.dot(on));  // 0 where it turns right back
+        if (angle < sharpest) sharpest = angle, fold = k;
+      }
+      if (fold == n) break;
+      kept.erase(kept.begin() + long(fold));
+    }
+    if (kept.size() == seam.points.size()) continue;
+    std::vector<DesignPoint> points;
+    for (size_t i : kept) points.push_back(seam.points[i]);
+    seam.points = std::move(points);
+    ++changed;
+  }
+  return changed;
+}
+
 // Seams that make a layout's segments panels, where plane sections alone leave a segment that is not one: a segment
 // between two loops or more (a plane across a limb leaves a tube, a limb's end cut off inside a band leaves a hole)
 // gets cuts through it that join its loops (cutsJoiningLoops: the cuts that open a tube, as a designer would add
@@ -1190,7 +1241,7 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
   PatternBuildOptions resolution;
   resolution.triangles = options.triangles;
   const double edgeLength = area > 0 ? patternEdgeLength(area, resolution) : 0;
-  for (int round = 0;; ++round) {
+  for (int round = 0, unfoldings = 0;; ++round) {
     scene.design.seams = out.seams, scene.design.connections = out.connections;
     try {
       traceDesignSeams(scene);
@@ -1199,6 +1250,12 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
       return out;
     }
     segmentDesignScene(scene);
+    // A seam that crosses itself is mended first, and the round is not counted: what opens the segments depends on
+    // where it runs.
+    if (unfoldings < 2 && unfoldCrossingSeams(scene, fixedSeams, out.seams) > 0) {
+      ++unfoldings, --round;
+      continue;
+    }
     if (scene.segmentation.problems.empty() || round == options.openingRounds ||
         openSegments(scene, spacing, edgeLength, fixedSeams, out.seams, out.connections, out.opened) == 0)
       break;
