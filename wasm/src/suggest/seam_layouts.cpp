@@ -1017,6 +1017,11 @@ std::vector<SurfacePoint> controlsAlong(const Segmentation& sg, const std::vecto
   return controls;
 }
 
+// How near a seam's end lies to a point of another seam that it ends on (the cut mesh's vertices are shared).
+double endTolerance(const Segmentation& sg) {
+  return 1e-9 * (sg.mesh.V.colwise().maxCoeff() - sg.mesh.V.colwise().minCoeff()).norm();
+}
+
 // The layout's own seams that cross themselves lose the control points where they turn back on themselves, the
 // sharpest first, while one turns back by more than 120 degrees: where a plane grazes the body beside a limb's root,
 // its loop runs out and back along a hairpin, and the shortest paths between its points there cross. A seam's ends
@@ -1024,8 +1029,7 @@ std::vector<SurfacePoint> controlsAlong(const Segmentation& sg, const std::vecto
 // seams it changed.
 int unfoldCrossingSeams(const DesignScene& scene, int fixedSeams, std::vector<DesignSeam>& seams) {
   constexpr double kFoldDeg = 60;  // the angle between the ways back and on at a point, below which it is a fold
-  const TriMesh& cut = scene.segmentation.mesh;
-  const double tiny = 1e-9 * (cut.V.colwise().maxCoeff() - cut.V.colwise().minCoeff()).norm();
+  const double tiny = endTolerance(scene.segmentation);
   std::vector<Eigen::Vector3d> ends;
   for (const SeamCurve& c : scene.curves)
     if (!c.closed && !c.points.empty())
@@ -1080,7 +1084,6 @@ int unfoldCrossingSeams(const DesignScene& scene, int fixedSeams, std::vector<De
 int openSegments(const DesignScene& scene, double spacing, double edgeLength, int fixedSeams,
                  std::vector<DesignSeam>& seams, std::vector<DesignConnection>& connections, LayoutOpenings& opened) {
   const Segmentation& sg = scene.segmentation;
-  const TriMesh& cut = sg.mesh;
   int added = 0;
   // The segments each target face has a part in.
   std::vector<std::vector<int>> faceSegments(scene.target.F.rows());
@@ -1092,7 +1095,7 @@ int openSegments(const DesignScene& scene, double spacing, double edgeLength, in
   // grazing a toe, loops of several planes crossing on a flipper), the shortest that no other seam ends on goes, and
   // the segment joins its neighbour across it; where every such loop has seams ending on it (a limb's root), the
   // shortest of the layout's open seams along the segment (a piece that only nicks the root).
-  const double tiny = 1e-9 * (cut.V.colwise().maxCoeff() - cut.V.colwise().minCoeff()).norm();
+  const double tiny = endTolerance(sg);
   const auto endedOn = [&](int seam) {
     for (size_t other = 0; other < scene.curves.size(); ++other) {
       const SeamCurve& c = scene.curves[other];
