@@ -8,6 +8,7 @@ import { loadApi } from './load-module.mjs';
 import { readObjText, splitInFour } from './obj.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
 import { cutPanelsNote } from '../../web/src/app/panels.js';
+import { narrowOutlineShare } from '../../web/src/views/pattern-layout.js';
 
 const api = await loadApi();
 const read = (path) => readFileSync(new URL(path, import.meta.url), 'utf8');
@@ -217,4 +218,48 @@ test('the designer is told when the cut panels inflate clearly farther than the 
   assert.match(note, /another shape once cut/);
   assert.equal(cutPanelsNote({ ownMesh: own, distanceRms: 0.0078, targetDistanceRms: 0.017 }), null, 'within 20 %: no note');
   assert.equal(cutPanelsNote({ distanceRms: 0.027, targetDistanceRms: 0.022 }), null, 'a run that did not end on cut panels');
+  // Outlines along parts a triangle or so across: the finer Panels setting is named, where there is one.
+  const narrow = cutPanelsNote({ ownMesh: own, distanceRms: 0.027, targetDistanceRms: 0.022 }, { narrowShare: 0.25, finer: 'medium' });
+  assert.ok(narrow.startsWith(note), narrow);
+  assert.match(narrow, /A 25 % share of the outlines borders parts only a triangle or so across at this resolution/);
+  assert.match(narrow, /the "medium" Panels setting follows them better\.$/);
+  assert.equal(cutPanelsNote({ ownMesh: own, distanceRms: 0.027, targetDistanceRms: 0.022 }, { narrowShare: 0.25, finer: null }), note, 'at the finest setting');
+  assert.equal(cutPanelsNote({ ownMesh: own, distanceRms: 0.027, targetDistanceRms: 0.022 }, { narrowShare: 0.05, finer: 'fine' }), note, 'outlines mostly wide');
+  assert.equal(cutPanelsNote({ ownMesh: own, distanceRms: 0.0078, targetDistanceRms: 0.017 }, { narrowShare: 0.5, finer: 'fine' }), null, 'no gap, no note');
+});
+
+// A panel of n x m squares (two triangles each), `size` m to a square.
+function gridPanel(n, m, size = 0.01) {
+  const vertices = [];
+  const triangles = [];
+  for (let j = 0; j <= m; j++) for (let i = 0; i <= n; i++) vertices.push([i * size, j * size]);
+  const at = (i, j) => j * (n + 1) + i;
+  for (let j = 0; j < m; j++)
+    for (let i = 0; i < n; i++) triangles.push([at(i, j), at(i + 1, j), at(i + 1, j + 1)], [at(i, j), at(i + 1, j + 1), at(i, j + 1)]);
+  return { name: 'panel', vertices, triangles };
+}
+
+test('the share of narrow outlines counts the sides of a strip a triangle across, not those of a wide panel', () => {
+  // Mean edge: (2 sides + a diagonal) / 3 of a square, 1.14 squares.
+  const strip = narrowOutlineShare({ panels: [gridPanel(40, 1)] });
+  assert.ok(strip > 0.9, `a strip one square wide: ${strip}`);
+  assert.equal(narrowOutlineShare({ panels: [gridPanel(20, 20)] }), 0, 'a square 20 across');
+  // A wide square with a strip one square wide and 20 long sticking out of it (an L of the two): about the strip's
+  // two sides of the outline.
+  const wide = gridPanel(20, 20);
+  const leg = gridPanel(1, 20);
+  const offset = wide.vertices.length;
+  const L = {
+    name: 'L',
+    vertices: [...wide.vertices, ...leg.vertices.map(([x, y]) => [x, y + 0.2])],
+    triangles: [...wide.triangles, ...leg.triangles.map((t) => t.map((v) => v + offset))],
+  };
+  // The leg's bottom row shares the square's top edge: weld its two vertices there.
+  const weld = new Map([[offset, 20 * 21], [offset + 1, 20 * 21 + 1]]);
+  L.triangles = L.triangles.map((t) => t.map((v) => weld.get(v) ?? v));
+  const share = narrowOutlineShare({ panels: [L] });
+  // Outline: the square's 80 squares less the one the leg stands on, and the leg's 41: about 41 of 120 narrow.
+  assert.ok(share > 0.25 && share < 0.45, `an L: ${share}`);
+  // Internal panels do not count.
+  assert.equal(narrowOutlineShare({ panels: [gridPanel(20, 20), { ...gridPanel(40, 1), internal: true }] }), 0);
 });

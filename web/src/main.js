@@ -75,6 +75,7 @@ const app = new App({
     compareGroup: $('compare-group'),
     showOptimized: $('show-optimized'),
     showFlattened: $('show-flattened'),
+    resolutionSelect: $('resolution-select'),
   },
   fields: {
     exampleSelect: $('example-select'),

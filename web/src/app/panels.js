@@ -8,6 +8,7 @@ import { optimizeArgs } from './stored-result.js';
 import { upOf } from './up-axis.js';
 import { MAX_SHEET, patternStatRows, exportOptions, formatMillimeters, formatSize } from './fabrication.js';
 import { renderStats } from '../views/stats-list.js';
+import { narrowOutlineShare } from '../views/pattern-layout.js';
 import { formatDistance, worseDistance } from './units.js';
 
 const STORED_STATUS = 'Showing the stored result while it is refined live';
@@ -20,17 +21,27 @@ export function optimizerEnd({ state, iteration }) {
   return `stopped at the optimizer's limit (${steps}) before settling; the panels may fit a little better than shown`;
 }
 
+// A share of the outlines this narrow (narrowOutlineShare) makes the cut panels' own meshing a likely cause of their
+// other shape (bench/README.md "Flat-cut designs").
+const NARROW_OUTLINES = 0.1;
+
 // When the optimized outlines, cut and inflated, settle clearly farther from the target than the optimizer's own
 // mesh had (status.ownMesh, OptimizeRemeshing::cutPanels): part of the balloon takes another shape once cut, and
-// the panes show it as cut. Null otherwise.
-export function cutPanelsNote({ ownMesh, distanceRms, targetDistanceRms }) {
+// the panes show it as cut; where much of the outlines runs along parts only a triangle or so across (narrowShare)
+// and the Panels menu has a finer setting (finer, its name), that it follows them better. Null otherwise.
+export function cutPanelsNote({ ownMesh, distanceRms, targetDistanceRms }, { narrowShare = 0, finer = null } = {}) {
   if (!ownMesh) return null;
   const own = worseDistance({ rms: ownMesh.distanceRms, targetRms: ownMesh.targetDistanceRms });
   const cut = worseDistance({ rms: distanceRms, targetRms: targetDistanceRms });
   if (!(cut > 1.2 * own)) return null;
   const percent = (f) => `${(100 * f).toFixed(2)} %`;
+  const finerHelps = finer && narrowShare >= NARROW_OUTLINES
+    ? ` A ${Math.round(100 * narrowShare)} % share of the outlines borders parts only a triangle or so across ` +
+      `at this resolution (a leg, a tail, a strip): the "${finer}" Panels setting follows them better.`
+    : '';
   return `Cut from these outlines, the panels inflate farther from the target than the optimizer's own mesh showed ` +
-    `(${percent(own)} → ${percent(cut)}): part of the balloon takes another shape once cut. The panes show it as cut.`;
+    `(${percent(own)} → ${percent(cut)}): part of the balloon takes another shape once cut. ` +
+    `The panes show it as cut.${finerHelps}`;
 }
 
 export class Panels {
@@ -151,9 +162,19 @@ export class Panels {
     const shown = await this.showVersion('optimized');
     if (shown && revision === this.app.revision) {
       this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
-      const note = cutPanelsNote(result.status);
+      const shape = this.panes.pattern.pattern;
+      const note = cutPanelsNote(result.status, {
+        narrowShare: shape ? narrowOutlineShare(shape) : 0,
+        finer: this.finerResolution(),
+      });
       if (note) this.messages.show('notice', note, [], { cause: 'distance.cut-panels' });
     }
+  }
+
+  // The Panels menu's next setting finer than the current resolution, by its name; null at the finest.
+  finerResolution() {
+    const option = [...(this.el.resolutionSelect?.options ?? [])].find((o) => Number(o.value) > this.app.resolution);
+    return option ? option.textContent.trim() : null;
   }
 
   // The panels shown were made from seams that have changed and now make none (SeamEditor.segment): they stay in

@@ -39,6 +39,79 @@ function bounds(vertices) {
   return { minX, minY, maxX, maxY, w: maxX - minX, h: maxY - minY };
 }
 
+// The share of the outer panels' outlines that lie within `within` mean triangle edges of another part of their own
+// panel's outline (across a leg, a tail, a narrow strip, a sharp tip), where the mesh is only a triangle or so across:
+// what a fresh meshing of the outline (the cut panels) may inflate differently. The other part is one farther along
+// the outline than 2.5 times its distance, so a vertex's own neighbours and a blunt turn do not count.
+export function narrowOutlineShare(pattern, within = 1.5) {
+  const outer = pattern.panels.filter((p) => !p.internal);
+  let edgeSum = 0;
+  let edgeCount = 0;
+  for (const { vertices: V, triangles } of outer)
+    for (const t of triangles)
+      for (let e = 0; e < 3; e++) {
+        const [a, b] = [V[t[e]], V[t[(e + 1) % 3]]];
+        edgeSum += Math.hypot(b[0] - a[0], b[1] - a[1]);
+        edgeCount++;
+      }
+  if (!edgeCount) return 0;
+  const reach = (within * edgeSum) / edgeCount;
+  let narrow = 0;
+  let total = 0;
+  for (const { vertices: V, triangles } of outer) {
+    const next = new Map(boundaryEdges(triangles));
+    const loops = [];
+    const seen = new Set();
+    for (const start of next.keys()) {
+      if (seen.has(start)) continue;
+      const loop = [];
+      for (let v = start; v !== undefined && !seen.has(v); v = next.get(v)) seen.add(v), loop.push(v);
+      loops.push(loop);
+    }
+    const length = (a, b) => Math.hypot(V[b][0] - V[a][0], V[b][1] - V[a][1]);
+    const arcs = loops.map((loop) => {
+      const arc = [0];
+      for (let i = 1; i <= loop.length; i++) arc.push(arc[i - 1] + length(loop[i - 1], loop[i % loop.length]));
+      return arc;
+    });
+    loops.forEach((loop, l) => {
+      const n = loop.length;
+      const arc = arcs[l];
+      for (let i = 0; i < n; i++) {
+        const p = V[loop[i]];
+        let across = Infinity;
+        loops.forEach((other, m) => {
+          const k = other.length;
+          for (let j = 0; j < k; j++) {
+            if (m === l && (j === i || (j + 1) % n === i)) continue;
+            const a = V[other[j]];
+            const b = V[other[(j + 1) % k]];
+            const d = segmentDistance(p, a, b);
+            if (!(d < across) || !(d < reach)) continue;
+            if (m === l) {
+              const along = (x) => Math.min(Math.abs(x - arc[i]), arc[n] - Math.abs(x - arc[i]));
+              if (Math.min(along(arc[j]), along(arc[j + 1])) <= 2.5 * d) continue;
+            }
+            across = d;
+          }
+        });
+        const share = (length(loop[(i + n - 1) % n], loop[i]) + length(loop[i], loop[(i + 1) % n])) / 2;
+        total += share;
+        if (across < reach) narrow += share;
+      }
+    });
+  }
+  return total > 0 ? narrow / total : 0;
+}
+
+function segmentDistance(p, a, b) {
+  const dx = b[0] - a[0];
+  const dy = b[1] - a[1];
+  const l2 = dx * dx + dy * dy;
+  const t = l2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2)) : 0;
+  return Math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
+}
+
 // Edges used by exactly one triangle, in the triangles' direction.
 export function boundaryEdges(triangles) {
   const count = new Map();
