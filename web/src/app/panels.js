@@ -162,8 +162,9 @@ export class Panels {
     const shown = await this.showVersion('optimized');
     if (shown && revision === this.app.revision) {
       this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
+      // The outlines' narrow share is measured only where there is a note to add it to.
       const shape = this.panes.pattern.pattern;
-      const note = cutPanelsNote(result.status, {
+      const note = cutPanelsNote(result.status) && cutPanelsNote(result.status, {
         narrowShare: shape ? narrowOutlineShare(shape) : 0,
         finer: this.finerResolution(),
       });
