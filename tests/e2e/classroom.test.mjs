@@ -6,7 +6,7 @@
 // target) and puts either layout back, undoably.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openFreshPage, openPage, optimizedResultShown, paintedFraction, screenshot, useBrowser } from './harness.mjs';
+import { autosavedDesign, openFreshPage, openPage, optimizedResultShown, paintedFraction, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 const LONG = { timeout: 180000 }; // the panels are optimized on two shared cores
@@ -44,19 +44,7 @@ const designerState = (page) =>
   });
 
 // The design in the autosave record every new tab opens.
-const autosaved = (page) =>
-  page.evaluate(() => new Promise((resolve, reject) => {
-    const open = indexedDB.open('billow', 1);
-    open.onerror = () => reject(open.error);
-    open.onsuccess = () => {
-      const get = open.result.transaction('autosave').objectStore('autosave').get('current');
-      get.onsuccess = () => {
-        resolve(JSON.stringify(get.result?.design ?? null));
-        open.result.close();
-      };
-      get.onerror = () => reject(get.error);
-    };
-  }));
+const autosaved = async (page) => JSON.stringify(await autosavedDesign(page));
 
 const resultShown = (page) => optimizedResultShown(page, LONG.timeout);
 

@@ -100,6 +100,34 @@ export function openFreshPage(context, url) {
   return openPage(context, url, { fresh: true });
 }
 
+// The design in the autosave record every new tab opens (IndexedDB 'billow', store 'autosave', key 'current'), or null.
+export function autosavedDesign(page) {
+  return page.evaluate(
+    () => new Promise((resolve, reject) => {
+      const open = indexedDB.open('billow', 1);
+      open.onerror = () => reject(open.error);
+      open.onsuccess = () => {
+        const get = open.result.transaction('autosave', 'readonly').objectStore('autosave').get('current');
+        get.onsuccess = () => {
+          open.result.close();
+          resolve(get.result?.design ?? null);
+        };
+        get.onerror = () => reject(get.error);
+      };
+    }),
+  );
+}
+
+// Waits until that design satisfies `holds`: the app saves on every change, but its write ends after the change
+// is shown, so a page closed at once (a test's next step) can leave the record one change behind.
+export async function autosaveHolds(page, holds, timeout = 10000) {
+  const end = Date.now() + timeout;
+  while (!holds(await autosavedDesign(page))) {
+    if (Date.now() > end) throw new Error('the autosave did not come to hold the design on screen');
+    await page.waitForTimeout(100);
+  }
+}
+
 // Opens a design file of tests/data with the file picker, as a designer would.
 export async function openDesignFixture(page, fileName) {
   const buffer = await readFile(join(ROOT, 'tests/data', fileName));

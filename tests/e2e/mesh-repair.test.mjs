@@ -7,7 +7,7 @@ import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
-import { openFreshPage, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
+import { autosaveHolds, openFreshPage, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -81,6 +81,7 @@ test('a thin handle is offered a cut through it; the cut shape keeps its faces, 
   assert.equal(await page.evaluate(() => window.billow.test.design.target.cutThinHandles), true);
   assert.equal(await page.locator('.message', { hasText: 'genus 1' }).count(), 0);
   assert.deepEqual(page.errors, []);
+  await autosaveHolds(page, (design) => design?.target?.cutThinHandles === true);
   await page.close();
 
   // Reopened from the autosave: still cut, no warning again.
@@ -118,6 +119,7 @@ test('an open mesh is refused with an offer to close its hole; closed, it opens 
   assert.equal(await page.evaluate(() => window.billow.test.design.target.closeHoles), true);
   await screenshot(page, 'mesh-repair-hole-closed');
   assert.deepEqual(page.errors, []);
+  await autosaveHolds(page, (design) => design?.target?.closeHoles === true);
   await page.close();
 
   const again = await openPage(env.context, env.server.url);

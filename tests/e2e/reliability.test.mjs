@@ -4,7 +4,7 @@
 // on any console error.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { openPage, openFreshPage, openDesignFixture, useBrowser } from './harness.mjs';
+import { autosavedDesign, openPage, openFreshPage, openDesignFixture, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -23,22 +23,8 @@ async function setHeight(page, meters) {
 }
 
 // The height of the design autosaved in this browser profile (IndexedDB 'billow', key 'current').
-function autosavedHeight(page) {
-  return page.evaluate(
-    () => new Promise((resolve, reject) => {
-      const open = indexedDB.open('billow', 1);
-      open.onerror = () => reject(open.error);
-      open.onsuccess = () => {
-        const db = open.result;
-        const get = db.transaction('autosave', 'readonly').objectStore('autosave').get('current');
-        get.onsuccess = () => {
-          db.close();
-          resolve(get.result?.design?.size?.height ?? null);
-        };
-        get.onerror = () => reject(get.error);
-      };
-    }),
-  );
+async function autosavedHeight(page) {
+  return (await autosavedDesign(page))?.size?.height ?? null;
 }
 
 function assertNoErrors(...pages) {
