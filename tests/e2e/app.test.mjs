@@ -3,7 +3,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { serve, launch, openFreshPage, screenshot, paintedFraction, MESHES, useBrowser } from './harness.mjs';
+import { autosaveHolds, serve, launch, openFreshPage, screenshot, paintedFraction, MESHES, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -171,7 +171,7 @@ test('examples menu, real size, and autosave across a reload', async () => {
   await page.fill('#height-input', '0.9');
   await page.press('#height-input', 'Enter');
   await page.waitForFunction(() => /90\.0 cm/.test(document.querySelector('#target-stats dd[data-stat="size"]')?.textContent));
-  await page.waitForTimeout(300); // autosave is asynchronous
+  await autosaveHolds(page, (design) => design?.target?.example === 'sphere' && design.size?.height === 0.9);
   await page.reload();
   await page.waitForSelector('body[data-ready="true"]');
   assert.equal(await stat(page, 'triangles'), '1,280', 'the example came back');
@@ -185,7 +185,7 @@ test('a file target is autosaved with its mesh and restored', async () => {
   const page = await fresh();
   await page.setInputFiles('#file-input', { name: 'blub.obj', mimeType: 'text/plain', buffer: readFileSync(`${MESHES}/blub.obj`) });
   await page.waitForFunction(() => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === 'blub.obj');
-  await page.waitForTimeout(300);
+  await autosaveHolds(page, (design) => design?.target?.file === 'blub.obj');
   await page.reload();
   await page.waitForSelector('body[data-ready="true"]');
   assert.equal(await stat(page, 'file'), 'blub.obj');
