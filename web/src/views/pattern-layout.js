@@ -77,34 +77,25 @@ export function narrowOutlineShare(pattern, within = 1.5) {
     loops.forEach((loop, l) => {
       const n = loop.length;
       const arc = arcs[l];
+      const along = (i, x) => Math.min(Math.abs(x - arc[i]), arc[n] - Math.abs(x - arc[i]));
+      // Another part of an outline within reach of vertex i: a segment of another loop, or of its own far enough along.
+      const across = (i) => loops.some((other, m) => other.some((_, j) => {
+        if (m === l && (j === i || (j + 1) % n === i)) return false;
+        const d = segmentDistance(V[loop[i]], V[other[j]], V[other[(j + 1) % other.length]]);
+        return d < reach && (m !== l || Math.min(along(i, arc[j]), along(i, arc[j + 1])) > 2.5 * d);
+      }));
       for (let i = 0; i < n; i++) {
-        const p = V[loop[i]];
-        let across = Infinity;
-        loops.forEach((other, m) => {
-          const k = other.length;
-          for (let j = 0; j < k; j++) {
-            if (m === l && (j === i || (j + 1) % n === i)) continue;
-            const a = V[other[j]];
-            const b = V[other[(j + 1) % k]];
-            const d = segmentDistance(p, a, b);
-            if (!(d < across) || !(d < reach)) continue;
-            if (m === l) {
-              const along = (x) => Math.min(Math.abs(x - arc[i]), arc[n] - Math.abs(x - arc[i]));
-              if (Math.min(along(arc[j]), along(arc[j + 1])) <= 2.5 * d) continue;
-            }
-            across = d;
-          }
-        });
         const share = (length(loop[(i + n - 1) % n], loop[i]) + length(loop[i], loop[(i + 1) % n])) / 2;
         total += share;
-        if (across < reach) narrow += share;
+        if (across(i)) narrow += share;
       }
     });
   }
   return total > 0 ? narrow / total : 0;
 }
 
-function segmentDistance(p, a, b) {
+// The distance from p to the segment from a to b (2D points).
+export function segmentDistance(p, a, b) {
   const dx = b[0] - a[0];
   const dy = b[1] - a[1];
   const l2 = dx * dx + dy * dy;

@@ -6,7 +6,7 @@ import {
   MeshBasicMaterial, LineSegments, LineBasicMaterial, DoubleSide, Color, Shape, ShapeGeometry,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { layoutPattern } from './pattern-layout.js';
+import { layoutPattern, segmentDistance } from './pattern-layout.js';
 import { panelTint, seamColor } from './palette.js';
 import { unclutterLabels } from './label-rule.js';
 import { freeArea, watchOverlays } from './free-area.js';
@@ -527,7 +527,7 @@ export class PatternPane {
       const reach = Math.max(8 * pixel, Math.min((this.seams.widths[id] ?? 0) / 1000 + 3 * pixel, 40 * pixel));
       for (const run of list)
         for (const [x0, y0, x1, y1] of run.segments) {
-          const d = segmentDistance(p.x, p.y, x0, y0, x1, y1);
+          const d = segmentDistance([p.x, p.y], [x0, y0], [x1, y1]);
           if (d <= reach && d / reach < bestScore) {
             bestScore = d / reach;
             best = id;
@@ -658,11 +658,4 @@ function panelArea(panel) {
     area += Math.abs((bx - ax) * (cy - ay) - (by - ay) * (cx - ax)) / 2;
   }
   return area;
-}
-
-function segmentDistance(px, py, x0, y0, x1, y1) {
-  const dx = x1 - x0, dy = y1 - y0;
-  const len2 = dx * dx + dy * dy;
-  const t = len2 > 0 ? Math.min(1, Math.max(0, ((px - x0) * dx + (py - y0) * dy) / len2)) : 0;
-  return Math.hypot(px - x0 - t * dx, py - y0 - t * dy);
 }
