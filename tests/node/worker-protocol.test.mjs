@@ -219,6 +219,21 @@ test('latest: a newer call of the same kind cancels the older, which reports not
   assert.equal(client.worker.runner.unfinished.size, 0);
 });
 
+test('the cut lines of a pattern are drawn while a long inflation runs, not after it', async () => {
+  const client = newClient();
+  await client.ready;
+  const { patternText } = await client.request(Op.examplePattern, { name: 'sphere3', triangles: 3000 });
+  const order = [];
+  const inflation = client.request(Op.inflatePattern, { patternText }).then(() => order.push('inflated'));
+  const cut = client.request(Op.exportPattern, { patternText, options: { sheet_width: 1000 } }).then((result) => {
+    order.push('cut');
+    return result;
+  });
+  assert.ok((await cut).statistics.totals.sheet_width_mm > 0);
+  await inflation;
+  assert.deepEqual(order, ['cut', 'inflated']);
+});
+
 test('a crashed worker is replaced, the target replayed, and the crash loop is bounded', async () => {
   const crashes = [];
   const client = newClient({ onCrash: (c) => crashes.push(c) });

@@ -72,8 +72,9 @@ export const Op = Object.freeze({
 });
 
 // Quick operations that only read the worker's state: they run at once, even between the steps of a
-// long operation, so drawing stays responsive while the panels inflate.
-export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.distanceToTarget, Op.materialPresets, Op.memoryStats, Op.mirrorSymmetry, Op.chooseLooks]);
+// long operation, so drawing stays responsive while the panels inflate, and a new sheet width or allowance
+// is drawn while the live optimization runs (the cut lines of a pattern take tens of milliseconds).
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.distanceToTarget, Op.exportPattern, Op.materialPresets, Op.memoryStats, Op.mirrorSymmetry, Op.chooseLooks]);
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);
