@@ -521,13 +521,14 @@ export class PatternPane {
     const r = this.element.getBoundingClientRect();
     const p = new Vector3(((clientX - r.left) / r.width) * 2 - 1, -((clientY - r.top) / r.height) * 2 + 1, 0).unproject(this.camera);
     const pixel = this.metersPerPixel();
+    const at = [p.x, p.y]; // once, not per segment: this runs on every pointer move
     let best = null;
     let bestScore = Infinity;
     for (const [id, list] of this.seams.runs) {
       const reach = Math.max(8 * pixel, Math.min((this.seams.widths[id] ?? 0) / 1000 + 3 * pixel, 40 * pixel));
       for (const run of list)
         for (const [x0, y0, x1, y1] of run.segments) {
-          const d = segmentDistance([p.x, p.y], [x0, y0], [x1, y1]);
+          const d = segmentDistance(at, [x0, y0], [x1, y1]);
           if (d <= reach && d / reach < bestScore) {
             bestScore = d / reach;
             best = id;
