@@ -4,7 +4,8 @@
 // minus half the width of the signed surface distance to the outline, front and back. The design remembers a
 // band on its seams (seam.band, parseBand) so it can be laid again at another width.
 import { outlineLoop, sectionThrough, sectionSeamPoints, splitInTwo, zeroLoops, loopLength, distance } from './section.js';
-import { positionOf, segmentDistance } from './symmetry.js';
+import { segmentDistance } from './geometry.js';
+import { positionOf } from './symmetry.js';
 
 export const BAND_PARTS = ['side 1', 'side 2', 'across'];
 const BAND_KINDS = ['section', 'outline'];

@@ -4,6 +4,8 @@
 // that is its own mirror image (a loop around the belly of a symmetric animal) gets no twin.
 // Mirroring a surface point: its position reflected across the plane, then the closest point of the target.
 
+import { segmentDistance } from './geometry.js';
+
 export const SYMMETRY_AXES = ['x', 'y', 'z'];
 const SELF_SYMMETRIC_TOLERANCE = 0.01; // of the bounding-box diagonal
 // A seam's end lies on another seam's line within this share of the diagonal: the line is drawn through the host's
@@ -214,14 +216,6 @@ function distanceToLine(p, line, closed) {
   let best = Infinity;
   for (let k = 0; k + 1 < n + (closed ? 1 : 0); k++) best = Math.min(best, segmentDistance(p, line[k], line[(k + 1) % n]));
   return best;
-}
-
-// The distance from q to the segment from a to b (3D points).
-export function segmentDistance(q, a, b) {
-  const ab = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-  const length2 = ab[0] ** 2 + ab[1] ** 2 + ab[2] ** 2;
-  const s = length2 > 0 ? Math.min(1, Math.max(0, (ab[0] * (q[0] - a[0]) + ab[1] * (q[1] - a[1]) + ab[2] * (q[2] - a[2])) / length2)) : 0;
-  return Math.hypot(a[0] + s * ab[0] - q[0], a[1] + s * ab[1] - q[1], a[2] + s * ab[2] - q[2]);
 }
 
 // Seams laid together as their own mirror images (a suggested layout, suggest.js), linked as twins: from seam `from`

@@ -1,6 +1,8 @@
 // Pattern geometry for display: panels laid out side by side (no overlap), boundary edges, and which
 // boundary edges are sewn to which panel, so both sides of a seam get the same color.
 
+import { segmentDistance } from '../app/geometry.js';
+
 // pattern: { panels: [{ name, vertices: [[x,y]], triangles: [[i,j,k]] }], stitches: [[pa, va, pb, vb]] }
 // Returns per panel { offset: [dx, dy], boundary: [[a, b, partnerPanel | -1]], center: [x, y] (of its
 // bounding box, in its frame), centroid: [x, y] (the same, laid out) }.
@@ -92,15 +94,6 @@ export function narrowOutlineShare(pattern, within = 1.5) {
     });
   }
   return total > 0 ? narrow / total : 0;
-}
-
-// The distance from p to the segment from a to b (2D points).
-export function segmentDistance(p, a, b) {
-  const dx = b[0] - a[0];
-  const dy = b[1] - a[1];
-  const l2 = dx * dx + dy * dy;
-  const t = l2 > 0 ? Math.max(0, Math.min(1, ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2)) : 0;
-  return Math.hypot(p[0] - a[0] - t * dx, p[1] - a[1] - t * dy);
 }
 
 // Edges used by exactly one triangle, in the triangles' direction.

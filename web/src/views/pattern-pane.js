@@ -6,7 +6,8 @@ import {
   MeshBasicMaterial, LineSegments, LineBasicMaterial, DoubleSide, Color, Shape, ShapeGeometry,
 } from 'three';
 import { OrbitControls } from 'three/addons/controls/OrbitControls.js';
-import { layoutPattern, segmentDistance } from './pattern-layout.js';
+import { segmentDistance } from '../app/geometry.js';
+import { layoutPattern } from './pattern-layout.js';
 import { panelTint, seamColor } from './palette.js';
 import { unclutterLabels } from './label-rule.js';
 import { freeArea, watchOverlays } from './free-area.js';
