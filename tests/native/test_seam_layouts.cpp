@@ -91,6 +91,62 @@ TEST(PlaneSection, APlaneBesideTheShapeCutsNothingAndOneThroughFourLegsCutsFour)
       EXPECT_NEAR(position(spot, p).y(), low, 1e-8 * test::boxDiagonal(spot));
 }
 
+// A piece of a section with points left out in its middle (where a loop comes back near one of its ends, as on a closed
+// terrain's bands): each control point between two points that share no face is one of them, on the surface, never a
+// blend of weights from two faces (which summed to 0.95 there: a point off the surface, whose seam the app's workers
+// then refused to read, so the whole suggestion failed).
+TEST(PlaneSection, APathWithPointsLeftOutKeepsEveryControlPointOnTheSurface) {
+  const TriMesh sphere = loadShared("sphere.obj");
+  const Eigen::Vector3d n = Eigen::Vector3d(0.3, 1, 0.2).normalized(), c = boxMiddle(sphere);
+  const std::vector<SectionLoop> loops = planeSection(sphere, n, n.dot(c));
+  ASSERT_EQ(loops.size(), 1u);
+  const SectionLoop& loop = loops[0];
+  ASSERT_GT(loop.size(), 20u);
+  // Half the loop, its middle fifth left out.
+  SectionLoop path;
+  const size_t half = loop.size() / 2;
+  for (size_t i = 0; i < half; ++i)
+    if (i < 2 * half / 5 || i >= 3 * half / 5) path.push_back(loop[i]);
+  const double D = test::boxDiagonal(sphere);
+  const std::vector<SurfacePoint> controls = sectionPathPoints(sphere, path, 0.01 * D);
+  ASSERT_GT(controls.size(), 10u);
+  for (const SurfacePoint& p : controls) {
+    EXPECT_GE(p.bary.minCoeff(), 0) << p.face;
+    EXPECT_NEAR(p.bary.sum(), 1, 1e-12) << p.face;
+    EXPECT_NEAR(position(sphere, p).dot(n), n.dot(c), 1e-8 * D) << p.face;
+  }
+}
+
+// Every proposal's seams, as laid for a look, are made of points on the target (each in its triangle, weights summing
+// to 1), on every shared mesh at 12 panels, with and without the outlines held together inside.
+TEST(SeamLayouts, EveryProposedSeamPointLiesInItsTriangle) {
+  for (const char* name : {"sphere.obj", "spot.obj", "bunny.obj", "blub.obj", "penguin.obj", "stuffedtoy.obj",
+                           "elephant.obj", "koala.obj", "goathead.obj", "cat.obj", "octopus.obj", "hand.obj"}) {
+    const auto scene = sharedScene(name);
+    LayoutRequest request;
+    request.panels = 12;
+    int points = 0;
+    for (const LayoutProposal& proposal : proposeLayouts(scene->target, request)) {
+      std::vector<DesignConnection> connections;
+      std::vector<DesignSeam> seams;
+      try {
+        seams = proposalSeams(scene->target, proposal, &connections);
+      } catch (const Error&) {
+        continue;  // refused with its reason (an axis beside the shape): no seams to check
+      }
+      for (const DesignSeam& seam : seams)
+        for (const DesignPoint& p : seam.points) {
+          if (!p.onSurface) continue;
+          ++points;
+          EXPECT_GE(p.surface.bary.minCoeff(), -1e-12) << name << ": " << proposal.name << ", " << seam.name;
+          EXPECT_NEAR(p.surface.bary.sum(), 1, 1e-9) << name << ": " << proposal.name << ", " << seam.name;
+          EXPECT_TRUE(p.surface.face >= 0 && p.surface.face < scene->target.numTriangles()) << name;
+        }
+    }
+    EXPECT_GT(points, 100) << name;
+  }
+}
+
 TEST(SeamLayouts, TheMirrorSymmetryOfTheCowIsFoundAndTheBunnyHasNone) {
   const auto spot = sharedScene("spot.obj");
   EXPECT_EQ(mirrorSymmetryAxis(spot->target, *spot->projector), 0);

@@ -357,6 +357,27 @@ test('a worker that stops during a suggestion stops the others, and the designer
   assert.ok(cancelled.includes(Op.suggestOptimize), `cancelled: ${cancelled.join(', ')}`);
 });
 
+test('a layout the solver refuses to optimize is left out with its reason, and the others are still shown', async () => {
+  const [worker] = await clientsFor('../../web/public/examples/sphere.obj');
+  let refused = null;
+  // The first layout handed to be optimized is refused as the solver refuses seams it cannot read (a point off its
+  // triangle); the others are optimized as usual.
+  const refusing = {
+    call: (op, args, options) => {
+      if (op !== Op.suggestOptimize || refused !== null) return worker.call(op, args, options);
+      refused = args.index;
+      const message = 'Point 3 of seam 2 (seams[1].points[2]) lies outside its triangle.';
+      return { promise: Promise.reject(new SolverError('design.bad-field', message)), cancel: () => {} };
+    },
+  };
+  const result = await suggest([refusing], { panels: 4, scale: 0.25, triangles: 300, maxIterations: 3, optimize: 3 });
+  assert.notEqual(refused, null);
+  assert.ok(result.layouts.length >= 1, 'the other layouts are shown');
+  const left = result.notUsed.filter((n) => /could not be optimized: Point 3 of seam 2/.test(n.why));
+  assert.equal(left.length, 1, JSON.stringify(result.notUsed));
+  assert.ok(result.layouts.every((l) => l.name !== left[0].name));
+});
+
 test('a worker that has not looked (one restarted after a crash) optimizes a layout another looked at, alike', async () => {
   const args = { panels: 4, scale: 0.25, triangles: 300, maxIterations: 3 };
   const [looker, fresh] = await clientsFor('../../web/public/examples/sphere.obj', [inThreadClient(api), inThreadClient(api)]);

@@ -114,10 +114,17 @@ std::vector<SurfacePoint> pointsAt(const TriMesh& mesh, const SectionLoop& loop,
     const SectionPoint& a = loop[i];
     const SectionPoint& b = loop[(i + 1) % loop.size()];
     const double s = std::clamp((want - walked) / std::max(span(i), 1e-300), 0.0, 1.0);
-    // b was reached across b's face, which also holds a's edge: both points' weights in that face.
+    // b was reached across b's face, which also holds a's edge: both points' weights in that face. Where the two
+    // share no face (a path with points left out), the nearer of them: weights of a point off the face would not sum
+    // to 1, a point off the surface.
+    const Eigen::Vector3d wa = weightsInFace(mesh, a.at, b.at.face);
     SurfacePoint p;
-    p.face = b.at.face;
-    p.bary = (1 - s) * weightsInFace(mesh, a.at, p.face) + s * b.at.bary;
+    if (std::abs(wa.sum() - 1) > 1e-9) {
+      p = s < 0.5 ? a.at : b.at;
+    } else {
+      p.face = b.at.face;
+      p.bary = (1 - s) * wa + s * b.at.bary;
+    }
     out.push_back(p);
   }
   return out;

@@ -35,6 +35,21 @@ constexpr int kMostGores = 24, kMostBands = 12;
 // radius, bench/README.md "The Mylar balloon against Paulsen"), and an internal connection can only pull them
 // together: layouts held together inside are laid only along a view the target is thinner than that along.
 constexpr double kPillowThickness = 0.6;
+
+// A piece of a loop (its points in order) without the points at either end within `clearance` of its end points `from`
+// and `to`, so no control point crowds them: still a run of neighbours on the loop, as sectionPathPoints needs. (Points
+// left out in its middle, where the loop comes back near an end, joined two points that share no face: a control point
+// off the surface, whose seams the app's workers then refused to read.)
+SectionLoop withoutEnds(const SectionLoop& piece, const Eigen::Vector3d& from, const Eigen::Vector3d& to,
+                        double clearance) {
+  const auto nearEnd = [&](const SectionPoint& p) {
+    return (p.position - from).norm() < clearance || (p.position - to).norm() < clearance;
+  };
+  size_t first = 0, last = piece.size();
+  while (first < last && nearEnd(piece[first])) ++first;
+  while (last > first && nearEnd(piece[last - 1])) --last;
+  return SectionLoop(piece.begin() + long(first), piece.begin() + long(last));
+}
 // A layout is laid for as few as half the panels asked for (four fewer at small counts): a limb cut on its own, or
 // opened, adds panels on most shapes (the penguin's 4 bands in two pieces along its outline make 12, not 8). A look
 // that makes more than asked for is refused before it is built (lookAtLayout).
@@ -808,10 +823,9 @@ std::vector<DesignSeam> creaseSeams(const TriMesh& target, const LayoutProposal&
             const Eigen::Vector3d a = target.V.row(target.F(f, 0)), b = target.V.row(target.F(f, 1)),
                                   e = target.V.row(target.F(f, 2));
             facing += (b - a).cross(e - a).normalized()[view];
-            const double toEnds = std::min((loop[k].position - loop[at[c]].position).norm(),
-                                           (loop[k].position - loop[at[piece.to]].position).norm());
-            if (toEnds >= 0.25 * spacing) piece.inner.push_back(loop[k]);
+            piece.inner.push_back(loop[k]);
           }
+          piece.inner = withoutEnds(piece.inner, loop[at[c]].position, loop[at[piece.to]].position, 0.25 * spacing);
           if (count == 0) continue;
           if (facing > 0.7 * count) front.push_back(piece);
           if (facing < -0.7 * count) back.push_back(piece);
@@ -903,11 +917,10 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
             const LoopCrossing& to = on[1 - piece];
             SectionLoop path;
             for (size_t i = (from.after + 1) % loop.size();; i = (i + 1) % loop.size()) {
-              if ((loop[i].position - from.point.position).norm() >= 0.25 * spacing &&
-                  (loop[i].position - to.point.position).norm() >= 0.25 * spacing)
-                path.push_back(loop[i]);
+              path.push_back(loop[i]);
               if (i == to.after) break;
             }
+            path = withoutEnds(path, from.point.position, to.point.position, 0.25 * spacing);
             std::vector<SurfacePoint> controls{from.point.at};
             if (path.size() >= 2)
               for (const SurfacePoint& p : sectionPathPoints(target, path, spacing)) controls.push_back(p);
@@ -976,10 +989,8 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
           const size_t k = (start + j) % n;
           if (k == end) break;
           side.push_back(loop[k]);
-          if ((loop[k].position - from.point.position).norm() >= 0.25 * spacing &&
-              (loop[k].position - to.point.position).norm() >= 0.25 * spacing)
-            piece.push_back(loop[k]);
         }
+        piece = withoutEnds(side, from.point.position, to.point.position, 0.25 * spacing);
         if (!onThisSide(side)) continue;
         std::vector<SurfacePoint> controls{from.point.at};
         if (piece.size() >= 2)

@@ -2,7 +2,7 @@
 // (suggestLook) and the most promising looks are optimized (suggestOptimize, from the seams each look ended with), each
 // by whichever worker is free. No DOM: the app runs it over its helper workers (suggest.js), the tests and the bench
 // over workers in Node.
-import { Op } from '../worker/protocol.js';
+import { ErrorCode, Op } from '../worker/protocol.js';
 
 // The same seams, their names aside: two proposals can end alike once the loops that only grazed the shape are gone
 // (as lookAtLayout's `looked` tells them apart for the command line; here across all the workers' looks).
@@ -80,7 +80,15 @@ export function suggestLayouts(clients, { optimize, ...args }, { onProgress = ()
         for (let next = queue.shift(); next; next = queue.shift()) {
           // A fine target's layouts are laid on a simplified copy of it: optimized from their seams there.
           const { index, seams, copySeams, connections } = next;
-          const layout = await call(client, Op.suggestOptimize, { ...args, index, seams: copySeams ?? seams, connections });
+          let layout;
+          try {
+            layout = await call(client, Op.suggestOptimize, { ...args, index, seams: copySeams ?? seams, connections });
+          } catch (error) {
+            // A crash or a cancel stops the suggestion; an error of this layout's own (seams the solver would not
+            // read, a pattern it refused) leaves this layout out, and the others are still shown.
+            if (error.code === ErrorCode.cancelled || error.code === ErrorCode.crashed) throw error;
+            layout = { ok: false, problem: `it could not be optimized: ${error.message}` };
+          }
           optimized++;
           if (!layout.ok) notUsed.push({ name: next.name, why: layout.problem });
           else layouts.push({ ...layout, description: next.description }); // what its look did to its sections
