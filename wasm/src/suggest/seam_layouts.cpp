@@ -50,6 +50,7 @@ SectionLoop withoutEnds(const SectionLoop& piece, const Eigen::Vector3d& from, c
   while (last > first && nearEnd(piece[last - 1])) --last;
   return SectionLoop(piece.begin() + long(first), piece.begin() + long(last));
 }
+
 // A layout is laid for as few as half the panels asked for (four fewer at small counts): a limb cut on its own, or
 // opened, adds panels on most shapes (the penguin's 4 bands in two pieces along its outline make 12, not 8). A look
 // that makes more than asked for is refused before it is built (lookAtLayout).
