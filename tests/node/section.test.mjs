@@ -41,6 +41,19 @@ test('a section of the unit sphere is its circle, through the clicked triangle, 
   }
 });
 
+test('a loop with points left out keeps every control point on the surface: the nearer point where two share no face', () => {
+  const sphere = load('sphere.obj');
+  const [loop] = planeSection(sphere, [0.3, 1, 0.2].map((x) => x / Math.hypot(0.3, 1, 0.2)), 0.2);
+  // Its second quarter left out: the points either side of the gap share no face.
+  const gapped = loop.filter((_, i) => i < loop.length / 4 || i >= loop.length / 2);
+  const points = sectionSeamPoints(sphere, gapped);
+  assert.ok(points.length > 30, `${points.length} points`);
+  for (const p of points) {
+    assert.ok(Math.abs(p.bary.reduce((a, b) => a + b) - 1) < 1e-9 && p.bary.every((b) => b >= -1e-12), JSON.stringify(p.bary));
+    assert.ok(Math.abs(Math.hypot(...positionOf(sphere, p)) - 1) < 0.02, 'on the sphere');
+  }
+});
+
 test('where a plane cuts a shape in several loops, the one through the click is laid', () => {
   const hand = load('hand.obj');
   const { center, diagonal } = middle(hand);

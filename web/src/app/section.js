@@ -85,7 +85,8 @@ export function resampleLoop({ indices }, loop, arcs) {
     const a = loop[i];
     const b = loop[(i + 1) % loop.length];
     const s = Math.min(1, Math.max(0, (want - walked) / Math.max(span(i), 1e-300)));
-    // b was reached across b.face, which also holds a's edge: both points' weights in that face.
+    // b was reached across b.face, which also holds a's edge: both points' weights in that face. Where the two share
+    // no face (a loop with points left out), the nearer of them: weights of a point off the face would not sum to 1.
     const face = b.face;
     const weightsIn = (p) => {
       if (p.face === face) return p.bary;
@@ -96,6 +97,11 @@ export function resampleLoop({ indices }, loop, arcs) {
       });
     };
     const wa = weightsIn(a);
+    if (Math.abs(wa[0] + wa[1] + wa[2] - 1) > 1e-9) {
+      const near = s < 0.5 ? a : b;
+      out.push({ position: near.position, face: near.face, bary: near.bary });
+      continue;
+    }
     const wb = b.bary;
     const bary = [0, 1, 2].map((c) => (1 - s) * wa[c] + s * wb[c]);
     out.push({ position: a.position.map((x, c) => x + s * (b.position[c] - x)), face, bary });
