@@ -4,7 +4,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { openPage, openFreshPage, openDesignFixture, screenshot, useBrowser } from './harness.mjs';
+import { autosaveHolds, openPage, openFreshPage, openDesignFixture, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 const stat = (page, pane, name) => page.textContent(`#${pane}-stats dd[data-stat="${name}"]`);
@@ -304,7 +304,7 @@ test('one seam gets its own allowance by a click on it: only its cut line moves;
   await page.waitForFunction(() => window.billow.test.cutStatistics.panels.every((p) => [0, 180].includes(Math.round(Math.abs(p.rotation_deg)))));
 
   // Saved with the design: a reload keeps S2's own allowance and the grain, for this pattern again.
-  await page.waitForTimeout(300); // the autosave
+  await autosaveHolds(page, (design) => design?.fabrication?.grain_lock === true && design?.fabrication?.seam_allowance?.[1] === 0);
   await page.reload();
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
   assert.deepEqual(await page.evaluate(() => window.billow.test.design.fabrication), { allowance: 10, sheet_width: 1700, units: 'mm', joining: 'sewn', seam_allowance: { 1: 0 }, grain_lock: true });

@@ -4,7 +4,7 @@
 // on any console error.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
-import { autosavedDesign, openPage, openFreshPage, openDesignFixture, useBrowser } from './harness.mjs';
+import { autosavedDesign, autosaveHolds, openPage, openFreshPage, openDesignFixture, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -35,8 +35,7 @@ test('a second tab does not autosave over the first, and takes over when the fir
   const first = await fresh();
   assert.equal(await isPrimary(first), true, 'the first tab autosaves');
   await setHeight(first, 0.8);
-  await first.waitForTimeout(300); // autosave is asynchronous
-  assert.equal(await autosavedHeight(first), 0.8);
+  await autosaveHolds(first, (design) => design?.size?.height === 0.8); // autosave is asynchronous
 
   const second = await openPage(env.context, env.server.url);
   assert.equal(await isPrimary(second), false, 'the second tab does not autosave');
@@ -68,8 +67,7 @@ test('a second tab does not autosave over the first, and takes over when the fir
   await waitPrimary(first);
   await primaryNotice(first).waitFor();
   await setHeight(first, 1.1);
-  await first.waitForTimeout(300);
-  assert.equal(await autosavedHeight(first), 1.1, 'the tab left open autosaves again');
+  await autosaveHolds(first, (design) => design?.size?.height === 1.1); // the tab left open autosaves again
   assertNoErrors(first, second);
   await first.close();
 });
@@ -79,7 +77,7 @@ test('a second tab keeps its own work across its reloads, a shared link included
   await setHeight(first, 0.9);
   const url = await first.evaluate(() => window.billow.test.shareLink());
   await setHeight(first, 0.7);
-  await first.waitForTimeout(300);
+  await autosaveHolds(first, (design) => design?.size?.height === 0.7);
 
   const second = await openPage(env.context, url);
   assert.equal(await isPrimary(second), false);

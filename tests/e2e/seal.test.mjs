@@ -5,7 +5,7 @@
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
-import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
+import { autosaveHolds, openFreshPage, screenshot, useBrowser } from './harness.mjs';
 
 const env = useBrowser({ before, after });
 
@@ -95,7 +95,7 @@ test('a foil balloon is heat sealed: the seal band is drawn, a fill valve goes w
   assert.equal([...(await cutFile(page)).matchAll(/valve 35 mm/g)].length, 2);
   await page.click('#undo-button');
   await page.waitForFunction(() => window.billow.test.design.fabrication.valves[0].width === 20);
-  await page.waitForTimeout(300); // the autosave
+  await autosaveHolds(page, (design) => design?.fabrication?.valves?.[0]?.width === 20);
   await page.reload();
   await page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
   assert.deepEqual((await page.evaluate(() => window.billow.test.design.fabrication.valves)).map((v) => v.width), [20]);
