@@ -36,6 +36,11 @@ constexpr int kResettleNewton = 100;
 // kTrialNewtonFloor) before it counts as one that does not settle: in wasm a fb-blub trial took 1,000 (10 s)
 // where accepted ones take 5-30.
 constexpr int kTrialNewtonFactor = 5, kTrialNewtonFloor = 50;
+// Trials in a row that run out of that budget unsettled: the balloon's equilibrium chatters near this pattern
+// (wrinkled fabric changing regime, the residual alternating between 0.02 and 0.2 for the whole budget), and shorter
+// steps do not settle either, each costing the whole budget. It is taken as a snap: the shape the balloon moves to
+// (resettle), else the line search ends (bench/README.md "Trials that do not settle").
+constexpr int kUnsettledTrials = 5;
 // The largest move of the predicted equilibrium, in multiples of the panels' largest move, that is trusted.
 constexpr double kPredictionReach = 1000;
 // A Gauss-Newton step that lowered E by less than this (relative) is followed by an L-BFGS step.
@@ -417,7 +422,10 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   timings_.equilibriumMs += nowMs() - t0;
   if (newton) *newton = solver.iterations();
   if (snapped && *snapped) return false;
-  if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) return false;
+  if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) {
+    x = solver.positions();  // where it stopped: a resettling may start there
+    return false;
+  }
   x = solver.positions();
   align(X, x, limits.alignTolerance, limits.alignDecrease);
   return x.allFinite();
@@ -845,7 +853,7 @@ bool PatternOptimizer::iterate() {
   // to be (the balloon snapped into another equilibrium); two in a row: E(X) is discontinuous here, see
   // resettle().
   double lastExcess = INFINITY;
-  int jumps = 0;
+  int jumps = 0, unsettled = 0;
   bool snapLimited = false;
   // Backtracking: after a trial with a finite E the next alpha minimizes the quadratic through E_, the slope
   // and E(alpha), kept within [0.1, 0.5] alpha (Nocedal & Wright, Sec. 3.5); after a failed solve, alpha / 2.
@@ -897,6 +905,9 @@ bool PatternOptimizer::iterate() {
     double E = solved ? energy(X, x, nullptr) : NAN;
     if (!(solved && std::isfinite(E) && E <= E_ + 1e-4 * alpha * slope)) {
       ++timings_.rejectedTrials, timings_.snappedTrials += snapped;
+      unsettled = !solved && !snapped && newton >= trialNewton ? unsettled + 1 : 0;
+      timings_.unsettledTrials += unsettled > 0;
+      if (unsettled >= kUnsettledTrials) return x.allFinite() && resettle(x);
       if (!solved) {
         // A trial abandoned on its way into another equilibrium counts as a jump (its E would be far off).
         jumps = snapped ? jumps + 1 : 0, lastExcess = INFINITY;

@@ -226,6 +226,7 @@ struct OptimizeTimings {
   int equilibriumSolves = 0, rejectedTrials = 0;
   int newtonIterations = 0;  // of every equilibrium solve, trials refused and snapped included
   int snappedTrials = 0;     // line-search trials abandoned on their way into another equilibrium
+  int unsettledTrials = 0;   // line-search trials that ran out of their Newton budget without settling
   int resettlings = 0;       // see OptimizeRecord::resettled
   int remeshings = 0;        // remeshing steps taken
   double remeshMs = 0;       // their time, their equilibrium solves included
@@ -333,6 +334,7 @@ class PatternOptimizer {
   // Per panel, the current inflated position x of each panel vertex (what remeshPattern carries over).
   std::vector<Vertices> panelInflated() const;
   // asCut: with the seam rods the panels X give on their own instead of the phase's fixed ones (the final solve).
+  // False when it does not settle, x then where it stopped (snapped, or out of Newton iterations).
   bool solveEquilibrium(const Eigen::VectorXd& X, const Vertices& start, Vertices& x, int* newton, bool asCut = false,
                         const EquilibriumLimits& limits = {}, bool* snapped = nullptr);
   // Places x at its best rigid motion (rigid_align.hpp) to tolerance x the model size.
