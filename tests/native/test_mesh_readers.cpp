@@ -496,6 +496,12 @@ TEST(MeshFile, UnknownFormatListsTheReadableOnes) {
   expectError([] { readMeshBytes("ply\n", "x.pLy"); }, "ply.no-header-end");
 }
 
+// An empty file (a download or a copy that went wrong) says so in every format, not that a header or faces are missing.
+TEST(MeshFile, AnEmptyFileSaysSo) {
+  for (const char* name : {"model.obj", "model.STL", "model.ply", "model.off"})
+    expectError([&] { readMeshBytes("", name); }, "mesh.empty-file", std::string("\"") + name + "\" is empty");
+}
+
 // An OBJ or PLY written a vertex per face corner (as some exporters do) reads as the same mesh as one whose faces share
 // their vertices, as an STL does: the one reader welds every format alike. Unused vertices go; the faces keep their
 // order.

@@ -77,6 +77,10 @@ test('a broken file is rejected with a designer-facing message and its report', 
     /OBJ, STL, PLY or OFF/,
   );
   await assert.rejects(
+    client.request(Op.loadTarget, { fileName: 'empty.obj', bytes: new ArrayBuffer(0) }),
+    (e) => e.code === 'mesh.empty-file' && e.message === '"empty.obj" is empty: the file holds no mesh.',
+  );
+  await assert.rejects(
     client.request(Op.loadTarget, { fileName: 'garbage.obj', bytes: new Uint8Array([0, 1, 2, 255]).buffer }),
     (e) => e.code === 'obj.no-faces' && /no faces/.test(e.message),
   );

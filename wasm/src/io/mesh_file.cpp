@@ -31,17 +31,19 @@ std::string readFileBytes(const std::string& path, size_t maxBytes) {
 TriMesh readMeshBytes(std::string_view bytes, const std::string& fileName, const MeshReadOptions& options) {
   std::string ext = fileName.substr(std::min(fileName.size(), fileName.rfind('.') + 1));
   std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  if (ext != "stl" && ext != "obj" && ext != "ply" && ext != "off")
+    throw Error("io.unknown-format", "Billow cannot read '" + fileName +
+                                         "': use a mesh in OBJ, STL, PLY or OFF format (.obj, .stl, .ply, .off).");
+  // Said as such, not as a format's missing faces or header: a download or a copy that went wrong.
+  if (bytes.empty()) throw Error("mesh.empty-file", "\"" + fileName + "\" is empty: the file holds no mesh.");
   if (ext == "stl") return readStl(bytes, options);  // welded as it is read: STL stores each triangle's corners
   TriMesh read;
   if (ext == "obj")
     read = readObj(bytes, options);
   else if (ext == "ply")
     read = readPly(bytes, options);
-  else if (ext == "off")
-    read = readOff(bytes, options);
   else
-    throw Error("io.unknown-format", "Billow cannot read '" + fileName +
-                                         "': use a mesh in OBJ, STL, PLY or OFF format (.obj, .stl, .ply, .off).");
+    read = readOff(bytes, options);
   // Exporters may write a vertex per face or per normal: corners at one place are one vertex in every format, as in
   // STL, numbered in the order the faces first use them (the app's links hash that numbering, docs/formats.md).
   Vertices soup(3 * read.numTriangles(), 3);

@@ -14,7 +14,6 @@ function fail(code, message) {
 // solver's reader: (fileName, bytes, maxTriangles) -> { positions, indices }. What the reader leaves (coordinates that
 // are not numbers, collapsed triangles, too many of them) the target's validation reports.
 export function parseMesh(fileName, bytes, readMeshFile) {
-  if (bytes.byteLength === 0) fail('mesh.empty-file', `"${fileName}" is empty.`);
   if (bytes.byteLength > MAX_FILE_BYTES)
     fail('mesh.file-too-large', `"${fileName}" is larger than ${MAX_FILE_BYTES >> 20} MB, more than Billow can open.`);
   const { positions, indices } = readMeshFile(fileName, bytes, MAX_TRIANGLES);
