@@ -422,11 +422,8 @@ bool PatternOptimizer::solveEquilibrium(const Eigen::VectorXd& X, const Vertices
   timings_.equilibriumMs += nowMs() - t0;
   if (newton) *newton = solver.iterations();
   if (snapped && *snapped) return false;
-  if (solver.state() != InflateState::Converged || !solver.positions().allFinite()) {
-    x = solver.positions();  // where it stopped: a resettling may start there
-    return false;
-  }
-  x = solver.positions();
+  x = solver.positions();  // where it stopped when it did not settle: a resettling may start there
+  if (solver.state() != InflateState::Converged || !x.allFinite()) return false;
   align(X, x, limits.alignTolerance, limits.alignDecrease);
   return x.allFinite();
 }

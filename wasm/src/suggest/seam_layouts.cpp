@@ -980,19 +980,19 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
                    b = nearestPoint(loop, poles[1].point.position, d);
       for (int half = 0; half < 2; ++half) {
         // Pole to pole on either side of the loop, walked forward (a point keeps the face the walk crossed to reach
-        // it) and the second side's points turned round after; loop points within a quarter spacing of a pole left
-        // out, so no control point crowds it.
+        // it) and the second side's points turned round after; its end points within a quarter spacing of a pole left
+        // out (withoutEnds), so no control point crowds it.
         const Pole& from = poles[half];
         const Pole& to = poles[1 - half];
         const size_t n = loop.size(), start = half == 0 ? a : b, end = half == 0 ? b : a;
-        SectionLoop piece, side;
+        SectionLoop side;
         for (size_t j = 1; j < n; ++j) {
           const size_t k = (start + j) % n;
           if (k == end) break;
           side.push_back(loop[k]);
         }
-        piece = withoutEnds(side, from.point.position, to.point.position, 0.25 * spacing);
         if (!onThisSide(side)) continue;
+        const SectionLoop piece = withoutEnds(side, from.point.position, to.point.position, 0.25 * spacing);
         std::vector<SurfacePoint> controls{from.point.at};
         if (piece.size() >= 2)
           for (const SurfacePoint& p : sectionPathPoints(target, piece, spacing)) controls.push_back(p);
