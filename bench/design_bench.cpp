@@ -221,13 +221,13 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
       const OptimizeRecord& h = opt.history()[traced];
       std::fprintf(stderr,
                    "%s it %3d%s E %.6e (t %.2e c %.2e s %.2e l %.2e b %.2e L %.2e q %.2e g %.2e) rms %.3f%% max %.3f%% "
-                   "mismatch %.1e grad %.2e alpha %.3g newton %d %.0f ms%s%s%s%s%s\n",
+                   "mismatch %.1e grad %.2e alpha %.3g newton %d %.0f ms%s%s%s%s%s%s\n",
                    entry.at("name").get<std::string>().c_str(), h.iteration, h.projected ? "P" : " ", h.objective,
                    h.terms.target, h.terms.cover, h.terms.seam, h.terms.length, h.terms.smooth, h.terms.laplace,
                    h.terms.quality, h.terms.gap, 100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch, h.gradient,
                    h.stepLength, h.equilibriumIterations, h.ms, h.remeshed ? " remeshed" : "",
-                   h.resettled ? " resettled" : "", h.snapLimited ? " snap-limited" : "", h.restored ? " restored" : "",
-                   h.cutPanels ? " cut" : "");
+                   h.resettled ? " resettled" : "", h.snapLimited ? " snap-limited" : "",
+                   h.cutShort ? " cut-short" : "", h.restored ? " restored" : "", h.cutPanels ? " cut" : "");
     }
   };
   // The mesh of each remeshing (the coarse first phase's, then the design's; sliding seams remesh often), for the

@@ -96,7 +96,9 @@ TEST(StoppingRule, AResettledBranchHasHalfAWindowToComeBack) {
   EXPECT_EQ(readObjectiveWindow(h, 26, 12, 1e-3, h.back().objective), ObjectiveWindow::GoesOn);
 }
 
-// Steps that come after a snapped trial are held at a fold of the balloon's equilibria: longer ones cross it. A
+// Steps that come after a snapped trial are held at a fold of the balloon's equilibria: longer ones cross it, and
+// among them a step cut to a tenth of its direction's is held as well (the fish's last steps alternate between the
+// two; short steps alone are also a curved valley's). A
 // quarter window of such steps ends the run once they gain less than the window's rate (1 % over 20: 0.25 % over
 // 5); so does nothing else: a step that found no snap, a resettling or a faster gain keeps it going.
 TEST(StoppingRule, StepsHeldAtAFoldEndTheRunAtTheWindowsRate) {
@@ -115,6 +117,11 @@ TEST(StoppingRule, StepsHeldAtAFoldEndTheRunAtTheWindowsRate) {
   std::vector<OptimizeRecord> free = h;
   free[23].snapLimited = false;
   EXPECT_EQ(verdict(free), ObjectiveWindow::GoesOn) << "one of the five steps met no snap";
+  std::vector<OptimizeRecord> cut = free;
+  cut[23].cutShort = true;
+  EXPECT_EQ(verdict(cut), ObjectiveWindow::HeldAtFold) << "a step cut to a tenth of its direction's cannot grow either";
+  cut[21].snapLimited = cut[25].snapLimited = false, cut[21].cutShort = cut[25].cutShort = true;
+  EXPECT_EQ(verdict(cut), ObjectiveWindow::GoesOn) << "most of the five steps cut short, not after a snap: no fold";
   std::vector<OptimizeRecord> resettled = h;
   resettled[23].resettled = true;
   EXPECT_EQ(verdict(resettled), ObjectiveWindow::GoesOn) << "a resettling within the five";

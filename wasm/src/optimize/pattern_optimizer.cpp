@@ -958,6 +958,7 @@ bool PatternOptimizer::iterate() {
     unpackPattern(X_, pattern_);
     record(alpha, newton, false);
     history_.back().snapLimited = snapLimited, history_.back().predictedMove = predictedMove;
+    history_.back().cutShort = alpha <= 0.1 * firstAlpha;
     return true;
   }
   return false;

@@ -207,6 +207,10 @@ struct OptimizeRecord {
   // The line search came to this step after a trial snapped into another equilibrium: the balloon is at the
   // edge of a shape it can hold (a fold of its equilibria), which longer steps cross.
   bool snapLimited = false;
+  // The step taken is a tenth or less of the search direction's own (shortened by the hold on its growth or by
+  // the line search): like a snap-limited one, a step that cannot grow (the fish's last iterations alternate
+  // between the two).
+  bool cutShort = false;
   // The optimizer went back to its best iterate of this mesh at the end (not an L-BFGS step): resettlings had
   // left it at a worse equilibrium; or, before a second cut, to the earlier iterate whose cut panels did not snap.
   bool restored = false;

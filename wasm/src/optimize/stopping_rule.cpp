@@ -20,7 +20,7 @@ ObjectiveWindow readObjectiveWindow(const std::vector<OptimizeRecord>& history, 
   // window's start, and around the last resettled branch the best since it and the best before it. The final
   // seam-length projection is no iterate.
   double before = INFINITY, best = INFINITY, bestBefore = INFINITY, bestSince = INFINITY, beforeHeld = INFINITY;
-  int resettledAt = -1, held = 0;
+  int resettledAt = -1, held = 0, snapped = 0;
   bool holding = true;
   // Five steps at least: the coarse phase's window is 10, and two held steps ended it on paths that cost more.
   const int heldWindow = std::max(5, window / 4);
@@ -31,8 +31,8 @@ ObjectiveWindow readObjectiveWindow(const std::vector<OptimizeRecord>& history, 
       if (r.iteration <= iteration - window) before = std::min(before, r.objective);
       if (r.iteration <= iteration - heldWindow) beforeHeld = std::min(beforeHeld, r.objective);
       if (holding && r.iteration > iteration - heldWindow) {
-        holding = r.snapLimited && !r.resettled && !r.remeshed;
-        held += holding;
+        holding = (r.snapLimited || r.cutShort) && !r.resettled && !r.remeshed;
+        held += holding, snapped += holding && r.snapLimited;
       }
     }
     if (r.remeshed) break;
@@ -45,7 +45,9 @@ ObjectiveWindow readObjectiveWindow(const std::vector<OptimizeRecord>& history, 
       bestSince = std::min(bestSince, r.objective);
   }
   if (std::isfinite(before) && before - best < decrease * std::abs(E)) return ObjectiveWindow::NoDecrease;
-  if (held == heldWindow && std::isfinite(beforeHeld) &&
+  // Most of them after a snap: short steps alone are also L-BFGS in a curved valley (sphere3's iterations 51-57 at
+  // alpha 0.002-0.04, then 0.5-11 again), no fold.
+  if (held == heldWindow && 2 * snapped > heldWindow && std::isfinite(beforeHeld) &&
       beforeHeld - best < decrease * heldWindow / window * std::abs(E))
     return ObjectiveWindow::HeldAtFold;
   // A resettling may raise the objective and the steps after it bring it down again; the branches that pay come

@@ -8,7 +8,7 @@ namespace billow {
 
 // The app's rule, over `options`: stop once no inflated vertex moved by 0.2 % of the model size over 20
 // iterations, or the objective fell by less than 1 % over 20 iterations (or 0.25 % over five steps that each came
-// after a trial that snapped: HeldAtFold below), or after 150 iterations (300 when
+// after a trial that snapped or were cut short: HeldAtFold below), or after 150 iterations (300 when
 // seams slide: OptimizeSliding::iterationFactor, as they keep visibly improving the shape for longer).
 OptimizeOptions appStoppingRule(OptimizeOptions options = {});
 
@@ -17,9 +17,10 @@ OptimizeOptions appStoppingRule(OptimizeOptions options = {});
 // - NoDecrease: the best objective fell by less than decrease x |E| (only new bests count, so snapping back and
 //   forth between two equilibria ends the run too; never across a remeshing, the objective of another mesh);
 // - SnapsAway: the last resettled branch has not come below the best iterate before it within half a window;
-// - HeldAtFold: each of the last quarter window's steps (at least five) came after a trial that snapped, and the
-//   best objective fell by less than their share of `decrease` over them: NoDecrease's rate, on steps that
-//   cannot grow, since longer ones cross the fold.
+// - HeldAtFold: each of the last quarter window's steps (at least five) came after a trial that snapped or was cut
+//   to a tenth of its direction's (OptimizeRecord::cutShort), most of them after a snap, and the best objective
+//   fell by less than their share of `decrease` over them: NoDecrease's rate, on steps that cannot grow, since
+//   longer ones cross the fold.
 enum class ObjectiveWindow { GoesOn, NoDecrease, SnapsAway, HeldAtFold };
 ObjectiveWindow readObjectiveWindow(const std::vector<OptimizeRecord>& history, int iteration, int window,
                                     double decrease, double E);
