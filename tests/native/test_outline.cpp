@@ -2,7 +2,10 @@
 // layouts made along it (suggest/seam_layouts.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include "cube_fixture.hpp"
+#include "handle_shapes.hpp"
 #include "pattern/design_scene.hpp"
 #include "seams/outline.hpp"
 #include "suggest/seam_layouts.hpp"
@@ -194,3 +197,37 @@ TEST(SeamLayouts, ALayoutEndingWithTheSeamsOfOneBeforeItIsNotShownAgain) {
 
 }  // namespace
 }  // namespace billow
+
+// A slab with two holes seen from its edge: the view looks through neither, so the outline alone leaves the front and
+// the back holding the handles, not panels. openIntoPanels (what the app's Outline tool adds on a shape with handles)
+// keeps the outline seam as it was and adds the seams that make every part a panel.
+TEST(Outline, ASlabWithTwoHandlesSeenFromItsEdgeIsOpenedIntoPanels) {
+  const auto scene = test::sceneOf(test::twoHoledSlab());
+  const std::optional<Outline> outline = outlineSeenFrom(scene->target, Eigen::Vector3d::UnitY());
+  ASSERT_TRUE(outline.has_value());
+  EXPECT_TRUE(outline->holes.empty()) << "the holes are not seen from the edge";
+  DesignSeam seam;
+  seam.closed = true;
+  for (const SurfacePoint& p : sectionSeamPoints(scene->target, outline->loop, 0.02, true))
+    seam.points.push_back(DesignPoint{true, p, Eigen::Vector3d::Zero()});
+  scene->design.seams = {seam};
+  traceDesignSeams(*scene);
+  segmentDesignScene(*scene);
+  const auto notPanel = [](const Segmentation& s) {
+    return std::count_if(s.segments.begin(), s.segments.end(), [](const Segment& g) { return !g.isDisk; });
+  };
+  ASSERT_GT(notPanel(scene->segmentation), 0) << "the outline alone leaves a part that is not a panel";
+
+  const LayoutEvaluation opened = openIntoPanels(*scene, {seam}, {}, 1000);
+  ASSERT_TRUE(opened.ok) << opened.problem;
+  ASSERT_GT(opened.seams.size(), 1u);
+  ASSERT_EQ(opened.seams[0].points.size(), seam.points.size()) << "the designer's seam stays as it was";
+  for (size_t k = 0; k < seam.points.size(); ++k) {
+    EXPECT_EQ(opened.seams[0].points[k].surface.face, seam.points[k].surface.face);
+    EXPECT_EQ(opened.seams[0].points[k].surface.bary, seam.points[k].surface.bary);
+  }
+  EXPECT_FALSE(opened.description().empty());
+  EXPECT_EQ(notPanel(scene->segmentation), 0);
+  EXPECT_TRUE(scene->segmentation.problems.empty());
+  EXPECT_GE(scene->segmentation.segments.size(), 2u);
+}

@@ -9,6 +9,7 @@ import { SHARED_MESHES, loadSharedMesh } from './obj.mjs';
 import { handlers, run } from './worker-handlers.mjs';
 import { outlineLoop, planeSection, sectionSeamPoints, sectionThrough, acrossHandles, splitInTwo, vertexAreas, projectedArea, straighterView } from '../../web/src/app/section.js';
 import { positionOf } from '../../web/src/app/symmetry.js';
+import { implicitMesh } from './implicit-mesh.mjs';
 
 const MESHES = SHARED_MESHES;
 const load = loadSharedMesh;
@@ -274,4 +275,37 @@ test('the Outline tool and the suggested front-and-back layouts lay the same out
     }
   }
   assert.ok(compared >= 9, `${compared} outlines compared`);
+});
+
+// A mug: a rounded body with a handle at its side (a ring in the x-y plane), one closed surface of genus 1.
+function mug(n = 36) {
+  const body = (x, y, z) => Math.hypot(x / 0.6, y, z / 0.6) - 1;
+  const handle = (x, y, z) => Math.hypot(Math.hypot(x - 0.75, y) - 0.45, z) - 0.14;
+  const blend = (a, b, k = 0.08) => Math.min(a, b) - (Math.max(k - Math.abs(a - b), 0) / k) ** 2 * (k / 4);
+  return implicitMesh((x, y, z) => blend(body(x, y, z), handle(x, y, z)), -1.35, 1.35, n);
+}
+
+test('a mug seen with its handle towards the viewer: the seams that make every part a panel join the outline, which stays as it was', () => {
+  const mesh = mug();
+  const { report } = run(handlers.setTarget({ positions: mesh.positions, indices: mesh.indices }));
+  assert.equal(report.stats.genus, 1);
+  const towards = [1, 0, 0];
+  const outline = outlineLoop(mesh, towards);
+  assert.equal(outline.holes.length, 0, 'the view does not look through the handle');
+  const seams = [{ closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, outline.loop, { corners: true }) }];
+  const alone = run(handlers.checkSeams({ seams }));
+  assert.ok(alone.segments.some((s) => !s.isDisk), 'the outline alone leaves the handle in a part that is not a panel');
+  const opened = run(handlers.openIntoPanels({ seams, connections: [], scale: 0.3, triangles: 1000 }));
+  assert.ok(opened.ok, opened.problem);
+  assert.ok(opened.seams.length > 1, 'seams were added');
+  // The outline seam as it was laid (to the last digits a round trip through the design reader keeps).
+  assert.equal(opened.seams[0].points.length, seams[0].points.length);
+  for (const [k, p] of seams[0].points.entries()) {
+    assert.equal(opened.seams[0].points[k].face, p.face);
+    assert.ok(p.bary.every((b, c) => Math.abs(b - opened.seams[0].points[k].bary[c]) < 1e-12));
+  }
+  assert.match(opened.description, /tube|handle/);
+  const result = run(handlers.checkSeams({ seams: opened.seams }));
+  assert.ok(result.segments.length >= 2 && result.segments.every((s) => s.isDisk), 'every part a panel');
+  assert.deepEqual(result.problems.filter((p) => p.severity === 'error').map((p) => p.message), []);
 });

@@ -76,6 +76,8 @@
 //   t.suggestOptimize(index, seamsJson, connectionsJson) -> the same for the layout with the seams and connections
 //     its look ended with (from any session: several workers share a suggestion), optimized at the options'
 //     resolution
+//   t.openIntoPanels(seamsJson, optionsJson)  options: buildPattern's -> { ok, problem, description (what was added,
+//     suggestLook's words), seams (the given ones first, as they were, then those that make every part a panel) }
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -489,6 +491,24 @@ class TargetSession {
     });
   }
 
+  // The seams with those that make every segment a panel where they leave one that is not (suggest/seam_layouts.hpp
+  // openIntoPanels) -> { ok, problem, description, seams: the given ones first, as they were, then those added }.
+  std::string openIntoPanels(const std::string& seamsJson, const std::string& optionsJson) {
+    return guarded([&] {
+      PatternRequest request = readPatternRequest(seamsJson, optionsJson);
+      billow::Design design = std::move(request.design);
+      design.scale = request.scale;
+      const std::vector<billow::DesignSeam> seams = std::move(design.seams);
+      const std::vector<billow::DesignConnection> connections = std::move(design.connections);
+      design.seams.clear(), design.connections.clear();
+      const std::unique_ptr<billow::DesignScene> scene = billow::makeTargetScene(design, mesh_);
+      const billow::LayoutEvaluation e = billow::openIntoPanels(*scene, seams, connections, request.triangles);
+      json laid = json::array();
+      for (const billow::DesignSeam& seam : e.seams) laid.push_back(billow::designSeamJson(seam));
+      return json({{"ok", e.ok}, {"problem", e.problem}, {"description", e.description()}, {"seams", laid}}).dump();
+    });
+  }
+
   int cutVertices() const { return static_cast<int>(cut_.V.rows()); }
   int cutTriangles() const { return static_cast<int>(cut_.F.rows()); }
   uintptr_t cutPositionsPtr() const { return reinterpret_cast<uintptr_t>(cut_.V.data()); }
@@ -702,5 +722,6 @@ EMSCRIPTEN_BINDINGS(billow_target) {
       .function("suggestPrepare", &TargetSession::suggestPrepare)
       .function("suggestStart", &TargetSession::suggestStart)
       .function("suggestLook", &TargetSession::suggestLook)
-      .function("suggestOptimize", &TargetSession::suggestOptimize);
+      .function("suggestOptimize", &TargetSession::suggestOptimize)
+      .function("openIntoPanels", &TargetSession::openIntoPanels);
 }

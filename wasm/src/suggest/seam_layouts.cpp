@@ -1286,6 +1286,17 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
   return out;
 }
 
+}  // namespace
+
+LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams,
+                                const std::vector<DesignConnection>& connections, int triangles) {
+  EvaluateOptions options;
+  options.triangles = triangles;
+  return layLayout(scene, seams, int(seams.size()), options, connections);
+}
+
+namespace {
+
 // The panels of the layout on the scene layLayout left; a segment that would overlap itself when laid flat gets a cut
 // across it where its outline crosses itself, as the builder's message advises, and the layout is laid again (in
 // options.openingRounds rounds, to at most `panelsAtMost` panels). Empty, with out.problem, where they cannot be made.

@@ -178,6 +178,12 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
                                 const EvaluateOptions& options = {},
                                 const std::vector<DesignConnection>& connections = {});
 
+// The designer's `seams` (kept as they are) with those that make every segment a panel where they leave one that is
+// not: evaluateLayout's opening (cuts that open a tube, seams around a handle, ...), what the Outline tool adds on a
+// shape with a handle its view does not look through. Ok when every segment is then a panel; else the first problem.
+LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams,
+                                const std::vector<DesignConnection>& connections, int triangles);
+
 // A first look at a proposal (evaluateLayout without an iteration): its seams laid after the designer's `kept`. Not
 // ok, and why, where it cannot be laid (suggest.no-poles), makes more than `panelsAtMost` panels, or ends with the
 // same seams as a layout `looked` at before (two proposals can, once the loops that only grazed the shape are gone).

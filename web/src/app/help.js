@@ -6,7 +6,7 @@ export const SHORTCUTS = [
   ['9', 'Turn the view to the opposite side'],
   ['D', 'Draw seams: click points on the target; click the first point to close a loop'],
   ['S', 'Section seam: click the target for a seam all around it where a plane through that point cuts it; with a Band width, two seams with a gusset strip between them'],
-  ['O', 'Outline seam: a seam around the shape as seen from here, for a front and a back panel'],
+  ['O', 'Outline seam: a seam around the shape as seen from here, for a front and a back panel (on a shape with handles, with the seams that make every part a panel)'],
   ['E', 'Edit seams: drag control points; double-click a seam to add a point'],
   ['Enter', 'Finish the seam being drawn (or the Finish button, for touch)'],
   ['Esc', 'Cancel the seam being drawn; back to View'],

@@ -5,7 +5,8 @@
 import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
 import { upOf } from './up-axis.js';
-import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf } from './symmetry.js';
+import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf, attachSeamEnds } from './symmetry.js';
+import { optimizeArgs } from './stored-result.js';
 import { sectionSeamPoints } from './section.js';
 import { BAND_PARTS, bandLoops, bandSeamPoints } from './band.js';
 
@@ -193,7 +194,16 @@ export class SeamEditor {
   // across: a point near which a seam runs across from the first loop to the second (a gusset band's strip is a
   // tube until a seam opens it), joined to both. band: the band's record without id and part (band.js), kept on
   // its seams so it can be laid again at another width.
-  commitLoops(loops, { names = [], note = null, across = null, band = null } = {}) {
+  commitLoops(loops, { note = null, ...laying } = {}) {
+    const next = this.withLoops(loops, laying);
+    this.app.commitDesign(next);
+    this.selection = { seam: next.seams.length - 1, index: null };
+    this.refresh();
+    this.noteLaid(note);
+  }
+
+  // commitLoops' design, not yet committed.
+  withLoops(loops, { names = [], across = null, band = null } = {}) {
     const target = this.app.target;
     let next = this.design;
     const id = band && cmd.nextBandId(next);
@@ -209,10 +219,40 @@ export class SeamEditor {
       laid.push(next.seams.length - 1);
     }
     if (this.plane) for (const index of laid) next = addMirroredTwin(next, target, this.plane, index);
+    return next;
+  }
+
+  // Loops laid in one action on a shape with handles, where their parts may not all be panels (the Outline seen past
+  // a handle its view does not look through leaves a front that is a ring or holds the handle): committed with the
+  // seams that make every part a panel, in the same step of the history (the suggested layouts' rule,
+  // Op.openIntoPanels), which the note names. Where even those do not, the loops alone: the parts' messages say
+  // what is left to do. Nothing is laid where the design changed meanwhile.
+  async commitLoopsOpened(loops, { note = null, ...laying } = {}) {
+    const before = this.design;
+    let next = this.withLoops(loops, laying);
+    const laidCount = next.seams.length;
+    let added = '';
+    const status = this.app.store.status, adding = 'Adding the seams that make every part a panel…';
+    this.app.setStatus(adding);
+    try {
+      const { seams, ...physics } = optimizeArgs(next, this.app.resolution);
+      const opened = await this.app.client.request(Op.openIntoPanels, { seams, ...physics, scale: this.app.scaleFor(next), up: upOf(next) });
+      if (opened.ok && opened.seams.length > laidCount) {
+        const more = opened.seams.slice(laidCount).map((seam) => ({ ...seam, name: seam.name ? seam.name[0].toUpperCase() + seam.name.slice(1) : seam.name }));
+        next = attachSeamEnds({ ...next, seams: [...next.seams, ...more] }, this.app.target, laidCount);
+        added = opened.description;
+      }
+    } catch {
+      // the loops alone: the segmentation says which parts are not panels yet
+    } finally {
+      if (this.app.store.status === adding) this.app.setStatus(status);
+    }
+    if (this.design !== before) return this.noteLaid('Nothing was laid: the design changed while the seams were made. Lay them again.', 'warning');
     this.app.commitDesign(next);
     this.selection = { seam: next.seams.length - 1, index: null };
     this.refresh();
-    this.noteLaid(note);
+    const also = added && `added so that every part is a panel: ${added}`;
+    this.noteLaid(note && also ? note.replace(/\.$/, `; ${also}.`) : note ?? (also && `Seams ${also}.`));
   }
 
   // The gusset band seam i belongs to (band.js; its own record, or its mirror twin's), with both its sides still

@@ -250,7 +250,11 @@ export class SeamTool {
     else if (holes) notes.push(`the shape has a handle, so the outline makes ${holes + 1} loops: the longest was laid; a section seam across the handle opens it`);
     const loops = opened ? [outline.loop, ...outline.holes, ...across] : [outline.loop];
     const names = opened ? ['Outline', ...outline.holes.map((_, k) => `Outline, hole ${k + 1}`), ...across.map((_, k) => `Across the ring ${k + 1}`)] : [];
-    this.app.commitLoops(loops, { names, note: notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null });
+    const note = notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null;
+    // On a shape with handles the front or the back may still be a ring, or hold a handle this view does not look
+    // through (a statue's arm joined to its body): the seams that open them come with the outline.
+    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(loops, { names, note });
+    this.app.commitLoops(loops, { names, note });
   }
 
   // The note's clause naming a straight view (front, side, top) that leaves less than half the largest part `largest`

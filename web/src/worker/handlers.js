@@ -126,6 +126,11 @@ export function createHandlers(api) {
     *[Op.checkSeams]({ seams, up }) {
       return requireSession().checkSeams(seams, { up });
     },
+    // { seams, connections, scale, triangles, up } -> the seams with those that make every part a panel.
+    *[Op.openIntoPanels]({ seams, ...options }) {
+      yield { stage: 'adding the seams that make every part a panel' };
+      return requireSession().openIntoPanels(seams, options);
+    },
     // { seams, scale, triangles, pressure, material } -> { ok, patternText, figures, problems }
     *[Op.buildPattern]({ seams, triangles = 3000, ...physics }) {
       yield { stage: 'flattening the segments into panels' };

@@ -50,6 +50,10 @@ export const Op = Object.freeze({
   // { looks: [{ lookRank, family }], optimize, ofOneFamily } -> [index into looks]: which of the looks (all workers')
   // to optimize, the best ranked first, at most ofOneFamily of one family, `optimize` in all.
   chooseLooks: 'chooseLooks',
+  // { seams, connections, scale, triangles, up } -> { ok, problem, description, seams }: the seams with those that
+  // make every part a panel where they leave one that is not (cuts that open a tube, seams around a handle: the
+  // suggested layouts' rule), the given ones first, as they were; ok when every part is then a panel.
+  openIntoPanels: 'openIntoPanels',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
   // { patternText, options } -> inflated result (Inflation.snapshot in solver-api.js); stepped, with
@@ -74,7 +78,7 @@ export const Op = Object.freeze({
 // Quick operations that only read the worker's state: they run at once, even between the steps of a
 // long operation, so drawing stays responsive while the panels inflate, and a new sheet width or allowance
 // is drawn while the live optimization runs (the cut lines of a pattern take tens of milliseconds).
-export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.distanceToTarget, Op.exportPattern, Op.materialPresets, Op.memoryStats, Op.mirrorSymmetry, Op.chooseLooks]);
+export const IMMEDIATE_OPS = new Set([Op.traceSeam, Op.segment, Op.checkSeams, Op.openIntoPanels, Op.distanceToTarget, Op.exportPattern, Op.materialPresets, Op.memoryStats, Op.mirrorSymmetry, Op.chooseLooks]);
 
 // Requests whose effect is part of the worker's state and must be replayed into a fresh worker.
 export const REPLAYED_OPS = new Set([Op.setTarget]);

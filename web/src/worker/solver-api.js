@@ -350,6 +350,11 @@ export class TargetSession {
     return SolverApi.unwrap(this.session.suggestOptimize(index, JSON.stringify(seams), JSON.stringify(connections)));
   }
 
+  // The seams with those that make every part a panel (TargetSession.openIntoPanels); options as buildPattern's.
+  openIntoPanels(seams, options) {
+    return SolverApi.unwrap(this.session.openIntoPanels(JSON.stringify(seams), JSON.stringify(options)));
+  }
+
   delete() {
     this.session.delete();
   }
