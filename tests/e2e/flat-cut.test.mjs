@@ -239,7 +239,7 @@ test('the outline of a mug seen with its handle towards the viewer comes with th
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
   const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
   await note.waitFor({ timeout: 10000 });
-  assert.match(await note.textContent(), /added so that every part is a panel: .*(tube|handle)/);
+  assert.match(await note.textContent(), /to make every part a panel: .*(tube|handle)/);
   await screenshot(page, 'flat-cut-outline-mug');
   // One step of the history: undo takes the outline and what opened its parts away together.
   await page.click('#undo-button');

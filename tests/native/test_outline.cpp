@@ -218,7 +218,7 @@ TEST(Outline, ASlabWithTwoHandlesSeenFromItsEdgeIsOpenedIntoPanels) {
   };
   ASSERT_GT(notPanel(scene->segmentation), 0) << "the outline alone leaves a part that is not a panel";
 
-  const LayoutEvaluation opened = openIntoPanels(*scene, {seam}, {}, 1000);
+  const LayoutEvaluation opened = openIntoPanels(*scene, {seam}, 1, {}, 1000);
   ASSERT_TRUE(opened.ok) << opened.problem;
   ASSERT_GT(opened.seams.size(), 1u);
   ASSERT_EQ(opened.seams[0].points.size(), seam.points.size()) << "the designer's seam stays as it was";

@@ -76,8 +76,9 @@
 //   t.suggestOptimize(index, seamsJson, connectionsJson) -> the same for the layout with the seams and connections
 //     its look ended with (from any session: several workers share a suggestion), optimized at the options'
 //     resolution
-//   t.openIntoPanels(seamsJson, optionsJson)  options: buildPattern's -> { ok, problem, description (what was added,
-//     suggestLook's words), seams (the given ones first, as they were, then those that make every part a panel) }
+//   t.openIntoPanels(seamsJson, optionsJson)  options: buildPattern's and fixed (how many of the seams, first, stay as
+//     they are; all where not given) -> { ok, problem, description (what was added or left out, suggestLook's words),
+//     seams (the fixed ones first, as they were, then the others as mended and those that make every part a panel) }
 #include <emscripten/bind.h>
 
 #include <algorithm>
@@ -492,7 +493,8 @@ class TargetSession {
   }
 
   // The seams with those that make every segment a panel where they leave one that is not (suggest/seam_layouts.hpp
-  // openIntoPanels) -> { ok, problem, description, seams: the given ones first, as they were, then those added }.
+  // openIntoPanels), the first `fixed` (options; all where not given) as they were -> { ok, problem, description,
+  // seams }.
   std::string openIntoPanels(const std::string& seamsJson, const std::string& optionsJson) {
     return guarded([&] {
       PatternRequest request = readPatternRequest(seamsJson, optionsJson);
@@ -501,8 +503,12 @@ class TargetSession {
       const std::vector<billow::DesignSeam> seams = std::move(design.seams);
       const std::vector<billow::DesignConnection> connections = std::move(design.connections);
       design.seams.clear(), design.connections.clear();
+      const json o = parse(optionsJson);
+      const int fixed = o.contains("fixed") && o["fixed"].is_number_integer()
+                            ? std::clamp(o["fixed"].get<int>(), 0, int(seams.size()))
+                            : int(seams.size());
       const std::unique_ptr<billow::DesignScene> scene = billow::makeTargetScene(design, mesh_);
-      const billow::LayoutEvaluation e = billow::openIntoPanels(*scene, seams, connections, request.triangles);
+      const billow::LayoutEvaluation e = billow::openIntoPanels(*scene, seams, fixed, connections, request.triangles);
       json laid = json::array();
       for (const billow::DesignSeam& seam : e.seams) laid.push_back(billow::designSeamJson(seam));
       return json({{"ok", e.ok}, {"problem", e.problem}, {"description", e.description()}, {"seams", laid}}).dump();

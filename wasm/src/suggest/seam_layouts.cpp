@@ -1288,11 +1288,11 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
 
 }  // namespace
 
-LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams,
+LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
                                 const std::vector<DesignConnection>& connections, int triangles) {
   EvaluateOptions options;
   options.triangles = triangles;
-  return layLayout(scene, seams, int(seams.size()), options, connections);
+  return layLayout(scene, seams, fixedSeams, options, connections);
 }
 
 namespace {

@@ -178,10 +178,11 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
                                 const EvaluateOptions& options = {},
                                 const std::vector<DesignConnection>& connections = {});
 
-// The designer's `seams` (kept as they are) with those that make every segment a panel where they leave one that is
-// not: evaluateLayout's opening (cuts that open a tube, seams around a handle, ...), what the Outline tool adds on a
-// shape with a handle its view does not look through. Ok when every segment is then a panel; else the first problem.
-LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams,
+// `seams` with those that make every segment a panel where they leave one that is not: evaluateLayout's opening (cuts
+// that open a tube, seams around a handle, ...; a seam that crosses itself mended, a loop that only grazes the shape
+// left out), what the Outline tool adds on a shape with handles. The first `fixedSeams` (the designer's) stay as they
+// are. Ok when every segment is then a panel; else the first problem.
+LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
                                 const std::vector<DesignConnection>& connections, int triangles);
 
 // A first look at a proposal (evaluateLayout without an iteration): its seams laid after the designer's `kept`. Not

@@ -225,22 +225,24 @@ export class SeamEditor {
   // Loops laid in one action on a shape with handles, where their parts may not all be panels (the Outline seen past
   // a handle its view does not look through leaves a front that is a ring or holds the handle): committed with the
   // seams that make every part a panel, in the same step of the history (the suggested layouts' rule,
-  // Op.openIntoPanels), which the note names. Where even those do not, the loops alone: the parts' messages say
-  // what is left to do. Nothing is laid where the design changed meanwhile.
+  // Op.openIntoPanels), which the note names. The designer's seams and the first loop (the outline's rim) stay as they
+  // are; the other loops may be mended (a loop that only grazes the shape left out, one that crosses itself undone),
+  // unless mirror twins link seams by their indices. Where even that makes no panels, the loops alone: the parts'
+  // messages say what is left.
   async commitLoopsOpened(loops, { note = null, ...laying } = {}) {
     const before = this.design;
     let next = this.withLoops(loops, laying);
-    const laidCount = next.seams.length;
-    let added = '';
+    const fixed = this.plane ? next.seams.length : before.seams.length + 1;
+    let opening = '';
     const status = this.app.store.status, adding = 'Adding the seams that make every part a panel…';
     this.app.setStatus(adding);
     try {
       const { seams, ...physics } = optimizeArgs(next, this.app.resolution);
-      const opened = await this.app.client.request(Op.openIntoPanels, { seams, ...physics, scale: this.app.scaleFor(next), up: upOf(next) });
-      if (opened.ok && opened.seams.length > laidCount) {
-        const more = opened.seams.slice(laidCount).map((seam) => ({ ...seam, name: seam.name ? seam.name[0].toUpperCase() + seam.name.slice(1) : seam.name }));
-        next = attachSeamEnds({ ...next, seams: [...next.seams, ...more] }, this.app.target, laidCount);
-        added = opened.description;
+      const opened = await this.app.client.request(Op.openIntoPanels, { seams, ...physics, fixed, scale: this.app.scaleFor(next), up: upOf(next) });
+      if (opened.ok && opened.description) {
+        const named = (seam) => ({ ...seam, name: seam.name ? seam.name[0].toUpperCase() + seam.name.slice(1) : undefined });
+        next = attachSeamEnds({ ...next, seams: [...next.seams.slice(0, fixed), ...opened.seams.slice(fixed).map(named)] }, this.app.target, fixed);
+        opening = opened.description;
       }
     } catch {
       // the loops alone: the segmentation says which parts are not panels yet
@@ -251,8 +253,8 @@ export class SeamEditor {
     this.app.commitDesign(next);
     this.selection = { seam: next.seams.length - 1, index: null };
     this.refresh();
-    const also = added && `added so that every part is a panel: ${added}`;
-    this.noteLaid(note && also ? note.replace(/\.$/, `; ${also}.`) : note ?? (also && `Seams ${also}.`));
+    const also = opening && `to make every part a panel: ${opening}`;
+    this.noteLaid(note && also ? note.replace(/\.$/, `; ${also}.`) : note ?? (also && `Seams laid ${also}.`));
   }
 
   // The gusset band seam i belongs to (band.js; its own record, or its mirror twin's), with both its sides still

@@ -126,7 +126,7 @@ export function createHandlers(api) {
     *[Op.checkSeams]({ seams, up }) {
       return requireSession().checkSeams(seams, { up });
     },
-    // { seams, connections, scale, triangles, up } -> the seams with those that make every part a panel.
+    // { seams, connections, fixed, scale, triangles, up } -> the seams with those that make every part a panel.
     *[Op.openIntoPanels]({ seams, ...options }) {
       yield { stage: 'adding the seams that make every part a panel' };
       return requireSession().openIntoPanels(seams, options);

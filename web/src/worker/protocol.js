@@ -50,9 +50,10 @@ export const Op = Object.freeze({
   // { looks: [{ lookRank, family }], optimize, ofOneFamily } -> [index into looks]: which of the looks (all workers')
   // to optimize, the best ranked first, at most ofOneFamily of one family, `optimize` in all.
   chooseLooks: 'chooseLooks',
-  // { seams, connections, scale, triangles, up } -> { ok, problem, description, seams }: the seams with those that
-  // make every part a panel where they leave one that is not (cuts that open a tube, seams around a handle: the
-  // suggested layouts' rule), the given ones first, as they were; ok when every part is then a panel.
+  // { seams, connections, fixed, scale, triangles, up } -> { ok, problem, description, seams }: the seams with those
+  // that make every part a panel where they leave one that is not (cuts that open a tube, seams around a handle: the
+  // suggested layouts' rule), the first `fixed` (all where not given) as they were, the others as mended (a loop
+  // that only grazes the shape left out); ok when every part is then a panel.
   openIntoPanels: 'openIntoPanels',
   // Traps the wasm module on purpose (tests of crash recovery).
   crashForTesting: 'crashForTesting',
