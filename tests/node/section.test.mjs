@@ -309,3 +309,26 @@ test('a mug seen with its handle towards the viewer: the seams that make every p
   assert.ok(result.segments.length >= 2 && result.segments.every((s) => s.isDisk), 'every part a panel');
   assert.deepEqual(result.problems.filter((p) => p.severity === 'error').map((p) => p.message), []);
 });
+
+test('a loop laid with the outline that crosses itself is left out, and the rest makes panels; the outline stays', () => {
+  const mesh = mug();
+  run(handlers.setTarget({ positions: mesh.positions, indices: mesh.indices }));
+  const outline = outlineLoop(mesh, [1, 0, 0]);
+  const rim = { closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, outline.loop, { corners: true }) };
+  // A figure eight on the body's back, its turns all wide (a lemniscate): no hairpin to take out, it crosses itself.
+  const eight = Array.from({ length: 24 }, (_, k) => {
+    const t = (2 * Math.PI * k) / 24, d = 1 + Math.sin(t) ** 2;
+    const y = (0.7 * Math.cos(t)) / d, z = (0.7 * Math.sin(t) * Math.cos(t)) / d;
+    return [-0.6 * Math.sqrt(Math.max(0, 1 - y * y - (z / 0.6) ** 2)), y, z];
+  });
+  const seams = [rim, { closed: true, smooth: false, weight: 1, points: eight }];
+  const laid = run(handlers.checkSeams({ seams }));
+  assert.ok(laid.problems.some((p) => p.code === 'seam.self-crossing' && p.seam === 1), 'the figure eight crosses itself as laid');
+  const opened = run(handlers.openIntoPanels({ seams, connections: [], fixed: 1, scale: 0.3, triangles: 1000 }));
+  assert.ok(opened.ok, opened.problem);
+  assert.match(opened.description, /1 loop left out that crossed itself/);
+  assert.equal(opened.seams[0].points.length, rim.points.length, 'the outline stays');
+  const result = run(handlers.checkSeams({ seams: opened.seams }));
+  assert.ok(result.segments.length >= 2 && result.segments.every((s) => s.isDisk), 'every part a panel');
+  assert.deepEqual(result.problems.filter((p) => p.severity === 'error').map((p) => p.message), []);
+});

@@ -175,6 +175,7 @@ std::string LayoutEvaluation::description() const {
       "cuts across panels that would overlap themselves when laid flat");
   add(opened.grazingLoops, "loop left out where it only grazed the shape",
       "loops left out where they only grazed the shape");
+  add(opened.crossingLoops, "loop left out that crossed itself", "loops left out that crossed themselves");
   add(int(connections.size()), "internal connection joining a band seam's front and back pieces inside",
       "internal connections joining the band seams' front and back pieces inside");
   return out;
@@ -1292,7 +1293,47 @@ LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam
                                 const std::vector<DesignConnection>& connections, int triangles) {
   EvaluateOptions options;
   options.triangles = triangles;
-  return layLayout(scene, seams, fixedSeams, options, connections);
+  LayoutEvaluation out = layLayout(scene, seams, fixedSeams, options, connections);
+  // Closed seams of the laid ones that still cross themselves once their hairpins are taken out (a hole's rim traced
+  // round a tight turn) are left out, and the rest laid and opened again from the start, so that no cut ends on them.
+  std::vector<DesignSeam> current = seams;
+  std::vector<DesignConnection> joined = connections;
+  int leftOut = 0;
+  for (int round = 0; !out.ok && round < 2; ++round) {
+    std::vector<int> crossing;
+    try {
+      scene.design.seams = current, scene.design.connections = joined;
+      traceDesignSeams(scene);
+      segmentDesignScene(scene);
+      if (unfoldCrossingSeams(scene, fixedSeams, current) > 0) {
+        scene.design.seams = current;
+        traceDesignSeams(scene);
+        segmentDesignScene(scene);
+      }
+    } catch (const Error&) {
+      break;
+    }
+    for (const SegmentationProblem& p : scene.segmentation.problems)
+      if (p.code == "seam.self-crossing" && p.seam >= fixedSeams && p.seam < int(current.size()) &&
+          current[size_t(p.seam)].closed && std::find(crossing.begin(), crossing.end(), p.seam) == crossing.end())
+        crossing.push_back(p.seam);
+    if (crossing.empty()) break;
+    std::sort(crossing.rbegin(), crossing.rend());
+    for (int seam : crossing) {
+      current.erase(current.begin() + seam);
+      std::vector<DesignConnection> kept;
+      for (DesignConnection& c : joined) {
+        if (std::find(c.seams.begin(), c.seams.end(), seam) != c.seams.end()) continue;
+        for (int& k : c.seams) k -= k > seam;
+        kept.push_back(std::move(c));
+      }
+      joined = std::move(kept);
+    }
+    leftOut += int(crossing.size());
+    out = layLayout(scene, current, fixedSeams, options, joined);
+  }
+  out.opened.crossingLoops += leftOut;
+  return out;
 }
 
 namespace {

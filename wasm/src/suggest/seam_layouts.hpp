@@ -114,15 +114,17 @@ struct LayoutBalloon {
 
 // What was done to a layout's sections so that every segment is a panel (evaluateLayout), for its description.
 struct LayoutOpenings {
-  int tubeCuts = 0;      // cuts that open a tube or a holed part
-  int limbSeams = 0;     // sections across a part too big for its seam, around a limb
-  int limbEndCuts = 0;   // cuts along a part too big for its seam, through its tip (a limb's end)
-  int handleSeams = 0;   // closed seams around a handle of a part
-  int grazingLoops = 0;  // loops of its own left out, that only grazed the shape (a tiny or thin part)
-  int acrossCuts = 0;    // cuts across a part that would overlap itself when laid flat
+  int tubeCuts = 0;       // cuts that open a tube or a holed part
+  int limbSeams = 0;      // sections across a part too big for its seam, around a limb
+  int limbEndCuts = 0;    // cuts along a part too big for its seam, through its tip (a limb's end)
+  int handleSeams = 0;    // closed seams around a handle of a part
+  int grazingLoops = 0;   // loops of its own left out, that only grazed the shape (a tiny or thin part)
+  int crossingLoops = 0;  // loops laid with the designer's left out, that crossed themselves (openIntoPanels)
+  int acrossCuts = 0;     // cuts across a part that would overlap itself when laid flat
 
   void add(const LayoutOpenings& o) {
     tubeCuts += o.tubeCuts, limbSeams += o.limbSeams, handleSeams += o.handleSeams, grazingLoops += o.grazingLoops;
+    crossingLoops += o.crossingLoops;
     acrossCuts += o.acrossCuts, limbEndCuts += o.limbEndCuts;
   }
 };
