@@ -249,7 +249,7 @@ export class SeamTool {
       notes.push(`the shape has ${holes === 1 ? 'a handle' : `${holes} handles`}, so the outline makes ${holes + 1} loops: the rim of each hole was laid too, and two seams across the ring (where it is narrowest and opposite) cut the front and back into halves (drag their points to move them)`);
     else if (holes) notes.push(`the shape has a handle, so the outline makes ${holes + 1} loops: the longest was laid; a section seam across the handle opens it`);
     const loops = opened ? [outline.loop, ...outline.holes, ...across] : [outline.loop];
-    const names = opened ? ['Outline', ...outline.holes.map((_, k) => `Outline, hole ${k + 1}`), ...across.map((_, k) => `Across the ring ${k + 1}`)] : [];
+    const names = opened ? ['Outline', ...outline.holes.map((_, k) => `Outline, hole ${k + 1}`), ...across.map((_, k) => `Across the ring ${k + 1}`)] : ['Outline'];
     const note = notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null;
     // On a shape with handles the front or the back may still be a ring, or hold a handle this view does not look
     // through (a statue's arm joined to its body): the seams that open them come with the outline.
