@@ -1085,6 +1085,22 @@ int unfoldCrossingSeams(const DesignScene& scene, int fixedSeams, std::vector<De
   return changed;
 }
 
+// Leaves the seams `which` (indices) out of `seams`: the internal connections that name one go with it, the others'
+// indices follow the seams after it.
+void eraseSeams(std::vector<int> which, std::vector<DesignSeam>& seams, std::vector<DesignConnection>& connections) {
+  std::sort(which.rbegin(), which.rend());
+  for (int seam : which) {
+    seams.erase(seams.begin() + seam);
+    std::vector<DesignConnection> kept;
+    for (DesignConnection& c : connections) {
+      if (std::find(c.seams.begin(), c.seams.end(), seam) != c.seams.end()) continue;
+      for (int& i : c.seams) i -= i > seam;
+      kept.push_back(std::move(c));
+    }
+    connections = std::move(kept);
+  }
+}
+
 // Seams that make a layout's segments panels, where plane sections alone leave a segment that is not one: a segment
 // between two loops or more (a plane across a limb leaves a tube, a limb's end cut off inside a band leaves a hole)
 // gets cuts through it that join its loops (cutsJoiningLoops: the cuts that open a tube, as a designer would add
@@ -1135,12 +1151,7 @@ int openSegments(const DesignScene& scene, double spacing, double edgeLength, in
       removed.push_back(shortest);
   }
   if (!removed.empty()) {
-    std::sort(removed.rbegin(), removed.rend());
-    for (int seam : removed) {
-      seams.erase(seams.begin() + seam);
-      for (DesignConnection& c : connections)
-        for (int& i : c.seams) i -= i > seam;
-    }
+    eraseSeams(removed, seams, connections);
     opened.grazingLoops += int(removed.size());
     return int(removed.size());
   }
@@ -1318,17 +1329,7 @@ LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam
           current[size_t(p.seam)].closed && std::find(crossing.begin(), crossing.end(), p.seam) == crossing.end())
         crossing.push_back(p.seam);
     if (crossing.empty()) break;
-    std::sort(crossing.rbegin(), crossing.rend());
-    for (int seam : crossing) {
-      current.erase(current.begin() + seam);
-      std::vector<DesignConnection> kept;
-      for (DesignConnection& c : joined) {
-        if (std::find(c.seams.begin(), c.seams.end(), seam) != c.seams.end()) continue;
-        for (int& k : c.seams) k -= k > seam;
-        kept.push_back(std::move(c));
-      }
-      joined = std::move(kept);
-    }
+    eraseSeams(crossing, current, joined);
     leftOut += int(crossing.size());
     out = layLayout(scene, current, fixedSeams, options, joined);
   }
