@@ -123,6 +123,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.weights.coverReach = v;
   else if (name == "maxIterations")
     o.stopping.maxIterations = int(v);
+  else if (name == "maxWork")
+    o.stopping.maxWork = int(v);
   else if (name == "windowIterations")
     o.stopping.windowIterations = int(v);
   else if (name == "windowMove")

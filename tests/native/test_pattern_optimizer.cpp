@@ -634,6 +634,37 @@ TEST(PatternOptimizer, StopsWhenTheObjectiveNoLongerDecreasesNoticeably) {
               E[n - 5]);
 }
 
+// The app's work budget (OptimizeStopping::maxWork): the run ends at the first iteration whose work (Newton
+// iterations of every solve plus kIterationWork per iteration) reaches it, as converged, and on its cut panels.
+TEST(PatternOptimizer, StopsOnceItsWorkIsDone) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 800);
+  ASSERT_TRUE(f.built.ok());
+  const auto workOf = [](const PatternOptimizer& opt) {
+    return opt.timings().newtonIterations + OptimizeStopping::kIterationWork * opt.iterations();
+  };
+  PatternOptimizer free(f.scene->target, f.built, f.weights, OptimizeOptions{});
+  while (free.step(1) == OptimizeState::Running) {
+  }
+  const int budget = workOf(free) / 2;
+  OptimizeOptions o;
+  o.stopping.maxWork = budget;
+  PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
+  std::vector<int> work;
+  while (opt.step(1) == OptimizeState::Running) work.push_back(workOf(opt));
+  std::printf("[figures] sphere gores 800: %d iterations, work %d; budget %d: %d iterations\n", free.iterations(),
+              workOf(free), budget, opt.iterations());
+  ASSERT_EQ(opt.state(), OptimizeState::Converged);
+  EXPECT_EQ(opt.message(), "its work budget was spent (more steps seldom bring the cut panels closer)");
+  ASSERT_GE(work.size(), 2u);
+  EXPECT_GE(work.back(), budget);
+  EXPECT_LT(work[work.size() - 2], budget) << "it went on past its budget";
+  EXPECT_LT(opt.iterations(), free.iterations());
+  const auto last = std::find_if(opt.history().rbegin(), opt.history().rend(),
+                                 [](const OptimizeRecord& r) { return !r.projected; });  // not the final projection
+  ASSERT_NE(last, opt.history().rend());
+  EXPECT_TRUE(last->cutPanels) << "the run did not end on its cut panels";
+}
+
 // A window with a remeshing in it is no stall either: the objective there is that of another mesh. With the
 // panels meshed anew every 4 iterations every 5-iteration window holds one, and the rule never ends the run
 // (without that, this run stopped at iteration 9). Every 5 iterations, a window may start on a fresh mesh and

@@ -1032,6 +1032,10 @@ std::optional<PatternOptimizer::StopReason> PatternOptimizer::stopReason() const
     return StopReason{OptimizeState::Stopped, "the time limit was reached"};
   if (options_.stopping.maxNewtonIterations > 0 && timings_.newtonIterations >= options_.stopping.maxNewtonIterations)
     return StopReason{OptimizeState::Stopped, "the work allowed for it was done"};
+  if (options_.stopping.maxWork > 0 &&
+      timings_.newtonIterations + OptimizeStopping::kIterationWork * iteration_ >= options_.stopping.maxWork)
+    return StopReason{OptimizeState::Converged,
+                      "its work budget was spent (more steps seldom bring the cut panels closer)"};
   return std::nullopt;
 }
 

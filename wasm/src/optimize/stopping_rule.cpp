@@ -10,6 +10,7 @@ OptimizeOptions appStoppingRule(OptimizeOptions options) {
   options.stopping.windowIterations = 20;
   options.stopping.windowMove = 2e-3;
   options.stopping.windowDecrease = 1e-2;
+  options.stopping.maxWork = 1600;
   return options;
 }
 

@@ -9,7 +9,8 @@ namespace billow {
 // The app's rule, over `options`: stop once no inflated vertex moved by 0.2 % of the model size over 20
 // iterations, or the objective fell by less than 1 % over 20 iterations (or 0.25 % over five steps that each came
 // after a trial that snapped or were cut short: HeldAtFold below), or after 150 iterations (300 when
-// seams slide: OptimizeSliding::iterationFactor, as they keep visibly improving the shape for longer).
+// seams slide: OptimizeSliding::iterationFactor, as they keep visibly improving the shape for longer), or once its
+// work reached 1,600 Newton iterations' worth (OptimizeStopping::maxWork: beyond it the cut panels came no closer).
 OptimizeOptions appStoppingRule(OptimizeOptions options = {});
 
 // The objective window (OptimizeStopping::windowDecrease), read from a run's history after `iteration`, E the

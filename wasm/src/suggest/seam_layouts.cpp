@@ -1389,6 +1389,7 @@ void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOpti
     OptimizeOptions oo = appStoppingRule();
     oo.stopping.maxIterations = options.maxIterations;
     oo.stopping.maxNewtonIterations = int(options.newtonPerIteration * options.maxIterations);
+    oo.stopping.maxWork = 0;  // the bound above, the suggestion's own
     // A first look (no iteration) measures the flattened panels' own inflation, not their cut.
     oo.remeshing.cutPanels = options.maxIterations > 0;
     if (!scene.targetDistance) scene.targetDistance = std::make_shared<const ImlsDistance>(scene.target, oo.imls);
