@@ -48,9 +48,11 @@ constexpr double kGaussNewtonStall = 1e-4;
 // OptimizeRemeshing::stallIterations: a mesh on which E fell by less than this (relative) over them is stalled.
 constexpr double kStallDecrease = 1e-3;
 // A cut whose objective on its new mesh exceeds its own mesh's by this factor snapped (settleCutPanels: fb-spot's
-// snapped cuts 1.34-1.70, those that keep their shape 0.99-1.17 on the bench's designs); then the iterates this many
-// back are tried, the last 33 kept.
-constexpr double kCutSnapRatio = 1.25;
+// snapped cuts 1.34-1.70, those that keep their shape 0.99-1.17 on the bench's designs), unless it settled within
+// kCutSnapMove (x the model size) of the shape it was cut from: a new mesh's own offset, not another shape (the
+// elephant's cuts 1.26-1.34 and 1.9-2.2 %, the snapped ones 6.7-25 %); then the iterates this many back are tried,
+// the last 33 kept.
+constexpr double kCutSnapRatio = 1.25, kCutSnapMove = 0.03;
 constexpr int kCutBack[] = {4, 8, 16, 32};
 constexpr int kCheckpoints = 33;
 }  // namespace
@@ -250,6 +252,7 @@ bool PatternOptimizer::remesh(bool recordIt) {
                                                     (!wasSimple || outlinesSimple(X_))));
   Vertices x;
   int newton = 0;
+  const Vertices carried = x_;
   if (!sewable || !solveEquilibrium(X_, x_, x, &newton)) {  // back to the old mesh
     current.pattern.inflated = inflated;
     setUp(current, coarsePhase_);
@@ -259,6 +262,7 @@ bool PatternOptimizer::remesh(bool recordIt) {
     timings_.remeshMs += nowMs() - t0;
     return false;
   }
+  remeshMove_ = (x - carried).rowwise().norm().maxCoeff() / objective_->modelSize();
   takeNewMesh(std::move(x), newton, t0, recordIt);
   return true;
 }
@@ -1066,7 +1070,7 @@ void PatternOptimizer::settleCutPanels() {
   const std::deque<Checkpoint> checkpoints = std::move(checkpoints_);
   if (!remesh()) return;  // where the outlines do not mesh or settle anew, the run ends on its own mesh
   history_.back().cutPanels = true;
-  if (E_ <= kCutSnapRatio * ownE) return;
+  if (E_ <= kCutSnapRatio * ownE || remeshMove_ < kCutSnapMove) return;
   // The cut panels snapped into another equilibrium (fb-spot: the head across the thickness, E +35-70 %): the last
   // iterates sit near the fold where the optimizer's mesh keeps its equilibrium and a new mesh does not. An earlier
   // iterate, farther from the fold, may cut without snapping: the designer gets the cut panels of least E.
@@ -1102,7 +1106,7 @@ void PatternOptimizer::settleCutPanels() {
     unpackPattern(X_, pattern_);
     if (!remesh(false)) continue;
     if (E_ < best.E) best = current(std::move(cut));
-    if (E_ <= kCutSnapRatio * c->E) break;
+    if (E_ <= kCutSnapRatio * c->E || remeshMove_ < kCutSnapMove) break;
   }
   if (best.own) {  // the chosen iterate, cut, on the optimizer's mesh: what the panes compare the cut panels with
     setUpOwn(best.own->X);

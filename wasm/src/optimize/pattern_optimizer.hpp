@@ -329,6 +329,7 @@ class PatternOptimizer {
   // and solves the new equilibrium; false (the old mesh kept) when that fails. recordIt: the new iterate goes into the
   // history (not for a trial cut of settleCutPanels).
   bool remesh(bool recordIt = true);
+  double remeshMove_ = 0;  // the last remeshing's settle: its largest vertex move from the carried shape, over D
   // The new mesh's equilibrium x (newton iterations, the remeshing started at t0 ms) as the current iterate, recorded
   // as a remeshing.
   void takeNewMesh(Vertices x, int newton, double t0, bool recordIt = true);
