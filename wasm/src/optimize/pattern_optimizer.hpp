@@ -57,8 +57,9 @@ struct OptimizeStopping {
   // limit): a bound on the work, where maxMillis would depend on the machine.
   int maxNewtonIterations = 0;
   // Converged once the run's work reached this (0: no limit): Newton iterations of every solve plus kIterationWork
-  // per iteration (its adjoint solve, alignment and closest points). Past about 1,700 at 3,000 elements the cut
-  // panels came no closer on average, only the optimizer's own mesh (bench/README.md "Stopping rules").
+  // per iteration (its adjoint solve, alignment and closest points). The app's 1,600, about 9 s natively at 3,000
+  // elements, left the cut panels as close as runs without it; the iterations past it refined the optimizer's own
+  // mesh (bench/README.md "Stopping rules").
   int maxWork = 0;
   static constexpr int kIterationWork = 7;
 };
@@ -329,7 +330,6 @@ class PatternOptimizer {
   // and solves the new equilibrium; false (the old mesh kept) when that fails. recordIt: the new iterate goes into the
   // history (not for a trial cut of settleCutPanels).
   bool remesh(bool recordIt = true);
-  double remeshMove_ = 0;  // the last remeshing's settle: its largest vertex move from the carried shape, over D
   // The new mesh's equilibrium x (newton iterations, the remeshing started at t0 ms) as the current iterate, recorded
   // as a remeshing.
   void takeNewMesh(Vertices x, int newton, double t0, bool recordIt = true);
@@ -458,9 +458,10 @@ class PatternOptimizer {
   std::string message_;
   int iteration_ = 0, stalled_ = 0;
   bool started_ = false;
-  Vertices windowX_;                      // x at the start of the current window (options.stopping.windowIterations)
-  int windowStart_ = -1;                  // its iteration
-  int remeshedAt_ = -1;                   // the iteration of the last remeshing (or attempt)
+  Vertices windowX_;       // x at the start of the current window (options.stopping.windowIterations)
+  int windowStart_ = -1;   // its iteration
+  int remeshedAt_ = -1;    // the iteration of the last remeshing (or attempt)
+  double remeshMove_ = 0;  // the last remeshing's settle: its largest vertex move from the carried shape, over D
   std::shared_ptr<const SeamRods> rods_;  // the seam rods of this phase (setUp), their coefficient at its start
   // The phase's rods with their coefficient at panels X (seamRodCoefficientAt), and its derivative when given.
   std::shared_ptr<const SeamRods> rodsAt(const Eigen::VectorXd& X, Eigen::VectorXd* dcdX = nullptr) const;
