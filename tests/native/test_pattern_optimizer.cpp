@@ -10,6 +10,7 @@
 #include <random>
 
 #include "export/outline.hpp"
+#include "mesh/simplify.hpp"
 #include "optimize/stopping_rule.hpp"
 #include "optimize_fixture.hpp"
 #include "seams/surface_distance.hpp"
@@ -112,6 +113,40 @@ TEST(PatternOptimizer, AFineTargetIsSampledDuringARunAndMeasuredWholeWhereItsFig
   EXPECT_FALSE(std::next(cut)->targetSampled) << "the own mesh's last figures, which the cut panels' are compared with";
   for (const OptimizeRecord& q : h)  // the last iterate's, recorded before the run ended, too
     if (q.iteration == last.iteration) EXPECT_FALSE(q.targetSampled);
+}
+
+// A fine target (a scan, tens of thousands of triangles and more) is optimized on its working copy, and what the run
+// reports, the distance both ways, is measured on the target itself.
+TEST(PatternOptimizer, AFineTargetIsOptimizedOnItsWorkingCopyAndMeasuredOnItself) {
+  const Fixture f = makeFixture("sphere-gores.billow.json", 200);
+  ASSERT_TRUE(f.built.ok());
+  TriMesh fine = f.scene->target;
+  while (fine.numTriangles() <= 2 * kWorkingTargetTriangles) fine = splitInFour(fine);
+  OptimizeOptions o;
+  o.stopping.maxIterations = 4;
+  PatternOptimizer opt(fine, f.built, f.weights, o);
+  EXPECT_NEAR(opt.objective().imls().target().numTriangles(), kWorkingTargetTriangles, 2);
+  while (opt.step(1) == OptimizeState::Running) {
+  }
+  ASSERT_NE(opt.state(), OptimizeState::Failed) << opt.message();
+  const OptimizeRecord& last = opt.history().back();
+  const double D = opt.objective().modelSize();
+  const TargetCoverage whole = targetCoverage(fine, opt.inflated(), outerTriangles(opt.mesh()), D);
+  EXPECT_EQ(last.targetDistanceRms, whole.summary.rms);
+  ASSERT_NE(opt.targetDistances(), nullptr);
+  EXPECT_EQ(opt.targetDistances()->size(), fine.numVertices()) << "one per vertex of the target itself";
+  const SurfaceProjector projector(fine);
+  const Eigen::VectorXd& w = opt.objective().targetWeights();
+  double sum = 0;
+  int count = 0;
+  for (int i = 0; i < opt.inflated().rows(); ++i) {
+    if (w[i] == 0) continue;
+    double d = 0;
+    projector.project(opt.inflated().row(i).transpose(), &d);
+    sum += (d / D) * (d / D), ++count;
+  }
+  EXPECT_DOUBLE_EQ(last.distanceRms, std::sqrt(sum / count));
+  EXPECT_LT(last.distanceRms, opt.history().front().distanceRms) << "closer than the flattened panels";
 }
 
 // A step whose equilibrium is predicted to move the balloon far beyond the last steps' is shortened before it is

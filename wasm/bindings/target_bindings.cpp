@@ -149,6 +149,7 @@ class TargetSession {
       projector_.reset();
       scaledGeodesic_.reset();
       optimizer_.reset();
+      optimizationTarget_.reset();
       suggest_.reset();
       mesh_ = billow::bindings::meshFromHeap(positions, numVertices, indices, numTriangles);
       topology_ = billow::buildTopology(mesh_);
@@ -195,9 +196,11 @@ class TargetSession {
       const PatternRequest request = readPatternRequest(seamsJson, optionsJson);
       const billow::BuiltPattern built = makePattern(request);
       // The app stops once the shape no longer changes visibly (the CLI goes on to full convergence).
-      if (built.ok())
+      if (built.ok()) {
+        if (!optimizationTarget_) optimizationTarget_ = std::make_shared<const billow::OptimizationTarget>(scaled_);
         optimizer_ = std::make_unique<billow::PatternOptimizer>(
-            scaled_, built, billow::designSeamWeights(request.design), billow::appStoppingRule());
+            optimizationTarget_, built, billow::designSeamWeights(request.design), billow::appStoppingRule());
+      }
       return patternJson(built).dump();
     });
   }
@@ -600,6 +603,7 @@ class TargetSession {
   void useScale(double scale) {
     if (scaledGeodesic_ && scale == scale_) return;
     optimizer_.reset();  // it refers to the scaled target
+    optimizationTarget_.reset();
     scaledGeodesic_.reset();
     scaled_ = mesh_;
     scaled_.V *= scale;
@@ -683,6 +687,9 @@ class TargetSession {
   std::unique_ptr<billow::GeodesicSolver> scaledGeodesic_;
   double scale_ = 0;
   std::unique_ptr<billow::PatternOptimizer> optimizer_;
+  // scaled_ as the optimizer measures it (a fine target's working copy among it), made by the first run at this
+  // scale and kept for the next.
+  std::shared_ptr<const billow::OptimizationTarget> optimizationTarget_;
   billow::MeshTopology topology_;
   std::unique_ptr<billow::SurfaceProjector> projector_;
   std::unique_ptr<billow::GeodesicSolver> geodesic_;

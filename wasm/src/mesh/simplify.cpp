@@ -253,4 +253,9 @@ TriMesh simplifiedCopy(const TriMesh& mesh, int triangles) {
   return Simplifier(mesh).run(triangles);
 }
 
+std::optional<TriMesh> workingCopy(const TriMesh& target) {
+  if (target.numTriangles() <= 2 * kWorkingTargetTriangles) return std::nullopt;
+  return simplifiedCopy(target, kWorkingTargetTriangles);
+}
+
 }  // namespace billow

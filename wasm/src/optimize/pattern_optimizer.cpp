@@ -123,20 +123,18 @@ PatternOptimizer::PatternOptimizer(const TriMesh& target, const BuiltPattern& bu
                                    const std::vector<double>& seamWeights, const OptimizeOptions& options)
     : PatternOptimizer(nullptr, built, seamWeights, options, target) {}
 
-PatternOptimizer::PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
+PatternOptimizer::PatternOptimizer(std::shared_ptr<const OptimizationTarget> target, const BuiltPattern& built,
                                    const std::vector<double>& seamWeights, const OptimizeOptions& options)
-    : PatternOptimizer(imls, built, seamWeights, options, imls->target()) {}
+    : PatternOptimizer(target, built, seamWeights, options, target->whole()) {}
 
-PatternOptimizer::PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
+PatternOptimizer::PatternOptimizer(std::shared_ptr<const OptimizationTarget> shared, const BuiltPattern& built,
                                    const std::vector<double>& seamWeights, const OptimizeOptions& options,
                                    const TriMesh& target)
-    : options_(slidingOptions(options, seamWeights, built.figures.edgeLength,
-                              boundingDiagonal(imls ? imls->target() : target))),
+    : options_(slidingOptions(options, seamWeights, built.figures.edgeLength, boundingDiagonal(target))),
       sliding_(hasSlidingSeams(options, seamWeights)),
       seamWeights_(seamWeights),
-      imls_(std::move(imls)),
+      target_(shared ? std::move(shared) : std::make_shared<const OptimizationTarget>(target, options.imls)),
       start_(nowMs()) {
-  if (!imls_) imls_ = std::make_shared<const ImlsDistance>(target, options.imls);
   material_ = membraneMaterial(built.pattern.material, options.inflate);
   fineEdgeLength_ = built.figures.edgeLength, designTriangles_ = built.figures.triangles;
   const OptimizeRemeshing& remeshing = options_.remeshing;
@@ -170,7 +168,7 @@ void PatternOptimizer::setUp(const BuiltPattern& built, bool coarse) {
       makeSeamRods(mesh_, seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness)));
   const OptimizeWeights weights =
       coarse ? weightsAtEdgeLength(options_.weights, built.figures.edgeLength / fineEdgeLength_) : options_.weights;
-  objective_ = std::make_unique<PatternObjective>(*imls_, built, mesh_, seamWeights_, weights);
+  objective_ = std::make_unique<PatternObjective>(target_->distance(), built, mesh_, seamWeights_, weights);
   X_ = packPattern(pattern_);
   boundaryVertices_.clear();
   for (const BuiltPanel& bp : built.panels) boundaryVertices_.push_back(bp.boundaryVertices);
@@ -320,7 +318,8 @@ CutPanelsCheck PatternOptimizer::checkCutPanels(double h) const {
     OptimizeOptions settle = options_;
     settle.stopping.maxIterations = 0, settle.stopping.maxMillis = 0, settle.keepShapes = false;
     settle.remeshing.coarseFactor = 1, settle.remeshing.every = 0;
-    const std::unique_ptr<PatternOptimizer> cut(new PatternOptimizer(imls_, remeshed.built, seamWeights_, settle, {}));
+    const std::unique_ptr<PatternOptimizer> cut(
+        new PatternOptimizer(target_, remeshed.built, seamWeights_, settle, {}));
     while (cut->step(1) == OptimizeState::Running) {
     }
     out.elements = cut->mesh().numTriangles();
@@ -531,9 +530,10 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
   const double D = objective_->modelSize();
   const Eigen::VectorXd& w = objective_->targetWeights();
   int count = 0;
+  if (figureFaces_.size() != size_t(x_.rows())) figureFaces_.assign(size_t(x_.rows()), -1);
   for (int i = 0; i < x_.rows(); ++i) {
     if (w[i] == 0) continue;
-    const double d = imls_->closestDistance(x_.row(i).transpose()) / D;
+    const double d = target_->closestDistance(x_.row(i).transpose(), &figureFaces_[size_t(i)]) / D;
     r.distanceRms += d * d, r.distanceMax = std::max(r.distanceMax, d), ++count;
   }
   r.distanceRms = count ? std::sqrt(r.distanceRms / count) : 0;
@@ -556,29 +556,29 @@ void PatternOptimizer::record(double alpha, int newton, bool projected) {
 }
 
 void PatternOptimizer::measureTarget(OptimizeRecord& r, const Vertices& x) {
-  const TriMesh& target = imls_->target();
+  const TriMesh& sampled = target_->distance().target();  // whose vertices E_cover samples
   const std::vector<int>& sample = objective_->coverVertices();
   const double D = objective_->modelSize();
   coverageShape_ = x;
   // A run of no iterations (a first look, the cut panels' settle) keeps its one record: measured whole at once.
   r.targetSampled = !exactTarget_ && options_.stopping.maxIterations > 0 && !sample.empty() &&
-                    int(sample.size()) < target.numVertices();
+                    (target_->copied() || int(sample.size()) < sampled.numVertices());
   if (!r.targetSampled) {
-    TargetCoverage coverage = targetCoverage(target, x, outerTriangles(mesh_), D);
+    TargetCoverage coverage = targetCoverage(target_->whole(), x, outerTriangles(mesh_), D);
     r.targetDistanceRms = coverage.summary.rms, r.targetDistanceMax = coverage.summary.max;
     targetDistances_ = std::move(coverage.distances);
     return;
   }
-  // A fine target during the run: its distances at E_cover's sample, weighted by their areas as targetCoverage
-  // weighs every vertex (every vertex of a 94k-vertex target at every record was a quarter of a 1,000-element run:
-  // bench/README.md "The target's resolution").
+  // A fine target during the run: its distances at E_cover's sample (of its working copy, where it has one), weighted
+  // by their areas as targetCoverage weighs every vertex (every vertex of a 94k-vertex target at every record was a
+  // quarter of a 1,000-element run: bench/README.md "The target's resolution").
   const TriMesh shape{x, outerTriangles(mesh_)};
   const SurfaceProjector projector(shape);
   const Eigen::VectorXd& area = objective_->coverAreas();
   double sum = 0, weight = 0, largest = 0;
   for (size_t k = 0; k < sample.size(); ++k) {
     double d = 0;
-    projector.project(target.V.row(sample[k]).transpose(), &d);
+    projector.project(sampled.V.row(sample[k]).transpose(), &d);
     sum += area[long(k)] * d * d, weight += area[long(k)], largest = std::max(largest, d);
   }
   r.targetDistanceRms = weight > 0 ? std::sqrt(sum / weight) / D : 0, r.targetDistanceMax = largest / D;

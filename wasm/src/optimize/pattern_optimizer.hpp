@@ -25,6 +25,7 @@
 #include "optimize/adjoint.hpp"
 #include "optimize/harmonic_interior.hpp"
 #include "optimize/objectives.hpp"
+#include "optimize/optimization_target.hpp"
 #include "optimize/rigid_align.hpp"
 #include "optimize/seam_projection.hpp"
 #include "simulate/inflate.hpp"
@@ -258,9 +259,9 @@ class PatternOptimizer {
   // seamWeights[s]: sigma_s of seam s (Eq. 10). Throws billow::Error when the pattern does not sew.
   PatternOptimizer(const TriMesh& target, const BuiltPattern& built, const std::vector<double>& seamWeights,
                    const OptimizeOptions& options = {});
-  // The same on the target distance of another run (its kernels depend on the target alone: a suggestion's layouts
-  // share one).
-  PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
+  // The same on the target as another run measures it (made once per target: a suggestion's layouts share one, and
+  // so do the app's runs on one target).
+  PatternOptimizer(std::shared_ptr<const OptimizationTarget> target, const BuiltPattern& built,
                    const std::vector<double>& seamWeights, const OptimizeOptions& options = {});
   ~PatternOptimizer();
 
@@ -302,9 +303,8 @@ class PatternOptimizer {
   // preconditioner, the start x (its `inflated`); the L-BFGS memory is cleared.
   // The objective's weights follow the mesh's edge length where it is not the design's (the coarse phase).
   void setUp(const BuiltPattern& built, bool coarse = false);
-  // With imls, the target distance of another run (its kernels are built once per target); else built from
-  // target, within this run's time.
-  PatternOptimizer(std::shared_ptr<const ImlsDistance> imls, const BuiltPattern& built,
+  // With shared, the target as another run measures it; else made from target, within this run's time.
+  PatternOptimizer(std::shared_ptr<const OptimizationTarget> shared, const BuiltPattern& built,
                    const std::vector<double>& seamWeights, const OptimizeOptions& options, const TriMesh& target);
   struct StopReason {
     OptimizeState state;
@@ -398,7 +398,8 @@ class PatternOptimizer {
   bool sliding_ = false;  // some seam slides (options_ are slidingOptions)
   std::vector<double> seamWeights_;
   BuiltPattern built_;  // as flattened or last remeshed (its pattern's X is not kept up to date)
-  std::shared_ptr<const ImlsDistance> imls_;
+  std::shared_ptr<const OptimizationTarget> target_;
+  std::vector<int> figureFaces_;  // per vertex, the target face closest to it at the last record (its first guess)
   std::unique_ptr<PatternObjective> objective_;
   std::unique_ptr<HarmonicInterior> interior_;
   std::vector<int> boundaryVertices_;                           // per panel

@@ -12,7 +12,7 @@
 
 namespace billow {
 
-class ImlsDistance;
+class OptimizationTarget;
 
 struct DesignScene {
   Design design;
@@ -26,9 +26,9 @@ struct DesignScene {
   std::unique_ptr<GeodesicSolver> geodesic;
   std::vector<SeamCurve> curves;
   Segmentation segmentation;
-  // The target's distance for the pattern optimizer (optimize/imls_distance.hpp), made by the first suggested layout
-  // optimized on this scene and kept for the next.
-  std::shared_ptr<const ImlsDistance> targetDistance;
+  // The target as the pattern optimizer measures it (optimize/optimization_target.hpp), made by the first suggested
+  // layout optimized on this scene and kept for the next.
+  std::shared_ptr<const OptimizationTarget> optimizationTarget;
   double loadMs = 0, seamsMs = 0, segmentMs = 0;
 };
 

@@ -1392,8 +1392,9 @@ void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOpti
     oo.stopping.maxWork = 0;  // the bound above, the suggestion's own
     // A first look (no iteration) measures the flattened panels' own inflation, not their cut.
     oo.remeshing.cutPanels = options.maxIterations > 0;
-    if (!scene.targetDistance) scene.targetDistance = std::make_shared<const ImlsDistance>(scene.target, oo.imls);
-    PatternOptimizer optimizer(scene.targetDistance, built, designSeamWeights(scene.design), oo);
+    if (!scene.optimizationTarget)
+      scene.optimizationTarget = std::make_shared<const OptimizationTarget>(scene.target, oo.imls);
+    PatternOptimizer optimizer(scene.optimizationTarget, built, designSeamWeights(scene.design), oo);
     while (optimizer.step(5) == OptimizeState::Running) {
     }
     if (optimizer.state() == OptimizeState::Failed || optimizer.history().empty()) {
@@ -1519,11 +1520,12 @@ LayoutEvaluation lookAtLayout(DesignScene& scene, const LayoutProposal& proposal
 }
 
 std::unique_ptr<DesignScene> suggestionScene(const Design& design, const TriMesh& target) {
-  if (target.numTriangles() <= 2 * kSuggestionTargetTriangles) return nullptr;
+  std::optional<TriMesh> copy = workingCopy(target);
+  if (!copy) return nullptr;
   Design own = design;
   own.seams.clear();
   own.connections.clear();
-  return makeTargetScene(own, simplifiedCopy(target, kSuggestionTargetTriangles));
+  return makeTargetScene(own, *copy);
 }
 
 }  // namespace billow

@@ -80,15 +80,9 @@ int designSymmetryAxis(const Design& design);
 // within `tolerance` x its diagonal of its surface, RMS), the closest of the three; -1 when none is.
 int mirrorSymmetryAxis(const TriMesh& target, const SurfaceProjector& projector, double tolerance = 0.01);
 
-// A fine target (a scan, hundreds of thousands of triangles) has its layouts proposed, looked at and optimized on a
-// copy simplified to this many triangles (mesh/simplify.hpp), where it has more than twice as many; they are compared
-// at 1,000 triangles, and the copy lies within about 0.1 % of the target's diagonal of it (bench/README.md "Suggested
-// seam layouts": the figures). Its seams are carried back to the target (carriedSeams).
-constexpr int kSuggestionTargetTriangles = 10000;
-
-// The scene the layouts for `design` on `target` (its own units; design.scale set) are laid on: a copy of the target
-// simplified to kSuggestionTargetTriangles, at the design's scale, without its seams; null where the target is not
-// more than twice that fine (the layouts are laid on it).
+// The scene the layouts for `design` on `target` (its own units; design.scale set) are laid on: the target's working
+// copy (mesh/simplify.hpp), at the design's scale, without its seams; null where it has none (the layouts are laid on
+// the target). They are compared at 1,000 triangles; their seams are carried back to the target (carriedSeams).
 std::unique_ptr<DesignScene> suggestionScene(const Design& design, const TriMesh& target);
 
 // The layouts worth trying for `request` on `target` (its own coordinates), each plane set once.
