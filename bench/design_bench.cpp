@@ -288,8 +288,7 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   const SewnMesh& mesh = opt.mesh();
   const Vertices& x = opt.inflated();
   Eigen::VectorXd distance(mesh.numVertices);
-  for (int v = 0; v < mesh.numVertices; ++v)
-    distance[v] = opt.objective().imls().closestDistance(x.row(v).transpose()) / D;
+  for (int v = 0; v < mesh.numVertices; ++v) distance[v] = opt.target().closestDistance(x.row(v).transpose()) / D;
   // The RMS distance weighted by the inflated surface's lumped area: unlike the per-vertex RMS it does not
   // improve when vertices crowd where the shape is close to the target.
   double areaRms = 0, area = 0;

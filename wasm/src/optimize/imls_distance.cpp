@@ -212,9 +212,10 @@ double ImlsDistance::fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, C
   return s * len;
 }
 
-double ImlsDistance::closestDistance(const Eigen::Vector3d& x) const {
+double ImlsDistance::closestDistance(const Eigen::Vector3d& x, int* face) const {
   double d = 0;
-  projector_->project(x, &d);
+  const SurfacePoint p = projector_->project(x, &d, face ? *face : -1);
+  if (face) *face = p.face;
   return d;
 }
 

@@ -60,8 +60,9 @@ class ImlsDistance {
   // The fallback alone: +-|x - p|, p the closest target point, signed by the side of its pseudo-normal.
   double fallback(const Eigen::Vector3d& x, Eigen::Vector3d* grad, ClosestFaceCache* cache = nullptr) const;
 
-  // Unsigned distance to the closest target point [m] (progress figures).
-  double closestDistance(const Eigen::Vector3d& x) const;
+  // Unsigned distance to the closest target point [m] (progress figures). face, when given, is the target face to
+  // measure first (the answer for a point near this one), and receives this answer's: the same distance, found sooner.
+  double closestDistance(const Eigen::Vector3d& x, int* face = nullptr) const;
 
   double supportRadius() const { return h_; }
   const TriMesh& target() const { return *target_; }

@@ -21,7 +21,7 @@ OptimizationTarget::OptimizationTarget(const TriMesh& target, const ImlsOptions&
 OptimizationTarget::~OptimizationTarget() = default;
 
 double OptimizationTarget::closestDistance(const Eigen::Vector3d& x, int* face) const {
-  if (!wholeProjector_) return distance_->closestDistance(x);
+  if (!wholeProjector_) return distance_->closestDistance(x, face);
   double d = 0;
   const SurfacePoint p = wholeProjector_->project(x, &d, face ? *face : -1);
   if (face) *face = p.face;

@@ -24,8 +24,7 @@ class OptimizationTarget {
   // What the figures measure: the target itself.
   const TriMesh& whole() const { return whole_ ? *whole_ : distance_->target(); }
   bool copied() const { return whole_ != nullptr; }
-  // Unsigned distance from x to the closest point of whole() [m]. face, when given, is the face of whole() to measure
-  // first (the answer for a point near this one), and receives this answer's: the same distance, found sooner.
+  // Unsigned distance from x to the closest point of whole() [m]; face as ImlsDistance::closestDistance's.
   double closestDistance(const Eigen::Vector3d& x, int* face = nullptr) const;
 
  private:

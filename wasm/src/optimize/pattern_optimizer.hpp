@@ -276,6 +276,7 @@ class PatternOptimizer {
   const Vertices& inflated() const { return x_; }      // x(X), #V by 3 [m]
   const SewnMesh& mesh() const { return mesh_; }
   const PatternObjective& objective() const { return *objective_; }
+  const OptimizationTarget& target() const { return *target_; }  // what the figures measure: its whole()
   const std::vector<OptimizeRecord>& history() const { return history_; }
   const std::vector<Vertices>& shapes() const { return shapes_; }  // when options.keepShapes
   // Per target vertex, its distance to the inflated outer surface [m], as the last record measured it for
