@@ -218,6 +218,10 @@ test('the designer is told when the cut panels inflate clearly farther than the 
   assert.match(note, /another shape once cut/);
   assert.equal(cutPanelsNote({ ownMesh: own, distanceRms: 0.0078, targetDistanceRms: 0.017 }), null, 'within 20 %: no note');
   assert.equal(cutPanelsNote({ distanceRms: 0.027, targetDistanceRms: 0.022 }), null, 'a run that did not end on cut panels');
+  // Twice as far, but both close: a ring balloon's 0.11 % and 0.26 % differ by what no one sees.
+  const close = { distanceRms: 0.0011, targetDistanceRms: 0.0010 };
+  assert.equal(cutPanelsNote({ ownMesh: close, distanceRms: 0.0026, targetDistanceRms: 0.0025 }), null, 'both close: no note');
+  assert.match(cutPanelsNote({ ownMesh: close, distanceRms: 0.0040, targetDistanceRms: 0.0030 }), /0\.11 % → 0\.40 %/);
   // Outlines along parts a triangle or so across: the finer Panels setting is named, where there is one.
   const narrow = cutPanelsNote({ ownMesh: own, distanceRms: 0.027, targetDistanceRms: 0.022 }, { narrowShare: 0.25, finer: 'medium' });
   assert.ok(narrow.startsWith(note), narrow);
