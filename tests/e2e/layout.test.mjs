@@ -3,6 +3,7 @@
 // legend, the messages) never cover what the panes frame: the target, the inflated shape, the pattern's
 // pieces; a box closed to its title stays closed after a reload. No two labels of the pattern's sheet view
 // overlap, with the seams' labels shown too and at other zooms.
+// A target whose file origin lies far from it is framed whole and large.
 import { test, before, after } from 'node:test';
 import assert from 'node:assert/strict';
 import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
@@ -223,6 +224,47 @@ function assertApart(labels, label) {
     for (let j = i + 1; j < labels.length; j++)
       assert.ok(!overlap(labels[i], labels[j]), `${label}: "${labels[i].text}" and "${labels[j].text}" overlap`);
 }
+
+// A cube whose file coordinates lie far from its own origin, as a part exported from a CAD assembly does.
+function offsetCubeObj([ox, oy, oz], side) {
+  const v = [];
+  for (const x of [0, side]) for (const y of [0, side]) for (const z of [0, side]) v.push(`v ${ox + x} ${oy + y} ${oz + z}`);
+  // Corners numbered 1 + 4x + 2y + z; each face two triangles, outward.
+  const faces = [[1, 2, 4, 3], [5, 7, 8, 6], [1, 5, 6, 2], [3, 4, 8, 7], [1, 3, 7, 5], [2, 6, 8, 4]];
+  const f = faces.flatMap(([a, b, c, d]) => [`f ${a} ${b} ${c}`, `f ${a} ${c} ${d}`]);
+  return [...v, ...f].join('\n') + '\n';
+}
+
+test('a target whose file origin lies far from it is framed whole and large in its pane', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.setInputFiles('#file-input', { name: 'far-part.obj', mimeType: 'text/plain', buffer: Buffer.from(offsetCubeObj([30, 40, -20], 1)) });
+  await page.waitForFunction(() => window.billow.test.panes.target.mesh, null, { timeout: 60000 });
+  await nextFrames(page);
+  const seen = await page.evaluate(() => {
+    const pane = window.billow.test.panes.target;
+    const Vector3 = pane.camera.position.constructor;
+    const r = pane.element.getBoundingClientRect();
+    const box = pane.mesh.geometry.boundingBox.clone().applyMatrix4(pane.mesh.matrixWorld);
+    let left = Infinity, top = Infinity, right = -Infinity, bottom = -Infinity;
+    for (const x of [box.min.x, box.max.x]) for (const y of [box.min.y, box.max.y]) for (const z of [box.min.z, box.max.z]) {
+      const p = new Vector3(x, y, z).project(pane.camera);
+      const sx = r.left + ((p.x + 1) / 2) * r.width, sy = r.top + ((1 - p.y) / 2) * r.height;
+      left = Math.min(left, sx); right = Math.max(right, sx); top = Math.min(top, sy); bottom = Math.max(bottom, sy);
+    }
+    return { model: { left, top, right, bottom }, square: pane.square };
+  });
+  const { model, square } = seen;
+  const inSquare = model.left >= square.left - 1 && model.right <= square.left + square.side + 1
+    && model.top >= square.top - 1 && model.bottom <= square.top + square.side + 1;
+  assert.ok(inSquare, `the cube (${round(model)}) lies in the framed square (${round({ left: square.left, top: square.top, right: square.left + square.side, bottom: square.top + square.side })})`);
+  // The cube's bounding sphere spans the square: its screen box about 0.6 of the side (before, 0.1 in a corner).
+  assert.ok(Math.max(model.right - model.left, model.bottom - model.top) > 0.4 * square.side, `the cube is framed large: ${round(model)} in a square of ${Math.round(square.side)} px`);
+  const centre = [(model.left + model.right) / 2 - square.left - square.side / 2, (model.top + model.bottom) / 2 - square.top - square.side / 2];
+  assert.ok(Math.hypot(...centre) < 0.1 * square.side, `the cube is framed in the middle (off by ${centre.map(Math.round)} px)`);
+  await screenshot(page, 'layout-far-origin');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
 
 test('no two labels of the sheet view overlap: the pieces\', the sheet\'s and the seams\'', async () => {
   const page = await openFreshPage(env.context, env.server.url);

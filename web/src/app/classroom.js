@@ -8,7 +8,8 @@
 // The walk loads its example into the app like the gallery does, so the designer's own design is put
 // aside first: the autosave is paused for the walk (the autosaved design stays as it was), and leaving
 // puts the designer's target, design and undo history back.
-import { Box3, Sphere, Vector3 } from 'three';
+import { Sphere, Vector3 } from 'three';
+import { visibleBox } from '../views/pane3d.js';
 import { parseDesign } from './design.js';
 import { upFrameSize, upOf } from './up-axis.js';
 import { patternForDisplay } from './pattern-session.js';
@@ -105,7 +106,7 @@ function button(text, title, onClick, className = '') {
 // Frames object in a 3D pane seen from `direction`, whole in both directions: the walk's panes are often
 // tall and narrow, where fitting the vertical field of view alone (Pane3D.frame) cuts the sides off.
 function frameView(pane, object, direction = VIEW) {
-  const sphere = new Box3().setFromObject(object).getBoundingSphere(new Sphere());
+  const sphere = visibleBox(object).getBoundingSphere(new Sphere());
   const r = pane.element.getBoundingClientRect();
   if (!(sphere.radius > 0) || !Number.isFinite(sphere.radius) || r.width <= 0 || r.height <= 0) return;
   const half = (pane.camera.fov * Math.PI) / 360;

@@ -9,6 +9,20 @@ import { freeArea, watchOverlays } from './free-area.js';
 
 const DEFAULT_VIEW = new Vector3(0.35, 0.3, 1).normalize(); // from the front, a little right and above
 
+// The world box of what is shown of object: the geometry of its visible descendants. Box3.setFromObject also takes
+// hidden ones, such as the seam cursor at the target's own origin, which for a file whose origin lies far from its
+// shape framed the target small in a corner.
+export function visibleBox(object) {
+  const box = new Box3(), part = new Box3();
+  object.updateWorldMatrix(true, true);
+  object.traverseVisible((o) => {
+    if (!o.geometry) return;
+    if (!o.geometry.boundingBox) o.geometry.computeBoundingBox();
+    box.union(part.copy(o.geometry.boundingBox).applyMatrix4(o.matrixWorld));
+  });
+  return box.isEmpty() ? new Box3().setFromObject(object) : box;
+}
+
 export class Pane3D {
   constructor(element, viewport) {
     this.element = element;
@@ -99,7 +113,7 @@ export class Pane3D {
   // of the pane (fitView), seen from where the camera already looks (a new shape does not undo the designer's
   // turning of the view), or with reset from the default three-quarter front view.
   frame(object, { reset = false } = {}) {
-    const sphere = new Box3().setFromObject(object).getBoundingSphere(new Sphere());
+    const sphere = visibleBox(object).getBoundingSphere(new Sphere());
     if (!Number.isFinite(sphere.radius) || sphere.radius <= 0) return;
     const direction = reset ? this.defaultView(object) : this.viewDirection();
     this.fitView();
