@@ -3,9 +3,12 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
+#include <map>
 
 #include "cube_fixture.hpp"
 #include "handle_shapes.hpp"
+#include "mesh/validate.hpp"
 #include "pattern/design_scene.hpp"
 #include "seams/outline.hpp"
 #include "suggest/seam_layouts.hpp"
@@ -42,6 +45,71 @@ TEST(Outline, TheSphereSeenFromAboveHasItsEquatorForOutline) {
   // Where the normal turns away from the viewer: the equator, within a triangle's height of it.
   for (const SectionPoint& p : outline->loop) EXPECT_LT(std::abs(p.position.z() - middle.z()), 0.06 * r);
   EXPECT_NEAR(loopLength(outline->loop), 2 * test::kPi * r, 0.03 * 2 * test::kPi * r);
+}
+
+// A letter L extruded along z (n x n cells across, t deep), as the boundary of its cells: side walls t rows deep,
+// every wall vertex inside a row seen exactly edge-on from the front.
+TriMesh extrudedL(int n, int t) {
+  const auto filled = [&](int i, int j, int k) {
+    if (i < 0 || j < 0 || k < 0 || i >= n || j >= n || k >= t) return false;
+    const double x = (i + 0.5) / n, y = (j + 0.5) / n;
+    return (x < 0.35 && y < 0.95) || (x < 0.8 && y < 0.3);
+  };
+  std::map<std::array<int, 3>, int> index;
+  std::vector<Eigen::Vector3d> points;
+  std::vector<Eigen::Vector3i> faces;
+  const auto vertex = [&](int i, int j, int k) {
+    const auto [it, added] = index.try_emplace({i, j, k}, int(points.size()));
+    if (added) points.emplace_back(double(i) / n, double(j) / n, double(k) / n);
+    return it->second;
+  };
+  // Each face of a cell that no cell covers, counter-clockwise seen from outside: the corners of the face whose
+  // normal is axis a (sign s), in order.
+  for (int i = 0; i < n; ++i)
+    for (int j = 0; j < n; ++j)
+      for (int k = 0; k < t; ++k) {
+        if (!filled(i, j, k)) continue;
+        for (int a = 0; a < 3; ++a)
+          for (int s : {-1, 1}) {
+            std::array<int, 3> c{i, j, k}, step{0, 0, 0};
+            step[a] = s;
+            if (filled(i + step[0], j + step[1], k + step[2])) continue;
+            const int b = (a + 1) % 3, d = (a + 2) % 3;
+            std::array<std::array<int, 3>, 4> q;
+            for (int m = 0; m < 4; ++m) {
+              q[m] = c;
+              if (s > 0) q[m][a] += 1;
+              q[m][b] += (m == 1 || m == 2), q[m][d] += (m >= 2);
+            }
+            if (s < 0) std::swap(q[1], q[3]);
+            int v[4];
+            for (int m = 0; m < 4; ++m) v[m] = vertex(q[m][0], q[m][1], q[m][2]);
+            faces.emplace_back(v[0], v[1], v[2]), faces.emplace_back(v[0], v[2], v[3]);
+          }
+      }
+  TriMesh m;
+  m.V.resize(long(points.size()), 3), m.F.resize(long(faces.size()), 3);
+  for (size_t v = 0; v < points.size(); ++v) m.V.row(long(v)) = points[v].transpose();
+  for (size_t f = 0; f < faces.size(); ++f) m.F.row(long(f)) = faces[f].transpose();
+  return m;
+}
+
+TEST(Outline, AnExtrudedLetterSeenFromTheFrontIsOutlinedRoundTheMiddleOfItsSideWalls) {
+  TriMesh letter = extrudedL(24, 4);
+  const ValidationReport check = validateTarget(letter);
+  ASSERT_TRUE(check.ok && !check.modified && check.stats.genus == 0);
+  const std::optional<Outline> outline = outlineSeenFrom(letter, Eigen::Vector3d::UnitZ());
+  ASSERT_TRUE(outline.has_value());
+  EXPECT_TRUE(outline->holes.empty());
+  // The walls are 4 rows deep (z 0 to 1/6): the seal runs round their middle, not along the front edge's next row
+  // (z = 1/8, where the rows' exact zeros put it), so the front and the back are mirror images.
+  double mean = 0;
+  for (const SectionPoint& p : outline->loop) {
+    EXPECT_GT(p.position.z(), 0.25 / 6) << p.position.transpose();
+    EXPECT_LT(p.position.z(), 0.75 / 6) << p.position.transpose();
+    mean += p.position.z() / double(outline->loop.size());
+  }
+  EXPECT_NEAR(mean, 0.5 / 6, 0.01);
 }
 
 TEST(Outline, ARingSeenThroughItsHoleHasTwoLoopsAndTwoCutsAcrossIt) {

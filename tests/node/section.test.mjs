@@ -84,6 +84,55 @@ test('the outline of the sphere seen along z is its equator, with nothing turned
   for (const p of outline.loop) assert.ok(Math.abs(p.position[2]) < 0.05, `on the equator: ${p.position}`);
 });
 
+// A letter L extruded along z (n x n cells across, t deep), as the boundary of its cells: side walls t rows deep,
+// every wall vertex inside a row seen exactly edge-on from the front.
+function extrudedL(n, t) {
+  const filled = (i, j, k) => i >= 0 && j >= 0 && k >= 0 && i < n && j < n && k < t
+    && (((i + 0.5) / n < 0.35 && (j + 0.5) / n < 0.95) || ((i + 0.5) / n < 0.8 && (j + 0.5) / n < 0.3));
+  const index = new Map();
+  const positions = [];
+  const indices = [];
+  const vertex = (c) => {
+    const key = c.join(' ');
+    if (!index.has(key)) index.set(key, positions.length / 3), positions.push(...c.map((x) => x / n));
+    return index.get(key);
+  };
+  for (let i = 0; i < n; i++) for (let j = 0; j < n; j++) for (let k = 0; k < t; k++) {
+    if (!filled(i, j, k)) continue;
+    for (let a = 0; a < 3; a++) for (const s of [-1, 1]) {
+      const step = [0, 0, 0];
+      step[a] = s;
+      if (filled(i + step[0], j + step[1], k + step[2])) continue;
+      const b = (a + 1) % 3, d = (a + 2) % 3;
+      const q = [0, 1, 2, 3].map((m) => {
+        const c = [i, j, k];
+        if (s > 0) c[a] += 1;
+        c[b] += m === 1 || m === 2 ? 1 : 0;
+        c[d] += m >= 2 ? 1 : 0;
+        return c;
+      });
+      if (s < 0) [q[1], q[3]] = [q[3], q[1]];
+      const v = q.map(vertex);
+      indices.push(v[0], v[1], v[2], v[0], v[2], v[3]);
+    }
+  }
+  return { positions: Float64Array.from(positions), indices: Uint32Array.from(indices) };
+}
+
+test('an extruded letter seen from the front is outlined round the middle of its side walls', () => {
+  const letter = extrudedL(24, 4);
+  const outline = outlineLoop(letter, [0, 0, 1]);
+  assert.equal(outline.loops, 1);
+  // The walls are 4 rows deep (z 0 to 1/6): the seal runs round their middle, not along the front edge's next row
+  // (z = 1/8, where the rows' exact zeros put it), so the front and the back are mirror images.
+  const z = outline.loop.map((p) => p.position[2]);
+  for (const depth of z) assert.ok(depth > 0.25 / 6 && depth < 0.75 / 6, `round the middle: z ${depth}`);
+  const mean = z.reduce((a, b) => a + b, 0) / z.length;
+  assert.ok(Math.abs(mean - 0.5 / 6) < 0.01, `mean z ${mean}`);
+  run(handlers.setTarget({ positions: letter.positions, indices: letter.indices }));
+  expectClean(letter, outline.loop, 'the extruded L');
+});
+
 test('the largest part an outline moves to the other side is the area of that part, and zero when it moves none', () => {
   const sphere = load('sphere.obj');
   const area = vertexAreas(sphere);

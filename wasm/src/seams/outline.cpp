@@ -1,5 +1,7 @@
 #include "seams/outline.hpp"
 
+#include <Eigen/Sparse>
+#include <Eigen/SparseCholesky>
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -9,24 +11,9 @@ namespace billow {
 namespace {
 
 constexpr double kAwayFromZero = 1e-6;
-
-// Per vertex, n . towards over the area-weighted vertex normal, kept away from zero so the sides read the same here
-// as where the contour is drawn.
-Eigen::VectorXd facingField(const TriMesh& mesh, const Eigen::Vector3d& towards) {
-  Vertices normal = Vertices::Zero(mesh.V.rows(), 3);
-  for (int f = 0; f < mesh.F.rows(); ++f) {
-    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
-    const Eigen::RowVector3d twiceArea = (b - a).cross(c - a).transpose();
-    for (int k = 0; k < 3; ++k) normal.row(mesh.F(f, k)) += twiceArea;
-  }
-  Eigen::VectorXd facing(mesh.V.rows());
-  for (Eigen::Index v = 0; v < facing.size(); ++v) {
-    const double length = normal.row(v).norm();
-    facing[v] = length > 0 ? normal.row(v).dot(towards.transpose()) / length : 0;
-    if (std::abs(facing[v]) < kAwayFromZero) facing[v] = facing[v] > 0 ? kAwayFromZero : -kAwayFromZero;
-  }
-  return facing;
-}
+// A vertex whose normal is within this of square to the view (n . towards, about 3 degrees) lies on a part seen
+// edge-on: a letter's or a box's side wall, a flat sole seen from the side.
+constexpr double kEdgeOn = 0.05;
 
 Eigen::VectorXd vertexAreas(const TriMesh& mesh) {
   Eigen::VectorXd area = Eigen::VectorXd::Zero(mesh.V.rows());
@@ -43,6 +30,70 @@ std::vector<std::vector<int>> vertexNeighbours(const TriMesh& mesh) {
       around[a].push_back(b), around[b].push_back(a);
     }
   return around;
+}
+
+// Where the surface is seen edge-on its facing is zero up to round-off, and the contour would run wherever that
+// round-off put it: along a letter's front edge rather than round the middle of its side wall, back and forth across
+// a flat sole. There the field is interpolated from around (harmonic, uniform weights), so the contour runs midway
+// between the parts that face the viewer and those that face away, as a foil letter's seal does. An edge-on vertex
+// between a part that faces the viewer and one that faces away (a pillow's rim, a star's tip) keeps its value: the
+// contour passes through it.
+void fillEdgeOn(const std::vector<std::vector<int>>& around, Eigen::VectorXd& facing) {
+  const Eigen::Index nv = facing.size();
+  const auto edgeOn = [&](int v) { return std::abs(facing[v]) < kEdgeOn; };
+  std::vector<int> unknown(nv, -1);
+  int count = 0;
+  for (Eigen::Index v = 0; v < nv; ++v) {
+    if (!edgeOn(int(v))) continue;
+    bool front = false, back = false;
+    for (int w : around[v])
+      if (!edgeOn(w)) (facing[w] > 0 ? front : back) = true;
+    if (!(front && back)) unknown[v] = count++;
+  }
+  if (count == 0) return;
+  std::vector<Eigen::Triplet<double>> entries;
+  Eigen::VectorXd rhs = Eigen::VectorXd::Zero(count);
+  for (Eigen::Index v = 0; v < nv; ++v) {
+    if (unknown[v] < 0) continue;
+    std::vector<int> ring = around[v];
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+    // A part seen edge-on all over (no face turned either way around it) stays at zero: the tiny diagonal term.
+    entries.emplace_back(unknown[v], unknown[v], ring.size() + 1e-9);
+    for (int w : ring)
+      if (unknown[w] >= 0)
+        entries.emplace_back(unknown[v], unknown[w], -1.0);
+      else
+        rhs[unknown[v]] += facing[w];
+  }
+  Eigen::SparseMatrix<double> laplacian(count, count);
+  laplacian.setFromTriplets(entries.begin(), entries.end());
+  const Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>> solver(laplacian);
+  const Eigen::VectorXd filled = solver.solve(rhs);
+  if (solver.info() != Eigen::Success || !filled.allFinite()) return;
+  for (Eigen::Index v = 0; v < nv; ++v)
+    if (unknown[v] >= 0)
+      facing[v] = std::abs(filled[unknown[v]]) < kAwayFromZero ? std::copysign(kAwayFromZero, filled[unknown[v]])
+                                                               : filled[unknown[v]];
+}
+
+// Per vertex, n . towards over the area-weighted vertex normal, kept away from zero so the sides read the same here
+// as where the contour is drawn; where seen edge-on, from around (fillEdgeOn).
+Eigen::VectorXd facingField(const TriMesh& mesh, const Eigen::Vector3d& towards) {
+  Vertices normal = Vertices::Zero(mesh.V.rows(), 3);
+  for (int f = 0; f < mesh.F.rows(); ++f) {
+    const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
+    const Eigen::RowVector3d twiceArea = (b - a).cross(c - a).transpose();
+    for (int k = 0; k < 3; ++k) normal.row(mesh.F(f, k)) += twiceArea;
+  }
+  Eigen::VectorXd facing(mesh.V.rows());
+  for (Eigen::Index v = 0; v < facing.size(); ++v) {
+    const double length = normal.row(v).norm();
+    facing[v] = length > 0 ? normal.row(v).dot(towards.transpose()) / length : 0;
+    if (std::abs(facing[v]) < kAwayFromZero) facing[v] = facing[v] > 0 ? kAwayFromZero : -kAwayFromZero;
+  }
+  fillEdgeOn(vertexNeighbours(mesh), facing);
+  return facing;
 }
 
 // Changes the sign of `values` where needed so that its positive and its negative side are each one edge-connected

@@ -261,7 +261,8 @@ export function acrossHandles(mesh, rim, holes, towards) {
   return out;
 }
 
-// Per vertex, n · towards over the vertex normal (area-weighted), kept away from zero.
+// Per vertex, n · towards over the vertex normal (area-weighted), kept away from zero; where seen edge-on, from
+// around (fillEdgeOn).
 function facingField({ positions, indices }, towards) {
   const nv = positions.length / 3;
   const normal = new Float64Array(3 * nv);
@@ -274,9 +275,62 @@ function facingField({ positions, indices }, towards) {
     const n = [normal[3 * v], normal[3 * v + 1], normal[3 * v + 2]];
     facing[v] = (n[0] * towards[0] + n[1] * towards[1] + n[2] * towards[2]) / (Math.hypot(...n) || 1);
     // Away from zero, so the sides read the same here as where the contour is drawn (zeroLoops).
-    if (Math.abs(facing[v]) < 1e-6) facing[v] = facing[v] > 0 ? 1e-6 : -1e-6;
+    if (Math.abs(facing[v]) < AWAY_FROM_ZERO) facing[v] = facing[v] > 0 ? AWAY_FROM_ZERO : -AWAY_FROM_ZERO;
   }
+  fillEdgeOn(vertexNeighbours(indices, nv), facing);
   return facing;
+}
+
+const AWAY_FROM_ZERO = 1e-6;
+// A vertex whose normal is within this of square to the view (n · towards, about 3 degrees) lies on a part seen
+// edge-on: a letter's or a box's side wall, a flat sole seen from the side.
+const EDGE_ON = 0.05;
+
+// Where the surface is seen edge-on its facing is zero up to round-off, and the contour would run wherever that
+// round-off put it: along a letter's front edge rather than round the middle of its side wall, back and forth across
+// a flat sole. There the field is interpolated from around (harmonic, uniform weights; conjugate gradients), so the
+// contour runs midway between the parts that face the viewer and those that face away, as a foil letter's seal
+// does. An edge-on vertex between a part that faces the viewer and one that faces away (a pillow's rim, a star's
+// tip) keeps its value: the contour passes through it. The same rule as seams/outline.cpp's fillEdgeOn.
+function fillEdgeOn(around, facing) {
+  const edgeOn = (v) => Math.abs(facing[v]) < EDGE_ON;
+  const unknown = [];
+  const slot = new Int32Array(facing.length).fill(-1);
+  for (let v = 0; v < facing.length; v++) {
+    if (!edgeOn(v)) continue;
+    const sides = around[v].filter((w) => !edgeOn(w)).map((w) => facing[w] > 0);
+    if (!(sides.includes(true) && sides.includes(false))) (slot[v] = unknown.length), unknown.push(v);
+  }
+  const n = unknown.length;
+  if (n === 0) return;
+  // L x = b over the unknowns: each row its ring's count (plus a hair, for a part edge-on all over) against its
+  // unknown neighbours, the known ones' values on the right.
+  const rings = unknown.map((v) => [...new Set(around[v])]);
+  const diagonal = Float64Array.from(rings, (ring) => ring.length + 1e-9);
+  const b = new Float64Array(n);
+  rings.forEach((ring, i) => { for (const w of ring) if (slot[w] < 0) b[i] += facing[w]; });
+  const apply = (x, out) => {
+    for (let i = 0; i < n; i++) {
+      let sum = diagonal[i] * x[i];
+      for (const w of rings[i]) if (slot[w] >= 0) sum -= x[slot[w]];
+      out[i] = sum;
+    }
+  };
+  // Jacobi-preconditioned conjugate gradients from zero, to a residual of 1e-10 of the right side.
+  const x = new Float64Array(n), r = Float64Array.from(b), z = new Float64Array(n), p = new Float64Array(n), q = new Float64Array(n);
+  for (let i = 0; i < n; i++) (z[i] = r[i] / diagonal[i]), (p[i] = z[i]);
+  let rz = r.reduce((s, ri, i) => s + ri * z[i], 0);
+  const stop = 1e-20 * b.reduce((s, bi) => s + bi * bi, 0);
+  for (let k = 0; k < 10 * n && r.reduce((s, ri) => s + ri * ri, 0) > stop; k++) {
+    apply(p, q);
+    const alpha = rz / p.reduce((s, pi, i) => s + pi * q[i], 0);
+    for (let i = 0; i < n; i++) (x[i] += alpha * p[i]), (r[i] -= alpha * q[i]), (z[i] = r[i] / diagonal[i]);
+    const next = r.reduce((s, ri, i) => s + ri * z[i], 0);
+    for (let i = 0; i < n; i++) p[i] = z[i] + (next / rz) * p[i];
+    rz = next;
+  }
+  if (!x.every(Number.isFinite)) return;
+  unknown.forEach((v, i) => { facing[v] = Math.abs(x[i]) < AWAY_FROM_ZERO ? Math.sign(x[i] || 1) * AWAY_FROM_ZERO : x[i]; });
 }
 
 // Changes the sign of a field given at the vertices (values, changed in place) where needed so that its positive
