@@ -248,6 +248,30 @@ test('the outline of a mug seen with its handle towards the viewer comes with th
   await page.close();
 });
 
+test('a band laid around the outline of a mug comes with the seams that make every part a panel, in one step', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.setInputFiles('#file-input', { name: 'mug.obj', mimeType: 'text/plain', buffer: Buffer.from(mugObj()) });
+  await page.waitForFunction(() => window.billow.test.target?.fileName === 'mug.obj' && window.billow.test.panes.target.mesh);
+  await lookFrom(page, [1, 0, 0]);
+  await page.fill('.section-band input', '40');
+  await page.press('.section-band input', 'Enter');
+  await page.click('#seam-panel button.outline');
+  // Before, the band alone: the front and the back rings, tubes that no seam opened, and a note that said one would.
+  await page.waitForFunction(() => window.billow.test.design.seams.length > 3 && window.billow.test.segmentation?.segments?.every((s) => s.isDisk), null, { timeout: 60000 });
+  const names = await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name ?? ''));
+  assert.ok(names.slice(0, 3).every((n) => /^Band 40 mm/.test(n)), names.join(', '));
+  assert.ok(names.slice(3).every((n) => /^A (cut that opens a tube|seam around a handle)$/.test(n)), names.join(', '));
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
+  const note = page.locator('.message.notice', { hasText: 'to make every part a panel' });
+  await note.waitFor({ timeout: 10000 });
+  assert.match(await note.textContent(), /to make every part a panel: .*(tube|handle)/);
+  await screenshot(page, 'flat-cut-outline-band-mug');
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 test('a sheet narrower than a piece: the pattern pane offers the width that fits, in one click', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await page.evaluate(() => window.billow.test.openGalleryDesign('koala'));

@@ -277,9 +277,13 @@ export class SeamTool {
     const notes = [];
     if (laid.absorbed)
       notes.push(`${laid.absorbed} narrow ${laid.absorbed === 1 ? 'part' : 'parts'} of the front or back (thinner than the band: a tail, an ear) went into the band`);
-    if (laid.outline.loops > 1) notes.push(`the shape has a handle: the band follows the longest loop of the outline; a seam across the handle opens it`);
+    if (laid.outline.loops > 1) notes.push('the shape has a handle: the band follows the longest loop of the outline');
     const note = notes.length ? `Band laid around the outline as seen from here: ${notes.join('; ')}.` : null;
-    this.app.commitLoops(laid.loops, { names: bandNames('outline', this.bandWidth), across: band.origin, band, note });
+    const laying = { names: bandNames('outline', this.bandWidth), across: band.origin, band, note };
+    // On a shape with handles the front or the back may be a ring, or hold a handle: the seams that open them
+    // come with the band, as with the outline alone; the band's own seams stay whole.
+    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(laid.loops, { ...laying, keepLaid: true });
+    this.app.commitLoops(laid.loops, laying);
   }
 
   // A direction in the view (world) as one in the target's own coordinates.
