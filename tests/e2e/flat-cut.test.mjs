@@ -227,49 +227,48 @@ function mugObj() {
   return lines.join('\n');
 }
 
-test('the outline of a mug seen with its handle towards the viewer comes with the seams that make every part a panel, in one step', async () => {
+// The generated mug opened and seen with its handle towards the viewer.
+async function mugSeenAlongItsHandle() {
   const page = await openFreshPage(env.context, env.server.url);
   await page.setInputFiles('#file-input', { name: 'mug.obj', mimeType: 'text/plain', buffer: Buffer.from(mugObj()) });
   await page.waitForFunction(() => window.billow.test.target?.fileName === 'mug.obj' && window.billow.test.panes.target.mesh);
   await lookFrom(page, [1, 0, 0]);
-  await page.keyboard.press('o');
-  await page.waitForFunction(() => window.billow.test.design.seams.length > 1 && window.billow.test.segmentation?.segments?.every((s) => s.isDisk), null, { timeout: 60000 });
+  return page;
+}
+
+// After `laid` seams were laid in one action: the seams that open its parts follow them, every part is a panel, the
+// note `noteText` says what was added, and one undo takes them all away.
+async function expectOpenedIntoPanels(page, laid, noteText, shot) {
+  await page.waitForFunction((n) => window.billow.test.design.seams.length > n && window.billow.test.segmentation?.segments?.every((s) => s.isDisk), laid, { timeout: 60000 });
   const names = await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name ?? ''));
-  assert.ok(names.slice(1).every((n) => /^A (cut that opens a tube|seam around a handle)$/.test(n)), names.join(', '));
+  assert.ok(names.slice(laid).every((n) => /^A (cut that opens a tube|seam around a handle)$/.test(n)), names.join(', '));
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
-  const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
+  const note = page.locator('.message.notice', { hasText: noteText });
   await note.waitFor({ timeout: 10000 });
   assert.match(await note.textContent(), /to make every part a panel: .*(tube|handle)/);
-  await screenshot(page, 'flat-cut-outline-mug');
-  // One step of the history: undo takes the outline and what opened its parts away together.
+  await screenshot(page, shot);
   await page.click('#undo-button');
   await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
   assert.deepEqual(page.errors, []);
   await page.close();
+}
+
+test('the outline of a mug seen with its handle towards the viewer comes with the seams that make every part a panel, in one step', async () => {
+  const page = await mugSeenAlongItsHandle();
+  await page.keyboard.press('o');
+  await expectOpenedIntoPanels(page, 1, 'Outline seam laid as seen from here', 'flat-cut-outline-mug');
 });
 
 test('a band laid around the outline of a mug comes with the seams that make every part a panel, in one step', async () => {
-  const page = await openFreshPage(env.context, env.server.url);
-  await page.setInputFiles('#file-input', { name: 'mug.obj', mimeType: 'text/plain', buffer: Buffer.from(mugObj()) });
-  await page.waitForFunction(() => window.billow.test.target?.fileName === 'mug.obj' && window.billow.test.panes.target.mesh);
-  await lookFrom(page, [1, 0, 0]);
+  const page = await mugSeenAlongItsHandle();
   await page.fill('.section-band input', '40');
   await page.press('.section-band input', 'Enter');
   await page.click('#seam-panel button.outline');
-  // Before, the band alone: the front and the back rings, tubes that no seam opened, and a note that said one would.
-  await page.waitForFunction(() => window.billow.test.design.seams.length > 3 && window.billow.test.segmentation?.segments?.every((s) => s.isDisk), null, { timeout: 60000 });
-  const names = await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name ?? ''));
-  assert.ok(names.slice(0, 3).every((n) => /^Band 40 mm/.test(n)), names.join(', '));
-  assert.ok(names.slice(3).every((n) => /^A (cut that opens a tube|seam around a handle)$/.test(n)), names.join(', '));
-  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
-  const note = page.locator('.message.notice', { hasText: 'to make every part a panel' });
-  await note.waitFor({ timeout: 10000 });
-  assert.match(await note.textContent(), /to make every part a panel: .*(tube|handle)/);
-  await screenshot(page, 'flat-cut-outline-band-mug');
-  await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
-  assert.deepEqual(page.errors, []);
-  await page.close();
+  // Before, the band alone: the front and the back, tubes that no seam opened, and a note that said one would.
+  await page.waitForFunction(() => window.billow.test.design.seams.length >= 3);
+  const band = await page.evaluate(() => window.billow.test.design.seams.slice(0, 3).map((s) => s.name ?? ''));
+  assert.ok(band.every((n) => /^Band 40 mm/.test(n)), band.join(', '));
+  await expectOpenedIntoPanels(page, 3, 'to make every part a panel', 'flat-cut-outline-band-mug');
 });
 
 test('a sheet narrower than a piece: the pattern pane offers the width that fits, in one click', async () => {
