@@ -189,9 +189,9 @@ test('the docked boxes and the messages leave the target, the inflated shape and
   await page.click(seams);
   assert.equal(await page.getAttribute(seams, 'aria-expanded'), 'false');
   assert.equal(await page.isVisible('#seam-panel'), false);
-  await nextFrames(page);
+  // The pattern pane frames its pieces again for the narrower window a few frames later on a loaded machine.
+  await clearWithin(page, 'target boxes closed');
   const closed = await framing(page);
-  assertClear(closed, 'target boxes closed');
   const size = (r) => Math.max(r.right - r.left, r.bottom - r.top);
   assert.ok(size(closed.target.model) > size(before.target.model) * 1.05, `the target has more room: ${round(before.target.model)} -> ${round(closed.target.model)}`);
   await screenshot(page, 'layout-koala-target-boxes-closed');
