@@ -16,7 +16,7 @@ TEST(Materials, PresetsAreSensibleAndFoilIsTheDefault) {
     EXPECT_GT(p.material.youngsModulus, 1e6) << p.material.name;
     EXPECT_LT(p.material.youngsModulus, 1e10) << p.material.name;
     EXPECT_GT(p.material.density, 100) << p.material.name;
-    EXPECT_GT(p.maxStress, 1e6) << p.material.name;
+    EXPECT_GT(p.strength, 1e6) << p.material.name;
     EXPECT_FALSE(p.label.empty());
     EXPECT_EQ(findMaterialPreset(p.material.name), &p);
   }

@@ -244,12 +244,13 @@ test('a foil sphere floats on helium when its envelope is lighter than the lift'
   // Two 1 m x 1 m square panels of 25 µm foil (1150 kg/m³): 2 m² x 25e-6 m x 1150 = 57.5 g.
   const square = { vertices: [[0, 0], [1, 0], [1, 1], [0, 1]], triangles: [[0, 1, 2], [0, 2, 3]] };
   const pattern = { material: { name: 'foil', thickness: 25e-6, youngs_modulus: 3e9 }, panels: [square, square] };
-  const big = balloonFigures(pattern, 0.1, 20e6); // 100 L of helium lifts 103.8 g
+  const big = balloonFigures(pattern, 0.1, 40e6); // 100 L of helium lifts 103.8 g
   assert.ok(Math.abs(big.massGrams - 57.5) < 1e-9);
   assert.ok(Math.abs(big.liftGrams - 103.8) < 1e-9);
   assert.equal(big.floats, true);
-  assert.equal(big.safetyFactor, 2); // foil's working stress 40 MPa over 20 MPa
-  const small = balloonFigures(pattern, 0.04, 50e6);
+  assert.equal(big.safetyFactor, 2); // foil's strength 80 MPa over 40 MPa, its safe working stress
+  assert.match(Object.fromEntries(balloonRows(big))['Safety factor'], /^2\.0$/);
+  const small = balloonFigures(pattern, 0.04, 90e6);
   assert.equal(small.floats, false);
   const rows = Object.fromEntries(balloonRows(small));
   assert.match(rows['Helium lift'], /does not float/);

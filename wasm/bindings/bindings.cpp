@@ -107,7 +107,7 @@ void crashForTesting() { std::abort(); }
 
 std::string version() { return "0.1.0"; }
 
-// [{ name, label, thickness [m], youngs_modulus [Pa], density [kg/m^3], max_stress [Pa] }]
+// [{ name, label, thickness [m], youngs_modulus [Pa], density [kg/m^3], strength [Pa] }]
 std::string materialPresets() {
   return guarded([&] {
     nlohmann::json out = nlohmann::json::array();
@@ -117,7 +117,7 @@ std::string materialPresets() {
                      {"thickness", p.material.thickness},
                      {"youngs_modulus", p.material.youngsModulus},
                      {"density", p.material.density},
-                     {"max_stress", p.maxStress}});
+                     {"strength", p.strength}});
     return out.dump();
   });
 }

@@ -7,14 +7,14 @@ namespace billow {
 namespace {
 
 MaterialPreset preset(const char* name, const char* label, double thickness, double youngs, double density,
-                      double maxStress) {
+                      double strength) {
   MaterialPreset p;
   p.material.name = name;
   p.material.thickness = thickness;
   p.material.youngsModulus = youngs;
   p.material.density = density;
   p.label = label;
-  p.maxStress = maxStress;
+  p.strength = strength;
   return p;
 }
 
@@ -22,10 +22,10 @@ MaterialPreset preset(const char* name, const char* label, double thickness, dou
 
 const std::vector<MaterialPreset>& materialPresets() {
   static const std::vector<MaterialPreset> presets = {
-      preset("foil", "Foil (metallized nylon, 25 \xC2\xB5m)", 25e-6, 3.0e9, 1150, 40e6),
-      preset("pvc", "PVC sheet (0.3 mm)", 0.3e-3, 20e6, 1300, 8e6),
-      preset("ripstop", "Coated ripstop nylon (0.1 mm)", 0.1e-3, 1.0e9, 700, 60e6),
-      preset("tpu", "TPU film (0.2 mm)", 0.2e-3, 25e6, 1200, 15e6),
+      preset("foil", "Foil (metallized nylon, 25 \xC2\xB5m)", 25e-6, 3.0e9, 1150, 80e6),
+      preset("pvc", "PVC sheet (0.3 mm)", 0.3e-3, 20e6, 1300, 16e6),
+      preset("ripstop", "Coated ripstop nylon (0.1 mm)", 0.1e-3, 1.0e9, 700, 120e6),
+      preset("tpu", "TPU film (0.2 mm)", 0.2e-3, 25e6, 1200, 30e6),
   };
   return presets;
 }

@@ -12,7 +12,7 @@ namespace billow {
 struct MaterialPreset {
   Material material;  // name, thickness [m], Young's modulus [Pa], density [kg/m^3]
   std::string label;  // what the designer reads: "Foil (metallized nylon, 25 µm)"
-  double maxStress;   // [Pa] a safe working stress (about half the yield or tear strength)
+  double strength;    // [Pa] where the sheet tears or its seal gives way; safe in use at half of it
 };
 
 // foil, pvc, ripstop, tpu; the first is the default (Material{}'s values).

@@ -232,7 +232,7 @@ export function balloonFigures(pattern, volume, maxStress) {
   const material = pattern.material ?? {};
   const preset = findMaterialPreset(material.name);
   const density = material.density ?? preset?.density;
-  const strength = preset?.max_stress;
+  const strength = preset?.strength;
   const sheetArea = pattern.panels.reduce((sum, p) => sum + panelArea(p), 0);
   const massGrams = density ? sheetArea * material.thickness * density * 1000 : null;
   const liftGrams = volume * (AIR_DENSITY - HELIUM_DENSITY) * 1000;

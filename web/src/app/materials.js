@@ -2,10 +2,10 @@
 // test compares the two); the design stores the figures as well as the name, so a design made with a
 // preset keeps its material if the preset's figures change.
 export const MATERIAL_PRESETS = Object.freeze([
-  { name: 'foil', label: 'Foil (metallized nylon, 25 µm)', thickness: 25e-6, youngs_modulus: 3.0e9, density: 1150, max_stress: 40e6 },
-  { name: 'pvc', label: 'PVC sheet (0.3 mm)', thickness: 0.3e-3, youngs_modulus: 20e6, density: 1300, max_stress: 8e6 },
-  { name: 'ripstop', label: 'Coated ripstop nylon (0.1 mm)', thickness: 0.1e-3, youngs_modulus: 1.0e9, density: 700, max_stress: 60e6 },
-  { name: 'tpu', label: 'TPU film (0.2 mm)', thickness: 0.2e-3, youngs_modulus: 25e6, density: 1200, max_stress: 15e6 },
+  { name: 'foil', label: 'Foil (metallized nylon, 25 µm)', thickness: 25e-6, youngs_modulus: 3.0e9, density: 1150, strength: 80e6 },
+  { name: 'pvc', label: 'PVC sheet (0.3 mm)', thickness: 0.3e-3, youngs_modulus: 20e6, density: 1300, strength: 16e6 },
+  { name: 'ripstop', label: 'Coated ripstop nylon (0.1 mm)', thickness: 0.1e-3, youngs_modulus: 1.0e9, density: 700, strength: 120e6 },
+  { name: 'tpu', label: 'TPU film (0.2 mm)', thickness: 0.2e-3, youngs_modulus: 25e6, density: 1200, strength: 30e6 },
 ]);
 
 export const DEFAULT_MATERIAL = 'foil';
@@ -23,7 +23,7 @@ export function findMaterialPreset(name) {
 
 // The design's material object for a preset: { name, thickness, youngs_modulus, density }.
 export function presetMaterial(name) {
-  const { label, max_stress, ...material } = findMaterialPreset(name) ?? findMaterialPreset(DEFAULT_MATERIAL);
+  const { label, strength, ...material } = findMaterialPreset(name) ?? findMaterialPreset(DEFAULT_MATERIAL);
   return material;
 }
 

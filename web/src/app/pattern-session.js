@@ -126,7 +126,7 @@ export class PatternSession {
     this.store.working('inflation', +1);
     try {
       const result = await call.promise;
-      this.panes.inflated.setStrength(findMaterialPreset(display.material?.name)?.max_stress ?? null);
+      this.panes.inflated.setStrength(findMaterialPreset(display.material?.name)?.strength ?? null);
       this.panes.inflated.setResult(result, { frame: !shown });
       this.store.show({ inflated: result });
       const seconds = ((performance.now() - started) / 1000).toFixed(1);

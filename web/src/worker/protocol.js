@@ -69,7 +69,7 @@ export const Op = Object.freeze({
   // signed distance of each point to the target (positive outside), for the inflated pane's "distance to
   // target" colors; rms and max over the diagonal, of the outer surface's vertices when triangles/outer are given.
   distanceToTarget: 'distanceToTarget',
-  // {} -> [{ name, label, thickness, youngs_modulus, density, max_stress }]: the material presets.
+  // {} -> [{ name, label, thickness, youngs_modulus, density, strength }]: the material presets.
   materialPresets: 'materialPresets',
   // {} -> { heapBytes, probe }: the wasm memory's size and where a fresh 1 MB block lands (the top of the
   // allocator's used memory: it rises when anything leaks). For soak tests and the curious.

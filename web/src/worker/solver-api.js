@@ -39,7 +39,7 @@ export class SolverApi {
     return { heapBytes: this.module.HEAPU8.length, probe, inUse: this.module.bytesInUse() };
   }
 
-  // [{ name, label, thickness, youngs_modulus, density, max_stress }] (wasm/src/simulate/materials.cpp)
+  // [{ name, label, thickness, youngs_modulus, density, strength }] (wasm/src/simulate/materials.cpp)
   materialPresets() {
     return SolverApi.unwrap(this.module.materialPresets());
   }
