@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <map>
+#include <utility>
 
 namespace billow {
 
@@ -153,13 +155,93 @@ bool splitInTwo(const TriMesh& mesh, Eigen::VectorXd& values, Outline& out) {
   return true;
 }
 
+double totalLength(const std::vector<SectionLoop>& loops) {
+  double sum = 0;
+  for (const SectionLoop& loop : loops) sum += loopLength(loop);
+  return sum;
+}
+
+// Where the surface is seen nearly edge-on the contour's depth is ill-set: across a flat base seen from the side, or
+// along a coarse mesh's long triangles, it bends around a single vertex whose value is near zero (one a pinch moved,
+// one that kept its zero beside a part that changed sides), and back: a spike in depth that the seam, and a foil
+// piece cut along it, would follow. The vertex a spike's tip lies nearest takes the mean of its neighbours on its
+// side, which moves the crossings off it, and the contour is traced again; a move is kept where the contour got
+// shorter (a vertex moved can also send it round another way), the largest spikes first, for a few rounds. A spike is a
+// point whose neighbours on the loop are closer to each other than half its distance from them (a turn of more than 90
+// degrees) and that stands off their chord, across the view, by less than a quarter of that: a sharp turn seen from the
+// front (a star's tip, a letter's corner) is the outline itself. Signs do not change, so the sides stay as splitInTwo
+// left them. The same rule as web/src/app/section.js's fairInDepth.
+constexpr int kFairRounds = 4, kFairTries = 16;
+std::vector<SectionLoop> fairInDepth(const TriMesh& mesh, Eigen::VectorXd& values, const Eigen::Vector3d& towards) {
+  std::vector<std::vector<int>> around = vertexNeighbours(mesh);
+  for (std::vector<int>& ring : around) {
+    std::sort(ring.begin(), ring.end());
+    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
+  }
+  const auto across = [&](const Eigen::Vector3d& d) -> Eigen::Vector3d { return d - d.dot(towards) * towards; };
+  std::vector<SectionLoop> loops = zeroLoops(mesh, values);
+  int tries = 0;
+  for (int round = 0; round < kFairRounds; ++round) {
+    std::map<int, double> tips;  // vertex -> how far its spike stands off
+    for (const SectionLoop& loop : loops) {
+      // The loop without repeats (a crossing at a vertex is listed once per edge it ends, one near a vertex nearly so).
+      const double apart = 1e-3 * loopLength(loop) / double(loop.size());
+      std::vector<const SectionPoint*> points;
+      for (size_t i = 0; i < loop.size(); ++i)
+        if ((loop[i].position - loop[(i + 1) % loop.size()].position).norm() > apart) points.push_back(&loop[i]);
+      const size_t n = points.size();
+      if (n < 4) continue;
+      for (size_t i = 0; i < n; ++i) {
+        const Eigen::Vector3d& a = points[(i + n - 1) % n]->position;
+        const Eigen::Vector3d& tip = points[i]->position;
+        const Eigen::Vector3d& b = points[(i + 1) % n]->position;
+        const Eigen::Vector3d chord = b - a, off = tip - a;
+        const double t = std::clamp(off.dot(chord) / std::max(chord.squaredNorm(), 1e-300), 0.0, 1.0);
+        const double stand = (off - t * chord).norm();
+        if (!(stand > 0.5 * chord.norm() + 1e-12)) continue;
+        // Across the view: the tip's distance from the chord's line as seen from `towards`.
+        const Eigen::Vector3d c = across(chord), o = across(off);
+        const double seen = c.norm() > 1e-12 ? (o - o.dot(c) / c.squaredNorm() * c).norm() : o.norm();
+        if (seen >= 0.25 * stand) continue;
+        Eigen::Index k;
+        points[i]->at.bary.maxCoeff(&k);
+        double& largest = tips[mesh.F(points[i]->at.face, int(k))];
+        largest = std::max(largest, stand);
+      }
+    }
+    // The largest spikes first, each kept where it shortens the contour.
+    std::vector<std::pair<int, double>> order(tips.begin(), tips.end());
+    std::stable_sort(order.begin(), order.end(), [](const auto& p, const auto& q) { return p.second > q.second; });
+    bool changed = false;
+    for (const auto& [v, stand] : order) {
+      if (tries >= kFairTries) break;
+      double sum = 0;
+      int count = 0;
+      for (int w : around[v])
+        if ((values[w] > 0) == (values[v] > 0)) sum += values[w], ++count;
+      const double mean = sum / std::max(count, 1);
+      if (!(std::abs(mean) > std::abs(values[v]))) continue;
+      ++tries;
+      const double kept = values[v];
+      values[v] = mean;
+      std::vector<SectionLoop> traced = zeroLoops(mesh, values);
+      if (totalLength(traced) < totalLength(loops))
+        loops = std::move(traced), changed = true;
+      else
+        values[v] = kept;
+    }
+    if (!changed) break;
+  }
+  return loops;
+}
+
 }  // namespace
 
 std::optional<Outline> outlineSeenFrom(const TriMesh& mesh, const Eigen::Vector3d& towards) {
   Eigen::VectorXd facing = facingField(mesh, towards);
   Outline out;
   if (!splitInTwo(mesh, facing, out)) return std::nullopt;
-  std::vector<SectionLoop> loops = zeroLoops(mesh, facing);
+  std::vector<SectionLoop> loops = fairInDepth(mesh, facing, towards);
   if (loops.empty()) return std::nullopt;
   const auto longest = std::max_element(loops.begin(), loops.end(), [](const SectionLoop& a, const SectionLoop& b) {
     return loopLength(a) < loopLength(b);

@@ -186,7 +186,7 @@ export function outlineLoop(mesh, towards) {
   const facing = facingField(mesh, towards);
   const split = splitInTwo(mesh, facing);
   if (!split) return null;
-  const loops = zeroLoops(mesh, facing);
+  const loops = fairInDepth(mesh, facing, towards);
   if (!loops.length) return null;
   const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
   return { loop, holes: loops.filter((l) => l !== loop), toBack: split.toNegative, toFront: split.toPositive, largestMoved: movedShare(split), loops: loops.length, facing };
@@ -282,6 +282,71 @@ function facingField({ positions, indices }, towards) {
 }
 
 const AWAY_FROM_ZERO = 1e-6;
+
+// Where the surface is seen nearly edge-on the contour's depth is ill-set: across a flat base seen from the side, or
+// along a coarse mesh's long triangles, it bends around a single vertex whose value is near zero (one a pinch moved,
+// one that kept its zero beside a part that changed sides), and back: a spike in depth that the seam, and a foil
+// piece cut along it, would follow. The vertex a spike's tip lies nearest takes the mean of its neighbours on its
+// side, which moves the crossings off it, and the contour is traced again; a move is kept where the contour got shorter
+// (a vertex moved can also send it round another way), the largest spikes first, for a few rounds. A spike is a point whose neighbours on the loop are closer to
+// each other than half its distance from them (a turn of more than 90 degrees) and that stands off their chord,
+// across the view, by less than a quarter of that: a sharp turn seen from the front (a star's tip, a letter's
+// corner) is the outline itself. Signs do not change, so the sides stay as splitInTwo left them. The same rule as
+// seams/outline.cpp's fairInDepth.
+const FAIR_ROUNDS = 4;
+const FAIR_TRIES = 16;
+function fairInDepth(mesh, values, towards) {
+  const { indices } = mesh;
+  const around = vertexNeighbours(indices, values.length).map((ring) => [...new Set(ring)]);
+  const across = (d) => { const t = d[0] * towards[0] + d[1] * towards[1] + d[2] * towards[2]; return d.map((x, c) => x - t * towards[c]); };
+  const norm = (d) => Math.hypot(d[0], d[1], d[2]);
+  const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
+  let loops = zeroLoops(mesh, values);
+  let tries = 0;
+  for (let round = 0; round < FAIR_ROUNDS; round++) {
+    const tips = new Map(); // vertex -> how far its spike stands off
+    for (const loop of loops) {
+      // The loop without repeats (a crossing at a vertex is listed once per edge it ends, one near a vertex nearly so).
+      const apart = 1e-3 * loopLength(loop) / loop.length;
+      const points = loop.filter((p, i) => norm(sub(p.position, loop[(i + 1) % loop.length].position)) > apart);
+      const n = points.length;
+      if (n < 4) continue;
+      for (let i = 0; i < n; i++) {
+        const a = points[(i + n - 1) % n].position, tip = points[i].position, b = points[(i + 1) % n].position;
+        const chord = sub(b, a);
+        const off = sub(tip, a);
+        const t = Math.min(1, Math.max(0, (off[0] * chord[0] + off[1] * chord[1] + off[2] * chord[2]) / Math.max(norm(chord) ** 2, 1e-300)));
+        const stand = norm(sub(off, chord.map((x) => t * x)));
+        if (!(stand > 0.5 * norm(chord) + 1e-12)) continue;
+        // Across the view: the tip's distance from the chord's line as seen from `towards`.
+        const c = across(chord), o = across(off), cc = norm(c);
+        const seen = cc > 1e-12 ? norm(sub(o, c.map((x) => ((o[0] * c[0] + o[1] * c[1] + o[2] * c[2]) / (cc * cc)) * x))) : norm(o);
+        if (seen >= 0.25 * stand) continue;
+        const { face, bary } = points[i];
+        const v = indices[3 * face + bary.indexOf(Math.max(...bary))];
+        tips.set(v, Math.max(tips.get(v) ?? 0, stand));
+      }
+    }
+    // The largest spikes first, each kept where it shortens the contour.
+    let changed = false;
+    for (const [v] of [...tips].sort((p, q) => q[1] - p[1] || p[0] - q[0])) {
+      if (tries >= FAIR_TRIES) break;
+      const side = around[v].filter((w) => values[w] > 0 === values[v] > 0);
+      const mean = side.reduce((sum, w) => sum + values[w], 0) / Math.max(side.length, 1);
+      if (!(Math.abs(mean) > Math.abs(values[v]))) continue;
+      tries++;
+      const kept = values[v];
+      values[v] = mean;
+      const traced = zeroLoops(mesh, values);
+      if (totalLength(traced) < totalLength(loops)) (loops = traced), (changed = true);
+      else values[v] = kept;
+    }
+    if (!changed) break;
+  }
+  return loops;
+}
+
+const totalLength = (loops) => loops.reduce((sum, loop) => sum + loopLength(loop), 0);
 // A vertex whose normal is within this of square to the view (n · towards, about 3 degrees) lies on a part seen
 // edge-on: a letter's or a box's side wall, a flat sole seen from the side.
 const EDGE_ON = 0.05;
