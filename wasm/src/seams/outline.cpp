@@ -164,13 +164,13 @@ double totalLength(const std::vector<SectionLoop>& loops) {
 // Where the surface is seen nearly edge-on the contour's depth is ill-set: across a flat base seen from the side, or
 // along a coarse mesh's long triangles, it bends around a single vertex whose value is near zero (one a pinch moved,
 // one that kept its zero beside a part that changed sides), and back: a spike in depth that the seam, and a foil
-// piece cut along it, would follow. The vertex a spike's tip lies nearest takes the mean of its neighbours on its
-// side, which moves the crossings off it, and the contour is traced again; a move is kept where the contour got
-// shorter (a vertex moved can also send it round another way), the largest spikes first, for a few rounds. A spike is a
-// point whose neighbours on the loop are closer to each other than half its distance from them (a turn of more than 90
-// degrees) and that stands off their chord, across the view, by less than a quarter of that: a sharp turn seen from the
-// front (a star's tip, a letter's corner) is the outline itself. Signs do not change, so the sides stay as splitInTwo
-// left them. The same rule as web/src/app/section.js's fairInDepth.
+// piece cut along it, would follow. The vertex a spike's tip lies nearest takes the largest value of its neighbours on
+// its side, which moves the crossings off it as far as they allow, and the contour is traced again; a move is kept
+// where the contour got shorter (a vertex moved can also send it round another way), the largest spikes first, for a
+// few rounds. A spike is a point whose neighbours on the loop are closer to each other than half its distance from
+// them (a turn of more than 90 degrees) and that stands off their chord, across the view, by less than a quarter of
+// that: a sharp turn seen from the front (a star's tip, a letter's corner) is the outline itself. Signs do not change,
+// so the sides stay as splitInTwo left them. The same rule as web/src/app/section.js's fairInDepth.
 constexpr int kFairRounds = 4, kFairTries = 16;
 std::vector<SectionLoop> fairInDepth(const TriMesh& mesh, Eigen::VectorXd& values, const Eigen::Vector3d& towards) {
   std::vector<std::vector<int>> around = vertexNeighbours(mesh);
@@ -215,15 +215,13 @@ std::vector<SectionLoop> fairInDepth(const TriMesh& mesh, Eigen::VectorXd& value
     bool changed = false;
     for (const auto& [v, stand] : order) {
       if (tries >= kFairTries) break;
-      double sum = 0;
-      int count = 0;
+      double largest = 0;
       for (int w : around[v])
-        if ((values[w] > 0) == (values[v] > 0)) sum += values[w], ++count;
-      const double mean = sum / std::max(count, 1);
-      if (!(std::abs(mean) > std::abs(values[v]))) continue;
+        if ((values[w] > 0) == (values[v] > 0) && std::abs(values[w]) > std::abs(largest)) largest = values[w];
+      if (!(std::abs(largest) > std::abs(values[v]))) continue;
       ++tries;
       const double kept = values[v];
-      values[v] = mean;
+      values[v] = largest;
       std::vector<SectionLoop> traced = zeroLoops(mesh, values);
       if (totalLength(traced) < totalLength(loops))
         loops = std::move(traced), changed = true;

@@ -286,13 +286,13 @@ const AWAY_FROM_ZERO = 1e-6;
 // Where the surface is seen nearly edge-on the contour's depth is ill-set: across a flat base seen from the side, or
 // along a coarse mesh's long triangles, it bends around a single vertex whose value is near zero (one a pinch moved,
 // one that kept its zero beside a part that changed sides), and back: a spike in depth that the seam, and a foil
-// piece cut along it, would follow. The vertex a spike's tip lies nearest takes the mean of its neighbours on its
-// side, which moves the crossings off it, and the contour is traced again; a move is kept where the contour got shorter
-// (a vertex moved can also send it round another way), the largest spikes first, for a few rounds. A spike is a point whose neighbours on the loop are closer to
-// each other than half its distance from them (a turn of more than 90 degrees) and that stands off their chord,
-// across the view, by less than a quarter of that: a sharp turn seen from the front (a star's tip, a letter's
-// corner) is the outline itself. Signs do not change, so the sides stay as splitInTwo left them. The same rule as
-// seams/outline.cpp's fairInDepth.
+// piece cut along it, would follow. The vertex a spike's tip lies nearest takes the largest value of its neighbours on
+// its side, which moves the crossings off it as far as they allow, and the contour is traced again; a move is kept
+// where the contour got shorter (a vertex moved can also send it round another way), the largest spikes first, for a
+// few rounds. A spike is a point whose neighbours on the loop are closer to each other than half its distance from
+// them (a turn of more than 90 degrees) and that stands off their chord, across the view, by less than a quarter of
+// that: a sharp turn seen from the front (a star's tip, a letter's corner) is the outline itself. Signs do not change,
+// so the sides stay as splitInTwo left them. The same rule as seams/outline.cpp's fairInDepth.
 const FAIR_ROUNDS = 4;
 const FAIR_TRIES = 16;
 function fairInDepth(mesh, values, towards) {
@@ -332,11 +332,11 @@ function fairInDepth(mesh, values, towards) {
     for (const [v] of [...tips].sort((p, q) => q[1] - p[1] || p[0] - q[0])) {
       if (tries >= FAIR_TRIES) break;
       const side = around[v].filter((w) => values[w] > 0 === values[v] > 0);
-      const mean = side.reduce((sum, w) => sum + values[w], 0) / Math.max(side.length, 1);
-      if (!(Math.abs(mean) > Math.abs(values[v]))) continue;
+      const largest = side.reduce((best, w) => (Math.abs(values[w]) > Math.abs(best) ? values[w] : best), 0);
+      if (!(Math.abs(largest) > Math.abs(values[v]))) continue;
       tries++;
       const kept = values[v];
-      values[v] = mean;
+      values[v] = largest;
       const traced = zeroLoops(mesh, values);
       if (totalLength(traced) < totalLength(loops)) (loops = traced), (changed = true);
       else values[v] = kept;
@@ -347,6 +347,7 @@ function fairInDepth(mesh, values, towards) {
 }
 
 const totalLength = (loops) => loops.reduce((sum, loop) => sum + loopLength(loop), 0);
+
 // A vertex whose normal is within this of square to the view (n · towards, about 3 degrees) lies on a part seen
 // edge-on: a letter's or a box's side wall, a flat sole seen from the side.
 const EDGE_ON = 0.05;
