@@ -205,16 +205,17 @@ std::vector<SectionLoop> fairInDepth(const TriMesh& mesh, Eigen::VectorXd& value
         if (seen >= 0.25 * stand) continue;
         Eigen::Index k;
         points[i]->at.bary.maxCoeff(&k);
-        double& largest = tips[mesh.F(points[i]->at.face, int(k))];
-        largest = std::max(largest, stand);
+        double& farthest = tips[mesh.F(points[i]->at.face, int(k))];
+        farthest = std::max(farthest, stand);
       }
     }
     // The largest spikes first, each kept where it shortens the contour.
     std::vector<std::pair<int, double>> order(tips.begin(), tips.end());
     std::stable_sort(order.begin(), order.end(), [](const auto& p, const auto& q) { return p.second > q.second; });
     bool changed = false;
-    for (const auto& [v, stand] : order) {
+    for (const auto& spike : order) {
       if (tries >= kFairTries) break;
+      const int v = spike.first;
       double largest = 0;
       for (int w : around[v])
         if ((values[w] > 0) == (values[v] > 0) && std::abs(values[w]) > std::abs(largest)) largest = values[w];
