@@ -496,7 +496,8 @@ TEST(PatternOptimizer, RunEndsOnItsCutPanelsMeshedAtTheDesignsEdgeLength) {
 // The run's end meshes the outlines anew as they are cut (OptimizeRemeshing::cutPanels). Where the last iterates sit
 // near the fold of their equilibrium, the cut panels can snap into another one (fb-spot: the head across the
 // thickness, 1.3 -> 1.9 %); then an earlier iterate is cut instead, and the designer gets cut panels about as close
-// as the optimizer's own mesh was. The cow at 1,500 elements, its flattened panels moved at the rounding level as
+// as the optimizer's own mesh was. The snapped cut's settle is abandoned once it has moved beyond any cut that keeps
+// its shape, so it leaves no record. The cow at 1,500 elements, its flattened panels moved at the rounding level as
 // `billow_design_bench --perturb 1` moves them: a path whose cut snaps.
 TEST(PatternOptimizer, CutPanelsThatSnapAreCutFromAnEarlierIterate) {
   BILLOW_NATIVE_ONLY_LONG_RUN();
@@ -513,19 +514,22 @@ TEST(PatternOptimizer, CutPanelsThatSnapAreCutFromAnEarlierIterate) {
   std::vector<size_t> cuts;
   for (size_t k = 0; k < h.size(); ++k)
     if (h[k].cutPanels) cuts.push_back(k);
-  ASSERT_EQ(cuts.size(), 2u) << "the last iterate's cut did not snap here: this test needs a path whose cut does";
-  const OptimizeRecord &snapped = h[cuts[0]], &ownLast = h[cuts[0] - 1], &earlier = h[cuts[1] - 1];
-  EXPECT_TRUE(earlier.restored);
+  ASSERT_EQ(cuts.size(), 1u);
+  ASSERT_GE(cuts[0], 2u);
+  // The earlier iterate's cut shape on the optimizer's mesh, what the panes compare the cut panels with, comes
+  // right after the last iterate's.
+  const OptimizeRecord &earlier = h[cuts[0] - 1], &ownLast = h[cuts[0] - 2];
+  ASSERT_TRUE(earlier.restored) << "the last iterate's cut did not snap here: this test needs a path whose cut does";
+  EXPECT_TRUE(ownLast.projected);
   double ownBest = INFINITY;  // the closest iterate on the optimizer's own mesh, from its last remeshing on
-  for (size_t k = cuts[0] - 1; k > 0 && !h[k].remeshed; --k) ownBest = std::min(ownBest, h[k].distanceRms);
+  for (size_t k = cuts[0] - 2; k > 0 && !h[k].remeshed; --k) ownBest = std::min(ownBest, h[k].distanceRms);
   const double designers = h.back().distanceRms;
   std::printf(
-      "[figures] fb-spot 1.7k, perturbed (3): own mesh %.3f %% (its best %.3f %%), its cut snapped %.3f %%; "
-      "an earlier iterate %.3f %%, cut %.3f %%\n",
-      100 * ownLast.distanceRms, 100 * ownBest, 100 * snapped.distanceRms, 100 * earlier.distanceRms, 100 * designers);
-  EXPECT_GT(snapped.objective, 1.25 * ownLast.objective);
-  EXPECT_LT(h[cuts[1]].objective, snapped.objective);
-  EXPECT_LT(designers, 0.95 * snapped.distanceRms);
+      "[figures] fb-spot 1.7k, perturbed (3): own mesh %.3f %% (its best %.3f %%), its cut snapped; an earlier "
+      "iterate %.3f %%, cut %.3f %%\n",
+      100 * ownLast.distanceRms, 100 * ownBest, 100 * earlier.distanceRms, 100 * designers);
+  EXPECT_GT(earlier.objective, ownLast.objective);
+  EXPECT_LT(h[cuts[0]].objective, 1.25 * earlier.objective);  // kept its shape (kCutSnapRatio)
   EXPECT_LT(designers, 1.1 * ownBest);
   expectCuttableOutlines(r.pattern);
 }

@@ -53,6 +53,10 @@ constexpr double kStallDecrease = 1e-3;
 // elephant's cuts 1.26-1.34 and 1.9-2.2 %, the snapped ones 6.7-25 %); then the iterates this many back are tried,
 // the last 33 kept.
 constexpr double kCutSnapRatio = 1.25, kCutSnapMove = 0.03;
+// A cut's settle that moves a vertex further than this (x the model size) from the shape it was cut from has snapped
+// (beyond every cut that kept its shape, 0.2-6.8 %), and its walk into the other shape is not finished: fb-spot's
+// snapped cuts pass 7 % at Newton iteration 34-53 of 75-145.
+constexpr double kCutSnapAbandon = 0.07;
 constexpr int kCutBack[] = {4, 8, 16, 32};
 constexpr int kCheckpoints = 33;
 }  // namespace
@@ -221,7 +225,7 @@ bool PatternOptimizer::projectStart() {
 
 std::vector<Vertices> PatternOptimizer::panelInflated() const { return panelPositions(mesh_, x_); }
 
-bool PatternOptimizer::remesh(bool recordIt) {
+bool PatternOptimizer::remesh(bool recordIt, double snapLimit, bool* snapped) {
   const double t0 = nowMs();
   BuiltPattern current = built_;
   current.pattern = pattern_;
@@ -251,7 +255,10 @@ bool PatternOptimizer::remesh(bool recordIt) {
   Vertices x;
   int newton = 0;
   const Vertices carried = x_;
-  if (!sewable || !solveEquilibrium(X_, x_, x, &newton)) {  // back to the old mesh
+  EquilibriumLimits limits;
+  limits.snapLimit = snapLimit;
+  if (snapped) *snapped = false;
+  if (!sewable || !solveEquilibrium(X_, x_, x, &newton, false, limits, snapped)) {  // back to the old mesh
     current.pattern.inflated = inflated;
     setUp(current, coarsePhase_);
     X_ = oldX, x_ = oldx;
@@ -1068,9 +1075,16 @@ void PatternOptimizer::settleCutPanels() {
   own.pattern = pattern_;
   own.pattern.inflated = panelInflated();
   const std::deque<Checkpoint> checkpoints = std::move(checkpoints_);
-  if (!remesh()) return;  // where the outlines do not mesh or settle anew, the run ends on its own mesh
-  history_.back().cutPanels = true;
-  if (E_ <= kCutSnapRatio * ownE || remeshMove_ < kCutSnapMove) return;
+  const Eigen::VectorXd lastX = X_;
+  const Vertices lastx = x_;
+  const double snapLimit = kCutSnapAbandon * objective_->modelSize();
+  bool snapped = false;
+  if (remesh(true, snapLimit, &snapped)) {
+    history_.back().cutPanels = true;
+    if (E_ <= kCutSnapRatio * ownE || remeshMove_ < kCutSnapMove) return;
+  } else if (!snapped) {
+    return;  // where the outlines do not mesh or settle anew, the run ends on its own mesh
+  }
   // The cut panels snapped into another equilibrium (fb-spot: the head across the thickness, E +35-70 %): the last
   // iterates sit near the fold where the optimizer's mesh keeps its equilibrium and a new mesh does not. An earlier
   // iterate, farther from the fold, may cut without snapping: the designer gets the cut panels of least E.
@@ -1086,7 +1100,8 @@ void PatternOptimizer::settleCutPanels() {
     c.built.pattern = pattern_;
     return c;
   };
-  Cut best = current(std::nullopt);
+  std::optional<Cut> best;
+  if (!snapped) best = current(std::nullopt);
   auto setUpOwn = [&](const Eigen::VectorXd& X) {  // the optimizer's mesh with panels X
     BuiltPattern panels = own;
     unpackPattern(X, panels.pattern);
@@ -1096,31 +1111,43 @@ void PatternOptimizer::settleCutPanels() {
   std::vector<const Checkpoint*> earlier;
   for (int back : kCutBack)
     if (back < int(checkpoints.size())) earlier.push_back(&checkpoints[checkpoints.size() - 1 - back]);
-  if (earlier.empty()) return;
+  if (earlier.empty() && !snapped) return;
   std::sort(earlier.begin(), earlier.end(), [](const Checkpoint* a, const Checkpoint* b) { return a->E < b->E; });
+  bool kept = false;
   for (const Checkpoint* c : earlier) {
     setUpOwn(c->X);
     std::optional<CutShape> cut = cutShape(c->X, c->x);
     if (!cut) continue;
     X_ = cut->X, x_ = cut->x;
     unpackPattern(X_, pattern_);
-    if (!remesh(false)) continue;
-    if (E_ < best.E) best = current(std::move(cut));
-    if (E_ <= kCutSnapRatio * c->E || remeshMove_ < kCutSnapMove) break;
+    if (!remesh(false, snapLimit)) continue;
+    if (!best || E_ < best->E) best = current(std::move(cut));
+    kept = E_ <= kCutSnapRatio * c->E || remeshMove_ < kCutSnapMove;
+    if (kept) break;
   }
-  if (best.own) {  // the chosen iterate, cut, on the optimizer's mesh: what the panes compare the cut panels with
-    setUpOwn(best.own->X);
-    X_ = std::move(best.own->X), x_ = std::move(best.own->x);
+  if (!kept && snapped) {  // every cut snapped: the last iterate's, settled into its other shape, is a candidate too
+    setUpOwn(lastX);
+    X_ = lastX, x_ = lastx;
+    unpackPattern(X_, pattern_);
+    if (remesh()) {
+      history_.back().cutPanels = true;
+      if (!best || E_ < best->E) return;
+    }
+    if (!best) return;  // no cut settled: the run ends on its own mesh, at the last iterate (remesh kept it)
+  }
+  if (best->own) {  // the chosen iterate, cut, on the optimizer's mesh: what the panes compare the cut panels with
+    setUpOwn(best->own->X);
+    X_ = std::move(best->own->X), x_ = std::move(best->own->x);
     E_ = settledEnergy(X_, x_);
-    record(0, best.own->newton, true);
+    record(0, best->own->newton, true);
     history_.back().restored = true;
   }
-  setUp(best.built);
-  X_ = std::move(best.X), x_ = std::move(best.x);
+  setUp(best->built);
+  X_ = std::move(best->X), x_ = std::move(best->x);
   E_ = settledEnergy(X_, x_);
   variableGradient(X_, x_, g_);
   ++timings_.remeshings;  // the app fetches the mesh anew by this count
-  if (best.own) {
+  if (best->own) {
     record(0, 0, false);
     history_.back().remeshed = history_.back().cutPanels = true;
   }

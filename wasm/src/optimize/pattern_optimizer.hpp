@@ -329,8 +329,9 @@ class PatternOptimizer {
   // Meshes the panels again from their current outlines at the design's size (its edge length, corrected to about
   // its triangle count, since at one edge length the remesher gives 0.7-1.45 x the pattern builder's triangles)
   // and solves the new equilibrium; false (the old mesh kept) when that fails. recordIt: the new iterate goes into the
-  // history (not for a trial cut of settleCutPanels).
-  bool remesh(bool recordIt = true);
+  // history (not for a trial cut of settleCutPanels). snapLimit > 0: a settle that moves a vertex further than that
+  // from the carried shape is abandoned as snapped (false, *snapped set).
+  bool remesh(bool recordIt = true, double snapLimit = 0, bool* snapped = nullptr);
   // The new mesh's equilibrium x (newton iterations, the remeshing started at t0 ms) as the current iterate, recorded
   // as a remeshing.
   void takeNewMesh(Vertices x, int newton, double t0, bool recordIt = true);
