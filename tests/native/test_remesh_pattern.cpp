@@ -217,3 +217,51 @@ TEST(RemeshPattern, AFoldedOutlineIsRefusedWithAMessage) {
     EXPECT_NE(std::string(e.what()).find("Panel 1"), std::string::npos) << e.what();
   }
 }
+
+// The optimizer's coarse phase meshes at twice the design's edge length; a gusset strip narrower than that would be
+// a triangle or two across and barely curve across its width. Such a panel, and the seams along it, is meshed at half
+// its width (not below the design's edge); the wide panels stay coarse inside. The cow with its 36 mm band.
+TEST(RemeshPattern, APanelNarrowerThanTheEdgeIsMeshedAtHalfItsWidth) {
+  const auto scene = loadDesignScene(dataPath("../../bench/designs/spot-gusset.billow.json"), {examplesDir()});
+  const BuiltPattern built = buildDesignPattern(*scene, 3000);
+  const double h = built.figures.edgeLength, coarse = 2 * h;
+  auto width = [](const Panel& panel, int boundary) {  // twice the area over the perimeter
+    double perimeter = 0;
+    for (int v = 0; v < boundary; ++v)
+      perimeter += (panel.vertices.row((v + 1) % boundary) - panel.vertices.row(v)).norm();
+    return 2 * panelArea(panel) / perimeter;
+  };
+  auto boundarySpacing = [](const Panel& panel, int boundary) {
+    double perimeter = 0;
+    for (int v = 0; v < boundary; ++v)
+      perimeter += (panel.vertices.row((v + 1) % boundary) - panel.vertices.row(v)).norm();
+    return perimeter / boundary;
+  };
+  int strip = -1;
+  for (size_t p = 0; p < built.pattern.panels.size(); ++p) {
+    const double w = width(built.pattern.panels[p], built.panels[p].boundaryVertices);
+    if (w < coarse) {
+      EXPECT_EQ(strip, -1) << "one strip";
+      strip = int(p);
+    }
+  }
+  ASSERT_GE(strip, 0) << "the gusset is narrower than the coarse edge";
+  const double w = width(built.pattern.panels[strip], built.panels[strip].boundaryVertices);
+  const RemeshedPattern plain = remeshPattern(built, built.pattern.inflated, coarse);
+  const RemeshedPattern narrow = remeshPattern(built, built.pattern.inflated, coarse, h);
+  expectGoodRemesh(built, narrow, coarse);
+  const Panel &a = plain.built.pattern.panels[strip], &b = narrow.built.pattern.panels[strip];
+  const int na = plain.built.panels[strip].boundaryVertices, nb = narrow.built.panels[strip].boundaryVertices;
+  std::printf(
+      "[figures] gusset %.1f mm wide, design edge %.1f mm: coarse spacing %.1f mm, %d inside; narrow %.1f mm, "
+      "%d inside\n",
+      1e3 * w, 1e3 * h, 1e3 * boundarySpacing(a, na), int(a.vertices.rows()) - na, 1e3 * boundarySpacing(b, nb),
+      int(b.vertices.rows()) - nb);
+  EXPECT_GT(boundarySpacing(a, na), 0.8 * w);
+  EXPECT_LT(boundarySpacing(b, nb), 0.7 * std::max(w, h));
+  EXPECT_GT(b.vertices.rows() - nb, 1.2 * (a.vertices.rows() - na)) << "more vertices across the strip's width";
+  for (size_t p = 0; p < built.pattern.panels.size(); ++p)
+    if (int(p) != strip)
+      EXPECT_LT(narrow.built.pattern.panels[p].triangles.rows(), 1.5 * plain.built.pattern.panels[p].triangles.rows())
+          << "panel " << p + 1 << " stays coarse inside";
+}
