@@ -225,18 +225,14 @@ TEST(RemeshPattern, APanelNarrowerThanTheEdgeIsMeshedAtHalfItsWidth) {
   const auto scene = loadDesignScene(dataPath("../../bench/designs/spot-gusset.billow.json"), {examplesDir()});
   const BuiltPattern built = buildDesignPattern(*scene, 3000);
   const double h = built.figures.edgeLength, coarse = 2 * h;
-  auto width = [](const Panel& panel, int boundary) {  // twice the area over the perimeter
-    double perimeter = 0;
+  auto perimeter = [](const Panel& panel, int boundary) {  // the outline is the rows 0..boundary-1
+    double length = 0;
     for (int v = 0; v < boundary; ++v)
-      perimeter += (panel.vertices.row((v + 1) % boundary) - panel.vertices.row(v)).norm();
-    return 2 * panelArea(panel) / perimeter;
+      length += (panel.vertices.row((v + 1) % boundary) - panel.vertices.row(v)).norm();
+    return length;
   };
-  auto boundarySpacing = [](const Panel& panel, int boundary) {
-    double perimeter = 0;
-    for (int v = 0; v < boundary; ++v)
-      perimeter += (panel.vertices.row((v + 1) % boundary) - panel.vertices.row(v)).norm();
-    return perimeter / boundary;
-  };
+  auto width = [&](const Panel& panel, int boundary) { return 2 * panelArea(panel) / perimeter(panel, boundary); };
+  auto boundarySpacing = [&](const Panel& panel, int boundary) { return perimeter(panel, boundary) / boundary; };
   int strip = -1;
   for (size_t p = 0; p < built.pattern.panels.size(); ++p) {
     const double w = width(built.pattern.panels[p], built.panels[p].boundaryVertices);

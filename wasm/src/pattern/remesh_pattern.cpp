@@ -20,8 +20,8 @@ double pieceLength(const Panel& panel, const PanelPiece& piece) {
 }
 
 // Segments per piece: one count for all the pieces sewn together (union of neighbour links), from their mean
-// length, the sewn seams kept a simple graph (keepSewnSeamsSimple); the sewn points are the pieces' end rows
-// united across their stitches.
+// length at the least edge length of their panels (panelH), the sewn seams kept a simple graph (keepSewnSeamsSimple);
+// the sewn points are the pieces' end rows united across their stitches.
 std::vector<std::vector<int>> segmentCounts(const BuiltPattern& built, const std::vector<double>& panelH) {
   std::vector<int> first{0}, firstRow{0};
   for (size_t p = 0; p < built.panels.size(); ++p) {
