@@ -113,11 +113,11 @@ double boundingDiagonal(const TriMesh& mesh) {
 
 // remeshPattern at edge length h, and again at the edge length that gives about `triangles` (> 0) when h gave
 // more than 10 % off: the remesher's triangles at an edge length are 0.7-1.45 x the pattern builder's.
-RemeshedPattern remeshNear(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h, double triangles,
-                           double narrowH = 0) {
-  RemeshedPattern out = remeshPattern(built, inflated, h, narrowH);
+RemeshedPattern remeshNear(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h,
+                           double triangles) {
+  RemeshedPattern out = remeshPattern(built, inflated, h);
   const double ratio = triangles > 0 ? out.built.figures.triangles / triangles : 1;
-  if (std::abs(ratio - 1) > 0.1) out = remeshPattern(built, inflated, h * std::sqrt(ratio), narrowH);
+  if (std::abs(ratio - 1) > 0.1) out = remeshPattern(built, inflated, h * std::sqrt(ratio));
   return out;
 }
 
@@ -146,11 +146,7 @@ PatternOptimizer::PatternOptimizer(std::shared_ptr<const OptimizationTarget> sha
       int(built.figures.triangles) >= remeshing.coarseMinTriangles) {
     try {
       const double f = remeshing.coarseFactor;
-      // A gusset strip narrower than the coarse edge stays at the design's: a coarse triangle or two across, it would
-      // barely curve across its width, and the coarse optimum would not be the design's (gusset-spot's 36 mm band).
-      setUp(remeshNear(built, built.pattern.inflated, f * fineEdgeLength_, built.figures.triangles / (f * f),
-                       fineEdgeLength_)
-                .built,
+      setUp(remeshNear(built, built.pattern.inflated, f * fineEdgeLength_, built.figures.triangles / (f * f)).built,
             true);
       coarsePhase_ = true, flattened_ = built;
     } catch (const Error&) {  // an outline the coarse edge length cannot mesh: no coarse phase

@@ -118,10 +118,9 @@ struct OptimizeRemeshing {
   // this mesh (0: never; sliding seams: OptimizeSliding::stallIterations).
   int stallIterations = 0;
   // Held seams, at least coarseMinTriangles: a first phase on the panels meshed at coarseFactor x the design's
-  // edge length (<= 1: none; a panel narrower than that, a gusset strip, nearer the design's), until a stopping rule
-  // of that mesh ends it (the objective window over coarseWindow iterations, not the fine mesh's 20) or
-  // coarseIterations (at most half the iterations) are spent; then the outlines are meshed at the design's triangle
-  // count and the run goes on there. A coarse iterate costs a sixth, so the shapes
+  // edge length (<= 1: none), until a stopping rule of that mesh ends it (the objective window over coarseWindow
+  // iterations, not the fine mesh's 20) or coarseIterations (at most half the iterations) are spent; then the outlines
+  // are meshed at the design's triangle count and the run goes on there. A coarse iterate costs a sixth, so the shapes
   // near the final one come sooner, and the fine phase starts off the folds the flattened panels' first steps meet
   // (bench/README.md "The coarse first phase").
   double coarseFactor = 2;

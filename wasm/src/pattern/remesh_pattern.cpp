@@ -6,7 +6,6 @@
 #include "remesh/panel_mesher.hpp"
 #include "util/error.hpp"
 #include "util/union_find.hpp"
-#include "util/vec2.hpp"
 
 namespace billow {
 
@@ -20,9 +19,9 @@ double pieceLength(const Panel& panel, const PanelPiece& piece) {
 }
 
 // Segments per piece: one count for all the pieces sewn together (union of neighbour links), from their mean
-// length at the least edge length of their panels (panelH), the sewn seams kept a simple graph (keepSewnSeamsSimple);
-// the sewn points are the pieces' end rows united across their stitches.
-std::vector<std::vector<int>> segmentCounts(const BuiltPattern& built, const std::vector<double>& panelH) {
+// length, the sewn seams kept a simple graph (keepSewnSeamsSimple); the sewn points are the pieces' end rows
+// united across their stitches.
+std::vector<std::vector<int>> segmentCounts(const BuiltPattern& built, double h) {
   std::vector<int> first{0}, firstRow{0};
   for (size_t p = 0; p < built.panels.size(); ++p) {
     first.push_back(first.back() + static_cast<int>(built.panels[p].pieces.size()));
@@ -38,13 +37,12 @@ std::vector<std::vector<int>> segmentCounts(const BuiltPattern& built, const std
       points.unite(firstRow[p] + piece.rows.front(), firstRow[piece.neighborPanel] + other.rows.back());
       points.unite(firstRow[p] + piece.rows.back(), firstRow[piece.neighborPanel] + other.rows.front());
     }
-  std::vector<double> sum(first.back(), 0.0), h(first.back(), INFINITY);
+  std::vector<double> sum(first.back(), 0.0);
   std::vector<int> count(first.back(), 0);
   for (size_t p = 0; p < built.panels.size(); ++p)
     for (size_t k = 0; k < built.panels[p].pieces.size(); ++k) {
       const int g = groups.find(first[p] + k);
       sum[g] += pieceLength(built.pattern.panels[p], built.panels[p].pieces[k]);
-      h[g] = std::min(h[g], panelH[p]);
       ++count[g];
     }
   std::vector<int> curveOf(first.back(), -1), counts;
@@ -55,7 +53,7 @@ std::vector<std::vector<int>> segmentCounts(const BuiltPattern& built, const std
       if (curveOf[g] >= 0) continue;
       const PanelPiece& piece = built.panels[p].pieces[k];
       curveOf[g] = static_cast<int>(counts.size());
-      counts.push_back(segmentCountFor(sum[g] / count[g], h[g]));
+      counts.push_back(segmentCountFor(sum[g] / count[g], h));
       ends.push_back({points.find(firstRow[p] + piece.rows.front()), points.find(firstRow[p] + piece.rows.back())});
     }
   keepSewnSeamsSimple(counts, ends);
@@ -64,19 +62,6 @@ std::vector<std::vector<int>> segmentCounts(const BuiltPattern& built, const std
     for (size_t k = 0; k < built.panels[p].pieces.size(); ++k)
       out[p].push_back(counts[curveOf[groups.find(first[p] + k)]]);
   return out;
-}
-
-// Twice a panel's area over its perimeter (its outline, the pieces in turn): a strip's width, a disc's radius.
-double panelWidth(const Panel& panel, const BuiltPanel& built) {
-  std::vector<int> rows;
-  double perimeter = 0;
-  for (const PanelPiece& piece : built.pieces) {
-    rows.insert(rows.end(), piece.rows.begin(), piece.rows.end() - 1);
-    perimeter += pieceLength(panel, piece);
-  }
-  Points2 outline(rows.size(), 2);
-  for (size_t k = 0; k < rows.size(); ++k) outline.row(k) = panel.vertices.row(rows[k]);
-  return perimeter > 0 ? 2 * std::abs(signedArea(outline)) / perimeter : 0;
 }
 
 struct Carried {
@@ -190,17 +175,10 @@ double minPanelAngleDeg(const Pattern& pattern) {
   return least;
 }
 
-RemeshedPattern remeshPattern(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h,
-                              double narrowH) {
+RemeshedPattern remeshPattern(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h) {
   if (!(h > 0) || inflated.size() != built.panels.size())
     throw Error("pattern.remesh-failed", "Remeshing needs an edge length and the inflated positions of every panel.");
-  std::vector<double> panelH(built.panels.size(), h);
-  if (narrowH > 0)
-    for (size_t p = 0; p < built.panels.size(); ++p) {
-      const double width = panelWidth(built.pattern.panels[p], built.panels[p]);
-      if (width < h) panelH[p] = std::clamp(width / 2, std::min(narrowH, h), h);
-    }
-  const std::vector<std::vector<int>> counts = segmentCounts(built, panelH);
+  const std::vector<std::vector<int>> counts = segmentCounts(built, h);
   RemeshedPattern out;
   out.built = built;
   out.built.pattern.panels.clear();
@@ -215,7 +193,7 @@ RemeshedPattern remeshPattern(const BuiltPattern& built, const std::vector<Verti
     Carried carried;
     try {
       out.built.pattern.panels.push_back(
-          remeshPanel(old, built.panels[p], inflated[p], counts[p], panelH[p], out.built.panels[p], carried));
+          remeshPanel(old, built.panels[p], inflated[p], counts[p], h, out.built.panels[p], carried));
     } catch (const Error& e) {
       throw Error("pattern.remesh-failed",
                   "Panel " + std::to_string(p + 1) + " could not be meshed again: " + e.what());

@@ -28,9 +28,6 @@ struct RemeshedPattern {
 // builder); inflated: per panel, the inflated position of every panel vertex [m]; h: the edge length [m].
 // Throws billow::Error("pattern.remesh-failed") when a panel's outline no longer bounds a simple polygon
 // (the caller keeps the old mesh).
-// narrowH > 0: a panel narrower than h (twice its area over its perimeter: a strip's width) is meshed at half its
-// width, not below narrowH, its seams with it, since a panel a triangle or two across barely curves across its width.
-RemeshedPattern remeshPattern(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h,
-                              double narrowH = 0);
+RemeshedPattern remeshPattern(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h);
 
 }  // namespace billow
