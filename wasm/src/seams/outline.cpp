@@ -80,8 +80,9 @@ void fillEdgeOn(const std::vector<std::vector<int>>& around, Eigen::VectorXd& fa
 }
 
 // Per vertex, n . towards over the area-weighted vertex normal, kept away from zero so the sides read the same here
-// as where the contour is drawn; where seen edge-on, from around (fillEdgeOn).
-Eigen::VectorXd facingField(const TriMesh& mesh, const Eigen::Vector3d& towards) {
+// as where the contour is drawn; where seen edge-on, from around (fillEdgeOn; around: vertexNeighbours).
+Eigen::VectorXd facingField(const TriMesh& mesh, const std::vector<std::vector<int>>& around,
+                            const Eigen::Vector3d& towards) {
   Vertices normal = Vertices::Zero(mesh.V.rows(), 3);
   for (int f = 0; f < mesh.F.rows(); ++f) {
     const Eigen::Vector3d a = mesh.V.row(mesh.F(f, 0)), b = mesh.V.row(mesh.F(f, 1)), c = mesh.V.row(mesh.F(f, 2));
@@ -94,17 +95,17 @@ Eigen::VectorXd facingField(const TriMesh& mesh, const Eigen::Vector3d& towards)
     facing[v] = length > 0 ? normal.row(v).dot(towards.transpose()) / length : 0;
     if (std::abs(facing[v]) < kAwayFromZero) facing[v] = facing[v] > 0 ? kAwayFromZero : -kAwayFromZero;
   }
-  fillEdgeOn(vertexNeighbours(mesh), facing);
+  fillEdgeOn(around, facing);
   return facing;
 }
 
 // Changes the sign of `values` where needed so that its positive and its negative side are each one edge-connected
 // piece and no vertex pinches a side: its zero set is then one loop on a shape without handles. Parts of a side that
 // are not its largest change sides, the positive side's first. False when a side is empty.
-bool splitInTwo(const TriMesh& mesh, Eigen::VectorXd& values, Outline& out) {
+bool splitInTwo(const TriMesh& mesh, const std::vector<std::vector<int>>& around, Eigen::VectorXd& values,
+                Outline& out) {
   const Eigen::Index nv = values.size();
   const Eigen::VectorXd area = vertexAreas(mesh);
-  const std::vector<std::vector<int>> around = vertexNeighbours(mesh);
   // Keeps the largest edge-connected part of a side; the others change sides. How many changed, or -1 when the side
   // is empty.
   const auto keepLargest = [&](bool positive) {
@@ -172,14 +173,11 @@ double totalLength(const std::vector<SectionLoop>& loops) {
 // that: a sharp turn seen from the front (a star's tip, a letter's corner) is the outline itself. Signs do not change,
 // so the sides stay as splitInTwo left them. The same rule as web/src/app/section.js's fairInDepth.
 constexpr int kFairRounds = 4, kFairTries = 16;
-std::vector<SectionLoop> fairInDepth(const TriMesh& mesh, Eigen::VectorXd& values, const Eigen::Vector3d& towards) {
-  std::vector<std::vector<int>> around = vertexNeighbours(mesh);
-  for (std::vector<int>& ring : around) {
-    std::sort(ring.begin(), ring.end());
-    ring.erase(std::unique(ring.begin(), ring.end()), ring.end());
-  }
+std::vector<SectionLoop> fairInDepth(const TriMesh& mesh, const std::vector<std::vector<int>>& around,
+                                     Eigen::VectorXd& values, const Eigen::Vector3d& towards) {
   const auto across = [&](const Eigen::Vector3d& d) -> Eigen::Vector3d { return d - d.dot(towards) * towards; };
   std::vector<SectionLoop> loops = zeroLoops(mesh, values);
+  double length = totalLength(loops);
   int tries = 0;
   for (int round = 0; round < kFairRounds; ++round) {
     std::map<int, double> tips;  // vertex -> how far its spike stands off
@@ -224,8 +222,9 @@ std::vector<SectionLoop> fairInDepth(const TriMesh& mesh, Eigen::VectorXd& value
       const double kept = values[v];
       values[v] = largest;
       std::vector<SectionLoop> traced = zeroLoops(mesh, values);
-      if (totalLength(traced) < totalLength(loops))
-        loops = std::move(traced), changed = true;
+      const double tracedLength = totalLength(traced);
+      if (tracedLength < length)
+        loops = std::move(traced), length = tracedLength, changed = true;
       else
         values[v] = kept;
     }
@@ -237,10 +236,11 @@ std::vector<SectionLoop> fairInDepth(const TriMesh& mesh, Eigen::VectorXd& value
 }  // namespace
 
 std::optional<Outline> outlineSeenFrom(const TriMesh& mesh, const Eigen::Vector3d& towards) {
-  Eigen::VectorXd facing = facingField(mesh, towards);
+  const std::vector<std::vector<int>> around = vertexNeighbours(mesh);
+  Eigen::VectorXd facing = facingField(mesh, around, towards);
   Outline out;
-  if (!splitInTwo(mesh, facing, out)) return std::nullopt;
-  std::vector<SectionLoop> loops = fairInDepth(mesh, facing, towards);
+  if (!splitInTwo(mesh, around, facing, out)) return std::nullopt;
+  std::vector<SectionLoop> loops = fairInDepth(mesh, around, facing, towards);
   if (loops.empty()) return std::nullopt;
   const auto longest = std::max_element(loops.begin(), loops.end(), [](const SectionLoop& a, const SectionLoop& b) {
     return loopLength(a) < loopLength(b);

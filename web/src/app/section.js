@@ -183,10 +183,11 @@ function keepTurns(loop, arcs, stray) {
 // one on a shape with a handle; loop is the longest, holes the others; facing: the cleaned field, > 0 in front),
 // or null when the shape has no front or back.
 export function outlineLoop(mesh, towards) {
-  const facing = facingField(mesh, towards);
-  const split = splitInTwo(mesh, facing);
+  const neighbours = vertexNeighbours(mesh.indices, mesh.positions.length / 3);
+  const facing = facingField(mesh, towards, neighbours);
+  const split = splitInTwo(mesh, facing, neighbours);
   if (!split) return null;
-  const loops = fairInDepth(mesh, facing, towards);
+  const loops = fairInDepth(mesh, facing, towards, neighbours);
   if (!loops.length) return null;
   const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
   return { loop, holes: loops.filter((l) => l !== loop), toBack: split.toNegative, toFront: split.toPositive, largestMoved: movedShare(split), loops: loops.length, facing };
@@ -195,7 +196,8 @@ export function outlineLoop(mesh, towards) {
 // outlineLoop's largestMoved alone, without tracing the contour: the largest part the outline seen from `towards` would
 // turn to the other side, a share of the surface, or null when the shape has no front or back from there.
 function largestTurnedAway(mesh, towards) {
-  const split = splitInTwo(mesh, facingField(mesh, towards));
+  const neighbours = vertexNeighbours(mesh.indices, mesh.positions.length / 3);
+  const split = splitInTwo(mesh, facingField(mesh, towards, neighbours), neighbours);
   return split && movedShare(split);
 }
 
@@ -262,8 +264,8 @@ export function acrossHandles(mesh, rim, holes, towards) {
 }
 
 // Per vertex, n · towards over the vertex normal (area-weighted), kept away from zero; where seen edge-on, from
-// around (fillEdgeOn).
-function facingField({ positions, indices }, towards) {
+// around (fillEdgeOn; neighbours: vertexNeighbours).
+function facingField({ positions, indices }, towards, neighbours) {
   const nv = positions.length / 3;
   const normal = new Float64Array(3 * nv);
   for (let f = 0; f < indices.length / 3; f++) {
@@ -277,7 +279,7 @@ function facingField({ positions, indices }, towards) {
     // Away from zero, so the sides read the same here as where the contour is drawn (zeroLoops).
     if (Math.abs(facing[v]) < AWAY_FROM_ZERO) facing[v] = facing[v] > 0 ? AWAY_FROM_ZERO : -AWAY_FROM_ZERO;
   }
-  fillEdgeOn(vertexNeighbours(indices, nv), facing);
+  fillEdgeOn(neighbours, facing);
   return facing;
 }
 
@@ -295,13 +297,13 @@ const AWAY_FROM_ZERO = 1e-6;
 // so the sides stay as splitInTwo left them. The same rule as seams/outline.cpp's fairInDepth.
 const FAIR_ROUNDS = 4;
 const FAIR_TRIES = 16;
-function fairInDepth(mesh, values, towards) {
+function fairInDepth(mesh, values, towards, around) {
   const { indices } = mesh;
-  const around = vertexNeighbours(indices, values.length).map((ring) => [...new Set(ring)]);
   const across = (d) => { const t = d[0] * towards[0] + d[1] * towards[1] + d[2] * towards[2]; return d.map((x, c) => x - t * towards[c]); };
   const norm = (d) => Math.hypot(d[0], d[1], d[2]);
   const sub = (a, b) => [a[0] - b[0], a[1] - b[1], a[2] - b[2]];
   let loops = zeroLoops(mesh, values);
+  let length = totalLength(loops);
   let tries = 0;
   for (let round = 0; round < FAIR_ROUNDS; round++) {
     const tips = new Map(); // vertex -> how far its spike stands off
@@ -338,7 +340,8 @@ function fairInDepth(mesh, values, towards) {
       const kept = values[v];
       values[v] = largest;
       const traced = zeroLoops(mesh, values);
-      if (totalLength(traced) < totalLength(loops)) (loops = traced), (changed = true);
+      const tracedLength = totalLength(traced);
+      if (tracedLength < length) (loops = traced), (length = tracedLength), (changed = true);
       else values[v] = kept;
     }
     if (!changed) break;
@@ -404,7 +407,8 @@ function fillEdgeOn(around, facing) {
 // loop on a shape without handles. Parts of a side that are not its largest change sides, the positive side's
 // first. Returns { toNegative, toPositive, moved: [area to negative, area to positive], largestMoved (the area of
 // the largest part that changed sides), area: [positive, negative] as they were }, or null when a side is empty.
-export function splitInTwo(mesh, values) {
+// neighbours: vertexNeighbours, where the caller has them already.
+export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indices, mesh.positions.length / 3)) {
   const { positions, indices } = mesh;
   const nv = positions.length / 3;
   const area = vertexAreas(mesh);
@@ -413,7 +417,6 @@ export function splitInTwo(mesh, values) {
   const moved = [0, 0];
   let largestMoved = 0;
   // Keeps only the largest edge-connected part of each side: the others change sides.
-  const neighbours = vertexNeighbours(indices, nv);
   const keepLargest = (front) => {
     const part = new Int32Array(nv).fill(-1);
     const sizes = [];
