@@ -65,6 +65,9 @@ TEST(DesignJson, FixtureRoundTripKeepsEveryFieldAndUnknownOnes) {
   EXPECT_EQ(a.seams[0].points[0].surface.face, 20);
   EXPECT_FALSE(a.seams[0].points[1].onSurface);
   EXPECT_EQ(a.seams[2].name, "meridian 3");
+  // The band is known as one (the distance's hints ask a gusseted balloon for a wider gusset), the others not.
+  EXPECT_TRUE(a.seams[0].band);
+  EXPECT_FALSE(a.seams[1].band);
   const std::string text = writeDesignJson(a);
   const Design b = readDesignJson(text);
   EXPECT_EQ(writeDesignJson(b), text);

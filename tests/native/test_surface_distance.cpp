@@ -216,6 +216,12 @@ TEST(UncoveredRegions, WhatHelpsIsJudgedFromTheShape) {
   EXPECT_NE(tooFlat.find("A gusset"), std::string::npos) << tooFlat;
   EXPECT_EQ(uncoveredRemedy(measureDistance(sphere, projector, flat, sphere.F, UpAxis{}).uncovered.at(0)),
             "a gusset or more panels");
+  // A balloon that has a gusset and is still too flat: a wider one, not another.
+  const UncoveredRegion gusseted =
+      measureDistance(sphere, projector, flat, sphere.F, UpAxis{}, nullptr, true).uncovered.at(0);
+  EXPECT_EQ(uncoveredRemedy(gusseted), "a wider gusset or more panels");
+  EXPECT_NE(uncoveredMessage(gusseted).find("too flat"), std::string::npos) << uncoveredMessage(gusseted);
+  EXPECT_NE(uncoveredMessage(gusseted).find("A wider gusset"), std::string::npos) << uncoveredMessage(gusseted);
   // Over a hollow: the target dented at +x, the shape the round sphere. An internal connection helps.
   TriMesh dented = sphere;
   for (int v = 0; v < dented.numVertices(); ++v)

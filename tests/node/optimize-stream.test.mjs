@@ -61,6 +61,16 @@ test('each optimizer iterate streams its shape and its distance to the target, t
   assert.ok(on.max < 1e-9, `on the target: ${on.max}`);
   assert.ok(out.distances.every((d) => d > 0), 'outside: positive');
   assert.ok(Math.abs(out.rms * out.diagonal - 0.02 * scale) < 0.002 * scale, `2 % out: ${out.rms * out.diagonal} m`);
+  // A balloon too flat for the round target (the sphere squashed to half along z, on its own triangles): a gusset
+  // helps, and where the design has one already, a wider one.
+  const flat = onTarget.map((x, i) => (i % 3 === 2 ? 0.5 * x : x));
+  const outer = new Uint8Array(sphere.indices.length / 3).fill(1);
+  const tooFlat = (gusseted) =>
+    handlers.distanceToTarget({ positions: flat, scale, triangles: sphere.indices, outer: outer, gusseted }).next().value.uncovered[0];
+  assert.match(tooFlat(false).message, /too flat .* A gusset \(a strip sewn in along the seam\)/);
+  assert.equal(tooFlat(false).helps, 'a gusset or more panels');
+  assert.match(tooFlat(true).message, /too flat .* A wider gusset/);
+  assert.equal(tooFlat(true).helps, 'a wider gusset or more panels');
 });
 
 test('seams of weight 0 slide, and every iterate says so; the panels are meshed anew on the way', () => {

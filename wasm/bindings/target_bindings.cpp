@@ -269,8 +269,9 @@ class TargetSession {
                           "Choose a coarser panel resolution.");
   }
 
+  // gusseted: the design has a gusset band (UncoveredRegion::gusseted).
   std::string distanceToTarget(uintptr_t positions, int numVertices, double scale, uintptr_t surface,
-                               int numSurfaceTriangles, const std::string& up) {
+                               int numSurfaceTriangles, const std::string& up, bool gusseted) {
     return guarded([&] {
       requireTarget();
       if (!(scale > 0) || !std::isfinite(scale))
@@ -285,7 +286,8 @@ class TargetSession {
           Eigen::Map<const billow::Triangles>(reinterpret_cast<const int*>(surface), numSurfaceTriangles, 3);
       if (F.size() && (F.minCoeff() < 0 || F.maxCoeff() >= numVertices))
         throw billow::Error("seams.bad-input", "The shape's surface refers to points it does not have.");
-      return distanceJson(billow::measureDistance(mesh_, *projector_, x, F, readUp(json{{"up", up}})), scale);
+      return distanceJson(
+          billow::measureDistance(mesh_, *projector_, x, F, readUp(json{{"up", up}}), nullptr, gusseted), scale);
     });
   }
 
@@ -295,7 +297,7 @@ class TargetSession {
   // target vertex again took a fifth of each iterate's time on a 47k-vertex scan in wasm (bench/README.md "What
   // the app streams"): the target's side is then measured whole at most a tenth of the time, and the iterates in
   // between show the last whole measurement's (at most a second old) beside their own side.
-  std::string optimizedDistance(double scale, const std::string& up) {
+  std::string optimizedDistance(double scale, const std::string& up, bool gusseted) {
     return guarded([&] {
       requireTarget();
       if (!optimizer_) throw billow::Error("optimize.not-started", "There are no panels to optimize yet.");
@@ -306,11 +308,12 @@ class TargetSession {
       const billow::UpAxis upAxis = readUp(json{{"up", up}});
       if (const Eigen::VectorXd* measured = optimizer_->targetDistances()) {
         const Eigen::VectorXd targetDistances = *measured / scale;
-        return distanceJson(billow::measureDistance(mesh_, *projector_, x, outer, upAxis, &targetDistances), scale);
+        return distanceJson(billow::measureDistance(mesh_, *projector_, x, outer, upAxis, &targetDistances, gusseted),
+                            scale);
       }
       if (!streamTarget_ || billow::msSince(streamTargetAt_) >= 9 * streamTargetMs_) {
         const billow::Clock::time_point start = billow::Clock::now();
-        streamTarget_ = billow::measureDistance(mesh_, *projector_, x, outer, upAxis);
+        streamTarget_ = billow::measureDistance(mesh_, *projector_, x, outer, upAxis, nullptr, gusseted);
         streamTargetMs_ = billow::msSince(start), streamTargetAt_ = billow::Clock::now();
       } else {  // this shape's own side beside the last whole measurement's target side
         streamTarget_->signedDistances = billow::signedDistances(mesh_, *projector_, x);

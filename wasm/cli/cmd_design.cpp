@@ -4,6 +4,7 @@
 // (DIR/inflated.obj) and a report (DIR/report.json: distance to the target, seam length mismatch, solver
 // figures, timings). Unless --no-optimize, the panels are optimized first (optimize/pattern_optimizer.hpp)
 // and report.json gets the per-iteration error and time.
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -41,7 +42,10 @@ std::string objText(const SewnMesh& mesh, const Vertices& x) {
 // The outer surface against the target both ways (the inside of internal panels is not meant to lie on it),
 // relative to the target's bounding-box diagonal.
 TwoWayDistance distanceToTarget(const DesignScene& scene, const SewnMesh& mesh, const Vertices& x) {
-  return measureDistance(scene.target, *scene.projector, x, outerTriangles(mesh), scene.design.target.up);
+  const bool gusseted =
+      std::any_of(scene.design.seams.begin(), scene.design.seams.end(), [](const DesignSeam& s) { return s.band; });
+  return measureDistance(scene.target, *scene.projector, x, outerTriangles(mesh), scene.design.target.up, nullptr,
+                         gusseted);
 }
 
 int positiveInt(const Args& args, const std::string& name, int fallback) {

@@ -124,6 +124,7 @@ bool readSeam(FieldReader& r, const json& s, int index, DesignSeam& out) {
   const std::string label = seamLabel(index, out.name);
   out.closed = r.boolean(s, "closed", false, field + ".closed", "Whether " + label + " is closed");
   out.smooth = r.boolean(s, "smooth", false, field + ".smooth", "Whether " + label + " is smooth");
+  out.band = s.contains("band") && s["band"].is_object();
   out.weight =
       r.number(s, "weight", 1.0, 0.0, 1e6, field + ".weight", "The weight of " + label, "a number from 0 to 1000000");
   if (!s.contains("points") || !s["points"].is_array())

@@ -37,6 +37,9 @@ struct DesignSeam {
   bool closed = false;
   double weight = 1.0;  // sigma of Eq. 10
   bool smooth = false;
+  // A side of a gusset band or the seam across its strip: the file's "band", which the app lays and keeps (its
+  // record is kept as read when the design is written: designSeamJson's base).
+  bool band = false;
 };
 
 struct DesignConnection {

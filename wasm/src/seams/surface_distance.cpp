@@ -171,7 +171,7 @@ std::string uncoveredRemedy(const UncoveredRegion& r) {
     case Remedy::InternalConnection:
       return "an internal connection there";
     case Remedy::Gusset:
-      return "a gusset or more panels";
+      return r.gusseted ? "a wider gusset or more panels" : "a gusset or more panels";
     case Remedy::MoreSeams:
       return "more seams";
     case Remedy::SeamAround:
@@ -195,9 +195,10 @@ std::string uncoveredMessage(const UncoveredRegion& r) {
            "pulls the surface in.";
   if (remedy == Remedy::Gusset)
     return "The inflated shape is too flat for part of the target " + r.where + ": " + percent(r.areaFraction) +
-           " of its surface lies up to " + percent(r.maxDistance) +
-           " of its size outside the balloon. A gusset (a strip sewn in along the seam) or more panels let the "
-           "balloon grow thicker.";
+           " of its surface lies up to " + percent(r.maxDistance) + " of its size outside the balloon. " +
+           (r.gusseted ? "A wider gusset (the strip sewn in along the seam)"
+                       : "A gusset (a strip sewn in along the seam)") +
+           " or more panels let the balloon grow thicker.";
   if (remedy == Remedy::MoreSeams)
     return "The inflated shape falls short of much of the target: " + percent(r.areaFraction) +
            " of its surface lies up to " + percent(r.maxDistance) + " of its size away, farthest " + r.where +
@@ -277,7 +278,8 @@ DistanceSummary TwoWayDistance::worse() const {
 }
 
 TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points,
-                               const Triangles& surface, const UpAxis& up, const Eigen::VectorXd* targetDistances) {
+                               const Triangles& surface, const UpAxis& up, const Eigen::VectorXd* targetDistances,
+                               bool gusseted) {
   TwoWayDistance d;
   d.diagonal = (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
   d.signedDistances = signedDistances(target, projector, points);
@@ -294,6 +296,7 @@ TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& pr
     r.insideFraction = insideFraction(target, r, shape, *shapeProjector);
     r.offFlatSide = offFlatSide(target, r, shape, *shapeProjector);
     r.flatTarget = flatTarget(target, r);
+    r.gusseted = gusseted;
   }
   return d;
 }

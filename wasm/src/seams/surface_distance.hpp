@@ -53,6 +53,8 @@ struct UncoveredRegion {
   // The target is flat there (its triangles all face one way: a box's side): with insideFraction, the balloon bulges
   // past a flat side rather than over a hollow (measureDistance).
   bool flatTarget = false;
+  // The balloon has a gusset already (measureDistance's caller knows the design): too flat, a wider one helps.
+  bool gusseted = false;
   std::vector<int> triangles;  // rows of the target's F: what is left out, to draw
 };
 
@@ -88,9 +90,10 @@ struct TwoWayDistance {
 
 // points: the shape in the target's units; surface: its outer triangles (none: one way only, over every point);
 // up: how the target stands, for the places of the parts left out; targetDistances: the other way, per target
-// vertex, when already measured on this shape (PatternOptimizer::targetDistances, in the target's units).
+// vertex, when already measured on this shape (PatternOptimizer::targetDistances, in the target's units);
+// gusseted: the design has a gusset band (UncoveredRegion::gusseted).
 TwoWayDistance measureDistance(const TriMesh& target, const SurfaceProjector& projector, const Vertices& points,
                                const Triangles& surface, const UpAxis& up,
-                               const Eigen::VectorXd* targetDistances = nullptr);
+                               const Eigen::VectorXd* targetDistances = nullptr, bool gusseted = false);
 
 }  // namespace billow

@@ -6,6 +6,7 @@ import { Op, ErrorCode } from '../worker/protocol.js';
 import { patternForDisplay } from './pattern-session.js';
 import { optimizeArgs } from './stored-result.js';
 import { upOf } from './up-axis.js';
+import { hasGusset } from './band.js';
 import { MAX_SHEET, patternStatRows, exportOptions, formatMillimeters, formatSize } from './fabrication.js';
 import { renderStats } from '../views/stats-list.js';
 import { narrowOutlineShare } from '../views/pattern-layout.js';
@@ -128,7 +129,7 @@ export class Panels {
     const call = this.client.latest(
       'panels',
       Op.optimizeDesign,
-      { ...optimizeArgs(this.app.design, this.app.resolution), scale: this.app.scaleFor(this.app.design), up: upOf(this.app.design) },
+      { ...optimizeArgs(this.app.design, this.app.resolution), scale: this.app.scaleFor(this.app.design), up: upOf(this.app.design), gusseted: hasGusset(this.app.design) },
       {
         onProgress: (p) => {
           // The target's side from the stream, measured whole (on a fine target, which the record samples during a
@@ -241,7 +242,7 @@ export class Panels {
   // { distances (per vertex, m), rms, max (outer surface, over the target's diagonal), diagonal }.
   distanceOf(shape) {
     const { positions, triangles, outer } = shape;
-    return this.client.call(Op.distanceToTarget, { positions, triangles, outer, scale: this.app.scaleFor(this.app.design), up: upOf(this.app.design) }).promise;
+    return this.client.call(Op.distanceToTarget, { positions, triangles, outer, scale: this.app.scaleFor(this.app.design), up: upOf(this.app.design), gusseted: hasGusset(this.app.design) }).promise;
   }
 
   // The signed distance of the shown inflated shape to the target, for the "distance to target" colors, and the

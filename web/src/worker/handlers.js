@@ -139,7 +139,7 @@ export function createHandlers(api) {
     },
     // { seams, scale, triangles, pressure, material } -> { flattenedText, patternText (optimized), history }.
     // Streams { stage, iteration, distanceRms, positions } as the optimizer improves the panels (Sec. 5).
-    *[Op.optimizeDesign]({ seams, triangles = 1000, maxIterations = 400, ...physics }) {
+    *[Op.optimizeDesign]({ seams, triangles = 1000, maxIterations = 400, gusseted = false, ...physics }) {
       const scale = physics.scale;
       yield { stage: 'flattening the segments into panels' };
       const session = requireSession();
@@ -154,7 +154,7 @@ export function createHandlers(api) {
       let mesh = session.optimizedMesh();
       const iterate = () => {
         const positions = session.optimizedPositions();
-        const d = scale > 0 ? session.optimizedDistance(scale, physics.up) : null;
+        const d = scale > 0 ? session.optimizedDistance(scale, physics.up, gusseted) : null;
         return { positions: new Float32Array(positions), distances: d?.distances, uncoveredTriangles: d?.uncoveredTriangles, distance: d && distanceSummary(d) };
       };
       // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
@@ -226,8 +226,8 @@ export function createHandlers(api) {
       yield { stage: 'laying out the panels' };
       return api.exportPattern(patternText, options);
     },
-    *[Op.distanceToTarget]({ positions, scale, triangles = null, outer = null, up }) {
-      return requireSession().distanceToTarget(positions, scale, outerSurface(triangles, outer), up);
+    *[Op.distanceToTarget]({ positions, scale, triangles = null, outer = null, up, gusseted = false }) {
+      return requireSession().distanceToTarget(positions, scale, outerSurface(triangles, outer), up, gusseted);
     },
     *[Op.memoryStats]() {
       return api.memoryStats();

@@ -289,18 +289,19 @@ export class TargetSession {
   // surface also the other way, the target's to the shape: targetRms, targetMax, uncovered (the parts of the
   // target left out: [{ area, max, position, radius, where }], placed as the target stands on `up`) and
   // uncoveredTriangles (Uint32Array, 3 target vertex indices per triangle of those parts, to draw them).
-  distanceToTarget(positions, scale, surface = [], up = '+y') {
+  // gusseted: the design has a gusset band, so a part too flat asks for a wider one.
+  distanceToTarget(positions, scale, surface = [], up = '+y', gusseted = false) {
     const pos = Float64Array.from(positions);
     const tris = Int32Array.from(surface);
     const n = pos.length / 3;
-    const summary = this.api.withHeap([pos, tris], (p, t) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale, t, tris.length / 3, up)));
+    const summary = this.api.withHeap([pos, tris], (p, t) => SolverApi.unwrap(this.session.distanceToTarget(p, n, scale, t, tris.length / 3, up, gusseted)));
     return this.distanceArrays(summary, n);
   }
 
   // distanceToTarget of the optimizer's current shape on its outer surface (the target's side as the
   // optimizer's last iterate measured it, not measured again).
-  optimizedDistance(scale, up = '+y') {
-    const summary = SolverApi.unwrap(this.session.optimizedDistance(scale, up));
+  optimizedDistance(scale, up = '+y', gusseted = false) {
+    const summary = SolverApi.unwrap(this.session.optimizedDistance(scale, up, gusseted));
     return this.distanceArrays(summary, this.session.optimizedVertices());
   }
 
