@@ -548,6 +548,32 @@ TEST(CliDesign, CheckReadsADesignAndRepliesAsABinding) {
 #endif
 }
 
+// billow design's counts are read by the rule every command shares (cli/commands.hpp intOption): a short run of a
+// few iterations is taken, and a count out of range is refused naming what it counts.
+TEST(CliDesign, IterationAndTriangleCountsAreReadAsTheyAreNamed) {
+#ifdef __EMSCRIPTEN__
+  GTEST_SKIP() << "the CLI is native only";
+#else
+  json doc = json::parse(readFileBytes(dataPath("sphere-gores.billow.json")));
+  doc["target"]["obj"] = dataPath("../../web/public/examples/sphere.obj");
+  const std::string design = testing::TempDir() + "billow-counts.billow.json",
+                    dir = testing::TempDir() + "billow-counts";
+  std::ofstream(design) << doc.dump();
+  const std::string base = test::cliPath() + " design " + design + " --out-dir " + dir + " --quiet";
+  std::string out;
+  EXPECT_EQ(test::runCapture(base + " --resolution 300 --max-iterations 3", out), 0) << out;
+  const json report = json::parse(readFileBytes(dir + "/report.json"));
+  int last = -1;
+  for (const auto& h : report["optimize"]["history"]) last = std::max(last, h["iteration"].get<int>());
+  EXPECT_GE(last, 1);
+  EXPECT_LE(last, 3);
+  EXPECT_EQ(test::runCapture(base + " --max-iterations 0", out), 1);
+  EXPECT_NE(out.find("--max-iterations needs an iteration count from 1 to 100000, not '0'"), std::string::npos) << out;
+  EXPECT_EQ(test::runCapture(base + " --resolution 5", out), 1);
+  EXPECT_NE(out.find("--resolution needs a triangle count from 8 to 2000000, not '5'"), std::string::npos) << out;
+#endif
+}
+
 // Seams of weight 0 slide: the report says so, the panels were meshed anew on the way, and the iteration cap
 // holds; the same layout with its drawn weights does not slide.
 TEST(CliDesign, DesignReportsSlidingSeams) {

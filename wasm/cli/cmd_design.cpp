@@ -48,17 +48,6 @@ TwoWayDistance distanceToTarget(const DesignScene& scene, const SewnMesh& mesh, 
                          gusseted);
 }
 
-int positiveInt(const Args& args, const std::string& name, int fallback) {
-  const std::string v = args.get(name);
-  if (v.empty()) return fallback;
-  try {
-    const long n = std::stol(v);
-    if (n >= 8 && n <= 2'000'000) return static_cast<int>(n);
-  } catch (const std::exception&) {
-  }
-  throw Error("cli.usage", "the option " + name + " needs a triangle count from 8 to 2000000, not '" + v + "'");
-}
-
 int designUsage(bool help) {
   std::fprintf(help ? stdout : stderr,
                "usage: billow design DESIGN.json --out-dir DIR [--resolution TRIANGLES] [--no-optimize]\n"
@@ -167,7 +156,7 @@ Optimized optimizePhase(const DesignJob& job, const Args& args, const DesignScen
   OptimizeOptions optimizeOptions;
   if (args.has("--max-iterations")) {  // as given, also when seams slide (OptimizeSliding::iterationFactor)
     optimizeOptions.stopping.maxIterations =
-        positiveInt(args, "--max-iterations", optimizeOptions.stopping.maxIterations);
+        intOption(args, "--max-iterations", optimizeOptions.stopping.maxIterations, 1, 100'000, "an iteration count");
     optimizeOptions.sliding.iterationFactor = 1;
   }
   PatternOptimizer optimizer(scene.target, bp, designSeamWeights(scene.design), optimizeOptions);
@@ -299,7 +288,7 @@ int designCommand(const std::vector<std::string>& argv) {
   job.designPath = args.positional[0];
   job.dir = args.get("--out-dir");
   job.quiet = args.has("--quiet");
-  job.triangles = positiveInt(args, "--resolution", job.triangles);
+  job.triangles = intOption(args, "--resolution", job.triangles, 8, 2'000'000, "a triangle count");
   job.optimize = !args.has("--no-optimize");
   job.memoryBudget = memoryBudgetOption(args);
 

@@ -56,14 +56,6 @@ int suggestUsage(bool help) {
   return help ? 0 : 2;
 }
 
-int intOption(const Args& args, const std::string& name, int fallback, int lo, int hi, const std::string& what) {
-  const double v = numberOption(args, name, fallback, what);
-  if (v != std::floor(v) || v < lo || v > hi)
-    throw Error("cli.usage", "the option " + name + " needs " + what + " from " + std::to_string(lo) + " to " +
-                                 std::to_string(hi) + ", not '" + args.get(name) + "'");
-  return int(v);
-}
-
 bool isDesignFile(const std::string& path) {
   const std::string ext = fs::path(path).extension().string();
   return ext == ".json";

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <climits>
+#include <cmath>
 #include <cstdio>
 #include <fstream>
 
@@ -59,6 +60,14 @@ double numberOption(const Args& args, const std::string& name, double fallback, 
   } catch (const std::exception&) {
     throw Error("cli.usage", "the option " + name + " needs " + what + ", not '" + v + "'");
   }
+}
+
+int intOption(const Args& args, const std::string& name, int fallback, int lo, int hi, const std::string& what) {
+  const double v = numberOption(args, name, fallback, what);
+  if (v != std::floor(v) || v < lo || v > hi)
+    throw Error("cli.usage", "the option " + name + " needs " + what + " from " + std::to_string(lo) + " to " +
+                                 std::to_string(hi) + ", not '" + args.get(name) + "'");
+  return int(v);
 }
 
 double memoryBudgetOption(const Args& args) {

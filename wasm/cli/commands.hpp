@@ -29,6 +29,9 @@ Args parseArgs(const std::vector<std::string>& args, const std::vector<std::stri
 Material materialOption(const Args& args, const Material& fallback);
 // The number after option `name`, or fallback when absent; `what` names it in the error ("a length in mm").
 double numberOption(const Args& args, const std::string& name, double fallback, const std::string& what = "a number");
+// A whole number from lo to hi after option `name`, or fallback when absent; `what` names it in the error ("an
+// iteration count").
+int intOption(const Args& args, const std::string& name, int fallback, int lo, int hi, const std::string& what);
 // --max-memory MB, else the machine's physical memory: the budget a computation's predicted need is
 // checked against before it starts (util/memory_budget.hpp).
 double memoryBudgetOption(const Args& args);
