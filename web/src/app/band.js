@@ -221,11 +221,11 @@ class MinHeap {
 
 const isVector = (v) => Array.isArray(v) && v.length === 3 && v.every((x) => typeof x === 'number' && Number.isFinite(x));
 
-// Parse-and-default of seam.band: { id, part, kind, width_mm, origin, normal (section) | towards (outline) }, or
-// null when it is not a band Billow can lay again.
 // Whether the design has a gusset band (its seams keep their band records: design.js drops a bad one on reading).
 export const hasGusset = (design) => design.seams.some((s) => s.band);
 
+// Parse-and-default of seam.band: { id, part, kind, width_mm, origin, normal (section) | towards (outline) }, or
+// null when it is not a band Billow can lay again.
 export function parseBand(value) {
   if (value === null || typeof value !== 'object' || Array.isArray(value)) return null;
   const { id, part, kind, width_mm: width, origin } = value;
