@@ -163,8 +163,6 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.search.gaussSeidelThreshold = v;
   else if (name == "predictEquilibrium")
     o.search.predictEquilibrium = v != 0;
-  else if (name == "tangentSteps")
-    o.search.tangentSteps = v != 0;
   else if (name == "gaussNewton")
     o.search.gaussNewton = v != 0;
   else if (name == "gaussNewtonCg")

@@ -138,6 +138,26 @@ inline void expectCuttableOutlines(const Pattern& pattern) {
   }
 }
 
+// Teeth and slits of a panel's outline: consecutive outline vertices that both turn by more than `degrees`, the
+// other way from each other. A maker cuts round a lobe, not through a saw tooth or a slit notch.
+inline int outlineTeeth(const Panel& panel, double degrees = 45) {
+  const std::vector<int> loop = outlineVertices(panel);
+  const int n = int(loop.size());
+  std::vector<double> turn(n);
+  for (int j = 0; j < n; ++j) {
+    const Eigen::Vector2d a = panel.vertices.row(loop[(j + n - 1) % n]), b = panel.vertices.row(loop[j]),
+                          c = panel.vertices.row(loop[(j + 1) % n]);
+    const Eigen::Vector2d u = b - a, v = c - b;
+    turn[j] = std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v)) * 180 / M_PI;
+  }
+  int teeth = 0;
+  for (int j = 0; j < n; ++j) {
+    const double before = turn[(j + n - 1) % n];
+    teeth += std::abs(turn[j]) > degrees && std::abs(before) > degrees && turn[j] * before < 0;
+  }
+  return teeth;
+}
+
 // The cut panels inflate with the seam rods the optimizer's balloon had: the simulator's corner rule (seam_rods.hpp)
 // picks the same seam vertices on the optimized pattern as on the flattened one (E_corner).
 inline void expectSameSeamRods(const Pattern& flattened, const Pattern& optimized) {

@@ -186,30 +186,23 @@ TEST(PatternOptimizer, StepsGrowNoMoreThanTheLimitInPredictedShapeMove) {
 
 TEST(PatternOptimizer, ProjectedTrialsEndWhereTheTangentialGradientIsSmall) {
   // With every trial projected onto equal seam lengths, the part of a step across that set is undone by the
-  // projection. The line search measures its slope along the projected path (g T d), so both the default
-  // steps and L-BFGS on the tangential part (OptimizeSearch::tangentSteps) end at a stationary point of the
-  // constrained problem, where the recorded (tangential) gradient is small. With the slope g d the default
-  // stopped at 5.0e-3, searching down to steps of 1e-4 along directions that were no descent once projected.
+  // projection. L-BFGS works with the gradient's tangential part and the line search measures its slope along the
+  // projected path (g T d), so the run ends at a stationary point of the constrained problem, where the recorded
+  // (tangential) gradient is small. With the slope g d it stopped at 5.0e-3, searching down to steps of 1e-4
+  // along directions that were no descent once projected.
   const Fixture f = makeFixture("sphere-gores.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
-  double rms[2] = {0, 0}, gradient[2] = {0, 0};
-  for (const bool tangent : {false, true}) {
-    OptimizeOptions o;
-    o.search.tangentSteps = tangent;
-    o.remeshing.cutPanels = false;  // stationary on its own mesh; the cut panels' fresh mesh is not
-    const OptimizeRun r = optimize(f, o, 80);
-    ASSERT_GE(r.history.size(), 3u);
-    EXPECT_LT(r.history.back().seamMismatch, 1e-4);
-    expectObjectiveNeverRises(r.history);
-    rms[tangent] = r.history.back().distanceRms;
-    gradient[tangent] = r.history.back().gradient;
-    std::printf("[figures] sphere gores 800, tangent steps %d: %d iterations, rms %.3f%%, gradient %.2e, %s\n",
-                int(tangent), r.iterations, 100 * rms[tangent], gradient[tangent], r.message.c_str());
-  }
-  EXPECT_LT(gradient[0], 1e-3);  // the Lagrangian's gradient (measured 1.2e-4; tangent steps 2.3e-4)
-  EXPECT_LT(gradient[1], 1e-3);
-  EXPECT_LT(rms[1], 1.01 * rms[0]);
-  EXPECT_LT(rms[0], 1.01 * rms[1]);
+  OptimizeOptions o;
+  o.remeshing.cutPanels = false;  // stationary on its own mesh; the cut panels' fresh mesh is not
+  const OptimizeRun r = optimize(f, o, 80);
+  ASSERT_GE(r.history.size(), 3u);
+  EXPECT_LT(r.history.back().seamMismatch, 1e-4);
+  expectObjectiveNeverRises(r.history);
+  std::printf("[figures] sphere gores 800: %d iterations, rms %.3f%%, gradient %.2e, %s\n", r.iterations,
+              100 * r.history.back().distanceRms, r.history.back().gradient, r.message.c_str());
+  EXPECT_LT(r.history.back().gradient, 1e-3);  // the Lagrangian's gradient (measured 2.3e-4)
+  EXPECT_GT(r.history.front().gradient, 10 * r.history.back().gradient)
+      << "the run started stationary: it shows nothing";
 }
 
 TEST(PatternOptimizer, GaussSeidelBeforeEachSolveSavesNewtonIterations) {
@@ -497,13 +490,13 @@ TEST(PatternOptimizer, RunEndsOnItsCutPanelsMeshedAtTheDesignsEdgeLength) {
 // near the fold of their equilibrium, the cut panels can snap into another one (fb-spot: the head across the
 // thickness, 1.3 -> 1.9 %); then an earlier iterate is cut instead, and the designer gets cut panels about as close
 // as the optimizer's own mesh was. The snapped cut's settle is abandoned once it has moved beyond any cut that keeps
-// its shape, so it leaves no record. The cow at 1,500 elements, its flattened panels moved at the rounding level as
-// `billow_design_bench --perturb 1` moves them: a path whose cut snaps.
+// its shape, so it leaves no record. The cow at 1,700 elements, its flattened panels moved at the rounding level (seed
+// 3, as `billow_design_bench --perturb` moves them): a path whose cut snaps (seeds 3, 6, 8, 9 and 11 of 1-11 do).
 TEST(PatternOptimizer, CutPanelsThatSnapAreCutFromAnEarlierIterate) {
   BILLOW_NATIVE_ONLY_LONG_RUN();
   Fixture f = makeFixture("../../bench/designs/spot-front-back.billow.json", 1700);
   ASSERT_TRUE(f.built.ok());
-  std::mt19937 rng(1);
+  std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   for (Panel& panel : f.built.pattern.panels)
     for (int v = 0; v < panel.vertices.rows(); ++v)
@@ -534,11 +527,34 @@ TEST(PatternOptimizer, CutPanelsThatSnapAreCutFromAnEarlierIterate) {
   expectCuttableOutlines(r.pattern);
 }
 
+// Flat-cut outlines come out as a maker cuts them. Trials are projected onto equal seam lengths; with full steps the
+// projection undid a step's part across that set by the shortest move, at the outlines' kinks, which grew into saw
+// teeth and slits (fb-bunny at 3,000 elements: 1-5 a panel on every path of four, 5 on this one; fb-spot 1-7; the
+// mushroom's gusset strip 4-9), so the steps are taken along the set's tangent (OptimizeSearch::projectEveryStep).
+TEST(PatternOptimizer, FlatCutOutlinesComeOutWithoutTeeth) {
+  BILLOW_NATIVE_ONLY_LONG_RUN();
+  const Fixture f = makeFixture("../../bench/designs/bunny-front-back.billow.json", 3000);
+  ASSERT_TRUE(f.built.ok());
+  for (const Panel& panel : f.built.pattern.panels) ASSERT_EQ(outlineTeeth(panel), 0) << "flattened " << panel.name;
+  const OptimizeRun r = optimize(f, appStoppingRule());
+  ASSERT_NE(r.state, OptimizeState::Failed) << r.message;
+  EXPECT_LT(r.history.back().distanceRms, 0.8 * r.history.front().distanceRms)
+      << "the run gained little: it shows nothing";
+  int teeth = 0;
+  for (const Panel& panel : r.pattern.panels) {
+    teeth += outlineTeeth(panel);
+    EXPECT_EQ(outlineTeeth(panel), 0) << panel.name;
+  }
+  std::printf("[figures] fb-bunny 3k, app rule: %d iterations, rms %.3f %% -> %.3f %%, %d teeth\n", r.iterations,
+              100 * r.history.front().distanceRms, 100 * r.history.back().distanceRms, teeth);
+}
+
 // Under the app's rule the coarse phase ends on its own window, shorter than the fine mesh's: at the first iteration
 // where its best objective fell by less than 1 % over the last coarseWindow iterations (fb-spot's coarse optimum
-// comes within a dozen, and its 20-iteration window ran on to the 26th: 1.4 s of wasm without change).
+// once came within a dozen, and its 20-iteration window ran on to the 26th: 1.4 s of wasm without change). The six
+// gores of a sphere: their coarse phase ends at the 21st.
 TEST(PatternOptimizer, CoarsePhaseEndsOnItsOwnWindow) {
-  const Fixture f = makeFixture("../../bench/designs/spot-front-back.billow.json", 3000);
+  const Fixture f = makeFixture("../../bench/designs/sphere6.billow.json", 3000);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o = appStoppingRule();
   o.stopping.maxIterations = 60;
@@ -561,7 +577,7 @@ TEST(PatternOptimizer, CoarsePhaseEndsOnItsOwnWindow) {
     return readObjectiveWindow(seen, at, window, o.stopping.windowDecrease, seen.back().objective) !=
            ObjectiveWindow::GoesOn;
   };
-  std::printf("[figures] fb-spot 3k, app rule: coarse phase %d iterations, %.2f s, rms %.3f %% -> %.3f %%\n", last,
+  std::printf("[figures] sphere6 3k, app rule: coarse phase %d iterations, %.2f s, rms %.3f %% -> %.3f %%\n", last,
               h[k - 1].ms / 1000, 100 * h.front().distanceRms, 100 * h[k - 1].distanceRms);
   EXPECT_LT(last, o.remeshing.coarseIterations) << "the phase ran to its cap";
   EXPECT_TRUE(windowEnds(last));
@@ -625,7 +641,7 @@ TEST(PatternOptimizer, RemeshingOnItsSchedule) {
   EXPECT_EQ(opt.pattern().panels.size(), f.built.pattern.panels.size());
 }
 
-// Outlines that zig-zag below the edge length (free seams, tangent steps, a weak E_smooth) resample into chords
+// Outlines that zig-zag below the edge length (free seams, a weak E_smooth) resample into chords
 // that differ across a seam. Such a remeshing is refused and the old mesh kept, so every iterate still sews
 // (one used to go on with stitched edges 1.5 times apart). So is one whose seam-length projection pulls an
 // outline across itself: no iterate is a panel that cannot be cut.
@@ -633,7 +649,7 @@ TEST(PatternOptimizer, RemeshingThatWouldNotSewKeepsTheOldMesh) {
   const Fixture f = makeFixture("sphere-gores.billow.json", 800);
   ASSERT_TRUE(f.built.ok());
   OptimizeOptions o;
-  o.search.tangentSteps = true, o.weights.seam = 0, o.weights.smooth = 0.05;
+  o.weights.seam = 0, o.weights.smooth = 0.05;
   o.remeshing.every = 5, o.remeshing.maxRemeshings = 100, o.stopping.maxIterations = 60;
   o.sliding.seamWeight = 0;  // these settings as they are, not those of sliding seams (slidingOptions)
   PatternOptimizer opt(f.scene->target, f.built, f.weights, o);
@@ -664,7 +680,8 @@ TEST(PatternOptimizer, StopsWhenTheObjectiveNoLongerDecreasesNoticeably) {
   EXPECT_EQ(opt.message(), "the objective no longer decreases noticeably");
   std::vector<double> E(opt.iterations() + 1, NAN);
   for (const OptimizeRecord& r : opt.history())
-    if (!r.projected) E[r.iteration] = r.objective;  // not the final seam-length projection
+    // Not the final seam-length projection, nor the cut panels' record (another mesh) at the same iteration.
+    if (!r.projected && !r.cutPanels) E[r.iteration] = r.objective;
   const int n = opt.iterations();
   ASSERT_GE(n, 5);
   EXPECT_LT(E[n - 5] - E[n], 0.05 * E[n]);
@@ -751,7 +768,6 @@ TEST(PatternOptimizer, SlidingSeamsChangeHowTheOptimizerWorks) {
 
   const double D = 2, atReference = o.sliding.regularizerEdgeLength * D;
   const OptimizeOptions held = slidingOptions(o, {1, 1}, atReference / 2, D);
-  EXPECT_FALSE(held.search.tangentSteps);
   EXPECT_FALSE(held.search.gaussNewton);
   EXPECT_EQ(held.stopping.maxIterations, o.stopping.maxIterations);
   EXPECT_EQ(held.stopping.windowDecrease, o.stopping.windowDecrease);
@@ -763,7 +779,6 @@ TEST(PatternOptimizer, SlidingSeamsChangeHowTheOptimizerWorks) {
   EXPECT_EQ(held.weights.slidingBelow, o.weights.slidingBelow);
 
   const OptimizeOptions coarse = slidingOptions(o, {1, 0}, 2 * atReference, D);  // coarser than the reference
-  EXPECT_TRUE(coarse.search.tangentSteps);
   EXPECT_TRUE(coarse.search.gaussNewton);
   EXPECT_EQ(coarse.remeshing.every, o.sliding.remeshEvery);
   EXPECT_EQ(coarse.remeshing.stallIterations, o.sliding.stallIterations);

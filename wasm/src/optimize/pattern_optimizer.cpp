@@ -85,7 +85,6 @@ OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector
                                double D) {
   OptimizeOptions o = options;
   if (!hasSlidingSeams(options, seamWeights)) return o;
-  o.search.tangentSteps = true;
   o.search.gaussNewton = true;
   o.search.alignment = {10, true};
   o.remeshing.stallIterations = o.sliding.stallIterations;
@@ -662,7 +661,7 @@ std::optional<PatternOptimizer::CutShape> PatternOptimizer::cutShape(const Eigen
 }
 
 Eigen::VectorXd PatternOptimizer::tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const {
-  if (!(projectTrials_ && options_.search.tangentSteps)) return v;
+  if (!projectTrials_) return v;
   return tangentToSeamLengths(objective_->edgePairs(), X, v);
 }
 
@@ -825,8 +824,8 @@ bool PatternOptimizer::iterate() {
   const bool gnStep = gn.size() == X_.size();
   const int m = gnStep ? 0 : static_cast<int>(S_.size());
   // With every trial projected onto equal seam lengths, a step's part across that constraint set is undone by
-  // the projection: with tangentSteps L-BFGS works with the gradient's tangential part and its steps are
-  // made tangential (tangential() is the identity otherwise).
+  // the projection: L-BFGS works with the gradient's tangential part and its steps are made tangential
+  // (tangential() is the identity otherwise).
   const Eigen::VectorXd gt = tangential(X_, g_);
   Eigen::VectorXd q = -gt;
   std::vector<double> a(m);

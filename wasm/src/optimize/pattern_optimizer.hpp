@@ -80,12 +80,10 @@ struct OptimizeSearch {
   // iterations (bench/README.md "The line search").
   double shapeStepGrowth = 5;
   // Every trial projected onto equal seam lengths, so the panels never drift far from sewable (one large
-  // projection at the end can fold triangles).
+  // projection at the end can fold triangles). L-BFGS then searches along the tangent of that set (the recorded
+  // gradient is the Lagrangian's): full steps left the projection a part across it to undo, which it did by the
+  // shortest move, at the outlines' kinks, and the outlines grew teeth (bench/README.md "Tangent steps").
   bool projectEveryStep = true;
-  // With every trial projected: search along the tangent of the equal-seam-length set (the recorded gradient is
-  // then the Lagrangian's). On for sliding seams only: with held seams the gores turn lumpy (bench/README.md
-  // "Tangent steps").
-  bool tangentSteps = false;
   // Each trial's equilibrium solve starts from the first-order prediction x + dx, dx = -K^-1 dg/dX dX, with the
   // adjoint's factorization of K (one more back-substitution), instead of from x.
   bool predictEquilibrium = true;
@@ -136,14 +134,13 @@ struct OptimizeRemeshing {
 
 // Sliding seams (Sec. 6, "Seam Placement": a seam of small weight moves to where the shape fits best). When some
 // seam's sigma x weights.seam is below seamWeight (<= 0: never), only E_smooth holds its outline and
-// slidingOptions changes the run: tangent steps, Gauss-Newton directions (they leave the symmetric first plateau
-// sooner); the panels meshed anew every remeshEvery iterations, or where a mesh stalls; the
-// outline regularizers and the step held at a physical length (tuned at an edge length of regularizerEdgeLength
-// x the model size: at an edge length h that many times finer, sobolevLength and maxMoveEdges grow with 1/h and
-// E_smooth along sliding seams with 1/h^2, else the outlines zig-zag below the edge length); maxIterations x
-// iterationFactor and no objective window, which cannot tell the first plateau, before the seams move, from the
-// end, but a distance window over distanceWindow iterations (two remeshings, longer than the first plateau under
-// Gauss-Newton steps; bench/README.md "Sliding seams").
+// slidingOptions changes the run: Gauss-Newton directions (they leave the symmetric first plateau sooner); the panels
+// meshed anew every remeshEvery iterations, or where a mesh stalls; the outline regularizers and the step held at a
+// physical length (tuned at an edge length of regularizerEdgeLength x the model size: at an edge length h that many
+// times finer, sobolevLength and maxMoveEdges grow with 1/h and E_smooth along sliding seams with 1/h^2, else the
+// outlines zig-zag below the edge length); maxIterations x iterationFactor and no objective window, which cannot tell
+// the first plateau, before the seams move, from the end, but a distance window over distanceWindow iterations (two
+// remeshings, longer than the first plateau under Gauss-Newton steps; bench/README.md "Sliding seams").
 struct OptimizeSliding {
   double seamWeight = 0.1;
   double iterationFactor = 2;
@@ -425,7 +422,7 @@ class PatternOptimizer {
   // The damped Gauss-Newton direction at the current iterate and the decrease its model predicts; empty when there
   // is no model.
   Eigen::VectorXd gaussNewtonDirection(double* predicted);
-  // v, or its part tangent to equal seam lengths at X when steps are (OptimizeSearch::tangentSteps).
+  // v, or its part tangent to equal seam lengths at X when every trial is projected (OptimizeSearch::projectEveryStep).
   Eigen::VectorXd tangential(const Eigen::VectorXd& X, const Eigen::VectorXd& v) const;
   Pattern pattern_;
   SewnMesh mesh_;

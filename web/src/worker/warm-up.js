@@ -5,8 +5,9 @@
 import { STEP_MILLIS } from './handlers.js';
 import { TargetSession } from './solver-api.js';
 
-// Optimizer iterations on 300 triangles: enough for the solver's and the optimizer's loops to be compiled again (a
-// 3,000-element design's iterations then take as long as in a process that has optimized another before).
+// Optimizer iterations on 300 triangles, at most (the optimizer may stop first): enough for the solver's and the
+// optimizer's loops to be compiled again (a 3,000-element design's iterations then take as long as in a process that
+// has optimized another before).
 const WARM_UP_ITERATIONS = 20;
 const SCALE = 0.3; // meters per target unit: a balloon 0.48 m tall
 
