@@ -284,6 +284,9 @@ test('a sheet narrower than a piece: the pattern pane offers the width that fits
   const label = await offer.textContent();
   const width = Number(label.match(/Use a (\d+) mm sheet/)?.[1]);
   assert.ok(width > 150 && width <= 1000, label);
+  // The pattern's figures stay, the sheet's row saying what it needs.
+  await page.waitForFunction((w) => document.querySelector('#pattern-stats')?.textContent.includes(`needs ${w} mm; this one is 150 mm`), width, { timeout: 30000 });
+  assert.match(await page.textContent('#pattern-stats'), /Panels\s*\d+.*Material\s*[\d.]+ m².*Seams\s*[\d.]+ m/s);
   await screenshot(page, 'flat-cut-sheet-offer');
   await offer.click();
   await page.waitForFunction((w) => window.billow.test.cutStatistics?.totals.sheet_width_mm === w, width, { timeout: 30000 });

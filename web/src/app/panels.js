@@ -314,6 +314,24 @@ export class Panels {
       const fits = error.code === 'export.sheet-too-narrow' && error.details?.sheet_width <= MAX_SHEET && error.details.sheet_width;
       const action = fits ? { label: `Use a ${formatMillimeters(fits, f.units)} sheet`, run: () => this.app.setFabrication({ sheet_width: fits }) } : null;
       this.messages.show('warning', `The cut outline could not be drawn: ${error.message}`, [], { cause: 'cut-lines', action });
+      if (fits) await this.figuresOnSheet(text, fits);
+    }
+  }
+
+  // The pattern's figures where its pieces do not fit the designer's sheet: laid out on the width that fits them, the
+  // sheet's row saying what it needs (its panels, material and seams do not depend on the sheet).
+  async figuresOnSheet(text, width) {
+    const f = this.app.design.fabrication;
+    try {
+      const result = await this.client.latest('cut-lines', Op.exportPattern, {
+        patternText: text,
+        options: exportOptions(f, { sheet_width: width }),
+      }).promise;
+      const rows = patternStatRows(result.statistics, f.units).map(([name, value]) =>
+        name === 'Sheet' ? [name, `needs ${formatMillimeters(width, f.units)}; this one is ${formatMillimeters(f.sheet_width, f.units)}`] : [name, value]);
+      renderStats(this.el.patternStats, rows);
+    } catch {
+      // cancelled by a newer request, or the worker restarted: the figures stay empty until the next result
     }
   }
 
