@@ -68,6 +68,7 @@ async function flatCut() {
   const { SeamTool } = await import('../web/src/tools/seam-tool.js');
   const { heightScale } = await import('../web/src/app/up-axis.js');
   const { Object3D, Vector3 } = await import('three');
+  const { Pane3D } = await import('../web/src/views/pane3d.js');
   const out = [];
   for (const [name, file, towards, bandMm] of FLAT_CUT) {
     const obj = readObj(join(MESHES, file));
@@ -80,7 +81,11 @@ async function flatCut() {
     const pane = {
       element: { addEventListener() {}, dataset: {} },
       mesh: new Object3D(), // the target pane's: Y up, so no turn
+      group: new Object3D(),
       viewDirection: () => new Vector3(...towards),
+      // The Outline's note names a straighter view (SeamTool.straighterViewClause) as the target pane would.
+      namedView: Pane3D.prototype.namedView,
+      defaultView: Pane3D.prototype.defaultView,
       seams: { showCursor() {} },
       requestRender() {},
     };
