@@ -824,9 +824,12 @@ bool PatternOptimizer::iterate() {
   const bool gnStep = gn.size() == X_.size();
   const int m = gnStep ? 0 : static_cast<int>(S_.size());
   // With every trial projected onto equal seam lengths, a step's part across that constraint set is undone by
-  // the projection: L-BFGS works with the gradient's tangential part and its steps are made tangential
-  // (tangential() is the identity otherwise).
-  const Eigen::VectorXd gt = tangential(X_, g_);
+  // the projection: L-BFGS works with the gradient's tangential part and its steps are made tangential (T, the
+  // identity otherwise; one factorization of the seam-length Jacobian at X_ serves them all).
+  const std::optional<SeamTangent> tangent =
+      projectTrials_ ? std::optional<SeamTangent>(std::in_place, objective_->edgePairs(), X_) : std::nullopt;
+  const auto T = [&](const Eigen::VectorXd& v) { return tangent ? (*tangent)(v) : v; };
+  const Eigen::VectorXd gt = T(g_);
   Eigen::VectorXd q = -gt;
   std::vector<double> a(m);
   for (int i = m - 1; i >= 0; --i) a[i] = S_[i].dot(q) / Y_[i].dot(S_[i]), q -= a[i] * Y_[i];
@@ -837,15 +840,13 @@ bool PatternOptimizer::iterate() {
     if (m > 0) q *= S_[m - 1].dot(Y_[m - 1]) / Y_[m - 1].dot(precondition(Y_[m - 1]));
   }
   for (int i = 0; i < m; ++i) q += (a[i] - Y_[i].dot(q) / Y_[i].dot(S_[i])) * S_[i];
-  Eigen::VectorXd d = tangential(X_, q);
-  // A projected trial X_ + alpha d lands at X_ + alpha T d to first order (T: tangentToSeamLengths), so the
-  // slope the line search meets is g T d; g d overstates it, up to 100-fold once d is mostly across the set.
-  const auto T = [&](const Eigen::VectorXd& v) { return tangentToSeamLengths(objective_->edgePairs(), X_, v); };
-  const auto slopeAlong = [&](const Eigen::VectorXd& v) { return g_.dot(projectTrials_ ? T(v) : v); };
+  Eigen::VectorXd d = T(q);
+  // A projected trial X_ + alpha d lands at X_ + alpha T d to first order, so the slope the line search meets is
+  // g T d; g d overstates it, up to 100-fold once d is mostly across the set.
+  const auto slopeAlong = [&](const Eigen::VectorXd& v) { return g_.dot(T(v)); };
   double slope = slopeAlong(d);
-  if (!(slope < 0)) d = -tangential(X_, precondition(gt)), slope = slopeAlong(d), S_.clear(), Y_.clear();
-  // Steepest descent within the set: its slope -(T g)^T M^-1 (T g) is negative unless T g = 0.
-  if (!(slope < 0) && projectTrials_) d = -T(precondition(T(g_))), slope = g_.dot(d);
+  // Else steepest descent within the set: its slope -(T g)^T M^-1 (T g) is negative unless T g = 0.
+  if (!(slope < 0)) d = -T(precondition(gt)), slope = slopeAlong(d), S_.clear(), Y_.clear();
   timings_.directionMs += nowMs() - t0;
   if (!(slope < 0)) return false;
   // Cap the largest vertex move (a step without curvature information has no scale of its own).
