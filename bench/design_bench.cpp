@@ -7,7 +7,7 @@
 //                       [--trace] [--app-rule] [--set NAME=VALUE ...] [--no-remesh-check] [--cut-scale F]
 //                       [--out-dir DIR] [--perturb SEED] [--json-out FILE]
 // --triangles overrides every design's element count (quick runs); --trace prints every iterate to stderr;
-// --set changes an optimizer option (sobolevLength, quality, laplace, smooth, seam, cover,
+// --set changes an optimizer option (sobolevLength, quality, laplace, smooth, fair, seam, cover,
 // gap, coverReach, maxIterations, stallIterations, tolerance and band: the equilibrium's) to compare variants;
 // --app-rule stops where the app stops (optimize/stopping_rule.hpp), before any --set. After
 // each run the final outlines are meshed anew and inflated (the cut panels' RMS, "remeshedOutlines"; --no-remesh-check
@@ -151,6 +151,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.remeshing.coarseMinTriangles = int(v);
   else if (name == "tolerance")
     o.inflate.tolerance = v;
+  else if (name == "fair")
+    o.weights.fair = v;
   else if (name == "projectEveryStep")
     o.search.projectEveryStep = v != 0;
   else if (name == "maxMoveEdges")
@@ -219,15 +221,16 @@ json run(const json& entry, const std::filesystem::path& base, const BenchOption
   const auto trace = [&] {
     for (; bo.trace && traced < opt.history().size(); ++traced) {
       const OptimizeRecord& h = opt.history()[traced];
-      std::fprintf(stderr,
-                   "%s it %3d%s E %.6e (t %.2e c %.2e s %.2e l %.2e b %.2e L %.2e q %.2e g %.2e) rms %.3f%% max %.3f%% "
-                   "mismatch %.1e grad %.2e alpha %.3g newton %d %.0f ms%s%s%s%s%s%s\n",
-                   entry.at("name").get<std::string>().c_str(), h.iteration, h.projected ? "P" : " ", h.objective,
-                   h.terms.target, h.terms.cover, h.terms.seam, h.terms.length, h.terms.smooth, h.terms.laplace,
-                   h.terms.quality, h.terms.gap, 100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch, h.gradient,
-                   h.stepLength, h.equilibriumIterations, h.ms, h.remeshed ? " remeshed" : "",
-                   h.resettled ? " resettled" : "", h.snapLimited ? " snap-limited" : "",
-                   h.cutShort ? " cut-short" : "", h.restored ? " restored" : "", h.cutPanels ? " cut" : "");
+      std::fprintf(
+          stderr,
+          "%s it %3d%s E %.6e (t %.2e c %.2e s %.2e l %.2e b %.2e L %.2e q %.2e g %.2e f %.2e) rms %.3f%% max %.3f%% "
+          "mismatch %.1e grad %.2e alpha %.3g newton %d %.0f ms%s%s%s%s%s%s\n",
+          entry.at("name").get<std::string>().c_str(), h.iteration, h.projected ? "P" : " ", h.objective,
+          h.terms.target, h.terms.cover, h.terms.seam, h.terms.length, h.terms.smooth, h.terms.laplace, h.terms.quality,
+          h.terms.gap, h.terms.fair, 100 * h.distanceRms, 100 * h.distanceMax, h.seamMismatch, h.gradient, h.stepLength,
+          h.equilibriumIterations, h.ms, h.remeshed ? " remeshed" : "", h.resettled ? " resettled" : "",
+          h.snapLimited ? " snap-limited" : "", h.cutShort ? " cut-short" : "", h.restored ? " restored" : "",
+          h.cutPanels ? " cut" : "");
     }
   };
   // The mesh of each remeshing (the coarse first phase's, then the design's; sliding seams remesh often), for the

@@ -13,8 +13,24 @@ namespace billow {
 OptimizeWeights weightsAtEdgeLength(OptimizeWeights w, double ratio) {
   w.seam /= ratio;
   w.smooth /= std::pow(ratio, 4);
+  w.fair /= std::pow(ratio, 4);
   return w;
 }
+
+namespace {
+// The outline's turning angle at Q_j (Q_l, Q_j, Q_r in order), in (-pi, pi], and its gradients when given.
+double turningAngle(const Eigen::Vector2d& l, const Eigen::Vector2d& j, const Eigen::Vector2d& r, Eigen::Vector2d* gl,
+                    Eigen::Vector2d* gj, Eigen::Vector2d* gr) {
+  const Eigen::Vector2d u = j - l, v = r - j;
+  if (gl) {
+    const Eigen::Vector2d pu = Eigen::Vector2d(-u.y(), u.x()) / u.squaredNorm(),
+                          pv = Eigen::Vector2d(-v.y(), v.x()) / v.squaredNorm();
+    *gl = pu, *gr = pv, *gj = -pu - pv;
+  }
+  return std::atan2(u.x() * v.y() - u.y() * v.x(), u.dot(v));
+}
+double wrapAngle(double a) { return a - 2 * M_PI * std::round(a / (2 * M_PI)); }
+}  // namespace
 
 PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern& built, const SewnMesh& mesh,
                                    const std::vector<double>& seamWeights, const OptimizeWeights& weights)
@@ -156,6 +172,15 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
         reach[v] = std::min(reach[v], (q - a - closestSegmentParameter(q, a, b) * (b - a)).norm());
       }
     gapReach_.push_back(std::move(reach));
+    // E_fair's outlines: those without a corner (pieces.size() > 1 marks where seams meet, as below).
+    if (bp.pieces.size() <= 1 && nb > 3) {
+      std::vector<double> turn0(nb);
+      for (int j = 0; j < nb; ++j)
+        turn0[j] = turningAngle(Q.row((j + nb - 1) % nb).transpose(), Q.row(j).transpose(),
+                                Q.row((j + 1) % nb).transpose(), nullptr, nullptr, nullptr);
+      fairOutlines_.push_back({outlines_.back(), std::move(turn0)});
+      fairVertices_ += nb;
+    }
     for (int j = 0; j < nb; ++j) {
       // A corner is where seams meet, and the outline may turn there; the one corner of a panel bounded by a
       // single loop is only where the loop starts, and left free there it bent into a hook (58 degrees on the
@@ -395,8 +420,39 @@ double PatternObjective::patternEnergy(const Eigen::VectorXd& X, Eigen::VectorXd
       grad->segment<2>(2 * t.pattern[0]) -= G.col(0) + G.col(1);
     }
   const double Eg = w_.gap > 0 ? gapEnergy(X, grad) : 0;
-  if (terms) terms->length = El, terms->smooth = Eb, terms->laplace = EL, terms->quality = Eq, terms->gap = Eg;
-  return El + Eb + EL + Eq + Eg;
+  const double Ef = w_.fair > 0 ? fairEnergy(X, grad) : 0;
+  if (terms)
+    terms->length = El, terms->smooth = Eb, terms->laplace = EL, terms->quality = Eq, terms->gap = Eg, terms->fair = Ef;
+  return El + Eb + EL + Eq + Eg + Ef;
+}
+
+double PatternObjective::fairEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const {
+  const double w = w_.fair / std::max(fairVertices_, 1);
+  double E = 0;
+  for (const FairOutline& f : fairOutlines_) {
+    const int nb = int(f.loop.size());
+    const auto P = [&](int j) { return Eigen::Vector2d(X.segment<2>(2 * f.loop[size_t((j + nb) % nb)])); };
+    std::vector<double> change(nb), dEdChange(nb, 0.0);
+    std::vector<Eigen::Vector2d> gl(nb), gj(nb), gr(nb);
+    for (int j = 0; j < nb; ++j) {
+      const double turn = turningAngle(P(j - 1), P(j), P(j + 1), grad ? &gl[j] : nullptr, grad ? &gj[j] : nullptr,
+                                       grad ? &gr[j] : nullptr);
+      change[j] = wrapAngle(turn - f.turn0[size_t(j)]);
+    }
+    for (int j = 0; j < nb; ++j) {
+      const int l = (j + nb - 1) % nb, r = (j + 1) % nb;
+      const double d = change[l] - 2 * change[j] + change[r];
+      E += w * d * d;
+      dEdChange[l] += 2 * w * d, dEdChange[r] += 2 * w * d, dEdChange[j] -= 4 * w * d;
+    }
+    if (!grad) continue;
+    for (int j = 0; j < nb; ++j) {
+      grad->segment<2>(2 * f.loop[size_t((j + nb - 1) % nb)]) += dEdChange[j] * gl[j];
+      grad->segment<2>(2 * f.loop[size_t(j)]) += dEdChange[j] * gj[j];
+      grad->segment<2>(2 * f.loop[size_t((j + 1) % nb)]) += dEdChange[j] * gr[j];
+    }
+  }
+  return E;
 }
 
 double PatternObjective::gapEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const {

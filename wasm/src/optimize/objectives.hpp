@@ -27,6 +27,13 @@
 //               barrier of IPC, Li et al. 2020; ours), h_v = min(l, v's distance to the nearest such edge in the
 //               flattened pattern): a panel whose outline crosses itself cannot be cut, and where the optimizer
 //               refused such steps it stopped at a thin tip of the outline; the barrier turns the steps along it.
+//   E_fair    = w_f sum_j (c_j-1 - 2 c_j + c_j+1)^2 / m over the vertices j of each outline without a corner (one
+//               closed seam around a flat-cut panel), c_j = theta_j(X) - theta_j(X0) the change of the outline's
+//               turning angle at vertex j since the pattern X0 the objective was made for, m their count (ours): a
+//               change of turning that alternates from vertex to vertex (a spike, a slit or a needle a vertex or two
+//               wide) costs, a bulge spread along the outline hardly does. Unheld, the round balloon's rim gathered
+//               into teeth and other outlines grew needles, which no maker cuts (bench/README.md "Teeth that are
+//               left").
 // Why E_target weighs by the *current* areas: it is then a quadrature of the surface integral of d^2, which
 // does not change (to the order of the discretization) when pattern vertices slide within a panel together
 // with their inflated positions. With weights fixed at the flattened pattern, sliding vertices into regions
@@ -57,6 +64,7 @@ struct OptimizeWeights {
   // nothing else holds (OptimizeSliding::seamWeight sets both).
   double slidingSmooth = 1.0;
   double slidingBelow = 0;
+  double fair = 0.001;    // E_fair
   double laplace = 0.01;  // E_laplace: only needs to remove the interior sliding null space
   double quality = 0.01;  // E_quality
   double gap = 1.0;       // E_gap
@@ -65,13 +73,14 @@ struct OptimizeWeights {
 // The weights that ask of a mesh of `ratio` times the design's edge length what `w` asks of the design's mesh (the
 // coarse first phase): E_smooth and E_seam sum over outline and seam vertices divided by the count of all vertices,
 // where E_target and E_cover are means, so against them E_seam grows as the ratio and E_smooth as its fourth power (a
-// fair outline's second differences also grow as the edge length squared). Unscaled, the coarse phase smoothed
-// outlines the fine mesh then meshed anew instead of following the target (bench/README.md "The coarse first phase").
+// fair outline's second differences also grow as the edge length squared); E_fair as E_smooth. Unscaled, the coarse
+// phase smoothed outlines the fine mesh then meshed anew instead of following the target (bench/README.md "The coarse
+// first phase").
 OptimizeWeights weightsAtEdgeLength(OptimizeWeights w, double ratio);
 
 struct ObjectiveTerms {
-  double target = 0, cover = 0, seam = 0, length = 0, smooth = 0, laplace = 0, quality = 0, gap = 0;
-  double total() const { return target + cover + seam + length + smooth + laplace + quality + gap; }
+  double target = 0, cover = 0, seam = 0, length = 0, smooth = 0, laplace = 0, quality = 0, gap = 0, fair = 0;
+  double total() const { return target + cover + seam + length + smooth + laplace + quality + gap + fair; }
 };
 
 class PatternObjective {
@@ -183,6 +192,15 @@ class PatternObjective {
   std::vector<std::vector<int>> outlines_;        // each panel's outline loop (rows of X, in order)
   std::vector<std::vector<double>> gapReach_;     // E_gap's h_v, per outline vertex
   double gapEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const;
+  // E_fair's outlines (those without a corner): their rows in order and each vertex's turning angle in the pattern
+  // the objective was made for.
+  struct FairOutline {
+    std::vector<int> loop;
+    std::vector<double> turn0;
+  };
+  std::vector<FairOutline> fairOutlines_;
+  int fairVertices_ = 0;
+  double fairEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const;
   // E_cover: the target samples (vertex ids of imls_.target()) and their weights (w_c m a_j / (A_T n D^2));
   // outer triangles around each outer triangle (sharing a vertex) for the walk; each sample's tracked triangle.
   std::vector<int> coverVertex_;
