@@ -64,7 +64,7 @@ struct OptimizeWeights {
   // nothing else holds (OptimizeSliding::seamWeight sets both).
   double slidingSmooth = 1.0;
   double slidingBelow = 0;
-  double fair = 0.001;    // E_fair
+  double fair = 0.001;    // E_fair: the weights tried, bench/README.md "Teeth that are left, and E_fair"
   double laplace = 0.01;  // E_laplace: only needs to remove the interior sliding null space
   double quality = 0.01;  // E_quality
   double gap = 1.0;       // E_gap
