@@ -1,5 +1,6 @@
 // The objective of pattern optimization (Skouras et al. 2014, Sec. 5.1; DESIGN.md "Pattern optimization"):
-//   E(x, X) = E_target(x) + E_seam(x) + E_length(X) + E_smooth(X) + E_laplace(X).
+//   E(x, X) = E_target(x) + E_seam(x) + E_length(X) + E_smooth(X) + E_laplace(X) (the paper's terms)
+//             + E_cover(x) + E_quality(X) + E_gap(X) + E_fair(X) (ours).
 // Every term is normalized to the model: residuals in meters are divided by the target's bounding-box
 // diagonal D, and sums by the number n of simulation vertices, so a weight of 1 means "one meter of this
 // residual costs as much as one meter of distance to the target at an average vertex".
