@@ -178,7 +178,7 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
       for (int j = 0; j < nb; ++j)
         turn0[j] = turningAngle(Q.row((j + nb - 1) % nb).transpose(), Q.row(j).transpose(),
                                 Q.row((j + 1) % nb).transpose(), nullptr, nullptr, nullptr);
-      fairOutlines_.push_back({outlines_.back(), std::move(turn0)});
+      fairOutlines_.push_back({outlines_.size() - 1, std::move(turn0)});
       fairVertices_ += nb;
     }
     for (int j = 0; j < nb; ++j) {
@@ -430,8 +430,9 @@ double PatternObjective::fairEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* g
   const double w = w_.fair / std::max(fairVertices_, 1);
   double E = 0;
   for (const FairOutline& f : fairOutlines_) {
-    const int nb = int(f.loop.size());
-    const auto P = [&](int j) { return Eigen::Vector2d(X.segment<2>(2 * f.loop[size_t((j + nb) % nb)])); };
+    const std::vector<int>& loop = outlines_[f.outline];
+    const int nb = int(loop.size());
+    const auto P = [&](int j) { return Eigen::Vector2d(X.segment<2>(2 * loop[size_t((j + nb) % nb)])); };
     std::vector<double> change(nb), dEdChange(nb, 0.0);
     std::vector<Eigen::Vector2d> gl(nb), gj(nb), gr(nb);
     for (int j = 0; j < nb; ++j) {
@@ -447,9 +448,9 @@ double PatternObjective::fairEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* g
     }
     if (!grad) continue;
     for (int j = 0; j < nb; ++j) {
-      grad->segment<2>(2 * f.loop[size_t((j + nb - 1) % nb)]) += dEdChange[j] * gl[j];
-      grad->segment<2>(2 * f.loop[size_t(j)]) += dEdChange[j] * gj[j];
-      grad->segment<2>(2 * f.loop[size_t((j + 1) % nb)]) += dEdChange[j] * gr[j];
+      grad->segment<2>(2 * loop[size_t((j + nb - 1) % nb)]) += dEdChange[j] * gl[j];
+      grad->segment<2>(2 * loop[size_t(j)]) += dEdChange[j] * gj[j];
+      grad->segment<2>(2 * loop[size_t((j + 1) % nb)]) += dEdChange[j] * gr[j];
     }
   }
   return E;

@@ -193,10 +193,10 @@ class PatternObjective {
   std::vector<std::vector<int>> outlines_;        // each panel's outline loop (rows of X, in order)
   std::vector<std::vector<double>> gapReach_;     // E_gap's h_v, per outline vertex
   double gapEnergy(const Eigen::VectorXd& X, Eigen::VectorXd* grad) const;
-  // E_fair's outlines (those without a corner): their rows in order and each vertex's turning angle in the pattern
-  // the objective was made for.
+  // E_fair's outlines (those without a corner): which of outlines_, and each vertex's turning angle in the pattern the
+  // objective was made for.
   struct FairOutline {
-    std::vector<int> loop;
+    size_t outline;
     std::vector<double> turn0;
   };
   std::vector<FairOutline> fairOutlines_;
