@@ -299,3 +299,46 @@ TEST(Outline, ASlabWithTwoHandlesSeenFromItsEdgeIsOpenedIntoPanels) {
   EXPECT_TRUE(scene->segmentation.problems.empty());
   EXPECT_GE(scene->segmentation.segments.size(), 2u);
 }
+
+// The cuts openIntoPanels adds end on the lines of the seams they join, and the app keeps them there only if it knows
+// which (a point's "on"): openSeamEndHosts names them from the traced lines. A seam around a handle has few control
+// points, and its line bows far from the chords between them: by the chords the app once put both ends of a short cut
+// that opened a boot's tube on the outline, and the tube stayed shut.
+TEST(Outline, TheCutsThatOpenIntoPanelsNameTheSeamsTheyEndOn) {
+  const auto scene = test::sceneOf(test::twoHoledSlab());
+  const std::optional<Outline> outline = outlineSeenFrom(scene->target, Eigen::Vector3d::UnitY());
+  ASSERT_TRUE(outline.has_value());
+  DesignSeam seam;
+  seam.closed = true;
+  for (const SurfacePoint& p : sectionSeamPoints(scene->target, outline->loop, 0.02, true))
+    seam.points.push_back(DesignPoint{true, p, Eigen::Vector3d::Zero()});
+  const LayoutEvaluation opened = openIntoPanels(*scene, {seam}, 1, {}, 1000);
+  ASSERT_TRUE(opened.ok) << opened.problem;
+  std::vector<DesignSeam> seams = opened.seams;
+  // One more open seam whose ends lie on no seam: across the slab's middle, away from every line.
+  const DesignSeam& first = seams[0];
+  DesignSeam loose;
+  loose.points = {first.points[first.points.size() / 4], first.points[3 * first.points.size() / 4]};
+  for (DesignPoint& p : loose.points) {
+    const Eigen::Vector3d x = position(scene->target, p.surface);
+    p.surface = scene->projector->project(0.5 * x + 0.5 * scene->target.V.colwise().mean().transpose());
+  }
+  seams.push_back(loose);
+  const std::vector<std::array<int, 2>> hosts = openSeamEndHosts(seams, *scene, 1);
+  ASSERT_EQ(hosts.size(), seams.size());
+  int cuts = 0;
+  for (size_t i = 1; i + 1 < seams.size(); ++i) {
+    if (seams[i].closed) {
+      EXPECT_EQ(hosts[i], (std::array<int, 2>{-1, -1})) << "a loop has no ends";
+      continue;
+    }
+    ++cuts;
+    for (const int host : hosts[i]) {
+      EXPECT_GE(host, 0) << seams[i].name << " ends on a seam";
+      EXPECT_NE(host, int(i)) << "not on itself";
+    }
+    EXPECT_NE(hosts[i][0], hosts[i][1]) << seams[i].name << " joins two seams";
+  }
+  EXPECT_GT(cuts, 0) << opened.description();
+  EXPECT_EQ(hosts.back(), (std::array<int, 2>{-1, -1})) << "ends that lie on no seam";
+}

@@ -402,6 +402,16 @@ test('a mug seen with its handle towards the viewer: the seams that make every p
   const result = run(handlers.checkSeams({ seams: opened.seams }));
   assert.ok(result.segments.length >= 2 && result.segments.every((s) => s.isDisk), 'every part a panel');
   assert.deepEqual(result.problems.filter((p) => p.severity === 'error').map((p) => p.message), []);
+  // Each added cut names the seams its ends lie on ("on"), which the app keeps them on as those are edited: a cut that
+  // opens a tube joins two of them.
+  const cuts = opened.seams.map((seam, i) => ({ seam, i })).filter(({ seam }) => !seam.closed);
+  assert.ok(cuts.length > 0, 'a cut was added');
+  for (const { seam, i } of cuts) {
+    const hosts = [seam.points[0].on, seam.points.at(-1).on];
+    assert.ok(hosts.every((h) => Number.isInteger(h) && h >= 0 && h < opened.seams.length && h !== i), `${seam.name}: ${hosts}`);
+    if (/tube/.test(seam.name)) assert.notEqual(hosts[0], hosts[1], `${seam.name} joins two seams`);
+    assert.ok(seam.points.slice(1, -1).every((p) => p.on === undefined), 'only the ends');
+  }
 });
 
 test('a loop laid with the outline that crosses itself is left out, and the rest makes panels; the outline stays', () => {

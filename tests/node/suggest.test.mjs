@@ -10,7 +10,7 @@ import { createHandlers } from '../../web/src/worker/handlers.js';
 import { ErrorCode, Op, SolverError } from '../../web/src/worker/protocol.js';
 import { better, suggestLayouts } from '../../web/src/app/suggest-run.js';
 import { inThreadClient, threadedClient } from './solver-clients.mjs';
-import { attachSeamEnds, closestSurfacePoint, linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
+import { closestSurfacePoint, linkMirrorTwins, positionOf, reflect, symmetryPlane, bounds } from '../../web/src/app/symmetry.js';
 import { reattachSeamEnds } from '../../web/src/app/commands.js';
 
 const api = await loadApi();
@@ -219,6 +219,9 @@ test('a mirror-symmetric layout\'s seams are linked as twins when used, each the
   const result = await suggest(cow, { panels: 4, symmetry: 'x', scale: 0.6, triangles: 300, maxIterations: 1, optimize: 20 });
   const gores = result.layouts.find((l) => /gores around the vertical axis/.test(l.name));
   assert.ok(gores, result.layouts.map((l) => l.name).join('; '));
+  // The meridians meet at the poles: each end names a seam it lies on there ("on"), which the app keeps it on.
+  for (const [i, seam] of gores.seams.entries())
+    if (!seam.closed) for (const end of [seam.points[0], seam.points.at(-1)]) assert.ok(Number.isInteger(end.on) && end.on !== i && !gores.seams[end.on].closed, `seam ${i}: ${end.on}`);
   const design = { seams: gores.seams, connections: [], symmetry: { axis: 'x' } };
   const plane = symmetryPlane(design, target);
   const linked = linkMirrorTwins(design, target, plane);
@@ -263,12 +266,10 @@ test('seam ends on other seams stay on them, and on their twins, when a layout\'
   const meridian = { name: 'meridian', closed: true, smooth: false, weight: 1, points: Array.from({ length: 48 }, (_, k) => at(0, R * Math.cos((2 * Math.PI * k) / 48), R * Math.sin((2 * Math.PI * k) / 48))) };
   const right = { name: 'right', closed: true, smooth: false, weight: 1, points: ring(0.5 * R, 40) };
   const left = { name: 'left', closed: true, smooth: false, weight: 1, points: ring(-0.5 * R, 36, 0.5) };
-  // Cuts from each loop's top point (a control point of it, so on its line) to the meridian's.
-  const cut = (loop, x) => ({ name: 'cut', closed: false, smooth: false, weight: 1, points: [loop.points[0], at(x / 2, R * 0.97, 0.1 * R), meridian.points[0]] });
-  let design = { seams: [meridian, right, left, cut(right, 0.5 * R), cut(left, -0.5 * R)], connections: [], symmetry: { axis: 'x' } };
-  design = attachSeamEnds(design, target);
-  assert.deepEqual(design.seams[3].points.map((p) => p.on), [1, undefined, 0], 'the cut is attached to the loop and the meridian');
-  assert.deepEqual(design.seams[4].points.map((p) => p.on), [2, undefined, 0]);
+  // Cuts from each loop's top point (a control point of it, so on its line) to the meridian's, each end attached to
+  // the seam it lies on as the worker names them (a layout's "on").
+  const cut = (loop, host, x) => ({ name: 'cut', closed: false, smooth: false, weight: 1, points: [{ ...loop.points[0], on: host }, at(x / 2, R * 0.97, 0.1 * R), { ...meridian.points[0], on: 0 }] });
+  const design = { seams: [meridian, right, left, cut(right, 1, 0.5 * R), cut(left, 2, -0.5 * R)], connections: [], symmetry: { axis: 'x' } };
   const linked = linkMirrorTwins(design, target, symmetryPlane(design, target));
   assert.equal(linked.seams[1].mirror, 2);
   assert.equal(linked.seams[3].mirror, 4);

@@ -494,7 +494,7 @@ class TargetSession {
           billow::readDesignConnections(parse(connectionsJson), seams.size());
       const billow::LayoutEvaluation e =
           billow::evaluateLayout(*s.scene, seams, int(seams.size()), s.evaluate, connections);
-      return layoutJson(e, s.proposals[index].name, s).dump();
+      return layoutJson(e, s.proposals[index].name, s, true).dump();
     });
   }
 
@@ -515,9 +515,11 @@ class TargetSession {
                             : int(seams.size());
       const std::unique_ptr<billow::DesignScene> scene = billow::makeTargetScene(design, mesh_);
       const billow::LayoutEvaluation e = billow::openIntoPanels(*scene, seams, fixed, connections, request.triangles);
-      json laid = json::array();
-      for (const billow::DesignSeam& seam : e.seams) laid.push_back(billow::designSeamJson(seam));
-      return json({{"ok", e.ok}, {"problem", e.problem}, {"description", e.description()}, {"seams", laid}}).dump();
+      return json({{"ok", e.ok},
+                   {"problem", e.problem},
+                   {"description", e.description()},
+                   {"seams", laidSeamsJson(e.seams, e.ok ? size_t(fixed) : e.seams.size())}})
+          .dump();
     });
   }
 
@@ -551,6 +553,20 @@ class TargetSession {
   billow::SeamSurface ownSurface() const {
     requireTarget();
     return {mesh_, 1.0, topology_, *projector_, *geodesic_};
+  }
+
+  // The seams as the app's design holds them: from seam `from` on, an open seam's end that lies on another seam's line
+  // names it ("on", design_scene.hpp openSeamEndHosts), so that the app keeps it there as that seam is edited.
+  json laidSeamsJson(const std::vector<billow::DesignSeam>& seams, size_t from) const {
+    const std::vector<std::array<int, 2>> hosts = billow::openSeamEndHosts(seams, ownSurface(), from);
+    json out = json::array();
+    for (size_t i = 0; i < seams.size(); ++i) {
+      json seam = billow::designSeamJson(seams[i]);
+      for (size_t e = 0; e < 2; ++e)
+        if (hosts[i][e] >= 0) seam["points"][e ? seam["points"].size() - 1 : 0]["on"] = hosts[i][e];
+      out.push_back(std::move(seam));
+    }
+    return out;
   }
 
   // The seams' control points on the target (io/design_json.hpp designSeamSpecs: faces it has, 3D points near it).
@@ -617,12 +633,14 @@ class TargetSession {
   }
 
   // A layout as the page takes it: `seams` on the target; laid on a copy of it, also `copySeams` as they lie there,
-  // which suggestOptimize takes back.
-  json layoutJson(const billow::LayoutEvaluation& e, const std::string& name, const Suggestion& s) const {
-    json seams = json::array(), copySeams = json::array();
+  // which suggestOptimize takes back. hosts: the open seams' ends name the seams they lie on (an optimized layout,
+  // which the designer may take; a look is only measured).
+  json layoutJson(const billow::LayoutEvaluation& e, const std::string& name, const Suggestion& s,
+                  bool hosts = false) const {
+    json copySeams = json::array();
     const std::vector<billow::DesignSeam> onTarget =
         s.onCopy && e.ok ? billow::carriedSeams(e.seams, *s.scene, ownSurface(), s.keptOnTarget) : e.seams;
-    for (const billow::DesignSeam& seam : onTarget) seams.push_back(billow::designSeamJson(seam));
+    const json seams = e.ok ? laidSeamsJson(onTarget, hosts ? s.keptOnTarget.size() : onTarget.size()) : json::array();
     if (s.onCopy)
       for (const billow::DesignSeam& seam : e.seams) copySeams.push_back(billow::designSeamJson(seam));
     json connections = json::array();
@@ -642,7 +660,7 @@ class TargetSession {
               {"lookRank", billow::lookRank(e)},
               {"iterations", e.iterations},
               {"ms", e.ms},
-              {"seams", e.ok ? seams : json::array()},
+              {"seams", seams},
               {"connections", e.ok ? connections : json::array()},
               {"balloon", e.ok ? balloonJson(e.balloon) : json(nullptr)}});
     if (s.onCopy && e.ok) out["copySeams"] = copySeams;

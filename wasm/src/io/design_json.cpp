@@ -464,11 +464,6 @@ std::string seamLabel(int index, const std::string& name) {
 
 namespace {
 
-double diagonal(const TriMesh& target) {
-  if (target.numVertices() == 0) return 0;
-  return (target.V.colwise().maxCoeff() - target.V.colwise().minCoeff()).norm();
-}
-
 SeamSpec placeSeam(const DesignSeam& s, int index, const TriMesh& target, const SurfaceProjector& projector,
                    double scale, double size) {
   SeamSpec spec;
@@ -503,12 +498,12 @@ SeamSpec placeSeam(const DesignSeam& s, int index, const TriMesh& target, const 
 
 SeamSpec designSeamSpec(const DesignSeam& seam, int index, const TriMesh& target, const SurfaceProjector& projector,
                         double scale) {
-  return placeSeam(seam, index, target, projector, scale, diagonal(target));
+  return placeSeam(seam, index, target, projector, scale, boundingDiagonal(target));
 }
 
 std::vector<SeamSpec> designSeamSpecs(const std::vector<DesignSeam>& seams, const TriMesh& target,
                                       const SurfaceProjector& projector, double scale) {
-  const double size = diagonal(target);
+  const double size = boundingDiagonal(target);
   std::vector<SeamSpec> specs;
   for (size_t i = 0; i < seams.size(); ++i)
     specs.push_back(placeSeam(seams[i], static_cast<int>(i), target, projector, scale, size));

@@ -22,6 +22,11 @@ inline std::uint64_t edgeKey(int a, int b) {
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
+// The diagonal of the mesh's bounding box: the model size relative tolerances are measured in (0 for no vertices).
+inline double boundingDiagonal(const TriMesh& m) {
+  return m.V.rows() ? (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm() : 0.0;
+}
+
 inline double triangleArea(const TriMesh& m, int f) {
   const Eigen::Vector3d a = m.V.row(m.F(f, 0)), b = m.V.row(m.F(f, 1)), c = m.V.row(m.F(f, 2));
   return 0.5 * (b - a).cross(c - a).norm();

@@ -106,10 +106,6 @@ OptimizeOptions slidingOptions(const OptimizeOptions& options, const std::vector
 }
 
 namespace {
-double boundingDiagonal(const TriMesh& mesh) {
-  return mesh.V.rows() ? (mesh.V.colwise().maxCoeff() - mesh.V.colwise().minCoeff()).norm() : 0.0;
-}
-
 // remeshPattern at edge length h, and again at the edge length that gives about `triangles` (> 0) when h gave
 // more than 10 % off: the remesher's triangles at an edge length are 0.7-1.45 x the pattern builder's.
 RemeshedPattern remeshNear(const BuiltPattern& built, const std::vector<Vertices>& inflated, double h,

@@ -87,6 +87,28 @@ void traceDesignSeams(DesignScene& scene) {
   scene.seamsMs = msSince(t1);
 }
 
+std::vector<std::array<int, 2>> openSeamEndHosts(const std::vector<DesignSeam>& seams, const SeamSurface& surface,
+                                                 size_t from) {
+  std::vector<std::array<int, 2>> hosts(seams.size(), {-1, -1});
+  std::vector<SeamCurve> curves;  // traced once an open seam asks
+  for (size_t i = from; i < seams.size(); ++i) {
+    if (seams[i].closed || seams[i].points.size() < 2) continue;
+    if (curves.empty())
+      for (const SeamSpec& spec : designSeamSpecs(seams, surface.target, surface.projector, surface.scale))
+        curves.push_back(buildSeamCurve(surface.geodesic, surface.projector, spec));
+    SeamCurve own;  // out of the way while its ends look for another seam's line
+    std::swap(own, curves[i]);
+    for (int e = 0; e < 2; ++e) {
+      const SeamSnap snap = snapToSeams(surface.target, surface.topology,
+                                        position(surface.target, (e ? own.points.back() : own.points.front()).point),
+                                        curves, 1e-6 * boundingDiagonal(surface.target));
+      if (snap.kind != SeamSnap::None) hosts[i][size_t(e)] = snap.curve;
+    }
+    std::swap(own, curves[i]);
+  }
+  return hosts;
+}
+
 std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const SeamSurface& from,
                                      const SeamSurface& to, const std::vector<DesignSeam>& onTo) {
   const std::vector<SeamSpec> specs = designSeamSpecs(seams, from.target, from.projector, from.scale);
@@ -99,27 +121,16 @@ std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const
       p.surface = to.projector.project(toFrom * position(from.target, specs[i].controls[k]));
     }
   std::copy(onTo.begin(), onTo.end(), out.begin());
-  // The open seams' ends on another seam's line: a hair from it on `from`, where the layout was traced.
-  const auto diagonal = [](const TriMesh& m) { return (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm(); };
+  // The open seams' ends on another seam's line on `from`, where the layout was traced.
   struct End {
     size_t seam, point;
     int host;
   };
   std::vector<End> ends;
-  std::vector<SeamCurve> fromCurves;  // traced once an open seam asks
-  for (size_t i = onTo.size(); i < out.size(); ++i) {
-    if (out[i].closed || out[i].points.size() < 2) continue;
-    if (fromCurves.empty())
-      for (const SeamSpec& spec : specs) fromCurves.push_back(buildSeamCurve(from.geodesic, from.projector, spec));
-    SeamCurve own;  // out of the way while its ends look for another seam's line
-    std::swap(own, fromCurves[i]);
-    for (const size_t k : {size_t(0), out[i].points.size() - 1}) {
-      const SeamSnap snap = snapToSeams(from.target, from.topology, position(from.target, specs[i].controls[k]),
-                                        fromCurves, 1e-6 * diagonal(from.target));
-      if (snap.kind != SeamSnap::None) ends.push_back({i, k, snap.curve});
-    }
-    std::swap(own, fromCurves[i]);
-  }
+  const std::vector<std::array<int, 2>> hosts = openSeamEndHosts(seams, from, onTo.size());
+  for (size_t i = onTo.size(); i < out.size(); ++i)
+    for (int e = 0; e < 2; ++e)
+      if (hosts[i][size_t(e)] >= 0) ends.push_back({i, e ? out[i].points.size() - 1 : 0, hosts[i][size_t(e)]});
   if (ends.empty()) return out;
   const std::vector<SeamSpec> toSpecs = designSeamSpecs(out, to.target, to.projector, to.scale);
   std::vector<std::optional<SeamCurve>> toCurves(out.size());
@@ -128,7 +139,7 @@ std::vector<DesignSeam> carriedSeams(const std::vector<DesignSeam>& seams, const
     if (!host) host = buildSeamCurve(to.geodesic, to.projector, toSpecs[size_t(e.host)]);
     // Within a hundredth of the size: the two meshes of one surface differ by far less.
     const SeamSnap snap = snapToSeams(to.target, to.topology, position(to.target, out[e.seam].points[e.point].surface),
-                                      {*host}, 1e-2 * diagonal(to.target));
+                                      {*host}, 1e-2 * boundingDiagonal(to.target));
     if (snap.kind != SeamSnap::None) out[e.seam].points[e.point].surface = snap.point;
   }
   return out;

@@ -1,6 +1,7 @@
 // A design made concrete: the target scaled to meters, its seams traced and the target segmented. What the
 // CLI commands and the tests start from (the web worker keeps the same pieces in its sessions).
 #pragma once
+#include <array>
 #include <memory>
 #include <string>
 #include <vector>
@@ -62,6 +63,13 @@ struct SeamSurface {
   SeamSurface(const TriMesh& t, double sc, const MeshTopology& to, const SurfaceProjector& p, const GeodesicSolver& g)
       : target(t), scale(sc), topology(to), projector(p), geodesic(g) {}
 };
+// For each of `seams` from `from` on that is open, the seams whose traced lines on `surface` its first and its last
+// control point lie on (a hair from them), -1 where none: a cut that opens a tube from one loop to another or ends on
+// a limb's loop, a meridian at the pole where the others meet. The app keeps such an end on its host as the host is
+// edited (a point's "on"); only the traced lines tell, since a loop's few control points can lie far from the line
+// between them (a seam around a boot's handle). Closed seams and those before `from`: {-1, -1}.
+std::vector<std::array<int, 2>> openSeamEndHosts(const std::vector<DesignSeam>& seams, const SeamSurface& surface,
+                                                 size_t from = 0);
 // `seams` laid on `from` as they lie on `to`, a mesh of the same surface (a simplified copy of a fine target, or the
 // target it copies), each control point projected onto `to`; an open seam's end that lies on another seam's line on
 // `from` (a cut ending on a limb's loop) is put on that seam's line as traced on `to`, so that the two still meet.

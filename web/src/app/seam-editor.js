@@ -5,7 +5,7 @@
 import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
 import { upOf } from './up-axis.js';
-import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf, attachSeamEnds } from './symmetry.js';
+import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf } from './symmetry.js';
 import { optimizeArgs } from './stored-result.js';
 import { sectionSeamPoints } from './section.js';
 import { BAND_PARTS, bandLoops, bandSeamPoints } from './band.js';
@@ -241,7 +241,7 @@ export class SeamEditor {
       const opened = await this.app.client.request(Op.openIntoPanels, { seams, ...physics, fixed, scale: this.app.scaleFor(next), up: upOf(next) });
       if (opened.ok && opened.description) {
         const named = (seam) => ({ ...seam, name: seam.name ? seam.name[0].toUpperCase() + seam.name.slice(1) : undefined });
-        next = attachSeamEnds({ ...next, seams: [...next.seams.slice(0, fixed), ...opened.seams.slice(fixed).map(named)] }, this.app.target, fixed);
+        next = { ...next, seams: [...next.seams.slice(0, fixed), ...opened.seams.slice(fixed).map(named)] };
         opening = opened.description;
       }
     } catch {

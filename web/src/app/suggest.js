@@ -10,7 +10,7 @@ import { formatDistance, formatLength, formatPercent, worseDistance } from './un
 import { optimizeArgs } from './stored-result.js';
 import { exportOptions, formatMillimeters } from './fabrication.js';
 import { upOf } from './up-axis.js';
-import { attachSeamEnds, linkMirrorTwins, symmetryPlane } from './symmetry.js';
+import { linkMirrorTwins, symmetryPlane } from './symmetry.js';
 import { showOverInflatedPane, sidePanel } from '../views/dialog-header.js';
 import { SolverClient } from '../worker/client.js';
 import { better, suggestLayouts } from './suggest-run.js';
@@ -359,8 +359,6 @@ export class SeamSuggestions {
     // name seams by their index in `seams`.
     const connections = [...(kept ? design.connections : []), ...(layout.connections ?? []).map((pair) => ({ seams: pair }))];
     let next = { ...rest, seams, connections, ...(axis ? { symmetry: { axis } } : symmetry ? { symmetry } : {}) };
-    // Its seams' ends on other seams stay on them as they are traced and edited, and on their twins' when mirrored.
-    next = attachSeamEnds(next, app.target, kept);
     // The layout's mirror images become twins, so that editing one side edits the other.
     if (axis) next = linkMirrorTwins(next, app.target, symmetryPlane(next, app.target), kept);
     app.seams.selection = null;

@@ -4,13 +4,8 @@
 // that is its own mirror image (a loop around the belly of a symmetric animal) gets no twin.
 // Mirroring a surface point: its position reflected across the plane, then the closest point of the target.
 
-import { segmentDistance } from './geometry.js';
-
 export const SYMMETRY_AXES = ['x', 'y', 'z'];
 const SELF_SYMMETRIC_TOLERANCE = 0.01; // of the bounding-box diagonal
-// A seam's end lies on another seam's line within this share of the diagonal: the line is drawn through the host's
-// control points, and its traced path bows a little from it between them (a limb's loop of 12 points: 2 mm at 0.6 m).
-const ATTACH_TOLERANCE = 0.005;
 
 // The plane { axis: 0 | 1 | 2, offset } in target units, or null when the design has no symmetry.
 export function symmetryPlane(design, target) {
@@ -178,44 +173,6 @@ export function addMirroredTwin(design, target, plane, i) {
   };
   const seams = design.seams.map((s, k) => (k === i ? { ...s, mirror: design.seams.length } : s));
   return { ...design, seams: [...seams, twin] };
-}
-
-// The ends of the open seams from seam `from` on that lie on another seam's line (a cut ending on a limb's loop, a
-// meridian at the pole where the others meet: a suggested layout's junctions), marked as attached to it (`on`), so
-// that they follow it exactly once it is traced (commands.js reattachSeamEnds), and a mirrored twin's end follows the
-// host's twin (mirrorPoint) instead of lying beside it where the target is not quite its own mirror image.
-export function attachSeamEnds(design, target, from = 0) {
-  const tolerance = ATTACH_TOLERANCE * bounds(target).diagonal;
-  const lines = design.seams.map((seam) => seam.points.map((p) => positionOf(target, p)));
-  let changed = false;
-  const seams = design.seams.map((seam, i) => {
-    if (i < from || seam.closed || seam.points.length < 2) return seam;
-    const last = seam.points.length - 1;
-    const points = seam.points.map((p, k) => {
-      if ((k !== 0 && k !== last) || p.on !== undefined) return p;
-      let host = -1;
-      let nearest = tolerance;
-      lines.forEach((line, j) => {
-        if (j === i) return;
-        const d = distanceToLine(lines[i][k], line, design.seams[j].closed);
-        if (d < nearest) (nearest = d), (host = j);
-      });
-      if (host < 0) return p;
-      changed = true;
-      return { ...p, on: host };
-    });
-    return { ...seam, points };
-  });
-  return changed ? { ...design, seams } : design;
-}
-
-// The distance from p to the polyline through `line`'s points (closed: back to the first).
-function distanceToLine(p, line, closed) {
-  const n = line.length;
-  if (n === 1) return segmentDistance(p, line[0], line[0]);
-  let best = Infinity;
-  for (let k = 0; k + 1 < n + (closed ? 1 : 0); k++) best = Math.min(best, segmentDistance(p, line[k], line[(k + 1) % n]));
-  return best;
 }
 
 // Seams laid together as their own mirror images (a suggested layout, suggest.js), linked as twins: from seam `from`
