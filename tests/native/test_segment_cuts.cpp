@@ -197,16 +197,16 @@ TEST(SegmentCuts, APartWithTwoHandlesGetsALoopAroundEach) {
   EXPECT_EQ(cutsJoiningLoops(sewn, 0).size(), 3u);
 }
 
-// An apple peel: the sphere cut along a seam that spirals six times from a cap round one pole to a cap round the other
-// is one long strip, and laid flat it curls. The layout cuts it across where its outline crosses itself, until its
-// pieces lie flat.
-TEST(SegmentCuts, APeelThatWouldOverlapItselfFlatIsCutAcross) {
-  const auto scene = test::sharedScene("sphere.obj");
-  const TriMesh& target = scene->target;
+namespace {
+
+// An apple peel on the shared sphere: a cap round each pole and a seam that spirals `turns` times from one to the
+// other.
+std::vector<DesignSeam> peelSeams(const DesignScene& scene, int turns) {
+  const TriMesh& target = scene.target;
   // A design's points are in the mesh's own units.
   const Eigen::Vector3d center =
-      0.5 * (target.V.colwise().maxCoeff() + target.V.colwise().minCoeff()).transpose() / scene->scale;
-  const double radius = 0.5 * (target.V.col(0).maxCoeff() - target.V.col(0).minCoeff()) / scene->scale;
+      0.5 * (target.V.colwise().maxCoeff() + target.V.colwise().minCoeff()).transpose() / scene.scale;
+  const double radius = 0.5 * (target.V.col(0).maxCoeff() - target.V.col(0).minCoeff()) / scene.scale;
   const auto at = [&](double polar, double around) {
     DesignPoint point;
     point.position = center + radius * Eigen::Vector3d(std::sin(polar) * std::cos(around), std::cos(polar),
@@ -215,7 +215,7 @@ TEST(SegmentCuts, APeelThatWouldOverlapItselfFlatIsCutAcross) {
   };
   // From a cap round one pole to a cap round the other.
   std::vector<DesignSeam> seams(3);
-  const int n = 180, turns = 6;
+  const int n = 30 * turns;
   for (int k = 0; k < 12; ++k)
     for (int cap : {0, 1}) seams[size_t(cap)].points.push_back(at(cap ? test::kPi - 0.3 : 0.3, 2 * test::kPi * k / 12));
   seams[0].closed = seams[1].closed = true;
@@ -224,6 +224,19 @@ TEST(SegmentCuts, APeelThatWouldOverlapItselfFlatIsCutAcross) {
     const double t = double(k) / n;
     peel.points.push_back(at(0.3 + t * (test::kPi - 0.6), 2 * test::kPi * turns * t));
   }
+  return seams;
+}
+
+}  // namespace
+
+// An apple peel: the sphere cut along a seam that spirals six times from a cap round one pole to a cap round the other
+// is one long strip, and laid flat it curls. The layout cuts it across where its outline crosses itself, until its
+// pieces lie flat.
+TEST(SegmentCuts, APeelThatWouldOverlapItselfFlatIsCutAcross) {
+  const auto scene = test::sharedScene("sphere.obj");
+  const int turns = 6;
+  const std::vector<DesignSeam> seams = peelSeams(*scene, turns);
+  const double radius = 0.5 * (scene->target.V.col(0).maxCoeff() - scene->target.V.col(0).minCoeff()) / scene->scale;
   segmentWith(*scene, seams);
   const Segmentation& sg = scene->segmentation;
   ASSERT_TRUE(sg.problems.empty()) << sg.problems[0].message;
@@ -273,6 +286,24 @@ TEST(SegmentCuts, APeelThatWouldOverlapItselfFlatIsCutAcross) {
   EXPECT_EQ(int(e.seams.size()), 3 + e.opened.acrossCuts);
   EXPECT_NE(e.description().find(std::to_string(e.opened.acrossCuts) + " cut"), std::string::npos) << e.description();
   EXPECT_NE(e.description().find("would overlap"), std::string::npos) << e.description();
+}
+
+// What the Outline tool adds on a shape with handles (openIntoPanels) cuts a panel that would overlap itself across
+// too, as the builder's message advises: a boot seen from its front left its back in one piece that curled. A peel of
+// six turns, looked at with 150 triangles.
+TEST(SegmentCuts, ThePanelsTheOutlineOpensAreCutAcrossWhereTheyWouldOverlap) {
+  const auto scene = test::sharedScene("sphere.obj");
+  const std::vector<DesignSeam> seams = peelSeams(*scene, 6);
+  segmentWith(*scene, seams);
+  ASSERT_TRUE(scene->segmentation.problems.empty()) << scene->segmentation.problems[0].message;
+  ASSERT_FALSE(buildDesignPattern(*scene, 150).ok()) << "the peel curls over itself, laid flat";
+  const LayoutEvaluation opened = openIntoPanels(*scene, seams, 3, {}, 150);
+  ASSERT_TRUE(opened.ok) << opened.problem;
+  EXPECT_GE(opened.opened.acrossCuts, 1);
+  ASSERT_EQ(int(opened.seams.size()), 3 + opened.opened.acrossCuts);
+  EXPECT_EQ(opened.seams[2].points.size(), seams[2].points.size()) << "the seams given stay";
+  EXPECT_NE(opened.description().find("would overlap"), std::string::npos) << opened.description();
+  EXPECT_TRUE(buildDesignPattern(*scene, 150).ok()) << "the scene is left with the cut panels, which lie flat";
 }
 
 namespace {

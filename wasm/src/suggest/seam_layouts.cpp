@@ -1298,47 +1298,6 @@ LayoutEvaluation layLayout(DesignScene& scene, const std::vector<DesignSeam>& se
   return out;
 }
 
-}  // namespace
-
-LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
-                                const std::vector<DesignConnection>& connections, int triangles) {
-  EvaluateOptions options;
-  options.triangles = triangles;
-  LayoutEvaluation out = layLayout(scene, seams, fixedSeams, options, connections);
-  // Closed seams of the laid ones that still cross themselves once their hairpins are taken out (a hole's rim traced
-  // round a tight turn) are left out, and the rest laid and opened again from the start, so that no cut ends on them.
-  std::vector<DesignSeam> current = seams;
-  std::vector<DesignConnection> joined = connections;
-  int leftOut = 0;
-  for (int round = 0; !out.ok && round < 2; ++round) {
-    std::vector<int> crossing;
-    try {
-      scene.design.seams = current, scene.design.connections = joined;
-      traceDesignSeams(scene);
-      segmentDesignScene(scene);
-      if (unfoldCrossingSeams(scene, fixedSeams, current) > 0) {
-        scene.design.seams = current;
-        traceDesignSeams(scene);
-        segmentDesignScene(scene);
-      }
-    } catch (const Error&) {
-      break;
-    }
-    for (const SegmentationProblem& p : scene.segmentation.problems)
-      if (p.code == "seam.self-crossing" && p.seam >= fixedSeams && p.seam < int(current.size()) &&
-          current[size_t(p.seam)].closed && std::find(crossing.begin(), crossing.end(), p.seam) == crossing.end())
-        crossing.push_back(p.seam);
-    if (crossing.empty()) break;
-    eraseSeams(crossing, current, joined);
-    leftOut += int(crossing.size());
-    out = layLayout(scene, current, fixedSeams, options, joined);
-  }
-  out.opened.crossingLoops += leftOut;
-  return out;
-}
-
-namespace {
-
 // The panels of the layout on the scene layLayout left; a segment that would overlap itself when laid flat gets a cut
 // across it where its outline crosses itself, as the builder's message advises, and the layout is laid again (in
 // options.openingRounds rounds, to at most `panelsAtMost` panels). Empty, with out.problem, where they cannot be made.
@@ -1375,6 +1334,66 @@ std::optional<BuiltPattern> layoutPanels(DesignScene& scene, LayoutEvaluation& o
     out.ok = false;  // laid, not yet measured
   }
 }
+
+}  // namespace
+
+// Cuts across panels that would overlap themselves, at most, in openIntoPanels: one action the designer waits for,
+// where a suggestion tries many layouts (EvaluateOptions::openingRounds); a peel spiralling six times round the sphere
+// takes seven.
+constexpr int kOpeningRoundsOfOneAction = 8;
+
+LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
+                                const std::vector<DesignConnection>& connections, int triangles) {
+  EvaluateOptions options;
+  options.triangles = triangles;
+  options.openingRounds = kOpeningRoundsOfOneAction;
+  LayoutEvaluation out = layLayout(scene, seams, fixedSeams, options, connections);
+  // Closed seams of the laid ones that still cross themselves once their hairpins are taken out (a hole's rim traced
+  // round a tight turn) are left out, and the rest laid and opened again from the start, so that no cut ends on them.
+  std::vector<DesignSeam> current = seams;
+  std::vector<DesignConnection> joined = connections;
+  int leftOut = 0;
+  for (int round = 0; !out.ok && round < 2; ++round) {
+    std::vector<int> crossing;
+    try {
+      scene.design.seams = current, scene.design.connections = joined;
+      traceDesignSeams(scene);
+      segmentDesignScene(scene);
+      if (unfoldCrossingSeams(scene, fixedSeams, current) > 0) {
+        scene.design.seams = current;
+        traceDesignSeams(scene);
+        segmentDesignScene(scene);
+      }
+    } catch (const Error&) {
+      break;
+    }
+    for (const SegmentationProblem& p : scene.segmentation.problems)
+      if (p.code == "seam.self-crossing" && p.seam >= fixedSeams && p.seam < int(current.size()) &&
+          current[size_t(p.seam)].closed && std::find(crossing.begin(), crossing.end(), p.seam) == crossing.end())
+        crossing.push_back(p.seam);
+    if (crossing.empty()) break;
+    eraseSeams(crossing, current, joined);
+    leftOut += int(crossing.size());
+    out = layLayout(scene, current, fixedSeams, options, joined);
+  }
+  out.opened.crossingLoops += leftOut;
+  // A segment that would overlap itself when laid flat gets a cut across it, as the builder's message advises (what a
+  // suggested layout gets): the Outline of a deep shape, a boot seen from its side, leaves one.
+  if (out.ok) {
+    LayoutEvaluation cut = out;
+    if (layoutPanels(scene, cut, options, fixedSeams, std::numeric_limits<int>::max())) {
+      cut.ok = true;
+      return cut;
+    }
+    // No cut lays it flat: the seams as they were, whose panels' message says where.
+    scene.design.seams = out.seams, scene.design.connections = out.connections;
+    traceDesignSeams(scene);
+    segmentDesignScene(scene);
+  }
+  return out;
+}
+
+namespace {
 
 // evaluateLayout's second part, on the scene layLayout left: the panels built, optimized and measured.
 void measureLayout(DesignScene& scene, LayoutEvaluation& out, const EvaluateOptions& options, int fixedSeams,
