@@ -1378,7 +1378,7 @@ LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam
   }
   out.opened.crossingLoops += leftOut;
   // A segment that would overlap itself when laid flat gets a cut across it, as the builder's message advises (what a
-  // suggested layout gets): the Outline of a deep shape, a boot seen from its side, leaves one.
+  // suggested layout gets): the Outline of a deep shape, a boot seen from its front, leaves one.
   if (out.ok) {
     LayoutEvaluation cut = out;
     if (layoutPanels(scene, cut, options, fixedSeams, std::numeric_limits<int>::max())) {

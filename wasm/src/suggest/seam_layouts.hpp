@@ -176,8 +176,9 @@ LayoutEvaluation evaluateLayout(DesignScene& scene, const std::vector<DesignSeam
 
 // `seams` with those that make every segment a panel where they leave one that is not: evaluateLayout's opening (cuts
 // that open a tube, seams around a handle, ...; a seam that crosses itself mended, a loop that only grazes the shape
-// left out), what the Outline tool adds on a shape with handles. The first `fixedSeams` (the designer's) stay as they
-// are. Ok when every segment is then a panel; else the first problem.
+// left out; a cut across a panel that would overlap itself laid flat), what the Outline tool adds on a shape with
+// handles. The first `fixedSeams` (the designer's) stay as they are. Ok when every segment is then a panel; else the
+// first problem.
 LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam>& seams, int fixedSeams,
                                 const std::vector<DesignConnection>& connections, int triangles);
 
