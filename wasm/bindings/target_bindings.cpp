@@ -494,7 +494,7 @@ class TargetSession {
           billow::readDesignConnections(parse(connectionsJson), seams.size());
       const billow::LayoutEvaluation e =
           billow::evaluateLayout(*s.scene, seams, int(seams.size()), s.evaluate, connections);
-      return layoutJson(e, s.proposals[index].name, s, true).dump();
+      return layoutJson(e, s.proposals[index].name, s).dump();
     });
   }
 
@@ -633,14 +633,13 @@ class TargetSession {
   }
 
   // A layout as the page takes it: `seams` on the target; laid on a copy of it, also `copySeams` as they lie there,
-  // which suggestOptimize takes back. hosts: the open seams' ends name the seams they lie on (an optimized layout,
-  // which the designer may take; a look is only measured).
-  json layoutJson(const billow::LayoutEvaluation& e, const std::string& name, const Suggestion& s,
-                  bool hosts = false) const {
+  // which suggestOptimize takes back. The designer may take a layout only looked at as well as an optimized one, so
+  // both name the seams their open seams' ends lie on (a trace of its seams: a few ms beside the look's own work).
+  json layoutJson(const billow::LayoutEvaluation& e, const std::string& name, const Suggestion& s) const {
     json copySeams = json::array();
     const std::vector<billow::DesignSeam> onTarget =
         s.onCopy && e.ok ? billow::carriedSeams(e.seams, *s.scene, ownSurface(), s.keptOnTarget) : e.seams;
-    const json seams = e.ok ? laidSeamsJson(onTarget, hosts ? s.keptOnTarget.size() : onTarget.size()) : json::array();
+    const json seams = e.ok ? laidSeamsJson(onTarget, s.keptOnTarget.size()) : json::array();
     if (s.onCopy)
       for (const billow::DesignSeam& seam : e.seams) copySeams.push_back(billow::designSeamJson(seam));
     json connections = json::array();
