@@ -1346,7 +1346,6 @@ LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam
                                 const std::vector<DesignConnection>& connections, int triangles) {
   EvaluateOptions options;
   options.triangles = triangles;
-  options.openingRounds = kOpeningRoundsOfOneAction;
   LayoutEvaluation out = layLayout(scene, seams, fixedSeams, options, connections);
   // Closed seams of the laid ones that still cross themselves once their hairpins are taken out (a hole's rim traced
   // round a tight turn) are left out, and the rest laid and opened again from the start, so that no cut ends on them.
@@ -1381,7 +1380,9 @@ LayoutEvaluation openIntoPanels(DesignScene& scene, const std::vector<DesignSeam
   // suggested layout gets): the Outline of a deep shape, a boot seen from its front, leaves one.
   if (out.ok) {
     LayoutEvaluation cut = out;
-    if (layoutPanels(scene, cut, options, fixedSeams, std::numeric_limits<int>::max())) {
+    EvaluateOptions across = options;
+    across.openingRounds = kOpeningRoundsOfOneAction;
+    if (layoutPanels(scene, cut, across, fixedSeams, std::numeric_limits<int>::max())) {
       cut.ok = true;
       return cut;
     }
