@@ -300,6 +300,67 @@ TEST(Outline, ASlabWithTwoHandlesSeenFromItsEdgeIsOpenedIntoPanels) {
   EXPECT_GE(scene->segmentation.segments.size(), 2u);
 }
 
+// The Outline tool's seams on a slab with two holes seen through them: the rim, each hole's rim, and the sections
+// across the rings (acrossHandles), opened into panels as the app's tool does on a shape with handles.
+LayoutEvaluation outlineOpened(DesignScene& scene, const Eigen::Vector3d& towards, std::vector<SectionLoop>& across) {
+  const std::optional<Outline> outline = outlineSeenFrom(scene.target, towards);
+  if (!outline) return {};
+  across = acrossHandles(scene.target, outline->loop, outline->holes, towards);
+  std::vector<DesignSeam> seams;
+  const auto lay = [&](const SectionLoop& loop, bool corners) {
+    DesignSeam seam;
+    seam.closed = true;
+    for (const SurfacePoint& p : sectionSeamPoints(scene.target, loop, 0.02, corners))
+      seam.points.push_back(DesignPoint{true, p, Eigen::Vector3d::Zero()});
+    seams.push_back(seam);
+  };
+  lay(outline->loop, true);
+  for (const SectionLoop& hole : outline->holes) lay(hole, true);
+  for (const SectionLoop& loop : across) lay(loop, false);
+  return openIntoPanels(scene, seams, 1, {}, 1000);
+}
+
+// Seen face on, each ring is cut across its bars, where they are narrowest and opposite: through a hole's corner the
+// section ran along its wall and around the whole slab (the far one, once), and cut slivers off.
+TEST(Outline, TheCutsAcrossASlabsRingsRunAcrossItsBarsNotAlongTheHolesWalls) {
+  const auto scene = test::sceneOf(test::twoHoledSlab());
+  std::vector<SectionLoop> across;
+  const LayoutEvaluation opened = outlineOpened(*scene, Eigen::Vector3d::UnitZ(), across);
+  ASSERT_EQ(across.size(), 4u) << "two per hole";
+  const double cube = (scene->target.V.col(0).maxCoeff() - scene->target.V.col(0).minCoeff()) / 5;
+  for (const SectionLoop& cut : across) {
+    EXPECT_NEAR(loopLength(cut), 4 * cube, 1e-9) << "around one bar";
+    // Across x or y, away from every wall (the cubes' faces).
+    const Eigen::Vector3d spread = [&] {
+      Eigen::Vector3d lo = cut[0].position, hi = lo;
+      for (const SectionPoint& p : cut) lo = lo.cwiseMin(p.position), hi = hi.cwiseMax(p.position);
+      return Eigen::Vector3d(hi - lo);
+    }();
+    const int along = spread.x() < 1e-9 ? 0 : 1;
+    ASSERT_LT(spread[along], 1e-9) << "a plane across x or y";
+    const double at = (cut[0].position[along] - scene->target.V.col(along).minCoeff()) / cube;
+    EXPECT_GT(std::abs(at - std::round(at)), 0.2) << "across a bar, not along a wall";
+  }
+  ASSERT_TRUE(opened.ok) << opened.problem;
+  EXPECT_EQ(opened.opened.grazingLoops, 0);
+  EXPECT_TRUE(scene->segmentation.problems.empty());
+  for (const Segment& segment : scene->segmentation.segments) EXPECT_TRUE(segment.isDisk);
+}
+
+// Seen askew, a section through a hole's narrowest place runs along the slab and across both holes: it is not laid,
+// and the cuts that open a tube open that ring instead. Laid, such sections cut slivers off a statue's legs and base.
+TEST(Outline, ASectionThatDoesNotRunAroundItsRingIsLeftToTheCutsThatOpenATube) {
+  const auto scene = test::sceneOf(test::twoHoledSlab());
+  std::vector<SectionLoop> across;
+  const LayoutEvaluation opened = outlineOpened(*scene, Eigen::Vector3d(0.2, 0.3, 1).normalized(), across);
+  EXPECT_LT(across.size(), 4u);
+  ASSERT_TRUE(opened.ok) << opened.problem;
+  EXPECT_GT(opened.opened.tubeCuts, 0);
+  EXPECT_EQ(opened.opened.grazingLoops, 0);
+  EXPECT_TRUE(scene->segmentation.problems.empty());
+  for (const Segment& segment : scene->segmentation.segments) EXPECT_TRUE(segment.isDisk);
+}
+
 // The cuts openIntoPanels adds end on the lines of the seams they join, and the app keeps them there only if it knows
 // which (a point's "on"): openSeamEndHosts names them from the traced lines. A seam around a handle has few control
 // points, and its line bows far from the chords between them: by the chords the app once put both ends of a short cut

@@ -87,8 +87,12 @@ test('the outline of the sphere seen along z is its equator, with nothing turned
 // A letter L extruded along z (n x n cells across, t deep), as the boundary of its cells: side walls t rows deep,
 // every wall vertex inside a row seen exactly edge-on from the front.
 function extrudedL(n, t) {
-  const filled = (i, j, k) => i >= 0 && j >= 0 && k >= 0 && i < n && j < n && k < t
-    && (((i + 0.5) / n < 0.35 && (j + 0.5) / n < 0.95) || ((i + 0.5) / n < 0.8 && (j + 0.5) / n < 0.3));
+  return extruded(n, t, (x, y) => (x < 0.35 && y < 0.95) || (x < 0.8 && y < 0.3));
+}
+
+// The shape `inside(x, y)` (x, y in [0, 1)) extruded along z as extrudedL's, on n x n cells t deep.
+function extruded(n, t, inside) {
+  const filled = (i, j, k) => i >= 0 && j >= 0 && k >= 0 && i < n && j < n && k < t && inside((i + 0.5) / n, (j + 0.5) / n);
   const index = new Map();
   const positions = [];
   const indices = [];
@@ -131,6 +135,53 @@ test('an extruded letter seen from the front is outlined round the middle of its
   assert.ok(Math.abs(mean - 0.5 / 6) < 0.01, `mean z ${mean}`);
   run(handlers.setTarget({ positions: letter.positions, indices: letter.indices }));
   expectClean(letter, outline.loop, 'the extruded L');
+});
+
+// A slab with two square holes through it (a letter B's strokes, each as wide as a hole): its walls edge-on from the
+// front, each ring as narrow along three walls of its hole.
+const twoHoledSlab = () => extruded(30, 6, (x, y) => !(y > 1 / 3 && y < 2 / 3 && ((x > 0.2 && x < 0.4) || (x > 0.6 && x < 0.8))));
+
+test('a slab with two holes seen through them: the sections across its rings cross its bars, not along a hole\'s wall', () => {
+  const mesh = twoHoledSlab();
+  run(handlers.setTarget({ positions: mesh.positions, indices: mesh.indices }));
+  const outline = outlineLoop(mesh, [0, 0, 1]);
+  assert.equal(outline.holes.length, 2);
+  const across = acrossHandles(mesh, outline.loop, outline.holes, [0, 0, 1]);
+  assert.equal(across.length, 4, 'two per hole');
+  for (const loop of across) {
+    // In a plane across x or y (as near as the rim's points, on walls seen edge-on, allow), and half a cell or more from
+    // every wall (walls at 0, 6, 12, 18, 24 and 30 cells across, 0, 10, 20 and 30 up).
+    const spread = [0, 1].map((k) => Math.max(...loop.map((p) => p.position[k])) - Math.min(...loop.map((p) => p.position[k])));
+    const along = spread[0] < spread[1] ? 0 : 1;
+    assert.ok(spread[along] < 0.3 / 30, `a plane across x or y: ${spread}`);
+    const walls = along === 0 ? [0, 6, 12, 18, 24, 30] : [0, 10, 20, 30];
+    const at = (loop.reduce((sum, p) => sum + p.position[along], 0) / loop.length) * 30;
+    assert.ok(Math.min(...walls.map((w) => Math.abs(at - w))) >= 0.5, `across a bar, not along a wall: ${at} / 30`);
+  }
+  const seams = [outline.loop, ...outline.holes, ...across].map((loop, k) => ({ closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, loop, { corners: k <= 2 }) }));
+  const result = run(handlers.checkSeams({ seams }));
+  assert.deepEqual(result.problems.map((p) => p.message), []);
+  assert.ok(result.segments.every((s) => s.isDisk), 'every part a panel');
+});
+
+test('a slab with two holes seen askew: a section that would run along it across both holes is not laid, and the cuts that open a tube make the panels', () => {
+  const mesh = twoHoledSlab();
+  run(handlers.setTarget({ positions: mesh.positions, indices: mesh.indices }));
+  const towards = [0.2, 0.3, 1].map((x) => x / Math.hypot(0.2, 0.3, 1));
+  const outline = outlineLoop(mesh, towards);
+  assert.equal(outline.holes.length, 2);
+  const across = acrossHandles(mesh, outline.loop, outline.holes, towards);
+  assert.ok(across.length < 4, `${across.length} sections`);
+  const seams = [outline.loop, ...outline.holes, ...across].map((loop, k) => ({ closed: true, smooth: false, weight: 1, points: sectionSeamPoints(mesh, loop, { corners: k <= 2 }) }));
+  // As the Outline button commits them: the rim and the holes' rims, which part the front from the back, stay.
+  const opened = run(handlers.openIntoPanels({ seams, connections: [], fixed: 3, scale: 0.3, triangles: 1000 }));
+  assert.ok(opened.ok, opened.problem);
+  for (const k of [0, 1, 2]) assert.deepEqual(opened.seams[k].points.map((p) => p.face), seams[k].points.map((p) => p.face), `rim ${k} stays`);
+  assert.match(opened.description, /cuts? that opens? (a )?tubes?/);
+  assert.doesNotMatch(opened.description, /grazed/);
+  const result = run(handlers.checkSeams({ seams: opened.seams }));
+  assert.deepEqual(result.problems.filter((p) => p.severity === 'error' || /sliver|thin/.test(p.code)).map((p) => p.message), []);
+  assert.ok(result.segments.every((s) => s.isDisk), 'every part a panel');
 });
 
 // A head-like blob on a coarse grid (n cells across), cut flat at y = cut: seen from the front its base is edge-on.

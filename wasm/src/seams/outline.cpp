@@ -6,6 +6,8 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numeric>
+#include <unordered_set>
 #include <utility>
 
 namespace billow {
@@ -267,6 +269,27 @@ std::optional<SectionLoop> sectionThrough(const TriMesh& mesh, const Eigen::Vect
                                      [&](const SectionLoop& a, const SectionLoop& b) { return gap(a) < gap(b); }));
 }
 
+namespace {
+
+// How many times `loop` crosses `section`, a loop of the plane {p . normal = offset}: where two consecutive points
+// of the loop lie on either side of the plane, in a face the section passes through (a zeroLoops point names the face
+// of the step that reaches it; the plane's other loops pass through other faces). A point within `hair` of the plane
+// is on its positive side, as a vertex there is to planeSection (a loop point at a vertex is rounded off it).
+int crossings(const SectionLoop& loop, const SectionLoop& section, const Eigen::Vector3d& normal, double offset,
+              double hair) {
+  std::unordered_set<int> faces;
+  for (const SectionPoint& p : section) faces.insert(p.at.face);
+  const auto below = [&](const SectionPoint& p) { return p.position.dot(normal) - offset < -hair; };
+  int n = 0;
+  for (size_t i = 0; i < loop.size(); ++i) {
+    const SectionPoint& b = loop[(i + 1) % loop.size()];
+    if (below(loop[i]) != below(b) && faces.count(b.at.face)) ++n;
+  }
+  return n;
+}
+
+}  // namespace
+
 std::vector<SectionLoop> acrossHandles(const TriMesh& mesh, const SectionLoop& rim,
                                        const std::vector<SectionLoop>& holes, const Eigen::Vector3d& towards) {
   // Every few points of a long loop: the cut's place need not be exact.
@@ -277,33 +300,83 @@ std::vector<SectionLoop> acrossHandles(const TriMesh& mesh, const SectionLoop& r
     return some;
   };
   const auto nearestOn = [](const SectionLoop& loop, const Eigen::Vector3d& p) {
-    return *std::min_element(loop.begin(), loop.end(), [&](const SectionPoint& a, const SectionPoint& b) {
-      return (a.position - p).squaredNorm() < (b.position - p).squaredNorm();
-    });
+    return size_t(std::min_element(loop.begin(), loop.end(),
+                                   [&](const SectionPoint& a, const SectionPoint& b) {
+                                     return (a.position - p).squaredNorm() < (b.position - p).squaredNorm();
+                                   }) -
+                  loop.begin());
   };
-  const auto cut = [&](const SectionPoint& p, const SectionPoint& q) -> std::optional<SectionLoop> {
-    const Eigen::Vector3d normal = towards.cross(q.position - p.position);
-    if (normal.norm() <= 1e-12) return std::nullopt;
-    return sectionThrough(mesh, p.position, p.at.face, normal.normalized());
-  };
+  const double hair = 1e-9 * boundingDiagonal(mesh);
   const SectionLoop rimPoints = every(rim, 400);
   std::vector<SectionLoop> out;
-  for (const SectionLoop& hole : holes) {
-    double nearest = std::numeric_limits<double>::infinity();
-    SectionPoint nearHole, nearRim;
-    for (const SectionPoint& p : every(hole, 200)) {
-      const SectionPoint q = nearestOn(rimPoints, p.position);
-      if ((p.position - q.position).norm() < nearest)
-        nearest = (p.position - q.position).norm(), nearHole = p, nearRim = q;
-    }
-    if (!std::isfinite(nearest)) return {};
-    const SectionPoint far =
-        *std::max_element(hole.begin(), hole.end(), [&](const SectionPoint& a, const SectionPoint& b) {
-          return (a.position - nearHole.position).norm() < (b.position - nearHole.position).norm();
-        });
-    for (const auto& section : {cut(nearHole, nearRim), cut(far, nearestOn(rimPoints, far.position))}) {
-      if (!section) return {};
-      out.push_back(*section);
+  for (size_t h = 0; h < holes.size(); ++h) {
+    const SectionLoop some = every(holes[h], 200);
+    const size_t n = some.size();
+    if (n < 3) continue;
+    // The section through the hole's point `i` straight across its line there (the plane along the view, across the
+    // line's tangent), where it runs around the ring: across the rim and this hole once each (a ring seen through) or
+    // twice (a torus seen from its side, whose inner contour is no hole one sees through), no other hole, and nowhere
+    // along a piece of their lines. A section that grazes its hole, crosses a wavering rim more often, runs along a
+    // flat wall seen edge-on or crosses another hole cuts slivers off (a statue's legs, its base seen edge-on).
+    const auto cut = [&](size_t i) -> std::optional<SectionLoop> {
+      // Not at a corner (a letter's hole's), where the line has no one tangent: turning by more than 30 degrees between
+      // the two points to either side.
+      const auto seen = [&](const Eigen::Vector3d& d) { return Eigen::Vector3d(d - d.dot(towards) * towards); };
+      const Eigen::Vector3d before = seen(some[i].position - some[(i + n - 2) % n].position),
+                            after = seen(some[(i + 2) % n].position - some[i].position);
+      if (!(before.dot(after) > std::sqrt(3.0) / 2 * before.norm() * after.norm())) return std::nullopt;
+      const Eigen::Vector3d unit = (before + after).normalized();
+      std::optional<SectionLoop> section = sectionThrough(mesh, some[i].position, some[i].at.face, unit);
+      if (!section) return std::nullopt;
+      const double offset = some[i].position.dot(unit);
+      const auto inPlane = [&](const SectionPoint& x) { return std::abs(x.position.dot(unit) - offset) <= hair; };
+      for (const SectionLoop* loop : {&holes[h], &rim})
+        for (size_t k = 0; k < loop->size(); ++k)
+          if (inPlane((*loop)[k]) && inPlane((*loop)[(k + 1) % loop->size()])) return std::nullopt;
+      const auto around = [&](const SectionLoop& loop) {
+        const int crossed = crossings(loop, *section, unit, offset, hair);
+        return crossed == 1 || crossed == 2;
+      };
+      if (!around(rim)) return std::nullopt;
+      for (size_t other = 0; other < holes.size(); ++other)
+        if (other == h ? !around(holes[other]) : crossings(holes[other], *section, unit, offset, hair) > 0)
+          return std::nullopt;
+      return section;
+    };
+    std::vector<double> gap(n);
+    for (size_t k = 0; k < n; ++k)
+      gap[k] = (rimPoints[nearestOn(rimPoints, some[k].position)].position - some[k].position).norm();
+    const size_t nearest = size_t(std::min_element(gap.begin(), gap.end()) - gap.begin());
+    // The cut where the ring is narrowest: through the middle of a stretch as narrow (a letter's straight stroke, where
+    // a cut at its end would leave a sliver at the corner), else through the narrowest point.
+    const double within = gap[nearest] * 1.01 + hair;
+    size_t ahead = 0, behind = 0;
+    while (ahead + 1 < n && gap[(nearest + ahead + 1) % n] <= within) ++ahead;
+    while (behind + ahead + 1 < n && gap[(nearest + n - behind - 1) % n] <= within) ++behind;
+    Eigen::Vector3d middle = Eigen::Vector3d::Zero();
+    for (const SectionPoint& p : some) middle += p.position;
+    middle /= double(n);
+    std::vector<size_t> narrowFirst(n);
+    std::iota(narrowFirst.begin(), narrowFirst.end(), size_t{0});
+    std::sort(narrowFirst.begin(), narrowFirst.end(), [&](size_t a, size_t b) { return gap[a] < gap[b]; });
+    for (const size_t k : {(nearest + n + ahead / 2 - behind / 2) % n, nearest}) {
+      std::optional<SectionLoop> narrowest = cut(k);
+      if (!narrowest) continue;
+      // The other cut opposite it across the hole's middle, else farthest from it, else where the ring is narrowest a
+      // quarter of the hole or more away (a letter B's hole has its other stroke opposite, not the rim).
+      size_t farthest = k;
+      for (size_t j = 0; j < n; ++j)
+        if ((some[j].position - some[k].position).norm() > (some[farthest].position - some[k].position).norm())
+          farthest = j;
+      std::vector<size_t> places = {nearestOn(some, 2 * middle - some[k].position), farthest};
+      for (const size_t j : narrowFirst)
+        if (std::min((j + n - k) % n, (k + n - j) % n) >= n / 4 && places.size() < 6) places.push_back(j);
+      for (const size_t j : places)
+        if (std::optional<SectionLoop> opposite = cut(j)) {
+          out.push_back(std::move(*narrowest)), out.push_back(std::move(*opposite));
+          break;
+        }
+      break;
     }
   }
   return out;

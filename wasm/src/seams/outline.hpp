@@ -24,10 +24,12 @@ struct Outline {
 std::optional<Outline> outlineSeenFrom(const TriMesh& mesh, const Eigen::Vector3d& towards);
 
 // A shape with a handle seen through it has an outline of several loops, and its front and back are rings, not
-// panels. Per hole, two sections along the view cut them open into halves: one where the ring is narrowest
-// (through the hole's point nearest the rim, across the gap) and one through the hole's point farthest from it.
-// One cut alone would leave each ring a C sewn to itself across the cut, which flattens badly. Empty where a cut
-// misses the surface.
+// panels. Per hole, two sections along the view, each straight across the hole's line, cut them open into halves:
+// one where the ring is narrowest, one opposite it across the hole. One cut alone would leave each ring a C sewn to
+// itself across the cut, which flattens badly. A hole gets none where no such cut runs around its ring (across the rim
+// and its hole once or twice each, no other hole, along no flat wall: on a statue's legs and base a plane grazes a
+// hole or wanders along an edge-on rim); the cuts that open a tube (suggest/seam_layouts.hpp openIntoPanels) open
+// those.
 std::vector<SectionLoop> acrossHandles(const TriMesh& mesh, const SectionLoop& rim,
                                        const std::vector<SectionLoop>& holes, const Eigen::Vector3d& towards);
 

@@ -569,16 +569,6 @@ void passThrough(const TriMesh& mesh, std::vector<SurfacePoint>& controls, const
   if (met) met->push_back(point.position);
 }
 
-// Seen through a handle, the front and back are rings: the two sections across each that cut them open
-// (acrossHandles). Throws where a cut misses the surface.
-std::vector<SectionLoop> sectionsAcrossRings(const TriMesh& target, const Outline& outline,
-                                             const Eigen::Vector3d& towards) {
-  std::vector<SectionLoop> across = acrossHandles(target, outline.loop, outline.holes, towards);
-  if (across.size() != 2 * outline.holes.size())
-    throw Error("suggest.no-outline", "its outline makes rings on this shape that no section cuts open");
-  return across;
-}
-
 // A limbs proposal's seams: around each limb's root, the body's halving plane on the body, each halved limb's plane
 // along it on that limb; a plane's piece on a part ends where it crosses the root seam, which passes through there.
 std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& proposal, double spacing) {
@@ -704,7 +694,7 @@ std::vector<DesignSeam> limbSeams(const TriMesh& target, const LayoutProposal& p
     layPieces(outline->loop, -1, "outline", true);
     // Seen through a handle, the front and back are rings: each hole's rim, and two sections across each ring, as the
     // outline layout cuts them open, on the body only.
-    const std::vector<SectionLoop> across = sectionsAcrossRings(target, *outline, towards);
+    const std::vector<SectionLoop> across = acrossHandles(target, outline->loop, outline->holes, towards);
     for (const SectionLoop& hole : outline->holes) layPieces(hole, -1, "hole in the outline", true);
     for (const SectionLoop& loop : across) layPieces(loop, -1, "across a ring");
   }
@@ -942,8 +932,9 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
         }
       }
     seams[0] = makeSeam("outline", true, rim);
-    // Seen through a handle, the front and back are rings: each hole's rim, and two sections across each ring.
-    const std::vector<SectionLoop> across = sectionsAcrossRings(target, *outline, towards);
+    // Seen through a handle, the front and back are rings: each hole's rim, and two sections across each ring where
+    // they run once around it (openSegments' cuts open the others).
+    const std::vector<SectionLoop> across = acrossHandles(target, outline->loop, outline->holes, towards);
     for (const SectionLoop& hole : outline->holes)
       seams.push_back(makeSeam("hole in the outline", true, sectionSeamPoints(target, hole, spacing, true)));
     for (const SectionLoop& loop : across)

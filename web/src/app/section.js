@@ -69,6 +69,7 @@ const CORNER_STRAY = 0.1;
 const CORNER_POINTS_MAX = 400;
 
 export const distance = (a, b) => Math.hypot(a[0] - b[0], a[1] - b[1], a[2] - b[2]);
+const dot = (a, b) => a[0] * b[0] + a[1] * b[1] + a[2] * b[2];
 
 export const loopLength = (loop) => loop.reduce((s, p, i) => s + distance(p.position, loop[(i + 1) % loop.length].position), 0);
 
@@ -233,34 +234,102 @@ function movedShare(split) {
 }
 
 // A shape with a handle seen through it (a ring face on, a letter O) has an outline of several loops: the rim
-// and a hole per handle; the front and the back are then rings, not panels. Per hole, two sections cut them
-// open into halves: one where the ring is narrowest (the plane along the view through the hole's point nearest
-// the rim, across the gap between them) and one through the hole's point farthest from it. One cut alone would
-// leave each ring a C sewn to itself across the cut, which the panels flatten badly. Each loop as zeroLoops'.
+// and a hole per handle; the front and the back are then rings, not panels. Per hole, two sections along the view,
+// each straight across the hole's line, cut them open into halves: one where the ring is narrowest, one opposite it
+// across the hole. One cut alone would leave each ring a C sewn to itself across the cut, which the panels flatten
+// badly. A hole gets none where no such cut runs around its ring (across the rim and its hole once or twice each, no
+// other hole, along no flat wall: on a statue's legs and base a plane grazes a hole or wanders along an edge-on rim);
+// the worker's cuts that open a tube open those (openIntoPanels). Each loop as zeroLoops'. The same rule as
+// seams/outline.cpp's acrossHandles.
 export function acrossHandles(mesh, rim, holes, towards) {
   const every = (loop, most) => loop.filter((_, i) => i % Math.max(1, Math.ceil(loop.length / most)) === 0);
-  const nearestOn = (loop, p) => loop.reduce((best, q) => (distance(p.position, q.position) < distance(p.position, best.position) ? q : best));
-  const cut = (p, q) => {
-    const gap = [0, 1, 2].map((k) => q.position[k] - p.position[k]);
-    const normal = [towards[1] * gap[2] - towards[2] * gap[1], towards[2] * gap[0] - towards[0] * gap[2], towards[0] * gap[1] - towards[1] * gap[0]];
-    const length = Math.hypot(...normal);
-    return length > 1e-12 ? sectionThrough(mesh, p, normal.map((x) => x / length)) : null;
-  };
+  const nearestOn = (loop, x) => loop.reduce((best, q, i) => (distance(x, q.position) < distance(x, loop[best].position) ? i : best), 0);
+  const hair = 1e-9 * bounds(mesh).diagonal;
+  const rimPoints = every(rim, 400);
   const out = [];
-  for (const hole of holes) {
-    const rimPoints = every(rim, 400);
+  holes.forEach((hole, h) => {
+    const some = every(hole, 200);
+    const n = some.length;
+    if (n < 3) return;
+    // The section through the hole's point i straight across its line there (the plane along the view, across the
+    // line's tangent), where it runs around the ring: across the rim and this hole once each (a ring seen through) or
+    // twice (a torus seen from its side, whose inner contour is no hole one sees through), no other hole, and nowhere
+    // along a piece of their lines. A section that grazes its hole, crosses a wavering rim more often, runs along a
+    // flat wall seen edge-on or crosses another hole cuts slivers off (a statue's legs, its base seen edge-on).
+    const cut = (i) => {
+      // Not at a corner (a letter's hole's), where the line has no one tangent: turning by more than 30 degrees between
+      // the two points to either side.
+      const seen = (a, b) => {
+        const d = b.position.map((x, c) => x - a.position[c]);
+        const along = dot(d, towards);
+        return d.map((x, c) => x - along * towards[c]);
+      };
+      const before = seen(some[(i + n - 2) % n], some[i]);
+      const after = seen(some[i], some[(i + 2) % n]);
+      if (!(dot(before, after) > (Math.sqrt(3) / 2) * Math.hypot(...before) * Math.hypot(...after))) return null;
+      const tangent = before.map((x, c) => x + after[c]);
+      const unit = tangent.map((x) => x / Math.hypot(...tangent));
+      const section = sectionThrough(mesh, some[i], unit);
+      if (!section) return null;
+      const offset = dot(some[i].position, unit);
+      const inPlane = (x) => Math.abs(dot(x.position, unit) - offset) <= hair;
+      if ([hole, rim].some((loop) => loop.some((x, k) => inPlane(x) && inPlane(loop[(k + 1) % loop.length])))) return null;
+      const around = (loop) => [1, 2].includes(crossings(loop, section, unit, offset, hair));
+      const runsAround = around(rim) && holes.every((other, k) => (k === h ? around(other) : crossings(other, section, unit, offset, hair) === 0));
+      return runsAround ? section : null;
+    };
+    const gap = some.map((p) => distance(p.position, rimPoints[nearestOn(rimPoints, p.position)].position));
+    const nearest = gap.indexOf(Math.min(...gap));
+    // The cut where the ring is narrowest: through the middle of a stretch as narrow (a letter's straight stroke,
+    // where a cut at its end would leave a sliver at the corner), else through the narrowest point.
+    const within = gap[nearest] * 1.01 + hair;
+    let ahead = 0;
+    let behind = 0;
+    while (ahead + 1 < n && gap[(nearest + ahead + 1) % n] <= within) ahead++;
+    while (behind + ahead + 1 < n && gap[(nearest + n - behind - 1) % n] <= within) behind++;
+    let k = -1;
     let near = null;
-    for (const p of every(hole, 200)) {
-      const q = nearestOn(rimPoints, p);
-      if (!near || distance(p.position, q.position) < near.d) near = { d: distance(p.position, q.position), p, q };
+    for (const i of [(nearest + n + (ahead >> 1) - (behind >> 1)) % n, nearest]) {
+      near = cut(i);
+      if (near) {
+        k = i;
+        break;
+      }
     }
-    if (!near) return null;
-    const far = hole.reduce((best, p) => (distance(p.position, near.p.position) > distance(best.position, near.p.position) ? p : best));
-    const sections = [cut(near.p, near.q), cut(far, nearestOn(rimPoints, far))];
-    if (!sections.every(Boolean)) return null;
-    out.push(...sections);
-  }
+    if (!near) return;
+    // The other cut opposite it across the hole's middle, else farthest from it, else where the ring is narrowest a
+    // quarter of the hole or more away (a letter B's hole has its other stroke opposite, not the rim).
+    const at = some[k].position;
+    const middle = [0, 1, 2].map((c) => some.reduce((sum, p) => sum + p.position[c], 0) / n);
+    const places = [
+      nearestOn(some, middle.map((x, c) => 2 * x - at[c])),
+      some.reduce((best, p, j) => (distance(p.position, at) > distance(some[best].position, at) ? j : best), k),
+      ...[...gap.keys()].sort((a, b) => gap[a] - gap[b]).filter((j) => Math.min((j + n - k) % n, (k + n - j) % n) >= n / 4).slice(0, 4),
+    ];
+    for (const j of places) {
+      const far = cut(j);
+      if (far) {
+        out.push(near, far);
+        return;
+      }
+    }
+  });
   return out;
+}
+
+// How many times `loop` crosses `section`, a loop of the plane {p . normal = offset}: where two consecutive points of
+// the loop lie on either side of the plane, in a face the section passes through (a zeroLoops point names the face of
+// the step that reaches it; the plane's other loops pass through other faces). A point within `hair` of the plane is on
+// its positive side, as a vertex there is to planeSection (a loop point at a vertex is rounded off it).
+function crossings(loop, section, normal, offset, hair) {
+  const faces = new Set(section.map((p) => p.face));
+  const below = (p) => dot(p.position, normal) - offset < -hair;
+  let n = 0;
+  loop.forEach((a, i) => {
+    const b = loop[(i + 1) % loop.length];
+    if (below(a) !== below(b) && faces.has(b.face)) n++;
+  });
+  return n;
 }
 
 // Per vertex, n · towards over the vertex normal (area-weighted), kept away from zero; where seen edge-on, from

@@ -241,19 +241,21 @@ export class SeamTool {
       notes.push(`${what} turned away from the rest of ${one ? 'its' : 'their'} side (a fold, a limb in front of the body, an ear seen at an angle) went with the panel around ${one ? 'it' : 'them'}${share}; a section seam around a limb gives it panels of its own${straighter}`);
     }
     // Seen through a handle (a ring, a letter O), the front and back are rings: each hole's rim is laid too,
-    // and two sections across the ring cut them into halves.
+    // and two sections across each ring, where they run around it, cut them into halves.
     const holes = outline.holes.length;
     const across = holes ? acrossHandles(this.app.target, outline.loop, outline.holes, towards) : [];
-    const opened = holes > 0 && across !== null;
-    if (opened)
-      notes.push(`the shape has ${holes === 1 ? 'a handle' : `${holes} handles`}, so the outline makes ${holes + 1} loops: the rim of each hole was laid too, and two seams across the ring (where it is narrowest and opposite) cut the front and back into halves (drag their points to move them)`);
-    else if (holes) notes.push(`the shape has a handle, so the outline makes ${holes + 1} loops: the longest was laid; a section seam across the handle opens it`);
-    const loops = opened ? [outline.loop, ...outline.holes, ...across] : [outline.loop];
-    const names = opened ? ['Outline', ...outline.holes.map((_, k) => `Outline, hole ${k + 1}`), ...across.map((_, k) => `Across the ring ${k + 1}`)] : ['Outline'];
+    const halved = across.length / 2;
+    if (holes) {
+      const cuts = halved === holes ? '' : halved ? ` around ${halved} of the holes` : null;
+      const halves = cuts === null ? '' : `, and two seams across the ring${cuts} (where it is narrowest and opposite) cut the front and back into halves (drag their points to move them)`;
+      notes.push(`the shape has ${holes === 1 ? 'a handle' : `${holes} handles`}, so the outline makes ${holes + 1} loops: the rim of each hole was laid too${halves}`);
+    }
+    const loops = [outline.loop, ...outline.holes, ...across];
+    const names = ['Outline', ...outline.holes.map((_, k) => `Outline, hole ${k + 1}`), ...across.map((_, k) => `Across the ring ${k + 1}`)];
     const note = notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null;
     // On a shape with handles the front or the back may still be a ring, or hold a handle this view does not look
     // through (a statue's arm joined to its body): the seams that open them come with the outline.
-    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(loops, { names, note });
+    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(loops, { names, note, keep: 1 + holes });
     this.app.commitLoops(loops, { names, note });
   }
 
@@ -282,7 +284,7 @@ export class SeamTool {
     const laying = { names: bandNames('outline', this.bandWidth), across: band.origin, band, note };
     // On a shape with handles the front or the back may be a ring, or hold a handle: the seams that open them
     // come with the band, as with the outline alone; the band's own seams stay whole.
-    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(laid.loops, { ...laying, keepLaid: true });
+    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(laid.loops, { ...laying, keep: laid.loops.length });
     this.app.commitLoops(laid.loops, laying);
   }
 
