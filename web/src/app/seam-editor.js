@@ -225,15 +225,15 @@ export class SeamEditor {
   // Loops laid in one action on a shape with handles, where their parts may not all be panels (the Outline seen past
   // a handle its view does not look through leaves a front that is a ring or holds the handle): committed with the
   // seams that make every part a panel, in the same step of the history (the suggested layouts' rule,
-  // Op.openIntoPanels), which the note names. The designer's seams and the first `keep` loops (the outline's rim and
-  // its holes' rims, which part the front from the back; a gusset band's seams, relaid by their parts) stay as they
-  // are; the other loops may be mended (a loop that only grazes the shape left out, one that crosses itself undone),
+  // Op.openIntoPanels), which the note names. The designer's seams and the first `keep` seams laid (the outline's rim
+  // and its holes' rims, which part the front from the back; all of a gusset band's, relaid by their parts) stay as
+  // they are; the other loops may be mended (a loop that only grazes the shape left out, one that crosses itself undone),
   // unless mirror twins link seams by their indices. Where even that makes no panels, the loops alone: the parts'
   // messages say what is left.
   async commitLoopsOpened(loops, { note = null, keep = 1, ...laying } = {}) {
     const before = this.design;
     let next = this.withLoops(loops, laying);
-    const fixed = this.plane ? next.seams.length : before.seams.length + keep;
+    const fixed = this.plane ? next.seams.length : Math.min(next.seams.length, before.seams.length + keep);
     let opening = '';
     const status = this.app.store.status, adding = 'Adding the seams that make every part a panel…';
     this.app.setStatus(adding);

@@ -284,7 +284,7 @@ export class SeamTool {
     const laying = { names: bandNames('outline', this.bandWidth), across: band.origin, band, note };
     // On a shape with handles the front or the back may be a ring, or hold a handle: the seams that open them
     // come with the band, as with the outline alone; the band's own seams stay whole.
-    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(laid.loops, { ...laying, keep: laid.loops.length });
+    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(laid.loops, { ...laying, keep: Infinity });
     this.app.commitLoops(laid.loops, laying);
   }
 
