@@ -933,7 +933,7 @@ std::vector<DesignSeam> proposalSeams(const TriMesh& target, const LayoutProposa
       }
     seams[0] = makeSeam("outline", true, rim);
     // Seen through a handle, the front and back are rings: each hole's rim, and two sections across each ring where
-    // they run once around it (openSegments' cuts open the others).
+    // they run around it (openSegments' cuts open the others).
     const std::vector<SectionLoop> across = acrossHandles(target, outline->loop, outline->holes, towards);
     for (const SectionLoop& hole : outline->holes)
       seams.push_back(makeSeam("hole in the outline", true, sectionSeamPoints(target, hole, spacing, true)));

@@ -227,9 +227,9 @@ export class SeamEditor {
   // seams that make every part a panel, in the same step of the history (the suggested layouts' rule,
   // Op.openIntoPanels), which the note names. The designer's seams and the first `keep` seams laid (the outline's rim
   // and its holes' rims, which part the front from the back; all of a gusset band's, relaid by their parts) stay as
-  // they are; the other loops may be mended (a loop that only grazes the shape left out, one that crosses itself undone),
-  // unless mirror twins link seams by their indices. Where even that makes no panels, the loops alone: the parts'
-  // messages say what is left.
+  // they are; the other loops may be mended (a loop that only grazes the shape left out, one that crosses itself
+  // undone), unless mirror twins link seams by their indices. Where even that makes no panels, the loops alone: the
+  // parts' messages say what is left.
   async commitLoopsOpened(loops, { note = null, keep = 1, ...laying } = {}) {
     const before = this.design;
     let next = this.withLoops(loops, laying);
