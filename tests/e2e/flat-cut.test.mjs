@@ -215,6 +215,42 @@ test('the outline of a ring seen face on: its rim, its hole and two seams across
   await page.close();
 });
 
+// A foil number 8 (tests/node/implicit-mesh.mjs): a flat stroke with rounded edges round two loops, genus 2, as an OBJ.
+function eightObj() {
+  const loop = (x, y, cy, r) => Math.abs(Math.hypot(x, y - cy) - r);
+  const stroke = (x, y) => Math.min(loop(x, y, 0.42, 0.36), loop(x, y, -0.42, 0.42)) - 0.12;
+  const f = (x, y, z) => {
+    const a = stroke(x, y), b = Math.abs(z) - 0.12;
+    return Math.hypot(Math.max(a, 0), Math.max(b, 0)) + Math.min(Math.max(a, b), 0) - 0.04;
+  };
+  const { positions, indices } = implicitMesh(f, -1.1, 1.1, 48);
+  const lines = [];
+  for (let i = 0; i < positions.length; i += 3) lines.push(`v ${positions[i]} ${positions[i + 1]} ${positions[i + 2]}`);
+  for (let i = 0; i < indices.length; i += 3) lines.push(`f ${indices[i] + 1} ${indices[i + 1] + 1} ${indices[i + 2] + 1}`);
+  return lines.join('\n');
+}
+
+test('the outline of a number 8 seen face on: its rim, both holes and two seams across each ring make six panels', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.setInputFiles('#file-input', { name: 'eight.obj', mimeType: 'text/plain', buffer: Buffer.from(eightObj()) });
+  await page.waitForFunction(() => window.billow.test.target?.fileName === 'eight.obj' && window.billow.test.panes.target.mesh);
+  await lookFrom(page, [0, 0, 1]);
+  await page.keyboard.press('o');
+  await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 6, null, { timeout: 60000 });
+  const names = await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name));
+  assert.deepEqual(names, ['Outline', 'Outline, hole 1', 'Outline, hole 2', ...[1, 2, 3, 4].map((k) => `Across the ring ${k}`)]);
+  assert.equal(await page.evaluate(() => window.billow.test.segmentation.segments.every((s) => s.isDisk)), true);
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
+  const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
+  await note.waitFor({ timeout: 10000 });
+  assert.match(await note.textContent(), /2 handles.*3 loops.*the rim of each hole was laid too.*two seams across the ring \(/);
+  await screenshot(page, 'flat-cut-outline-eight');
+  await page.click('#undo-button');
+  await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 // A mug (tests/node/implicit-mesh.mjs): a rounded body with a handle at its side, genus 1, as an OBJ file.
 function mugObj() {
   const body = (x, y, z) => Math.hypot(x / 0.6, y, z / 0.6) - 1;

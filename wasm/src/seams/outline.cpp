@@ -320,10 +320,12 @@ std::vector<SectionLoop> acrossHandles(const TriMesh& mesh, const SectionLoop& r
     // flat wall seen edge-on or crosses another hole cuts slivers off (a statue's legs, its base seen edge-on).
     const auto cut = [&](size_t i) -> std::optional<SectionLoop> {
       // Not at a corner (a letter's hole's), where the line has no one tangent: turning by more than 30 degrees between
-      // the two points to either side.
+      // the points a 24th of the loop to either side (nearer, a coarse mesh's contour zig-zags across a wall seen
+      // edge-on; a circle turns 15 degrees there).
+      const size_t w = std::max<size_t>(2, (n + 12) / 24);
       const auto seen = [&](const Eigen::Vector3d& d) { return Eigen::Vector3d(d - d.dot(towards) * towards); };
-      const Eigen::Vector3d before = seen(some[i].position - some[(i + n - 2) % n].position),
-                            after = seen(some[(i + 2) % n].position - some[i].position);
+      const Eigen::Vector3d before = seen(some[i].position - some[(i + n - w % n) % n].position),
+                            after = seen(some[(i + w) % n].position - some[i].position);
       if (!(before.dot(after) > std::sqrt(3.0) / 2 * before.norm() * after.norm())) return std::nullopt;
       const Eigen::Vector3d unit = (before + after).normalized();
       std::optional<SectionLoop> section = sectionThrough(mesh, some[i].position, some[i].at.face, unit);

@@ -258,14 +258,16 @@ export function acrossHandles(mesh, rim, holes, towards) {
     // flat wall seen edge-on or crosses another hole cuts slivers off (a statue's legs, its base seen edge-on).
     const cut = (i) => {
       // Not at a corner (a letter's hole's), where the line has no one tangent: turning by more than 30 degrees between
-      // the two points to either side.
+      // the points a 24th of the loop to either side (nearer, a coarse mesh's contour zig-zags across a wall seen
+      // edge-on; a circle turns 15 degrees there).
+      const w = Math.max(2, Math.round(n / 24));
       const seen = (a, b) => {
         const d = b.position.map((x, c) => x - a.position[c]);
         const along = dot(d, towards);
         return d.map((x, c) => x - along * towards[c]);
       };
-      const before = seen(some[(i + n - 2) % n], some[i]);
-      const after = seen(some[i], some[(i + 2) % n]);
+      const before = seen(some[(i + n - (w % n)) % n], some[i]);
+      const after = seen(some[i], some[(i + w) % n]);
       if (!(dot(before, after) > (Math.sqrt(3) / 2) * Math.hypot(...before) * Math.hypot(...after))) return null;
       const tangent = before.map((x, c) => x + after[c]);
       const unit = tangent.map((x) => x / Math.hypot(...tangent));
