@@ -194,26 +194,31 @@ function ringObj(R = 1, r = 0.35, n = 64, m = 24) {
   return lines.join('\n');
 }
 
-test('the outline of a ring seen face on: its rim, its hole and two seams across cut it into four panels, and say so', async () => {
+// The file `name` (OBJ text `obj`) opened, seen face on along z and outlined: `segments` panels, every one a disk,
+// the seams `names`, no problem, a note matching `noteText`; one step of the history, undo takes them all away.
+async function expectOutlinedFaceOn(name, obj, segments, names, noteText, shot) {
   const page = await openFreshPage(env.context, env.server.url);
-  await page.setInputFiles('#file-input', { name: 'ring.obj', mimeType: 'text/plain', buffer: Buffer.from(ringObj()) });
-  await page.waitForFunction(() => window.billow.test.target?.fileName === 'ring.obj' && window.billow.test.panes.target.mesh);
+  await page.setInputFiles('#file-input', { name, mimeType: 'text/plain', buffer: Buffer.from(obj) });
+  await page.waitForFunction((n) => window.billow.test.target?.fileName === n && window.billow.test.panes.target.mesh, name);
   await lookFrom(page, [0, 0, 1]);
   await page.keyboard.press('o');
-  await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 4, null, { timeout: 30000 });
-  assert.deepEqual(await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name)), ['Outline', 'Outline, hole 1', 'Across the ring 1', 'Across the ring 2']);
+  await page.waitForFunction((n) => window.billow.test.segmentation?.segments?.length === n, segments, { timeout: 60000 });
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name)), names);
   assert.equal(await page.evaluate(() => window.billow.test.segmentation.segments.every((s) => s.isDisk)), true);
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
   const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
   await note.waitFor({ timeout: 10000 });
-  assert.match(await note.textContent(), /has a handle.*the rim of each hole was laid too.*two seams across the ring/);
-  await screenshot(page, 'flat-cut-outline-ring');
-  // One step of the history: undo takes all four away.
+  assert.match(await note.textContent(), noteText);
+  await screenshot(page, shot);
   await page.click('#undo-button');
   await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
   assert.deepEqual(page.errors, []);
   await page.close();
-});
+}
+
+test('the outline of a ring seen face on: its rim, its hole and two seams across cut it into four panels, and say so', () =>
+  expectOutlinedFaceOn('ring.obj', ringObj(), 4, ['Outline', 'Outline, hole 1', 'Across the ring 1', 'Across the ring 2'],
+    /has a handle.*the rim of each hole was laid too.*two seams across the ring/, 'flat-cut-outline-ring'));
 
 // A foil number 8 (tests/node/implicit-mesh.mjs): a flat stroke with rounded edges round two loops, genus 2, as an OBJ.
 function eightObj() {
@@ -223,44 +228,28 @@ function eightObj() {
     const a = stroke(x, y), b = Math.abs(z) - 0.12;
     return Math.hypot(Math.max(a, 0), Math.max(b, 0)) + Math.min(Math.max(a, b), 0) - 0.04;
   };
-  const { positions, indices } = implicitMesh(f, -1.1, 1.1, 48);
+  return objText(implicitMesh(f, -1.1, 1.1, 48));
+}
+
+// A mesh ({ positions, indices }, flat arrays) as the text of an OBJ file.
+function objText({ positions, indices }) {
   const lines = [];
   for (let i = 0; i < positions.length; i += 3) lines.push(`v ${positions[i]} ${positions[i + 1]} ${positions[i + 2]}`);
   for (let i = 0; i < indices.length; i += 3) lines.push(`f ${indices[i] + 1} ${indices[i + 1] + 1} ${indices[i + 2] + 1}`);
   return lines.join('\n');
 }
 
-test('the outline of a number 8 seen face on: its rim, both holes and two seams across each ring make six panels', async () => {
-  const page = await openFreshPage(env.context, env.server.url);
-  await page.setInputFiles('#file-input', { name: 'eight.obj', mimeType: 'text/plain', buffer: Buffer.from(eightObj()) });
-  await page.waitForFunction(() => window.billow.test.target?.fileName === 'eight.obj' && window.billow.test.panes.target.mesh);
-  await lookFrom(page, [0, 0, 1]);
-  await page.keyboard.press('o');
-  await page.waitForFunction(() => window.billow.test.segmentation?.segments?.length === 6, null, { timeout: 60000 });
-  const names = await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name));
-  assert.deepEqual(names, ['Outline', 'Outline, hole 1', 'Outline, hole 2', ...[1, 2, 3, 4].map((k) => `Across the ring ${k}`)]);
-  assert.equal(await page.evaluate(() => window.billow.test.segmentation.segments.every((s) => s.isDisk)), true);
-  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
-  const note = page.locator('.message.notice', { hasText: 'Outline seam laid as seen from here' });
-  await note.waitFor({ timeout: 10000 });
-  assert.match(await note.textContent(), /2 handles.*3 loops.*the rim of each hole was laid too.*two seams across the ring \(/);
-  await screenshot(page, 'flat-cut-outline-eight');
-  await page.click('#undo-button');
-  await page.waitForFunction(() => window.billow.test.design.seams.length === 0);
-  assert.deepEqual(page.errors, []);
-  await page.close();
-});
+// A hole's sections run straight across the stroke where the ring is narrowest and opposite, each around the ring once.
+test('the outline of a number 8 seen face on: its rim, both holes and two seams across each ring make six panels', () =>
+  expectOutlinedFaceOn('eight.obj', eightObj(), 6, ['Outline', 'Outline, hole 1', 'Outline, hole 2', ...[1, 2, 3, 4].map((k) => `Across the ring ${k}`)],
+    /2 handles.*3 loops.*the rim of each hole was laid too.*two seams across the ring \(/, 'flat-cut-outline-eight'));
 
 // A mug (tests/node/implicit-mesh.mjs): a rounded body with a handle at its side, genus 1, as an OBJ file.
 function mugObj() {
   const body = (x, y, z) => Math.hypot(x / 0.6, y, z / 0.6) - 1;
   const handle = (x, y, z) => Math.hypot(Math.hypot(x - 0.75, y) - 0.45, z) - 0.14;
   const blend = (a, b, k = 0.08) => Math.min(a, b) - (Math.max(k - Math.abs(a - b), 0) / k) ** 2 * (k / 4);
-  const { positions, indices } = implicitMesh((x, y, z) => blend(body(x, y, z), handle(x, y, z)), -1.35, 1.35, 36);
-  const lines = [];
-  for (let i = 0; i < positions.length; i += 3) lines.push(`v ${positions[i]} ${positions[i + 1]} ${positions[i + 2]}`);
-  for (let i = 0; i < indices.length; i += 3) lines.push(`f ${indices[i] + 1} ${indices[i + 1] + 1} ${indices[i + 2] + 1}`);
-  return lines.join('\n');
+  return objText(implicitMesh((x, y, z) => blend(body(x, y, z), handle(x, y, z)), -1.35, 1.35, 36));
 }
 
 // The generated mug opened and seen with its handle towards the viewer.
