@@ -247,7 +247,7 @@ export class SeamTool {
     const halved = across.length / 2;
     if (holes) {
       const cuts = halved === holes ? '' : halved ? ` around ${halved} of the holes` : null;
-      const halves = cuts === null ? '' : `, and two seams across the ring${cuts} (where it is narrowest and opposite) cut the front and back into halves (drag their points to move them)`;
+      const halves = cuts === null ? '' : `, and two seams across the ring${cuts} (where it is narrowest and opposite) to cut the front and back into halves (drag their points to move them)`;
       notes.push(`the shape has ${holes === 1 ? 'a handle' : `${holes} handles`}, so the outline makes ${holes + 1} loops: the rim of each hole was laid too${halves}`);
     }
     const loops = [outline.loop, ...outline.holes, ...across];
