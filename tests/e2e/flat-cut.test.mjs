@@ -296,6 +296,22 @@ test('a band laid around the outline of a mug comes with the seams that make eve
   await expectOpenedIntoPanels(page, 3, 'to make every part a panel', 'flat-cut-outline-band-mug');
 });
 
+// A gusseted number 8: the band follows the outline's outer loop, the holes' rims part the front from the back there,
+// and cuts open the rings; before, the front and the back met through the holes, one panel with a seam around a handle.
+test('a band laid around the outline of a number 8 comes with both holes\' rims and the cuts that open its rings', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.setInputFiles('#file-input', { name: 'eight.obj', mimeType: 'text/plain', buffer: Buffer.from(eightObj()) });
+  await page.waitForFunction(() => window.billow.test.target?.fileName === 'eight.obj' && window.billow.test.panes.target.mesh);
+  await lookFrom(page, [0, 0, 1]);
+  await page.fill('.section-band input', '30');
+  await page.press('.section-band input', 'Enter');
+  await page.click('#seam-panel button.outline');
+  await page.waitForFunction(() => window.billow.test.design.seams.length >= 5);
+  const laid = await page.evaluate(() => window.billow.test.design.seams.slice(0, 5).map((s) => s.name ?? ''));
+  assert.deepEqual(laid, ['Band 30 mm, front side', 'Band 30 mm, back side', 'Band 30 mm, across', 'Outline, hole 1', 'Outline, hole 2']);
+  await expectOpenedIntoPanels(page, 5, 'the rim of each hole was laid too', 'flat-cut-outline-band-eight');
+});
+
 test('a sheet narrower than a piece: the pattern pane offers the width that fits, in one click', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await page.evaluate(() => window.billow.test.openGalleryDesign('koala'));

@@ -209,13 +209,20 @@ export class SeamEditor {
     const id = band && cmd.nextBandId(next);
     const record = (part) => band && { ...band, id, part };
     const laid = [];
-    const { sides, across: ends } = across && loops.length === 2 ? bandSeamPoints(target, loops, across, { width: this.stripWidth(band) }) : { sides: loops.map((loop) => sectionSeamPoints(target, loop, { corners: true })) };
+    // A band's two sides are the first two loops, its seam across comes after them, and any further loops (the holes'
+    // rims of a band around an outline) after that.
+    const banded = across && loops.length >= 2;
+    const { sides, across: ends } = banded ? bandSeamPoints(target, loops.slice(0, 2), across, { width: this.stripWidth(band) }) : { sides: loops.map((loop) => sectionSeamPoints(target, loop, { corners: true })) };
     for (const [k, points] of sides.entries()) {
       next = cmd.addSeam(next, { points, closed: true, smooth: false, name: names[k], band: record(BAND_PARTS[k]) });
       laid.push(next.seams.length - 1);
     }
     if (ends) {
       next = cmd.addSeam(next, { points: ends.map((p, k) => ({ ...p, on: laid[k] })), closed: false, smooth: false, name: names[2], band: record('across') });
+      laid.push(next.seams.length - 1);
+    }
+    for (const [k, loop] of (banded ? loops.slice(2) : []).entries()) {
+      next = cmd.addSeam(next, { points: sectionSeamPoints(target, loop, { corners: true }), closed: true, smooth: false, name: names[3 + k] });
       laid.push(next.seams.length - 1);
     }
     if (this.plane) for (const index of laid) next = addMirroredTwin(next, target, this.plane, index);

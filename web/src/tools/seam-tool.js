@@ -279,13 +279,18 @@ export class SeamTool {
     const notes = [];
     if (laid.absorbed)
       notes.push(`${laid.absorbed} narrow ${laid.absorbed === 1 ? 'part' : 'parts'} of the front or back (thinner than the band: a tail, an ear) went into the band`);
-    if (laid.outline.loops > 1) notes.push('the shape has a handle: the band follows the longest loop of the outline');
+    // Seen through a handle (a letter O, a number 8) the band follows the outline's outer loop, and each hole's rim is
+    // laid too, so the front and the back meet there; the cuts that open a ring come with them.
+    const holes = laid.outline.holes;
+    if (holes.length)
+      notes.push(`the shape has ${holes.length === 1 ? 'a handle' : `${holes.length} handles`}: the band follows the outline's outer loop, and the rim of each hole was laid too`);
     const note = notes.length ? `Band laid around the outline as seen from here: ${notes.join('; ')}.` : null;
-    const laying = { names: bandNames('outline', this.bandWidth), across: band.origin, band, note };
+    const names = [...bandNames('outline', this.bandWidth), ...holes.map((_, k) => `Outline, hole ${k + 1}`)];
+    const laying = { names, across: band.origin, band, note };
     // On a shape with handles the front or the back may be a ring, or hold a handle: the seams that open them
     // come with the band, as with the outline alone; the band's own seams stay whole.
-    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(laid.loops, { ...laying, keep: Infinity });
-    this.app.commitLoops(laid.loops, laying);
+    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened([...laid.loops, ...holes], { ...laying, keep: Infinity });
+    this.app.commitLoops([...laid.loops, ...holes], laying);
   }
 
   // A direction in the view (world) as one in the target's own coordinates.
