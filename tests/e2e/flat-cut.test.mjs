@@ -413,6 +413,24 @@ test('a band\'s width is changed in the seam panel: its sides and the seam acros
   await page.close();
 });
 
+// The outline seen from one side is its own front and back; its mirror image (the outline seen from the other side)
+// lay over it along the body and cut slivers off where they part at the legs: 49 segments and no panels.
+test('with the design\'s symmetry on, the Outline seen across the mirror plane lays one outline, no mirrored twin', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  await page.waitForFunction(() => window.billow.test.panes.target.mesh);
+  await page.selectOption('#seam-panel select.symmetry', 'x');
+  // Spot seen from its side (+x), across its mirror plane.
+  await lookFrom(page, [1, 0, 0]);
+  await page.click('#seam-panel button.outline');
+  await page.waitForFunction(() => window.billow.test.design.seams.length > 0 && window.billow.test.segmentation?.segments?.length > 0, null, { timeout: 30000 });
+  assert.deepEqual(await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name)), ['Outline']);
+  assert.equal(await page.evaluate(() => window.billow.test.segmentation.segments.length), 2);
+  assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
+  await screenshot(page, 'flat-cut-outline-symmetry');
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
 test('with a band width, Outline lays a band around the outline as seen: front, back and a strip between', async () => {
   const page = await openFreshPage(env.context, env.server.url);
   await page.waitForFunction(() => window.billow.test.panes.target.mesh);

@@ -5,8 +5,9 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { readObjText } from './obj.mjs';
 import {
-  closestOnTriangle, closestSurfacePoint, symmetryPlane, mirrorPoint, isSelfSymmetric, addMirroredTwin, positionOf, reflect,
+  closestOnTriangle, closestSurfacePoint, symmetryPlane, mirrorPoint, isSelfSymmetric, addMirroredTwin, positionOf, reflect, bounds,
 } from '../../web/src/app/symmetry.js';
+import { planeSection, resampleLoop, loopLength } from '../../web/src/app/section.js';
 import { newDesign, parseDesign } from '../../web/src/app/design.js';
 import * as cmd from '../../web/src/app/commands.js';
 
@@ -64,6 +65,24 @@ test('a mirrored twin lies at the reflected positions; a seam across the plane i
   assert.equal(isSelfSymmetric({ points: across.slice(0, 2) }, spot, plane), false, 'half of it is not');
   const d2 = addMirroredTwin(cmd.addSeam(design, { points: across, closed: false }), spot, plane, 0);
   assert.equal(d2.seams.length, 1);
+});
+
+// A section loop across the mirror plane (a band around Spot's body) has its control points at equal arc lengths from
+// wherever the loop starts, which the mirror does not map onto each other; each image lies on the loop's own line.
+test('a section loop across the mirror plane is its own mirror image, wherever its control points fall', () => {
+  const plane = symmetryPlane({ ...newDesign('spot'), symmetry: { axis: 'x' } }, spot);
+  const { lo, hi } = bounds(spot);
+  for (const share of [0.35, 0.5, 0.65]) {
+    const loops = planeSection(spot, [0, 0, 1], lo[2] + share * (hi[2] - lo[2]));
+    const loop = loops.reduce((best, l) => (l.length > best.length ? l : best));
+    // 30 points at equal arc lengths from a third of a spacing past the loop's first point: spaced wider than the
+    // tolerance, so an image falls between two of them.
+    const total = loopLength(loop);
+    const points = resampleLoop(spot, loop, Array.from({ length: 30 }, (_, k) => ((k + 1 / 3) * total) / 30)).map(({ face, bary }) => ({ face, bary }));
+    assert.equal(isSelfSymmetric({ points, closed: true }, spot, plane), true, `across z at ${share}`);
+    // Half of it is not.
+    assert.equal(isSelfSymmetric({ points: points.slice(0, points.length >> 1), closed: false }, spot, plane), false, `half of it at ${share}`);
+  }
 });
 
 test('points snapped to a seam are snapped to its twin when mirrored', () => {

@@ -193,7 +193,10 @@ export class SeamEditor {
   // `note` says what was done to make them.
   // across: a point near which a seam runs across from the first loop to the second (a gusset band's strip is a
   // tube until a seam opens it), joined to both. band: the band's record without id and part (band.js), kept on
-  // its seams so it can be laid again at another width.
+  // its seams so it can be laid again at another width. With the design's symmetry on, each loop gets its mirrored
+  // twin (a section through one leg, one through the other), unless `asSeen`: the outline seen from one side is its
+  // own front and back, and its mirror image, the outline seen from the other side, would lie over it along the body
+  // and cut slivers off where they part (a cow's legs seen from its side).
   commitLoops(loops, { note = null, ...laying } = {}) {
     const next = this.withLoops(loops, laying);
     this.app.commitDesign(next);
@@ -203,7 +206,7 @@ export class SeamEditor {
   }
 
   // commitLoops' design, not yet committed.
-  withLoops(loops, { names = [], across = null, band = null } = {}) {
+  withLoops(loops, { names = [], across = null, band = null, asSeen = false } = {}) {
     const target = this.app.target;
     let next = this.design;
     const id = band && cmd.nextBandId(next);
@@ -225,7 +228,7 @@ export class SeamEditor {
       next = cmd.addSeam(next, { points: sectionSeamPoints(target, loop, { corners: true }), closed: true, smooth: false, name: names[3 + k] });
       laid.push(next.seams.length - 1);
     }
-    if (this.plane) for (const index of laid) next = addMirroredTwin(next, target, this.plane, index);
+    if (this.plane && !asSeen) for (const index of laid) next = addMirroredTwin(next, target, this.plane, index);
     return next;
   }
 
@@ -240,7 +243,7 @@ export class SeamEditor {
   async commitLoopsOpened(loops, { note = null, keep = 1, ...laying } = {}) {
     const before = this.design;
     let next = this.withLoops(loops, laying);
-    const fixed = this.plane ? next.seams.length : Math.min(next.seams.length, before.seams.length + keep);
+    const fixed = this.plane && !laying.asSeen ? next.seams.length : Math.min(next.seams.length, before.seams.length + keep);
     let opening = '';
     const status = this.app.store.status, adding = 'Adding the seams that make every part a panel…';
     this.app.setStatus(adding);

@@ -255,8 +255,8 @@ export class SeamTool {
     const note = notes.length ? `Outline seam laid as seen from here: ${notes.join('; ')}.` : null;
     // On a shape with handles the front or the back may still be a ring, or hold a handle this view does not look
     // through (a statue's arm joined to its body): the seams that open them come with the outline.
-    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(loops, { names, note, keep: 1 + holes });
-    this.app.commitLoops(loops, { names, note });
+    if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened(loops, { names, note, keep: 1 + holes, asSeen: true });
+    this.app.commitLoops(loops, { names, note, asSeen: true });
   }
 
   // The note's clause naming a straight view (front, side, top) that leaves less than half the largest part `largest`
@@ -286,7 +286,7 @@ export class SeamTool {
       notes.push(`the shape has ${holes.length === 1 ? 'a handle' : `${holes.length} handles`}: the band follows the outline's outer loop, and the rim of each hole was laid too`);
     const note = notes.length ? `Band laid around the outline as seen from here: ${notes.join('; ')}.` : null;
     const names = [...bandNames('outline', this.bandWidth), ...holes.map((_, k) => `Outline, hole ${k + 1}`)];
-    const laying = { names, across: band.origin, band, note };
+    const laying = { names, across: band.origin, band, note, asSeen: true };
     // On a shape with handles the front or the back may be a ring, or hold a handle: the seams that open them
     // come with the band, as with the outline alone; the band's own seams stay whole.
     if (this.app.target.report?.stats.genus > 0) return this.app.commitLoopsOpened([...laid.loops, ...holes], { ...laying, keep: Infinity });
