@@ -271,14 +271,12 @@ std::optional<SectionLoop> sectionThrough(const TriMesh& mesh, const Eigen::Vect
 
 namespace {
 
-// How many times `loop` crosses `section`, a loop of the plane {p . normal = offset}: where two consecutive points
-// of the loop lie on either side of the plane, in a face the section passes through (a zeroLoops point names the face
-// of the step that reaches it; the plane's other loops pass through other faces). A point within `hair` of the plane
-// is on its positive side, as a vertex there is to planeSection (a loop point at a vertex is rounded off it).
-int crossings(const SectionLoop& loop, const SectionLoop& section, const Eigen::Vector3d& normal, double offset,
-              double hair) {
-  std::unordered_set<int> faces;
-  for (const SectionPoint& p : section) faces.insert(p.at.face);
+// How many times `loop` crosses a loop of the plane {p . normal = offset} that passes through `faces`: where two
+// consecutive points of the loop lie on either side of the plane, in one of those faces (a zeroLoops point names the
+// face of the step that reaches it; the plane's other loops pass through other faces). A point within `hair` of the
+// plane is on its positive side, as a vertex there is to planeSection (a loop point at a vertex is rounded off it).
+int crossings(const SectionLoop& loop, const std::unordered_set<int>& faces, const Eigen::Vector3d& normal,
+              double offset, double hair) {
   const auto below = [&](const SectionPoint& p) { return p.position.dot(normal) - offset < -hair; };
   int n = 0;
   for (size_t i = 0; i < loop.size(); ++i) {
@@ -318,11 +316,11 @@ std::vector<SectionLoop> acrossHandles(const TriMesh& mesh, const SectionLoop& r
     // twice (a torus seen from its side, whose inner contour is no hole one sees through), no other hole, and nowhere
     // along a piece of their lines. A section that grazes its hole, crosses a wavering rim more often, runs along a
     // flat wall seen edge-on or crosses another hole cuts slivers off (a statue's legs, its base seen edge-on).
+    // Not at a corner (a letter's hole's), where the line has no one tangent: turning by more than 30 degrees between
+    // the points a 24th of the loop to either side (nearer, a coarse mesh's contour zig-zags across a wall seen
+    // edge-on; a circle turns 15 degrees there).
+    const size_t w = std::max<size_t>(2, (n + 12) / 24);
     const auto cut = [&](size_t i) -> std::optional<SectionLoop> {
-      // Not at a corner (a letter's hole's), where the line has no one tangent: turning by more than 30 degrees between
-      // the points a 24th of the loop to either side (nearer, a coarse mesh's contour zig-zags across a wall seen
-      // edge-on; a circle turns 15 degrees there).
-      const size_t w = std::max<size_t>(2, (n + 12) / 24);
       const auto seen = [&](const Eigen::Vector3d& d) { return Eigen::Vector3d(d - d.dot(towards) * towards); };
       const Eigen::Vector3d before = seen(some[i].position - some[(i + n - w % n) % n].position),
                             after = seen(some[(i + w) % n].position - some[i].position);
@@ -331,17 +329,19 @@ std::vector<SectionLoop> acrossHandles(const TriMesh& mesh, const SectionLoop& r
       std::optional<SectionLoop> section = sectionThrough(mesh, some[i].position, some[i].at.face, unit);
       if (!section) return std::nullopt;
       const double offset = some[i].position.dot(unit);
+      std::unordered_set<int> faces;
+      for (const SectionPoint& p : *section) faces.insert(p.at.face);
       const auto inPlane = [&](const SectionPoint& x) { return std::abs(x.position.dot(unit) - offset) <= hair; };
       for (const SectionLoop* loop : {&holes[h], &rim})
         for (size_t k = 0; k < loop->size(); ++k)
           if (inPlane((*loop)[k]) && inPlane((*loop)[(k + 1) % loop->size()])) return std::nullopt;
       const auto around = [&](const SectionLoop& loop) {
-        const int crossed = crossings(loop, *section, unit, offset, hair);
+        const int crossed = crossings(loop, faces, unit, offset, hair);
         return crossed == 1 || crossed == 2;
       };
       if (!around(rim)) return std::nullopt;
       for (size_t other = 0; other < holes.size(); ++other)
-        if (other == h ? !around(holes[other]) : crossings(holes[other], *section, unit, offset, hair) > 0)
+        if (other == h ? !around(holes[other]) : crossings(holes[other], faces, unit, offset, hair) > 0)
           return std::nullopt;
       return section;
     };

@@ -14,3 +14,11 @@ export function segmentDistance(p, a, b) {
   for (let i = 0; i < a.length; i++) r2 += (a[i] + t * (b[i] - a[i]) - p[i]) ** 2;
   return Math.sqrt(r2);
 }
+
+// The distance from p to the polyline through `points` (closed: back to the first), points of any dimension.
+export function polylineDistance(p, points, closed) {
+  const n = points.length;
+  let best = segmentDistance(p, points[0], points[0]);
+  for (let k = 0; k + 1 < n + (closed ? 1 : 0); k++) best = Math.min(best, segmentDistance(p, points[k], points[(k + 1) % n]));
+  return best;
+}

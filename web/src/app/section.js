@@ -256,11 +256,11 @@ export function acrossHandles(mesh, rim, holes, towards) {
     // twice (a torus seen from its side, whose inner contour is no hole one sees through), no other hole, and nowhere
     // along a piece of their lines. A section that grazes its hole, crosses a wavering rim more often, runs along a
     // flat wall seen edge-on or crosses another hole cuts slivers off (a statue's legs, its base seen edge-on).
+    // Not at a corner (a letter's hole's), where the line has no one tangent: turning by more than 30 degrees between
+    // the points a 24th of the loop to either side (nearer, a coarse mesh's contour zig-zags across a wall seen
+    // edge-on; a circle turns 15 degrees there).
+    const w = Math.max(2, Math.round(n / 24));
     const cut = (i) => {
-      // Not at a corner (a letter's hole's), where the line has no one tangent: turning by more than 30 degrees between
-      // the points a 24th of the loop to either side (nearer, a coarse mesh's contour zig-zags across a wall seen
-      // edge-on; a circle turns 15 degrees there).
-      const w = Math.max(2, Math.round(n / 24));
       const seen = (a, b) => {
         const d = b.position.map((x, c) => x - a.position[c]);
         const along = dot(d, towards);
@@ -274,10 +274,11 @@ export function acrossHandles(mesh, rim, holes, towards) {
       const section = sectionThrough(mesh, some[i], unit);
       if (!section) return null;
       const offset = dot(some[i].position, unit);
+      const faces = new Set(section.map((p) => p.face));
       const inPlane = (x) => Math.abs(dot(x.position, unit) - offset) <= hair;
       if ([hole, rim].some((loop) => loop.some((x, k) => inPlane(x) && inPlane(loop[(k + 1) % loop.length])))) return null;
-      const around = (loop) => [1, 2].includes(crossings(loop, section, unit, offset, hair));
-      const runsAround = around(rim) && holes.every((other, k) => (k === h ? around(other) : crossings(other, section, unit, offset, hair) === 0));
+      const around = (loop) => [1, 2].includes(crossings(loop, faces, unit, offset, hair));
+      const runsAround = around(rim) && holes.every((other, k) => (k === h ? around(other) : crossings(other, faces, unit, offset, hair) === 0));
       return runsAround ? section : null;
     };
     const gap = some.map((p) => distance(p.position, rimPoints[nearestOn(rimPoints, p.position)].position));
@@ -319,12 +320,11 @@ export function acrossHandles(mesh, rim, holes, towards) {
   return out;
 }
 
-// How many times `loop` crosses `section`, a loop of the plane {p . normal = offset}: where two consecutive points of
-// the loop lie on either side of the plane, in a face the section passes through (a zeroLoops point names the face of
-// the step that reaches it; the plane's other loops pass through other faces). A point within `hair` of the plane is on
-// its positive side, as a vertex there is to planeSection (a loop point at a vertex is rounded off it).
-function crossings(loop, section, normal, offset, hair) {
-  const faces = new Set(section.map((p) => p.face));
+// How many times `loop` crosses a loop of the plane {p . normal = offset} that passes through `faces` (a Set): where
+// two consecutive points of the loop lie on either side of the plane, in one of those faces (a zeroLoops point names the
+// face of the step that reaches it; the plane's other loops pass through other faces). A point within `hair` of the
+// plane is on its positive side, as a vertex there is to planeSection (a loop point at a vertex is rounded off it).
+function crossings(loop, faces, normal, offset, hair) {
   const below = (p) => dot(p.position, normal) - offset < -hair;
   let n = 0;
   loop.forEach((a, i) => {

@@ -4,7 +4,7 @@
 // that is its own mirror image (a loop around the belly of a symmetric animal) gets no twin.
 // Mirroring a surface point: its position reflected across the plane, then the closest point of the target.
 
-import { segmentDistance } from './geometry.js';
+import { polylineDistance } from './geometry.js';
 
 export const SYMMETRY_AXES = ['x', 'y', 'z'];
 const SELF_SYMMETRIC_TOLERANCE = 0.01; // of the bounding-box diagonal
@@ -155,16 +155,9 @@ export function isSelfSymmetric(seam, target, plane) {
   const tolerance = SELF_SYMMETRIC_TOLERANCE * bounds(target).diagonal;
   const controls = seam.points.map((p) => positionOf(target, p));
   // Each control point's image lies on the seam's own line through its control points, not necessarily at another
-  // control point: the Outline seen across the plane (a cow from its side) has its points at equal arc lengths, which
-  // the mirror does not map onto each other, and a twin laid over it cut the shape into slivers.
-  const n = controls.length;
-  const spans = seam.closed ? n : n - 1;
-  return controls.every((c) => {
-    const m = reflect(c, plane);
-    if (Math.hypot(controls[0][0] - m[0], controls[0][1] - m[1], controls[0][2] - m[2]) < tolerance) return true;
-    for (let k = 0; k < spans; k++) if (segmentDistance(m, controls[k], controls[(k + 1) % n]) < tolerance) return true;
-    return false;
-  });
+  // control point: a section loop across the plane has its points at equal arc lengths from wherever it starts, 2 % of
+  // the diagonal apart, which the mirror does not map onto each other, and a twin laid over it cut slivers off.
+  return controls.every((c) => polylineDistance(reflect(c, plane), controls, seam.closed) < tolerance);
 }
 
 // The design with a mirrored twin of seam i appended (linked both ways), or the same design when the seam
