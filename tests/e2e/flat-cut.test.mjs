@@ -426,6 +426,8 @@ test('with the design\'s symmetry on, the Outline seen across the mirror plane l
   assert.deepEqual(await page.evaluate(() => window.billow.test.design.seams.map((s) => s.name)), ['Outline']);
   assert.equal(await page.evaluate(() => window.billow.test.segmentation.segments.length), 2);
   assert.deepEqual(await page.$$eval('#seam-panel .problem', (els) => els.map((e) => e.textContent)), []);
+  // Nor is one offered: a twin would lie over most of it.
+  assert.equal(await page.$$eval('#seam-panel .seam-list .mirror', (els) => els.length), 0);
   await screenshot(page, 'flat-cut-outline-symmetry');
   assert.deepEqual(page.errors, []);
   await page.close();

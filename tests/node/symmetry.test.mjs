@@ -5,7 +5,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { readObjText } from './obj.mjs';
 import {
-  closestOnTriangle, closestSurfacePoint, symmetryPlane, mirrorPoint, isSelfSymmetric, addMirroredTwin, positionOf, reflect, bounds,
+  closestOnTriangle, closestSurfacePoint, symmetryPlane, mirrorPoint, isSelfSymmetric, needsNoTwin, addMirroredTwin, positionOf, reflect, bounds,
 } from '../../web/src/app/symmetry.js';
 import { planeSection, resampleLoop, loopLength } from '../../web/src/app/section.js';
 import { newDesign, parseDesign } from '../../web/src/app/design.js';
@@ -83,6 +83,44 @@ test('a section loop across the mirror plane is its own mirror image, wherever i
     // Half of it is not.
     assert.equal(isSelfSymmetric({ points: points.slice(0, points.length >> 1), closed: false }, spot, plane), false, `half of it at ${share}`);
   }
+});
+
+// Spot's outline seen from its side runs along the mirror plane over her back and belly and round one side's legs; a
+// twin would lie over it there and cut slivers off where the two part.
+test('a seam that is mostly its own mirror image gets no twin; one mostly off the plane does', () => {
+  const design = { ...newDesign('spot'), symmetry: { axis: 'x' } };
+  const plane = symmetryPlane(design, spot);
+  const { lo, hi } = bounds(spot);
+  const loops = planeSection(spot, [0, 0, 1], lo[2] + 0.5 * (hi[2] - lo[2]));
+  const loop = loops.reduce((best, l) => (l.length > best.length ? l : best));
+  const total = loopLength(loop);
+  const points = resampleLoop(spot, loop, Array.from({ length: 30 }, (_, k) => ((k + 0.5) * total) / 30)).map(({ face, bary }) => ({ face, bary }));
+  // The loop's half on the far side (x < 0) moved off the plane's image: each of its points taken further along -x.
+  const offPlane = (keep) => points.map((p, k) => {
+    const position = positionOf(spot, p);
+    return position[0] < plane.offset && !keep(k) ? closestSurfacePoint(spot, [position[0] - 0.15, position[1], position[2]]) : p;
+  });
+  const count = (seam) => seam.points.filter((p) => positionOf(spot, p)[0] < plane.offset).length;
+  const mostlyOwn = { points: offPlane((k) => k % 3 !== 0), closed: true };
+  assert.ok(count(mostlyOwn) > 5, 'some of its points on the far side');
+  assert.equal(isSelfSymmetric(mostlyOwn, spot, plane), false, 'not all of it is its own image');
+  assert.equal(needsNoTwin(mostlyOwn, spot, plane), true, 'most of it is');
+  const d = cmd.addSeam(design, { points: mostlyOwn.points, closed: true });
+  assert.equal(addMirroredTwin(d, spot, plane, 0), d, 'no twin over it');
+  const side = [[0.4, 0.2, 0.1], [0.4, 0.3, 0.4], [0.35, 0.0, 0.5]].map((p) => closestSurfacePoint(spot, p));
+  assert.equal(needsNoTwin({ points: side, closed: true }, spot, plane), false, 'a seam on one flank needs its twin');
+});
+
+// A design file may give control points as plain 3D points (docs/formats.md): the gallery's three gores do.
+test('a seam of plain 3D points gets its twin at the reflected points', () => {
+  const design = { ...newDesign('sphere'), symmetry: { axis: 'x' } };
+  const plane = symmetryPlane(design, sphere);
+  const meridian = [[0, 1, 0], [0.70711, 0.70711, 0], [1, 0, 0], [0.70711, -0.70711, 0], [0, -1, 0]];
+  const seam = { points: meridian, closed: false };
+  assert.equal(needsNoTwin(seam, sphere, plane), false, 'only its ends are their own images');
+  const d = addMirroredTwin(cmd.addSeam(design, seam), sphere, plane, 0);
+  assert.equal(d.seams.length, 2);
+  d.seams[1].points.forEach((p, k) => assert.ok(dist(positionOf(sphere, p), reflect(meridian[k], plane)) < 0.05, `point ${k} reflected`));
 });
 
 test('points snapped to a seam are snapped to its twin when mirrored', () => {

@@ -5,7 +5,7 @@
 import { Op, ErrorCode } from '../worker/protocol.js';
 import * as cmd from './commands.js';
 import { upOf } from './up-axis.js';
-import { symmetryPlane, mirrorPoint, addMirroredTwin, positionOf } from './symmetry.js';
+import { symmetryPlane, mirrorPoint, addMirroredTwin, needsNoTwin, isSelfSymmetric, positionOf } from './symmetry.js';
 import { optimizeArgs } from './stored-result.js';
 import { sectionSeamPoints } from './section.js';
 import { BAND_PARTS, bandLoops, bandSeamPoints } from './band.js';
@@ -340,13 +340,26 @@ export class SeamEditor {
     this.refresh();
   }
 
+  // Whether seam i may get a mirrored twin: symmetry is on, it has none, and it is not mostly its own mirror image.
+  canMirror(i) {
+    const seam = this.design.seams[i];
+    return Boolean(this.plane && seam && seam.mirror === undefined && !needsNoTwin(seam, this.app.target, this.plane));
+  }
+
   // A mirrored copy of seam i across the symmetry plane (for seams drawn before symmetry was on).
   mirrorSeam(i) {
-    if (!this.plane) return;
-    const next = addMirroredTwin(this.design, this.app.target, this.plane, i);
+    const plane = this.plane;
+    if (!plane) return;
+    const next = addMirroredTwin(this.design, this.app.target, plane, i);
     if (next === this.design) {
-      const own = this.design.seams[i]?.mirror === undefined;
-      this.app.messages.show('notice', own ? 'This seam is its own mirror image: it needs no twin.' : 'This seam already has a mirrored twin.');
+      const seam = this.design.seams[i];
+      const text =
+        seam?.mirror !== undefined
+          ? 'This seam already has a mirrored twin.'
+          : isSelfSymmetric(seam, this.app.target, plane)
+            ? 'This seam is its own mirror image: it needs no twin.'
+            : 'Most of this seam runs along its own mirror image: a twin would lie over it and cut slivers off. Draw the part on one side as a seam of its own to mirror it.';
+      this.app.messages.show('notice', text);
       return;
     }
     this.app.commitDesign(next);

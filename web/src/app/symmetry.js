@@ -56,6 +56,9 @@ export function positionOf(target, { face, bary }) {
   return out;
 }
 
+// A seam's control point: a surface point or, as a design file may give it, a plain 3D point (docs/formats.md).
+export const controlPosition = (target, point) => (Array.isArray(point) ? point : positionOf(target, point));
+
 // Per triangle: a bounding sphere (center, radius), to skip far triangles in closest-point queries.
 const spheresCache = new WeakMap();
 function triangleSpheres(target) {
@@ -143,28 +146,39 @@ export function closestSurfacePoint(target, position) {
 // The mirror image of a seam control point. A point snapped onto seam k ("on": k) is snapped onto k's twin
 // (or onto k itself when k is its own mirror image).
 export function mirrorPoint(design, target, plane, point) {
-  const image = closestSurfacePoint(target, reflect(positionOf(target, point), plane));
+  const image = closestSurfacePoint(target, reflect(controlPosition(target, point), plane));
   if (point.on === undefined) return image;
   const host = design.seams[point.on];
   return { ...image, on: host?.mirror ?? point.on };
 }
 
-// True when the seam's mirror image is the seam itself: every mirrored control point lands near one of the
-// seam's own control points.
-export function isSelfSymmetric(seam, target, plane) {
+// The share of the seam's control points whose mirror image lies on the seam's own line through its control points
+// (not necessarily at another control point: a section loop across the plane has its points at equal arc lengths from
+// wherever it starts, 2 % of the diagonal apart, which the mirror does not map onto each other).
+function ownImageShare(seam, target, plane) {
   const tolerance = SELF_SYMMETRIC_TOLERANCE * bounds(target).diagonal;
-  const controls = seam.points.map((p) => positionOf(target, p));
-  // Each control point's image lies on the seam's own line through its control points, not necessarily at another
-  // control point: a section loop across the plane has its points at equal arc lengths from wherever it starts, 2 % of
-  // the diagonal apart, which the mirror does not map onto each other, and a twin laid over it cut slivers off.
-  return controls.every((c) => polylineDistance(reflect(c, plane), controls, seam.closed) < tolerance);
+  const controls = seam.points.map((p) => controlPosition(target, p));
+  if (!controls.length) return 0;
+  return controls.filter((c) => polylineDistance(reflect(c, plane), controls, seam.closed) < tolerance).length / controls.length;
+}
+
+// True when the seam's mirror image is the seam itself.
+export function isSelfSymmetric(seam, target, plane) {
+  return ownImageShare(seam, target, plane) === 1;
+}
+
+// True when half of the seam or more is its own mirror image: a twin would lie over it there and cut slivers off where
+// the two part (an animal's outline seen from its side runs along the mirror plane over its back and belly, and round
+// one side's legs), so it gets none.
+export function needsNoTwin(seam, target, plane) {
+  return ownImageShare(seam, target, plane) >= 0.5;
 }
 
 // The design with a mirrored twin of seam i appended (linked both ways), or the same design when the seam
-// already has one or is its own mirror image.
+// already has one or needs none (needsNoTwin).
 export function addMirroredTwin(design, target, plane, i) {
   const seam = design.seams[i];
-  if (!seam || !plane || seam.mirror !== undefined || isSelfSymmetric(seam, target, plane)) return design;
+  if (!seam || !plane || seam.mirror !== undefined || needsNoTwin(seam, target, plane)) return design;
   // The band record stays with the seam the band was laid as: the twin follows it through the mirror link.
   const { band, ...own } = seam;
   const twin = {
@@ -186,7 +200,7 @@ export function linkMirrorTwins(design, target, plane, from = 0) {
   const seams = design.seams.slice();
   const middle = (seam) => {
     const out = [0, 0, 0];
-    for (const p of seam.points) positionOf(target, p).forEach((x, k) => (out[k] += x / seam.points.length));
+    for (const p of seam.points) controlPosition(target, p).forEach((x, k) => (out[k] += x / seam.points.length));
     return out;
   };
   const tolerance = 0.02 * bounds(target).diagonal;

@@ -166,7 +166,7 @@ export class SeamPanel {
     li.append(swatch, name, weight, remove, smooth);
     const band = selected ? this.editor.bandOf(i) : null;
     if (band) li.append(this.bandWidthRow(i, band));
-    if (this.editor.design.symmetry && seam.mirror === undefined) {
+    if (this.editor.canMirror(i)) {
       const mirror = el('button', 'mirror', '⇋');
       mirror.type = 'button';
       mirror.title = 'Add a mirrored twin of this seam across the symmetry plane';
