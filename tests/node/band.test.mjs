@@ -10,6 +10,7 @@ import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readdirSync } from 'node:fs';
 import { SHARED_MESHES, loadSharedMesh } from './obj.mjs';
+import { implicitMesh } from './implicit-mesh.mjs';
 import { HeadlessApp, handlers, run } from './worker-handlers.mjs';
 import { bandNames, bandSeamPoints, lowestPoint, outlineBandLoops, sectionBandLoops, distanceToZeroSet } from '../../web/src/app/band.js';
 import { SeamEditor } from '../../web/src/app/seam-editor.js';
@@ -53,6 +54,32 @@ test('a band too wide for the shape lays nothing and says why', () => {
   const sphere = load('sphere.obj');
   const laid = outlineBandLoops(sphere, { towards: [0, 0, 1] }, 3.5); // half the band beyond the poles
   assert.match(laid.problem, /too wide for the shape/);
+});
+
+// Puffy flat shapes, as foil balloons are drawn: a region of the plane, its thickness growing as the square root of
+// the depth inside.
+const puffy = (region, c) => (x, y, z) => {
+  const d = region(x, y);
+  return d < 0 ? (z * z) / (c * c) + d : d + Math.abs(z);
+};
+const stroke = (x, y, [ax, ay], [bx, by]) => {
+  const dx = bx - ax;
+  const dy = by - ay;
+  const t = Math.max(0, Math.min(1, ((x - ax) * dx + (y - ay) * dy) / (dx * dx + dy * dy)));
+  return Math.hypot(x - ax - t * dx, y - ay - t * dy);
+};
+
+test('the parts of the front and back that go into a band are counted, not the specks where a side barely crosses', () => {
+  // A letter K: its sides' levels cross zero at single vertices here and there, 17 specks at this width.
+  const K = (x, y) => Math.min(stroke(x, y, [-0.45, -0.85], [-0.45, 0.85]), stroke(x, y, [-0.45, -0.05], [0.45, 0.85]), stroke(x, y, [-0.2, 0.2], [0.5, -0.85])) - 0.16;
+  const letter = outlineBandLoops(implicitMesh(puffy(K, 0.35), -1.1, 1.1, 60), { towards: [0, 0, 1] }, 0.08);
+  assert.equal(letter.problem, undefined);
+  assert.equal(letter.absorbed, 0);
+  // A lollipop whose stick is narrower than the band: the sweet's front and its back go into the band.
+  const lollipop = (x, y) => Math.min(Math.hypot(x + 0.35, y) - 0.55, stroke(x, y, [0.15, 0], [0.7, 0]) - 0.04, Math.hypot(x - 0.78, y) - 0.25);
+  const sweet = outlineBandLoops(implicitMesh(puffy(lollipop, 0.3), -1.1, 1.1, 60), { towards: [0, 0, 1] }, 0.16);
+  assert.equal(sweet.problem, undefined);
+  assert.equal(sweet.absorbed, 2);
 });
 
 for (const file of readdirSync(MESHES).filter((f) => f.endsWith('.obj')).sort()) {

@@ -476,8 +476,9 @@ function fillEdgeOn(around, facing) {
 // Changes the sign of a field given at the vertices (values, changed in place) where needed so that its positive
 // and its negative side are each one edge-connected piece and no vertex pinches a side: its zero set is then one
 // loop on a shape without handles. Parts of a side that are not its largest change sides, the positive side's
-// first. Returns { toNegative, toPositive, moved: [area to negative, area to positive], largestMoved (the area of
-// the largest part that changed sides), area: [positive, negative] as they were }, or null when a side is empty.
+// first. Returns { toNegative, toPositive, moved: [area to negative, area to positive], movedParts: [the areas of the
+// parts that went to negative, to positive], largestMoved (the area of the largest part that changed sides), area:
+// [positive, negative] as they were }, or null when a side is empty.
 // neighbours: vertexNeighbours, where the caller has them already.
 export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indices, mesh.positions.length / 3)) {
   const { positions, indices } = mesh;
@@ -486,6 +487,7 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
   const sideArea = (positive) => area.reduce((s, a, v) => (values[v] > 0 === positive ? s + a : s), 0);
   const before = [sideArea(true), sideArea(false)];
   const moved = [0, 0];
+  const movedParts = [[], []];
   let largestMoved = 0;
   // Keeps only the largest edge-connected part of each side: the others change sides.
   const keepLargest = (front) => {
@@ -507,7 +509,8 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
     }
     if (!sizes.length) return -1;
     const largest = sizes.indexOf(Math.max(...sizes));
-    for (const [id, size] of sizes.entries()) if (id !== largest) largestMoved = Math.max(largestMoved, size);
+    for (const [id, size] of sizes.entries())
+      if (id !== largest) (largestMoved = Math.max(largestMoved, size)), movedParts[front ? 0 : 1].push(size);
     for (let v = 0; v < nv; v++)
       if (part[v] >= 0 && part[v] !== largest) {
         values[v] = front ? -Math.max(values[v], 1e-6) : Math.max(-values[v], 1e-6);
@@ -540,7 +543,7 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
     toPositive += negative;
     if (!pinches()) break;
   }
-  return { toNegative, toPositive, moved, largestMoved, area: before };
+  return { toNegative, toPositive, moved, movedParts, largestMoved, area: before };
 }
 
 // A third of the area of the triangles around each vertex.
