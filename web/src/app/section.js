@@ -179,8 +179,8 @@ function keepTurns(loop, arcs, stray) {
 // own coordinates): the zero set of n · towards over the vertex normals, the contour where the surface turns
 // away, cleaned into one loop (splitInTwo). Front-facing parts that are not the largest front (a fold, an arm's
 // far side) go with the back, then back-facing parts that are not the largest back go with the front, so front
-// and back are each one piece. Returns { loop, holes, toBack, toFront, largestMoved, loops, facing } (largestMoved:
-// the largest part that changed sides, a share of the surface; loops: how many the contour still makes, more than
+// and back are each one piece. Returns { loop, holes, movedParts, largestMoved, loops, facing } (movedParts: each part
+// that changed sides, a share of the surface; largestMoved: the largest of them, else 0; loops: how many the contour still makes, more than
 // one on a shape with a handle; loop is the longest, holes the others; facing: the cleaned field, > 0 in front),
 // or null when the shape has no front or back.
 export function outlineLoop(mesh, towards) {
@@ -191,7 +191,9 @@ export function outlineLoop(mesh, towards) {
   const loops = fairInDepth(mesh, facing, towards, neighbours);
   if (!loops.length) return null;
   const loop = loops.reduce((best, l) => (loopLength(l) > loopLength(best) ? l : best));
-  return { loop, holes: loops.filter((l) => l !== loop), toBack: split.toNegative, toFront: split.toPositive, largestMoved: movedShare(split), loops: loops.length, facing };
+  const surface = split.area[0] + split.area[1];
+  const movedParts = [...split.movedParts[0], ...split.movedParts[1]].map((a) => a / surface);
+  return { loop, holes: loops.filter((l) => l !== loop), movedParts, largestMoved: movedShare(split), loops: loops.length, facing };
 }
 
 // outlineLoop's largestMoved alone, without tracing the contour: the largest part the outline seen from `towards` would

@@ -232,11 +232,15 @@ export class SeamTool {
     const outline = outlineLoop(this.app.target, towards);
     if (!outline) return this.app.noteLaid('The shape shows no outline from here: turn the view and try again.', 'warning');
     const notes = [];
-    const parts = outline.toBack + outline.toFront;
+    // Parts of SMALL_PART or more are named with the largest's share; on a detailed mesh (a boot's laces and tread)
+    // a hundred small folds come with them, which the note only mentions.
+    const large = outline.movedParts.filter((share) => share >= SMALL_PART).length;
+    const small = outline.movedParts.length - large;
+    const parts = large || small;
     const one = parts === 1;
     if (parts) {
-      const what = outline.largestMoved < SMALL_PART ? `${parts} small ${one ? 'part' : 'parts'}` : `${parts} ${one ? 'part' : 'parts'}`;
-      const share = outline.largestMoved < SMALL_PART ? '' : `, ${one ? '' : 'the largest '}${percent(outline.largestMoved)} of the surface`;
+      const what = large ? `${large} ${one ? 'part' : 'parts'}` : `${small} small ${one ? 'part' : 'parts'}`;
+      const share = large ? `, ${one ? '' : 'the largest '}${percent(outline.largestMoved)} of the surface${small ? `, and ${small} small ${small === 1 ? 'fold' : 'folds'} with ${one ? 'it' : 'them'}` : ''}` : '';
       const straighter = outline.largestMoved >= LARGE_PART ? this.straighterViewClause(outline.largestMoved) : '';
       notes.push(`${what} turned away from the rest of ${one ? 'its' : 'their'} side (a fold, a limb in front of the body, an ear seen at an angle) went with the panel around ${one ? 'it' : 'them'}${share}; a section seam around a limb gives it panels of its own${straighter}`);
     }
