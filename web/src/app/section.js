@@ -179,10 +179,10 @@ function keepTurns(loop, arcs, stray) {
 // own coordinates): the zero set of n · towards over the vertex normals, the contour where the surface turns
 // away, cleaned into one loop (splitInTwo). Front-facing parts that are not the largest front (a fold, an arm's
 // far side) go with the back, then back-facing parts that are not the largest back go with the front, so front
-// and back are each one piece. Returns { loop, holes, movedParts, largestMoved, loops, facing } (movedParts: each part
-// that changed sides, a share of the surface; largestMoved: the largest of them, else 0; loops: how many the contour still makes, more than
-// one on a shape with a handle; loop is the longest, holes the others; facing: the cleaned field, > 0 in front),
-// or null when the shape has no front or back.
+// and back are each one piece. Returns { loop, holes, movedParts, largestMoved, loops, facing } (movedParts: each
+// part that changed sides, a share of the surface; largestMoved: the largest of them, else 0; loops: how many the
+// contour still makes, more than one on a shape with a handle; loop is the longest, holes the others; facing: the
+// cleaned field, > 0 in front), or null when the shape has no front or back.
 export function outlineLoop(mesh, towards) {
   const neighbours = vertexNeighbours(mesh.indices, mesh.positions.length / 3);
   const facing = facingField(mesh, towards, neighbours);
@@ -478,9 +478,9 @@ function fillEdgeOn(around, facing) {
 // Changes the sign of a field given at the vertices (values, changed in place) where needed so that its positive
 // and its negative side are each one edge-connected piece and no vertex pinches a side: its zero set is then one
 // loop on a shape without handles. Parts of a side that are not its largest change sides, the positive side's
-// first. Returns { toNegative, toPositive, moved: [area to negative, area to positive], movedParts: [the areas of the
-// parts that went to negative, to positive], largestMoved (the area of the largest part that changed sides), area:
-// [positive, negative] as they were }, or null when a side is empty.
+// first. Returns { moved: [area to negative, area to positive], movedParts: [the areas of the parts that went to
+// negative, to positive], largestMoved (the area of the largest part that changed sides), area: [positive, negative]
+// as they were }, or null when a side is empty.
 // neighbours: vertexNeighbours, where the caller has them already.
 export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indices, mesh.positions.length / 3)) {
   const { positions, indices } = mesh;
@@ -491,7 +491,7 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
   const moved = [0, 0];
   const movedParts = [[], []];
   let largestMoved = 0;
-  // Keeps only the largest edge-connected part of each side: the others change sides.
+  // Keeps only the largest edge-connected part of a side: the others change sides. False when the side is empty.
   const keepLargest = (front) => {
     const part = new Int32Array(nv).fill(-1);
     const sizes = [];
@@ -509,7 +509,7 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
       }
       sizes.push(size);
     }
-    if (!sizes.length) return -1;
+    if (!sizes.length) return false;
     const largest = sizes.indexOf(Math.max(...sizes));
     for (const [id, size] of sizes.entries())
       if (id !== largest) (largestMoved = Math.max(largestMoved, size)), movedParts[front ? 0 : 1].push(size);
@@ -518,7 +518,7 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
         values[v] = front ? -Math.max(values[v], 1e-6) : Math.max(-values[v], 1e-6);
         moved[front ? 0 : 1] += area[v];
       }
-    return sizes.length - 1;
+    return true;
   };
   // A vertex whose ring of neighbours changes side more than twice pinches its side there: the zero set would
   // pass it twice, as two loops touching. It goes to the other side, which joins across it; the parts of its
@@ -535,17 +535,11 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
     for (let v = 0; v < nv; v++) if (changes[v] > 2) (values[v] = values[v] > 0 ? -1e-6 : 1e-6), flipped++;
     return flipped;
   };
-  let toNegative = 0;
-  let toPositive = 0;
   for (let round = 0; round < 20; round++) {
-    const positive = keepLargest(true);
-    const negative = keepLargest(false);
-    if (positive < 0 || negative < 0) return null;
-    toNegative += positive;
-    toPositive += negative;
+    if (!keepLargest(true) || !keepLargest(false)) return null;
     if (!pinches()) break;
   }
-  return { toNegative, toPositive, moved, movedParts, largestMoved, area: before };
+  return { moved, movedParts, largestMoved, area: before };
 }
 
 // A third of the area of the triangles around each vertex.
