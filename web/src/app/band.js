@@ -46,8 +46,9 @@ export function outlineBandLoops(mesh, { towards }, width) {
     if (!split) return { problem: `The band is too wide for the shape seen from here: no part of the ${side} lies farther than half the band from the outline.` };
     // The panel keeps its largest part; the band takes the rest, so much of the panel lost means a band too wide.
     const [panel] = split.area;
-    if (split.moved[0] > 0.5 * panel)
-      return { problem: `The band is too wide for the shape seen from here: the ${side} panel would keep only ${Math.round(100 * (1 - split.moved[0] / panel))} % of its part of the surface (narrow parts go into the band). Try a narrower band.` };
+    const lost = split.movedParts[0].reduce((sum, a) => sum + a, 0);
+    if (lost > 0.5 * panel)
+      return { problem: `The band is too wide for the shape seen from here: the ${side} panel would keep only ${Math.round(100 * (1 - lost / panel))} % of its part of the surface (narrow parts go into the band). Try a narrower band.` };
     // Parts smaller than a square half the band wide are specks where the side's level barely crosses zero, no tail
     // or ear a designer would miss: the note leaves them out (a letter K at 30 mm had 28, none of them wider than a
     // vertex).

@@ -230,9 +230,9 @@ export function projectedArea({ positions, indices }, towards) {
   return sum / 4;
 }
 
-// splitInTwo's largest moved part as a share of the surface.
+// splitInTwo's largest moved part as a share of the surface, 0 when none moved.
 function movedShare(split) {
-  return split.largestMoved / (split.area[0] + split.area[1]);
+  return Math.max(0, ...split.movedParts[0], ...split.movedParts[1]) / (split.area[0] + split.area[1]);
 }
 
 // A shape with a handle seen through it (a ring face on, a letter O) has an outline of several loops: the rim
@@ -478,9 +478,8 @@ function fillEdgeOn(around, facing) {
 // Changes the sign of a field given at the vertices (values, changed in place) where needed so that its positive
 // and its negative side are each one edge-connected piece and no vertex pinches a side: its zero set is then one
 // loop on a shape without handles. Parts of a side that are not its largest change sides, the positive side's
-// first. Returns { moved: [area to negative, area to positive], movedParts: [the areas of the parts that went to
-// negative, to positive], largestMoved (the area of the largest part that changed sides), area: [positive, negative]
-// as they were }, or null when a side is empty.
+// first. Returns { movedParts: [the areas of the parts that went to negative, to positive], area: [positive,
+// negative] as they were }, or null when a side is empty.
 // neighbours: vertexNeighbours, where the caller has them already.
 export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indices, mesh.positions.length / 3)) {
   const { positions, indices } = mesh;
@@ -488,9 +487,7 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
   const area = vertexAreas(mesh);
   const sideArea = (positive) => area.reduce((s, a, v) => (values[v] > 0 === positive ? s + a : s), 0);
   const before = [sideArea(true), sideArea(false)];
-  const moved = [0, 0];
   const movedParts = [[], []];
-  let largestMoved = 0;
   // Keeps only the largest edge-connected part of a side: the others change sides. False when the side is empty.
   const keepLargest = (front) => {
     const part = new Int32Array(nv).fill(-1);
@@ -511,13 +508,9 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
     }
     if (!sizes.length) return false;
     const largest = sizes.indexOf(Math.max(...sizes));
-    for (const [id, size] of sizes.entries())
-      if (id !== largest) (largestMoved = Math.max(largestMoved, size)), movedParts[front ? 0 : 1].push(size);
+    for (const [id, size] of sizes.entries()) if (id !== largest) movedParts[front ? 0 : 1].push(size);
     for (let v = 0; v < nv; v++)
-      if (part[v] >= 0 && part[v] !== largest) {
-        values[v] = front ? -Math.max(values[v], 1e-6) : Math.max(-values[v], 1e-6);
-        moved[front ? 0 : 1] += area[v];
-      }
+      if (part[v] >= 0 && part[v] !== largest) values[v] = front ? -Math.max(values[v], 1e-6) : Math.max(-values[v], 1e-6);
     return true;
   };
   // A vertex whose ring of neighbours changes side more than twice pinches its side there: the zero set would
@@ -539,7 +532,7 @@ export function splitInTwo(mesh, values, neighbours = vertexNeighbours(mesh.indi
     if (!keepLargest(true) || !keepLargest(false)) return null;
     if (!pinches()) break;
   }
-  return { moved, movedParts, largestMoved, area: before };
+  return { movedParts, area: before };
 }
 
 // A third of the area of the triangles around each vertex.
