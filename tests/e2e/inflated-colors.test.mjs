@@ -126,9 +126,11 @@ test('each optimization iterate streams: its shape with its distance colors, and
         }
         if (pane.shape) seen.shapes++;
       }
-      if (!/^Inflated/.test(status)) requestAnimationFrame(look);
+      if (/^Inflated/.test(status)) clearInterval(watch);
     };
-    requestAnimationFrame(look);
+    // On a timer, not each animation frame: on a loaded machine the page's frames came twice in two minutes (CI),
+    // and only two steps were seen.
+    const watch = setInterval(look, 50);
   });
   await page.evaluate(() => window.billow.test.panes.inflated.setColorMode('distance'));
   // Opened as a design file: from the Gallery it would show its stored result instead of the iterates.
@@ -138,7 +140,7 @@ test('each optimization iterate streams: its shape with its distance colors, and
   await page.waitForFunction(() => {
     const seen = window.streamSeen;
     return seen.statuses.size >= 3 && seen.distances.size >= 3 && seen.patterns.size >= 2 && seen.shapes > 0;
-  }, null, { timeout: 120000 }).catch(() => {});
+  }, null, { timeout: 120000, polling: 100 }).catch(() => {});
   const seen = await page.evaluate(() => ({
     distances: window.streamSeen.distances.size,
     patterns: window.streamSeen.patterns.size,
