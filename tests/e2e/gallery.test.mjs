@@ -83,12 +83,19 @@ const watch = (page) => page.evaluate(() => {
   const seen = { statuses: [], shown: new Set(), storedSamples: 0 };
   window.seen = seen;
   const status = document.querySelector('#status');
-  new MutationObserver(() => seen.statuses.push(status.textContent)).observe(status, { childList: true, characterData: true, subtree: true });
-  const look = () => {
+  const sample = () => {
     if (t.storedShown && !t.inflating && t.panes.inflated.shape) {
       seen.storedSamples++;
       seen.shown.add(`${t.inflatedSerial}:${t.shownPatternText?.length}:${t.panes.pattern.pattern?.panels?.length}`);
     }
+  };
+  // At each status line (each live step sets one) as well as each frame: a loaded machine's frames come seldom.
+  new MutationObserver(() => {
+    seen.statuses.push(status.textContent);
+    sample();
+  }).observe(status, { childList: true, characterData: true, subtree: true });
+  const look = () => {
+    sample();
     requestAnimationFrame(look);
   };
   requestAnimationFrame(look);
