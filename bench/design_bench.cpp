@@ -121,6 +121,8 @@ void applySetting(OptimizeOptions& o, const std::string& name, double v) {
     o.weights.gap = v;
   else if (name == "coverReach")
     o.weights.coverReach = v;
+  else if (name == "coarseCoverReachAtSeams")
+    o.remeshing.coarseCoverReachAtSeams = v;
   else if (name == "maxIterations")
     o.stopping.maxIterations = int(v);
   else if (name == "maxWork")

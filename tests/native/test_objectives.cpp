@@ -185,10 +185,12 @@ TEST(Objectives, ShapeObjectiveGradientMatchesFiniteDifferences) {
   EXPECT_GT(t.seam, 0);
   // E_cover alone (the target's points to their closest points on the shape), by finite differences too: with
   // the default kernel (its scale far above these distances: nearly d^2) and a kernel scale among the distances
-  // (most points on the kernel's bend or beyond it).
-  for (const double reach : {OptimizeWeights{}.coverReach, 0.003}) {
+  // (most points on the kernel's bend or beyond it), and that scale inside the panels with a longer one at the
+  // seams (the coarse phase's: each sample's scale fixed by its tracked triangle).
+  double bent = 0;
+  for (const auto& [reach, atSeams] : {std::pair{OptimizeWeights{}.coverReach, 0.0}, {0.003, 0.0}, {0.003, 0.01}}) {
     OptimizeWeights coverOnly;
-    coverOnly.target = 0, coverOnly.seam = 0, coverOnly.coverReach = reach;
+    coverOnly.target = 0, coverOnly.seam = 0, coverOnly.coverReach = reach, coverOnly.coverReachAtSeams = atSeams;
     const PatternObjective cover(imls, f.built, mesh, f.weights, coverOnly);
     Eigen::VectorXd gc;
     ObjectiveTerms tc;
@@ -196,8 +198,10 @@ TEST(Objectives, ShapeObjectiveGradientMatchesFiniteDifferences) {
     EXPECT_EQ(tc.target, 0);
     if (reach == OptimizeWeights{}.coverReach)
       EXPECT_NEAR(tc.cover, t.cover, 1e-12 * t.cover);
+    else if (atSeams == 0)
+      EXPECT_LT(tc.cover, 0.7 * t.cover) << "the kernel's bend is not exercised", bent = tc.cover;
     else
-      EXPECT_LT(tc.cover, 0.7 * t.cover) << "the kernel's bend is not exercised";
+      EXPECT_GT(tc.cover, 1.1 * bent) << "the seams' longer reach is not exercised";
     for (int s = 0; s < 3; ++s) {
       Vertices dx(x.rows(), 3);
       for (int v = 0; v < x.rows(); ++v) dx.row(v) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
@@ -205,7 +209,7 @@ TEST(Objectives, ShapeObjectiveGradientMatchesFiniteDifferences) {
       const double fd =
           (cover.shapeEnergy(x + eps * dx, X, nullptr) - cover.shapeEnergy(x - eps * dx, X, nullptr)) / (2 * eps);
       const double an = gc.dot(Eigen::Map<const Eigen::VectorXd>(dx.data(), dx.size()));
-      EXPECT_NEAR(fd, an, 1e-5 * std::abs(an)) << "E_cover, reach " << reach << ", direction " << s;
+      EXPECT_NEAR(fd, an, 1e-5 * std::abs(an)) << "E_cover, reach " << reach << " / " << atSeams << ", direction " << s;
     }
   }
   for (int s = 0; s < 3; ++s) {

@@ -10,6 +10,11 @@
 
 namespace billow {
 
+namespace {
+// The width inside a panel over which E_cover's reach at the seams falls to coverReach, of the target's diagonal.
+constexpr double kCoverSeamBand = 0.03;
+}  // namespace
+
 OptimizeWeights weightsAtEdgeLength(OptimizeWeights w, double ratio) {
   w.seam /= ratio;
   w.smooth /= std::pow(ratio, 4);
@@ -80,6 +85,28 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
     coverArea_[long(k)] = lumped[coverVertex_[k]];
   }
   coverTau2_ = (w_.coverReach * D_) * (w_.coverReach * D_);
+  if (w_.coverReachAtSeams > 0) {
+    // Each panel vertex's distance to its outline in the pattern, as a nearness 1 - distance / band.
+    std::vector<double> near(size_t(mesh.panelVertexStart.back()), 0.0);
+    const double band = kCoverSeamBand * D_;
+    for (size_t p = 0; p < built.panels.size(); ++p) {
+      const PanelVertices& Q = built.pattern.panels[p].vertices;
+      const int nb = built.panels[p].boundaryVertices;
+      for (int v = 0; v < Q.rows(); ++v) {
+        const Eigen::Vector2d q = Q.row(v).transpose();
+        double distance = v < nb ? 0 : band;
+        for (int j = 0; j < nb && distance > 0; ++j) {
+          const Eigen::Vector2d a = Q.row(j).transpose(), b = Q.row((j + 1) % nb).transpose();
+          const double t = std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
+          distance = std::min(distance, (a + t * (b - a) - q).norm());
+        }
+        near[size_t(gid(int(p), v))] = 1 - distance / band;
+      }
+    }
+    for (const OuterTriangle& t : outer_)
+      seamNearness_.push_back((near[size_t(t.pattern[0])] + near[size_t(t.pattern[1])] + near[size_t(t.pattern[2])]) /
+                              3);
+  }
   std::vector<std::vector<int>> at(n_);
   for (size_t t = 0; t < outer_.size(); ++t)
     for (int c = 0; c < 3; ++c) at[outer_[t].vertex[c]].push_back(int(t));
@@ -223,9 +250,9 @@ Eigen::VectorXd PatternObjective::targetWeights(const Eigen::VectorXd& X) const 
   return total > 0 ? Eigen::VectorXd(w * (targetScale_ / total)) : w;
 }
 
-double PatternObjective::coverKernel(double d2, double* irls) const {
-  const double s = coverTau2_ / (d2 + coverTau2_);  // rho = tau^2 d^2 / (d^2 + tau^2) = s d^2
-  if (irls) *irls = s * s;                          // rho'(d) / (2 d) = tau^4 / (d^2 + tau^2)^2
+double PatternObjective::coverKernel(double d2, double tau2, double* irls) const {
+  const double s = tau2 / (d2 + tau2);  // rho = tau^2 d^2 / (d^2 + tau^2) = s d^2
+  if (irls) *irls = s * s;              // rho'(d) / (2 d) = tau^4 / (d^2 + tau^2)^2
   return s * d2;
 }
 
@@ -240,9 +267,15 @@ void PatternObjective::trackCover(const Vertices& x) const {
     for (int c = 0; c < 3; ++c) surface.F(long(t), c) = outer_[t].vertex[c];
   const SurfaceProjector projector(surface);
   const Vertices& T = imls_.target().V;
-  for (size_t k = 0; k < coverVertex_.size(); ++k)
+  coverTau2Sample_.assign(coverVertex_.size(), coverTau2_);
+  for (size_t k = 0; k < coverVertex_.size(); ++k) {
     coverTriangle_.push_back(
         projector.project(T.row(coverVertex_[k]).transpose(), nullptr, k < last.size() ? last[k] : -1).face);
+    if (!seamNearness_.empty()) {
+      const double b = seamNearness_[size_t(coverTriangle_.back())], reach = w_.coverReachAtSeams * D_;
+      coverTau2Sample_[k] = (1 - b) * coverTau2_ + b * reach * reach;
+    }
+  }
 }
 
 void PatternObjective::coverPoints(const Vertices& x, std::vector<CoverPoint>& out) const {
@@ -264,6 +297,7 @@ void PatternObjective::coverPoints(const Vertices& x, std::vector<CoverPoint>& o
     CoverPoint& best = out[k];
     best.target = T.row(coverVertex_[k]).transpose();
     best.weight = coverWeight_[long(k)];
+    best.tau2 = k < coverTau2Sample_.size() ? coverTau2Sample_[k] : coverTau2_;
     double d2 = closest(coverTriangle_[k], best.target, best);
     // Walk to a neighbouring triangle while one is closer (a bounded number of steps: the shape moved little). A
     // closest point inside its triangle is a local minimum over the surface already: the walk ends there without
@@ -319,7 +353,7 @@ double PatternObjective::shapeEnergy(const Vertices& x, const Eigen::VectorXd& X
   for (const CoverPoint& c : cover) {
     const Eigen::Vector3d r = c.closest - c.target;
     double irls = 1;
-    Ec += c.weight * coverKernel(r.squaredNorm(), gradx ? &irls : nullptr);
+    Ec += c.weight * coverKernel(r.squaredNorm(), c.tau2, gradx ? &irls : nullptr);
     if (gradx)
       for (int k = 0; k < 3; ++k)
         gradx->segment<3>(3 * outer_[c.triangle].vertex[k]) += 2 * c.weight * irls * c.bary[k] * r;
@@ -352,7 +386,7 @@ void PatternObjective::residualRows(const Vertices& x, const Eigen::VectorXd& X,
     const double len = d.norm();
     if (!(len > 0)) continue;
     double irls = 1;
-    coverKernel(len * len, &irls);
+    coverKernel(len * len, c.tau2, &irls);
     ResidualRow r;
     r.count = 3, r.weight = c.weight * irls;
     for (int k = 0; k < 3; ++k) r.vertex[k] = outer_[c.triangle].vertex[k], r.grad[k] = c.bary[k] * d / len;

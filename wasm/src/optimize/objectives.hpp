@@ -17,7 +17,8 @@
 //               target the shape leaves out costs it nothing; docs/architecture.md "Distance to target, both
 //               ways"). Its gradient reaches x through c_j's barycentric weights (the envelope theorem).
 //               Robust: |c_j - t_j|^2 enters through rho(d) = tau^2 d^2 / (d^2 + tau^2), tau = coverReach D
-//               (OptimizeWeights::coverReach), so target points far from the shape saturate instead of pulling.
+//               (OptimizeWeights::coverReach), so target points far from the shape saturate instead of pulling;
+//               longer where c_j lies on a seam in the coarse phase (coverReachAtSeams).
 //   E_quality = w_q l^2 sum_t (A0_t / A0_mean) (|J_t|^2 / (2 det J_t) - 1) / (n D^2) over rest triangles, J_t
 //               the 2D map from triangle t of the flattened pattern to the current one, l the mean edge length
 //               (ours, not the paper's: where the paper remeshes when elements degenerate, Sec. 5.3, this
@@ -58,6 +59,9 @@ struct OptimizeWeights {
   // "left out" threshold of uncoveredRegions: what the figures call left out is what stops pulling (the
   // scales tried: bench/README.md).
   double coverReach = 0.06;
+  // E_cover's reach where a sample's closest point on the shape lies on the seams, blended to coverReach over
+  // kCoverSeamBand inside the panels (0: coverReach everywhere). The coarse phase's (OptimizeRemeshing).
+  double coverReachAtSeams = 0;
   double seam = 1.0;     // multiplies every seam's sigma_i (the design's seam weight)
   double length = 10.0;  // E_length; the final seam-length projection makes it exact (see PatternOptimizer)
   double smooth = 2.0;   // E_smooth: weaker lets the outlines zig-zag (bench/README.md)
@@ -105,10 +109,12 @@ class PatternObjective {
     Eigen::Vector3d closest, target, bary;
     int triangle = -1;  // of the outer surface (OuterTriangle order)
     double weight = 0;
+    double tau2 = 0;  // the sample's kernel scale squared (of its tracked triangle: trackCover)
   };
-  // E_cover's kernel at squared distance d2: rho(d) (the cost, in length^2) and rho'(d) / (2 d) (the IRLS weight
-  // of d^2: the gradient is weight * 2 * irls * (c - t), and the rigid alignment's Gauss-Newton rows use it).
-  double coverKernel(double d2, double* irls) const;
+  // E_cover's kernel of scale^2 tau2 at squared distance d2: rho(d) (the cost, in length^2) and rho'(d) / (2 d) (the
+  // IRLS weight of d^2: the gradient is weight * 2 * irls * (c - t), and the rigid alignment's Gauss-Newton rows use
+  // it).
+  double coverKernel(double d2, double tau2, double* irls) const;
   // The closest points are tracked, not searched for: each sample walks from its triangle at the last tracked
   // shape to the nearest of the triangles around it, so an evaluation needs no search tree and gives the same
   // energy for the same x between two trackCover calls (the line search compares them).
@@ -210,7 +216,11 @@ class PatternObjective {
   std::vector<int> aroundStart_, around_;
   mutable std::vector<int> coverTriangle_;
   mutable std::vector<ClosestFaceCache> targetCache_;  // per simulation vertex, for E_target's fallback
-  double coverTau2_ = 0;                               // tau^2 of E_cover's kernel (0: plain d^2)
+  double coverTau2_ = 0;                               // tau^2 of E_cover's kernel inside the panels
+  // How near each outer triangle lies to a seam, 1 on it to 0 a band's width inside its panel (empty: coverReachAtSeams
+  // unused), and each sample's tau^2 by its tracked triangle, fixed between trackCover calls as the triangle is.
+  std::vector<double> seamNearness_;
+  mutable std::vector<double> coverTau2Sample_;
 };
 
 }  // namespace billow

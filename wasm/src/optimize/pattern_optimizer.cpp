@@ -165,8 +165,11 @@ void PatternOptimizer::setUp(const BuiltPattern& built, bool coarse) {
   stiffness_.reset();
   rods_ = std::make_shared<const SeamRods>(
       makeSeamRods(mesh_, seamRodCoefficient(mesh_, pattern_.pressure, options_.inflate.seamStiffness)));
-  const OptimizeWeights weights =
-      coarse ? weightsAtEdgeLength(options_.weights, built.figures.edgeLength / fineEdgeLength_) : options_.weights;
+  OptimizeWeights weights = options_.weights;
+  if (coarse) {
+    weights = weightsAtEdgeLength(weights, built.figures.edgeLength / fineEdgeLength_);
+    weights.coverReachAtSeams = options_.remeshing.coarseCoverReachAtSeams;
+  }
   objective_ = std::make_unique<PatternObjective>(target_->distance(), built, mesh_, seamWeights_, weights);
   X_ = packPattern(pattern_);
   boundaryVertices_.clear();

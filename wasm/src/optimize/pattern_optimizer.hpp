@@ -125,6 +125,11 @@ struct OptimizeRemeshing {
   int coarseMinTriangles = 1500;
   int coarseIterations = 30;
   int coarseWindow = 10;
+  // E_cover's reach near the seams in the coarse phase (OptimizeWeights::coverReachAtSeams, of the target's
+  // diagonal): a limb's tip past a front/back balloon's rim (the cow's hooves) is reached by growing the outline,
+  // which the fine phase alone took some 20 iterations to do, the preview coming with it (bench/README.md "The
+  // coarse first phase"); inside the panels the reach stays coverReach. The fine phase keeps coverReach everywhere.
+  double coarseCoverReachAtSeams = 0.15;
   // Held seams: where the run stops, its outlines are meshed anew at the design's triangle count, as a maker's cut
   // panels are, and settled there, so the shape and distance the designer gets are the cut panels' (the optimizer's
   // own mesh can hold an equilibrium they do not have: a gusseted penguin's flippers stood out once cut). Where the
