@@ -92,16 +92,11 @@ PatternObjective::PatternObjective(const ImlsDistance& imls, const BuiltPattern&
     for (size_t p = 0; p < built.panels.size(); ++p) {
       const PanelVertices& Q = built.pattern.panels[p].vertices;
       const int nb = built.panels[p].boundaryVertices;
-      for (int v = 0; v < Q.rows(); ++v) {
-        const Eigen::Vector2d q = Q.row(v).transpose();
-        double distance = v < nb ? 0 : band;
-        for (int j = 0; j < nb && distance > 0; ++j) {
-          const Eigen::Vector2d a = Q.row(j).transpose(), b = Q.row((j + 1) % nb).transpose();
-          const double t = std::clamp((q - a).dot(b - a) / std::max((b - a).squaredNorm(), 1e-300), 0.0, 1.0);
-          distance = std::min(distance, (a + t * (b - a) - q).norm());
-        }
-        near[size_t(gid(int(p), v))] = 1 - distance / band;
-      }
+      Polygon2 outline;
+      for (int j = 0; j < nb; ++j) outline.push_back(Q.row(j).transpose());
+      for (int v = 0; v < Q.rows(); ++v)
+        near[size_t(gid(int(p), v))] =
+            v < nb ? 1 : 1 - std::min(distanceToBoundary(Q.row(v).transpose(), outline), band) / band;
     }
     for (const OuterTriangle& t : outer_)
       seamNearness_.push_back((near[size_t(t.pattern[0])] + near[size_t(t.pattern[1])] + near[size_t(t.pattern[2])]) /
@@ -267,13 +262,14 @@ void PatternObjective::trackCover(const Vertices& x) const {
     for (int c = 0; c < 3; ++c) surface.F(long(t), c) = outer_[t].vertex[c];
   const SurfaceProjector projector(surface);
   const Vertices& T = imls_.target().V;
+  const double seamReach = w_.coverReachAtSeams * D_;
   coverTau2Sample_.assign(coverVertex_.size(), coverTau2_);
   for (size_t k = 0; k < coverVertex_.size(); ++k) {
     coverTriangle_.push_back(
         projector.project(T.row(coverVertex_[k]).transpose(), nullptr, k < last.size() ? last[k] : -1).face);
     if (!seamNearness_.empty()) {
-      const double b = seamNearness_[size_t(coverTriangle_.back())], reach = w_.coverReachAtSeams * D_;
-      coverTau2Sample_[k] = (1 - b) * coverTau2_ + b * reach * reach;
+      const double b = seamNearness_[size_t(coverTriangle_.back())];
+      coverTau2Sample_[k] = (1 - b) * coverTau2_ + b * seamReach * seamReach;
     }
   }
 }
@@ -297,7 +293,7 @@ void PatternObjective::coverPoints(const Vertices& x, std::vector<CoverPoint>& o
     CoverPoint& best = out[k];
     best.target = T.row(coverVertex_[k]).transpose();
     best.weight = coverWeight_[long(k)];
-    best.tau2 = k < coverTau2Sample_.size() ? coverTau2Sample_[k] : coverTau2_;
+    best.tau2 = coverTau2Sample_[k];
     double d2 = closest(coverTriangle_[k], best.target, best);
     // Walk to a neighbouring triangle while one is closer (a bounded number of steps: the shape moved little). A
     // closest point inside its triangle is a local minimum over the surface already: the walk ends there without
