@@ -1,11 +1,11 @@
 // The app in headless Chromium: loads, renders, opens files (picker and drop), reports bad meshes,
 // resizes, autosaves, and survives a worker crash. Every page fails on any console error.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { autosaveHolds, serve, launch, openFreshPage, screenshot, paintedFraction, MESHES, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const stat = (page, name) => page.textContent(`#target-stats dd[data-stat="${name}"]`);
 

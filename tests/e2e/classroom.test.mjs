@@ -4,11 +4,11 @@
 // outlines with the Export actions); Escape gives the designer's own design back, undo steps and autosave
 // untouched. The layout comparison keeps Layout A, compares it with changed seams (panels, distance to
 // target) and puts either layout back, undoably.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { autosavedDesign, openFreshPage, openPage, optimizedResultShown, paintedFraction, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 const LONG = { timeout: 180000 }; // the panels are optimized on two shared cores
 
 // The walk's step counter, title and figures ({ 'distance-to-target': '6.1 %', ... }).

@@ -1,10 +1,10 @@
 // Everyday comfort: the help panel lists the keyboard shortcuts (button and "?"), a dark theme that the
 // WebGL panes follow too, large type for projectors, both remembered across reloads.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openPage, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 // The color of the WebGL canvas at the middle of the inflated pane's empty lower right corner.
 const paneColor = (page) =>

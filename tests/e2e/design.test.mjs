@@ -1,11 +1,11 @@
 // The design document in the browser: undo/redo, sharing by link into a fresh page, damaged links,
 // saving and reopening a design file.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { serve, launch, openPage, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const stat = (page, name) => page.textContent(`#target-stats dd[data-stat="${name}"]`);
 

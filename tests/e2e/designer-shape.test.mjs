@@ -3,11 +3,11 @@
 // turns the view to it and shows it (the target's uncovered parts, translucent, in the distance colors).
 // Segments carry the numbers of their panels on the model; a problem in the seam panel, clicked, shows its
 // place. A run stopped at its limit says so.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openFreshPage, openDesignFixture, optimizedResultShown, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 test('two discs for a sphere: distance both ways, the parts left out shown where they are', async () => {
   const page = await openFreshPage(env.context, env.server.url);

@@ -1,12 +1,12 @@
 // Fabrication in the browser: a design's panels get cut lines with the seam allowance and pattern figures;
 // every export downloads a file that is checked (SVG/DXF outlines against the pattern to 0.01 mm, PDF pages
 // and scale box, OBJ/STL/GLB/PNG structure); changing the allowance and the units updates the pane.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { autosaveHolds, openPage, openFreshPage, openDesignFixture, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 const stat = (page, pane, name) => page.textContent(`#${pane}-stats dd[data-stat="${name}"]`);
 
 async function exportFile(page, kind) {

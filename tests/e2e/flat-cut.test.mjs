@@ -4,12 +4,12 @@
 // across its strip; a band's width changed in the seam panel lays it again in one undo step. The outline as
 // seen, for a front and a back panel, or with a band width a gusset band around it. A sheet narrower than a
 // piece is offered the width that fits.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
 import { implicitMesh } from '../node/implicit-mesh.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 // The client point at the middle of the target pane's framed square (on the model for the examples).
 const middleOfView = (page) => page.evaluate(() => {

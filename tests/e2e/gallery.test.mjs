@@ -5,13 +5,13 @@
 // are segmented, their panels optimized and inflated). A design shows its stored result (<id>.result.json)
 // while that runs, keeps it until the live result replaces it, and never shows it again after an edit; a
 // stale or damaged result file is ignored.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { ROOT, openFreshPage, optimizedResultShown, panelsInflated, paintedFraction, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 test('each gallery item opens from its card and shows its result', async () => {
   const page = await openFreshPage(env.context, env.server.url);
@@ -47,22 +47,22 @@ test('each gallery item opens from its card and shows its result', async () => {
     // The result: a design's stored result (whose live refinement the next test follows; tests/node/gallery-results
     // checks every stored result against its design), or a pattern inflated; a new shape either way (a status the
     // item before wrote late would otherwise pass for this item's).
-    await page.waitForFunction(({ expectStored, serial }) => {
+    // What is shown is read in the same poll that finds it: a live result (the sphere's takes some 2 s) may replace
+    // the stored one before a later look.
+    const shown = await (await page.waitForFunction(({ expectStored, serial }) => {
       const status = document.querySelector('#status').textContent;
       const t = window.billow.test;
       if (t.inflatedSerial <= serial) return false;
-      return expectStored ? /^Showing the stored result/.test(status) && t.storedShown && t.panes.inflated.shape
+      const ready = expectStored ? /^Showing the stored result/.test(status) && t.storedShown && t.panes.inflated.shape
         : /^Inflated/.test(status) && !/flattened/.test(status);
-    }, { expectStored, serial }, { timeout: 90000 });
+      return ready && { stored: t.storedShown, panels: t.shownPattern?.panels.length ?? 0 };
+    }, { expectStored, serial }, { timeout: 90000 })).jsonValue();
     const seconds = (Date.now() - started) / 1000;
-    const panels = await page.evaluate(() => window.billow.test.shownPattern?.panels.length ?? 0);
-    assert.ok(panels >= 2, `${item.id}: ${panels} panels`);
+    assert.ok(shown.panels >= 2, `${item.id}: ${shown.panels} panels`);
     await page.waitForTimeout(200);
     assert.ok((await paintedFraction(page, '#pane-inflated .pane-body')) > 0.02, `${item.id}: the inflated shape is drawn`);
     await screenshot(page, `gallery-${item.id}`);
-    const stored = await page.evaluate(() => window.billow.test.storedShown);
-    if (expectStored) assert.ok(stored, `${item.id}: its stored result is shown`);
-    console.log(`${item.id}: ${stored ? 'stored ' : ''}result shown after ${seconds.toFixed(1)} s`);
+    console.log(`${item.id}: ${shown.stored ? 'stored ' : ''}result shown after ${seconds.toFixed(1)} s`);
   }
   assert.deepEqual(page.errors, []);
   await page.close();

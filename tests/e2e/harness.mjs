@@ -7,6 +7,7 @@ import { existsSync } from 'node:fs';
 import { tmpdir } from 'node:os';
 import { join, extname, normalize, dirname } from 'node:path';
 import { fileURLToPath } from 'node:url';
+import { before, after, afterEach } from 'node:test';
 import { chromium } from 'playwright-core';
 
 export const ROOT = fileURLToPath(new URL('../..', import.meta.url));
@@ -188,13 +189,18 @@ export async function paintedFraction(page, selector) {
   }, selector);
 }
 
-// Starts a static server and a browser for the tests of one file (node:test before/after hooks);
+// Starts a static server and a browser for the tests of one file (node:test hooks of the file that calls it);
 // returns an object whose server and context are set once the hooks have run.
-export function useBrowser({ before, after }) {
+export function useBrowser() {
   const env = { server: null, context: null };
   before(async () => {
     env.server = await serve();
     env.context = await launch();
+  });
+  // A test that fails leaves its page open: closed here, or its tab would hold the autosave (a later test's page
+  // would open as a second tab, with that message) and keep its worker busy.
+  afterEach(async () => {
+    for (const page of env.context?.pages() ?? []) await page.close();
   });
   after(async () => {
     await env.context?.close();

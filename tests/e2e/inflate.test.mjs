@@ -1,12 +1,12 @@
 // Inflating patterns in the browser: the Mylar example from the menu streams its shape, ends with the
 // compression overlay and figures, and shows its two panels; an imported pattern file does the same;
 // a broken pattern gets a message and the last good result stays.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { serve, launch, openPage, openDesignFixture, screenshot, paintedFraction, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const waitInflated = (page) =>
   page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent), null, { timeout: 60000 });

@@ -1,13 +1,13 @@
 // The inflated pane's colors: wrinkles (the compression field), stress (share of the material's strength,
 // with the safety factor) and distance to the target (signed: blue inside, orange outside). The distance
 // view shows why the flattened panels miss the target and how much closer the optimized ones come.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFile } from 'node:fs/promises';
 import { join } from 'node:path';
 import { ROOT, openFreshPage, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 // The outer surface's vertex colors, counted: bluish (inside), orange (outside), pale (on target) and other.
 const colorCounts = (page) =>

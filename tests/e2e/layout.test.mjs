@@ -4,11 +4,11 @@
 // pieces; a box closed to its title stays closed after a reload. No two labels of the pattern's sheet view
 // overlap, with the seams' labels shown too and at other zooms.
 // A target whose file origin lies far from it is framed whole and large.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openFreshPage, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const LONG_STATUSES = [
   'Optimizing the panels: step 12, distance 6.70 % target → inflated, 0.35 % inflated → target, light seams sliding…',

@@ -3,13 +3,13 @@
 // fewer, the design marked so, undo puts the handle back, and a reload keeps it cut. A thick ring (a swim ring) is not offered the cut. Holes (a
 // statue open at its base; here a bowl, the sphere open at its top): the refusal offers to close them, and the shape
 // opens closed. A flat sheet (an outline drawn in 2D) is told it needs thickness instead.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { autosaveHolds, openFreshPage, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const stat = (page, name) => page.textContent(`#target-stats dd[data-stat="${name}"]`);
 

@@ -2,11 +2,11 @@
 // and takes over when the first goes away; a page closed without unload handling, or whose renderer
 // crashes, loses nothing that was autosaved; the app fetches nothing from other sites. Every page fails
 // on any console error.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { autosavedDesign, autosaveHolds, openPage, openFreshPage, openDesignFixture, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const ready = (page) => page.waitForSelector('body[data-ready="true"]', { timeout: 30000 });
 const isPrimary = (page) => page.evaluate(() => window.billow.test.isPrimaryTab);

@@ -2,12 +2,12 @@
 // allowance is the seal band, drawn on the pieces; a fill valve is placed by a click on a seam in the pattern
 // pane and marked at the same place on both pieces, with its width, in the pane and the cut file; valves are
 // edited, undone, saved; one on a seam that is gone is said so, with a way to remove it.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { autosaveHolds, openFreshPage, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const waitInflated = (page) =>
   page.waitForFunction(() => /^Inflated/.test(document.querySelector('#status').textContent), null, { timeout: 90000 });

@@ -1,14 +1,14 @@
 // Drawing seams in the browser: a closed seam on the sphere gives two segments; a second seam snapped
 // to it at both ends gives three; a control point drags; undo/redo; the design survives a reload and
 // travels by link.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { serve, launch, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
 import { surfaceScreenPoints, clickOnSeam } from './seams-helpers.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const summary = (page) => page.textContent('#seam-panel .summary');
 // Waits for the seam panel's summary to match; a timeout says what it showed instead.

@@ -1,13 +1,13 @@
 // Share links with the designer's own mesh in the browser: a 16k-triangle mesh travels in its link and
 // the seams come back where they were; a mesh too large for a link leaves a link that asks for its file,
 // refuses another file and goes onto that one.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { launch, openPage, useBrowser, MESHES } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 const fileShown = (page, name, timeout = 60000) =>
   page.waitForFunction((n) => document.querySelector('#target-stats dd[data-stat="file"]')?.textContent === n, name, { timeout });

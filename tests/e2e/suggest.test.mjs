@@ -1,12 +1,12 @@
 // Suggest seams, as a designer uses it: open the panel, ask for two panels, watch the layouts come best first,
 // show the best one on the target and hide it again, use it (the target is cut into its panels, and they are made), undo back to the seams before. A second
 // run is stopped by an edit.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { ROOT, MESHES, openFreshPage, panelsInflated, paintedFraction, screenshot, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 // Asks for layouts of at most `panels` panels in the Suggest seams panel, and reads their cards once all are tried.
 async function layoutsFor(page, panels) {

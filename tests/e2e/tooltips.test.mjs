@@ -4,11 +4,11 @@
 // result, Compare, the pattern's seam allowances, a selected seam, mirror symmetry, drawing a seam, the
 // gallery, help, a message, the classroom walk), and in each the visible controls are listed with any that
 // lack either.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openFreshPage, optimizedResultShown, useBrowser } from './harness.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 // The visible controls without a tooltip or without a name, as short descriptions, and how many controls
 // were looked at. A control's tooltip is its own title or, as the browser shows it over the control, the

@@ -1,14 +1,14 @@
 // The target's up axis in the browser: the koala written Z up (as CAD and 3D-printing tools write it) opens
 // standing on its feet with a notice, Height measured along Z; the Up select turns it, undo turns it back,
 // seams drawn on it stay on their triangles, picking works in the turned frame, and a reload keeps the axis.
-import { test, before, after } from 'node:test';
+import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { join } from 'node:path';
 import { openFreshPage, openPage, screenshot, useBrowser, MESHES } from './harness.mjs';
 import { surfaceScreenPoints } from './seams-helpers.mjs';
 
-const env = useBrowser({ before, after });
+const env = useBrowser();
 
 // koala.obj (Y up) as a Z-up tool writes it: (x, y, z) -> (x, -z, y).
 function koalaZUp() {
