@@ -118,6 +118,13 @@ test('a design opens with its stored result, keeps it while the live optimizatio
     return /stored result/.test(document.querySelector('#status').textContent) && t.optimizing && !t.inflating
       && t.panes.inflated.shape && t.shownPattern?.panels.length === count;
   }, panels, { timeout: 30000 });
+  // What the page shows is read first: the live result may replace the stored one while the screenshots are taken.
+  const during = await page.evaluate(() => ({
+    compare: !document.querySelector('#compare-group').hidden,
+    optimizing: window.billow.test.optimizing,
+    status: document.querySelector('#status').textContent,
+    patternPanels: window.billow.test.panes.pattern.pattern?.panels.length,
+  }));
   const inflated = await paintedFraction(page, '#pane-inflated .pane-body');
   const pattern = await paintedFraction(page, '#pane-pattern .pane-body');
   await screenshot(page, 'gallery-koala-stored');
@@ -134,12 +141,6 @@ test('a design opens with its stored result, keeps it while the live optimizatio
       assert.ok(!(a[0] < b[2] && b[0] < a[2] && a[1] < b[3] && b[1] < a[3]), `labels "${labels[i].text}" and "${labels[j].text}" overlap`);
     }
   for (const l of labels.filter((x) => x.compact)) assert.match(l.text, /^\d+$/);
-  const during = await page.evaluate(() => ({
-    compare: !document.querySelector('#compare-group').hidden,
-    optimizing: window.billow.test.optimizing,
-    status: document.querySelector('#status').textContent,
-    patternPanels: window.billow.test.panes.pattern.pattern?.panels.length,
-  }));
   assert.ok(during.optimizing, 'the panes were looked at while the live optimization ran');
   assert.match(during.status, /^Showing the stored result while it is refined live/);
   assert.ok(inflated > 0.02, `the stored inflated shape is drawn (${inflated})`);
