@@ -196,12 +196,14 @@ TEST(Objectives, ShapeObjectiveGradientMatchesFiniteDifferences) {
     ObjectiveTerms tc;
     cover.shapeEnergy(x, X, &gc, nullptr, &tc);
     EXPECT_EQ(tc.target, 0);
-    if (reach == OptimizeWeights{}.coverReach)
+    if (reach == OptimizeWeights{}.coverReach) {
       EXPECT_NEAR(tc.cover, t.cover, 1e-12 * t.cover);
-    else if (atSeams == 0)
-      EXPECT_LT(tc.cover, 0.7 * t.cover) << "the kernel's bend is not exercised", bent = tc.cover;
-    else
+    } else if (atSeams == 0) {
+      EXPECT_LT(tc.cover, 0.7 * t.cover) << "the kernel's bend is not exercised";
+      bent = tc.cover;
+    } else {
       EXPECT_GT(tc.cover, 1.1 * bent) << "the seams' longer reach is not exercised";
+    }
     for (int s = 0; s < 3; ++s) {
       Vertices dx(x.rows(), 3);
       for (int v = 0; v < x.rows(); ++v) dx.row(v) = Eigen::RowVector3d(u(rng), u(rng), u(rng));
