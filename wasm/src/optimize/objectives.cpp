@@ -245,7 +245,7 @@ Eigen::VectorXd PatternObjective::targetWeights(const Eigen::VectorXd& X) const 
   return total > 0 ? Eigen::VectorXd(w * (targetScale_ / total)) : w;
 }
 
-double PatternObjective::coverKernel(double d2, double tau2, double* irls) const {
+double PatternObjective::coverKernel(double d2, double tau2, double* irls) {
   const double s = tau2 / (d2 + tau2);  // rho = tau^2 d^2 / (d^2 + tau^2) = s d^2
   if (irls) *irls = s * s;              // rho'(d) / (2 d) = tau^4 / (d^2 + tau^2)^2
   return s * d2;

@@ -114,7 +114,7 @@ class PatternObjective {
   // E_cover's kernel of scale^2 tau2 at squared distance d2: rho(d) (the cost, in length^2) and rho'(d) / (2 d) (the
   // IRLS weight of d^2: the gradient is weight * 2 * irls * (c - t), and the rigid alignment's Gauss-Newton rows use
   // it).
-  double coverKernel(double d2, double tau2, double* irls) const;
+  static double coverKernel(double d2, double tau2, double* irls);
   // The closest points are tracked, not searched for: each sample walks from its triangle at the last tracked
   // shape to the nearest of the triangles around it, so an evaluation needs no search tree and gives the same
   // energy for the same x between two trackCover calls (the line search compares them).

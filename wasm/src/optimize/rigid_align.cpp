@@ -40,7 +40,7 @@ double evaluate(const PatternObjective& obj, const Eigen::VectorXd& w, const Ver
     // The robust kernel by iteratively reweighted least squares: rho(d) enters as irls * d^2, irls = rho'(d)/(2d)
     // at the current d, which gives the kernel's exact gradient (a point far from the shape weighs little).
     double irls = 1;
-    E += c.weight * obj.coverKernel(d * d, c.tau2, &irls);
+    E += c.weight * PatternObjective::coverKernel(d * d, c.tau2, &irls);
     if (!(d > 0)) continue;
     const Eigen::Vector3d u = r / d;
     Vector6d J;
