@@ -6,6 +6,7 @@
 import { test } from 'node:test';
 import assert from 'node:assert/strict';
 import { openFreshPage, openDesignFixture, optimizedResultShown, screenshot, useBrowser } from './harness.mjs';
+import { capsuleMesh } from '../node/capsule-mesh.mjs';
 
 const env = useBrowser();
 
@@ -136,6 +137,36 @@ test('a problem in the seam panel, clicked, turns the view to its place and sele
   assert.deepEqual(mark, [-1, 0, 0], 'the mark is at the place the problem names');
   await page.evaluate(() => window.billow.test.resolveMessages('pattern', { prefix: true }));
   assert.equal(await refused.count(), 0);
+  assert.deepEqual(page.errors, []);
+  await page.close();
+});
+
+test('a segment that folds when laid flat is a warning with its place, and the panels are still made', async () => {
+  const page = await openFreshPage(env.context, env.server.url);
+  // A sausage eight times as long as it is round, one seam near its left end: the long part is a closed-ended tube,
+  // which no single flat panel covers (tests/native: PatternBuild.ASegmentThatFoldsWhenLaidFlatIsAWarningPlacedWhereItFolds).
+  const r = 0.05, length = 8 * 2 * Math.PI * r, x0 = -length / 2 + 0.02;
+  const { positions, indices } = capsuleMesh(12, r, length);
+  const vertices = [], triangles = [];
+  for (let i = 0; i < positions.length; i += 3) vertices.push([positions[i], positions[i + 1], positions[i + 2]]);
+  for (let i = 0; i < indices.length; i += 3) triangles.push([indices[i], indices[i + 1], indices[i + 2]]);
+  const design = {
+    format: 'billow-design', version: 1, target: { vertices, triangles }, size: { height: 0.2 },
+    seams: [{ name: 'near the end', closed: true, weight: 1, points: [0.3, 2.4, 4.5].map((a) => [x0, r * Math.cos(a), r * Math.sin(a)]) }],
+  };
+  await page.setInputFiles('#file-input', { name: 'sausage.billow.json', mimeType: 'application/json', buffer: Buffer.from(JSON.stringify(design)) });
+  const warning = page.locator('.message.warning', { hasText: 'cannot be laid flat without folding over itself' });
+  await warning.waitFor({ timeout: 60000 });
+  assert.match(await warning.textContent(), /^Segment \d cannot be laid flat without folding over itself near the .*A seam across it there lets it lie flat as two panels\./);
+  await page.waitForFunction(() => window.billow.test.panes.pattern.pattern?.panels?.length === 2, null, { timeout: 60000 });
+  await warning.locator('button.locate').click();
+  const mark = await page.evaluate(() => window.billow.test.panes.target.placeMark?.position.toArray());
+  assert.ok(mark, 'the place is marked on the target');
+  assert.ok(mark[0] > x0 + 0.25 * length, `on the tube, past the seam: ${mark}`);
+  await screenshot(page, 'designer-shape-folded-segment');
+  // A second seam around the tube leaves a ring between the two, no panel: the warning goes with the panels it was about.
+  await page.evaluate(() => window.billow.test.addSeam({ name: 'middle', closed: true, weight: 1, points: [[0, 0.05, 0], [0, -0.025, 0.0433], [0, -0.025, -0.0433]] }));
+  await page.waitForFunction(() => ![...document.querySelectorAll('.message.warning')].some((m) => /folding over itself/.test(m.textContent)), null, { timeout: 60000 });
   assert.deepEqual(page.errors, []);
   await page.close();
 });

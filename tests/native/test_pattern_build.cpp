@@ -89,6 +89,53 @@ std::map<int, int> groupSizes(const BuiltPattern& bp) {
   return sizes;
 }
 
+// A capsule along x: a tube of radius r, `length` long, closed by hemispheres; `around` vertices to a ring, the rings
+// staggered, triangles facing out.
+TriMesh capsule(int around, double r, double length) {
+  const double h = 2 * M_PI * r / around;
+  const int rings = static_cast<int>(length / h), cap = around / 4;
+  std::vector<std::pair<double, double>> profile;  // (x, radius) of each ring
+  for (int i = 1; i < cap; ++i) {
+    const double phi = M_PI / 2 * (1 - static_cast<double>(i) / cap);
+    profile.emplace_back(-length / 2 - r * std::sin(phi), r * std::cos(phi));
+  }
+  for (int i = 0; i <= rings; ++i) profile.emplace_back(-length / 2 + length * i / rings, r);
+  for (int i = 1; i < cap; ++i) {
+    const double phi = M_PI / 2 * i / cap;
+    profile.emplace_back(length / 2 + r * std::sin(phi), r * std::cos(phi));
+  }
+  const int n = static_cast<int>(profile.size());
+  TriMesh m;
+  m.V.resize(n * around + 2, 3);
+  for (int k = 0; k < n; ++k)
+    for (int j = 0; j < around; ++j) {
+      const double a = 2 * M_PI * (j + 0.5 * (k % 2)) / around;
+      m.V.row(k * around + j) << profile[k].first, profile[k].second * std::cos(a), profile[k].second * std::sin(a);
+    }
+  const int tip0 = n * around, tip1 = tip0 + 1;
+  m.V.row(tip0) << -length / 2 - r, 0, 0;
+  m.V.row(tip1) << length / 2 + r, 0, 0;
+  const auto id = [&](int k, int j) { return k * around + (j % around); };
+  std::vector<Eigen::Vector3i> F;
+  for (int k = 0; k + 1 < n; ++k)
+    for (int j = 0; j < around; ++j) {
+      if (k % 2 == 0) {
+        F.emplace_back(id(k, j), id(k, j + 1), id(k + 1, j));
+        F.emplace_back(id(k, j + 1), id(k + 1, j + 1), id(k + 1, j));
+      } else {
+        F.emplace_back(id(k, j), id(k, j + 1), id(k + 1, j + 1));
+        F.emplace_back(id(k, j), id(k + 1, j + 1), id(k + 1, j));
+      }
+    }
+  for (int j = 0; j < around; ++j) {
+    F.emplace_back(tip0, id(0, j + 1), id(0, j));
+    F.emplace_back(tip1, id(n - 1, j), id(n - 1, j + 1));
+  }
+  m.F.resize(static_cast<int>(F.size()), 3);
+  for (size_t f = 0; f < F.size(); ++f) m.F.row(static_cast<int>(f)) = F[f].transpose();
+  return m;
+}
+
 }  // namespace
 
 TEST(PatternBuild, SphereEquatorGivesTwoStitchedHemispheres) {
@@ -252,6 +299,47 @@ TEST(PatternBuild, PanelsThatOverlapOrAreSewnToThemselvesAreProblemsWithAPlace) 
   // Without a place it still says what is wrong.
   const SegmentationProblem unplaced = sewingProblem(bp, seg, Error("pattern.open", "An edge is not sewn."));
   EXPECT_EQ(unplaced.message, "A panel cannot be sewn: An edge is not sewn.");
+}
+
+TEST(PatternBuild, ASegmentThatFoldsWhenLaidFlatIsAWarningPlacedWhereItFolds) {
+  // A sausage eight times as long as it is round, with one seam around it near its left end: the long part is a
+  // closed-ended tube, whose harmonic map into the flat disc squeezes it past what doubles hold, so it folds after
+  // every fallback (flatten.hpp). The panels are still made; the designer hears where and what helps.
+  const double r = 0.05, length = 8 * 2 * M_PI * r;
+  const auto scene = test::sceneOf(capsule(12, r, length));
+  DesignSeam loop;
+  loop.closed = true;
+  for (const double a : {0.3, 2.4, 4.5})
+    loop.points.push_back(
+        DesignPoint{false, {}, Eigen::Vector3d(-length / 2 + 0.02, r * std::cos(a), r * std::sin(a))});
+  scene->design.seams = {loop};
+  traceDesignSeams(*scene);
+  segmentDesignScene(*scene);
+  const Segmentation& seg = scene->segmentation;
+  ASSERT_EQ(seg.segments.size(), 2u);
+  const int tube = seg.segments[0].area > seg.segments[1].area ? 0 : 1;
+  const BuiltPattern bp = buildPattern(scene->target, seg);
+  EXPECT_TRUE(bp.ok()) << "a warning, not a refusal";
+  EXPECT_EQ(bp.pattern.panels.size(), 2u);
+  std::vector<const SegmentationProblem*> folded;
+  for (const SegmentationProblem& p : bp.problems)
+    if (p.code == "pattern.flipped") folded.push_back(&p);
+  ASSERT_EQ(folded.size(), 1u);
+  const SegmentationProblem& p = *folded[0];
+  EXPECT_EQ(p.severity, "warning");
+  EXPECT_EQ(p.segment, tube);
+  EXPECT_EQ(
+      p.message.rfind(
+          "Segment " + std::to_string(tube + 1) + " cannot be laid flat without folding over itself near the ", 0),
+      0u)
+      << p.message;
+  EXPECT_NE(p.message.find("A seam across it there"), std::string::npos) << p.message;
+  // Placed on the tube where it folds, away from the seam (on the target, in the scene's meters).
+  const double x0 = scene->target.V.col(0).minCoeff(), x1 = scene->target.V.col(0).maxCoeff();
+  EXPECT_GT(p.location.x(), x0 + 0.25 * (x1 - x0)) << "on the tube, past the seam";
+  const Eigen::Vector3d axis(p.location.x(), 0, 0);
+  const double radius = scene->target.V.col(1).maxCoeff();
+  EXPECT_NEAR((p.location - axis).norm(), radius, 0.05 * radius) << "on the surface";
 }
 
 TEST(PatternBuild, SlitFromTheEquatorIsSewnBackOnItself) {

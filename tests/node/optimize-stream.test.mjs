@@ -6,6 +6,7 @@ import assert from 'node:assert/strict';
 import { readFileSync } from 'node:fs';
 import { loadApi } from './load-module.mjs';
 import { readObjText, splitInFour } from './obj.mjs';
+import { capsuleMesh } from './capsule-mesh.mjs';
 import { createHandlers } from '../../web/src/worker/handlers.js';
 import { cutPanelsNote } from '../../web/src/app/panels.js';
 import { narrowOutlineShare } from '../../web/src/views/pattern-layout.js';
@@ -144,6 +145,35 @@ test('panels that cannot be made are refused with each problem and its place on 
     }
     return true;
   });
+});
+
+test('what the panels were made despite comes with the first look and the result, placed on the target in its units', () => {
+  // A sausage eight times as long as it is round with one seam near its left end: the long part folds when laid
+  // flat (tests/native: PatternBuild.ASegmentThatFoldsWhenLaidFlatIsAWarningPlacedWhereItFolds).
+  const handlers = createHandlers(api);
+  const r = 0.05, length = 8 * 2 * Math.PI * r;
+  const target = capsuleMesh(12, r, length);
+  for (const _ of handlers.setTarget(target));
+  const x0 = -length / 2 + 0.02;
+  const seams = [{ points: [0.3, 2.4, 4.5].map((a) => [x0, r * Math.cos(a), r * Math.sin(a)]), closed: true, weight: 1 }];
+  const run = handlers.optimizeDesign({ seams, scale: 1, triangles: 600, maxIterations: 1, up: '+y' });
+  const iterates = [];
+  let step = run.next();
+  for (; !step.done; step = run.next()) if (step.value.stage === 'optimizing') iterates.push(step.value);
+  const firstLook = iterates.find((it) => it.warnings);
+  assert.ok(firstLook && firstLook === iterates[0], 'the warnings come with the first look');
+  assert.equal(iterates.filter((it) => it.warnings).length, 1, 'once');
+  for (const warnings of [firstLook.warnings, step.value.warnings]) {
+    const folded = warnings.filter((w) => w.code === 'pattern.flipped');
+    assert.equal(folded.length, 1, JSON.stringify(warnings));
+    const [w] = folded;
+    assert.match(w.message, /^Segment \d cannot be laid flat without folding over itself near the .*A seam across it there lets it lie flat as two panels\.$/);
+    assert.equal(w.severity, 'warning');
+    // On the tube, past the seam, on its surface, in the target's own units.
+    assert.ok(w.location[0] > x0 + 0.25 * length, `${w.location}`);
+    assert.ok(Math.abs(Math.hypot(w.location[1], w.location[2]) - r) < 0.05 * r, `${w.location}`);
+  }
+  assert.ok(JSON.parse(step.value.patternText).panels.length === 2, 'the panels were made');
 });
 
 // The current iterate's distance as the stream gives it (optimizedDistance) and its shape measured again whole.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <map>
 #include <numeric>
 
@@ -55,6 +56,44 @@ void addProblem(BuiltPattern& out, const Segmentation& seg, int s, const std::st
   p.code = code, p.severity = severity, p.message = message, p.segment = s;
   p.location = seg.segments[s].labelPoint;
   out.problems.push_back(p);
+}
+
+// A segment whose flattening still folds over itself after every fallback (flatten.hpp): its panel's inside maps
+// onto the target folded, so its balloon cannot take the target's shape. Placed where the folds are: the folded
+// triangle nearest their mean (on a long tube or limb, the harmonic map's squeeze there underflows).
+SegmentationProblem foldedProblem(const Segmentation& seg, const FlatSegment& fs) {
+  const TriMesh& sub = fs.sub.mesh;
+  std::vector<Eigen::Vector3d> folded;
+  for (int t = 0; t < sub.numTriangles(); ++t) {
+    const Eigen::Vector2d a = fs.flat.uv.row(sub.F(t, 0)), b = fs.flat.uv.row(sub.F(t, 1)),
+                          c = fs.flat.uv.row(sub.F(t, 2));
+    const Eigen::Vector2d e = b - a, g = c - a;
+    if (e.x() * g.y() - e.y() * g.x() <= 0)
+      folded.push_back((sub.V.row(sub.F(t, 0)) + sub.V.row(sub.F(t, 1)) + sub.V.row(sub.F(t, 2))).transpose() / 3);
+  }
+  SegmentationProblem p;
+  p.code = "pattern.flipped", p.severity = "warning", p.segment = fs.segment;
+  p.location = seg.segments[fs.segment].labelPoint;
+  if (!folded.empty()) {
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& c : folded) mean += c;
+    mean /= static_cast<double>(folded.size());
+    p.location = *std::min_element(folded.begin(), folded.end(), [&](const auto& x, const auto& y) {
+      return (x - mean).squaredNorm() < (y - mean).squaredNorm();
+    });
+  }
+  // Eq. 14 keeps the boundary's lengths, so a boundary blended to a circle encloses far more than the segment.
+  std::string larger;
+  if (fs.flat.areaRatio > 1.5) {
+    char ratio[96];
+    std::snprintf(ratio, sizeof ratio, " (laid flat it takes %.1f times its area on the model)", fs.flat.areaRatio);
+    larger = ratio;
+  }
+  p.message = "Segment " + std::to_string(fs.segment + 1) + " cannot be laid flat without folding over itself " +
+              seg.where(p.location) + larger +
+              ": it wraps too far around the shape to be cut as one piece, so its panel will not inflate to the "
+              "target's shape. A seam across it there lets it lie flat as two panels.";
+  return p;
 }
 
 }  // namespace
@@ -202,11 +241,7 @@ BuiltPattern buildPattern(const TriMesh& target, const Segmentation& seg, const 
     }
     try {
       flats.push_back(flattenForPattern(seg, graph, s));
-      if (flats.back().flat.flippedTriangles > 0)
-        addProblem(out, seg, s, "pattern.flipped", "warning",
-                   "Segment " + std::to_string(s + 1) + " folds over itself when laid flat (" +
-                       std::to_string(flats.back().flat.flippedTriangles) +
-                       " triangles); its panel may be poor. Another seam across it would help.");
+      if (flats.back().flat.flippedTriangles > 0) out.problems.push_back(foldedProblem(seg, flats.back()));
     } catch (const Error& e) {
       addProblem(out, seg, s, "pattern.flatten-failed", "error",
                  "Segment " + std::to_string(s + 1) + " could not be laid flat: " + e.what());

@@ -113,6 +113,7 @@ export class Panels {
   async make() {
     this.markOutdated(false);
     this.messages.resolve('distance.cut-panels');
+    this.messages.resolve('panels.made-despite', { prefix: true });
     const revision = this.app.revision;
     const key = this.store.madeKey();
     this.client.supersede('inflation');
@@ -139,6 +140,7 @@ export class Panels {
             : null;
           if (this.storedShown()) return this.app.setStatus(`${STORED_STATUS}: ${step ?? p.stage}…`);
           if (p.flattenedText) this.panes.pattern.setPattern(patternForDisplay(p.flattenedText, 'the panels'));
+          if (p.warnings) this.showMadeDespite(p.warnings);
           this.showIterate(p);
           this.app.setStatus(step ? `Optimizing the panels: ${step}…` : `Making the panels: ${p.stage}…`);
         },
@@ -164,6 +166,7 @@ export class Panels {
     this.store.setResult('optimized', result, revision);
     this.store.dropResult('stored'); // replaced by the live result
     this.messages.resolve('pattern', { prefix: true });
+    this.showMadeDespite(result.warnings ?? []);
     const shown = await this.showVersion('optimized');
     if (shown && revision === this.app.revision) {
       this.app.setStatus(`Inflated the optimized panels: ${optimizerEnd(result.status)}`);
@@ -190,8 +193,19 @@ export class Panels {
     for (const pane of [this.panes.inflated, this.panes.pattern]) pane.element.closest('.pane')?.toggleAttribute('data-stale', outdated && shown);
     if (!outdated || !shown) return;
     this.messages.resolve('distance.uncovered', { prefix: true });
+    this.messages.resolve('panels.made-despite', { prefix: true });
     this.messages.resolve('distance.cut-panels');
     this.app.setStatus('These seams make no panels yet (see the seam panel): the panels shown are from the seams before');
+  }
+
+  // What the panels were made despite (the builder's warnings: a segment that folds when laid flat, a seam with no
+  // panel across it), each its own message with "Show where", the first leading the stack as showFailure's do.
+  showMadeDespite(warnings) {
+    this.messages.resolve('panels.made-despite', { prefix: true });
+    warnings.slice(0, 3).reverse().forEach((w, i) => {
+      const locate = w.location ? () => this.app.showPlace(w.location) : null;
+      this.messages.show('warning', w.message, [], { cause: `panels.made-despite.${i}`, locate });
+    });
   }
 
   // Panels that could not be made: each problem the builder placed is its own message, with "Show where"; memory

@@ -149,6 +149,9 @@ export function createHandlers(api) {
         throw new SolverError('pattern.not-built', errors.map((p) => p.message).join('\n') || 'These seams do not give panels yet.', { problems: errors });
       }
       const flattenedText = JSON.stringify(start.pattern);
+      // What the panels were made despite (a segment that folds when laid flat, a seam with no panel across it):
+      // the designer hears of it with the first look and with the result.
+      const warnings = start.problems.filter((p) => p.severity === 'warning');
       // Every iterate streams: its inflated shape with its distance to the target, and every half second
       // the panels themselves (paper Sec. 5: the designer watches the optimization).
       let mesh = session.optimizedMesh();
@@ -159,7 +162,7 @@ export function createHandlers(api) {
       };
       // Copies: typed arrays in a message are transferred away, and the mesh is needed for every iterate.
       const meshOf = () => ({ triangles: mesh.triangles.slice(), outer: mesh.outer.slice() });
-      yield { stage: 'optimizing', iteration: 0, flattenedText, ...meshOf(), ...iterate() };
+      yield { stage: 'optimizing', iteration: 0, flattenedText, warnings, ...meshOf(), ...iterate() };
       // The flattened panels inflated (the first equilibrium, iteration 0 again): the first look at the balloon,
       // one solve after the panels instead of one optimizer iteration later.
       // Panels meshed anew (the coarse first phase's end, sliding seams) make a new sewn mesh: its triangles go
@@ -185,7 +188,7 @@ export function createHandlers(api) {
         yield { stage: 'optimizing', ...status, ...iterate(), ...newMesh, ...panels };
         if (status.state !== 'running' || status.iteration >= maxIterations) break;
       }
-      return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status };
+      return { flattenedText, patternText: JSON.stringify(session.optimizedPattern()), status, warnings };
     },
     *[Op.mirrorSymmetry]() {
       return requireSession().mirrorSymmetry();

@@ -27,8 +27,9 @@ export const Op = Object.freeze({
   // panels of the segments, sewn, with the target shape as the simulation's start. scale: meters per target
   // unit; pressure [Pa]; material { name (preset), thickness [m], youngs_modulus [Pa] }.
   buildPattern: 'buildPattern',
-  // { seams, scale, triangles, pressure, material, maxIterations } -> { flattenedText, patternText, status }: the panels
-  // optimized so their inflated shape matches the target; progress streams each iterate's shape.
+  // { seams, scale, triangles, pressure, material, maxIterations } -> { flattenedText, patternText, status, warnings }:
+  // the panels optimized so their inflated shape matches the target; progress streams each iterate's shape, the
+  // first with the warnings the panels were made despite ({ code, message, segment, location } in target units).
   optimizeDesign: 'optimizeDesign',
   // {} -> { axis: 'x' | 'y' | 'z' | null }: the target's mirror symmetry plane, where it has one.
   mirrorSymmetry: 'mirrorSymmetry',
