@@ -163,6 +163,15 @@ test('a segment that folds when laid flat is a warning with its place, and the p
   const mark = await page.evaluate(() => window.billow.test.panes.target.placeMark?.position.toArray());
   assert.ok(mark, 'the place is marked on the target');
   assert.ok(mark[0] > x0 + 0.25 * length, `on the tube, past the seam: ${mark}`);
+  // Seen straight on, across the tube, not end-on from the centre's side behind the sausage's own end.
+  const seen = await page.evaluate((m) => {
+    const pane = window.billow.test.panes.target;
+    const Vector3 = pane.camera.position.constructor;
+    const local = pane.viewDirection().clone().transformDirection(pane.mesh.matrixWorld.clone().invert());
+    return { visible: pane.isVisible(new Vector3(...m)), along: Math.abs(local.x) };
+  }, mark);
+  assert.ok(seen.visible, 'the marked place is in view');
+  assert.ok(seen.along < 0.5, `the view looks across the tube (${seen.along.toFixed(2)} along it)`);
   await screenshot(page, 'designer-shape-folded-segment');
   // A second seam around the tube leaves a ring between the two, no panel: the warning goes with the panels it was about.
   await page.evaluate(() => window.billow.test.addSeam({ name: 'middle', closed: true, weight: 1, points: [[0, 0.05, 0], [0, -0.025, 0.0433], [0, -0.025, -0.0433]] }));

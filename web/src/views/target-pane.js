@@ -314,8 +314,36 @@ export class TargetPane extends Pane3D {
     this.placeMark.name = 'place';
     this.mesh.add(this.placeMark);
     this.mesh.updateMatrixWorld(true);
-    this.turnTowards(this.mesh.localToWorld(local.clone()));
+    // Seen straight on, along the surface's normal there; from the centre's side where that hides it (a place
+    // inside a fold). From the centre alone, a place on the side of a long shape (a sausage, a letter) was seen
+    // end-on, behind the shape's own end.
+    const world = this.mesh.localToWorld(local.clone());
+    const normal = this.surfaceNormalNear(local, 2 * r);
+    if (normal) this.turnTo(normal.transformDirection(this.mesh.matrixWorld));
+    if (!normal || !this.isVisible(local)) this.turnTowards(world);
     this.requestRender();
+  }
+
+  // The target's outward normal around a point of its own (target units): its triangles' area-weighted normals
+  // within `reach` of the point, else the nearest triangle's; null without a mesh.
+  surfaceNormalNear(point, reach) {
+    const position = this.mesh?.geometry.attributes.position, index = this.mesh?.geometry.index;
+    if (!position || !index) return null;
+    const a = new Vector3(), b = new Vector3(), c = new Vector3(), centroid = new Vector3(), n = new Vector3();
+    const sum = new Vector3(), nearest = new Vector3();
+    let nearestDistance = Infinity;
+    for (let t = 0; t < index.count; t += 3) {
+      a.fromBufferAttribute(position, index.getX(t));
+      b.fromBufferAttribute(position, index.getX(t + 1));
+      c.fromBufferAttribute(position, index.getX(t + 2));
+      centroid.copy(a).add(b).add(c).divideScalar(3);
+      n.subVectors(b, a).cross(c.sub(a)); // twice the area, outward for the target's triangles
+      const d = centroid.distanceTo(point);
+      if (d < reach) sum.add(n);
+      if (d < nearestDistance) (nearestDistance = d), nearest.copy(n);
+    }
+    const normal = sum.lengthSq() > 0 ? sum : nearest;
+    return normal.lengthSq() > 0 ? normal.normalize() : null;
   }
 
   // Whether a point on the target's surface (its own units, a Vector3 or [x, y, z]) is seen from the camera:
