@@ -318,32 +318,37 @@ export class TargetPane extends Pane3D {
     // inside a fold). From the centre alone, a place on the side of a long shape (a sausage, a letter) was seen
     // end-on, behind the shape's own end.
     const world = this.mesh.localToWorld(local.clone());
-    const normal = this.surfaceNormalNear(local, 2 * r);
+    const normal = this.surfaceNormalNear(local);
     if (normal) this.turnTo(normal.transformDirection(this.mesh.matrixWorld));
     if (!normal || !this.isVisible(local)) this.turnTowards(world);
     this.requestRender();
   }
 
-  // The target's outward normal around a point of its own (target units): its triangles' area-weighted normals
-  // within `reach` of the point, else the nearest triangle's; null without a mesh.
-  surfaceNormalNear(point, reach) {
+  // The target's outward normal at a point of its own (target units): the area-weighted normals of the triangles
+  // around it, within three times the nearest triangle's distance or a hundredth of the model's size (a patch, not
+  // a whole thin limb, whose normals around it would cancel); null without a mesh.
+  surfaceNormalNear(point) {
     const position = this.mesh?.geometry.attributes.position, index = this.mesh?.geometry.index;
     if (!position || !index) return null;
-    const a = new Vector3(), b = new Vector3(), c = new Vector3(), centroid = new Vector3(), n = new Vector3();
-    const sum = new Vector3(), nearest = new Vector3();
-    let nearestDistance = Infinity;
+    const a = new Vector3(), b = new Vector3(), c = new Vector3(), n = new Vector3(), sum = new Vector3();
+    const distances = new Float64Array(index.count / 3); // of each triangle's centroid
     for (let t = 0; t < index.count; t += 3) {
       a.fromBufferAttribute(position, index.getX(t));
       b.fromBufferAttribute(position, index.getX(t + 1));
       c.fromBufferAttribute(position, index.getX(t + 2));
-      centroid.copy(a).add(b).add(c).divideScalar(3);
-      n.subVectors(b, a).cross(c.sub(a)); // twice the area, outward for the target's triangles
-      const d = centroid.distanceTo(point);
-      if (d < reach) sum.add(n);
-      if (d < nearestDistance) (nearestDistance = d), nearest.copy(n);
+      distances[t / 3] = a.add(b).add(c).divideScalar(3).distanceTo(point);
     }
-    const normal = sum.lengthSq() > 0 ? sum : nearest;
-    return normal.lengthSq() > 0 ? normal.normalize() : null;
+    let nearest = Infinity;
+    for (const d of distances) nearest = Math.min(nearest, d);
+    const reach = Math.max(3 * nearest, 0.01 * this.mesh.geometry.boundingSphere.radius);
+    for (let t = 0; t < index.count; t += 3) {
+      if (distances[t / 3] > reach) continue;
+      a.fromBufferAttribute(position, index.getX(t));
+      b.fromBufferAttribute(position, index.getX(t + 1));
+      c.fromBufferAttribute(position, index.getX(t + 2));
+      sum.add(n.subVectors(b, a).cross(c.sub(a))); // twice the area, outward for the target's triangles
+    }
+    return sum.lengthSq() > 0 ? sum.normalize() : null;
   }
 
   // Whether a point on the target's surface (its own units, a Vector3 or [x, y, z]) is seen from the camera:
