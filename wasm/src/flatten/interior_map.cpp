@@ -160,10 +160,14 @@ Eigen::VectorXd InteriorLaplacian::conformalAngleShift() {
   return shift;
 }
 
+bool isFlipped(const Triangles& F, const Points2& uv, int f) {
+  return !(signedArea2(uv, F(f, 0), F(f, 1), F(f, 2)) > 0);
+}
+
 int countFlipped(const Triangles& F, const Points2& uv) {
   int flipped = 0;
   for (int f = 0; f < F.rows(); ++f)
-    if (!(signedArea2(uv, F(f, 0), F(f, 1), F(f, 2)) > 0)) ++flipped;
+    if (isFlipped(F, uv, f)) ++flipped;
   return flipped;
 }
 
@@ -178,7 +182,7 @@ int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps
     // makes room for a vertex that cannot be untangled on its own.
     std::vector<char> active(n, 0);
     for (int f = 0; f < F.rows(); ++f)
-      if (!(signedArea2(uv, F(f, 0), F(f, 1), F(f, 2)) > 0))
+      if (isFlipped(F, uv, f))
         for (int c = 0; c < 3; ++c) active[F(f, c)] = 1;
     for (int ring = 0; ring < std::min(1 + s / 3, 8); ++ring) {
       std::vector<char> grown = active;

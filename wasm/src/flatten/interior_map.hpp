@@ -49,7 +49,10 @@ class InteriorLaplacian {
   std::unique_ptr<System> cotangent_, uniform_;
 };
 
-// Triangles whose 2D signed area is not positive (CW or degenerate).
+// Whether triangle f's 2D signed area is not positive (CW or degenerate): flipped on the panel.
+bool isFlipped(const Triangles& F, const Points2& uv, int f);
+
+// Triangles that are flipped (isFlipped).
 int countFlipped(const Triangles& F, const Points2& uv);
 
 // Repair of flipped triangles with the boundary fixed: sweeps over the interior vertices near flipped triangles

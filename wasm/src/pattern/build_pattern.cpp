@@ -6,6 +6,7 @@
 #include <map>
 #include <numeric>
 
+#include "flatten/interior_map.hpp"
 #include "pattern/internal_panels.hpp"
 #include "pattern/panel_stages.hpp"
 #include "remesh/panel_mesher.hpp"
@@ -64,13 +65,9 @@ void addProblem(BuiltPattern& out, const Segmentation& seg, int s, const std::st
 SegmentationProblem foldedProblem(const Segmentation& seg, const FlatSegment& fs) {
   const TriMesh& sub = fs.sub.mesh;
   std::vector<Eigen::Vector3d> folded;
-  for (int t = 0; t < sub.numTriangles(); ++t) {
-    const Eigen::Vector2d a = fs.flat.uv.row(sub.F(t, 0)), b = fs.flat.uv.row(sub.F(t, 1)),
-                          c = fs.flat.uv.row(sub.F(t, 2));
-    const Eigen::Vector2d e = b - a, g = c - a;
-    if (e.x() * g.y() - e.y() * g.x() <= 0)
+  for (int t = 0; t < sub.numTriangles(); ++t)
+    if (isFlipped(sub.F, fs.flat.uv, t))
       folded.push_back((sub.V.row(sub.F(t, 0)) + sub.V.row(sub.F(t, 1)) + sub.V.row(sub.F(t, 2))).transpose() / 3);
-  }
   SegmentationProblem p;
   p.code = "pattern.flipped", p.severity = "warning", p.segment = fs.segment;
   p.location = seg.segments[fs.segment].labelPoint;
