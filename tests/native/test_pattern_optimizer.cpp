@@ -526,12 +526,12 @@ TEST(PatternOptimizer, RunEndsOnItsCutPanelsMeshedAtTheDesignsEdgeLength) {
 // thickness, 1.3 -> 1.9 %); then an earlier iterate is cut instead, and the designer gets cut panels about as close
 // as the optimizer's own mesh was. The snapped cut's settle is abandoned once it has moved beyond any cut that keeps
 // its shape, so it leaves no record. The cow at 1,700 elements, its flattened panels moved at the rounding level (seed
-// 3, as `billow_design_bench --perturb` moves them): a path whose cut snaps (seeds 3, 6, 8, 9 and 11 of 1-11 do).
+// 7, as `billow_design_bench --perturb` moves them): a path whose cut snaps (seeds 7, 8, 9, 11, 12 and 14 of 1-14 do).
 TEST(PatternOptimizer, CutPanelsThatSnapAreCutFromAnEarlierIterate) {
   BILLOW_NATIVE_ONLY_LONG_RUN();
   Fixture f = makeFixture("../../bench/designs/spot-front-back.billow.json", 1700);
   ASSERT_TRUE(f.built.ok());
-  std::mt19937 rng(3);
+  std::mt19937 rng(7);
   std::uniform_real_distribution<double> u(-1, 1);
   for (Panel& panel : f.built.pattern.panels)
     for (int v = 0; v < panel.vertices.rows(); ++v)
@@ -556,7 +556,7 @@ TEST(PatternOptimizer, CutPanelsThatSnapAreCutFromAnEarlierIterate) {
   for (size_t k = cuts[0] - 2; k > 0 && !h[k].remeshed; --k) ownBest = std::min(ownBest, h[k].distanceRms);
   const double designers = h.back().distanceRms;
   std::printf(
-      "[figures] fb-spot 1.7k, perturbed (3): own mesh %.3f %% (its best %.3f %%), its cut snapped; an earlier "
+      "[figures] fb-spot 1.7k, perturbed (7): own mesh %.3f %% (its best %.3f %%), its cut snapped; an earlier "
       "iterate %.3f %%, cut %.3f %%\n",
       100 * ownLast.distanceRms, 100 * ownBest, 100 * earlier.distanceRms, 100 * designers);
   EXPECT_GT(earlier.objective, ownLast.objective);

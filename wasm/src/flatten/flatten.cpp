@@ -56,15 +56,23 @@ void placeOnPrincipalAxis(const Triangles& F, Points2& uv) {
 }
 
 // Interior by one Laplacian solve; falls back to uniform weights, then to the local repair.
-void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, InteriorLaplacian& laplacian,
-                   const FlattenOptions& o, int sweeps, FlattenResult& r) {
+void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, const std::vector<int>& next,
+                   InteriorLaplacian& laplacian, const FlattenOptions& o, int sweeps, FlattenResult& r) {
   r.interior = o.weights == LaplacianWeights::Cotangent ? "cotangent" : "uniform";
   laplacian.solve(o.weights, r.uv);
-  r.flippedTriangles = countFlipped(segment.F, r.uv);
+  r.flippedTriangles = countFolds(segment.F, r.uv, next);
+  if (r.flippedTriangles > 0 && o.weights == LaplacianWeights::Cotangent && sweeps > 0) {
+    // Repaired, the cotangent map keeps the segment's proportions that the uniform one (Tutte's) loses.
+    Points2 repaired = r.uv;
+    if (untangle(segment.F, isBoundary, sweeps, repaired) == 0) {
+      r.uv = repaired, r.flippedTriangles = 0, r.interior += "+repair";
+      return;
+    }
+  }
   if (r.flippedTriangles > 0 && o.weights == LaplacianWeights::Cotangent) {
     Points2 uniform = r.uv;
     laplacian.solve(LaplacianWeights::Uniform, uniform);
-    const int flips = countFlipped(segment.F, uniform);
+    const int flips = countFolds(segment.F, uniform, next);
     if (flips < r.flippedTriangles) {
       r.uv = uniform;
       r.flippedTriangles = flips;
@@ -86,6 +94,7 @@ FlattenResult flattenSegment(const TriMesh& segment, const FlattenOptions& optio
   const int nb = static_cast<int>(r.boundary.size());
   std::vector<char> isBoundary(segment.numVertices(), 0);
   for (int j = 0; j < nb; ++j) isBoundary[r.boundary[j]] = 1;
+  const std::vector<int> next = boundaryNext(segment.F, segment.numVertices());
   InteriorLaplacian laplacian(segment, isBoundary, options.cotangentClamp);
   if (options.conformalAngles) {
     const Eigen::VectorXd shift = laplacian.conformalAngleShift();
@@ -108,7 +117,7 @@ FlattenResult flattenSegment(const TriMesh& segment, const FlattenOptions& optio
     }
     // A short repair while a more convex boundary remains to be tried; the full one on the last.
     const bool last = b.convexBlend >= 1 || options.untangleSweeps == 0;
-    placeInterior(segment, isBoundary, laplacian, options,
+    placeInterior(segment, isBoundary, next, laplacian, options,
                   last ? options.untangleSweeps : std::min(options.untangleSweeps, options.sweepsBeforeBlending), r);
     if (r.flippedTriangles == 0 || last) break;
   }

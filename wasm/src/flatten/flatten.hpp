@@ -36,7 +36,7 @@ struct FlattenResult {
   std::vector<int> boundary;          // the boundary loop (segment vertex ids), CCW on the panel
   double maxBoundaryLengthError = 0;  // max over boundary edges of |L - l| / l (panel vs segment)
   double areaRatio = 0;               // panel area / segment area
-  int flippedTriangles = 0;           // triangles that are CW or degenerate on the panel (0 unless reported)
+  int flippedTriangles = 0;           // triangles that fold the panel (foldsPanel; 0 unless reported)
   int newtonIterations = 0;           // Eq. 14 Newton iterations, all attempts
   double boundaryEnergy = 0;          // E_fl at the result
   double convexBlend = 0;             // how far the boundary's turns were blended toward a circle's (0: Eq. 14)

@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <unordered_set>
 
 #include "util/vec2.hpp"
 
@@ -171,18 +172,49 @@ int countFlipped(const Triangles& F, const Points2& uv) {
   return flipped;
 }
 
+std::vector<int> boundaryNext(const Triangles& F, int numVertices) {
+  std::unordered_set<std::uint64_t> directed;
+  for (int f = 0; f < F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) directed.insert(directedKey(F(f, c), F(f, (c + 1) % 3)));
+  std::vector<int> next(numVertices, -1);
+  for (int f = 0; f < F.rows(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const int a = F(f, c), b = F(f, (c + 1) % 3);
+      if (!directed.count(directedKey(b, a))) next[a] = b;
+    }
+  return next;
+}
+
+bool foldsPanel(const Triangles& F, const Points2& uv, const std::vector<int>& next, int f) {
+  if (!isFlipped(F, uv, f)) return false;
+  bool allOnBoundary = true, boundaryEdge = false;
+  for (int c = 0; c < 3; ++c) {
+    allOnBoundary = allOnBoundary && next[F(f, c)] >= 0;
+    boundaryEdge = boundaryEdge || next[F(f, c)] == F(f, (c + 1) % 3);
+  }
+  return !(allOnBoundary && boundaryEdge);
+}
+
+int countFolds(const Triangles& F, const Points2& uv, const std::vector<int>& next) {
+  int folds = 0;
+  for (int f = 0; f < F.rows(); ++f)
+    if (foldsPanel(F, uv, next, f)) ++folds;
+  return folds;
+}
+
 int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps, Points2& uv) {
   const int n = static_cast<int>(uv.rows());
   std::vector<std::vector<std::pair<int, int>>> link(n);
   for (int f = 0; f < F.rows(); ++f)
     for (int c = 0; c < 3; ++c) link[F(f, c)].emplace_back(F(f, (c + 1) % 3), F(f, (c + 2) % 3));
-  int flipped = countFlipped(F, uv);
+  const std::vector<int> next = boundaryNext(F, n);
+  int flipped = countFolds(F, uv, next);
   for (int s = 0; s < sweeps && flipped > 0; ++s) {
-    // The vertices of flipped triangles and, as sweeps go by, more rings around them: moving a neighbour often
+    // The vertices of folding triangles and, as sweeps go by, more rings around them: moving a neighbour often
     // makes room for a vertex that cannot be untangled on its own.
     std::vector<char> active(n, 0);
     for (int f = 0; f < F.rows(); ++f)
-      if (isFlipped(F, uv, f))
+      if (foldsPanel(F, uv, next, f))
         for (int c = 0; c < 3; ++c) active[F(f, c)] = 1;
     for (int ring = 0; ring < std::min(1 + s / 3, 8); ++ring) {
       std::vector<char> grown = active;
@@ -193,7 +225,7 @@ int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps
     }
     for (int v = 0; v < n; ++v)
       if (active[v] && !isBoundary[v]) untangleVertex(link[v], uv, v);
-    flipped = countFlipped(F, uv);
+    flipped = countFolds(F, uv, next);
   }
   return flipped;
 }

@@ -55,10 +55,21 @@ bool isFlipped(const Triangles& F, const Points2& uv, int f);
 // Triangles that are flipped (isFlipped).
 int countFlipped(const Triangles& F, const Points2& uv);
 
+// The boundary of a disk's triangles as next[a] = b for each boundary edge a -> b (the triangle on its left), -1
+// inside.
+std::vector<int> boundaryNext(const Triangles& F, int numVertices);
+
+// Whether triangle f is flipped and so folds the panel over itself. A flipped triangle whose corners are all on the
+// boundary, one of its edges a boundary edge, does not: no interior move can turn it, and it lies outside the
+// outline, where the flat boundary turns the other way than the target's one triangle there (a corner sharper than
+// Eq. 14's angles keep, as at a figure's armpit); the panel cut from the outline covers it without a fold.
+bool foldsPanel(const Triangles& F, const Points2& uv, const std::vector<int>& next, int f);
+int countFolds(const Triangles& F, const Points2& uv, const std::vector<int>& next);
+
 // Repair of flipped triangles with the boundary fixed: sweeps over the interior vertices near flipped triangles
 // (more rings each few sweeps), each moved to where the smallest signed area of its triangles is largest (a
-// small LP); a move never lowers that smallest area. Returns the flips left (some configurations, e.g. a
-// triangle with three boundary vertices on a concave stretch, cannot be repaired with the boundary fixed).
+// small LP); a move never lowers that smallest area. Returns the folds left (countFolds: a flipped triangle with
+// three boundary corners lies outside the outline and cannot be moved with the boundary fixed).
 int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps, Points2& uv);
 
 }  // namespace billow

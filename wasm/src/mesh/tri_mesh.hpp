@@ -22,6 +22,11 @@ inline std::uint64_t edgeKey(int a, int b) {
   return (static_cast<std::uint64_t>(lo) << 32) | hi;
 }
 
+// The key of the directed edge a -> b, for hashing.
+inline std::uint64_t directedKey(int a, int b) {
+  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
+}
+
 // The diagonal of the mesh's bounding box: the model size relative tolerances are measured in (0 for no vertices).
 inline double boundingDiagonal(const TriMesh& m) {
   return m.V.rows() ? (m.V.colwise().maxCoeff() - m.V.colwise().minCoeff()).norm() : 0.0;

@@ -64,9 +64,10 @@ void addProblem(BuiltPattern& out, const Segmentation& seg, int s, const std::st
 // triangle nearest their mean (on a long tube or limb, the harmonic map's squeeze there underflows).
 SegmentationProblem foldedProblem(const Segmentation& seg, const FlatSegment& fs) {
   const TriMesh& sub = fs.sub.mesh;
+  const std::vector<int> next = boundaryNext(sub.F, sub.numVertices());
   std::vector<Eigen::Vector3d> folded;
   for (int t = 0; t < sub.numTriangles(); ++t)
-    if (isFlipped(sub.F, fs.flat.uv, t))
+    if (foldsPanel(sub.F, fs.flat.uv, next, t))
       folded.push_back((sub.V.row(sub.F(t, 0)) + sub.V.row(sub.F(t, 1)) + sub.V.row(sub.F(t, 2))).transpose() / 3);
   SegmentationProblem p;
   p.code = "pattern.flipped", p.severity = "warning", p.segment = fs.segment;

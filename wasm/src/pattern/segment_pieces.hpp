@@ -33,10 +33,6 @@ struct SeamGraph {
 
 SeamGraph analyzeSeams(const Segmentation& seg);
 
-inline std::uint64_t directedKey(int a, int b) {
-  return (static_cast<std::uint64_t>(static_cast<std::uint32_t>(a)) << 32) | static_cast<std::uint32_t>(b);
-}
-
 // A piece of a segment boundary between two corners.
 struct BoundaryPiece {
   int start = 0;              // position in the loop of its start corner
