@@ -61,14 +61,6 @@ void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, 
   r.interior = o.weights == LaplacianWeights::Cotangent ? "cotangent" : "uniform";
   laplacian.solve(o.weights, r.uv);
   r.flippedTriangles = countFolds(segment.F, r.uv, next);
-  if (r.flippedTriangles > 0 && o.weights == LaplacianWeights::Cotangent && sweeps > 0) {
-    // Repaired, the cotangent map keeps the segment's proportions that the uniform one (Tutte's) loses.
-    Points2 repaired = r.uv;
-    if (untangle(segment.F, isBoundary, sweeps, repaired) == 0) {
-      r.uv = repaired, r.flippedTriangles = 0, r.interior += "+repair";
-      return;
-    }
-  }
   if (r.flippedTriangles > 0 && o.weights == LaplacianWeights::Cotangent) {
     Points2 uniform = r.uv;
     laplacian.solve(LaplacianWeights::Uniform, uniform);
