@@ -114,6 +114,12 @@ Points2 boundaryPolygon(const FlattenResult& r) {
   return Q;
 }
 
+int countFlipped(const Triangles& F, const Points2& uv) {
+  int flipped = 0;
+  for (int f = 0; f < F.rows(); ++f) flipped += isFlipped(F, uv, f);
+  return flipped;
+}
+
 // Whether p lies inside polygon Q (crossings of a ray along +x).
 bool insidePolygon(const Points2& Q, const Eigen::RowVector2d& p) {
   bool inside = false;

@@ -165,13 +165,6 @@ bool isFlipped(const Triangles& F, const Points2& uv, int f) {
   return !(signedArea2(uv, F(f, 0), F(f, 1), F(f, 2)) > 0);
 }
 
-int countFlipped(const Triangles& F, const Points2& uv) {
-  int flipped = 0;
-  for (int f = 0; f < F.rows(); ++f)
-    if (isFlipped(F, uv, f)) ++flipped;
-  return flipped;
-}
-
 std::vector<int> boundaryNext(const Triangles& F, int numVertices) {
   std::unordered_set<std::uint64_t> directed;
   for (int f = 0; f < F.rows(); ++f)

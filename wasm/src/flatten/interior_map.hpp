@@ -52,9 +52,6 @@ class InteriorLaplacian {
 // Whether triangle f's 2D signed area is not positive (CW or degenerate): flipped on the panel.
 bool isFlipped(const Triangles& F, const Points2& uv, int f);
 
-// Triangles that are flipped (isFlipped).
-int countFlipped(const Triangles& F, const Points2& uv);
-
 // The boundary of a disk's triangles as next[a] = b for each boundary edge a -> b (the triangle on its left), -1
 // inside.
 std::vector<int> boundaryNext(const Triangles& F, int numVertices);
