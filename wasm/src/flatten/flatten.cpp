@@ -56,8 +56,8 @@ void placeOnPrincipalAxis(const Triangles& F, Points2& uv) {
 }
 
 // Interior by one Laplacian solve; falls back to uniform weights, then to the local repair.
-void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, const std::vector<int>& next,
-                   InteriorLaplacian& laplacian, const FlattenOptions& o, int sweeps, FlattenResult& r) {
+void placeInterior(const TriMesh& segment, const std::vector<int>& next, InteriorLaplacian& laplacian,
+                   const FlattenOptions& o, int sweeps, FlattenResult& r) {
   r.interior = o.weights == LaplacianWeights::Cotangent ? "cotangent" : "uniform";
   laplacian.solve(o.weights, r.uv);
   r.flippedTriangles = countFolds(segment.F, r.uv, next);
@@ -72,7 +72,7 @@ void placeInterior(const TriMesh& segment, const std::vector<char>& isBoundary, 
     }
   }
   if (r.flippedTriangles > 0 && sweeps > 0) {
-    r.flippedTriangles = untangle(segment.F, isBoundary, sweeps, r.uv);
+    r.flippedTriangles = untangle(segment.F, next, sweeps, r.uv);
     r.interior += "+repair";
   }
 }
@@ -109,7 +109,7 @@ FlattenResult flattenSegment(const TriMesh& segment, const FlattenOptions& optio
     }
     // A short repair while a more convex boundary remains to be tried; the full one on the last.
     const bool last = b.convexBlend >= 1 || options.untangleSweeps == 0;
-    placeInterior(segment, isBoundary, next, laplacian, options,
+    placeInterior(segment, next, laplacian, options,
                   last ? options.untangleSweeps : std::min(options.untangleSweeps, options.sweepsBeforeBlending), r);
     if (r.flippedTriangles == 0 || last) break;
   }

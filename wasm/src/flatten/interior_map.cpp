@@ -195,12 +195,11 @@ int countFolds(const Triangles& F, const Points2& uv, const std::vector<int>& ne
   return folds;
 }
 
-int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps, Points2& uv) {
+int untangle(const Triangles& F, const std::vector<int>& next, int sweeps, Points2& uv) {
   const int n = static_cast<int>(uv.rows());
   std::vector<std::vector<std::pair<int, int>>> link(n);
   for (int f = 0; f < F.rows(); ++f)
     for (int c = 0; c < 3; ++c) link[F(f, c)].emplace_back(F(f, (c + 1) % 3), F(f, (c + 2) % 3));
-  const std::vector<int> next = boundaryNext(F, n);
   int flipped = countFolds(F, uv, next);
   for (int s = 0; s < sweeps && flipped > 0; ++s) {
     // The vertices of folding triangles and, as sweeps go by, more rings around them: moving a neighbour often
@@ -217,7 +216,7 @@ int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps
       active.swap(grown);
     }
     for (int v = 0; v < n; ++v)
-      if (active[v] && !isBoundary[v]) untangleVertex(link[v], uv, v);
+      if (active[v] && next[v] < 0) untangleVertex(link[v], uv, v);
     flipped = countFolds(F, uv, next);
   }
   return flipped;

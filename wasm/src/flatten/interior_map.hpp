@@ -66,7 +66,7 @@ int countFolds(const Triangles& F, const Points2& uv, const std::vector<int>& ne
 // Repair of flipped triangles with the boundary fixed: sweeps over the interior vertices near flipped triangles
 // (more rings each few sweeps), each moved to where the smallest signed area of its triangles is largest (a
 // small LP); a move never lowers that smallest area. Returns the folds left (countFolds: a flipped triangle with
-// three boundary corners lies outside the outline and cannot be moved with the boundary fixed).
-int untangle(const Triangles& F, const std::vector<char>& isBoundary, int sweeps, Points2& uv);
+// three boundary corners lies outside the outline and cannot be moved with the boundary fixed). next: boundaryNext's.
+int untangle(const Triangles& F, const std::vector<int>& next, int sweeps, Points2& uv);
 
 }  // namespace billow
